@@ -1,0 +1,117 @@
+"""Exit codes and the one error tree every servicebot module raises from.
+
+Core code raises these; only ``cli.py`` turns them into a line on stderr and an exit code.
+Each class carries its exit code, so a new error never needs a new ``except`` clause.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+from enum import IntEnum
+
+
+class ExitCode(IntEnum):
+    """Process exit codes, documented in README.md."""
+
+    OK = 0
+    FAILED = 1  # the command ran and the answer is "no": findings, a diff, no IK solution
+    USAGE = 2  # bad input: an option, a value, a file that cannot be read or understood
+    INTERNAL = 3  # a bug in servicebot; the message says how to get the traceback
+    LINK = 4  # the serial link cannot be opened or the firmware does not answer as expected
+    LINK_LOST = 5  # the link went silent mid-run; motors were told to stop
+    INTERRUPTED = 130  # Ctrl-C (128 + SIGINT), after any motors were stopped
+    TERMINATED = 143  # SIGTERM (128 + SIGTERM), after any motors were stopped
+
+
+class ServicebotError(Exception):
+    """Base of every error servicebot reports to its user.
+
+    The message is one line that names the thing, the problem and, where there is one, the fix.
+    """
+
+    exit_code: ExitCode = ExitCode.USAGE
+
+
+class DescriptionError(ServicebotError):
+    """A robot description cannot be read, parsed, expanded or turned into a model."""
+
+
+class XmlError(DescriptionError):
+    """XML that is not well-formed, too large, or unsafe (a DTD with entities).
+
+    Attributes:
+        file: Display path of the offending file.
+        line: 1-based line, or 0 when the problem is the whole file.
+        column: 1-based column, or 0 when unknown.
+        reason: The problem, without the location prefix.
+    """
+
+    def __init__(self, file: str, reason: str, line: int = 0, column: int = 0) -> None:
+        self.file, self.reason, self.line, self.column = file, reason, line, column
+        where = file if not line else f"{file}:{line}:{column}" if column else f"{file}:{line}"
+        super().__init__(f"{where}: {reason}")
+
+
+class UnsafeXmlError(XmlError):
+    """XML that declares entities or points at an external DTD; never resolved."""
+
+
+class XacroError(DescriptionError):
+    """xacro could not expand a file: bad expression, unknown macro or argument."""
+
+
+class PackageNotFound(DescriptionError):
+    """A ``$(find pkg)`` or ``package://pkg/`` reference names a package that is nowhere."""
+
+
+class NameNotFound(ServicebotError):
+    """A joint, frame, link or other name that the robot does not have.
+
+    Build with :meth:`for_name` so the message lists the closest names.
+    """
+
+    kind = "name"
+
+    @classmethod
+    def for_name(cls, name: str, candidates: Iterable[str], *, robot: str = "") -> NameNotFound:
+        """Make the error for ``name`` with up to three close matches from ``candidates``."""
+        names = list(candidates)
+        close = difflib.get_close_matches(name, names, n=3, cutoff=0.5)
+        owner = f" in {robot}" if robot else ""
+        if close:
+            hint = "did you mean " + " or ".join(f"'{c}'" for c in close) + "?"
+        elif names:
+            shown = ", ".join(names[:8]) + (", ..." if len(names) > 8 else "")
+            hint = f"known: {shown}"
+        else:
+            hint = f"the robot has no {cls.kind}s"
+        return cls(f"no {cls.kind} '{name}'{owner}; {hint}")
+
+
+class JointNotFound(NameNotFound):
+    """A joint name the robot does not have."""
+
+    kind = "joint"
+
+
+class FrameNotFound(NameNotFound):
+    """A frame (link or fixed frame) name the robot does not have."""
+
+    kind = "frame"
+
+
+class OutOfLimits(ServicebotError):
+    """A joint value outside the joint's limits in the URDF."""
+
+
+class LinkError(ServicebotError):
+    """The serial link cannot be used: missing port, permission, busy, silent firmware."""
+
+    exit_code = ExitCode.LINK
+
+
+class LinkLost(LinkError):
+    """The link stopped answering during a run."""
+
+    exit_code = ExitCode.LINK_LOST
