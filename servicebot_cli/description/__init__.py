@@ -1,0 +1,1 @@
+"""Robot descriptions: files in, one shared model out."""
