@@ -1,0 +1,239 @@
+"""What URDF parsers drop: ``<gazebo>`` blocks, sensors, plugins and ``<ros2_control>``.
+
+Values only, read tolerantly like :mod:`elements`; each keeps its XML element.
+Plugin and hardware parameters keep document order as ``(path, text)`` pairs, since
+plugins repeat tags (``<remapping>``, ``<joint_name>``).
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+
+from servicebot_cli.description.elements import Pose, parse_float
+
+Params = tuple[tuple[str, str], ...]
+
+
+def _text(element: ET.Element | None) -> str | None:
+    if element is None or element.text is None:
+        return None
+    return element.text.strip()
+
+
+def _leaf_params(element: ET.Element, prefix: str = "") -> Params:
+    """Every leaf below ``element`` as ``("a/b", text)``; attributes as ``("a/b@name", value)``."""
+    pairs: list[tuple[str, str]] = []
+    stack = [(child, prefix) for child in reversed(list(element))]
+    while stack:  # iterative: plugin blocks from the wild can nest deeply
+        node, base = stack.pop()
+        if not isinstance(node.tag, str):
+            continue
+        path = f"{base}{node.tag}"
+        for key, value in node.attrib.items():
+            pairs.append((f"{path}@{key}", value))
+        children = list(node)
+        if children:
+            stack.extend((child, path + "/") for child in reversed(children))
+        else:
+            pairs.append((path, (node.text or "").strip()))
+    return tuple(pairs)
+
+
+def param(params: Params, path: str, default: str | None = None) -> str | None:
+    """The last value at ``path`` (later tags override earlier ones, as in Gazebo)."""
+    found = default
+    for key, value in params:
+        if key == path:
+            found = value
+    return found
+
+
+def params_all(params: Params, path: str) -> tuple[str, ...]:
+    """Every value at ``path``, in document order (``ros/remapping``, ``joint_name``)."""
+    return tuple(value for key, value in params if key == path)
+
+
+@dataclass(frozen=True)
+class Plugin:
+    """A Gazebo ``<plugin>``.
+
+    Attributes:
+        name: Its ``name`` attribute.
+        filename: Its ``filename`` attribute (``libgazebo_ros_camera.so``, ``gz-sim-...``).
+        params: Its children as ``(path, text)`` pairs.
+    """
+
+    name: str
+    filename: str
+    params: Params
+    element: ET.Element | None = field(default=None, compare=False, repr=False)
+
+
+@dataclass(frozen=True)
+class Sensor:
+    """A Gazebo ``<sensor>`` inside ``<gazebo reference="link">``.
+
+    Attributes:
+        reference: The link it is attached to (None outside a referenced block).
+        update_rate_hz: ``<update_rate>`` [Hz]; None when absent.
+        params: Its non-plugin children as ``(path, text)`` pairs (``ray/scan/horizontal/samples``).
+        plugins: The plugins inside the sensor (Gazebo Classic ROS wrappers).
+    """
+
+    name: str
+    type: str
+    reference: str | None
+    pose: Pose
+    update_rate_hz: float | None
+    params: Params
+    plugins: tuple[Plugin, ...]
+    element: ET.Element | None = field(default=None, compare=False, repr=False)
+
+
+@dataclass(frozen=True)
+class GazeboBlock:
+    """A ``<gazebo>`` element: model-level (no reference) or about one link or joint.
+
+    Attributes:
+        properties: Simple children such as ``mu1``, ``material``, ``selfCollide``.
+    """
+
+    reference: str | None
+    sensors: tuple[Sensor, ...]
+    plugins: tuple[Plugin, ...]
+    properties: Params
+    element: ET.Element | None = field(default=None, compare=False, repr=False)
+
+
+@dataclass(frozen=True)
+class Interface:
+    """A ros2_control command or state interface, with its ``<param>`` children."""
+
+    name: str
+    params: tuple[tuple[str, str], ...] = ()
+
+    def get(self, key: str) -> str | None:
+        """Value of ``<param name="key">``."""
+        return dict(self.params).get(key)
+
+
+@dataclass(frozen=True)
+class ControlJoint:
+    """A ``<joint>`` (or ``<sensor>``/``<gpio>``) inside ``<ros2_control>``."""
+
+    name: str
+    command_interfaces: tuple[Interface, ...]
+    state_interfaces: tuple[Interface, ...]
+    params: tuple[tuple[str, str], ...] = ()
+    element: ET.Element | None = field(default=None, compare=False, repr=False)
+
+
+@dataclass(frozen=True)
+class Ros2Control:
+    """A ``<ros2_control>`` block.
+
+    Attributes:
+        plugin: The hardware plugin (``<hardware><plugin>``), None if missing.
+        hardware_params: ``<hardware><param name=..>`` pairs in document order.
+    """
+
+    name: str
+    type: str
+    plugin: str | None
+    hardware_params: tuple[tuple[str, str], ...]
+    joints: tuple[ControlJoint, ...]
+    sensors: tuple[ControlJoint, ...]
+    gpios: tuple[ControlJoint, ...]
+    element: ET.Element | None = field(default=None, compare=False, repr=False)
+
+    def hardware_param(self, key: str) -> str | None:
+        """Value of ``<hardware><param name="key">``."""
+        return dict(self.hardware_params).get(key)
+
+
+def read_plugin(element: ET.Element) -> Plugin:
+    """A Plugin from a ``<plugin>`` element."""
+    return Plugin(
+        name=element.get("name", ""),
+        filename=element.get("filename", ""),
+        params=_leaf_params(element),
+        element=element,
+    )
+
+
+def read_gazebo(element: ET.Element) -> GazeboBlock:
+    """A GazeboBlock from a ``<gazebo>`` element."""
+    reference = element.get("reference")
+    sensors = tuple(_read_sensor(s, reference) for s in element.findall("sensor"))
+    plugins = tuple(read_plugin(p) for p in element.findall("plugin"))
+    simple = [c for c in element if isinstance(c.tag, str) and c.tag not in ("sensor", "plugin")]
+    properties: list[tuple[str, str]] = []
+    for child in simple:
+        if len(child):
+            properties.extend(_leaf_params(child, child.tag + "/"))
+        else:
+            properties.append((child.tag, (child.text or child.get("value") or "").strip()))
+    return GazeboBlock(reference, sensors, plugins, tuple(properties), element)
+
+
+def _read_sensor(element: ET.Element, reference: str | None) -> Sensor:
+    rate = _text(element.find("update_rate"))
+    params = tuple(
+        pair for child in element if isinstance(child.tag, str) and child.tag != "plugin"
+        for pair in (_leaf_params(child, child.tag + "/") if len(child)
+                     else ((child.tag, (child.text or "").strip()),))
+    )
+    return Sensor(
+        name=element.get("name", ""),
+        type=element.get("type", ""),
+        reference=reference,
+        pose=_sdf_pose(_text(element.find("pose"))),
+        update_rate_hz=parse_float(rate),
+        params=params,
+        plugins=tuple(read_plugin(p) for p in element.findall("plugin")),
+        element=element,
+    )
+
+
+def _sdf_pose(text: str | None) -> Pose:
+    """SDF ``<pose>x y z roll pitch yaw</pose>``; identity when absent or malformed."""
+    values = [parse_float(v) for v in (text or "").split()]
+    if len(values) != 6 or any(v is None for v in values):
+        return Pose()
+    x, y, z, roll, pitch, yaw = values  # type: ignore[misc]
+    return Pose((x, y, z), (roll, pitch, yaw))
+
+
+def read_ros2_control(element: ET.Element) -> Ros2Control:
+    """A Ros2Control from a ``<ros2_control>`` element."""
+    hardware = element.find("hardware")
+    return Ros2Control(
+        name=element.get("name", ""),
+        type=element.get("type", ""),
+        plugin=_text(hardware.find("plugin")) if hardware is not None else None,
+        hardware_params=_param_pairs(hardware),
+        joints=tuple(_control_item(j) for j in element.findall("joint")),
+        sensors=tuple(_control_item(s) for s in element.findall("sensor")),
+        gpios=tuple(_control_item(g) for g in element.findall("gpio")),
+        element=element,
+    )
+
+
+def _param_pairs(element: ET.Element | None) -> tuple[tuple[str, str], ...]:
+    if element is None:
+        return ()
+    return tuple((p.get("name", ""), (p.text or "").strip()) for p in element.findall("param"))
+
+
+def _control_item(element: ET.Element) -> ControlJoint:
+    def interfaces(tag: str) -> tuple[Interface, ...]:
+        return tuple(Interface(i.get("name", ""), _param_pairs(i)) for i in element.findall(tag))
+
+    return ControlJoint(
+        name=element.get("name", ""),
+        command_interfaces=interfaces("command_interface"),
+        state_interfaces=interfaces("state_interface"),
+        params=_param_pairs(element),
+        element=element,
+    )

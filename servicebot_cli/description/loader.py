@@ -1,0 +1,150 @@
+"""Load a robot description from a file: the one entry point every command uses.
+
+``read_description`` reads, expands (xacro) and parses, and stops there: ``check`` wants
+the defects of a file, not a refusal. ``load`` also insists on a ``<robot>`` that Pinocchio
+accepts, and memoises per source, so all commands in a process share one object.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+from servicebot_cli.description import resources
+from servicebot_cli.description.packages import PackageResolver
+from servicebot_cli.description.robot import RobotDescription
+from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
+from servicebot_cli.errors import DescriptionError
+
+XACRO_SUFFIXES = (".xacro",)
+
+
+@dataclass(frozen=True)
+class RobotSource:
+    """What to load: a file, its xacro arguments and package directories.
+
+    Attributes:
+        path: The file.
+        display: How messages name it.
+        xacro_args: ``name:=value`` pairs, in the order given.
+        packages: ``--package NAME=DIR`` pairs.
+    """
+
+    path: Path
+    display: str
+    xacro_args: tuple[tuple[str, str], ...] = ()
+    packages: tuple[tuple[str, str], ...] = ()
+
+    @classmethod
+    def bundled(cls, name: str = resources.DEFAULT_ROBOT) -> RobotSource:
+        """The bundled robot called ``name``."""
+        path = resources.bundled_robot(name)
+        return cls(path=path, display=f"{path.name} (bundled '{name}')")
+
+    @classmethod
+    def of(cls, path: str | os.PathLike[str], **kwargs: object) -> RobotSource:
+        """A source for a path given by the user."""
+        return cls(path=Path(path), display=str(path), **kwargs)  # type: ignore[arg-type]
+
+    def resolver(self) -> PackageResolver:
+        """Package search for this source: ``--package`` first, then the environment."""
+        return PackageResolver.from_environment({k: Path(v) for k, v in self.packages})
+
+
+def read_bytes(path: Path, display: str, max_bytes: int = MAX_BYTES) -> bytes:
+    """The content of ``path``, or one DescriptionError that says what to do.
+
+    Raises:
+        DescriptionError: Missing, a directory, unreadable, or larger than ``max_bytes``.
+    """
+    try:
+        if path.is_dir():
+            raise DescriptionError(f"{display}: is a directory; give a URDF or xacro file")
+        size = path.stat().st_size
+        if size > max_bytes:
+            raise DescriptionError(
+                f"{display}: file is {size / 1e6:.1f} MB, over the {max_bytes / 1e6:.0f} MB "
+                "limit for a robot description; is this really a URDF?"
+            )
+        return path.read_bytes()
+    except FileNotFoundError:
+        raise DescriptionError(
+            f"{display}: no such file; give a URDF or xacro file, or --robot sim|real"
+        ) from None
+    except PermissionError:
+        raise DescriptionError(
+            f"{display}: permission denied; make it readable (chmod +r) or run as its owner"
+        ) from None
+    except OSError as exc:
+        raise DescriptionError(f"{display}: cannot read: {exc.strerror or exc}") from None
+
+
+def is_xacro(path: Path, data: bytes) -> bool:
+    """True for ``.xacro`` files and for URDF-named files that use xacro elements."""
+    return path.suffix in XACRO_SUFFIXES or b"<xacro:" in data or b"$(arg " in data
+
+
+def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDescription:
+    """Read, expand and parse ``source`` without judging its content.
+
+    Raises:
+        DescriptionError: The file cannot be read, is not well-formed XML, is unsafe, or
+            xacro fails. Each message names the file (and line) and the problem.
+    """
+    data = read_bytes(source.path, source.display, max_bytes)
+    if not is_xacro(source.path, data):
+        if source.xacro_args:
+            names = ", ".join(name for name, _ in source.xacro_args)
+            raise DescriptionError(
+                f"{source.display}: not a xacro file, so xacro arguments ({names}) mean nothing"
+            )
+        document = parse_xml(data, source.display, max_bytes=max_bytes)
+        return RobotDescription(
+            display=source.display, path=source.path, xml_text=document.text,
+            root=document.root, doctype=document.doctype, files=(source.display,),
+        )
+    from servicebot_cli.description.xacro_expand import expand
+
+    expansion = expand(source.path, dict(source.xacro_args), source.resolver())
+    document = parse_xml(expansion.xml_text.encode("utf-8"), source.display, max_bytes=max_bytes)
+    for element, origin in zip(document.root.iter(), expansion.origins, strict=True):
+        element.origin = origin  # type: ignore[attr-defined]
+    return RobotDescription(
+        display=source.display, path=source.path, xml_text=expansion.xml_text,
+        root=document.root, files=expansion.files, xacro_args=source.xacro_args,
+        warnings=expansion.warnings,
+    )
+
+
+_LOADED: dict[tuple[object, ...], RobotDescription] = {}
+
+
+def load(source: RobotSource) -> RobotDescription:
+    """The validated description for ``source``, loaded once per process.
+
+    Raises:
+        DescriptionError: Anything :func:`read_description` raises, a root that is not a
+            named ``<robot>``, or a description Pinocchio cannot build.
+    """
+    search_path = (os.environ.get("ROS_PACKAGE_PATH"), os.environ.get("AMENT_PREFIX_PATH"))
+    key = (source, _mtime(source.path), search_path)
+    if key not in _LOADED:
+        robot = read_description(source)
+        if robot.root.tag != "robot":
+            raise DescriptionError(
+                f"{source.display}: root element is <{robot.root.tag}>, not <robot>; "
+                "is this a URDF?"
+            )
+        if not robot.name:
+            raise DescriptionError(f"{source.display}: <robot> has no name attribute; add one")
+        robot.model  # noqa: B018 -- building the model is the validation
+        _LOADED[key] = robot
+    return _LOADED[key]
+
+
+def _mtime(path: Path) -> float:
+    try:
+        return path.stat().st_mtime
+    except OSError:
+        return 0.0

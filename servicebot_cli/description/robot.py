@@ -1,0 +1,222 @@
+"""RobotDescription: one loaded robot, shared by every command.
+
+It holds the URDF text and its parsed XML, and builds on demand (once) everything the
+commands need: links and joints in URDF order, fixed frames, Gazebo sensors and plugins,
+``ros2_control`` blocks, the source position of every element, and the Pinocchio model and
+data. Nothing heavy is built until asked for, so ``check`` on a broken file stays cheap.
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from servicebot_cli.description import elements as el
+from servicebot_cli.description import extensions as ext
+from servicebot_cli.description.model import build_model
+from servicebot_cli.description.safe_xml import PositionedElement
+from servicebot_cli.description.sources import SourceRef
+from servicebot_cli.errors import FrameNotFound, JointNotFound, NameNotFound
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+
+    from servicebot_cli.kinematics.configuration import JointSpace
+
+
+class LinkNotFound(NameNotFound):
+    """A link name the robot does not have."""
+
+    kind = "link"
+
+
+@dataclass(frozen=True)
+class FixedFrame:
+    """A link attached by a fixed joint (Pinocchio folds these into frames).
+
+    Attributes:
+        name: The child link's name.
+        parent: The parent link's name.
+        joint: The fixed joint's name.
+        origin: Pose of the frame in its parent link.
+    """
+
+    name: str
+    parent: str
+    joint: str
+    origin: el.Pose
+
+
+@dataclass(frozen=True, eq=False)
+class RobotDescription:
+    """A robot description, read once and shared.
+
+    Attributes:
+        display: The file as the user named it, for messages.
+        path: The file that was read (the xacro source for xacro input).
+        xml_text: The URDF text (expanded, for xacro input).
+        root: The parsed root element; every element has ``sourceline`` and ``column``.
+        doctype: The DOCTYPE name when the document has one.
+        files: Every file read: the top one, then xacro includes.
+        xacro_args: ``name:=value`` arguments the xacro was expanded with.
+        warnings: Warnings from xacro.
+    """
+
+    display: str
+    path: Path
+    xml_text: str
+    root: PositionedElement
+    doctype: str | None = None
+    files: tuple[str, ...] = ()
+    xacro_args: tuple[tuple[str, str], ...] = ()
+    warnings: tuple[str, ...] = ()
+    _models: dict[str, pin.Model] = field(default_factory=dict, repr=False)
+
+    # -- names and parts, in URDF order ------------------------------------------------------
+
+    @property
+    def name(self) -> str:
+        """The robot's name (``<robot name>``)."""
+        return self.root.get("name", "")
+
+    @property
+    def expanded(self) -> bool:
+        """True when the description came from xacro."""
+        return bool(self.xacro_args) or self.path.suffix == ".xacro" or len(self.files) > 1
+
+    @cached_property
+    def links(self) -> tuple[el.Link, ...]:
+        """Every ``<link>``, in document order."""
+        return tuple(el.read_link(e) for e in self.root.findall("link"))
+
+    @cached_property
+    def joints(self) -> tuple[el.Joint, ...]:
+        """Every ``<joint>``, in document order."""
+        return tuple(el.read_joint(e) for e in self.root.findall("joint"))
+
+    @cached_property
+    def movable_joints(self) -> tuple[el.Joint, ...]:
+        """Joints that are not fixed, in URDF order."""
+        return tuple(j for j in self.joints if j.movable)
+
+    @cached_property
+    def materials(self) -> dict[str, tuple[float, float, float, float] | None]:
+        """Top-level materials: name to RGBA."""
+        return el.read_materials(self.root)
+
+    @cached_property
+    def transmissions(self) -> tuple[el.Transmission, ...]:
+        """Every ``<transmission>``."""
+        return tuple(el.read_transmission(e) for e in self.root.findall("transmission"))
+
+    @cached_property
+    def gazebo(self) -> tuple[ext.GazeboBlock, ...]:
+        """Every top-level ``<gazebo>`` block."""
+        return tuple(ext.read_gazebo(e) for e in self.root.findall("gazebo"))
+
+    @cached_property
+    def sensors(self) -> tuple[ext.Sensor, ...]:
+        """Every Gazebo ``<sensor>``, with the link it is attached to."""
+        return tuple(s for block in self.gazebo for s in block.sensors)
+
+    @cached_property
+    def plugins(self) -> tuple[ext.Plugin, ...]:
+        """Every Gazebo ``<plugin>``: model-level ones, then those inside sensors."""
+        model_level = [p for block in self.gazebo for p in block.plugins]
+        in_sensors = [p for s in self.sensors for p in s.plugins]
+        return tuple(model_level + in_sensors)
+
+    @cached_property
+    def ros2_control(self) -> tuple[ext.Ros2Control, ...]:
+        """Every ``<ros2_control>`` block."""
+        return tuple(ext.read_ros2_control(e) for e in self.root.findall("ros2_control"))
+
+    @cached_property
+    def root_link(self) -> str | None:
+        """The one link that is no joint's child; None if there are zero or several."""
+        children = {j.child for j in self.joints}
+        roots = [link.name for link in self.links if link.name not in children]
+        return roots[0] if len(roots) == 1 else None
+
+    @cached_property
+    def fixed_frames(self) -> tuple[FixedFrame, ...]:
+        """Links attached by fixed joints, in URDF order."""
+        return tuple(
+            FixedFrame(j.child or "", j.parent or "", j.name, j.origin)
+            for j in self.joints
+            if j.type == "fixed"
+        )
+
+    def link(self, name: str) -> el.Link:
+        """The link called ``name``.
+
+        Raises:
+            LinkNotFound: With the closest names.
+        """
+        for link in self.links:
+            if link.name == name:
+                return link
+        raise LinkNotFound.for_name(name, [lk.name for lk in self.links], robot=self.name)
+
+    def joint(self, name: str) -> el.Joint:
+        """The joint called ``name``.
+
+        Raises:
+            JointNotFound: With the closest names.
+        """
+        for joint in self.joints:
+            if joint.name == name:
+                return joint
+        raise JointNotFound.for_name(name, [j.name for j in self.joints], robot=self.name)
+
+    def require_frame(self, name: str) -> str:
+        """``name`` if it is a link (every link is a frame), else FrameNotFound."""
+        if any(link.name == name for link in self.links):
+            return name
+        raise FrameNotFound.for_name(name, [lk.name for lk in self.links], robot=self.name)
+
+    # -- where things were written -------------------------------------------------------------
+
+    def source_of(self, element: ET.Element | None) -> SourceRef:
+        """Where ``element`` was written: the xacro line for xacro input, else the URDF line."""
+        if element is None:
+            return SourceRef(self.display, 0)
+        origin = getattr(element, "origin", None)
+        if origin is not None:
+            return origin
+        return SourceRef(self.display, getattr(element, "sourceline", 0),
+                         getattr(element, "column", 0))
+
+    # -- Pinocchio -------------------------------------------------------------------------------
+
+    def model_with_base(self, base: str = "fixed") -> pin.Model:
+        """The Pinocchio model with root joint ``base``: ``fixed``, ``planar`` or ``free``.
+
+        Each is built once per description.
+
+        Raises:
+            DescriptionError: Pinocchio rejected the description.
+        """
+        if base not in self._models:
+            self._models[base] = build_model(self.xml_text, self.display, base)
+        return self._models[base]
+
+    @property
+    def model(self) -> pin.Model:
+        """The fixed-base Pinocchio model: the root link is the world frame."""
+        return self.model_with_base("fixed")
+
+    @cached_property
+    def data(self) -> pin.Data:
+        """Pinocchio data for :attr:`model`, shared; commands recompute what they read."""
+        return self.model.createData()
+
+    @cached_property
+    def joint_space(self) -> JointSpace:
+        """Joint names, limits and configuration vectors for :attr:`model`."""
+        from servicebot_cli.kinematics.configuration import JointSpace
+
+        return JointSpace.of(self.model, self.movable_joints)

@@ -1,0 +1,192 @@
+"""Typed views of Gazebo sensors: LIDAR, IMU and camera, and the ROS topics they publish.
+
+Reads both Gazebo Classic (``<ray>``, ``libgazebo_ros_*`` plugins, ``<ros><remapping>``)
+and gz-sim (``<lidar>``, ``<topic>``) spellings. Missing values are None, never guessed,
+so ``check`` can tell absent from wrong and the simulator can apply Gazebo's defaults.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from servicebot_cli.description.elements import parse_float
+from servicebot_cli.description.extensions import Params, Plugin, Sensor, param, params_all
+
+LIDAR_TYPES = ("ray", "gpu_ray", "lidar", "gpu_lidar")
+CAMERA_TYPES = ("camera", "depth", "depth_camera", "rgbd_camera", "wideanglecamera")
+
+
+@dataclass(frozen=True)
+class NoiseSpec:
+    """Gazebo noise: gaussian with an optional bias drawn once per run.
+
+    Units are those of the measured quantity ([m], [rad/s], [m/s^2]).
+    """
+
+    type: str
+    mean: float
+    stddev: float
+    bias_mean: float = 0.0
+    bias_stddev: float = 0.0
+
+
+@dataclass(frozen=True)
+class LidarSpec:
+    """A scanning range sensor.
+
+    Attributes:
+        samples: Rays per horizontal scan.
+        min_angle_rad, max_angle_rad: Scan span; the first and last rays sit on these angles.
+        min_range_m, max_range_m: Valid range; returns outside it are reported as out of range.
+        range_resolution_m: Quantisation of the ranges.
+        update_rate_hz: Scans per second.
+    """
+
+    samples: int | None
+    resolution: float | None
+    min_angle_rad: float | None
+    max_angle_rad: float | None
+    min_range_m: float | None
+    max_range_m: float | None
+    range_resolution_m: float | None
+    update_rate_hz: float | None
+    noise: NoiseSpec | None
+    frame: str | None
+    topic: str | None
+
+
+@dataclass(frozen=True)
+class ImuSpec:
+    """An IMU; noise per axis x, y, z (None where the description gives none)."""
+
+    update_rate_hz: float | None
+    angular_velocity_noise: tuple[NoiseSpec | None, NoiseSpec | None, NoiseSpec | None]
+    linear_acceleration_noise: tuple[NoiseSpec | None, NoiseSpec | None, NoiseSpec | None]
+    frame: str | None
+    topic: str | None
+
+
+@dataclass(frozen=True)
+class CameraSpec:
+    """A camera: image size [px], horizontal field of view [rad], clip planes [m]."""
+
+    width_px: int | None
+    height_px: int | None
+    horizontal_fov_rad: float | None
+    image_format: str | None
+    near_clip_m: float | None
+    far_clip_m: float | None
+    update_rate_hz: float | None
+    noise: NoiseSpec | None
+    frame: str | None
+    image_topic: str | None
+    info_topic: str | None
+
+
+def _float(params: Params, path: str) -> float | None:
+    return parse_float(param(params, path))
+
+
+def _int(params: Params, path: str) -> int | None:
+    value = _float(params, path)
+    return int(value) if value is not None and value == value and value.is_integer() else None
+
+
+def _noise(params: Params, prefix: str) -> NoiseSpec | None:
+    kind = param(params, f"{prefix}/type") or param(params, f"{prefix}@type")
+    if kind is None:
+        return None
+    return NoiseSpec(
+        type=kind,
+        mean=_float(params, f"{prefix}/mean") or 0.0,
+        stddev=_float(params, f"{prefix}/stddev") or 0.0,
+        bias_mean=_float(params, f"{prefix}/bias_mean") or 0.0,
+        bias_stddev=_float(params, f"{prefix}/bias_stddev") or 0.0,
+    )
+
+
+def _ros_plugin(sensor: Sensor) -> Plugin | None:
+    return sensor.plugins[0] if sensor.plugins else None
+
+
+def _resolve(plugin: Plugin, default: str) -> str:
+    """A Gazebo ROS plugin topic: remapped, then put in the plugin's namespace."""
+    topic = default
+    for rule in params_all(plugin.params, "ros/remapping"):
+        source, _, target = rule.partition(":=")
+        if source.strip() in (default, default.removeprefix("~/")):
+            topic = target.strip()
+    if topic.startswith("~/"):
+        topic = f"{plugin.name}/{topic[2:]}"
+    namespace = (param(plugin.params, "ros/namespace") or "").strip("/")
+    if namespace and not topic.startswith("/"):
+        topic = f"{namespace}/{topic}"
+    return topic
+
+
+def _frame(sensor: Sensor) -> str | None:
+    plugin = _ros_plugin(sensor)
+    named = param(plugin.params, "frame_name") if plugin else None
+    return named or param(sensor.params, "frame_id") or sensor.reference
+
+
+def lidar_spec(sensor: Sensor) -> LidarSpec:
+    """The LIDAR view of a ``ray``/``gpu_ray``/``lidar``/``gpu_lidar`` sensor."""
+    p = sensor.params
+    root = "lidar" if any(k.startswith("lidar/") for k, _ in p) else "ray"
+    plugin = _ros_plugin(sensor)
+    return LidarSpec(
+        samples=_int(p, f"{root}/scan/horizontal/samples"),
+        resolution=_float(p, f"{root}/scan/horizontal/resolution"),
+        min_angle_rad=_float(p, f"{root}/scan/horizontal/min_angle"),
+        max_angle_rad=_float(p, f"{root}/scan/horizontal/max_angle"),
+        min_range_m=_float(p, f"{root}/range/min"),
+        max_range_m=_float(p, f"{root}/range/max"),
+        range_resolution_m=_float(p, f"{root}/range/resolution"),
+        update_rate_hz=sensor.update_rate_hz,
+        noise=_noise(p, f"{root}/noise"),
+        frame=_frame(sensor),
+        topic=_resolve(plugin, "~/out") if plugin else param(p, "topic"),
+    )
+
+
+def imu_spec(sensor: Sensor) -> ImuSpec:
+    """The IMU view of an ``imu`` sensor."""
+    p = sensor.params
+
+    def axes(quantity: str) -> tuple[NoiseSpec | None, NoiseSpec | None, NoiseSpec | None]:
+        x, y, z = (_noise(p, f"imu/{quantity}/{axis}/noise") for axis in "xyz")
+        return (x, y, z)
+
+    plugin = _ros_plugin(sensor)
+    return ImuSpec(
+        update_rate_hz=sensor.update_rate_hz,
+        angular_velocity_noise=axes("angular_velocity"),
+        linear_acceleration_noise=axes("linear_acceleration"),
+        frame=_frame(sensor),
+        topic=_resolve(plugin, "~/out") if plugin else param(p, "topic"),
+    )
+
+
+def camera_spec(sensor: Sensor) -> CameraSpec:
+    """The camera view of a ``camera`` sensor."""
+    p = sensor.params
+    plugin = _ros_plugin(sensor)
+    image_topic = info_topic = param(p, "topic")
+    if plugin is not None:
+        name = param(plugin.params, "camera_name") or sensor.name
+        image_topic = _resolve(plugin, f"{name}/image_raw")
+        info_topic = _resolve(plugin, f"{name}/camera_info")
+    return CameraSpec(
+        width_px=_int(p, "camera/image/width"),
+        height_px=_int(p, "camera/image/height"),
+        horizontal_fov_rad=_float(p, "camera/horizontal_fov"),
+        image_format=param(p, "camera/image/format"),
+        near_clip_m=_float(p, "camera/clip/near"),
+        far_clip_m=_float(p, "camera/clip/far"),
+        update_rate_hz=sensor.update_rate_hz,
+        noise=_noise(p, "camera/noise"),
+        frame=_frame(sensor),
+        image_topic=image_topic,
+        info_topic=info_topic,
+    )

@@ -1,0 +1,1 @@
+"""Pure kinematics over joint values and Pinocchio models."""
