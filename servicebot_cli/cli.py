@@ -1,0 +1,106 @@
+"""The ``servicebot`` command: a Click group and the one place errors become exit codes.
+
+Every failure a user can cause ends as one ``Error: ...`` line on stderr with a documented
+exit code (see :class:`ExitCode`); ``--debug`` shows the traceback instead. Command modules
+import only Click and light helpers at the top, so ``--help`` and shell completion stay fast.
+"""
+
+from __future__ import annotations
+
+import sys
+from typing import Any, NoReturn
+
+import click
+
+from servicebot_cli import __version__
+from servicebot_cli.commands.check import check
+from servicebot_cli.commands.drive import drive
+from servicebot_cli.commands.expand import expand
+from servicebot_cli.commands.fk import fk
+from servicebot_cli.commands.ik import ik
+from servicebot_cli.commands.inspect import inspect
+from servicebot_cli.commands.simulate import simulate
+from servicebot_cli.errors import ExitCode, ServicebotError
+
+
+class OneLineUsageError(click.ClickException):
+    """A usage error shown as one line, with where to find help."""
+
+    exit_code = ExitCode.USAGE
+
+    def __init__(self, error: click.UsageError) -> None:
+        super().__init__(error.format_message())
+        self.command_path = error.ctx.command_path if error.ctx else "servicebot"
+
+    def format_message(self) -> str:
+        """The message, then a pointer to ``--help``."""
+        return f"{self.message.rstrip('.')} (see '{self.command_path} --help')"
+
+
+class ServicebotGroup(click.Group):
+    """Translates every error into one stderr line and an exit code."""
+
+    def make_context(self, info_name: str | None, args: list[str],
+                     parent: click.Context | None = None, **extra: Any) -> click.Context:
+        """Parse the group's own options, with one-line usage errors."""
+        try:
+            return super().make_context(info_name, args, parent=parent, **extra)
+        except click.exceptions.NoArgsIsHelpError:
+            raise
+        except click.UsageError as exc:
+            raise OneLineUsageError(exc) from None
+
+    def invoke(self, ctx: click.Context) -> Any:
+        """Run the subcommand; turn our errors and unexpected ones into exit codes."""
+        try:
+            return super().invoke(ctx)
+        except click.exceptions.NoArgsIsHelpError:
+            raise
+        except click.UsageError as exc:
+            raise OneLineUsageError(exc) from None
+        except ServicebotError as exc:
+            if ctx.params.get("debug"):
+                raise
+            _fail(ctx, str(exc), exc.exit_code)
+        except (click.exceptions.Exit, click.ClickException, click.Abort):
+            raise
+        except BrokenPipeError:
+            sys.stderr.close()  # the reader went away (| head): nothing left to say
+            ctx.exit(ExitCode.OK)
+        except KeyboardInterrupt:
+            _fail(ctx, "interrupted", ExitCode.INTERRUPTED)
+        except Exception as exc:
+            if ctx.params.get("debug"):
+                raise
+            _fail(
+                ctx,
+                f"internal error: {type(exc).__name__}: {exc}. This is a bug in servicebot; "
+                "rerun with --debug for the traceback and report it",
+                ExitCode.INTERNAL,
+            )
+
+
+def _fail(ctx: click.Context, message: str, code: int) -> NoReturn:
+    click.echo(f"Error: {' '.join(message.split())}", err=True)
+    ctx.exit(code)
+
+
+@click.group(cls=ServicebotGroup, context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, "-V", "--version", prog_name="servicebot")
+@click.option("--debug", is_flag=True, help="Show the traceback of any error.")
+def main(debug: bool) -> None:
+    """Check, inspect, move, simulate and drive a differential-drive service robot.
+
+    Every command takes the robot description as an optional argument: a URDF or xacro
+    file, then xacro arguments NAME:=VALUE. Without one it uses the bundled simulation
+    robot; --robot real picks the bundled real one.
+
+    \b
+    Exit codes: 0 ok, 1 the answer is no (findings, a difference, no IK solution),
+    2 bad input, 3 internal error, 4 serial link error, 5 serial link lost,
+    130 interrupted (Ctrl-C), 143 terminated (SIGTERM).
+    """
+
+
+for _command in (check, inspect, fk, ik, simulate, drive, expand):
+    main.add_command(_command)

@@ -1,0 +1,43 @@
+"""``servicebot expand``: xacro to URDF, with no ROS installed."""
+
+from __future__ import annotations
+
+import click
+
+from servicebot_cli.options import RobotArgs, robot_arguments
+
+
+@click.command()
+@robot_arguments()
+@click.option("-o", "--output", type=click.Path(dir_okay=False, allow_dash=True), default="-",
+              help="Write the URDF here (atomically) instead of to stdout.")
+def expand(robot_args: RobotArgs, output: str) -> None:
+    """Expand a xacro file into URDF.
+
+    Without FILE, expands the bundled robot's xacro source into exactly the bundled
+    simulation URDF, or with --robot real (hardware:=real) the real one. $(find PKG) and
+    package://PKG resolve through --package, ROS_PACKAGE_PATH and AMENT_PREFIX_PATH.
+
+    \b
+    Examples:
+      servicebot expand robots/service_robot.urdf.xacro hardware:=real -o real.urdf
+      servicebot expand my_robot.urdf.xacro --package my_robot_description=./src/desc
+    """
+    from servicebot_cli.description.loader import RobotSource, read_description
+    from servicebot_cli.description.resources import DEFAULT_ROBOT, XACRO_SOURCE, bundled_file
+    from servicebot_cli.output.files import write_atomic
+
+    if robot_args.files:
+        source = robot_args.source()
+    else:
+        args = dict(robot_args.xacro_args)
+        args.setdefault("hardware", robot_args.bundled or DEFAULT_ROBOT)
+        path = bundled_file(XACRO_SOURCE)
+        source = RobotSource(path, str(path), tuple(args.items()), robot_args.packages)
+    robot = read_description(source)
+    for warning in robot.warnings:
+        click.echo(f"warning: {warning}", err=True)
+    if output == "-":
+        click.echo(robot.xml_text, nl=False)
+    else:
+        write_atomic(output, robot.xml_text)

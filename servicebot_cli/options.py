@@ -1,0 +1,202 @@
+"""Options and parameter types shared by every command, defined once.
+
+The robot description is every command's optional positional argument: a URDF or xacro
+file followed by xacro arguments, ``FILE [NAME:=VALUE ...]``. Without a file, the bundled
+simulation robot is used; ``--robot sim|real`` picks a bundled file by name.
+Validation happens here, at the parsing edge, so commands receive clean values.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, TypeVar
+
+import click
+from click.shell_completion import CompletionItem
+
+from servicebot_cli.description.resources import BUNDLED_ROBOTS, DEFAULT_ROBOT
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+_XACRO_ARG_RE = re.compile(r"^([A-Za-z_][\w]*):=(.*)$", re.DOTALL)
+_JOINT_VALUE_RE = re.compile(r"^([^=\s]+)=(.+)$")
+
+
+@dataclass(frozen=True)
+class RobotArgs:
+    """The robot arguments of a command line.
+
+    Attributes:
+        files: Files (or, for ``check``, directories) in the order given.
+        xacro_args: ``name:=value`` pairs in the order given.
+        bundled: The ``--robot`` name, or None.
+        packages: ``--package NAME=DIR`` pairs.
+    """
+
+    files: tuple[str, ...]
+    xacro_args: tuple[tuple[str, str], ...]
+    bundled: str | None
+    packages: tuple[tuple[str, str], ...]
+
+    def source(self) -> Any:
+        """The one RobotSource these arguments name (the bundled sim robot by default).
+
+        Raises:
+            click.UsageError: Several files, or a file and ``--robot`` together.
+        """
+        from servicebot_cli.description.loader import RobotSource
+
+        if len(self.files) > 1:
+            raise click.UsageError(
+                f"one robot description at a time, got {len(self.files)}: "
+                + " ".join(self.files)
+            )
+        if self.files and self.bundled:
+            raise click.UsageError(f"give a FILE or --robot {self.bundled}, not both")
+        if self.files:
+            return RobotSource.of(self.files[0], xacro_args=self.xacro_args,
+                                  packages=self.packages)
+        bundled = RobotSource.bundled(self.bundled or DEFAULT_ROBOT)
+        if self.xacro_args:
+            raise click.UsageError(
+                "xacro arguments need a xacro FILE; the bundled robots are plain URDF "
+                "(their source is robots/service_robot.urdf.xacro)"
+            )
+        return bundled
+
+
+def split_robot_args(values: Sequence[str]) -> tuple[tuple[str, ...], tuple[tuple[str, str], ...]]:
+    """Split positional values into files and ``name:=value`` xacro arguments."""
+    files, xacro_args = [], []
+    for value in values:
+        match = _XACRO_ARG_RE.match(value)
+        if match:
+            xacro_args.append((match.group(1), match.group(2)))
+        elif ":=" in value:
+            raise click.BadParameter(
+                f"'{value}' is not NAME:=VALUE (NAME is letters, digits and _)",
+                param_hint="xacro argument",
+            )
+        else:
+            files.append(value)
+    return tuple(files), tuple(xacro_args)
+
+
+class BundledRobot(click.ParamType):
+    """A bundled robot name (``sim``, ``real``); completes the names."""
+
+    name = "robot"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> str:
+        """Accept a bundled robot name."""
+        if value in BUNDLED_ROBOTS:
+            return str(value)
+        self.fail(f"no bundled robot '{value}'; choose one of: {', '.join(BUNDLED_ROBOTS)}",
+                  param, ctx)
+
+    def shell_complete(
+        self, ctx: click.Context, param: click.Parameter, incomplete: str
+    ) -> list[CompletionItem]:
+        """Complete bundled robot names."""
+        return [CompletionItem(n) for n in BUNDLED_ROBOTS if n.startswith(incomplete)]
+
+
+class PackageDir(click.ParamType):
+    """``NAME=DIR``: where a ROS package lives, for ``$(find NAME)`` and ``package://NAME``."""
+
+    name = "NAME=DIR"
+
+    def convert(
+        self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+    ) -> tuple[str, str]:
+        """Split and check ``NAME=DIR``."""
+        if isinstance(value, tuple):
+            return value
+        name, sep, directory = str(value).partition("=")
+        if not sep or not name or not directory:
+            self.fail(f"'{value}' is not NAME=DIR, e.g. my_robot_description=./src/desc",
+                      param, ctx)
+        if not Path(directory).is_dir():
+            self.fail(f"'{directory}' for package '{name}' is not a directory", param, ctx)
+        return name, directory
+
+
+class RobotArgument(click.ParamType):
+    """A robot file or a xacro ``NAME:=VALUE``; completes file names."""
+
+    name = "FILE|NAME:=VALUE"
+
+    def shell_complete(
+        self, ctx: click.Context, param: click.Parameter, incomplete: str
+    ) -> list[CompletionItem]:
+        """Let the shell complete paths."""
+        return [CompletionItem(incomplete, type="file")]
+
+
+def robot_arguments(multiple: bool = False) -> Callable[[F], F]:
+    """Add ``[FILE] [NAME:=VALUE]...``, ``--robot`` and ``--package``; pass ``robot_args``.
+
+    Args:
+        multiple: Document several files (``check``); the command then reads
+            ``robot_args.files`` itself instead of calling ``robot_args.source()``.
+    """
+    metavar = "[FILE]... [NAME:=VALUE]..." if multiple else "[FILE] [NAME:=VALUE]..."
+
+    def decorate(f: F) -> F:
+        @functools.wraps(f)
+        def wrapper(*args: Any, robot_values: tuple[str, ...], bundled: str | None,
+                    packages: tuple[tuple[str, str], ...], **kwargs: Any) -> Any:
+            files, xacro_args = split_robot_args(robot_values)
+            robot_args = RobotArgs(files, xacro_args, bundled, packages)
+            return f(*args, robot_args=robot_args, **kwargs)
+
+        wrapper = click.option(
+            "--package", "packages", type=PackageDir(), multiple=True, metavar="NAME=DIR",
+            help="Where ROS package NAME lives, for $(find NAME) and package://NAME "
+            "(repeatable; searched before ROS_PACKAGE_PATH and AMENT_PREFIX_PATH).",
+        )(wrapper)
+        wrapper = click.option(
+            "--robot", "bundled", type=BundledRobot(), default=None,
+            help=f"Use a bundled robot by name: {', '.join(BUNDLED_ROBOTS)} "
+            f"(default: {DEFAULT_ROBOT} when no FILE is given).",
+        )(wrapper)
+        wrapper = click.argument(
+            "robot_values", nargs=-1, type=RobotArgument(), metavar=metavar
+        )(wrapper)
+        return wrapper  # type: ignore[return-value]
+
+    return decorate
+
+
+class JointValue(click.ParamType):
+    """``NAME=VALUE``: a joint and its position (a number; [rad] or [m], or [deg] with --deg)."""
+
+    name = "NAME=VALUE"
+
+    def convert(
+        self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+    ) -> tuple[str, float]:
+        """Split and check ``NAME=VALUE``."""
+        if isinstance(value, tuple):
+            return value
+        match = _JOINT_VALUE_RE.match(str(value))
+        if not match:
+            self.fail(f"'{value}' is not NAME=VALUE, e.g. arm_base_to_link1=0.5", param, ctx)
+        name, text = match.group(1), match.group(2)
+        try:
+            number = float(text)
+        except ValueError:
+            self.fail(f"'{text}' for joint '{name}' is not a number", param, ctx)
+        if number != number or number in (float("inf"), float("-inf")):
+            self.fail(f"'{text}' for joint '{name}' is not a finite number", param, ctx)
+        return name, number
+
+
+format_option = click.option(
+    "--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True,
+    help="Output for people (text) or for programs (json).",
+)
