@@ -1,0 +1,165 @@
+"""Bad input, for every command: one line on stderr naming the file, exit 2, no traceback."""
+
+from __future__ import annotations
+
+import stat
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import pytest
+
+from servicebot_cli.description.safe_xml import parse_xml
+from servicebot_cli.errors import UnsafeXmlError, XmlError
+from tests.conftest import SIM_URDF, XACRO_SOURCE, assert_one_line_error
+
+COMMANDS = ["check", "inspect", "fk", "ik", "simulate", "drive", "expand"]
+# check reports a malformed file as a finding (exit 1); every other command refuses it (exit 2)
+LOADING_COMMANDS = ["inspect", "fk", "ik", "simulate", "drive", "expand"]
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_missing_file(run, command, tmp_path):
+    missing = tmp_path / "nope.urdf"
+    assert_one_line_error(run(command, missing), 2, str(missing), "no such file")
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_directory(run, command, tmp_path):
+    assert_one_line_error(run(command, tmp_path / "."), 2, "is a directory")
+
+
+@pytest.mark.parametrize("command", LOADING_COMMANDS)
+def test_malformed_xml_names_line_and_column(run, command, tmp_path):
+    bad = tmp_path / "bad.urdf"
+    bad.write_text('<robot name="r">\n  <link name="a">\n</robot>\n')
+    assert_one_line_error(run(command, bad), 2, f"{bad}:3:3", "mismatched tag")
+
+
+@pytest.mark.parametrize("command", LOADING_COMMANDS)
+def test_xacro_error(run, command, tmp_path):
+    bad = tmp_path / "bad.urdf.xacro"
+    bad.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                   '  <xacro:nosuch_macro/>\n</robot>\n')
+    assert_one_line_error(run(command, bad), 2, f"{bad}:2:3", "unknown macro name")
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_unknown_bundled_robot(run, command):
+    assert_one_line_error(run(command, "--robot", "mars"), 2, "no bundled robot 'mars'",
+                          "sim, real")
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_file_and_robot_together(run, command):
+    assert_one_line_error(run(command, SIM_URDF, "--robot", "real"), 2, "not both")
+
+
+@pytest.mark.parametrize("command", ["inspect", "fk", "ik", "simulate", "drive"])
+def test_not_a_robot(run, command, tmp_path):
+    other = tmp_path / "model.sdf"
+    other.write_text('<sdf version="1.6"><model name="m"/></sdf>')
+    assert_one_line_error(run(command, other), 2, "root element is <sdf>, not <robot>")
+
+
+@pytest.mark.parametrize("command", ["inspect", "fk", "ik", "simulate", "drive"])
+def test_urdf_that_pinocchio_rejects(run, command, tmp_path):
+    bad = tmp_path / "nolimits.urdf"
+    bad.write_text('<robot name="r"><link name="a"/><link name="b"/>'
+                   '<joint name="j" type="revolute"><parent link="a"/><child link="b"/>'
+                   "</joint></robot>")
+    line = assert_one_line_error(run(command, bad), 2, "not a valid URDF",
+                                 "does not specify limits", "servicebot check")
+    assert "urdfdom" not in line and "model.cpp" not in line
+
+
+_AS_NOBODY = """
+import os, sys
+from servicebot_cli.cli import main
+import servicebot_cli.description.loader  # imported while still allowed to read the venv
+if os.geteuid() == 0:  # root reads everything: drop to nobody for a real permission check
+    os.setgroups([]); os.setgid(65534); os.setuid(65534)
+main(sys.argv[1:], prog_name="servicebot")
+"""
+
+
+def test_unreadable_file():
+    directory = Path(tempfile.mkdtemp(prefix="sb-perm-"))
+    try:
+        directory.chmod(0o755)
+        secret = directory / "secret.urdf"
+        secret.write_bytes(SIM_URDF.read_bytes())
+        secret.chmod(0)
+        result = subprocess.run([sys.executable, "-c", _AS_NOBODY, "fk", str(secret)],
+                                capture_output=True, text=True, timeout=60, cwd=directory)
+        assert_one_line_error(result, 2, str(secret), "permission denied")
+    finally:
+        for path in directory.iterdir():
+            path.chmod(stat.S_IWUSR | stat.S_IRUSR)
+            path.unlink()
+        directory.rmdir()
+
+
+def test_empty_file(run, tmp_path):
+    empty = tmp_path / "empty.urdf"
+    empty.write_bytes(b"")
+    assert_one_line_error(run("fk", empty), 2, "file is empty")
+
+
+def test_invalid_utf8(run, tmp_path):
+    bad = tmp_path / "latin1.urdf"
+    bad.write_bytes('<robot name="r">\n  <link name="caf\u00e9"/>\n</robot>'.encode("latin-1"))
+    assert_one_line_error(run("fk", bad), 2, f"{bad}:2:18", "invalid UTF-8",
+                          "save the file as UTF-8")
+
+
+def test_entity_that_reads_a_file_is_refused_and_leaks_nothing(run, tmp_path):
+    evil = tmp_path / "evil.urdf"
+    evil.write_text('<?xml version="1.0"?>\n<!DOCTYPE robot [<!ENTITY passwd SYSTEM '
+                    '"file:///etc/passwd">]>\n<robot name="&passwd;"><link name="a"/></robot>\n')
+    result = run("fk", evil)
+    assert_one_line_error(result, 2, "entity declaration 'passwd' refused")
+    assert "root:" not in result.stdout + result.stderr
+
+
+def test_billion_laughs_is_refused_at_once():
+    lol = b'<?xml version="1.0"?><!DOCTYPE lolz [<!ENTITY lol "lol">' + b"".join(
+        b'<!ENTITY lol%d "%s">' % (i, b"&lol%d;" % (i - 1) * 10 if i > 1 else b"&lol;" * 10)
+        for i in range(1, 10)
+    ) + b']><robot name="&lol9;"/>'
+    with pytest.raises(UnsafeXmlError, match="entity declaration"):
+        parse_xml(lol, "lol.urdf")
+
+
+def test_external_dtd_is_never_fetched():
+    with pytest.raises(UnsafeXmlError, match="never loaded"):
+        parse_xml(b'<!DOCTYPE robot SYSTEM "http://example.com/urdf.dtd"><robot name="r"/>', "x")
+
+
+def test_size_limit_refuses_quickly():
+    with pytest.raises(XmlError, match="over the 1 MB limit"):
+        parse_xml(b"<robot>" + b" " * 2_000_000 + b"</robot>", "big.urdf", max_bytes=1_000_000)
+
+
+def test_element_positions_are_recorded():
+    doc = parse_xml(b'<robot name="r">\n  <!-- note -->\n  <link name="a"/>\n</robot>', "x")
+    (link,) = list(doc.root)
+    assert (link.sourceline, link.column, link.leading_comments) == (3, 3, (" note ",))
+
+
+def test_xacro_arguments_for_a_plain_urdf(run):
+    assert_one_line_error(run("fk", SIM_URDF, "hardware:=real"), 2, "not a xacro file")
+
+
+def test_xacro_arguments_without_a_file(run):
+    assert_one_line_error(run("fk", "hardware:=real"), 2, "need a xacro FILE")
+
+
+def test_two_files_for_a_single_robot_command(run):
+    assert_one_line_error(run("fk", SIM_URDF, XACRO_SOURCE), 2, "one robot description at a time")
+
+
+def test_unknown_option_is_one_line(run):
+    assert_one_line_error(run("fk", "--no-such-option"), 2, "No such option",
+                          "servicebot fk --help")

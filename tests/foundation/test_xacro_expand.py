@@ -1,0 +1,174 @@
+"""xacro expansion without ROS: includes, packages, arguments, source positions, errors."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from servicebot_cli.description.loader import RobotSource, read_description
+from tests.conftest import XACRO_SOURCE, assert_one_line_error
+
+MAIN = """<?xml version="1.0"?>
+<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:arg name="tag" default="a"/>
+  <xacro:include filename="parts/wheel.xacro"/>
+  <link name="base_link"/>
+  <xacro:wheel side="left" y="0.3"/>
+  <xacro:wheel side="right" y="-0.3"/>
+  <link name="mesh_holder">
+    <visual>
+      <geometry>
+        <mesh filename="$(find demo_pkg)/meshes/part.stl"/>
+      </geometry>
+    </visual>
+  </link>
+  <link name="tag_$(arg tag)"/>
+</robot>
+"""
+WHEEL = """<robot xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:macro name="wheel" params="side y">
+    <link name="${side}_wheel"/>
+    <joint name="${side}_joint" type="continuous">
+      <parent link="base_link"/>
+      <child link="${side}_wheel"/>
+      <origin xyz="0 ${y} 0"/>
+      <limit effort="1" velocity="1"/>
+    </joint>
+  </xacro:macro>
+</robot>
+"""
+
+
+@pytest.fixture
+def project(tmp_path, monkeypatch):
+    (tmp_path / "parts").mkdir()
+    (tmp_path / "robot.urdf.xacro").write_text(MAIN)
+    (tmp_path / "parts" / "wheel.xacro").write_text(WHEEL)
+    package = tmp_path / "ws" / "src" / "group" / "demo_pkg"
+    package.mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>demo_pkg</name></package>")
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.delenv("ROS_PACKAGE_PATH", raising=False)
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+    return tmp_path, package
+
+
+def test_package_given_with_option(run, project):
+    root, package = project
+    result = run("expand", "robot.urdf.xacro", "tag:=b", "--package", f"demo_pkg={package}")
+    assert result.exit_code == 0, result.stderr
+    assert f'<mesh filename="{package}/meshes/part.stl"/>' in result.stdout
+    assert '<link name="tag_b"/>' in result.stdout
+    assert "xacro:" not in result.stdout and "servicebot-src" not in result.stdout
+
+
+def test_package_found_through_ros_package_path(run, project):
+    root, package = project
+    result = run("expand", "robot.urdf.xacro", env={"ROS_PACKAGE_PATH": str(root / "ws")})
+    assert result.exit_code == 0, result.stderr
+    assert f"{package}/meshes/part.stl" in result.stdout
+
+
+def test_package_found_through_ament_prefix_path(run, project):
+    root, _ = project
+    share = root / "install" / "share" / "demo_pkg"
+    share.mkdir(parents=True)
+    result = run("expand", "robot.urdf.xacro", env={"AMENT_PREFIX_PATH": str(root / "install")})
+    assert result.exit_code == 0, result.stderr
+    assert f"{share}/meshes/part.stl" in result.stdout
+
+
+def test_missing_package_names_it_and_where_it_looked(run, project):
+    result = run("expand", "robot.urdf.xacro")
+    line = assert_one_line_error(result, 2, "robot.urdf.xacro:11:9", "package 'demo_pkg' not found",
+                                 "ROS_PACKAGE_PATH", "--package NAME=DIR")
+    assert "Traceback" not in line
+
+
+def test_every_element_knows_its_xacro_line_and_macro_call(project):
+    root, package = project
+    robot = read_description(RobotSource.of("robot.urdf.xacro",
+                                            packages=(("demo_pkg", str(package)),)))
+    left = robot.joint("left_joint")
+    where = robot.source_of(left.element)
+    assert (where.file, where.line, where.column) == ("parts/wheel.xacro", 4, 5)
+    assert (where.via.file, where.via.line) == ("robot.urdf.xacro", 6)
+    right = robot.source_of(robot.joint("right_joint").element)
+    assert right.via.line == 7
+    base = robot.source_of(robot.link("base_link").element)
+    assert (base.file, base.line, base.via) == ("robot.urdf.xacro", 5, None)
+    assert str(where) == "parts/wheel.xacro:4:5 (from the macro call at robot.urdf.xacro:6:3)"
+    assert robot.files == ("robot.urdf.xacro", "parts/wheel.xacro")
+
+
+def test_bundled_xacro_positions_point_into_the_includes():
+    robot = read_description(RobotSource.of(XACRO_SOURCE, xacro_args=(("hardware", "real"),)))
+    hardware = robot.ros2_control[0].element
+    where = robot.source_of(hardware)
+    assert Path(where.file).name == "ros2_control.xacro"
+    assert robot.ros2_control[0].hardware_param("baud_rate") == "9600"
+
+
+def test_unknown_xacro_argument_is_an_error(run, project):
+    root, package = project
+    assert_one_line_error(
+        run("expand", "robot.urdf.xacro", "tga:=b", "--package", f"demo_pkg={package}"),
+        2, "xacro argument 'tga' is not used", "its arguments: tag",
+    )
+
+
+def test_malformed_xacro_argument_is_a_usage_error(run):
+    assert_one_line_error(run("expand", XACRO_SOURCE, "9bad:=x"), 2, "NAME:=VALUE")
+
+
+def test_xacro_expression_error_names_file_and_line(run, tmp_path):
+    bad = tmp_path / "bad.xacro"
+    bad.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                   '  <link name="a">\n    <visual><geometry><box size="${w} 1 1"/></geometry>'
+                   "</visual>\n  </link>\n</robot>\n")
+    assert_one_line_error(run("expand", bad), 2, f"{bad}:3:", "name 'w' is not defined")
+
+
+def test_undeclared_xacro_namespace(run, tmp_path):
+    bad = tmp_path / "nons.urdf.xacro"
+    bad.write_text('<robot name="r">\n  <xacro:property name="a" value="1"/>\n</robot>\n')
+    assert_one_line_error(run("expand", bad), 2, f"{bad}:2:", "xmlns:xacro")
+
+
+def test_missing_include_names_it(run, tmp_path):
+    bad = tmp_path / "inc.xacro"
+    bad.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                   '  <xacro:include filename="gone.xacro"/>\n</robot>\n')
+    assert_one_line_error(run("expand", bad), 2, "gone.xacro", "No such file or directory")
+
+
+def test_an_include_with_an_entity_is_refused(run, tmp_path):
+    (tmp_path / "evil.xacro").write_text(
+        '<!DOCTYPE r [<!ENTITY x SYSTEM "file:///etc/passwd">]>\n<robot>&x;</robot>')
+    main = tmp_path / "main.xacro"
+    main.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                    '  <xacro:include filename="evil.xacro"/>\n</robot>\n')
+    line = assert_one_line_error(run("expand", main), 2, "evil.xacro", "entity declaration 'x'")
+    assert "root:" not in line
+
+
+def test_output_file_is_written_atomically(run, tmp_path):
+    out = tmp_path / "robot.urdf"
+    out.write_text("previous")
+    assert run("expand", XACRO_SOURCE, "hardware:=nope", "-o", out).exit_code == 2
+    assert out.read_text() == "previous"  # a failed expansion leaves the old file alone
+    assert [p.name for p in tmp_path.iterdir()] == ["robot.urdf"]
+    assert run("expand", XACRO_SOURCE, "-o", out).exit_code == 0
+    assert out.read_text().startswith("<?xml")
+
+
+def test_output_into_missing_directory(run, tmp_path):
+    assert_one_line_error(run("expand", XACRO_SOURCE, "-o", tmp_path / "no" / "x.urdf"), 2,
+                          "does not exist")
+
+
+def test_package_option_must_name_a_directory(run, tmp_path):
+    assert_one_line_error(run("expand", XACRO_SOURCE, "--package", f"p={tmp_path}/none"), 2,
+                          "is not a directory")
+    assert_one_line_error(run("expand", XACRO_SOURCE, "--package", "nodir"), 2, "NAME=DIR")
