@@ -1,0 +1,43 @@
+"""Stable JSON for scripts: dataclasses, numpy values and paths to plain JSON.
+
+Keys keep the declaration order of dataclass fields (never sorted at random), floats that are
+not finite become ``null`` (JSON has no NaN), and the output ends with a newline.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+from collections.abc import Mapping
+from enum import Enum
+from pathlib import PurePath
+from typing import Any
+
+
+def to_jsonable(value: Any) -> Any:
+    """``value`` as nested dicts, lists, strings, numbers, booleans and None."""
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        return {
+            f.name: to_jsonable(getattr(value, f.name))
+            for f in dataclasses.fields(value)
+            if f.repr  # fields hidden from repr (XML elements, caches) stay out of JSON too
+        }
+    if isinstance(value, Enum):
+        return to_jsonable(value.value)
+    if isinstance(value, Mapping):
+        return {str(k): to_jsonable(v) for k, v in value.items()}
+    if isinstance(value, list | tuple | set | frozenset):
+        return [to_jsonable(v) for v in value]
+    if isinstance(value, PurePath):
+        return str(value)
+    if hasattr(value, "tolist"):  # numpy arrays and scalars
+        return to_jsonable(value.tolist())
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    return value
+
+
+def dumps(value: Any, *, indent: int | None = 2) -> str:
+    """``value`` as JSON text with a trailing newline."""
+    return json.dumps(to_jsonable(value), indent=indent, ensure_ascii=False, allow_nan=False) + "\n"

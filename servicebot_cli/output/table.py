@@ -1,0 +1,82 @@
+"""Plain-text tables that fit a terminal width, for every command's text output.
+
+Numbers are right-aligned, text left-aligned. When the table is wider than ``max_width``,
+the widest text columns are truncated with an ellipsis, never the numbers.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+ELLIPSIS = "…"
+
+
+def format_number(value: float | None, digits: int = 6) -> str:
+    """A number for people: ``digits`` significant digits, no exponent for ordinary sizes."""
+    if value is None:
+        return "-"
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, int):
+        return str(value)
+    if math.isnan(value):
+        return "nan"
+    if math.isinf(value):
+        return "inf" if value > 0 else "-inf"
+    if value == 0:
+        return "0"
+    text = f"{value:.{digits}g}"
+    return "0" if text in ("-0", "0") else text
+
+
+def _cell(value: object) -> str:
+    if isinstance(value, float | int) and not isinstance(value, bool):
+        return format_number(value)
+    if value is None:
+        return "-"
+    return str(value)
+
+
+def _is_numeric(column: Sequence[object]) -> bool:
+    present = [v for v in column if v is not None]
+    return bool(present) and all(
+        isinstance(v, float | int) and not isinstance(v, bool) for v in present
+    )
+
+
+def table(
+    headers: Sequence[str], rows: Sequence[Sequence[object]], *, max_width: int = 100, gap: int = 2
+) -> list[str]:
+    """Lines of a table: a header, a rule, then one line per row.
+
+    Args:
+        headers: Column titles.
+        rows: Cell values; floats are formatted with :func:`format_number`.
+        max_width: Widest line allowed [characters].
+        gap: Spaces between columns.
+    """
+    columns = list(zip(*rows, strict=True)) if rows else [() for _ in headers]
+    numeric = [_is_numeric(col) for col in columns]
+    cells = [[_cell(v) for v in row] for row in rows]
+    widths = [max([len(h), *(len(r[i]) for r in cells)]) for i, h in enumerate(headers)]
+    overflow = sum(widths) + gap * (len(widths) - 1) - max_width
+    while overflow > 0:
+        candidates = [i for i in range(len(widths)) if not numeric[i] and widths[i] > 8]
+        if not candidates:
+            break
+        widest = max(candidates, key=lambda i: widths[i])
+        cut = min(overflow, widths[widest] - 8)
+        widths[widest] -= cut
+        overflow -= cut
+
+    def fit(text: str, i: int) -> str:
+        if len(text) > widths[i]:
+            text = text[: widths[i] - 1] + ELLIPSIS
+        return text.rjust(widths[i]) if numeric[i] else text.ljust(widths[i])
+
+    spacer = " " * gap
+    lines = [spacer.join(fit(h, i) for i, h in enumerate(headers)).rstrip()]
+    lines.append(spacer.join("-" * w for w in widths))
+    lines.extend(spacer.join(fit(c, i) for i, c in enumerate(row)).rstrip() for row in cells)
+    return lines

@@ -1,0 +1,54 @@
+"""Shared renderers: tables that fit the terminal, JSON that scripts can rely on."""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from servicebot_cli.output.jsonable import dumps
+from servicebot_cli.output.table import format_number, table
+
+
+def test_table_aligns_numbers_right_and_text_left():
+    lines = table(["joint", "lower_rad"], [["a", -1.57], ["longer_name", 0.5]])
+    assert lines == [
+        "joint        lower_rad",
+        "-----------  ---------",
+        "a                -1.57",
+        "longer_name        0.5",
+    ]
+
+
+def test_table_truncates_text_not_numbers_to_fit():
+    rows = [["x" * 150, 123456.0], ["short", 1.0]]
+    lines = table(["name", "value"], rows, max_width=40)
+    assert all(len(line) <= 40 for line in lines)
+    assert lines[2].endswith("123456") and "…" in lines[2]
+
+
+def test_format_number():
+    assert format_number(0.1 + 0.2) == "0.3"
+    assert format_number(-0.0) == "0"
+    assert format_number(math.nan) == "nan"
+    assert format_number(None) == "-"
+    assert format_number(20.35) == "20.35"
+    assert format_number(7) == "7"
+
+
+@dataclass(frozen=True)
+class _Result:
+    position_m: np.ndarray
+    error_m: float
+    path: Path
+    hidden: object = field(default=None, repr=False)
+
+
+def test_json_is_plain_ordered_and_has_no_nan():
+    text = dumps(_Result(np.array([1.0, 2.0]), math.nan, Path("/tmp/x")))
+    assert text.endswith("\n")
+    assert list(json.loads(text)) == ["position_m", "error_m", "path"]
+    assert json.loads(text) == {"position_m": [1.0, 2.0], "error_m": None, "path": "/tmp/x"}
