@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import click
@@ -75,7 +76,7 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
         max_angular_acceleration_rad_s2=max_angular)
     base_dir = Path(scenario_file).parent if scenario_file else Path.cwd()
     report = simulate_and_write(robot, scenario, seed=seed, outputs=Outputs(out_dir, bag, plot),
-                                scenario_dir=base_dir, stderr=click.get_text_stream("stderr"),
+                                scenario_dir=base_dir, stderr=sys.stderr,
                                 progress=progress)
     _print(report, fmt)
     if not headless:
