@@ -57,14 +57,8 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
       servicebot simulate --headless -s run.yaml --out results --bag run_bag --plot run.png
       servicebot simulate --headless --saturation per-wheel --format json
     """
-    from servicebot_cli.sim.live import display_problem
-
-    problem = "" if headless else display_problem()
-    if problem:
-        click.echo(f"Error: {problem}; use --headless (with --plot FILE.png for a picture)",
-                   err=True)
-        raise click.exceptions.Exit(ExitCode.USAGE)
     from servicebot_cli.description.loader import load
+    from servicebot_cli.sim.live import display_problem
     from servicebot_cli.sim.scenario import load_scenario
     from servicebot_cli.sim.session import Outputs, simulate_and_write, with_overrides
 
@@ -74,6 +68,11 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
         wheel_separation_multiplier=wheel_separation_multiplier,
         cmd_vel_timeout_s=cmd_vel_timeout_s, max_linear_acceleration_m_s2=max_linear,
         max_angular_acceleration_rad_s2=max_angular)
+    problem = "" if headless else display_problem()
+    if problem:  # checked after the input, before any work
+        click.echo(f"Error: {problem}; use --headless (with --plot FILE.png for a picture)",
+                   err=True)
+        raise click.exceptions.Exit(ExitCode.USAGE)
     base_dir = Path(scenario_file).parent if scenario_file else Path.cwd()
     report = simulate_and_write(robot, scenario, seed=seed, outputs=Outputs(out_dir, bag, plot),
                                 scenario_dir=base_dir, stderr=sys.stderr,
