@@ -34,14 +34,6 @@ YAML_CASES = [
 ]
 
 
-@pytest.mark.parametrize(("text", "line", "message"), YAML_CASES)
-def test_bad_yaml_field(run, tmp_path, text, line, message):
-    path = tmp_path / "run.yaml"
-    path.write_text(text)
-    error = assert_one_line_error(run("simulate", "--headless", "-s", path), 2, message)
-    assert f"{path}{line}" in error
-
-
 JSON_CASES = [
     ('{\n  "duration_s": 10,\n  "slip": {\n    "track_factor": "wide"\n  }\n}\n', ":4:",
      "slip.track_factor: expected a number"),
@@ -53,9 +45,11 @@ JSON_CASES = [
 ]
 
 
-@pytest.mark.parametrize(("text", "line", "message"), JSON_CASES)
-def test_bad_json_field(run, tmp_path, text, line, message):
-    path = tmp_path / "run.json"
+@pytest.mark.parametrize(("name", "text", "line", "message"),
+                         [("run.yaml", *case) for case in YAML_CASES]
+                         + [("run.json", *case) for case in JSON_CASES])
+def test_bad_field(run, tmp_path, name, text, line, message):
+    path = tmp_path / name
     path.write_text(text)
     error = assert_one_line_error(run("simulate", "--headless", "-s", path), 2, message)
     assert f"{path}{line}" in error
