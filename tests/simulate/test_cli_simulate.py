@@ -159,3 +159,19 @@ def test_command_line_overrides_reach_the_controller(run):
     assert json.loads(wide.stdout)["odometry_drift"]["final_yaw_rad"] < json.loads(
         run("simulate", "--headless", "--duration-s", "60", "--format", "json").stdout
     )["odometry_drift"]["final_yaw_rad"]  # the default floor slips like a 1.1 multiplier
+
+
+def test_mesh_obstacle_is_seen_and_stops_the_base(run, tmp_path):
+    import trimesh
+
+    trimesh.creation.box(extents=(0.2, 4.0, 1.0)).export(tmp_path / "wall.stl")
+    path = tmp_path / "mesh.yaml"
+    path.write_text("duration_s: 30\ncmd_vel:\n  - {duration_s: 30, linear_m_s: 0.1}\n"
+                    "world:\n  meshes:\n    - {file: wall.stl, xyz_m: [1.0, 0, 0.5]}\n")
+    result = run("simulate", "--headless", "-s", path, "--out", tmp_path / "o",
+                 "--format", "json")
+    assert result.exit_code == 0, result.stderr
+    summary = json.loads(result.stdout)
+    assert [c["obstacle"] for c in summary["collisions"]] == ["mesh 1"]
+    first_scan = (tmp_path / "o" / "scan.csv").read_text().splitlines()[1].split(",")
+    assert float(first_scan[1]) == pytest.approx(0.9 - 0.18 - 0.1 * 0.1, abs=0.05)
