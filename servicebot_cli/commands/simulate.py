@@ -1,15 +1,99 @@
-"""``servicebot simulate``."""
+"""``servicebot simulate``: the headless kinematic simulator."""
 
 from __future__ import annotations
 
+import sys
+from pathlib import Path
+
 import click
 
-from servicebot_cli.commands._pending import pending
-from servicebot_cli.options import RobotArgs, robot_arguments
+from servicebot_cli.errors import ExitCode
+from servicebot_cli.options import RobotArgs, format_option, robot_arguments
 
 
 @click.command()
 @robot_arguments()
-def simulate(robot_args: RobotArgs) -> None:
-    """Run the headless kinematic simulator (not available yet)."""
-    pending("simulate", robot_args)
+@click.option("-s", "--scenario", "scenario_file", type=click.Path(dir_okay=False),
+              help="Scenario file, YAML or JSON (default: the built-in loop in a room).")
+@click.option("--headless", is_flag=True, help="No window: simulate, write outputs, print.")
+@click.option("--out", "out_dir", type=click.Path(file_okay=False),
+              help="Write one CSV per stream and summary.json into this directory.")
+@click.option("--bag", type=click.Path(), help="Write a ROS 2 bag (MCAP storage) directory.")
+@click.option("--plot", type=click.Path(dir_okay=False), help="Save a picture of the run (PNG).")
+@click.option("--seed", type=int, default=0, show_default=True, help="Seed of all sensor noise.")
+@click.option("--duration-s", type=click.FloatRange(min=0, min_open=True, max=86400),
+              help="Simulated time [s], instead of the scenario's.")
+@click.option("--wheel-separation-multiplier", type=click.FloatRange(min=0, min_open=True),
+              help="diff_drive_controller's wheel_separation_multiplier.")
+@click.option("--saturation", type=click.Choice(["keep-curvature", "per-wheel"]),
+              help="Wheel speed limits: scale both sides (keep the curvature) or clip each "
+              "wheel alone as Gazebo does.  [scenario default: keep-curvature]")
+@click.option("--cmd-vel-timeout-s", type=click.FloatRange(min=0, min_open=True),
+              help="Commands older than this ramp to zero.  [scenario default: 0.5]")
+@click.option("--max-linear-acceleration", "max_linear", type=click.FloatRange(min=0,
+              min_open=True), help="Acceleration limit [m/s^2].  [default: none]")
+@click.option("--max-angular-acceleration", "max_angular", type=click.FloatRange(min=0,
+              min_open=True), help="Angular acceleration limit [rad/s^2].  [default: none]")
+@click.option("--speed", type=click.FloatRange(min=0, min_open=True), default=1.0,
+              show_default=True, help="Playback speed of the live window.")
+@click.option("--progress/--no-progress", default=None,
+              help="Progress bar on stderr  [default: on a terminal, outside CI].")
+@format_option
+def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
+             out_dir: str | None, bag: str | None, plot: str | None, seed: int,
+             duration_s: float | None, wheel_separation_multiplier: float | None,
+             saturation: str | None, cmd_vel_timeout_s: float | None, max_linear: float | None,
+             max_angular: float | None, speed: float, progress: bool | None, fmt: str) -> None:
+    """Simulate the robot's base, arm and sensors, headless and fast.
+
+    Drives the diff-drive base with the scenario's timed cmd_vel, moves the arm along its
+    joint_trajectory, and simulates the LIDAR, IMU, wheel odometry, joint states and
+    camera_info as the URDF's <gazebo> sensors describe them. Prints a summary; --out,
+    --bag and --plot write files (atomically). Same --seed, same bytes.
+
+    \b
+    Examples:
+      servicebot simulate --headless
+      servicebot simulate --headless -s run.yaml --out results --bag run_bag --plot run.png
+      servicebot simulate --headless --saturation per-wheel --format json
+    """
+    from servicebot_cli.description.loader import load
+    from servicebot_cli.sim.live import display_problem
+    from servicebot_cli.sim.scenario import load_scenario
+    from servicebot_cli.sim.session import Outputs, simulate_and_write, with_overrides
+
+    robot = load(robot_args.source())
+    scenario = with_overrides(
+        load_scenario(scenario_file), duration_s, saturation=saturation,
+        wheel_separation_multiplier=wheel_separation_multiplier,
+        cmd_vel_timeout_s=cmd_vel_timeout_s, max_linear_acceleration_m_s2=max_linear,
+        max_angular_acceleration_rad_s2=max_angular)
+    problem = "" if headless else display_problem()
+    if problem:  # checked after the input, before any work
+        click.echo(f"Error: {problem}; use --headless (with --plot FILE.png for a picture)",
+                   err=True)
+        raise click.exceptions.Exit(ExitCode.USAGE)
+    base_dir = Path(scenario_file).parent if scenario_file else Path.cwd()
+    report = simulate_and_write(robot, scenario, seed=seed, outputs=Outputs(out_dir, bag, plot),
+                                scenario_dir=base_dir, stderr=sys.stderr,
+                                progress=progress)
+    _print(report, fmt)
+    if not headless:
+        from servicebot_cli.sim.live import show
+
+        show(report.result, speed=speed)
+
+
+def _print(report: object, fmt: str) -> None:
+    from servicebot_cli.output.jsonable import dumps
+    from servicebot_cli.sim.render import summary_lines
+
+    summary = report.summary  # type: ignore[attr-defined]
+    if fmt == "json":
+        click.echo(dumps(summary), nl=False)
+    else:
+        for line in summary_lines(summary):
+            click.echo(line)
+    rtf = summary["duration_s"] / max(report.wall_s, 1e-9)  # type: ignore[attr-defined]
+    click.echo(f"simulated {summary['duration_s']:g} s in {report.wall_s:.2f} s "  # type: ignore[attr-defined]
+               f"(real-time factor {rtf:.0f})", err=True)

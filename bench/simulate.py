@@ -1,0 +1,163 @@
+"""Real-time factor of `servicebot simulate` beside pybullet and ir-sim, in one run.
+
+The same scenario (the built-in default: a loop in a room, arm moving, every sensor on) runs
+  - in servicebot, in-process, with the MCAP bag written (what the >= 300 target is about),
+  - in pybullet (DIRECT mode, husky from pybullet_data, 240 Hz physics, wheel velocity control,
+    a 360-ray LIDAR by rayTestBatch at 10 Hz), and
+  - in ir-sim (diff-drive rectangle robot, lidar2d with 360 rays, 0.1 s steps, no display).
+Peers come from the `bench` extra: pip install '.[bench]'. A missing peer is reported, not
+faked. Run: python bench/simulate.py [--repeat N]
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import statistics
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from servicebot_cli.description.loader import RobotSource, load
+from servicebot_cli.sim.scenario import load_scenario
+from servicebot_cli.sim.session import Outputs, simulate_and_write
+
+
+def servicebot_run(scenario, robot) -> float:
+    with tempfile.TemporaryDirectory() as tmp:
+        start = time.perf_counter()
+        simulate_and_write(robot, scenario, seed=0, outputs=Outputs(bag=f"{tmp}/bag"),
+                           scenario_dir=Path.cwd())
+        return time.perf_counter() - start
+
+
+def _command_at(scenario, t: float) -> tuple[float, float]:
+    for seg in scenario.cmd_vel:
+        if seg.start_s <= t < seg.end_s + scenario.controller.cmd_vel_timeout_s:
+            return seg.linear_m_s, seg.angular_rad_s
+    return 0.0, 0.0
+
+
+def _boxes(scenario):
+    """Walls and boxes as (centre x, y, z, half x, y, z, yaw); cylinders as (x, y, r, h)."""
+    from servicebot_cli.sim.world import world_solids
+
+    out = []
+    for s in world_solids(scenario.world):
+        yaw = math.atan2(s.rotation[1, 0], s.rotation[0, 0])
+        out.append((s.kind, *s.center_m, *s.half_m, yaw))
+    return out
+
+
+def pybullet_run(scenario) -> float:
+    import pybullet as p
+    import pybullet_data
+
+    client = p.connect(p.DIRECT)
+    p.setAdditionalSearchPath(pybullet_data.getDataPath())
+    p.setGravity(0, 0, -9.8)
+    p.loadURDF("plane.urdf")
+    start = scenario.initial_pose
+    husky = p.loadURDF("husky/husky.urdf", [start.x_m, start.y_m, 0.2],
+                       p.getQuaternionFromEuler([0, 0, start.yaw_rad]))
+    for kind, x, y, z, hx, hy, hz, yaw in _boxes(scenario):
+        shape = (p.createCollisionShape(p.GEOM_BOX, halfExtents=[hx, hy, hz]) if kind == "box"
+                 else p.createCollisionShape(p.GEOM_CYLINDER, radius=hx, height=2 * hz))
+        p.createMultiBody(0, shape, basePosition=[x, y, z],
+                          baseOrientation=p.getQuaternionFromEuler([0, 0, yaw]))
+    wheels, radius, track = [2, 3, 4, 5], 0.1651, 0.555  # husky: left 2, 4; right 3, 5
+    dt, steps = 1.0 / 240.0, int(scenario.duration_s * 240)
+    angles = [2 * math.pi * i / 360 for i in range(360)]
+    began = time.perf_counter()
+    for k in range(steps):
+        t = k * dt
+        if k % 2 == 0:  # controller at 120 Hz
+            v, w = _command_at(scenario, t)
+            left, right = (v - w * track / 2) / radius, (v + w * track / 2) / radius
+            p.setJointMotorControlArray(husky, wheels, p.VELOCITY_CONTROL,
+                                        targetVelocities=[left, right, left, right],
+                                        forces=[50] * 4)
+        p.stepSimulation()
+        if k % 24 == 0:  # LIDAR at 10 Hz
+            pos, orn = p.getBasePositionAndOrientation(husky)
+            yaw = p.getEulerFromQuaternion(orn)[2]
+            origin = [pos[0], pos[1], pos[2] + 0.3]
+            ends = [[origin[0] + 12 * math.cos(yaw + a), origin[1] + 12 * math.sin(yaw + a),
+                     origin[2]] for a in angles]
+            p.rayTestBatch([origin] * 360, ends)
+        if k % 2 == 0:  # IMU-like reading at 120 Hz
+            p.getBaseVelocity(husky)
+    wall = time.perf_counter() - began
+    p.disconnect(client)
+    return wall
+
+
+def irsim_run(scenario) -> float:
+    import irsim
+    import numpy as np
+
+    start = scenario.initial_pose
+    lines = ["world:", "  height: 4", "  width: 4", "  step_time: 0.1", "  sample_time: 0.1",
+             "  offset: [-2, -2]", "  collision_mode: 'stop'", "robot:",
+             "  - kinematics: {name: 'diff'}",
+             "    shape: {name: 'rectangle', length: 0.55, width: 0.58}",
+             f"    state: [{start.x_m}, {start.y_m}, {start.yaw_rad}]",
+             "    vel_max: [0.0308, 0.114]", "    sensors:", "      - name: 'lidar2d'",
+             "        range_min: 0.12", "        range_max: 12", "        angle_range: 6.2832",
+             "        number: 360", "obstacle:"]
+    for kind, x, y, _, hx, hy, _, yaw in _boxes(scenario):
+        shape = (f"{{name: 'rectangle', length: {2 * hx}, width: {2 * hy}}}" if kind == "box"
+                 else f"{{name: 'circle', radius: {hx}}}")
+        lines += [f"  - shape: {shape}", f"    state: [{x}, {y}, {yaw}]"]
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "world.yaml")
+        Path(path).write_text("\n".join(lines) + "\n")
+        import logging
+
+        logging.disable(logging.WARNING)
+        env = irsim.make(path, display=False)
+        steps = int(scenario.duration_s / 0.1)
+        began = time.perf_counter()
+        for k in range(steps):
+            v, w = _command_at(scenario, k * 0.1)
+            env.step(action=np.array([[v], [w]]))
+            env.get_lidar_scan()
+        wall = time.perf_counter() - began
+        env.end(0) if hasattr(env, "end") else None
+    return wall
+
+
+def _try(name, fn, repeat):
+    try:
+        walls = [fn() for _ in range(repeat)]
+    except ImportError as exc:
+        print(f"{name}: not installed ({exc}); pip install '.[bench]'", file=sys.stderr)
+        return None
+    return statistics.median(walls)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=5, help="runs of servicebot (median)")
+    args = parser.parse_args()
+    scenario, robot = load_scenario(None), load(RobotSource.bundled("sim"))
+    servicebot_run(scenario, robot)  # warm caches (imports, model) once
+    rows = [("servicebot simulate (bag written)", _try("servicebot",
+             lambda: servicebot_run(scenario, robot), args.repeat))]
+    rows.append(("pybullet DIRECT, husky", _try("pybullet", lambda: pybullet_run(scenario), 1)))
+    rows.append(("ir-sim, no display", _try("ir-sim", lambda: irsim_run(scenario), 1)))
+    ours = rows[0][1]
+    print(f"default scenario: {scenario.duration_s:g} s simulated, median wall time")
+    print(f"{'simulator':<36} {'wall [s]':>9} {'RTF':>8} {'servicebot is':>15}")
+    for name, wall in rows:
+        if wall is None:
+            print(f"{name:<36} {'-':>9} {'-':>8} {'not installed':>15}")
+            continue
+        ratio = "-" if name.startswith("servicebot") else f"{wall / ours:.1f}x faster"
+        print(f"{name:<36} {wall:9.3f} {scenario.duration_s / wall:8.0f} {ratio:>15}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,1 @@
+"""The headless kinematic simulator behind ``servicebot simulate``."""

@@ -1,0 +1,116 @@
+"""A rosbag2 directory with MCAP storage, as ``ros2 bag record -s mcap`` makes it.
+
+``PATH/PATH_0.mcap`` holds the messages (profile ``ros2``, ``ros2msg`` schemas, CDR payloads,
+zstd chunks) and ``PATH/metadata.yaml`` describes them for ``ros2 bag play`` and ``ros2 bag
+info``. Foxglove opens the ``.mcap`` file directly. The directory is built under a temporary
+name beside ``PATH`` and renamed into place at the end, so an interrupted run leaves no bag.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import shutil
+import tempfile
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+
+from servicebot_cli import __version__
+from servicebot_cli.output.files import OutputError
+from servicebot_cli.sim.msgdefs import MESSAGE_DEFINITIONS
+from servicebot_cli.sim.ros_messages import Stream
+
+# rosbag2's QoS for a latched topic (transient local), as its metadata spells it.
+_LATCHED_QOS = (
+    "- history: 3\n  depth: 0\n  reliability: 1\n  durability: 1\n"
+    "  deadline:\n    sec: 2147483647\n    nsec: 4294967295\n"
+    "  lifespan:\n    sec: 2147483647\n    nsec: 4294967295\n  liveliness: 1\n"
+    "  liveliness_lease_duration:\n    sec: 2147483647\n    nsec: 4294967295\n"
+    "  avoid_ros_namespace_conventions: false\n"
+)
+
+
+def write_bag(path: str | os.PathLike[str], streams: Sequence[Stream]) -> None:
+    """Write ``streams`` as a rosbag2 MCAP directory at ``path``.
+
+    Raises:
+        OutputError: ``path`` exists, its parent is missing, or writing failed.
+    """
+    target = Path(path)
+    if target.exists():
+        raise OutputError(f"{target}: already exists; remove it or give another --bag path "
+                          "(ros2 bag record refuses too)")
+    parent = target.parent if str(target.parent) else Path(".")
+    if not parent.is_dir():
+        raise OutputError(f"{target}: directory '{parent}' does not exist; create it first")
+    try:
+        temporary = Path(tempfile.mkdtemp(dir=parent, prefix=f".{target.name}.", suffix=".tmp"))
+    except OSError as exc:
+        raise OutputError(f"{target}: cannot write in '{parent}': {exc.strerror or exc}") from None
+    try:
+        file_name = f"{target.name}_0.mcap"
+        _write_mcap(temporary / file_name, streams)
+        (temporary / "metadata.yaml").write_text(_metadata(file_name, streams), encoding="utf-8")
+        os.chmod(temporary, 0o755)
+        os.rename(temporary, target)
+    except OSError as exc:
+        raise OutputError(f"{target}: cannot write: {exc.strerror or exc}") from None
+    finally:
+        with contextlib.suppress(FileNotFoundError):
+            shutil.rmtree(temporary)
+
+
+def _write_mcap(file: Path, streams: Sequence[Stream]) -> None:
+    from mcap.writer import CompressionType, Writer
+
+    with file.open("wb") as handle:
+        writer = Writer(handle, compression=CompressionType.ZSTD)
+        writer.start(profile="ros2", library=f"servicebot {__version__}")
+        channels = []
+        for stream in streams:
+            schema = writer.register_schema(name=stream.type, encoding="ros2msg",
+                                            data=MESSAGE_DEFINITIONS[stream.type].encode())
+            metadata = {"offered_qos_profiles": _LATCHED_QOS if stream.latched else ""}
+            channels.append(writer.register_channel(topic=stream.topic, message_encoding="cdr",
+                                                    schema_id=schema, metadata=metadata))
+        stamps = np.concatenate([s.stamps_ns for s in streams])
+        which = np.concatenate([np.full(len(s.payloads), i) for i, s in enumerate(streams)])
+        index = np.concatenate([np.arange(len(s.payloads)) for s in streams])
+        order = np.argsort(stamps, kind="stable")
+        payloads = [p for s in streams for p in s.payloads]
+        channel_of = np.array(channels)[which[order]].tolist()
+        add = writer.add_message
+        for channel, t, sequence, k in zip(channel_of, stamps[order].tolist(),
+                                           index[order].tolist(), order.tolist(), strict=True):
+            add(channel, t, payloads[k], t, sequence)
+        writer.finish()
+
+
+def _metadata(file_name: str, streams: Sequence[Stream]) -> str:
+    stamps = [s.stamps_ns for s in streams if len(s.stamps_ns)]
+    start = int(min(s.min() for s in stamps)) if stamps else 0
+    end = int(max(s.max() for s in stamps)) if stamps else 0
+    total = sum(len(s.payloads) for s in streams)
+    lines = ["rosbag2_bagfile_information:", "  version: 5", "  storage_identifier: mcap",
+             "  duration:", f"    nanoseconds: {end - start}", "  starting_time:",
+             f"    nanoseconds_since_epoch: {start}", f"  message_count: {total}",
+             "  topics_with_message_count:"]
+    for s in streams:
+        qos = _LATCHED_QOS if s.latched else ""
+        lines += ["    - topic_metadata:", f"        name: {s.topic}", f"        type: {s.type}",
+                  "        serialization_format: cdr",
+                  f"        offered_qos_profiles: {_quoted(qos)}",
+                  f"      message_count: {len(s.payloads)}"]
+    lines += ['  compression_format: ""', '  compression_mode: ""', "  relative_file_paths:",
+              f"    - {file_name}", "  files:", f"    - path: {file_name}",
+              "      starting_time:", f"        nanoseconds_since_epoch: {start}",
+              "      duration:", f"        nanoseconds: {end - start}",
+              f"      message_count: {total}"]
+    return "\n".join(lines) + "\n"
+
+
+def _quoted(text: str) -> str:
+    """A YAML double-quoted scalar."""
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'

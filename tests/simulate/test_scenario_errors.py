@@ -1,0 +1,67 @@
+"""Every bad scenario field is one error line naming the file, the line and the field."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.conftest import assert_one_line_error
+
+YAML_CASES = [
+    ("duration_s: fast\n", ":1:", "duration_s: expected a number, got 'fast'"),
+    ("duration_s: 10\ncmd_vel:\n  - {duration_s: 1, linear: 0.1}\n", ":3:",
+     "cmd_vel[0].linear: unknown field; did you mean 'linear_m_s'?"),
+    ("duration_s: 10\nworld:\n  boxes:\n    - center_m: [1, 2]\n      size_m: [1, 2]\n",
+     ":5:", "world.boxes[0].size_m: expected a list of 3 numbers"),
+    ("duration_s: 10\ncontroller:\n  saturation: sometimes\n", ":3:",
+     "controller.saturation: 'sometimes' is not one of: keep-curvature, per-wheel"),
+    ("duration_s: -1\n", ":1:", "duration_s: must be positive"),
+    ("cmd_vel: []\n", ":1:", "'duration_s' is required"),
+    ("duration_s: 10\narm:\n  joint_names: [arm_base_to_link]\n  points:\n"
+     "    - {time_from_start_s: 1, positions: [0.1]}\n", ":3:",
+     "arm.joint_names[0]: unknown arm joint"),
+    ("duration_s: 10\narm:\n  joint_names: [arm_base_to_link1]\n  points:\n"
+     "    - {time_from_start_s: 1, positions: [0.1]}\n    - {time_from_start_s: 2, "
+     "positions: [2.5]}\n", ":6:", "arm.points[1].positions[0]: arm_base_to_link1 = 2.5 rad "
+     "is outside its URDF limits"),
+    ("duration_s: 10\narm:\n  joint_names: [front_left_wheel_joint]\n  points: []\n", ":3:",
+     "is a wheel"),
+    ("duration_s: 10\ninitial_pose: {x_m: 1.0}\nworld:\n  cylinders:\n"
+     "    - {center_m: [1.2, 0], radius_m: 0.2}\n", ":2:", "overlaps cylinder 1"),
+    ("duration_s: 10\ncmd_vel:\n  - {start_s: 5, duration_s: 2}\n  - {start_s: 6, "
+     "duration_s: 1}\n", ":4:", "cmd_vel[1].start_s: 6 s is before the previous segment"),
+    ("duration_s: [1\n", ":2:", "not valid YAML"),
+    ("duration_s: 10\nduration_s: 11\n", ":2:", "given twice"),
+]
+
+
+JSON_CASES = [
+    ('{\n  "duration_s": 10,\n  "slip": {\n    "track_factor": "wide"\n  }\n}\n', ":4:",
+     "slip.track_factor: expected a number"),
+    ('{\n  "duration_s": 10,\n  "rates": {"joint_states_hz": 0}\n}\n', ":3:",
+     "rates.joint_states_hz: must be positive"),
+    ('{\n  "duration_s": 10,\n}\n', ":3:", "not valid JSON"),
+    ('{"duration_s": 10, "world": {"walls": [{"from_m": [0, 0], "to_m": [0, 0]}]}}', ":1:",
+     "world.walls[0].to_m: a wall needs two different ends"),
+]
+
+
+@pytest.mark.parametrize(("name", "text", "line", "message"),
+                         [("run.yaml", *case) for case in YAML_CASES]
+                         + [("run.json", *case) for case in JSON_CASES])
+def test_bad_field(run, tmp_path, name, text, line, message):
+    path = tmp_path / name
+    path.write_text(text)
+    error = assert_one_line_error(run("simulate", "--headless", "-s", path), 2, message)
+    assert f"{path}{line}" in error
+
+
+def test_missing_scenario_file(run, tmp_path):
+    assert_one_line_error(run("simulate", "--headless", "-s", tmp_path / "nope.yaml"), 2,
+                          "no such file")
+
+
+def test_missing_mesh_file(run, tmp_path):
+    path = tmp_path / "run.yaml"
+    path.write_text("duration_s: 1\nworld:\n  meshes:\n    - {file: room.stl}\n")
+    error = assert_one_line_error(run("simulate", "--headless", "-s", path), 2, "room.stl")
+    assert f"{path}:4:" in error
