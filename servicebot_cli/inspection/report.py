@@ -179,7 +179,8 @@ def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> T
     arm = [j for j in robot.movable_joints if j.name not in wheels]
     notes.extend(meshes.problems)
     return t.Totals(
-        configuration_rad_or_m=dict(request.configuration), dof=t.dof_of(robot, wheels),
+        frame=robot.root_link, configuration_rad_or_m=dict(request.configuration),
+        dof=t.dof_of(robot, wheels),
         mass_kg=mass, centre_of_mass_m=centre, bounding_box_m=box,
         arm=t.arm_reach(tree, arm, zero), drive=t.drive_info(drive) if drive else None,
         notes=tuple(notes),

@@ -82,6 +82,7 @@ class Totals:
     """Whole-robot numbers at one configuration.
 
     Attributes:
+        frame: The root link, the frame of the centre of mass and the bounding box.
         configuration_rad_or_m: The joint values used (others are zero) [rad or m].
         mass_kg: Sum of every link's mass [kg].
         centre_of_mass_m: In the root link frame [m]; None without mass.
@@ -89,6 +90,7 @@ class Totals:
         notes: What was left out and why (unreadable meshes, no drive found).
     """
 
+    frame: str | None
     configuration_rad_or_m: dict[str, float]
     dof: Dof
     mass_kg: float

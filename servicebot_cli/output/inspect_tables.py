@@ -90,7 +90,7 @@ def frames_tables(frames: tuple[FrameInfo, ...]) -> list[Table]:
     return [table]
 
 
-def totals_tables(totals: Totals, root: str) -> list[Table]:
+def totals_tables(totals: Totals) -> list[Table]:
     """One quantity per row."""
     config = ", ".join(f"{k}={format_number(v)}" for k, v in totals.configuration_rad_or_m.items())
     at = f"at {config}" if config else "at the zero configuration"
@@ -98,7 +98,7 @@ def totals_tables(totals: Totals, root: str) -> list[Table]:
     rows: list[tuple[object, ...]] = [
         ("degrees of freedom", f"{dof.total}: {dof.wheels} wheels + {dof.arm} arm"),
         ("total mass", d.quantity(totals.mass_kg, "kg")),
-        ("centre of mass", f"{d.point(totals.centre_of_mass_m)} m in {root}"),
+        ("centre of mass", f"{d.point(totals.centre_of_mass_m)} m in {totals.frame}"),
         ("bounding box (visual)", _box(totals)),
     ]
     if totals.arm is not None:

@@ -23,14 +23,11 @@ def section_tables(inspection: Inspection, name: str) -> list[Table]:
     value = getattr(inspection, name)
     if name == "tree":
         return [tree_table(value)]
-    if name == "totals":
-        root = inspection.tree.roots[0] if inspection.tree and inspection.tree.roots else "root"
-        return core.totals_tables(value, root)
     makers: dict[str, Callable[[object], list[Table]]] = {
         "links": core.links_tables, "joints": core.joints_tables,
         "frames": core.frames_tables, "sensors": ext.sensors_tables,
         "plugins": ext.plugins_tables, "interfaces": ext.interfaces_tables,
-        "topics": ext.topics_tables,
+        "topics": ext.topics_tables, "totals": core.totals_tables,
     }
     return makers[name](value)
 
