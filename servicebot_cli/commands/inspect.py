@@ -90,25 +90,19 @@ def _check_combination(sections: tuple[str, ...], fmt: str, render_path: str | N
 
 def _configuration(robot: RobotDescription, joints: tuple[tuple[str, float], ...],
                    clamp: bool) -> dict[str, float]:
-    """The ``--joint`` values, checked now so a typo fails before any work."""
+    """The ``--joint`` values (clamped with ``--clamp``), checked before any work."""
     from servicebot_cli.errors import NameNotFound, OutOfLimits
-    from servicebot_cli.inspection.poses import configuration_q
+    from servicebot_cli.inspection.poses import checked_values
 
-    values = dict(joints)
     fixed = {j.name for j in robot.joints if not j.movable}
     try:
-        for name in values:
+        for name, _ in joints:
             if name in fixed:
                 raise OutOfLimits(f"joint '{name}' is fixed; only movable joints take a value "
                                   f"({', '.join(robot.joint_space.names)})")
-        configuration_q(robot, values, clamp=clamp)
+        return checked_values(robot, dict(joints), clamp=clamp)
     except (NameNotFound, OutOfLimits) as exc:
         raise click.BadParameter(str(exc), param_hint="'--joint'") from None
-    if clamp:
-        space = robot.joint_space
-        clamped = space.vector(values, clamp=True)
-        values = {name: float(clamped[space.index(name)]) for name in values}
-    return values
 
 
 def _render(robot: RobotDescription, path: str, values: dict[str, float], clamp: bool,
