@@ -114,8 +114,8 @@ def device_topics(hardware: tuple[HardwareInfo, ...]) -> list[TopicInfo]:
             continue
         baud = next((params[k] for k in _BAUD_KEYS if params.get(k)), None)
         settings = f"serial, {baud} baud" if baud else "serial"
-        rows.append(TopicInfo("in", "device", port, settings, system.name,
-                              f"ros2_control hardware {system.plugin}"))
+        rows.append(TopicInfo("in", "device", port, settings, "ros2_control",
+                              f"ros2_control hardware {system.plugin} (system {system.name})"))
     return rows
 
 

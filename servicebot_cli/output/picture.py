@@ -48,8 +48,9 @@ def _shaded(rgba: Sequence[float], polygon: FloatArray) -> tuple[float, ...]:
     norm = np.linalg.norm(normal)
     light = abs(float(normal @ _LIGHT)) / norm if norm > 0 else 1.0
     factor = 0.45 + 0.55 * light
-    # black parts (tyres) would lose all shading: lift them just enough to show their form
-    r, g, b = (0.15 + 0.85 * c for c in rgba[:3])
+    r, g, b = rgba[:3]
+    if max(r, g, b) < 0.2:  # black parts (tyres) would lose all shading: lift them a little
+        r, g, b = (0.15 + 0.85 * c for c in (r, g, b))
     return (r * factor, g * factor, b * factor, rgba[3])
 
 
@@ -118,13 +119,15 @@ def _draw(scene: Scene, out: IO[bytes], fmt: str, view: str, size_px: tuple[int,
     ax.computed_zorder = False  # floor, then the robot (faces depth-sorted), then frames
     low, high = _limits(scene)
     low[2] = min(low[2], scene.floor_z_m)
-    _draw_floor(ax, low, high, scene.floor_z_m)
-    _draw_solids(ax, scene)
-    _draw_frames(ax, scene, 0.07 * float(np.max(high - low)))
+    # fixed limits before anything is added: mplot3d's autoscaling can overflow to NaN
     ax.set_xlim(low[0], high[0])
     ax.set_ylim(low[1], high[1])
     ax.set_zlim(low[2], high[2])
+    ax.set_autoscale_on(False)
     ax.set_box_aspect(tuple(high - low))
+    _draw_floor(ax, low, high, scene.floor_z_m)
+    _draw_solids(ax, scene)
+    _draw_frames(ax, scene, 0.07 * float(np.max(high - low)))
     ax.view_init(*VIEWS[view])
     for name, setter in (("x", ax.set_xlabel), ("y", ax.set_ylabel), ("z", ax.set_zlabel)):
         setter(f"{name} [m]", fontsize=8)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import IO, TYPE_CHECKING
 
 import numpy as np
 
@@ -70,6 +70,15 @@ def render_robot(robot: RobotDescription, path: str, values: Mapping[str, float]
         OutputError: The file cannot be written.
     """
     fmt = picture_format(path)
+    with atomic_output(path, "wb") as handle:  # a bad target fails before any drawing
+        problems = _draw_robot(robot, handle, fmt, values, clamp=clamp, resolver=resolver,
+                               view=view)
+    return problems
+
+
+def _draw_robot(robot: RobotDescription, handle: IO[bytes], fmt: str,
+                values: Mapping[str, float], *, clamp: bool, resolver: PackageResolver,
+                view: str) -> list[str]:
     frames = link_transforms(robot, values, clamp=clamp)
     meshes = mesh_library(robot, resolver)
     shapes = solids(posed_visuals(robot, frames), meshes, robot.materials)
@@ -80,6 +89,5 @@ def render_robot(robot: RobotDescription, path: str, values: Mapping[str, float]
     standing = solids(posed_visuals(robot, link_transforms(robot)), meshes, robot.materials)
     floor_z = min(float(np.min(poly[:, 2])) for s in standing for poly in s.polygons)
     scene = Scene(shapes, frames, _labels(robot, frames), title(robot.name, values), floor_z)
-    with atomic_output(path, "wb") as handle:
-        draw(scene, handle, fmt=fmt, view=view)
+    draw(scene, handle, fmt=fmt, view=view)
     return meshes.problems

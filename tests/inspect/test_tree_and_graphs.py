@@ -74,9 +74,10 @@ def test_mermaid_has_every_link_and_joint(run):
     nodes = dict(re.findall(r'^  (n\d+)\["([^"]+)"\]$', result.stdout, re.M))
     edges = re.findall(r'^  (n\d+) (-->|-\.->)\|"([^"]+)"\| (n\d+)$', result.stdout, re.M)
     assert len(nodes) == 15 and len(edges) == 14 and len(lines) == 1 + 15 + 14
-    by_child = {nodes[child]: (nodes[parent], arrow, label) for parent, arrow, label, child in edges}
-    assert by_child["arm_link1"] == ("arm_base_link", "-->",
-                                     "arm_base_to_link1<br/>revolute z<br/>[-1.57, 1.57] rad, 1 rad/s")
+    by_child = {nodes[child]: (nodes[parent], arrow, label)
+                for parent, arrow, label, child in edges}
+    assert by_child["arm_link1"] == (
+        "arm_base_link", "-->", "arm_base_to_link1<br/>revolute z<br/>[-1.57, 1.57] rad, 1 rad/s")
     assert by_child["lidar_link"] == ("base_link", "-.->", "lidar_joint<br/>fixed")
 
 
