@@ -35,10 +35,17 @@ def value_text(value: Any) -> str:
     return str(value)
 
 
+def _field_name(diff: Difference) -> str:
+    """``limits velocity [rad/s]``; empty for a whole element."""
+    if not diff.field:
+        return ""
+    return diff.field.replace(".", " ") + (f" [{diff.unit}]" if diff.unit else "")
+
+
 def _field_text(diff: Difference) -> str:
     if not diff.field:
         return "only in A" if diff.change == "removed" else "only in B"
-    field = diff.field.replace(".", " ") + (f" [{diff.unit}]" if diff.unit else "")
+    field = _field_name(diff)
     if diff.change == "changed":
         return f"{field}: {value_text(diff.a)} -> {value_text(diff.b)}"
     return f"{field}: {value_text(diff.a if diff.change == 'removed' else diff.b)}"
@@ -76,7 +83,7 @@ def diff_markdown(result: DiffResult) -> Iterator[str]:
     yield f"# Differences between `{result.a}` (A) and `{result.b}` (B)"
     yield ""
     if result.differences:
-        rows = [(d.element, d.field.replace(".", " ") or "(whole element)",
+        rows = [(d.element, _field_name(d) or "(whole element)",
                  value_text(d.a) if d.a is not True else "present",
                  value_text(d.b) if d.b is not True else "present")
                 for d in result.differences]
