@@ -8,7 +8,6 @@ import pty
 import subprocess
 import sys
 
-import numpy as np
 import pytest
 
 from servicebot_cli.inspection import SCHEMA, SECTIONS
@@ -172,26 +171,6 @@ def test_totals_follow_the_joint_values(inspect_json):
     assert totals["centre_of_mass_m"][0] < 0.039975 < inspect_json("--section", "totals")[
         "totals"]["centre_of_mass_m"][0]
     assert totals["arm"]["reach_m"] == 0.9  # reach does not depend on the pose
-
-
-def test_link_poses_match_pinocchio(run):
-    """The URDF-tree transforms are Pinocchio's forward kinematics."""
-    import pinocchio as pin
-
-    from servicebot_cli.description.loader import RobotSource, load
-    from servicebot_cli.inspection.poses import link_transforms
-
-    robot = load(RobotSource.bundled("sim"))
-    rng = np.random.default_rng(7)
-    space = robot.joint_space
-    for _ in range(5):
-        values = rng.uniform(-1.5, 1.5, len(space.names))
-        ours = link_transforms(robot, dict(zip(space.names, values, strict=True)))
-        data = robot.model.createData()
-        pin.framesForwardKinematics(robot.model, data, space.to_q(values))
-        for name, transform in ours.items():
-            frame = robot.model.getFrameId(name, pin.FrameType.BODY)
-            assert transform == pytest.approx(data.oMf[frame].homogeneous, abs=1e-12), name
 
 
 def test_clamp_and_bad_joint_values(run, inspect_json):
