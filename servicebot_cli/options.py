@@ -35,12 +35,14 @@ class RobotArgs:
         xacro_args: ``name:=value`` pairs in the order given.
         bundled: The ``--robot`` name, or None.
         packages: ``--package NAME=DIR`` pairs.
+        values: The positional values as given, files and ``name:=value`` interleaved.
     """
 
     files: tuple[str, ...]
     xacro_args: tuple[tuple[str, str], ...]
     bundled: str | None
     packages: tuple[tuple[str, str], ...]
+    values: tuple[str, ...] = ()
 
     def source(self) -> Any:
         """The one RobotSource these arguments name (the bundled sim robot by default).
@@ -67,6 +69,34 @@ class RobotArgs:
                 "(their source is robots/service_robot.urdf.xacro)"
             )
         return bundled
+
+    def sources(self) -> list[Any]:
+        """Every RobotSource named, in order; empty when none is named.
+
+        ``--robot`` comes first, then each file with the xacro arguments that follow it:
+        ``A.xacro x:=1 B.xacro x:=2`` gives A with x=1 and B with x=2.
+
+        Raises:
+            click.UsageError: A xacro argument before any file.
+        """
+        from servicebot_cli.description.loader import RobotSource
+
+        sources = [RobotSource.bundled(self.bundled)] if self.bundled else []
+        groups: list[tuple[str, list[tuple[str, str]]]] = []
+        for value in self.values:
+            match = _XACRO_ARG_RE.match(value)
+            if match is None:
+                groups.append((value, []))
+            elif groups:
+                groups[-1][1].append((match.group(1), match.group(2)))
+            else:
+                raise click.UsageError(
+                    f"xacro argument '{value}' comes before any FILE; put it after the xacro "
+                    "file it is for (the bundled robots are plain URDF)"
+                )
+        sources.extend(RobotSource.of(file, xacro_args=tuple(args), packages=self.packages)
+                       for file, args in groups)
+        return sources
 
 
 def split_robot_args(values: Sequence[str]) -> tuple[tuple[str, ...], tuple[tuple[str, str], ...]]:
@@ -151,7 +181,7 @@ def robot_arguments(multiple: bool = False) -> Callable[[F], F]:
         def wrapper(*args: Any, robot_values: tuple[str, ...], bundled: str | None,
                     packages: tuple[tuple[str, str], ...], **kwargs: Any) -> Any:
             files, xacro_args = split_robot_args(robot_values)
-            robot_args = RobotArgs(files, xacro_args, bundled, packages)
+            robot_args = RobotArgs(files, xacro_args, bundled, packages, tuple(robot_values))
             return f(*args, robot_args=robot_args, **kwargs)
 
         wrapper = click.option(

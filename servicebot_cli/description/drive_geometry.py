@@ -15,6 +15,7 @@ import numpy as np
 
 from servicebot_cli.description.elements import Joint, Shape
 from servicebot_cli.errors import DescriptionError
+from servicebot_cli.kinematics.link_poses import link_transforms
 from servicebot_cli.kinematics.transforms import pose_matrix
 
 if TYPE_CHECKING:
@@ -113,21 +114,7 @@ def drive_geometry(robot: RobotDescription) -> DriveGeometry:
 
 def _link_transforms(robot: RobotDescription) -> dict[str, np.ndarray]:
     """Pose of every reachable link in the root frame at the zero configuration."""
-    root = robot.root_link
-    if root is None:
-        return {}
-    by_parent: dict[str, list[Joint]] = {}
-    for joint in robot.joints:
-        by_parent.setdefault(joint.parent or "", []).append(joint)
-    world = {root: np.eye(4)}
-    stack = [root]
-    while stack:  # iterative, and each link visited once even in a malformed graph
-        parent = stack.pop()
-        for joint in by_parent.get(parent, []):
-            if joint.child and joint.child not in world:
-                world[joint.child] = world[parent] @ pose_matrix(joint.origin)
-                stack.append(joint.child)
-    return world
+    return link_transforms(robot)
 
 
 def _as_wheel(robot: RobotDescription, joint: Joint, world: dict[str, np.ndarray]) -> Wheel | None:
