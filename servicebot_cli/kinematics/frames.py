@@ -1,0 +1,91 @@
+"""Frames by name: safe look-ups, the tool frame of an arm, the joints that move a frame.
+
+A frame is a URDF link (fixed links included). Pinocchio's ``getFrameId`` returns an
+out-of-range index for an unknown name instead of raising, so every look-up goes through
+:func:`frame_id`, which checks ``existFrame`` first and suggests the nearest names.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from servicebot_cli.errors import FrameNotFound
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+
+    from servicebot_cli.description.robot import RobotDescription
+
+_TOOL_WORDS = ("tool", "tcp", "end_effector", "ee_link", "flange", "gripper")
+
+
+def frame_id(model: pin.Model, name: str, known: Sequence[str]) -> int:
+    """Index of the link frame ``name`` in ``model.frames``.
+
+    Args:
+        model: The Pinocchio model.
+        name: A link name.
+        known: Every link name, for the suggestion when ``name`` is not one.
+
+    Raises:
+        FrameNotFound: ``name`` is not a link, with the nearest names first.
+    """
+    import pinocchio as pin
+
+    if name in known and model.existFrame(name, pin.FrameType.BODY):
+        return model.getFrameId(name, pin.FrameType.BODY)
+    raise FrameNotFound.for_name(name, known, robot=model.name)
+
+
+def moving_joints(model: pin.Model, frame: int) -> tuple[int, ...]:
+    """Joint indices (root first) whose motion moves ``frame``; the universe excluded."""
+    parent = model.frames[frame].parentJoint
+    return tuple(int(j) for j in model.supports[parent] if j != 0)
+
+
+@dataclass(frozen=True)
+class ToolChoice:
+    """The frame commands use when none is named.
+
+    Attributes:
+        name: The frame.
+        joints: Movable joints that move it.
+        obvious: True when its name says it is a tool; otherwise commands say which they chose.
+    """
+
+    name: str
+    joints: int
+    obvious: bool
+
+
+def default_tool_frame(robot: RobotDescription) -> ToolChoice:
+    """The tip of the longest chain: the arm's tool frame.
+
+    Among the links moved by the most joints, a leaf (a link that is no joint's parent)
+    is preferred, then a name that says tool, then the last in URDF order. On the bundled
+    robot this is ``arm_tool_link``.
+    """
+    model, links = robot.model, link_names(robot)
+    depth = {name: len(moving_joints(model, frame_id(model, name, links))) for name in links}
+    parents = {joint.parent for joint in robot.joints}
+    deepest = max(depth.values(), default=0)
+
+    def rank(item: tuple[int, str]) -> tuple[bool, bool, int]:
+        order, name = item
+        return name not in parents, _looks_like_tool(name), order
+
+    candidates = [(i, n) for i, n in enumerate(links) if depth[n] == deepest]
+    _, name = max(candidates, key=rank)
+    return ToolChoice(name, deepest, _looks_like_tool(name))
+
+
+def link_names(robot: RobotDescription) -> tuple[str, ...]:
+    """Every link (frame) name, URDF order."""
+    return tuple(link.name for link in robot.links)
+
+
+def _looks_like_tool(name: str) -> bool:
+    lowered = name.lower()
+    return any(word in lowered for word in _TOOL_WORDS)
