@@ -1,0 +1,63 @@
+"""The two ways ``fk`` runs: one configuration, or a stream of them (``--configs``).
+
+Imported by the command's callback only: it pulls in numpy and Pinocchio.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import click
+
+from servicebot_cli.batch.fk_rows import FkBatch
+from servicebot_cli.batch.policy import Tally, handled
+from servicebot_cli.batch.reading import open_source
+from servicebot_cli.batch.writing import output_kind, row_writer
+from servicebot_cli.description.robot import RobotDescription
+from servicebot_cli.kinematics.forward import frame_poses
+from servicebot_cli.kinematics.frames import link_names
+from servicebot_cli.kinematics.user_joints import user_values, user_vector
+from servicebot_cli.output import poses as render
+from servicebot_cli.output.jsonable import dumps
+
+
+def all_frames(robot: RobotDescription) -> list[str]:
+    """Every link, fixed frames included, in URDF order."""
+    return list(link_names(robot))
+
+
+def single(robot: RobotDescription, frames: Sequence[str], reference: str,
+           joints: Sequence[tuple[str, float]], *, fmt: str, deg: bool, clamp: bool,
+           as_table: bool) -> None:
+    """Print the poses of ``frames`` for one configuration."""
+    space = robot.joint_space
+    values = user_vector(space, joints, deg=deg, clamp=clamp)
+    poses = frame_poses(robot.model, robot.data, space.to_q(values), frames, reference,
+                        link_names(robot))
+    if fmt == "json":
+        joint_values = user_values(space, values, deg=deg)
+        click.echo(dumps(render.fk_json(robot.name, poses, joint_values, reference, deg)),
+                   nl=False)
+        return
+    for line in render.fk_text(poses, deg, as_table):
+        click.echo(line)
+
+
+def batch(robot: RobotDescription, frames: Sequence[str], reference: str, configs: str, *,
+          output: str | None, fmt: str, deg: bool, clamp: bool, on_error: str) -> None:
+    """Stream poses for every configuration line of ``configs``."""
+    fk = FkBatch(robot, frames, reference, deg=deg, clamp=clamp)
+    kind = output_kind(output, fmt)
+    source, handle = open_source(configs)
+    tally = Tally()
+    with handle:
+        if source.kind == "csv":
+            fk.check_header(source.columns)
+        rows = handled(source, fk.joint_vector, on_error=on_error,
+                       warn=lambda m: click.echo(m, err=True), tally=tally)
+        with row_writer(output, kind, fk.columns()) as write:
+            for result in fk.results(rows, kind):
+                write(result)
+    if tally.skipped:
+        click.echo(f"skipped {tally.skipped} of {tally.rows} lines of {source.display}",
+                   err=True)
