@@ -26,7 +26,7 @@ from servicebot_cli.batch.reading import Row
 from servicebot_cli.errors import JointNotFound
 from servicebot_cli.kinematics.forward import pose_table, transforms
 from servicebot_cli.kinematics.frames import frame_id, link_names
-from servicebot_cli.kinematics.user_joints import row_pairs, user_vector
+from servicebot_cli.kinematics.user_joints import Mimics, row_pairs, user_vector
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -51,6 +51,7 @@ class FkBatch:
         self.model = robot.model
         self.data = self.model.createData()
         self.space = robot.joint_space
+        self.mimics = Mimics.of(robot.joints, self.space)
         self.frames = list(frames)
         self.ids = [frame_id(self.model, f, known) for f in frames]
         self.reference = frame_id(self.model, relative_to, known)
@@ -84,7 +85,8 @@ class FkBatch:
         if isinstance(values.get("joints"), dict):  # an ik result line
             values = values["joints"]
         pairs = row_pairs(values, RESULT_COLUMNS)
-        return user_vector(self.space, pairs, deg=self.deg, clamp=self.clamp)
+        return user_vector(self.space, pairs, deg=self.deg, clamp=self.clamp,
+                           mimics=self.mimics)
 
     def results(self, items: Iterable[tuple[Row, FloatArray]],
                 kind: str) -> Iterator[dict[str, Any]]:

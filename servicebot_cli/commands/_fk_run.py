@@ -16,7 +16,12 @@ from servicebot_cli.batch.writing import output_kind, row_writer
 from servicebot_cli.description.robot import RobotDescription
 from servicebot_cli.kinematics.forward import frame_poses
 from servicebot_cli.kinematics.frames import link_names
-from servicebot_cli.kinematics.user_joints import user_values, user_vector
+from servicebot_cli.kinematics.user_joints import (
+    Mimics,
+    unnamed_outside,
+    user_values,
+    user_vector,
+)
 from servicebot_cli.output import poses as render
 from servicebot_cli.output.jsonable import dumps
 
@@ -31,7 +36,12 @@ def single(robot: RobotDescription, frames: Sequence[str], reference: str,
            as_table: bool) -> None:
     """Print the poses of ``frames`` for one configuration."""
     space = robot.joint_space
-    values = user_vector(space, joints, deg=deg, clamp=clamp)
+    values = user_vector(space, joints, deg=deg, clamp=clamp,
+                         mimics=Mimics.of(robot.joints, space))
+    outside = unnamed_outside(space, values)
+    if outside:
+        click.echo(f"note: {', '.join(outside)} not given: 0, outside the limits "
+                   f"(give {outside[0]}=VALUE for a reachable pose)", err=True)
     poses = frame_poses(robot.model, robot.data, space.to_q(values), frames, reference,
                         link_names(robot))
     if fmt == "json":

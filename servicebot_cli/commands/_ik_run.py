@@ -92,7 +92,8 @@ def setup(robot: RobotDescription, frame: str, seeds: Sequence[tuple[str, float]
     model = robot.model_with_base("planar") if with_base else robot.model
     space = JointSpace.of(model, robot.movable_joints) if with_base else robot.joint_space
     chain = Chain(model, space, frame, link_names(robot))
-    seed = space.to_q(user_vector(space, seeds, deg=deg, clamp=clamp))
+    # a seed is a starting point: joints it does not name start inside their limits
+    seed = space.to_q(space.clamped(user_vector(space, seeds, deg=deg, clamp=clamp)))
     return Setup(robot, space, IkSolver(chain, settings), seed,
                  np.random.default_rng(random_seed), deg)
 

@@ -61,24 +61,27 @@ class ToolChoice:
 
 
 def default_tool_frame(robot: RobotDescription) -> ToolChoice:
-    """The tip of the longest chain: the arm's tool frame.
+    """The arm's tool frame: the tip of the longest chain of turning joints.
 
-    Among the links moved by the most joints, a leaf (a link that is no joint's parent)
-    is preferred, then a name that says tool, then the last in URDF order. On the bundled
-    robot this is ``arm_tool_link``.
+    Links are ranked by the revolute and continuous joints that move them (a gripper's
+    sliding fingers do not make a chain longer), then by a name that says tool (``tool``,
+    ``tcp``, ``ee_link``, ...), then by being a leaf (no joint's parent), then by all joints,
+    then by URDF order (last wins). On the bundled robot this is ``arm_tool_link``; on
+    UR5 ``tool0``; on Panda ``panda_hand_tcp``.
     """
     model, links = robot.model, link_names(robot)
-    depth = {name: len(moving_joints(model, frame_id(model, name, links))) for name in links}
+    turning_types = {"revolute", "continuous"}
+    kinds = {j.name: j.type for j in robot.joints}
     parents = {joint.parent for joint in robot.joints}
-    deepest = max(depth.values(), default=0)
 
-    def rank(item: tuple[int, str]) -> tuple[bool, bool, int]:
-        order, name = item
-        return name not in parents, _looks_like_tool(name), order
+    def rank(order: int, name: str) -> tuple[int, bool, bool, int, int]:
+        joints = [model.names[j] for j in moving_joints(model, frame_id(model, name, links))]
+        turning = sum(kinds.get(j) in turning_types for j in joints)
+        return turning, _looks_like_tool(name), name not in parents, len(joints), order
 
-    candidates = [(i, n) for i, n in enumerate(links) if depth[n] == deepest]
-    _, name = max(candidates, key=rank)
-    return ToolChoice(name, deepest, _looks_like_tool(name))
+    ranks = {name: rank(i, name) for i, name in enumerate(links)}
+    name = max(links, key=ranks.__getitem__)
+    return ToolChoice(name, ranks[name][3], _looks_like_tool(name))
 
 
 def link_names(robot: RobotDescription) -> tuple[str, ...]:

@@ -36,6 +36,7 @@ _DAMPING = 1e-2  # w: damping per squared error
 _DAMPING_FLOOR = 1e-9  # w-bar: keeps the system positive definite at singularities
 _MAX_STEP = 2.0  # largest step norm [rad or m]
 _STALL_RATIO = 0.8  # an attempt stalls when ||e||^2 fell less than this in two iterations
+_SETTLE_RATIO = 1.0 - 1e-9  # the last descent of a failed solve runs until nothing improves
 
 
 @dataclass(frozen=True)
@@ -120,7 +121,7 @@ class IkSolver:
         """
         chain, settings = self.chain, self.settings
         residual = residual_for(chain, target.position_m, target.rotation, target.axes)
-        start = chain.to_chain(seed)
+        start = chain.clamp(chain.to_chain(seed))  # a fresh array: results stay in limits
         found: list[FloatArray] = []
         best_q, best_err2 = start, math.inf
         iterations = attempts = 0
@@ -128,7 +129,8 @@ class IkSolver:
             hold_base = chain.base_nq > 0 and attempts == 0
             q0 = start if attempts < (2 if chain.base_nq else 1) else chain.random_q(
                 rng, target.position_m)
-            q, err2, used, converged = self._descend(residual, q0.copy(), hold_base)
+            q, err2, used, converged = self._descend(residual, q0.copy(), hold_base,
+                                                     _STALL_RATIO)
             attempts, iterations = attempts + 1, iterations + used
             if converged:
                 found.append(q)
@@ -138,6 +140,12 @@ class IkSolver:
             best_q = min(found, key=lambda q: self._distance(start, q))
         elif found:
             best_q = found[0]
+        else:  # settle the best try into its local minimum: the best residual, reported
+            best_q, _, used, settled = self._descend(residual, best_q.copy(), False,
+                                                     _SETTLE_RATIO)
+            iterations += used
+            if settled:  # a slow descent, cut short as a stall, that does converge
+                found.append(best_q)
         if residual.last_q is not best_q:
             residual.reset(best_q)
             residual.evaluate(best_q)
@@ -150,9 +158,11 @@ class IkSolver:
 
         return float(np.linalg.norm(pin.difference(self.chain.model, start, q)))
 
-    def _descend(self, residual: object, q: FloatArray,
-                 hold_base: bool) -> tuple[FloatArray, float, int, bool]:
+    def _descend(self, residual: object, q: FloatArray, hold_base: bool,
+                 stall_ratio: float) -> tuple[FloatArray, float, int, bool]:
         """One attempt: damped least-squares steps from ``q`` until converged or stalled.
+
+        It stalls when the squared error fell by less than ``stall_ratio`` in two iterations.
 
         The loop is written out with local names: it is the hot path of every solve.
 
@@ -180,7 +190,7 @@ class IkSolver:
                 best_q, best_err2 = q, err2
                 if err2 <= gate2 and within(residual):
                     return q, err2, iteration, True
-            if err2 > _STALL_RATIO * earlier:
+            if err2 > stall_ratio * earlier:
                 break
             earlier, previous = previous, err2
             damping = _DAMPING * err2 + _DAMPING_FLOOR

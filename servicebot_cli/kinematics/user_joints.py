@@ -7,7 +7,8 @@ and reported, in the unit the user typed. Pure: values in, arrays out.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -16,6 +17,7 @@ import numpy.typing as npt
 from servicebot_cli.errors import OutOfLimits, ServicebotError
 
 if TYPE_CHECKING:
+    from servicebot_cli.description.elements import Joint
     from servicebot_cli.kinematics.configuration import JointSpace
 
 FloatArray = npt.NDArray[np.float64]
@@ -37,16 +39,53 @@ def unit_of(space: JointSpace, index: int, deg: bool) -> str:
     return "deg" if deg else "rad"
 
 
+@dataclass(frozen=True)
+class Mimics:
+    """Joints that follow another (``<mimic>``): follower = multiplier * leader + offset.
+
+    Attributes:
+        follower: Indices (in the joint space) of mimicking joints.
+        leader: Index of the joint each one follows.
+        multiplier: Factor per follower.
+        offset: Offset per follower [rad or m].
+    """
+
+    follower: tuple[int, ...] = ()
+    leader: tuple[int, ...] = ()
+    multiplier: tuple[float, ...] = ()
+    offset: tuple[float, ...] = ()
+
+    @classmethod
+    def of(cls, joints: Sequence[Joint], space: JointSpace) -> Mimics:
+        """The mimic rules among ``joints`` whose both ends are in ``space``."""
+        rules = [(space.names.index(j.name), space.names.index(j.mimic.joint),
+                  j.mimic.multiplier, j.mimic.offset)
+                 for j in joints if j.mimic is not None and j.name in space.names
+                 and j.mimic.joint in space.names]
+        return cls(*(tuple(column) for column in zip(*rules, strict=True))) if rules else cls()
+
+    def apply(self, values: FloatArray, named: Iterable[str], space: JointSpace) -> FloatArray:
+        """``values`` with every follower the user did not name set from its leader."""
+        given = set(named)
+        for f, lead, k, c in zip(self.follower, self.leader, self.multiplier, self.offset,
+                                 strict=True):
+            if space.names[f] not in given:
+                values[f] = k * values[lead] + c
+        return values
+
+
 def user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *, deg: bool = False,
-                clamp: bool = False) -> FloatArray:
+                clamp: bool = False, mimics: Mimics | None = None) -> FloatArray:
     """One value per joint [rad or m] from ``(name, value)`` pairs in the user's units.
 
-    Unnamed joints stay at zero.
+    Unnamed joints stay at zero (even where zero is outside their limits, as for Panda's
+    fourth joint: see :func:`unnamed_outside`), or follow their leader when ``mimics`` says
+    they mimic one. Only the values the user gave are checked against the limits.
 
     Raises:
         JointNotFound: An unknown name, nearest names first.
         BadNumber: A joint named twice.
-        OutOfLimits: A value outside its limits (unless ``clamp``), in the user's unit.
+        OutOfLimits: A given value outside its limits (unless ``clamp``), in the user's unit.
     """
     assignments: dict[str, float] = {}
     for name, value in pairs:
@@ -54,16 +93,31 @@ def user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *, deg: b
             raise BadNumber(f"joint '{name}' is given twice; give each joint once")
         assignments[name] = value
     values = np.zeros(len(space.names))
+    named = np.zeros(len(space.names), dtype=bool)
     for name, value in assignments.items():
         values[space.index(name)] = value
+        named[space.index(name)] = True
     if deg:
         values = np.where(angular(space), np.radians(values), values)
+    if mimics is not None and mimics.follower:
+        values = mimics.apply(values, assignments, space)
+        named[list(mimics.follower)] |= named[list(mimics.leader)]
+    inside = space.clamped(values)
     if clamp:
-        return space.clamped(values)
+        return np.where(named, inside, values)
+    probe = np.where(named, values, inside)
     try:
-        return space.checked(values)
+        space.checked(probe)
     except OutOfLimits:
-        raise _out_of_limits(space, values, deg) from None
+        raise _out_of_limits(space, probe, deg) from None
+    return values
+
+
+def unnamed_outside(space: JointSpace, values: FloatArray) -> list[str]:
+    """Joints whose value lies outside their limits (after :func:`user_vector`: unnamed ones)."""
+    with np.errstate(invalid="ignore"):
+        outside = (values < space.lower - 1e-9) | (values > space.upper + 1e-9)
+    return [name for name, out in zip(space.names, outside, strict=True) if out]
 
 
 def _out_of_limits(space: JointSpace, values: FloatArray, deg: bool) -> OutOfLimits:
@@ -112,8 +166,18 @@ def number(value: Any, what: str) -> float:
 def row_pairs(values: Mapping[str, Any], ignore: Iterable[str] = ()) -> list[tuple[str, float]]:
     """``(joint, value)`` pairs of a batch row, each value checked to be a number.
 
-    Keys in ``ignore`` (result columns such as ``line`` or ``success``) are left out.
+    Keys in ``ignore`` (result columns such as ``line`` or ``success``) are left out. All
+    values are converted at once; a row with a bad one goes one by one, for the message.
     """
     skip = set(ignore)
-    return [(name, number(value, f"joint '{name}'")) for name, value in values.items()
-            if name not in skip]
+    names = [name for name in values if name not in skip]
+    raw = [values[name] for name in names]
+    if all(type(v) is str or type(v) is float or type(v) is int for v in raw):
+        try:
+            numbers = np.array(raw, dtype=float)
+        except ValueError:
+            numbers = None
+        if numbers is not None and np.isfinite(numbers).all():
+            return list(zip(names, numbers.tolist(), strict=True))
+    return [(name, number(value, f"joint '{name}'")) for name, value in zip(names, raw,
+                                                                           strict=True)]
