@@ -36,7 +36,6 @@ _DAMPING = 1e-2  # w: damping per squared error
 _DAMPING_FLOOR = 1e-9  # w-bar: keeps the system positive definite at singularities
 _MAX_STEP = 2.0  # largest step norm [rad or m]
 _STALL_RATIO = 0.8  # an attempt stalls when ||e||^2 fell less than this in two iterations
-_SETTLE_RATIO = 1.0 - 1e-9  # the last descent of a failed solve runs until nothing improves
 
 
 @dataclass(frozen=True)
@@ -104,12 +103,15 @@ class IkSolver:
     def __init__(self, chain: Chain, settings: IkSettings | None = None) -> None:
         """Prepare the solver for ``chain`` with ``settings`` (defaults otherwise)."""
         import eigenpy
+        import pinocchio as pin
 
         self.chain = chain
         self.settings = settings or IkSettings()
         sizes = range(1, 10 + chain.model.nv)
         self._factor = {n: eigenpy.LLT(np.eye(n)) for n in sizes}
         self._eye = {n: np.eye(n) for n in sizes}
+        self._integrate = None if chain.vector_space else pin.integrate
+        self._gate2 = 1.5 * (self.settings.tolerance_m ** 2 + self.settings.tolerance_rad ** 2)
 
     def solve(self, target: IkTarget, seed: FloatArray, rng: np.random.Generator) -> IkResult:
         """Joint values that put the chain's frame at ``target``.
@@ -129,8 +131,7 @@ class IkSolver:
             hold_base = chain.base_nq > 0 and attempts == 0
             q0 = start if attempts < (2 if chain.base_nq else 1) else chain.random_q(
                 rng, target.position_m)
-            q, err2, used, converged = self._descend(residual, q0.copy(), hold_base,
-                                                     _STALL_RATIO)
+            q, err2, used, converged = self._descend(residual, q0.copy(), hold_base)
             attempts, iterations = attempts + 1, iterations + used
             if converged:
                 found.append(q)
@@ -141,8 +142,7 @@ class IkSolver:
         elif found:
             best_q = found[0]
         else:  # settle the best try into its local minimum: the best residual, reported
-            best_q, _, used, settled = self._descend(residual, best_q.copy(), False,
-                                                     _SETTLE_RATIO)
+            best_q, used, settled = self._settle(residual, best_q.copy())
             iterations += used
             if settled:  # a slow descent, cut short as a stall, that does converge
                 found.append(best_q)
@@ -158,30 +158,23 @@ class IkSolver:
 
         return float(np.linalg.norm(pin.difference(self.chain.model, start, q)))
 
-    def _descend(self, residual: object, q: FloatArray, hold_base: bool,
-                 stall_ratio: float) -> tuple[FloatArray, float, int, bool]:
+    def _descend(self, residual: object, q: FloatArray,
+                 hold_base: bool) -> tuple[FloatArray, float, int, bool]:
         """One attempt: damped least-squares steps from ``q`` until converged or stalled.
 
-        It stalls when the squared error fell by less than ``stall_ratio`` in two iterations.
-
-        The loop is written out with local names: it is the hot path of every solve.
+        It stalls when the squared error fell by less than :data:`_STALL_RATIO` in two
+        iterations. Steps are not checked for progress: that is what makes an attempt cheap.
 
         Returns:
             The best ``q`` of the attempt, its squared error, iterations used, and success.
         """
-        import pinocchio as pin
-
-        chain, settings = self.chain, self.settings
         evaluate, within = residual.evaluate, self._within  # type: ignore[attr-defined]
-        extra, shift = residual.extra, residual.shift  # type: ignore[attr-defined]
+        step_of, move = self._step, self._move
         residual.reset(q)  # type: ignore[attr-defined]
-        model, lower, upper = chain.model, chain.lower, chain.upper
-        integrate = None if chain.vector_space else pin.integrate
-        dot = np.dot
-        gate2 = 1.5 * (settings.tolerance_m ** 2 + settings.tolerance_rad ** 2)
+        gate2 = self._gate2
         earlier = previous = math.inf
         best_q, best_err2 = q, math.inf
-        for iteration in range(1, settings.max_iterations + 1):
+        for iteration in range(1, self.settings.max_iterations + 1):
             error, jacobian = evaluate(q)
             if hold_base:
                 jacobian[:, :3] = 0.0  # planar base: x, y, yaw stay where they are
@@ -190,29 +183,76 @@ class IkSolver:
                 best_q, best_err2 = q, err2
                 if err2 <= gate2 and within(residual):
                     return q, err2, iteration, True
-            if err2 > stall_ratio * earlier:
+            if err2 > _STALL_RATIO * earlier:
                 break
             earlier, previous = previous, err2
-            damping = _DAMPING * err2 + _DAMPING_FLOOR
-            rows, cols = jacobian.shape
-            if rows <= cols:
-                factor = self._factor[rows]
-                factor.compute(dot(jacobian, jacobian.T) + damping * self._eye[rows])
-                step = jacobian.T.dot(factor.solve(error))
-            else:
-                factor = self._factor[cols]
-                factor.compute(dot(jacobian.T, jacobian) + damping * self._eye[cols])
-                step = factor.solve(jacobian.T.dot(error))
-            size2 = step.dot(step)
-            if size2 > _MAX_STEP * _MAX_STEP:
-                step *= _MAX_STEP / math.sqrt(size2)
-            if extra:
-                shift(step[-extra:])
-                step = step[:-extra]
-            q = q + step if integrate is None else integrate(model, q, step)
-            np.maximum(q, lower, out=q)
-            np.minimum(q, upper, out=q)
+            q = move(q, step_of(jacobian, error, _DAMPING * err2 + _DAMPING_FLOOR), residual)
         return best_q, float(best_err2), iteration, False
+
+    def _settle(self, residual: object, q: FloatArray) -> tuple[FloatArray, int, bool]:
+        """Levenberg-Marquardt with step acceptance from ``q`` into the nearest minimum.
+
+        Only for solves that failed: a step that does not lower the error is undone and the
+        damping raised, so the error never grows and the best residual is a true one.
+
+        Returns:
+            The settled ``q``, iterations used, and whether it met the tolerance after all.
+        """
+        residual.reset(q)  # type: ignore[attr-defined]
+        error, jacobian = residual.evaluate(q)  # type: ignore[attr-defined]
+        err2 = error.dot(error)
+        damping = _DAMPING * err2 + _DAMPING_FLOOR
+        for iteration in range(1, self.settings.max_iterations + 1):
+            step = self._step(jacobian, error, damping)
+            candidate = self._move(q, step, residual)
+            new_error, new_jacobian = residual.evaluate(candidate)  # type: ignore[attr-defined]
+            new2 = new_error.dot(new_error)
+            if new2 < err2:
+                if new2 <= self._gate2 and self._within(residual):
+                    return candidate, iteration, True
+                done = err2 - new2 <= 1e-12 * err2
+                q, error, jacobian, err2 = candidate, new_error, new_jacobian, new2
+                damping = max(damping / 3, _DAMPING_FLOOR)
+                if done:
+                    break
+            else:
+                extra = residual.extra  # type: ignore[attr-defined]
+                if extra:
+                    residual.shift(-step[-extra:])  # type: ignore[attr-defined]
+                damping *= 4
+                if damping > 1e9:
+                    break
+        return q, iteration, False
+
+    def _step(self, jacobian: FloatArray, error: FloatArray, damping: float) -> FloatArray:
+        """The damped least-squares step, capped at :data:`_MAX_STEP`."""
+        rows, cols = jacobian.shape
+        if rows <= cols:
+            factor = self._factor[rows]
+            factor.compute(np.dot(jacobian, jacobian.T) + damping * self._eye[rows])
+            step = jacobian.T.dot(factor.solve(error))
+        else:
+            factor = self._factor[cols]
+            factor.compute(np.dot(jacobian.T, jacobian) + damping * self._eye[cols])
+            step = factor.solve(jacobian.T.dot(error))
+        size2 = step.dot(step)
+        if size2 > _MAX_STEP * _MAX_STEP:
+            step *= _MAX_STEP / math.sqrt(size2)
+        return step
+
+    def _move(self, q: FloatArray, step: FloatArray, residual: object) -> FloatArray:
+        """``q`` moved by the joints' part of ``step``, projected into the limits.
+
+        The rest of ``step`` moves the residual's own unknowns (free angles).
+        """
+        extra = residual.extra  # type: ignore[attr-defined]
+        if extra:
+            residual.shift(step[-extra:])  # type: ignore[attr-defined]
+            step = step[:-extra]
+        q = q + step if self._integrate is None else self._integrate(self.chain.model, q, step)
+        np.maximum(q, self.chain.lower, out=q)
+        np.minimum(q, self.chain.upper, out=q)
+        return q
 
     def _within(self, residual: object) -> bool:
         position, orientation = residual.errors()  # type: ignore[attr-defined]
