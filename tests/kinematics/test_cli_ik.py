@@ -132,3 +132,11 @@ def test_as_a_real_process_with_exit_code_1():
     result = run_servicebot("ik", "--position", "5", "0", "0", "--max-attempts", "3")
     assert result.returncode == 1 and "Traceback" not in result.stderr
     assert result.stderr.startswith("Error: no IK solution for arm_tool_link")
+
+
+@pytest.mark.parametrize("command", ["fk", "ik"])
+def test_help_is_light(command):
+    from tests.foundation.test_cli_shape import HEAVY, _imported
+
+    modules, stdout = _imported([command, "--help"])
+    assert "Usage: servicebot" in stdout and not HEAVY & modules
