@@ -44,7 +44,7 @@ def fk(robot_args: RobotArgs, joints: tuple[tuple[str, float], ...], frames: tup
     \b
     Examples:
       servicebot fk -j arm_link1_to_link2=0.5 -j arm_link2_to_link3=-0.3
-      servicebot fk --deg -j arm_base_to_link1=90 --frame arm_link4 --format json
+      servicebot fk --deg -j arm_base_to_link1=45 --frame arm_link4 --format json
       servicebot fk --all-frames --relative-to arm_base_link
       servicebot fk --configs configs.csv -o poses.jsonl
     """

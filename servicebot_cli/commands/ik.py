@@ -28,20 +28,23 @@ from servicebot_cli.options import JointValue, RobotArgs, format_option, robot_a
               help="Which angles matter: all (default with --rpy/--quat), none, or a comma "
               "list of roll, pitch, yaw (e.g. pitch). The others are left free.")
 @click.option("--seed", "seeds", type=JointValue(), multiple=True, metavar="NAME=VALUE",
-              help="Start from these joint values (repeatable; others at zero). The solution "
-              "nearest the seed is returned.")
-@click.option("--random-seed", type=click.IntRange(min=0), default=None,
+              help="Start from these joint values (repeatable; others at zero, or their "
+              "nearest limit). The solution nearest the seed is returned.")
+@click.option("--random-seed", type=click.IntRange(min=0), default=None, metavar="N",
               help="Seed of the random restarts: the same number gives the same answer.")
 @click.option("--with-base", is_flag=True,
               help="Also move the mobile base (planar x, y, yaw): say where the robot should "
               "stand. It stays put when the arm alone reaches.")
-@click.option("--tol-m", type=click.FloatRange(min=0, min_open=True), default=1e-6,
+@click.option("--tol-m", type=click.FloatRange(min=0, min_open=True), default=1e-6, metavar="M",
               show_default=True, help="Accepted position error [m].")
 @click.option("--tol-rad", type=click.FloatRange(min=0, min_open=True), default=1e-6,
+              metavar="RAD",
               show_default=True, help="Accepted orientation error [rad].")
 @click.option("--max-attempts", type=click.IntRange(min=1), default=100, show_default=True,
+              metavar="N",
               help="Attempts: the seed, then random restarts within the limits.")
 @click.option("--solutions", type=click.IntRange(min=1), default=3, show_default=True,
+              metavar="N",
               help="Converged solutions to compare before returning the one nearest the seed.")
 @deg_option
 @clamp_option
@@ -66,7 +69,7 @@ def ik(robot_args: RobotArgs, frame: str | None, position: tuple[float, ...] | N
     \b
     Examples:
       servicebot ik --position 0.5 0.2 0.4
-      servicebot ik --position 0.6 0 0.3 --rpy 0 90 0 --deg --orientation-axes pitch
+      servicebot ik --position 0.4 0.1 0.2 --rpy 0 90 0 --deg --orientation-axes pitch
       servicebot ik --position 2.0 1.0 0.5 --with-base --format json
       servicebot ik --targets path.csv -o joints.jsonl --random-seed 1
     """
@@ -79,7 +82,9 @@ def ik(robot_args: RobotArgs, frame: str | None, position: tuple[float, ...] | N
 
     if rpy is not None and quat is not None:
         raise click.UsageError("give --rpy or --quat, not both")
-    if (position is None) == (targets is None):
+    if position is not None and targets is not None:
+        raise click.UsageError("give --position or --targets, not both")
+    if position is None and targets is None:
         raise click.UsageError("give a target: --position X Y Z, or a --targets file")
     if targets is None and output is not None:
         raise click.UsageError("--output is for batch results (--targets); redirect stdout")

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.errors import ServicebotError
 from servicebot_cli.kinematics.frames import frame_id, moving_joints
 
 if TYPE_CHECKING:
@@ -28,6 +29,10 @@ FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.intp]
 
 _ON_AXIS_M = 1e-9  # a joint this close to the previous joint's axis does not move with it
+
+
+class NothingMoves(ServicebotError):
+    """IK was asked to move a frame that no joint moves."""
 
 
 @dataclass(frozen=True)
@@ -83,6 +88,9 @@ class Chain:
         import pinocchio as pin
 
         keep = set(moving_joints(model, frame_id(model, frame, known)))
+        if not keep:
+            raise NothingMoves(f"frame '{frame}' is fixed to the root: no joint moves it; "
+                               "choose a frame on the arm, or add --with-base")
         lock = [j for j in range(1, model.njoints) if j not in keep]
         self.full_nq = model.nq
         self.model = pin.buildReducedModel(model, lock, pin.neutral(model)) if lock else model

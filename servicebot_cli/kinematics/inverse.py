@@ -234,7 +234,7 @@ class IkSolver:
         else:
             factor = self._factor[cols]
             factor.compute(np.dot(jacobian.T, jacobian) + damping * self._eye[cols])
-            step = factor.solve(jacobian.T.dot(error))
+            step = factor.solve(jacobian.T.dot(error)).reshape(cols)  # (1, 1) for one joint
         size2 = step.dot(step)
         if size2 > _MAX_STEP * _MAX_STEP:
             step *= _MAX_STEP / math.sqrt(size2)

@@ -52,7 +52,9 @@ class _Residual:
         self.last_q = q
         pin.computeJointJacobians(self._model, self._data, q)
         self._pose = pin.updateFramePlacement(self._model, self._data, self._frame)
-        return pin.getFrameJacobian(self._model, self._data, self._frame, reference)
+        # (6, nv) even for one joint, which eigenpy would hand back as a flat vector
+        return pin.getFrameJacobian(self._model, self._data, self._frame, reference).reshape(
+            6, self._model.nv)
 
     def reset(self, q: FloatArray) -> None:
         """Prepare an attempt that starts at ``q`` (only :class:`SomeAxes` has state)."""

@@ -123,6 +123,9 @@ def test_the_seed_is_where_the_answer_starts(run):
     (["--position", "0.5", "0", "0.5", "--tol-m", "0"], ["--tol-m"]),
     (["--position", "0.5", "0", "0.5", "--random-seed", "-1"], ["--random-seed"]),
     (["--position", "0.5", "0", "0.5", "-o", "x.csv"], ["--output is for batch results"]),
+    (["--position", "0.5", "0", "0.5", "--targets", "x.csv"], ["--position or --targets"]),
+    (["--position", "0.2", "0", "0.1", "-f", "lidar_link"], ["frame 'lidar_link' is fixed to "
+                                                             "the root: no joint moves it"]),
 ])
 def test_bad_input_is_one_line_and_exit_2(run, args, needles):
     assert_one_line_error(run("ik", *args), 2, *needles)
@@ -140,3 +143,13 @@ def test_help_is_light(command):
 
     modules, stdout = _imported([command, "--help"])
     assert "Usage: servicebot" in stdout and not HEAVY & modules
+
+
+def test_a_chain_of_one_continuous_joint(run):
+    """A wheel: one joint, (cos, sin) in q; any random seed gives the same angle."""
+    for seed in range(4):
+        result = run("ik", "-f", "front_left_wheel", "--position", "0.17", "0.27", "-0.08",
+                     "--rpy", "0", "1", "0", "--random-seed", str(seed), "--format", "json")
+        answer = json.loads(result.stdout)
+        assert answer["success"] and answer["joints"]["front_left_wheel_joint"] == \
+            pytest.approx(1.0, abs=1e-6)
