@@ -92,15 +92,17 @@ class Problem:
         pin.framesForwardKinematics(self.model, self.data, q)
         return self.data.oMf[self.base].actInv(self.data.oMf[self.tip])
 
-    def ok(self, q: np.ndarray | None, target: pin.SE3) -> bool:
+    def ok(self, q: np.ndarray | None, target: pin.SE3, orientation: bool = True) -> bool:
         if q is None:
             return False
         q_chain = self.chain.to_chain(q)
         if np.any(q_chain < self.chain.lower - 1e-9) or np.any(q_chain > self.chain.upper + 1e-9):
             return False
-        error = self.pose(q).actInv(target)
-        return (np.linalg.norm(error.translation) <= CHECK_M
-                and np.linalg.norm(pin.log3(error.rotation)) <= CHECK_RAD)
+        pose = self.pose(q)
+        if np.linalg.norm(pose.translation - target.translation) > CHECK_M:
+            return False
+        return not orientation or np.linalg.norm(pin.log3(pose.rotation.T @ target.rotation)) \
+            <= CHECK_RAD
 
 
 def chain_values(problem: Problem, q: np.ndarray) -> np.ndarray:
@@ -145,7 +147,7 @@ def tracik_solver(problem: Problem) -> Callable[[int], np.ndarray | None]:
     return solve
 
 
-def ikpy_solver(problem: Problem) -> Callable[[int], np.ndarray | None]:
+def ikpy_solver(problem: Problem, mode: str | None = "all") -> Callable[[int], np.ndarray | None]:
     import ikpy.chain
 
     robot, elements = problem.robot, [problem.case.tip]
@@ -176,7 +178,7 @@ def ikpy_solver(problem: Problem) -> Callable[[int], np.ndarray | None]:
             warnings.simplefilter("ignore")
             answer = chain.inverse_kinematics_frame(
                 problem.targets[i].homogeneous @ offsets[0],
-                initial_position=ikpy_q(problem.seeds[i]), orientation_mode="all")
+                initial_position=ikpy_q(problem.seeds[i]), orientation_mode=mode)
         return problem.chain.to_full(np.asarray(answer)[active], neutral)
 
     return solve
@@ -211,13 +213,13 @@ class Row:
 
 
 def run(problem: Problem, label: str, solve: Callable[[int], np.ndarray | None],
-        count: int) -> Row:
+        count: int, orientation: bool = True) -> Row:
     times, good = [], 0
     for i in range(count):
         start = time.perf_counter()
         q = solve(i)
         times.append(time.perf_counter() - start)
-        good += problem.ok(q, problem.targets[i])
+        good += problem.ok(q, problem.targets[i], orientation)
     return Row(problem.case.name, label, count, good / count,
                float(np.median(times) * 1e3), float(np.percentile(times, 95) * 1e3))
 
@@ -289,11 +291,20 @@ def main() -> None:
         rows.append(run(problem, "TRAC-IK (pytracik)", tracik, args.targets))
         rows.append(run(problem, "ikpy", ikpy_solver(problem), min(args.ikpy_targets,
                                                                     args.targets)))
+        if case.name == "service arm":  # its own problem: four joints, position only
+            arm = problem
         print(f"{case.name}: done", file=sys.stderr)
     print(f"IK, full pose, {args.targets} random reachable targets per robot (ikpy: the first "
           f"{args.ikpy_targets}); success = FK within {CHECK_M:g} m and {CHECK_RAD:g} rad, "
           "limits kept\n")
     print_ik_table(rows)
+    print("\nIK, position only, service arm, same targets (pytracik cannot leave orientation "
+          "free)\n")
+    print_ik_table([
+        run(arm, "servicebot", servicebot_solver(arm, ()), args.targets, orientation=False),
+        run(arm, "ikpy", ikpy_solver(arm, None), min(args.ikpy_targets, args.targets),
+            orientation=False),
+    ])
     print(f"\nFK throughput, service robot, {args.fk_configs} configurations\n")
     print("| implementation | configurations/s |")
     print("|---|---:|")
