@@ -79,7 +79,7 @@ class FkBatch:
             if name not in RESULT_COLUMNS and name not in self.space.names:
                 raise JointNotFound.for_name(name, self.space.names)
 
-    def joint_vector(self, row: Row) -> FloatArray:
+    def parse(self, row: Row) -> FloatArray:
         """The row's configuration, one value per joint [rad or m]."""
         values = row.values
         if isinstance(values.get("joints"), dict):  # an ik result line

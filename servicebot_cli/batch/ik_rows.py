@@ -77,7 +77,7 @@ class IkBatch:
                 raise BadTarget(f"column '{name}' is not a target column; use x_m y_m z_m, then "
                                 "roll_rad pitch_rad yaw_rad (or _deg) or qx qy qz qw")
 
-    def target(self, row: Row) -> IkTarget:
+    def parse(self, row: Row) -> IkTarget:
         """The target of one line (raises BadTarget or BadNumber when unusable)."""
         return row_target(row.values, self.frame, deg=self.run.deg, axes=self.axes)
 

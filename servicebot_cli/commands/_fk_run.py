@@ -10,9 +10,7 @@ from collections.abc import Sequence
 import click
 
 from servicebot_cli.batch.fk_rows import FkBatch
-from servicebot_cli.batch.policy import Tally, handled
-from servicebot_cli.batch.reading import open_source
-from servicebot_cli.batch.writing import output_kind, row_writer
+from servicebot_cli.batch.stream import stream
 from servicebot_cli.description.robot import RobotDescription
 from servicebot_cli.kinematics.forward import frame_poses
 from servicebot_cli.kinematics.frames import link_names
@@ -56,18 +54,5 @@ def single(robot: RobotDescription, frames: Sequence[str], reference: str,
 def batch(robot: RobotDescription, frames: Sequence[str], reference: str, configs: str, *,
           output: str | None, fmt: str, deg: bool, clamp: bool, on_error: str) -> None:
     """Stream poses for every configuration line of ``configs``."""
-    fk = FkBatch(robot, frames, reference, deg=deg, clamp=clamp)
-    kind = output_kind(output, fmt)
-    source, handle = open_source(configs)
-    tally = Tally()
-    with handle:
-        if source.kind == "csv":
-            fk.check_header(source.columns)
-        rows = handled(source, fk.joint_vector, on_error=on_error,
-                       warn=lambda m: click.echo(m, err=True), tally=tally)
-        with row_writer(output, kind, fk.columns()) as write:
-            for result in fk.results(rows, kind):
-                write(result)
-    if tally.skipped:
-        click.echo(f"skipped {tally.skipped} of {tally.rows} lines of {source.display}",
-                   err=True)
+    stream(FkBatch(robot, frames, reference, deg=deg, clamp=clamp), configs, output=output,
+           fmt=fmt, on_error=on_error, warn=lambda message: click.echo(message, err=True))

@@ -17,9 +17,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.batch.ik_rows import IkBatch
-from servicebot_cli.batch.policy import Tally, handled
-from servicebot_cli.batch.reading import open_source
-from servicebot_cli.batch.writing import output_kind, row_writer
+from servicebot_cli.batch.stream import stream
 from servicebot_cli.description.robot import RobotDescription
 from servicebot_cli.errors import ExitCode, ServicebotError
 from servicebot_cli.kinematics.chain import Chain
@@ -119,26 +117,13 @@ def batch(run: Setup, targets: str, *, axes: tuple[str, ...] | None, output: str
           fmt: str, on_error: str) -> None:
     """Solve every target line of ``targets``, warm-starting each from the last solution."""
     rows = IkBatch(run, run.solver.chain.frame_name, axes=axes)
-    kind = output_kind(output, fmt)
-    source, handle = open_source(targets)
-    tally = Tally()
-    with handle:
-        if source.kind == "csv":
-            rows.check_header(source.columns)
-        items = handled(source, rows.target, on_error=on_error,
-                        warn=lambda m: click.echo(m, err=True), tally=tally)
-        with row_writer(output, kind, rows.columns()) as write:
-            for result in rows.results(items, kind):
-                write(result)
-    solved = tally.rows - tally.skipped
-    if tally.skipped:
-        click.echo(f"skipped {tally.skipped} of {tally.rows} lines of {source.display}",
-                   err=True)
+    tally, display = stream(rows, targets, output=output, fmt=fmt, on_error=on_error,
+                            warn=lambda message: click.echo(message, err=True))
     if rows.failed:
         shown = ", ".join(str(n) for n in rows.failed[:5]) + (", ..." if len(rows.failed) > 5
                                                               else "")
-        raise IkFailed(f"{len(rows.failed)} of {solved} targets not reached "
-                       f"(line {shown} of {source.display})")
+        raise IkFailed(f"{len(rows.failed)} of {tally.rows - tally.skipped} targets not reached "
+                       f"(line {shown} of {display})")
 
 
 def _target_json(target: IkTarget, deg: bool) -> dict[str, Any]:

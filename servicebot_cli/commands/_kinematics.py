@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
+
+F = TypeVar("F", bound=Callable[..., Any])
 
 deg_option = click.option(
     "--deg", is_flag=True,
@@ -18,16 +21,25 @@ clamp_option = click.option(
     "--clamp", is_flag=True,
     help="Clamp joint values outside their limits instead of refusing them.",
 )
-output_option = click.option(
-    "-o", "--output", type=click.Path(dir_okay=False, allow_dash=True), default=None,
-    help="Batch results to this file, written atomically (.csv or .jsonl; default stdout: "
-    "CSV with --format text, JSON Lines with --format json).",
-)
-on_error_option = click.option(
-    "--on-error", type=click.Choice(["stop", "skip"]), default="stop", show_default=True,
-    help="A bad batch line: stop with its line number (exit 2, no output file), or skip it, "
-    "say so on stderr, and go on.",
-)
+def batch_options(flag: str, help: str) -> Callable[[F], F]:
+    """The batch input option ``flag`` (a file, ``-`` for stdin), ``--output``, ``--on-error``."""
+
+    def decorate(f: F) -> F:
+        f = click.option(
+            "--on-error", type=click.Choice(["stop", "skip"]), default="stop",
+            show_default=True,
+            help="A bad batch line: stop with its line number (exit 2, no output file), or "
+            "skip it, say so on stderr, and go on.",
+        )(f)
+        f = click.option(
+            "-o", "--output", type=click.Path(dir_okay=False, allow_dash=True), default=None,
+            help="Batch results to this file, written atomically (.csv or .jsonl; default "
+            "stdout: CSV with --format text, JSON Lines with --format json).",
+        )(f)
+        return click.option(flag, type=click.Path(dir_okay=False, allow_dash=True),
+                            default=None, help=help)(f)
+
+    return decorate
 
 
 def pick_frame(robot: RobotDescription, name: str | None) -> str:

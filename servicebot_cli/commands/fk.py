@@ -5,10 +5,9 @@ from __future__ import annotations
 import click
 
 from servicebot_cli.commands._kinematics import (
+    batch_options,
     clamp_option,
     deg_option,
-    on_error_option,
-    output_option,
     pick_frame,
 )
 from servicebot_cli.options import JointValue, RobotArgs, format_option, robot_arguments
@@ -26,11 +25,9 @@ from servicebot_cli.options import JointValue, RobotArgs, format_option, robot_a
 @click.option("--all-frames", is_flag=True, help="Every link and fixed frame, as one table.")
 @deg_option
 @clamp_option
-@click.option("--configs", type=click.Path(dir_okay=False, allow_dash=True), default=None,
-              help="Batch: one configuration per line (CSV with a header of joint names, or "
-              "JSON Lines of {name: value}; - for stdin); one pose line per input line.")
-@output_option
-@on_error_option
+@batch_options("--configs", help="Batch: one configuration per line (CSV with a header of "
+               "joint names, or JSON Lines of {name: value}; - for stdin); one pose line per "
+               "input line.")
 @format_option
 def fk(robot_args: RobotArgs, joints: tuple[tuple[str, float], ...], frames: tuple[str, ...],
        relative_to: str | None, all_frames: bool, deg: bool, clamp: bool, configs: str | None,

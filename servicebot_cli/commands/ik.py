@@ -5,10 +5,9 @@ from __future__ import annotations
 import click
 
 from servicebot_cli.commands._kinematics import (
+    batch_options,
     clamp_option,
     deg_option,
-    on_error_option,
-    output_option,
     pick_frame,
 )
 from servicebot_cli.options import JointValue, RobotArgs, format_option, robot_arguments
@@ -48,11 +47,9 @@ from servicebot_cli.options import JointValue, RobotArgs, format_option, robot_a
               help="Converged solutions to compare before returning the one nearest the seed.")
 @deg_option
 @clamp_option
-@click.option("--targets", type=click.Path(dir_okay=False, allow_dash=True), default=None,
-              help="Batch: one target per line (CSV or JSON Lines, the column names of fk's "
-              "output; - for stdin); each solve starts from the previous solution.")
-@output_option
-@on_error_option
+@batch_options("--targets", help="Batch: one target per line (CSV or JSON Lines, the column "
+               "names of fk's output; - for stdin); each solve starts from the previous "
+               "solution.")
 @format_option
 def ik(robot_args: RobotArgs, frame: str | None, position: tuple[float, ...] | None,
        rpy: tuple[float, ...] | None, quat: tuple[float, ...] | None,

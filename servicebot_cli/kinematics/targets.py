@@ -96,7 +96,7 @@ def row_target(values: Mapping[str, Any], frame: str, *, deg: bool,
         BadTarget: No position, a malformed number, a half-given orientation.
     """
     flat = _flatten(values, frame)
-    position = _numbers(flat, _first_present(flat, POSITION_KEYS, "a position (x_m y_m z_m)"))
+    position = _numbers(flat, _first_present(flat, POSITION_KEYS, "position (x_m y_m z_m)"))
     if all(k in flat for k in QUATERNION_KEYS):
         return make_target(position, quat=_numbers(flat, QUATERNION_KEYS), axes=axes)
     for keys, in_deg in ((("roll_rad", "pitch_rad", "yaw_rad"), False),

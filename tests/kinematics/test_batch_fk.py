@@ -100,16 +100,20 @@ def test_skip_goes_on_and_says_what_it_skipped(run, tmp_path):
     ]
 
 
-@pytest.mark.parametrize(("content", "needle"), [
-    ("", "has no data lines"),
-    ("0.1,0.2\n", "must be a header of names"),
-    ("arm_link1_to_link2,arm_link1_to_link2\n0,0\n", "appears twice"),
-    ("arm_link1_to_lnk2\n0\n", "no joint 'arm_link1_to_lnk2'; did you mean"),
+@pytest.mark.parametrize(("args", "content", "needle"), [
+    (["fk", "--configs"], "", "has no data lines"),
+    (["fk", "--configs"], "0.1,0.2\n", "must be a header of names"),
+    (["fk", "--configs"], "arm_link1_to_link2,arm_link1_to_link2\n0,0\n", "appears twice"),
+    (["fk", "--configs"], "arm_link1_to_lnk2\n0\n", "no joint 'arm_link1_to_lnk2'; did you mean"),
+    (["ik", "--targets"], "x_m,y_m,z_m,colour\n1,2,3,red\n",
+     "column 'colour' is not a target column"),
+    (["ik", "--targets"], "x_m,y_m\n1,2\n", "the line has no position (x_m y_m z_m)"),
+    (["ik", "--targets"], "x_m,y_m,z_m,roll\n0.5,0,0.5,1\n", "'roll' is given without the rest"),
 ])
-def test_bad_files(run, tmp_path, content, needle):
-    configs = tmp_path / "configs.csv"
-    configs.write_text(content)
-    assert_one_line_error(run("fk", "--configs", configs), 2, needle)
+def test_bad_files(run, tmp_path, args, content, needle):
+    path = tmp_path / "in.csv"
+    path.write_text(content)
+    assert_one_line_error(run(*args, path), 2, needle)
 
 
 def test_missing_input_and_unwritable_output(run, tmp_path):

@@ -127,17 +127,6 @@ def test_bad_lines_stop_or_are_skipped(run, tmp_path):
     assert len(out.read_text().splitlines()) == 1
 
 
-@pytest.mark.parametrize(("content", "needle"), [
-    ("x_m,y_m,z_m,colour\n1,2,3,red\n", "column 'colour' is not a target column"),
-    ("x_m,y_m\n1,2\n", "the line has no a position"),
-    ("x_m,y_m,z_m,roll\n0.5,0,0.5,1\n", "'roll' is given without the rest"),
-])
-def test_bad_target_files(run, tmp_path, content, needle):
-    targets = tmp_path / "targets.csv"
-    targets.write_text(content)
-    assert_one_line_error(run("ik", "--targets", targets), 2, needle)
-
-
 def test_fk_output_with_several_frames_uses_the_asked_frame(run, tmp_path):
     poses = poses_of(run, tmp_path, [[0.2, 0.1, 0.3, 0.0]], "-f", "arm_link4", "-f",
                      "arm_tool_link")
