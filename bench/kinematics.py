@@ -37,7 +37,7 @@ sys.path.insert(0, str(REPO))
 
 from servicebot_cli.description.loader import RobotSource, load  # noqa: E402
 from servicebot_cli.kinematics.chain import Chain  # noqa: E402
-from servicebot_cli.kinematics.frames import link_names  # noqa: E402
+from servicebot_cli.kinematics.frames import frame_id, link_names  # noqa: E402
 from servicebot_cli.kinematics.inverse import IkSettings, IkSolver, IkTarget  # noqa: E402
 
 CHECK_M = CHECK_RAD = 2e-5
@@ -80,8 +80,8 @@ class Problem:
         self.robot = load(RobotSource.of(case.urdf))
         self.model, self.data = self.robot.model, self.robot.model.createData()
         self.chain = Chain(self.model, self.robot.joint_space, case.tip, link_names(self.robot))
-        self.tip = self.model.getFrameId(case.tip)
-        self.base = self.model.getFrameId(case.base)
+        self.tip = frame_id(self.model, case.tip, link_names(self.robot))
+        self.base = frame_id(self.model, case.base, link_names(self.robot))
         neutral = pin.neutral(self.model)
         self.seeds = [self.chain.to_full(self.chain.random_q(rng), neutral) for _ in range(count)]
         self.targets = [self.pose(self.chain.to_full(self.chain.random_q(rng), neutral))
@@ -245,7 +245,8 @@ def fk_throughput(count: int) -> list[tuple[str, float]]:
         batch_s = time.perf_counter() - start
         assert result.exit_code == 0, result.output
     model, data = robot.model, robot.model.createData()
-    tip, root = model.getFrameId("arm_tool_link"), model.getFrameId("base_link")
+    tip = frame_id(model, "arm_tool_link", link_names(robot))
+    root = frame_id(model, "base_link", link_names(robot))
     start = time.perf_counter()
     for row in values:
         transforms(model, data, space.to_q(row), [tip], root)

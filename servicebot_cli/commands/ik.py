@@ -18,7 +18,8 @@ from servicebot_cli.options import JointValue, RobotArgs, format_option, robot_a
 @click.option("-f", "--frame", metavar="FRAME", default=None,
               help="The frame to move (default: the arm's tool frame).")
 @click.option("--position", nargs=3, type=float, metavar="X Y Z", default=None,
-              help="Target position [m] in the root link's frame.")
+              help="Target position [m] in the root link's frame (with --with-base: the "
+              "frame where the root link stands now).")
 @click.option("--rpy", nargs=3, type=float, metavar="R P Y", default=None,
               help="Target roll, pitch, yaw [rad, or deg with --deg] (URDF convention).")
 @click.option("--quat", nargs=3 + 1, type=float, metavar="X Y Z W", default=None,

@@ -152,7 +152,7 @@ def _index_and_limits(full: pin.Model, reduced: pin.Model,
     upper = np.full(reduced.nq, np.inf)
     for j in range(1, reduced.njoints):
         name, joint = reduced.names[j], reduced.joints[j]
-        source = full.joints[full.getJointId(name)]
+        source = full.joints[full.getJointId(name)]  # the reduced model's names come from full
         index[joint.idx_q: joint.idx_q + joint.nq] = range(source.idx_q, source.idx_q + source.nq)
         if name in space.names and joint.nq == 1:
             k = space.index(name)
