@@ -124,7 +124,7 @@ class IkSolver:
         chain, settings = self.chain, self.settings
         residual = residual_for(chain, target.position_m, target.rotation, target.axes)
         start = chain.clamp(chain.to_chain(seed))  # a fresh array: results stay in limits
-        found: list[FloatArray] = []
+        found: list[tuple[FloatArray, tuple[float, float | None]]] = []  # q, its errors
         best_q, best_err2 = start, math.inf
         iterations = attempts = 0
         while attempts < settings.max_attempts and len(found) < settings.solutions:
@@ -133,27 +133,28 @@ class IkSolver:
                 rng, target.position_m)
             q, err2, used, converged = self._descend(residual, q0.copy(), hold_base)
             attempts, iterations = attempts + 1, iterations + used
-            if converged:
-                found.append(q)
+            if converged:  # the residual still holds this q's state (and free angles)
+                found.append((q, residual.errors()))
             elif err2 < best_err2:
                 best_q, best_err2 = q, err2
-        if len(found) > 1:
-            best_q = min(found, key=lambda q: self._distance(start, q))
-        elif found:
-            best_q = found[0]
-        else:  # settle the best try into its local minimum: the best residual, reported
+        if not found:  # settle the best try into its local minimum: the best residual
             best_q, used, settled = self._settle(residual, best_q.copy())
             iterations += used
             if settled:  # a slow descent, cut short as a stall, that does converge
-                found.append(best_q)
-        if residual.last_q is not best_q:
-            residual.reset(best_q)
-            residual.evaluate(best_q)
-        position_error, orientation_error = residual.errors()
+                found.append((best_q, residual.errors()))
+        if found:
+            best_q, (position_error, orientation_error) = min(
+                found, key=lambda item: self._distance(start, item[0]))
+        else:
+            if residual.last_q is not best_q:
+                residual.reset(best_q)
+                residual.evaluate(best_q)
+            position_error, orientation_error = residual.errors()
         return IkResult(chain.to_full(best_q, seed), bool(found), position_error,
                         orientation_error, iterations, attempts, len(found))
 
     def _distance(self, start: FloatArray, q: FloatArray) -> float:
+        """How far ``q`` is from ``start`` (continuous joints the short way round)."""
         import pinocchio as pin
 
         return float(np.linalg.norm(pin.difference(self.chain.model, start, q)))

@@ -74,6 +74,7 @@ def test_reachable_targets_are_reached_within_tolerance_and_limits(arm, axes):
             assert result.position_error_m <= TOLERANCE
             if axes:
                 assert orientation_kept(axes, pose.rotation, target.rotation) <= TOLERANCE
+                assert result.orientation_error_rad <= TOLERANCE
     assert reached >= 0.995 * TARGETS, f"{arm} {axes}: {reached} of {TARGETS}"
 
 
