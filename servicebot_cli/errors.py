@@ -82,11 +82,19 @@ class NameNotFound(ServicebotError):
         if close:
             hint = "did you mean " + " or ".join(f"'{c}'" for c in close) + "?"
         elif names:
-            shown = ", ".join(names[:8]) + (", ..." if len(names) > 8 else "")
-            hint = f"known: {shown}"
+            nearest = sorted(names, key=lambda candidate: _distance(name, candidate))
+            shown = ", ".join(nearest[:8]) + (", ..." if len(names) > 8 else "")
+            hint = f"known, nearest first: {shown}"
         else:
             hint = f"the robot has no {cls.kind}s"
         return cls(f"no {cls.kind} '{name}'{owner}; {hint}")
+
+
+def _distance(name: str, candidate: str) -> tuple[bool, float]:
+    """Sort key: names that contain (or are contained in) ``name`` first, then similarity."""
+    lowered, other = name.lower(), candidate.lower()
+    related = lowered in other or other in lowered
+    return not related, -difflib.SequenceMatcher(None, lowered, other).ratio()
 
 
 class JointNotFound(NameNotFound):

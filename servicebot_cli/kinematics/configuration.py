@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from functools import cached_property
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -99,6 +100,10 @@ class JointSpace:
 
     def neutral(self) -> FloatArray:
         """``q`` with every joint at zero (and an identity base)."""
+        return self._neutral.copy()
+
+    @cached_property
+    def _neutral(self) -> FloatArray:
         q = np.zeros(self.nq)
         for i, kind in enumerate(self.types):
             if kind == "continuous":
@@ -109,15 +114,24 @@ class JointSpace:
             q[6] = 1.0
         return q
 
+    @cached_property
+    def _layout(self) -> tuple[npt.NDArray[np.intp], ...]:
+        """Joints with one ``q`` entry and their indices; continuous joints and theirs."""
+        index = np.array(self.idx_q, dtype=np.intp)
+        continuous = np.array([kind == "continuous" for kind in self.types], dtype=bool)
+        plain, turning = np.flatnonzero(~continuous), np.flatnonzero(continuous)
+        return plain, index[plain], turning, index[turning]
+
     def to_q(self, values: FloatArray, q0: FloatArray | None = None) -> FloatArray:
         """``q`` from one value per joint in :attr:`names` order [rad or m]."""
         q = self.neutral() if q0 is None else np.array(q0, dtype=float)
-        for i, kind in enumerate(self.types):
-            if kind == "continuous":
-                q[self.idx_q[i]] = math.cos(values[i])
-                q[self.idx_q[i] + 1] = math.sin(values[i])
-            else:
-                q[self.idx_q[i]] = values[i]
+        values = np.asarray(values, dtype=float)
+        plain, plain_q, turning, turning_q = self._layout
+        q[plain_q] = values[plain]
+        if turning.size:  # continuous joints are (cos, sin) in q
+            angles = values[turning]
+            q[turning_q] = np.cos(angles)
+            q[turning_q + 1] = np.sin(angles)
         return q
 
     def from_q(self, q: FloatArray) -> FloatArray:
@@ -146,6 +160,11 @@ class JointSpace:
 
     def checked(self, values: FloatArray) -> FloatArray:
         """``values`` if every one is within its limits, else OutOfLimits naming the first."""
+        bounded = ~np.isnan(self.lower)
+        with np.errstate(invalid="ignore"):
+            inside = (values >= self.lower - _LIMIT_SLACK) & (values <= self.upper + _LIMIT_SLACK)
+        if inside[bounded].all():
+            return values
         for i, value in enumerate(values):
             lo, hi = self.lower[i], self.upper[i]
             if not (math.isnan(lo) or lo - _LIMIT_SLACK <= value <= hi + _LIMIT_SLACK):

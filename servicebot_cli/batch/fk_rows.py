@@ -1,0 +1,117 @@
+"""``fk --configs``: joint values per line in, poses per line out.
+
+Each input line is one configuration: CSV columns or JSON keys named after joints (an
+``ik`` result line, with its ``joints`` object or result columns, works too). Results are
+computed in chunks, so the conversion to roll-pitch-yaw and quaternions is vectorised, and
+written as soon as a chunk is done; memory stays bounded by the chunk size.
+
+Output rows::
+
+    JSON Lines: {"line": 2, "poses": [{"frame": "...", "position_m": [...],
+                 "rpy_rad": [...], "quaternion_xyzw": [...]}]}
+    CSV:        line,x_m,y_m,z_m,roll_rad,pitch_rad,yaw_rad,qx,qy,qz,qw
+                (each column prefixed with "FRAME." when several frames are asked for)
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Iterable, Iterator, Sequence
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.batch.reading import Row
+from servicebot_cli.errors import JointNotFound
+from servicebot_cli.kinematics.forward import pose_table, transforms
+from servicebot_cli.kinematics.frames import frame_id, link_names
+from servicebot_cli.kinematics.user_joints import Mimics, row_pairs, user_vector
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.robot import RobotDescription
+
+FloatArray = npt.NDArray[np.float64]
+
+CHUNK = 512
+# Columns of an ik result that are not joints: fk input skips them.
+RESULT_COLUMNS = ("line", "success", "position_error_m", "orientation_error_rad", "iterations",
+                  "attempts", "solutions", "solve_time_s", "base_x_m", "base_y_m",
+                  "base_yaw_rad", "base_yaw_deg")
+_POSE_COLUMNS = ("x_m", "y_m", "z_m", "roll_{u}", "pitch_{u}", "yaw_{u}", "qx", "qy", "qz", "qw")
+
+
+class FkBatch:
+    """Poses of fixed frames for a stream of configurations."""
+
+    def __init__(self, robot: RobotDescription, frames: Sequence[str], relative_to: str, *,
+                 deg: bool, clamp: bool) -> None:
+        """Prepare for ``frames`` in ``relative_to``; angles in degrees with ``deg``."""
+        known = link_names(robot)
+        self.model = robot.model
+        self.data = self.model.createData()
+        self.space = robot.joint_space
+        self.mimics = Mimics.of(robot.joints, self.space)
+        self.frames = list(frames)
+        self.ids = [frame_id(self.model, f, known) for f in frames]
+        self.reference = frame_id(self.model, relative_to, known)
+        self.deg, self.clamp = deg, clamp
+        self.unit = "deg" if deg else "rad"
+        self._columns = self._header()
+
+    def columns(self) -> list[str]:
+        """CSV header: ``line`` then the pose columns of each frame."""
+        return list(self._columns)
+
+    def _header(self) -> list[str]:
+        names = [c.format(u=self.unit) for c in _POSE_COLUMNS]
+        if len(self.frames) == 1:
+            return ["line", *names]
+        return ["line", *(f"{frame}.{n}" for frame in self.frames for n in names)]
+
+    def check_header(self, columns: Sequence[str]) -> None:
+        """Every CSV column must be a joint (or an ik result column).
+
+        Raises:
+            JointNotFound: The first column that is neither, with the nearest joint names.
+        """
+        for name in columns:
+            if name not in RESULT_COLUMNS and name not in self.space.names:
+                raise JointNotFound.for_name(name, self.space.names)
+
+    def parse(self, row: Row) -> FloatArray:
+        """The row's configuration, one value per joint [rad or m]."""
+        values = row.values
+        if isinstance(values.get("joints"), dict):  # an ik result line
+            values = values["joints"]
+        pairs = row_pairs(values, RESULT_COLUMNS)
+        return user_vector(self.space, pairs, deg=self.deg, clamp=self.clamp,
+                           mimics=self.mimics)
+
+    def results(self, items: Iterable[tuple[Row, FloatArray]],
+                kind: str) -> Iterator[dict[str, Any]]:
+        """One output row per input row, computed a chunk at a time."""
+        iterator = iter(items)
+        while chunk := list(itertools.islice(iterator, CHUNK)):
+            matrices = np.stack([
+                transforms(self.model, self.data, self.space.to_q(values), self.ids,
+                           self.reference)
+                for _, values in chunk
+            ])
+            poses = pose_table(matrices) + 0.0  # no -0.0 in the output
+            if self.deg:
+                poses[..., 3:6] = np.degrees(poses[..., 3:6])
+            for (row, _), values in zip(chunk, poses, strict=True):
+                yield self._json_row(row.line, values) if kind == "jsonl" else \
+                    self._csv_row(row.line, values)
+
+    def _json_row(self, line: int, poses: FloatArray) -> dict[str, Any]:
+        table = poses.tolist()
+        return {"line": line, "poses": [
+            {"frame": frame, "position_m": p[0:3], f"rpy_{self.unit}": p[3:6],
+             "quaternion_xyzw": p[6:10]}
+            for frame, p in zip(self.frames, table, strict=True)
+        ]}
+
+    def _csv_row(self, line: int, poses: FloatArray) -> dict[str, Any]:
+        return dict(zip(self._columns, [line, *poses.ravel().tolist()], strict=True))

@@ -1,0 +1,173 @@
+"""Reading batch input one line at a time: CSV with a header, or JSON Lines.
+
+Rows are yielded as they are read, so a file of a million lines never sits in memory. Each
+row keeps its line number; a line that cannot be read becomes a row with an ``error``
+instead of stopping the stream, so the caller decides whether to stop or skip. Blank lines
+and lines starting with ``#`` are ignored.
+
+The format comes from the extension (``.csv``, ``.tsv``; ``.jsonl``, ``.ndjson``, ``.json``)
+or, failing that, from the first meaningful character: ``{`` means JSON Lines.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import itertools
+import json
+import sys
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import IO, Any
+
+from servicebot_cli.errors import ServicebotError
+
+CSV_SUFFIXES = (".csv", ".tsv")
+_JSON_KINDS = {list: "array", str: "string", int: "number", float: "number", bool: "boolean",
+               type(None): "null"}
+JSONL_SUFFIXES = (".jsonl", ".ndjson", ".json")
+
+
+class BatchInputError(ServicebotError):
+    """A batch input file cannot be opened or has no usable header."""
+
+
+@dataclass(frozen=True)
+class Row:
+    """One line of input.
+
+    Attributes:
+        line: 1-based line number in the file.
+        values: Column (or key) to value: strings from CSV, JSON values from JSON Lines.
+        error: Why the line could not be read; ``values`` is then empty.
+    """
+
+    line: int
+    values: dict[str, Any] = field(default_factory=dict)
+    error: str = ""
+
+
+@dataclass(frozen=True)
+class Source:
+    """An open batch input.
+
+    Attributes:
+        display: The file name for messages (``<stdin>`` for ``-``).
+        kind: ``csv`` or ``jsonl``.
+        columns: CSV header names (empty for JSON Lines).
+        rows: The rows, read lazily.
+    """
+
+    display: str
+    kind: str
+    columns: tuple[str, ...]
+    rows: Iterator[Row]
+
+
+def open_source(path: str) -> tuple[Source, IO[str]]:
+    """Open ``path`` (``-`` for stdin) and read its header; the caller closes the handle.
+
+    Raises:
+        BatchInputError: Missing, a directory, unreadable, empty, or a bad CSV header.
+    """
+    display = "<stdin>" if path == "-" else path
+    handle = _open(path, display)
+    lines = _numbered(handle)
+    first = next(lines, None)
+    if first is None:
+        handle.close()
+        raise BatchInputError(f"{display}: has no data lines; give one line per item")
+    kind = _kind(path, first[1])
+    if kind == "jsonl":
+        return Source(display, kind, (), _json_rows(itertools.chain([first], lines))), handle
+    delimiter = "\t" if path.endswith(".tsv") else ","
+    header = _split(first[1], delimiter)
+    _check_header(display, first[0], header)
+    return Source(display, kind, tuple(header), _csv_rows(lines, header, delimiter)), handle
+
+
+def _open(path: str, display: str) -> IO[str]:
+    if path == "-":
+        return io.TextIOWrapper(sys.stdin.buffer, encoding="utf-8", errors="replace")
+    target = Path(path)
+    try:
+        if target.is_dir():
+            raise BatchInputError(f"{display}: is a directory; give a CSV or JSON Lines file")
+        return target.open(encoding="utf-8", errors="replace", newline="")
+    except FileNotFoundError:
+        raise BatchInputError(f"{display}: no such file") from None
+    except PermissionError:
+        raise BatchInputError(f"{display}: permission denied; make it readable") from None
+    except OSError as exc:
+        raise BatchInputError(f"{display}: cannot read: {exc.strerror or exc}") from None
+
+
+def _numbered(handle: IO[str]) -> Iterator[tuple[int, str]]:
+    """``(line number, text)`` of meaningful lines: not blank, not ``#`` comments."""
+    for number, text in enumerate(handle, start=1):
+        stripped = text.strip()
+        if stripped and not stripped.startswith("#"):
+            yield number, text.rstrip("\r\n")
+
+
+def _kind(path: str, first: str) -> str:
+    suffix = Path(path).suffix.lower()
+    if suffix in CSV_SUFFIXES:
+        return "csv"
+    if suffix in JSONL_SUFFIXES:
+        return "jsonl"
+    return "jsonl" if first.lstrip().startswith("{") else "csv"
+
+
+def _split(text: str, delimiter: str) -> list[str]:
+    return [cell.strip() for cell in next(csv.reader([text], delimiter=delimiter))]
+
+
+def _check_header(display: str, line: int, header: list[str]) -> None:
+    if any(not name for name in header):
+        raise BatchInputError(f"{display}:{line}: the CSV header has an empty column name")
+    repeated = sorted({name for name in header if header.count(name) > 1})
+    if repeated:
+        raise BatchInputError(f"{display}:{line}: column '{repeated[0]}' appears twice "
+                              "in the CSV header")
+    numeric = [name for name in header if _is_number(name)]
+    if numeric:
+        raise BatchInputError(f"{display}:{line}: the first line must be a header of names, "
+                              f"got the number {numeric[0]}")
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def _csv_rows(lines: Iterator[tuple[int, str]], header: list[str],
+              delimiter: str) -> Iterator[Row]:
+    for number, text in lines:
+        try:
+            cells = _split(text, delimiter)
+        except csv.Error as exc:
+            yield Row(number, error=f"not CSV: {exc}")
+            continue
+        if len(cells) != len(header):
+            yield Row(number, error=f"has {len(cells)} fields, the header has {len(header)}")
+            continue
+        yield Row(number, dict(zip(header, cells, strict=True)))
+
+
+def _json_rows(lines: Iterator[tuple[int, str]]) -> Iterator[Row]:
+    for number, text in lines:
+        try:
+            value = json.loads(text)
+        except json.JSONDecodeError as exc:
+            yield Row(number, error=f"not JSON: {exc.msg} at column {exc.colno}")
+            continue
+        if not isinstance(value, dict):
+            kind = _JSON_KINDS.get(type(value), "value")
+            yield Row(number, error=f"is a JSON {kind}, not an object of names and values")
+            continue
+        yield Row(number, value)

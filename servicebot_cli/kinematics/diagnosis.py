@@ -1,0 +1,46 @@
+"""Why IK failed, in one hint: out of reach, an orientation the joints cannot make, or limits.
+
+Pure: a solver, a target and a random generator in; a sentence out.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.kinematics.inverse import IkSolver, IkTarget
+
+FloatArray = npt.NDArray[np.float64]
+
+_PROBE_ATTEMPTS = 20
+
+
+def hint(solver: IkSolver, target: IkTarget, seed: FloatArray, rng: np.random.Generator) -> str:
+    """A hint for a target the solver did not reach.
+
+    1. Beyond the sphere that holds everything the chain reaches: by how much.
+    2. With orientation: if the position alone is reachable, say so.
+    3. Otherwise: the joint limits (or bad luck) are in the way.
+    """
+    chain, settings = solver.chain, solver.settings
+    reach = chain.reach
+    beyond = reach.beyond_m(target.position_m, vertical_only=chain.base_nq > 0)
+    if beyond > settings.tolerance_m:
+        if chain.base_nq:
+            return (f"out of reach: the target is {beyond:.3g} m higher or lower than the arm "
+                    f"reaches ({reach.radius_m:.3g} m from joint '{reach.around}'), wherever "
+                    "the base stands")
+        return (f"out of reach: the target is {beyond:.3g} m beyond the arm's reach "
+                f"({reach.radius_m:.3g} m from joint '{reach.around}')")
+    if target.axes:
+        probe = IkSolver(chain, replace(settings, max_attempts=_PROBE_ATTEMPTS, solutions=1))
+        if probe.solve(replace(target, axes=()), seed, rng).success:
+            fewer = "fewer --orientation-axes (e.g. pitch) or none" if len(target.axes) == 3 \
+                else "--orientation-axes none, or other angles"
+            return ("the position is reachable, but not with that orientation: the joints "
+                    f"cannot make it there; ask for {fewer}")
+    return (f"the target is within the arm's {reach.radius_m:.3g} m, but no configuration "
+            f"within the joint limits reached it in {settings.max_attempts} attempts; the "
+            "limits may forbid it, or raise --max-attempts")

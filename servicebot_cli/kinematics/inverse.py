@@ -1,0 +1,261 @@
+r"""Inverse kinematics: joint values that put a frame at a target.
+
+Levenberg-Marquardt (damped least squares) on the frame Jacobian. Each iteration solves
+
+.. math:: \Delta q = J^T (J J^T + \lambda I)^{-1} e, \quad \lambda = w \|e\|^2 + \bar w
+
+(or the equivalent :math:`(J^T J + \lambda I)^{-1} J^T e` when J has more rows than
+columns), the error-dependent damping of Sugihara (2011): large steps far away, Gauss-Newton
+close in. Steps are capped, and joint limits are enforced after every step by projection,
+so no iterate, and no result, ever leaves them; continuous joints turn freely and wrap.
+
+An attempt that stops improving ends early, and the next starts from a random
+configuration within the limits (drawn from the caller's generator, so a fixed seed gives
+the same answer). The first attempt starts from the seed; with a mobile base, the first
+keeps the base still and the second lets it move. Of the converged solutions, the one
+nearest the seed is returned. Pure: no clock, no global randomness.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.kinematics.residuals import residual_for
+
+if TYPE_CHECKING:
+    from servicebot_cli.kinematics.chain import Chain
+
+FloatArray = npt.NDArray[np.float64]
+
+_DAMPING = 1e-2  # w: damping per squared error
+_DAMPING_FLOOR = 1e-9  # w-bar: keeps the system positive definite at singularities
+_MAX_STEP = 2.0  # largest step norm [rad or m]
+_STALL_RATIO = 0.8  # an attempt stalls when ||e||^2 fell less than this in two iterations
+
+
+@dataclass(frozen=True)
+class IkTarget:
+    """Where the frame should go, in the root frame.
+
+    Attributes:
+        position_m: Target position [m], shape (3,).
+        rotation: Target orientation, shape (3, 3); None for position only.
+        axes: Orientation angles that matter, a subset of ``("roll", "pitch", "yaw")``;
+            empty means position only.
+    """
+
+    position_m: FloatArray
+    rotation: FloatArray | None = None
+    axes: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class IkSettings:
+    """How hard and how precisely to search.
+
+    Attributes:
+        tolerance_m: Largest accepted position error [m].
+        tolerance_rad: Largest accepted orientation error [rad].
+        max_attempts: Attempts in all (the seed, then random restarts).
+        max_iterations: Iterations per attempt.
+        solutions: Converged solutions to compare before returning the nearest to the seed.
+    """
+
+    tolerance_m: float = 1e-6
+    tolerance_rad: float = 1e-6
+    max_attempts: int = 100
+    max_iterations: int = 100
+    solutions: int = 1
+
+
+@dataclass(frozen=True)
+class IkResult:
+    """The answer, or the best try.
+
+    Attributes:
+        q: Full configuration; joints outside the chain keep the seed's values.
+        success: Both errors within tolerance.
+        position_error_m: Distance from the frame to the target [m].
+        orientation_error_rad: Angle to the target orientation [rad] (for some axes: the
+            norm of their angle differences); None for position only.
+        iterations: Iterations over all attempts.
+        attempts: Attempts made.
+        solutions: Converged solutions found (the nearest to the seed was returned).
+    """
+
+    q: FloatArray = field(repr=False)
+    success: bool
+    position_error_m: float
+    orientation_error_rad: float | None
+    iterations: int
+    attempts: int
+    solutions: int
+
+
+class IkSolver:
+    """Solves IK for one chain; reuse it for many targets (batch mode warm-starts)."""
+
+    def __init__(self, chain: Chain, settings: IkSettings | None = None) -> None:
+        """Prepare the solver for ``chain`` with ``settings`` (defaults otherwise)."""
+        import eigenpy
+        import pinocchio as pin
+
+        self.chain = chain
+        self.settings = settings or IkSettings()
+        sizes = range(1, 10 + chain.model.nv)
+        self._factor = {n: eigenpy.LLT(np.eye(n)) for n in sizes}
+        self._eye = {n: np.eye(n) for n in sizes}
+        self._integrate = None if chain.vector_space else pin.integrate
+        self._gate2 = 1.5 * (self.settings.tolerance_m ** 2 + self.settings.tolerance_rad ** 2)
+
+    def solve(self, target: IkTarget, seed: FloatArray, rng: np.random.Generator) -> IkResult:
+        """Joint values that put the chain's frame at ``target``.
+
+        Args:
+            target: The target, in the root frame.
+            seed: Full configuration to start from (within limits); shape (full nq,).
+            rng: Source of the random restarts.
+        """
+        chain, settings = self.chain, self.settings
+        residual = residual_for(chain, target.position_m, target.rotation, target.axes)
+        start = chain.clamp(chain.to_chain(seed))  # a fresh array: results stay in limits
+        found: list[tuple[FloatArray, tuple[float, float | None]]] = []  # q, its errors
+        best_q, best_err2 = start, math.inf
+        iterations = attempts = 0
+        while attempts < settings.max_attempts and len(found) < settings.solutions:
+            hold_base = chain.base_nq > 0 and attempts == 0
+            q0 = start if attempts < (2 if chain.base_nq else 1) else chain.random_q(
+                rng, target.position_m)
+            q, err2, used, converged = self._descend(residual, q0.copy(), hold_base)
+            attempts, iterations = attempts + 1, iterations + used
+            if converged:  # the residual still holds this q's state (and free angles)
+                found.append((q, residual.errors()))
+            elif err2 < best_err2:
+                best_q, best_err2 = q, err2
+        if not found:  # settle the best try into its local minimum: the best residual
+            best_q, used, settled = self._settle(residual, best_q.copy())
+            iterations += used
+            if settled:  # a slow descent, cut short as a stall, that does converge
+                found.append((best_q, residual.errors()))
+        if found:
+            best_q, (position_error, orientation_error) = min(
+                found, key=lambda item: self._distance(start, item[0]))
+        else:
+            if residual.last_q is not best_q:
+                residual.reset(best_q)
+                residual.evaluate(best_q)
+            position_error, orientation_error = residual.errors()
+        return IkResult(chain.to_full(best_q, seed), bool(found), position_error,
+                        orientation_error, iterations, attempts, len(found))
+
+    def _distance(self, start: FloatArray, q: FloatArray) -> float:
+        """How far ``q`` is from ``start`` (continuous joints the short way round)."""
+        import pinocchio as pin
+
+        return float(np.linalg.norm(pin.difference(self.chain.model, start, q)))
+
+    def _descend(self, residual: object, q: FloatArray,
+                 hold_base: bool) -> tuple[FloatArray, float, int, bool]:
+        """One attempt: damped least-squares steps from ``q`` until converged or stalled.
+
+        It stalls when the squared error fell by less than :data:`_STALL_RATIO` in two
+        iterations. Steps are not checked for progress: that is what makes an attempt cheap.
+
+        Returns:
+            The best ``q`` of the attempt, its squared error, iterations used, and success.
+        """
+        evaluate, within = residual.evaluate, self._within  # type: ignore[attr-defined]
+        step_of, move = self._step, self._move
+        residual.reset(q)  # type: ignore[attr-defined]
+        gate2 = self._gate2
+        earlier = previous = math.inf
+        best_q, best_err2 = q, math.inf
+        for iteration in range(1, self.settings.max_iterations + 1):
+            error, jacobian = evaluate(q)
+            if hold_base:
+                jacobian[:, :3] = 0.0  # planar base: x, y, yaw stay where they are
+            err2 = error.dot(error)
+            if err2 < best_err2:
+                best_q, best_err2 = q, err2
+                if err2 <= gate2 and within(residual):
+                    return q, err2, iteration, True
+            if err2 > _STALL_RATIO * earlier:
+                break
+            earlier, previous = previous, err2
+            q = move(q, step_of(jacobian, error, _DAMPING * err2 + _DAMPING_FLOOR), residual)
+        return best_q, float(best_err2), iteration, False
+
+    def _settle(self, residual: object, q: FloatArray) -> tuple[FloatArray, int, bool]:
+        """Levenberg-Marquardt with step acceptance from ``q`` into the nearest minimum.
+
+        Only for solves that failed: a step that does not lower the error is undone and the
+        damping raised, so the error never grows and the best residual is a true one.
+
+        Returns:
+            The settled ``q``, iterations used, and whether it met the tolerance after all.
+        """
+        residual.reset(q)  # type: ignore[attr-defined]
+        error, jacobian = residual.evaluate(q)  # type: ignore[attr-defined]
+        err2 = error.dot(error)
+        damping = _DAMPING * err2 + _DAMPING_FLOOR
+        for iteration in range(1, self.settings.max_iterations + 1):
+            step = self._step(jacobian, error, damping)
+            candidate = self._move(q, step, residual)
+            new_error, new_jacobian = residual.evaluate(candidate)  # type: ignore[attr-defined]
+            new2 = new_error.dot(new_error)
+            if new2 < err2:
+                if new2 <= self._gate2 and self._within(residual):
+                    return candidate, iteration, True
+                done = err2 - new2 <= 1e-12 * err2
+                q, error, jacobian, err2 = candidate, new_error, new_jacobian, new2
+                damping = max(damping / 3, _DAMPING_FLOOR)
+                if done:
+                    break
+            else:
+                extra = residual.extra  # type: ignore[attr-defined]
+                if extra:
+                    residual.shift(-step[-extra:])  # type: ignore[attr-defined]
+                damping *= 4
+                if damping > 1e9:
+                    break
+        return q, iteration, False
+
+    def _step(self, jacobian: FloatArray, error: FloatArray, damping: float) -> FloatArray:
+        """The damped least-squares step, capped at :data:`_MAX_STEP`."""
+        rows, cols = jacobian.shape
+        if rows <= cols:
+            factor = self._factor[rows]
+            factor.compute(np.dot(jacobian, jacobian.T) + damping * self._eye[rows])
+            step = jacobian.T.dot(factor.solve(error))
+        else:
+            factor = self._factor[cols]
+            factor.compute(np.dot(jacobian.T, jacobian) + damping * self._eye[cols])
+            step = factor.solve(jacobian.T.dot(error)).reshape(cols)  # (1, 1) for one joint
+        size2 = step.dot(step)
+        if size2 > _MAX_STEP * _MAX_STEP:
+            step *= _MAX_STEP / math.sqrt(size2)
+        return step
+
+    def _move(self, q: FloatArray, step: FloatArray, residual: object) -> FloatArray:
+        """``q`` moved by the joints' part of ``step``, projected into the limits.
+
+        The rest of ``step`` moves the residual's own unknowns (free angles).
+        """
+        extra = residual.extra  # type: ignore[attr-defined]
+        if extra:
+            residual.shift(step[-extra:])  # type: ignore[attr-defined]
+            step = step[:-extra]
+        q = q + step if self._integrate is None else self._integrate(self.chain.model, q, step)
+        np.maximum(q, self.chain.lower, out=q)
+        np.minimum(q, self.chain.upper, out=q)
+        return q
+
+    def _within(self, residual: object) -> bool:
+        position, orientation = residual.errors()  # type: ignore[attr-defined]
+        return position <= self.settings.tolerance_m and (
+            orientation is None or orientation <= self.settings.tolerance_rad)

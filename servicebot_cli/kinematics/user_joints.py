@@ -1,0 +1,183 @@
+"""Joint values in the user's units: radians or degrees for angles, metres for slides.
+
+``--deg`` changes angles only: a prismatic joint is always in metres. Limits are checked,
+and reported, in the unit the user typed. Pure: values in, arrays out.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.errors import OutOfLimits, ServicebotError
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.elements import Joint
+    from servicebot_cli.kinematics.configuration import JointSpace
+
+FloatArray = npt.NDArray[np.float64]
+
+
+class BadNumber(ServicebotError):
+    """A value that is not a finite number, or a joint named twice."""
+
+
+def angular(space: JointSpace) -> npt.NDArray[np.bool_]:
+    """True for each joint whose value is an angle (revolute, continuous)."""
+    return np.array([kind != "prismatic" for kind in space.types], dtype=bool)
+
+
+def unit_of(space: JointSpace, index: int, deg: bool) -> str:
+    """``deg``, ``rad`` or ``m`` for joint ``index``."""
+    if space.types[index] == "prismatic":
+        return "m"
+    return "deg" if deg else "rad"
+
+
+@dataclass(frozen=True)
+class Mimics:
+    """Joints that follow another (``<mimic>``): follower = multiplier * leader + offset.
+
+    Attributes:
+        follower: Indices (in the joint space) of mimicking joints.
+        leader: Index of the joint each one follows.
+        multiplier: Factor per follower.
+        offset: Offset per follower [rad or m].
+    """
+
+    follower: tuple[int, ...] = ()
+    leader: tuple[int, ...] = ()
+    multiplier: tuple[float, ...] = ()
+    offset: tuple[float, ...] = ()
+
+    @classmethod
+    def of(cls, joints: Sequence[Joint], space: JointSpace) -> Mimics:
+        """The mimic rules among ``joints`` whose both ends are in ``space``."""
+        rules = [(space.names.index(j.name), space.names.index(j.mimic.joint),
+                  j.mimic.multiplier, j.mimic.offset)
+                 for j in joints if j.mimic is not None and j.name in space.names
+                 and j.mimic.joint in space.names]
+        return cls(*(tuple(column) for column in zip(*rules, strict=True))) if rules else cls()
+
+    def apply(self, values: FloatArray, named: Iterable[str], space: JointSpace) -> FloatArray:
+        """``values`` with every follower the user did not name set from its leader."""
+        given = set(named)
+        for f, lead, k, c in zip(self.follower, self.leader, self.multiplier, self.offset,
+                                 strict=True):
+            if space.names[f] not in given:
+                values[f] = k * values[lead] + c
+        return values
+
+
+def user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *, deg: bool = False,
+                clamp: bool = False, mimics: Mimics | None = None) -> FloatArray:
+    """One value per joint [rad or m] from ``(name, value)`` pairs in the user's units.
+
+    Unnamed joints stay at zero (even where zero is outside their limits, as for Panda's
+    fourth joint: see :func:`unnamed_outside`), or follow their leader when ``mimics`` says
+    they mimic one. Only the values the user gave are checked against the limits.
+
+    Raises:
+        JointNotFound: An unknown name, nearest names first.
+        BadNumber: A joint named twice.
+        OutOfLimits: A given value outside its limits (unless ``clamp``), in the user's unit.
+    """
+    assignments: dict[str, float] = {}
+    for name, value in pairs:
+        if name in assignments:
+            raise BadNumber(f"joint '{name}' is given twice; give each joint once")
+        assignments[name] = value
+    values = np.zeros(len(space.names))
+    named = np.zeros(len(space.names), dtype=bool)
+    for name, value in assignments.items():
+        values[space.index(name)] = value
+        named[space.index(name)] = True
+    if deg:
+        values = np.where(angular(space), np.radians(values), values)
+    if mimics is not None and mimics.follower:
+        values = mimics.apply(values, assignments, space)
+        named[list(mimics.follower)] |= named[list(mimics.leader)]
+    inside = space.clamped(values)
+    if clamp:
+        return np.where(named, inside, values)
+    probe = np.where(named, values, inside)
+    try:
+        space.checked(probe)
+    except OutOfLimits:
+        raise _out_of_limits(space, probe, deg) from None
+    return values
+
+
+def unnamed_outside(space: JointSpace, values: FloatArray) -> list[str]:
+    """Joints whose value lies outside their limits (after :func:`user_vector`: unnamed ones)."""
+    with np.errstate(invalid="ignore"):
+        outside = (values < space.lower - 1e-9) | (values > space.upper + 1e-9)
+    return [name for name, out in zip(space.names, outside, strict=True) if out]
+
+
+def _out_of_limits(space: JointSpace, values: FloatArray, deg: bool) -> OutOfLimits:
+    scale = np.where(angular(space), math.degrees(1.0) if deg else 1.0, 1.0)
+    for i, value in enumerate(values):
+        lo, hi = space.lower[i], space.upper[i]
+        if not math.isnan(lo) and not lo - 1e-9 <= value <= hi + 1e-9:
+            unit = unit_of(space, i, deg)
+            return OutOfLimits(
+                f"joint '{space.names[i]}' = {value * scale[i]:g} {unit} is outside its limits "
+                f"[{lo * scale[i]:g}, {hi * scale[i]:g}] {unit}; give a value inside them, "
+                "or --clamp"
+            )
+    return OutOfLimits("a joint value is outside its limits")  # not reached: checked() failed
+
+
+def user_values(space: JointSpace, values: FloatArray, *, deg: bool = False) -> dict[str, float]:
+    """``{name: value}`` in the user's units from one value per joint [rad or m]."""
+    shown = np.where(angular(space), np.degrees(values), values) if deg else values
+    return {name: float(v) for name, v in zip(space.names, shown, strict=True)}
+
+
+def number(value: Any, what: str) -> float:
+    """A finite float from a CSV cell (text) or a JSON value (a number).
+
+    Raises:
+        BadNumber: Empty, not a number, or not finite; the message names ``what``.
+    """
+    if isinstance(value, bool) or value is None:
+        raise BadNumber(f"{what} is {str(value).lower() if value is not None else 'null'}, "
+                            "not a number")
+    if isinstance(value, str):
+        if not value.strip():
+            raise BadNumber(f"{what} is empty; give a number")
+        try:
+            value = float(value)
+        except ValueError:
+            raise BadNumber(f"{what} is '{value}', not a number") from None
+    if not isinstance(value, int | float):
+        raise BadNumber(f"{what} is not a number")
+    if not math.isfinite(value):
+        raise BadNumber(f"{what} is {value}, not a finite number")
+    return float(value)
+
+
+def row_pairs(values: Mapping[str, Any], ignore: Iterable[str] = ()) -> list[tuple[str, float]]:
+    """``(joint, value)`` pairs of a batch row, each value checked to be a number.
+
+    Keys in ``ignore`` (result columns such as ``line`` or ``success``) are left out. All
+    values are converted at once; a row with a bad one goes one by one, for the message.
+    """
+    skip = set(ignore)
+    names = [name for name in values if name not in skip]
+    raw = [values[name] for name in names]
+    if all(type(v) is str or type(v) is float or type(v) is int for v in raw):
+        try:
+            numbers = np.array(raw, dtype=float)
+        except ValueError:
+            numbers = None
+        if numbers is not None and np.isfinite(numbers).all():
+            return list(zip(names, numbers.tolist(), strict=True))
+    return [(name, number(value, f"joint '{name}'")) for name, value in zip(names, raw,
+                                                                           strict=True)]

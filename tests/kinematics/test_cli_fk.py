@@ -1,0 +1,139 @@
+"""``servicebot fk`` from the command line: text, JSON, frames, units, bad input."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from tests.conftest import FIXTURES, assert_one_line_error, run_servicebot
+from tests.kinematics.robots import PANDA, UR5
+
+
+def test_default_is_the_arm_tool_frame_at_zero(run):
+    result = run("fk")
+    assert result.exit_code == 0 and result.stderr == ""
+    assert result.stdout.splitlines() == [
+        "arm_tool_link in base_link",
+        "  position [m]          0.8  0  0.6",
+        "  roll pitch yaw [rad]  0  0  0",
+        "  quaternion x y z w    0  0  0  1",
+        "  matrix                1  0  0  0.8",
+        "                        0  1  0    0",
+        "                        0  0  1  0.6",
+        "                        0  0  0    1",
+    ]
+
+
+def test_json_has_every_representation(run):
+    result = run("fk", "-j", "arm_base_to_link1=0.5", "-j", "arm_link1_to_link2=-0.4",
+                 "--format", "json")
+    assert result.exit_code == 0
+    answer = json.loads(result.stdout)
+    assert list(answer) == ["robot", "relative_to", "angle_unit", "joints", "poses"]
+    assert answer["relative_to"] == "base_link" and answer["angle_unit"] == "rad"
+    assert answer["joints"]["arm_base_to_link1"] == 0.5
+    assert answer["joints"]["front_left_wheel_joint"] == 0.0
+    [pose] = answer["poses"]
+    assert list(pose) == ["frame", "position_m", "rpy_rad", "quaternion_xyzw", "matrix"]
+    reach = 0.9 * np.array([math.cos(0.5) * math.cos(-0.4), math.sin(0.5) * math.cos(-0.4),
+                            math.sin(0.4)])
+    assert pose["position_m"] == pytest.approx([-0.1 + reach[0], reach[1], 0.6 + reach[2]])
+    assert pose["rpy_rad"] == pytest.approx([0.0, -0.4, 0.5])
+    matrix = np.array(pose["matrix"])
+    assert matrix[:3, 3] == pytest.approx(pose["position_m"])
+    x, y, z, w = pose["quaternion_xyzw"]
+    assert matrix[0, 0] == pytest.approx(1 - 2 * (y * y + z * z))
+
+
+def test_degrees_in_and_out(run):
+    rad = json.loads(run("fk", "-j", "arm_link1_to_link2=0.5", "--format", "json").stdout)
+    deg = json.loads(run("fk", "--deg", "-j", f"arm_link1_to_link2={math.degrees(0.5)}",
+                         "--format", "json").stdout)
+    assert deg["angle_unit"] == "deg" and deg["joints"]["arm_link1_to_link2"] == \
+        pytest.approx(math.degrees(0.5))
+    assert deg["poses"][0]["position_m"] == pytest.approx(rad["poses"][0]["position_m"])
+    assert deg["poses"][0]["rpy_deg"] == pytest.approx([0, math.degrees(0.5), 0])
+
+
+def test_several_frames_relative_to_another(run):
+    result = run("fk", "-f", "arm_link2", "-f", "arm_tool_link", "--relative-to",
+                 "arm_base_link", "--format", "json")
+    poses = json.loads(result.stdout)["poses"]
+    assert [p["frame"] for p in poses] == ["arm_link2", "arm_tool_link"]
+    assert poses[0]["position_m"] == pytest.approx([0, 0, 0.4])
+    assert poses[1]["position_m"] == pytest.approx([0.9, 0, 0.4])
+    text = run("fk", "-f", "arm_link2", "-f", "camera_link").stdout
+    assert "arm_link2 in base_link" in text and "\n\ncamera_link in base_link" in text
+
+
+def test_all_frames_is_one_table_of_every_link(run):
+    result = run("fk", "--all-frames")
+    lines = result.stdout.splitlines()
+    assert lines[0] == "every frame in base_link"
+    assert lines[1].split()[:4] == ["frame", "x", "[m]", "y"]
+    frames = [line.split()[0] for line in lines[3:]]
+    assert len(frames) == 15 and frames[0] == "base_link" and frames[-1] == "arm_tool_link"
+    optical = next(line for line in lines if line.startswith("camera_link_optical"))
+    assert optical.split()[1:] == ["0.275", "0", "0.05", "-1.5708", "0", "-1.5708"]
+    assert len(json.loads(run("fk", "--all-frames", "--format", "json").stdout)["poses"]) == 15
+
+
+def test_continuous_joints_take_any_angle(run):
+    result = run("fk", "-j", "front_left_wheel_joint=7", "-f", "front_left_wheel",
+                 "--format", "json")
+    pose = json.loads(result.stdout)["poses"][0]
+    assert pose["rpy_rad"][1] == pytest.approx(math.asin(math.sin(7.0)))
+    assert json.loads(result.stdout)["joints"]["front_left_wheel_joint"] == 7.0
+
+
+def test_other_robots_tool_frames_and_a_note_when_the_choice_is_not_named_tool(run):
+    assert run("fk", UR5).stdout.startswith("tool0 in world")
+    panda = run("fk", PANDA, "-j", "panda_joint4=-1")
+    assert panda.stdout.startswith("panda_hand_tcp in panda_link0") and panda.stderr == ""
+    planar = run("fk", FIXTURES / "planar_2r.urdf")
+    assert planar.stdout.startswith("tip in base")
+    assert planar.stderr == ("note: no --frame given; using 'tip', the tip of the longest "
+                             "chain (2 joints)\n")
+
+
+def test_mimic_joints_follow_and_unnamed_joints_outside_limits_are_noted(run):
+    result = run("fk", PANDA, "-j", "panda_finger_joint1=0.03", "-f", "panda_rightfinger",
+                 "--relative-to", "panda_hand", "--format", "json")
+    assert json.loads(result.stdout)["poses"][0]["position_m"][1] == pytest.approx(-0.03)
+    assert result.stderr == ("note: panda_joint4 not given: 0, outside the limits "
+                             "(give panda_joint4=VALUE for a reachable pose)\n")
+
+
+@pytest.mark.parametrize(("args", "needles"), [
+    (["-f", "tool"], ["no frame 'tool'", "nearest first: arm_tool_link,"]),
+    (["-f", "arm_tol_link"], ["did you mean 'arm_tool_link'"]),
+    (["--relative-to", "base"], ["no frame 'base'", "did you mean 'base_link'"]),
+    (["-j", "arm_link1_to_lnk2=0.1"], ["no joint 'arm_link1_to_lnk2'",
+                                       "did you mean 'arm_link1_to_link2'"]),
+    (["-j", "arm_link1_to_link2=2"], ["'arm_link1_to_link2' = 2 rad is outside its limits "
+                                      "[-1.57, 1.57] rad", "--clamp"]),
+    (["--deg", "-j", "arm_link1_to_link2=100"], ["= 100 deg is outside its limits "
+                                                 "[-89.9544, 89.9544] deg"]),
+    (["-j", "arm_link1_to_link2=abc"], ["'abc' for joint 'arm_link1_to_link2' is not a number"]),
+    (["-j", "arm_link1_to_link2=nan"], ["not a finite number"]),
+    (["-j", "arm_link1_to_link2"], ["is not NAME=VALUE"]),
+    (["-j", "arm_link1_to_link2=1", "-j", "arm_link1_to_link2=0"], ["given twice"]),
+    (["-f", "arm_link2", "--all-frames"], ["--frame or --all-frames, not both"]),
+    (["-o", "x.jsonl"], ["--output is for batch results"]),
+])
+def test_bad_input_is_one_line_and_exit_2(run, args, needles):
+    assert_one_line_error(run("fk", *args), 2, *needles)
+
+
+def test_clamp_clamps_instead(run):
+    result = run("fk", "-j", "arm_link1_to_link2=2", "--clamp", "--format", "json")
+    assert json.loads(result.stdout)["joints"]["arm_link1_to_link2"] == 1.57
+
+
+def test_as_a_real_process():
+    result = run_servicebot("fk", "-j", "arm_base_to_link1=0.3", "--format", "json")
+    assert result.returncode == 0 and result.stderr == ""
+    assert json.loads(result.stdout)["poses"][0]["frame"] == "arm_tool_link"
