@@ -28,9 +28,10 @@ class OneLineUsageError(click.ClickException):
 
     exit_code = ExitCode.USAGE
 
-    def __init__(self, error: click.UsageError) -> None:
+    def __init__(self, error: click.UsageError, fallback_path: str = "servicebot") -> None:
         super().__init__(error.format_message())
-        self.command_path = error.ctx.command_path if error.ctx else "servicebot"
+        # Some parser errors (a missing option value) carry no context; the caller knows better.
+        self.command_path = error.ctx.command_path if error.ctx else fallback_path
 
     def format_message(self) -> str:
         """The message, then a pointer to ``--help``."""
@@ -57,7 +58,8 @@ class ServicebotGroup(click.Group):
         except click.exceptions.NoArgsIsHelpError:
             raise
         except click.UsageError as exc:
-            raise OneLineUsageError(exc) from None
+            path = " ".join(filter(None, [ctx.command_path, ctx.invoked_subcommand]))
+            raise OneLineUsageError(exc, path) from None
         except ServicebotError as exc:
             if ctx.params.get("debug"):
                 raise

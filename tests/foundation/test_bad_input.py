@@ -160,6 +160,11 @@ def test_two_files_for_a_single_robot_command(run):
     assert_one_line_error(run("fk", SIM_URDF, XACRO_SOURCE), 2, "one robot description at a time")
 
 
+def test_missing_option_value_points_at_the_subcommand_help(run):
+    assert_one_line_error(run("expand", "-o"), 2, "requires an argument",
+                          "servicebot expand --help")
+
+
 def test_unknown_option_is_one_line(run):
     assert_one_line_error(run("fk", "--no-such-option"), 2, "No such option",
                           "servicebot fk --help")
