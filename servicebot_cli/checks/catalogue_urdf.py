@@ -159,8 +159,8 @@ URDF_RULES = (
          "No joint in the cycle has an independent position; the message prints the cycle.",
          "Make one joint of the cycle independent."),
     Rule("SB212", "limits-in-degrees", W, "Angular limits that look like degrees",
-         "URDF angles are radians. A revolute limit beyond 2 pi that is a whole number "
-         "(90, 180, 360) was almost certainly written in degrees.",
+         "URDF angles are radians. Revolute limits beyond 2 pi that are whole numbers from "
+         "30 to 720 (90, 180, 360) were almost certainly written in degrees.",
          "Convert to radians (180 -> 3.14159)."),
     Rule("SB213", "soft-limits-outside", W, "safety_controller soft limits outside the hard limits",
          "soft_lower_limit must be >= lower and soft_upper_limit <= upper (and soft lower <= "

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 
 from servicebot_cli.checks.findings import Issue
 from servicebot_cli.description import sensors as specs
+from servicebot_cli.description.elements import parse_float
 from servicebot_cli.description.extensions import Sensor, param
 from servicebot_cli.description.sensors import NoiseSpec
 from servicebot_cli.errors import NameNotFound
@@ -52,7 +53,8 @@ def _lidar(sensor: Sensor) -> Iterator[str]:
     lidar = specs.lidar_spec(sensor)
     root = "lidar" if any(k.startswith("lidar/") for k, _ in sensor.params) else "ray"
     samples = param(sensor.params, f"{root}/scan/horizontal/samples")
-    if samples is not None and not (samples.isdigit() and int(samples) > 0):
+    count = parse_float(samples)
+    if samples is not None and not (count is not None and count > 0 and count.is_integer()):
         yield f"horizontal samples '{samples}' must be a positive whole number"
     low, high = lidar.min_angle_rad, lidar.max_angle_rad
     if low is not None and high is not None and not low < high:

@@ -55,7 +55,7 @@ def _possible(link: Link, values: tuple[float, ...]) -> Iterator[Issue]:
     scale = float(np.abs(moments).max())
     shown = ", ".join(f"{m:.6g}" for m in moments)
     element = link.inertial.element if link.inertial else None
-    if scale == 0.0:
+    if scale <= 1e-15:  # all zero, up to rounding in the file
         if _mass(link) > 0:
             yield Issue("SB307", f"link '{link.name}' has mass {_mass(link):g} kg and zero "
                         "inertia (a point mass)", element)

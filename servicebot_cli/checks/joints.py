@@ -80,8 +80,9 @@ def _limits(joint: Joint) -> Iterator[Issue]:
 
 
 def _degrees(lower: float, upper: float) -> bool:
-    values = [v for v in (lower, upper) if math.isfinite(v) and abs(v) > _TWO_PI + 1e-3]
-    return bool(values) and all(v == round(v) for v in values)
+    """Whole numbers from 30 to 720: degrees. Radian placeholders (10, 100, 1e9) are not."""
+    values = [abs(v) for v in (lower, upper) if math.isfinite(v) and abs(v) > _TWO_PI + 1e-3]
+    return bool(values) and all(v == round(v) for v in values) and 30 <= max(values) <= 720
 
 
 def _axis(joint: Joint) -> Iterator[Issue]:

@@ -47,15 +47,15 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv) -> File
     if size > MAX_BYTES:
         issue = Issue("SB015", f"file is {size / 1e6:.1f} MB, over the {MAX_BYTES / 1e6:.0f} MB "
                       "limit for a robot description; refused unread", where=(source.display, 0, 0))
-        return _report(source.display, _place_all(None, [issue], settings))
+        return _report(source.display, place_issues(None, [issue], settings))
     try:
         robot = read_description(source)
     except DescriptionError as exc:
         if _unreadable(exc, source):
             raise
         issue = read_errors.issue_of(exc, source.display)
-        return _report(source.display, _place_all(None, [issue], settings))
-    return _report(source.display, _place_all(robot, _issues(robot, settings, env), settings))
+        return _report(source.display, place_issues(None, [issue], settings))
+    return _report(source.display, place_issues(robot, _issues(robot, settings, env), settings))
 
 
 def _unreadable(exc: DescriptionError, source: RobotSource) -> bool:
@@ -99,8 +99,9 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
         yield from model.check(robot)
 
 
-def _place_all(robot: RobotDescription | None, issues: Iterable[Issue],
-               settings: Settings) -> list[Finding]:
+def place_issues(robot: RobotDescription | None, issues: Iterable[Issue],
+                 settings: Settings) -> list[Finding]:
+    """Findings for the enabled, unsuppressed ``issues``, placed in their source files."""
     parents: dict[ET.Element, ET.Element] | None = None
     findings = []
     for issue in issues:
