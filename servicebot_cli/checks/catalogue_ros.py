@@ -74,6 +74,6 @@ ROS_RULES = (
          "Built only when the cheaper rules found no error.",
          "Fix what the message says."),
     Rule("SB702", "model-skipped", N, "The model was not built because of errors above",
-         "Building the model of a broken description says nothing new.",
-         "Fix the errors above."),
+         "Building the model of a broken description says nothing new; fix the errors "
+         "reported before this one and check again."),
 )

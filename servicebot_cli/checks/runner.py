@@ -55,7 +55,21 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv) -> File
             raise
         issue = read_errors.issue_of(exc, source.display)
         return _report(source.display, place_issues(None, [issue], settings))
-    return _report(source.display, place_issues(robot, _issues(robot, settings, env), settings))
+    findings = place_issues(robot, _issues(robot, settings, env), settings)
+    return _report(source.display, findings + _model(robot, findings, settings))
+
+
+def _model(robot: RobotDescription, findings: list[Finding], settings: Settings) -> list[Finding]:
+    """SB701 when every reported finding is below error level, else SB702."""
+    from servicebot_cli.checks import model
+
+    if any(f.code in ("SB008", "SB015") for f in findings):
+        return []
+    if any(f.severity is Severity.ERROR for f in findings):
+        skipped = Issue("SB702", "Pinocchio model not built: fix the errors above first",
+                        where=(robot.display, 0, 0))
+        return place_issues(robot, [skipped], settings)
+    return place_issues(robot, model.check(robot), settings) if settings.enabled("SB701") else []
 
 
 def _unreadable(exc: DescriptionError, source: RobotSource) -> bool:
@@ -67,7 +81,8 @@ def _unreadable(exc: DescriptionError, source: RobotSource) -> bool:
 
 
 def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Iterator[Issue]:
-    from servicebot_cli.checks import gazebo, geometry, inertia, joints, model, ros2_control
+    """Every rule family but the model, skipping families with no selected rule."""
+    from servicebot_cli.checks import gazebo, geometry, inertia, joints, ros2_control
 
     for warning in robot.warnings:
         yield Issue("SB017", warning, where=(robot.display, 0, 0))
@@ -83,20 +98,9 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
         ("SB4", lambda: geometry.check(robot, env)), ("SB50", lambda: gazebo.check(robot)),
         ("SB5", lambda: ros2_control.check(robot)),
     ]
-    errors = any(settings.severity_of(i.code) is Severity.ERROR for i in found if wanted(i.code))
     for prefix, family in families:
-        if not any(wanted(code) for code in RULES if code.startswith(prefix)):
-            continue
-        for issue in family():
-            errors = errors or (wanted(issue.code)
-                                and settings.severity_of(issue.code) is Severity.ERROR)
-            yield issue
-    if not wanted("SB701"):
-        return
-    if errors:
-        yield Issue("SB702", "Pinocchio model not built: fix the errors above first", robot.root)
-    else:
-        yield from model.check(robot)
+        if any(wanted(code) for code in RULES if code.startswith(prefix)):
+            yield from family()
 
 
 def place_issues(robot: RobotDescription | None, issues: Iterable[Issue],
@@ -148,5 +152,5 @@ def _place(robot: RobotDescription | None, issue: Issue, settings: Settings) -> 
 
 
 def _report(file: str, findings: list[Finding]) -> FileReport:
-    ordered = sorted(findings, key=lambda f: (f.file != file, *f.sort_key()))
+    ordered = sorted(findings, key=lambda f: (f.code == "SB702", f.file != file, *f.sort_key()))
     return FileReport(file, tuple(ordered))

@@ -97,8 +97,10 @@ def _loop_issue(cycle: list[Joint]) -> Issue:
         return Issue("SB107", f"joint '{joint.name}' connects link '{joint.parent}' to itself",
                      joint.element, fix=f"remove joint '{joint.name}'")
     text = cycle[0].parent or ""
-    for joint in cycle:
-        text += f" -[{joint.name}]-> {joint.child}"
+    shown = cycle if len(cycle) <= 12 else [*cycle[:6], None, *cycle[-5:]]
+    for joint in shown:
+        text += f" ... ({len(cycle) - 11} more joints)" if joint is None else \
+            f" -[{joint.name}]-> {joint.child}"
     return Issue("SB107", f"kinematic loop: {text}", cycle[-1].element,
                  fix=f"remove one joint of the loop, e.g. '{cycle[-1].name}'")
 
