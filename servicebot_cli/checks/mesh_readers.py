@@ -98,8 +98,8 @@ def _numbers(text: str | None, dtype: type = np.float64) -> np.ndarray:
             raise MeshFormatError("a number list holding something that is not a number") from None
 
 
-def read_dae(data: bytes) -> FloatArray:
-    """Triangles of a COLLADA file: scene nodes' transforms and ``<unit meter>`` applied."""
+def _collada(data: bytes) -> tuple[list[tuple[ET.Element, FloatArray]], str, float]:
+    """Each geometry instance of the scene with its transform, the namespace, and the unit."""
     try:
         root = ET.fromstring(data)
     except ET.ParseError as exc:
@@ -108,12 +108,16 @@ def read_dae(data: bytes) -> FloatArray:
     unit = root.find(f"{ns}asset/{ns}unit")
     meter = float(unit.get("meter", "1")) if unit is not None else 1.0
     geometries = {g.get("id"): g for g in root.iter(f"{ns}geometry")}
-    parts = []
     scene = root.find(f"{ns}library_visual_scenes/{ns}visual_scene")
     if scene is None:
-        instances = [(g, np.eye(4)) for g in geometries.values()]
-    else:
-        instances = list(_instances(scene, ns, geometries))
+        return [(g, np.eye(4)) for g in geometries.values()], ns, meter
+    return _instances(scene, ns, geometries), ns, meter
+
+
+def read_dae(data: bytes) -> FloatArray:
+    """Triangles of a COLLADA file: scene nodes' transforms and ``<unit meter>`` applied."""
+    instances, ns, meter = _collada(data)
+    parts = []
     for geometry, transform in instances:
         tris = _geometry_triangles(geometry, ns)
         if len(tris):
@@ -122,6 +126,41 @@ def read_dae(data: bytes) -> FloatArray:
     if not parts:
         return np.zeros((0, 3, 3))
     return np.concatenate(parts) * meter
+
+
+def read_dae_bounds(data: bytes) -> tuple[int, FloatArray, FloatArray]:
+    """Triangle count and bounding box of a COLLADA file, without building the triangles.
+
+    Reads the vertex positions and the primitives' counts only (the index lists are most of
+    a COLLADA file), for the checks that need no more than the size.
+    """
+    instances, ns, meter = _collada(data)
+    count, points = 0, []
+    for geometry, transform in instances:
+        mesh = geometry.find(f"{ns}mesh")
+        if mesh is None:
+            continue
+        n = sum(_primitive_triangles(prim, ns) for prim in mesh)
+        if n:
+            count += n
+            positions = _positions(mesh, ns)
+            points.append(positions @ transform[:3, :3].T + transform[:3, 3])
+    if not count:
+        return 0, np.zeros(3), np.zeros(3)
+    every = np.concatenate(points) * meter
+    return count, every.min(axis=0), every.max(axis=0)
+
+
+def _primitive_triangles(prim: ET.Element, ns: str) -> int:
+    kind = prim.tag[len(ns):]
+    if kind == "triangles":
+        return int(prim.get("count", "0"))
+    if kind == "polylist":
+        counts = _numbers(prim.findtext(f"{ns}vcount"), np.int64)
+        return int(np.maximum(counts - 2, 0).sum())
+    if kind == "polygons":
+        return int(prim.get("count", "0"))
+    return 0
 
 
 def _instances(scene: ET.Element, ns: str, geometries: dict) -> list:
@@ -167,15 +206,10 @@ def _axis_angle(axis: FloatArray, angle: float) -> FloatArray:
     return np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * (k @ k)
 
 
-def _geometry_triangles(geometry: ET.Element, ns: str) -> FloatArray:
-    mesh = geometry.find(f"{ns}mesh")
-    if mesh is None:
-        return np.zeros((0, 3, 3))
-    sources = {s.get("id"): s for s in mesh.findall(f"{ns}source")}
+def _positions(mesh: ET.Element, ns: str) -> FloatArray:
+    sources = {src.get("id"): src for src in mesh.findall(f"{ns}source")}
     vertices = mesh.find(f"{ns}vertices")
-    if vertices is None:
-        return np.zeros((0, 3, 3))
-    inputs = vertices.findall(f"{ns}input")
+    inputs = vertices.findall(f"{ns}input") if vertices is not None else []
     position = next((i for i in inputs if i.get("semantic") == "POSITION"), None)
     source_id = (position.get("source") or "").lstrip("#") if position is not None else ""
     source = sources.get(source_id)
@@ -183,7 +217,14 @@ def _geometry_triangles(geometry: ET.Element, ns: str) -> FloatArray:
     if array is None:
         raise MeshFormatError("COLLADA mesh without vertex positions")
     points = _numbers(array.text)
-    points = points[: len(points) - len(points) % 3].reshape(-1, 3)
+    return points[: len(points) - len(points) % 3].reshape(-1, 3)
+
+
+def _geometry_triangles(geometry: ET.Element, ns: str) -> FloatArray:
+    mesh = geometry.find(f"{ns}mesh")
+    if mesh is None or mesh.find(f"{ns}vertices") is None:
+        return np.zeros((0, 3, 3))
+    points = _positions(mesh, ns)
     tris = []
     for prim in mesh:
         kind = prim.tag[len(ns):]

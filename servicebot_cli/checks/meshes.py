@@ -67,12 +67,20 @@ def load_mesh(path: Path, with_mass: bool = False) -> MeshInfo:
         raise MeshError(f"cannot read: {exc.strerror or exc}") from None
     reader = _READERS.get(path.suffix.lower())
     try:
+        if reader is mesh_readers.read_dae and not with_mass:
+            return _bounds_only(*mesh_readers.read_dae_bounds(data))
         triangles = reader(data) if reader else _with_trimesh(path)
     except (mesh_readers.MeshFormatError, ValueError, IndexError) as exc:
         raise MeshError(str(exc) or type(exc).__name__) from None
     if not np.all(np.isfinite(triangles)):
         raise MeshError("vertices with NaN or infinite coordinates")
     return summarise(triangles, with_mass)
+
+
+def _bounds_only(count: int, lower: np.ndarray, upper: np.ndarray) -> MeshInfo:
+    if not (np.all(np.isfinite(lower)) and np.all(np.isfinite(upper))):
+        raise MeshError("vertices with NaN or infinite coordinates")
+    return MeshInfo(count, tuple(map(float, lower)), tuple(map(float, upper)))  # type: ignore[arg-type]
 
 
 def _with_trimesh(path: Path) -> np.ndarray:

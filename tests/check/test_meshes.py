@@ -68,3 +68,17 @@ def test_ascii_stl_and_binary_stl_agree(tmp_path):
     trimesh.load(FIXTURES / "meshes" / "cube.stl").export(ascii_path, file_type="stl_ascii")
     text = load_mesh(ascii_path, with_mass=True)
     assert text.mass.volume == pytest.approx(binary.mass.volume) == pytest.approx(0.001)
+
+
+@pytest.mark.parametrize("path", [p for p in _sample() if p.suffix.lower() == ".dae"],
+                         ids=lambda p: p.name)
+def test_collada_bounds_only_path_agrees_with_the_full_read(path):
+    """Same count; the box of every position holds the triangles' box (a file may carry
+    vertices no triangle uses) and has the same size to well within SB404's factor 1000."""
+    fast = load_mesh(path)
+    full = load_mesh(path, with_mass=True)
+    assert fast.triangles == full.triangles
+    assert np.all(np.array(fast.lower) <= np.array(full.lower) + 1e-9)
+    assert np.all(np.array(fast.upper) >= np.array(full.upper) - 1e-9)
+    extent = max(np.subtract(fast.upper, fast.lower)) / max(np.subtract(full.upper, full.lower))
+    assert extent < 3
