@@ -136,7 +136,7 @@ def mutated(draw: st.DrawFn) -> bytes:
         text.encode("utf-8", "replace")
 
 
-@settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow],
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow],
           derandomize=True)
 @given(data=mutated())
 def test_check_never_raises_on_mutated_urdfs(tmp_path_factory, data):
