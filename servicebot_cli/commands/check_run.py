@@ -95,6 +95,9 @@ def check_controller_files(values: tuple[str, ...], urdfs: tuple[str, ...], bund
         raise click.UsageError(f"give --urdf or --robot {bundled}, not both")
     yaml_path = Path(yaml_files[0]) if yaml_files else bundled_file(CONTROLLERS_YAML)
     display = yaml_files[0] if yaml_files else f"{CONTROLLERS_YAML} (bundled)"
+    if not yaml_path.is_file():
+        problem = "is a directory" if yaml_path.is_dir() else "no such file"
+        raise DescriptionError(f"{display}: {problem}; give a ros2_control controllers YAML")
     text = read_bytes(yaml_path, display).decode("utf-8", "replace")
     sources = [RobotSource.of(u, xacro_args=xacro_args, packages=packages) for u in urdfs]
     if not urdfs:

@@ -207,7 +207,8 @@ def test_the_bundled_controllers_agree_with_the_bundled_robots(run, args):
 
 
 def test_controllers_bad_input(run, tmp_path):
-    assert_one_line_error(run("check", "controllers", tmp_path / "nope.yaml"), 2, "no such file")
+    assert_one_line_error(run("check", "controllers", tmp_path / "nope.yaml"), 2, "no such file",
+                          "controllers YAML")
     assert_one_line_error(run("check", "controllers", "a.yaml", "b.yaml"), 2, "one controllers")
     assert_one_line_error(run("check", "controllers", "--urdf", SIM_URDF, "--robot", "sim"), 2,
                           "not both")
