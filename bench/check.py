@@ -1,0 +1,84 @@
+"""Benchmark: `servicebot check urdf` over the real URDF corpus against check_urdf.
+
+Corpus: every URDF of example-robot-data and pybullet_data (pip install '.[test]').
+servicebot checks the whole corpus in one call; check_urdf (urdfdom) runs once per file,
+both as the pip-installed command (a Python wrapper from cmeel-urdfdom) and as the native
+binary it wraps. servicebot is timed with every rule, and with the URDF rules only (no mesh
+files read: --ignore SB4,SB301), which is closer to what check_urdf looks at. Last, a single
+UR5 check from a cold process. Medians of REPEATS runs; a ratio is a command's time over
+servicebot's (above 1: servicebot is faster).
+
+    python bench/check.py [REPEATS]
+"""
+
+from __future__ import annotations
+
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from servicebot_cli.output.table import table  # noqa: E402
+from tests.check.corpus import (  # noqa: E402
+    check_urdf_commands,
+    erd_root,
+    erd_urdfs,
+    pybullet_urdfs,
+)
+
+SERVICEBOT = [sys.executable, "-m", "servicebot_cli", "check", "urdf", "--isolated",
+              "--format", "json", "--package", f"example-robot-data={erd_root()}"]
+
+
+def _timed(commands: list[list[str]], env: dict[str, str] | None = None) -> float:
+    start = time.perf_counter()
+    for command in commands:
+        subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env,
+                       timeout=600)
+    return time.perf_counter() - start
+
+
+def _median(repeats: int, commands: list[list[str]], env: dict[str, str] | None = None) -> float:
+    return statistics.median(_timed(commands, env) for _ in range(repeats))
+
+
+def main(repeats: int = 3) -> None:
+    files = [str(p) for p in erd_urdfs() + pybullet_urdfs()]
+    ur5 = str(next(p for p in erd_urdfs() if p.name == "ur5_robot.urdf"))
+    wrapper, native, env = check_urdf_commands()
+    print(f"corpus: {len(files)} URDF files (example-robot-data + pybullet_data); "
+          f"median of {repeats} runs", file=sys.stderr)
+    corpus = {
+        "servicebot check urdf, every rule, one call": _median(repeats, [SERVICEBOT + files]),
+        "servicebot check urdf, URDF rules only, one call":
+            _median(repeats, [SERVICEBOT + ["--ignore", "SB4,SB301"] + files]),
+        "check_urdf (pip-installed wrapper), once per file":
+            _median(repeats, [wrapper + [f] for f in files]),
+        "check_urdf (native binary), once per file":
+            _median(repeats, [native + [f] for f in files], env),
+    }
+    single = {
+        "servicebot check urdf ur5_robot.urdf (cold process)":
+            _median(max(repeats, 5), [SERVICEBOT + [ur5]]),
+        "servicebot check urdf ur5_robot.urdf, URDF rules only":
+            _median(max(repeats, 5), [SERVICEBOT + ["--ignore", "SB4,SB301", ur5]]),
+        "check_urdf ur5_robot.urdf (pip-installed wrapper)": _median(max(repeats, 5),
+                                                                      [wrapper + [ur5]]),
+        "check_urdf ur5_robot.urdf (native binary)": _median(max(repeats, 5), [native + [ur5]],
+                                                              env),
+    }
+    for title, times in (("whole corpus", corpus), ("one UR5", single)):
+        print(f"\n{title}")
+        base = list(times.values())
+        rows = [(name, f"{seconds:.3f}", f"{seconds / base[0]:.2f}", f"{seconds / base[1]:.2f}")
+                for name, seconds in times.items()]
+        headers = ["command", "median [s]", "/ servicebot all rules", "/ URDF rules only"]
+        for line in table(headers, rows, max_width=140):
+            print(line)
+
+
+if __name__ == "__main__":
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 3)

@@ -1,0 +1,79 @@
+"""What a rule reports: a Finding with a code, a severity and where it is."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+
+
+class Severity(str, Enum):
+    """How much a finding matters; ``error`` fails a run, ``warning`` fails it with --strict."""
+
+    ERROR = "error"
+    WARNING = "warning"
+    INFO = "info"
+
+    @property
+    def rank(self) -> int:
+        """0 for errors, 1 for warnings, 2 for info: the order findings are listed in."""
+        return ("error", "warning", "info").index(self.value)
+
+
+@dataclass(frozen=True)
+class Finding:
+    """One problem, at one place.
+
+    Attributes:
+        code: The rule's stable code, ``SB301``.
+        severity: As configured for this run (the rule's default unless overridden).
+        message: What is wrong, naming the element and the values.
+        file: The file to edit (the xacro source for xacro input).
+        line: 1-based line, 0 when the problem is the whole file.
+        column: 1-based column, 0 when unknown.
+        fix: What to do instead, with the values to use where there are some.
+        via: ``file:line:column`` of the xacro macro call that produced the element.
+    """
+
+    code: str
+    severity: Severity
+    message: str
+    file: str
+    line: int = 0
+    column: int = 0
+    fix: str | None = None
+    via: str | None = None
+
+    def location(self) -> str:
+        """``file:line:column`` (shorter when line or column is unknown)."""
+        if not self.line:
+            return self.file
+        if self.column:
+            return f"{self.file}:{self.line}:{self.column}"
+        return f"{self.file}:{self.line}"
+
+    def sort_key(self) -> tuple[str, int, int, str]:
+        """Order within a file: by position, then code."""
+        return (self.file, self.line, self.column, self.code)
+
+
+@dataclass(frozen=True)
+class Issue:
+    """What a rule function yields: a finding before it is placed and configured.
+
+    The runner turns it into a :class:`Finding`: the position comes from ``element``
+    (the xacro source line for xacro input) or from ``where``, the severity from the
+    catalogue and the settings.
+
+    Attributes:
+        code: The rule's code.
+        message: What is wrong.
+        element: The XML element it is about, when there is one.
+        fix: What to do instead.
+        where: An explicit ``(file, line, column)``, for problems found before parsing.
+    """
+
+    code: str
+    message: str
+    element: object | None = None
+    fix: str | None = None
+    where: tuple[str, int, int] | None = None

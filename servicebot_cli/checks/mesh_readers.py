@@ -1,0 +1,250 @@
+"""Fast readers for the common mesh formats: STL (binary and ASCII), OBJ and COLLADA.
+
+Each returns the triangles as an ``(n, 3, 3)`` float array in the file's own length unit
+times COLLADA's ``<unit meter>``. Loading trimesh costs most of a second, so these cover
+the formats robot descriptions use; anything else goes through trimesh (see :mod:`meshes`).
+A test compares them with trimesh on every mesh of the example-robot-data corpus.
+"""
+
+from __future__ import annotations
+
+import re
+import warnings
+import xml.etree.ElementTree as ET
+
+import numpy as np
+
+FloatArray = np.ndarray
+
+
+class MeshFormatError(ValueError):
+    """The file is not a readable mesh of its format."""
+
+
+def read_stl(data: bytes) -> FloatArray:
+    """Triangles of a binary or ASCII STL."""
+    if len(data) >= 84:
+        count = int.from_bytes(data[80:84], "little")
+        if 84 + 50 * count == len(data):
+            record = np.dtype([("normal", "<f4", 3), ("v", "<f4", (3, 3)), ("attr", "<u2")])
+            return np.frombuffer(data, record, count, 84)["v"].astype(np.float64)
+    head = data[:512].lstrip().lower()
+    if not head.startswith(b"solid"):
+        raise MeshFormatError("not an STL file (neither binary nor ASCII)")
+    numbers = re.findall(rb"vertex\s+(\S+)\s+(\S+)\s+(\S+)", data)
+    try:
+        vertices = np.array(numbers, dtype=np.float64)
+    except ValueError:
+        raise MeshFormatError("ASCII STL with a vertex that is not three numbers") from None
+    if len(vertices) % 3:
+        raise MeshFormatError("ASCII STL whose vertex count is not a multiple of 3")
+    return vertices.reshape(-1, 3, 3)
+
+
+def read_obj(data: bytes) -> FloatArray:
+    """Triangles of a Wavefront OBJ (polygons fan-triangulated; negative indices allowed)."""
+    vertices: list[list[float]] = []
+    faces: list[list[int]] = []
+    for raw in data.splitlines():
+        parts = raw.split()
+        if not parts:
+            continue
+        if parts[0] == b"v" and len(parts) >= 4:
+            vertices.append([float(p) for p in parts[1:4]])
+        elif parts[0] == b"f" and len(parts) >= 4:
+            indices = [int(p.split(b"/")[0]) for p in parts[1:]]
+            faces.append([i - 1 if i > 0 else len(vertices) + i for i in indices])
+    table = np.array(vertices, dtype=np.float64).reshape(-1, 3)
+    return _fan(table, faces)
+
+
+def _fan(vertices: FloatArray, polygons: list[list[int]]) -> FloatArray:
+    tris = [(p[0], p[i], p[i + 1]) for p in polygons for i in range(1, len(p) - 1)]
+    return _take(vertices, np.array(tris, dtype=np.int64).reshape(-1, 3))
+
+
+def _take(vertices: FloatArray, index: np.ndarray) -> FloatArray:
+    if not len(index):
+        return np.zeros((0, 3, 3))
+    if index.min() < 0 or index.max() >= len(vertices):
+        raise MeshFormatError("a face refers to a vertex that does not exist")
+    return vertices[index]
+
+
+def _fan_counts(vertices: FloatArray, indices: np.ndarray, counts: np.ndarray) -> FloatArray:
+    """Fan-triangulate polygons given as flat ``indices`` with ``counts`` corners each."""
+    counts = counts[counts >= 3]
+    if not len(counts):
+        return np.zeros((0, 3, 3))
+    starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
+    per = counts - 2
+    first = np.repeat(starts, per)
+    step = np.arange(per.sum()) - np.repeat(np.cumsum(per) - per, per) + 1
+    corners = np.stack([first, first + step, first + step + 1], axis=1)
+    if corners.max() >= len(indices):
+        raise MeshFormatError("a polygon list shorter than its vertex counts")
+    return _take(vertices, indices[corners])
+
+
+def _numbers(text: str | None, dtype: type = np.float64) -> np.ndarray:
+    """Whitespace-separated numbers, parsed in C (``str.split`` is ten times slower)."""
+    if not text or not text.strip():
+        return np.zeros(0, dtype=dtype)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # numpy warns, then stops, at the first non-number
+        try:
+            return np.fromstring(text, dtype=dtype, sep=" ")
+        except (ValueError, DeprecationWarning):
+            raise MeshFormatError("a number list holding something that is not a number") from None
+
+
+def _collada(data: bytes) -> tuple[list[tuple[ET.Element, FloatArray]], str, float]:
+    """Each geometry instance of the scene with its transform, the namespace, and the unit."""
+    try:
+        root = ET.fromstring(data)
+    except ET.ParseError as exc:
+        raise MeshFormatError(f"COLLADA file is not well-formed XML: {exc}") from None
+    ns = root.tag[: root.tag.index("}") + 1] if root.tag.startswith("{") else ""
+    unit = root.find(f"{ns}asset/{ns}unit")
+    meter = float(unit.get("meter", "1")) if unit is not None else 1.0
+    geometries = {g.get("id"): g for g in root.iter(f"{ns}geometry")}
+    scene = root.find(f"{ns}library_visual_scenes/{ns}visual_scene")
+    if scene is None:
+        return [(g, np.eye(4)) for g in geometries.values()], ns, meter
+    return _instances(scene, ns, geometries), ns, meter
+
+
+def read_dae(data: bytes) -> FloatArray:
+    """Triangles of a COLLADA file: scene nodes' transforms and ``<unit meter>`` applied."""
+    instances, ns, meter = _collada(data)
+    parts = []
+    for geometry, transform in instances:
+        tris = _geometry_triangles(geometry, ns)
+        if len(tris):
+            flat = tris.reshape(-1, 3) @ transform[:3, :3].T + transform[:3, 3]
+            parts.append(flat.reshape(-1, 3, 3))
+    if not parts:
+        return np.zeros((0, 3, 3))
+    return np.concatenate(parts) * meter
+
+
+def read_dae_bounds(data: bytes) -> tuple[int, FloatArray, FloatArray]:
+    """Triangle count and bounding box of a COLLADA file, without building the triangles.
+
+    Reads the vertex positions and the primitives' counts only (the index lists are most of
+    a COLLADA file), for the checks that need no more than the size.
+    """
+    instances, ns, meter = _collada(data)
+    count, points = 0, []
+    for geometry, transform in instances:
+        mesh = geometry.find(f"{ns}mesh")
+        if mesh is None:
+            continue
+        n = sum(_primitive_triangles(prim, ns) for prim in mesh)
+        if n:
+            count += n
+            positions = _positions(mesh, ns)
+            points.append(positions @ transform[:3, :3].T + transform[:3, 3])
+    if not count:
+        return 0, np.zeros(3), np.zeros(3)
+    every = np.concatenate(points) * meter
+    return count, every.min(axis=0), every.max(axis=0)
+
+
+def _primitive_triangles(prim: ET.Element, ns: str) -> int:
+    kind = prim.tag[len(ns):]
+    if kind == "triangles":
+        return int(prim.get("count", "0"))
+    if kind == "polylist":
+        counts = _numbers(prim.findtext(f"{ns}vcount"), np.int64)
+        return int(np.maximum(counts - 2, 0).sum())
+    if kind == "polygons":
+        return int(prim.get("count", "0"))
+    return 0
+
+
+def _instances(scene: ET.Element, ns: str, geometries: dict) -> list:
+    found = []
+    stack = [(node, np.eye(4)) for node in scene.findall(f"{ns}node")]
+    while stack:
+        node, parent = stack.pop()
+        transform = parent @ _node_transform(node, ns)
+        for inst in node.findall(f"{ns}instance_geometry"):
+            geometry = geometries.get((inst.get("url") or "").lstrip("#"))
+            if geometry is not None:
+                found.append((geometry, transform))
+        stack.extend((child, transform) for child in node.findall(f"{ns}node"))
+    return found
+
+
+def _node_transform(node: ET.Element, ns: str) -> FloatArray:
+    transform = np.eye(4)
+    for step in node:
+        tag = step.tag[len(ns):]
+        values = [float(v) for v in (step.text or "").split()]
+        local = np.eye(4)
+        if tag == "matrix" and len(values) == 16:
+            local = np.array(values).reshape(4, 4)
+        elif tag == "translate" and len(values) == 3:
+            local[:3, 3] = values
+        elif tag == "scale" and len(values) == 3:
+            local[:3, :3] = np.diag(values)
+        elif tag == "rotate" and len(values) == 4:
+            local[:3, :3] = _axis_angle(np.array(values[:3]), np.radians(values[3]))
+        else:
+            continue
+        transform = transform @ local
+    return transform
+
+
+def _axis_angle(axis: FloatArray, angle: float) -> FloatArray:
+    norm = np.linalg.norm(axis)
+    if norm == 0:
+        return np.eye(3)
+    x, y, z = axis / norm
+    k = np.array([[0, -z, y], [z, 0, -x], [-y, x, 0]])
+    return np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * (k @ k)
+
+
+def _positions(mesh: ET.Element, ns: str) -> FloatArray:
+    sources = {src.get("id"): src for src in mesh.findall(f"{ns}source")}
+    vertices = mesh.find(f"{ns}vertices")
+    inputs = vertices.findall(f"{ns}input") if vertices is not None else []
+    position = next((i for i in inputs if i.get("semantic") == "POSITION"), None)
+    source_id = (position.get("source") or "").lstrip("#") if position is not None else ""
+    source = sources.get(source_id)
+    array = source.find(f"{ns}float_array") if source is not None else None
+    if array is None:
+        raise MeshFormatError("COLLADA mesh without vertex positions")
+    points = _numbers(array.text)
+    return points[: len(points) - len(points) % 3].reshape(-1, 3)
+
+
+def _geometry_triangles(geometry: ET.Element, ns: str) -> FloatArray:
+    mesh = geometry.find(f"{ns}mesh")
+    if mesh is None or mesh.find(f"{ns}vertices") is None:
+        return np.zeros((0, 3, 3))
+    points = _positions(mesh, ns)
+    tris = []
+    for prim in mesh:
+        kind = prim.tag[len(ns):]
+        if kind in ("triangles", "polylist", "polygons"):
+            tris.append(_primitive(prim, ns, kind, points))
+    return np.concatenate(tris) if tris else np.zeros((0, 3, 3))
+
+
+def _primitive(prim: ET.Element, ns: str, kind: str, points: FloatArray) -> FloatArray:
+    inputs = prim.findall(f"{ns}input")
+    stride = max((int(i.get("offset", "0")) for i in inputs), default=0) + 1
+    offset = next((int(i.get("offset", "0")) for i in inputs if i.get("semantic") == "VERTEX"), 0)
+    if kind == "polygons":
+        parts = [_numbers(p.text, np.int64)[offset::stride] for p in prim.findall(f"{ns}p")]
+        counts = np.array([len(p) for p in parts], dtype=np.int64)
+        flat = np.concatenate(parts) if parts else np.zeros(0, dtype=np.int64)
+        return _fan_counts(points, flat, counts)
+    indices = _numbers(" ".join(p.text or "" for p in prim.findall(f"{ns}p")), np.int64)
+    indices = indices[offset::stride]
+    if kind == "triangles":
+        return _take(points, indices[: len(indices) - len(indices) % 3].reshape(-1, 3))
+    counts = _numbers(prim.findtext(f"{ns}vcount"), np.int64)
+    return _fan_counts(points, indices, counts)

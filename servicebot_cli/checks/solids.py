@@ -1,0 +1,91 @@
+"""Mass properties of collision geometry, as a uniform solid: what a link's inertia should be.
+
+Pure numpy. Works with second moments ``C = integral of x x^T dV`` (unit density), which add
+up across shapes and transform simply; the inertia tensor is ``I = tr(C) E - C``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from servicebot_cli.description.elements import Geometry, Pose
+from servicebot_cli.kinematics.transforms import rpy_matrix
+
+
+@dataclass(frozen=True)
+class Solid:
+    """A uniform solid of unit density.
+
+    Attributes:
+        volume_m3: Volume [m^3].
+        centroid_m: Centre of volume in the link frame [m], shape (3,).
+        second_moment: ``integral of (x - c)(x - c)^T dV`` about the centroid, link axes (3x3).
+        label: How messages describe it (``solid cylinder r=0.07 m, length 0.04 m``).
+    """
+
+    volume_m3: float
+    centroid_m: np.ndarray
+    second_moment: np.ndarray
+    label: str
+
+
+def primitive(geometry: Geometry) -> tuple[float, np.ndarray, str] | None:
+    """Volume, second moment about the centre (own axes) and label of a positive primitive."""
+    if geometry.kind == "box" and geometry.size and min(geometry.size) > 0:
+        x, y, z = geometry.size
+        volume = x * y * z
+        return volume, volume / 12.0 * np.diag([x * x, y * y, z * z]), \
+            f"solid box {x:g} x {y:g} x {z:g} m"
+    r = geometry.radius or 0.0
+    if geometry.kind == "cylinder" and r > 0 and (geometry.length or 0.0) > 0:
+        length = geometry.length or 0.0
+        volume = math.pi * r * r * length
+        return volume, volume * np.diag([r * r / 4, r * r / 4, length * length / 12]), \
+            f"solid cylinder r={r:g} m, length {length:g} m"
+    if geometry.kind == "sphere" and r > 0:
+        volume = 4.0 / 3.0 * math.pi * r**3
+        return volume, volume * r * r / 5.0 * np.eye(3), f"solid sphere r={r:g} m"
+    return None
+
+
+def placed(volume: float, centroid: np.ndarray, moment: np.ndarray, scale: tuple[float, ...],
+           origin: Pose, label: str) -> Solid:
+    """A solid given in its own frame, scaled per axis and placed at ``origin`` in the link."""
+    s = np.diag(scale)
+    det = abs(float(np.prod(scale)))
+    rotation = rpy_matrix(*origin.rpy)
+    return Solid(
+        volume_m3=volume * det,
+        centroid_m=rotation @ (s @ centroid) + np.array(origin.xyz),
+        second_moment=rotation @ (det * s @ moment @ s) @ rotation.T,
+        label=label,
+    )
+
+
+def combined(solids: list[Solid]) -> Solid:
+    """The solids as one body of uniform density (parallel-axis theorem)."""
+    volume = sum(s.volume_m3 for s in solids)
+    centroid = sum(s.volume_m3 * s.centroid_m for s in solids) / volume
+    moment = np.zeros((3, 3))
+    for s in solids:
+        d = s.centroid_m - centroid
+        moment += s.second_moment + s.volume_m3 * np.outer(d, d)
+    label = solids[0].label
+    if len(solids) > 1:
+        label = f"its {len(solids)} collision shapes as one solid"
+    return Solid(volume, centroid, moment, label)
+
+
+def inertia_of(solid: Solid, mass_kg: float) -> np.ndarray:
+    """Inertia tensor [kg m^2] about the centroid, link axes, for ``mass_kg`` spread uniformly."""
+    moment = solid.second_moment * (mass_kg / solid.volume_m3)
+    return np.trace(moment) * np.eye(3) - moment
+
+
+def tensor(values: tuple[float, float, float, float, float, float]) -> np.ndarray:
+    """The 3x3 inertia matrix of URDF's ``(ixx, ixy, ixz, iyy, iyz, izz)``."""
+    ixx, ixy, ixz, iyy, iyz, izz = values
+    return np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]], dtype=float)

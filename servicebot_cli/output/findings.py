@@ -1,0 +1,101 @@
+"""``check`` findings for people (text), scripts (JSON) and GitHub workflow annotations.
+
+Renderers only render: a CheckResult in, text out. SARIF and JUnit live beside this module.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import click
+
+from servicebot_cli import __version__
+from servicebot_cli.checks.catalogue import RULES
+from servicebot_cli.checks.findings import Finding, Severity
+from servicebot_cli.checks.result import CheckResult
+from servicebot_cli.output.jsonable import dumps
+
+JSON_FORMAT_VERSION = 1
+"""Bumped when a key of ``check --format json`` changes meaning or goes away."""
+_COLOURS = {Severity.ERROR: "red", Severity.WARNING: "yellow", Severity.INFO: "blue"}
+
+
+def text_lines(result: CheckResult, colour: bool = False) -> Iterator[str]:
+    """Compiler-style lines, ``file:line:col: severity CODE message``, then a summary."""
+    for finding in result.findings:
+        level = finding.severity.value
+        code = f"{finding.code} [{RULES[finding.code].name}]"
+        if colour:
+            level = click.style(level, fg=_COLOURS[finding.severity], bold=True)
+            code = click.style(code, bold=True)
+        yield f"{finding.location()}: {level} {code} {finding.message}"
+        if finding.via:
+            yield f"    from the macro call at {finding.via}"
+        if finding.fix:
+            yield f"    fix: {finding.fix}"
+    summary = result.summary()
+    if colour:
+        summary = click.style(summary, fg="red" if result.failed else "green", bold=True)
+    yield summary
+
+
+def finding_record(finding: Finding, result: CheckResult) -> dict[str, object]:
+    """One finding as a JSON object (documented in README.md)."""
+    return {
+        "code": finding.code,
+        "name": RULES[finding.code].name,
+        "severity": finding.severity.value,
+        "fails": result.fails(finding),
+        "message": finding.message,
+        "file": finding.file,
+        "line": finding.line,
+        "column": finding.column,
+        "via": finding.via,
+        "fix": finding.fix,
+    }
+
+
+def json_text(result: CheckResult) -> str:
+    """The versioned JSON document of a run."""
+    return dumps({
+        "format_version": JSON_FORMAT_VERSION,
+        "tool": {"name": "servicebot check", "version": __version__},
+        "files": [
+            {"file": report.file,
+             "findings": [finding_record(f, result) for f in report.findings]}
+            for report in result.reports
+        ],
+        "summary": {
+            "files": len(result.reports),
+            "errors": result.count(Severity.ERROR),
+            "warnings": result.count(Severity.WARNING),
+            "info": result.count(Severity.INFO),
+            "strict": result.strict,
+            "failed": result.failed,
+        },
+    })
+
+
+def _escape_data(text: str) -> str:
+    return text.replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
+
+
+def _escape_property(text: str) -> str:
+    return _escape_data(text).replace(":", "%3A").replace(",", "%2C")
+
+
+def github_lines(result: CheckResult) -> Iterator[str]:
+    """GitHub Actions workflow commands: ``::error file=F,line=L,col=C,title=T::message``."""
+    levels = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
+    for finding in result.findings:
+        level = "error" if result.fails(finding) else levels[finding.severity]
+        properties = [f"file={_escape_property(finding.file)}"]
+        if finding.line:
+            properties.append(f"line={finding.line}")
+            if finding.column:
+                properties.append(f"col={finding.column}")
+        title = f"{finding.code} {RULES[finding.code].name}"
+        properties.append(f"title={_escape_property(title)}")
+        message = finding.message + (f" (fix: {finding.fix})" if finding.fix else "")
+        yield f"::{level} {','.join(properties)}::{_escape_data(message)}"
+    yield result.summary()

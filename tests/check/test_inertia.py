@@ -1,0 +1,79 @@
+"""Inertia against geometry: frame-invariant, several shapes, meshes; the fix is usable."""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+from servicebot_cli.kinematics.transforms import rpy_matrix
+from tests.check.helpers import FIXTURES, findings
+
+WHEEL = np.diag([0.00135833333, 0.00245, 0.00135833333])  # 1 kg, r 0.07, l 0.04, axle along y
+
+
+def _robot(tmp_path, inertial_rpy, tensor, collisions, mass=1.0):
+    ixx, ixy, ixz, iyy, iyz, izz = (float(tensor[i, j]) for i, j in
+                                    ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)))
+    path = tmp_path / "wheel.urdf"
+    path.write_text(f"""<robot name="r">
+  <link name="base"/>
+  <link name="wheel">
+    <inertial>
+      <origin xyz="0 0 0" rpy="{' '.join(repr(float(a)) for a in inertial_rpy)}"/>
+      <mass value="{mass}"/>
+      <inertia ixx="{ixx!r}" ixy="{ixy!r}" ixz="{ixz!r}" iyy="{iyy!r}" iyz="{iyz!r}" izz="{izz!r}"/>
+    </inertial>
+    {collisions}
+  </link>
+  <joint name="axle" type="continuous"><parent link="base"/><child link="wheel"/>
+    <axis xyz="0 1 0"/></joint>
+</robot>""")
+    return path
+
+
+CYLINDER_ALONG_Y = """<collision><origin rpy="1.5707963267948966 0 0"/>
+      <geometry><cylinder radius="0.07" length="0.04"/></geometry></collision>"""
+
+
+@pytest.mark.parametrize("rpy", [(0.0, 0.0, 0.0), (0.3, -1.1, 2.0), (np.pi / 2, 0.0, 0.0)])
+def test_a_correct_inertia_passes_in_any_inertial_frame(run, tmp_path, rpy):
+    rotation = rpy_matrix(*rpy)
+    tensor = rotation.T @ WHEEL @ rotation  # the same body, written in rotated axes
+    path = _robot(tmp_path, rpy, tensor, CYLINDER_ALONG_Y)
+    result = run("check", path, "--format", "json", "--strict")
+    assert result.exit_code == 0, result.stdout
+
+
+def test_the_fix_is_written_in_the_inertial_frame_and_then_passes(run, tmp_path):
+    rpy = (0.3, -1.1, 2.0)
+    path = _robot(tmp_path, rpy, np.eye(3) * 0.2, CYLINDER_ALONG_Y)
+    (finding,) = [f for f in findings(run("check", path, "--format", "json").stdout)
+                  if f["code"] == "SB301"]
+    values = dict(re.findall(r"(i[xyz]{2})=(\S+)", finding["fix"]))
+    fixed = np.array([[values["ixx"], values.get("ixy", 0), values.get("ixz", 0)],
+                      [values.get("ixy", 0), values["iyy"], values.get("iyz", 0)],
+                      [values.get("ixz", 0), values.get("iyz", 0), values["izz"]]], dtype=float)
+    rotation = rpy_matrix(*rpy)
+    assert np.allclose(rotation @ fixed @ rotation.T, WHEEL, atol=1e-6)
+
+
+def test_several_shapes_are_one_solid(run, tmp_path):
+    two_boxes = """<collision><origin xyz="0 0 0.05"/><geometry><box size="0.1 0.1 0.1"/></geometry>
+    </collision><collision><origin xyz="0 0 -0.05"/><geometry><box size="0.1 0.1 0.1"/>
+    </geometry></collision>"""
+    tall = np.diag([2 / 12 * 0.05, 2 / 12 * 0.05, 2 / 12 * 0.02])  # 2 kg, 0.1 x 0.1 x 0.2
+    path = _robot(tmp_path, (0, 0, 0), tall, two_boxes, mass=2.0)
+    assert run("check", path, "--strict").exit_code == 0
+
+
+def test_a_closed_mesh_is_a_solid_too(run, tmp_path):
+    mesh = f'<collision><geometry><mesh filename="{FIXTURES / "meshes" / "cube.stl"}"/>' \
+           "</geometry></collision>"
+    right = np.eye(3) * (1.0 * 0.02 / 12)  # 1 kg cube, 0.1 m
+    assert run("check", _robot(tmp_path, (0, 0, 0), right, mesh), "--strict").exit_code == 0
+    wrong = _robot(tmp_path, (0, 0, 0), np.eye(3), mesh)
+    (finding,) = [f for f in findings(run("check", wrong, "--format", "json").stdout)
+                  if f["code"] == "SB301"]
+    assert "closed mesh" in finding["message"] and "ixx=0.00166667" in finding["fix"]

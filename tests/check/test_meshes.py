@@ -1,0 +1,84 @@
+"""The fast mesh readers agree with trimesh, and mass properties are exact on solids."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import trimesh
+
+from servicebot_cli.checks.meshes import MeshError, load_mesh
+from tests.check.corpus import erd_root
+from tests.check.helpers import FIXTURES
+
+
+def _sample() -> list:
+    """Every 8th mesh of example-robot-data, in each of the formats the fast path reads."""
+    meshes = sorted(p for p in (erd_root() / "robots").rglob("*")
+                    if p.suffix.lower() in (".stl", ".obj", ".dae"))
+    return meshes[::8]
+
+
+@pytest.mark.parametrize("path", _sample(), ids=lambda p: p.name)
+def test_fast_readers_agree_with_trimesh(path):
+    info = load_mesh(path, with_mass=True)
+    reference = trimesh.load(path, force="mesh")
+    if reference.is_empty:  # anymal_foot.dae: pycollada refuses a missing texture, trimesh
+        assert path.suffix.lower() == ".dae" and info.triangles > 0  # then sees no geometry
+        return
+    size = float(np.abs(reference.bounds[1] - reference.bounds[0]).max())
+    assert np.allclose(info.lower, reference.bounds[0], atol=1e-6 * size)
+    assert np.allclose(info.upper, reference.bounds[1], atol=1e-6 * size)
+    if info.mass is not None and reference.is_watertight:
+        assert info.mass.volume == pytest.approx(abs(reference.volume), rel=1e-6)
+
+
+@pytest.mark.parametrize("suffix", [".stl", ".obj", ".dae", ".ply"])
+def test_box_mass_properties_in_every_format(tmp_path, suffix):
+    box = trimesh.creation.box(extents=(0.3, 0.2, 0.1))
+    box.apply_translation((1.0, 2.0, 3.0))
+    path = tmp_path / f"box{suffix}"
+    box.export(path)
+    info = load_mesh(path, with_mass=True)  # .ply goes through trimesh itself
+    assert info.triangles == 12 and info.closed
+    assert info.mass.volume == pytest.approx(0.006, rel=1e-5)  # STL and PLY store float32
+    assert info.mass.centroid == pytest.approx((1.0, 2.0, 3.0), rel=1e-6)
+    expected = 0.006 / 12 * np.diag([0.09, 0.04, 0.01])  # integral of x x^T dV
+    assert np.allclose(info.mass.second_moment, expected, rtol=1e-4, atol=1e-10)
+
+
+def test_open_mesh_has_no_mass_properties(tmp_path):
+    box = trimesh.creation.box()
+    box.update_faces(np.arange(len(box.faces)) != 0)
+    path = tmp_path / "open.stl"
+    box.export(path)
+    info = load_mesh(path, with_mass=True)
+    assert info.closed is False and info.mass is None
+
+
+@pytest.mark.parametrize(("name", "needle"), [("garbage.stl", "not an STL"),
+                                              ("missing.stl", "cannot read")])
+def test_bad_meshes_raise_mesh_error(name, needle):
+    with pytest.raises(MeshError, match=needle):
+        load_mesh(FIXTURES / "meshes" / name)
+
+
+def test_ascii_stl_and_binary_stl_agree(tmp_path):
+    binary = load_mesh(FIXTURES / "meshes" / "cube.stl", with_mass=True)
+    ascii_path = tmp_path / "cube_ascii.stl"
+    trimesh.load(FIXTURES / "meshes" / "cube.stl").export(ascii_path, file_type="stl_ascii")
+    text = load_mesh(ascii_path, with_mass=True)
+    assert text.mass.volume == pytest.approx(binary.mass.volume) == pytest.approx(0.001)
+
+
+@pytest.mark.parametrize("path", [p for p in _sample() if p.suffix.lower() == ".dae"],
+                         ids=lambda p: p.name)
+def test_collada_bounds_only_path_agrees_with_the_full_read(path):
+    """Same count; the box of every position holds the triangles' box (a file may carry
+    vertices no triangle uses) and has the same size to well within SB404's factor 1000."""
+    fast = load_mesh(path)
+    full = load_mesh(path, with_mass=True)
+    assert fast.triangles == full.triangles
+    assert np.all(np.array(fast.lower) <= np.array(full.lower) + 1e-9)
+    assert np.all(np.array(fast.upper) >= np.array(full.upper) - 1e-9)
+    extent = max(np.subtract(fast.upper, fast.lower)) / max(np.subtract(full.upper, full.lower))
+    assert extent < 3

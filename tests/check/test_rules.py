@@ -1,0 +1,52 @@
+"""Every rule of the catalogue fires on its own fixture, at a source position."""
+
+from __future__ import annotations
+
+import pytest
+
+from servicebot_cli.checks.catalogue import RULES
+from servicebot_cli.checks.findings import Severity
+from tests.check.helpers import FIXTURES, findings, fixture
+
+FILE_LEVEL = {"SB002", "SB017", "SB702"}  # about the whole file: no line to point at
+# Defects that imply another: a loop gives a link two parents, a negative mass leaves the
+# moving link massless, a mesh in millimetres has an inertia 10^6 too small for its size.
+COMPANIONS = {"SB104": {"SB107"}, "SB107": {"SB106"}, "SB302": {"SB303"}, "SB404": {"SB301"},
+              "SB702": {"SB108"}}
+
+
+def test_every_rule_has_one_fixture_and_every_fixture_a_rule():
+    fixtures = {p.name[:5] for p in FIXTURES.iterdir() if p.is_file()}
+    assert fixtures == set(RULES)
+    for code in RULES:
+        fixture(code)  # exactly one
+
+
+@pytest.mark.parametrize("code", list(RULES))
+def test_rule_fires_on_its_fixture(run, code):
+    path = fixture(code)
+    if code.startswith("SB6"):
+        result = run("check", "controllers", path, "--robot", "sim", "--format", "json",
+                     "--isolated")
+    else:
+        result = run("check", "urdf", path, "--format", "json", "--isolated")
+    found = [f for f in findings(result.stdout) if f["code"] == code]
+    assert found, result.stdout
+    rule = RULES[code]
+    assert all(f["severity"] == rule.severity.value for f in found)
+    assert all(f["name"] == rule.name and f["message"] for f in found)
+    failing = rule.severity is Severity.ERROR or code == "SB702"  # SB702 follows an error
+    assert result.exit_code == (1 if failing else 0), result.stdout
+    for finding in found:
+        assert finding["file"].endswith(path.name) or finding["file"].endswith(".xacro")
+        if code not in FILE_LEVEL:
+            assert finding["line"] > 0 and finding["column"] > 0, finding
+
+
+@pytest.mark.parametrize("code", [c for c in RULES if not c.startswith("SB6")])
+def test_fixture_has_no_other_defect(run, code):
+    """Fixtures show one defect each (the root link's inertia note aside)."""
+    result = run("check", "urdf", fixture(code), "--format", "json", "--isolated")
+    others = {f["code"] for f in findings(result.stdout)} - {code, "SB309", "SB702"}
+    others -= COMPANIONS.get(code, set())
+    assert not others, others
