@@ -40,7 +40,7 @@ class RobotSource:
     def bundled(cls, name: str = resources.DEFAULT_ROBOT) -> RobotSource:
         """The bundled robot called ``name``."""
         path = resources.bundled_robot(name)
-        return cls(path=path, display=f"{path.name} (bundled '{name}')")
+        return cls(path=path, display=_display_path(path))
 
     @classmethod
     def of(cls, path: str | os.PathLike[str], **kwargs: object) -> RobotSource:
@@ -50,6 +50,17 @@ class RobotSource:
     def resolver(self) -> PackageResolver:
         """Package search for this source: ``--package`` first, then the environment."""
         return PackageResolver.from_environment({k: Path(v) for k, v in self.packages})
+
+
+def _display_path(path: Path) -> str:
+    """``path`` relative to the working directory when inside it, else absolute.
+
+    A real path, so editors and CI annotations can open what a message points at.
+    """
+    try:
+        return str(path.resolve().relative_to(Path.cwd()))
+    except ValueError:
+        return str(path.resolve())
 
 
 def read_bytes(path: Path, display: str, max_bytes: int = MAX_BYTES) -> bytes:

@@ -84,7 +84,7 @@ def _via(via: str) -> dict[str, object]:
 
 
 def _uri(file: str) -> str:
-    path = Path(file.split(" (bundled")[0])
+    path = Path(file)
     if not path.is_absolute():
         return path.as_posix()
     try:

@@ -134,3 +134,11 @@ def test_read_description_tolerates_what_load_refuses(tmp_path):
     odd.write_text('<robot><link name="a"/><joint name="j" type="ball"/></robot>')
     robot = read_description(RobotSource.of(odd))
     assert robot.name == "" and robot.joints[0].type == "ball" and robot.joints[0].parent is None
+
+
+def test_bundled_robot_is_named_by_a_real_path(monkeypatch, tmp_path):
+    source = RobotSource.bundled("sim")
+    assert source.display == "robots/service_robot.urdf.xml"  # tests run from the repository
+    monkeypatch.chdir(tmp_path)
+    outside = RobotSource.bundled("real")
+    assert outside.display == str(SIM_URDF.parent.resolve() / "service_robot_real.urdf.xml")

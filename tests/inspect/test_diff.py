@@ -59,9 +59,10 @@ def test_one_xacro_with_two_argument_sets(run):
 
 def test_bundled_shortcuts(run):
     code, document = _diff_json(run, "--diff", "--robot", "real")
-    assert code == 1 and "bundled 'sim'" in document["a"] and "bundled 'real'" in document["b"]
+    assert code == 1 and document["a"].endswith("robots/service_robot.urdf.xml")
+    assert document["b"].endswith("robots/service_robot_real.urdf.xml")
     code, document = _diff_json(run, "--diff", REAL_URDF)
-    assert code == 1 and "bundled 'sim'" in document["a"]
+    assert code == 1 and document["a"].endswith("robots/service_robot.urdf.xml")
 
 
 def test_equal_descriptions_exit_0(run):
