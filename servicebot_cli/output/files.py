@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import shutil
 import tempfile
 from collections.abc import Iterator
 from pathlib import Path
@@ -36,17 +37,13 @@ def atomic_output(
         OutputError: The directory is missing or not writable, or writing failed.
     """
     target = Path(path)
-    directory = target.parent if str(target.parent) else Path(".")
     if target.is_dir():
         raise OutputError(f"{target}: is a directory; give a file name to write")
-    if not directory.is_dir():
-        raise OutputError(f"{target}: directory '{directory}' does not exist; create it first")
+    directory = _parent(target)
     try:
         fd, tmp_name = tempfile.mkstemp(dir=directory, prefix=f".{target.name}.", suffix=".tmp")
-    except PermissionError:
-        raise OutputError(f"{target}: permission denied writing in '{directory}'") from None
     except OSError as exc:
-        raise OutputError(f"{target}: cannot write: {exc.strerror or exc}") from None
+        raise _cannot_write(target, directory, exc) from None
     if "b" not in mode:
         open_kwargs.setdefault("encoding", "utf-8")
         open_kwargs.setdefault("newline", "\n")
@@ -60,6 +57,46 @@ def atomic_output(
     finally:
         with contextlib.suppress(FileNotFoundError):
             os.unlink(tmp_name)
+
+
+@contextlib.contextmanager
+def atomic_directory(path: str | os.PathLike[str]) -> Iterator[Path]:
+    """A temporary directory beside ``path``, renamed to ``path`` when the block succeeds.
+
+    For outputs made of several files (a rosbag2 directory): readers never see a partial one.
+
+    Raises:
+        OutputError: ``path`` exists, its parent is missing or not writable, or writing failed.
+    """
+    target = Path(path)
+    if target.exists():
+        raise OutputError(f"{target}: already exists; remove it or give another path")
+    parent = _parent(target)
+    try:
+        temporary = Path(tempfile.mkdtemp(dir=parent, prefix=f".{target.name}.", suffix=".tmp"))
+    except OSError as exc:
+        raise _cannot_write(target, parent, exc) from None
+    try:
+        yield temporary
+        os.chmod(temporary, 0o755 & ~_umask())
+        os.rename(temporary, target)
+    except OSError as exc:
+        raise OutputError(f"{target}: cannot write: {exc.strerror or exc}") from None
+    finally:
+        shutil.rmtree(temporary, ignore_errors=True)
+
+
+def _parent(target: Path) -> Path:
+    directory = target.parent if str(target.parent) else Path(".")
+    if not directory.is_dir():
+        raise OutputError(f"{target}: directory '{directory}' does not exist; create it first")
+    return directory
+
+
+def _cannot_write(target: Path, directory: Path, exc: OSError) -> OutputError:
+    if isinstance(exc, PermissionError):
+        return OutputError(f"{target}: permission denied writing in '{directory}'")
+    return OutputError(f"{target}: cannot write: {exc.strerror or exc}")
 
 
 def write_atomic(path: str | os.PathLike[str], content: str | bytes) -> None:

@@ -8,17 +8,14 @@ name beside ``PATH`` and renamed into place at the end, so an interrupted run le
 
 from __future__ import annotations
 
-import contextlib
 import os
-import shutil
-import tempfile
 from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
 
 from servicebot_cli import __version__
-from servicebot_cli.output.files import OutputError
+from servicebot_cli.output.files import OutputError, atomic_directory
 from servicebot_cli.sim.msgdefs import MESSAGE_DEFINITIONS
 from servicebot_cli.sim.ros_messages import Stream
 
@@ -42,24 +39,10 @@ def write_bag(path: str | os.PathLike[str], streams: Sequence[Stream]) -> None:
     if target.exists():
         raise OutputError(f"{target}: already exists; remove it or give another --bag path "
                           "(ros2 bag record refuses too)")
-    parent = target.parent if str(target.parent) else Path(".")
-    if not parent.is_dir():
-        raise OutputError(f"{target}: directory '{parent}' does not exist; create it first")
-    try:
-        temporary = Path(tempfile.mkdtemp(dir=parent, prefix=f".{target.name}.", suffix=".tmp"))
-    except OSError as exc:
-        raise OutputError(f"{target}: cannot write in '{parent}': {exc.strerror or exc}") from None
-    try:
+    with atomic_directory(target) as temporary:
         file_name = f"{target.name}_0.mcap"
         _write_mcap(temporary / file_name, streams)
         (temporary / "metadata.yaml").write_text(_metadata(file_name, streams), encoding="utf-8")
-        os.chmod(temporary, 0o755)
-        os.rename(temporary, target)
-    except OSError as exc:
-        raise OutputError(f"{target}: cannot write: {exc.strerror or exc}") from None
-    finally:
-        with contextlib.suppress(FileNotFoundError):
-            shutil.rmtree(temporary)
 
 
 def _write_mcap(file: Path, streams: Sequence[Stream]) -> None:

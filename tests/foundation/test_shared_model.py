@@ -142,3 +142,20 @@ def test_bundled_robot_is_named_by_a_real_path(monkeypatch, tmp_path):
     monkeypatch.chdir(tmp_path)
     outside = RobotSource.bundled("real")
     assert outside.display == str(SIM_URDF.parent.resolve() / "service_robot_real.urdf.xml")
+
+
+def test_atomic_directory_appears_whole_or_not_at_all(tmp_path):
+    from servicebot_cli.output.files import atomic_directory
+
+    target = tmp_path / "bag"
+    with pytest.raises(RuntimeError), atomic_directory(target) as building:
+        (building / "part.mcap").write_bytes(b"half")
+        raise RuntimeError("interrupted")
+    assert list(tmp_path.iterdir()) == []
+    with atomic_directory(target) as building:
+        (building / "a.mcap").write_bytes(b"whole")
+    assert (target / "a.mcap").read_bytes() == b"whole"
+    with pytest.raises(OutputError, match="already exists"), atomic_directory(target):
+        pass
+    with pytest.raises(OutputError, match="does not exist"), atomic_directory(tmp_path / "x" / "y"):
+        pass
