@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from servicebot_cli.errors import ExitCode
+from servicebot_cli.errors import ServicebotError
 from servicebot_cli.options import RobotArgs, format_option, robot_arguments
 
 
@@ -70,9 +70,7 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
         max_angular_acceleration_rad_s2=max_angular)
     problem = "" if headless else display_problem()
     if problem:  # checked after the input, before any work
-        click.echo(f"Error: {problem}; use --headless (with --plot FILE.png for a picture)",
-                   err=True)
-        raise click.exceptions.Exit(ExitCode.USAGE)
+        raise ServicebotError(f"{problem}; use --headless (with --plot FILE.png for a picture)")
     base_dir = Path(scenario_file).parent if scenario_file else Path.cwd()
     report = simulate_and_write(robot, scenario, seed=seed, outputs=Outputs(out_dir, bag, plot),
                                 scenario_dir=base_dir, stderr=sys.stderr,
