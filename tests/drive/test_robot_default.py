@@ -18,7 +18,8 @@ def test_the_default_robot_is_the_commands_choice():
     runner = CliRunner()
     assert runner.invoke(probe, []).stdout.strip() == "service_robot_real.urdf.xml"
     assert runner.invoke(probe, ["--robot", "sim"]).stdout.strip() == "service_robot.urdf.xml"
-    assert "default: real when no FILE is given" in " ".join(runner.invoke(probe, ["--help"]).stdout.split())
+    help_text = " ".join(runner.invoke(probe, ["--help"]).stdout.split())
+    assert "default: real when no FILE is given" in help_text
 
 
 def test_every_other_command_keeps_sim(run):

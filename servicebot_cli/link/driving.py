@@ -1,0 +1,204 @@
+"""One drive run from start to stop: choose the protocol, open the port, stream, always stop.
+
+This is where the pieces meet: the port is opened here (the only place), handed to the
+loop, and whatever ends the run (the end of the plan, quit, Ctrl-C, SIGTERM, a lost link,
+a bug) the stop is sent before the run is reported.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+from servicebot_cli.errors import DescriptionError, ServicebotError
+from servicebot_cli.link.arduino import ArduinoConfig, ArduinoLink
+from servicebot_cli.link.binary import BinaryLink
+from servicebot_cli.link.commander import Commander
+from servicebot_cli.link.motors import MotorMap
+from servicebot_cli.link.session import DriveLoop, LinkStatus, Source
+from servicebot_cli.link.shaping import WheelShaper
+from servicebot_cli.link.signals import StopSignals
+from servicebot_cli.link.wire import BITS_PER_BYTE
+
+MIN_RATE_HZ = 4.0  # at least two commands per 500 ms watchdog period
+COMFORT = 0.8  # above this share of the link, warn: no room left for retries and noise
+
+
+@dataclass(frozen=True)
+class DriveRequest:
+    """How to drive.
+
+    Attributes:
+        port: Serial device path.
+        baud: Baud rate.
+        rate_hz: Commands per second.
+        max_accel_rad_s2: Wheel acceleration limit [rad/s^2].
+        link_timeout_s: No reply for this long ends the run with LinkLost [s].
+        connect_timeout_s: How long the handshake may take [s].
+        reconnect: Reopen the port after a lost link instead of giving up.
+        log: CSV telemetry log, or None.
+    """
+
+    port: str
+    baud: int
+    rate_hz: float
+    max_accel_rad_s2: float
+    link_timeout_s: float
+    connect_timeout_s: float
+    reconnect: bool = False
+    log: Path | None = None
+
+
+@dataclass(frozen=True)
+class Summary:
+    """What a run did, for the last stderr line and ``--format json``."""
+
+    protocol: str
+    port: str
+    baud: int
+    firmware: str
+    outcome: str
+    duration_s: float
+    rate_hz: float
+    commands: int
+    replies: int
+    errors: int
+    reconnects: int
+    stop_confirmed: bool
+    wheels: list[dict[str, object]]
+    arm: list[dict[str, object]]
+
+
+def serial_defaults(robot: object) -> tuple[str | None, int | None]:
+    """``port`` and ``baud_rate`` of the description's ros2_control hardware, if it names them.
+
+    Raises:
+        DescriptionError: A baud_rate that is not a whole number.
+    """
+    for block in getattr(robot, "ros2_control", ()):
+        port, baud = block.hardware_param("port"), block.hardware_param("baud_rate")
+        if port or baud:
+            try:
+                return port, int(baud) if baud else None
+            except ValueError:
+                raise DescriptionError(
+                    f"{robot.display}: <param name=\"baud_rate\">{baud}</param> is not a whole "  # type: ignore[attr-defined]
+                    "number; fix the URDF or give --baud"
+                ) from None
+    return None, None
+
+
+def make_link(protocol: str, motors: MotorMap,
+              arduino: ArduinoConfig | None) -> BinaryLink | ArduinoLink:
+    """The host-side adapter for ``protocol`` (``servicebot`` or ``arduino``)."""
+    if protocol == "arduino":
+        assert arduino is not None
+        return ArduinoLink(motors, arduino)
+    return BinaryLink(motors)
+
+
+def link_capacity_hz(link: BinaryLink | ArduinoLink, baud: int) -> float:
+    """Most commands per second the link carries: the busier direction decides [Hz].
+
+    A UART is full duplex: commands and replies each have ``baud / 10`` bytes a second.
+    """
+    return baud / BITS_PER_BYTE / max(link.command_bytes, link.reply_bytes)
+
+
+def run_drive(request: DriveRequest, link: BinaryLink | ArduinoLink, motors: MotorMap,
+              source: Source, *, log: Callable[[str], None],
+              on_tick: Callable[[LinkStatus], None] | None = None,
+              on_summary: Callable[[Summary], None] | None = None) -> Summary:
+    """Drive until ``source`` is done; stop the motors on every way out.
+
+    Raises:
+        LinkError: The port cannot be opened or the firmware does not answer (exit 4).
+        LinkLost: The link went silent (exit 5), after the stop was sent.
+        Interrupted: Ctrl-C (exit 130), after the stop. Terminated: SIGTERM (exit 143).
+    """
+    from servicebot_cli.link.telemetry_log import telemetry_csv
+    from servicebot_cli.link.transport import open_port
+
+    where = f"{request.port} at {request.baud} baud"
+    commander = Commander(link, WheelShaper(motors, request.max_accel_rad_s2), motors)
+    with StopSignals() as signals:
+        port = open_port(request.port, request.baud)
+        reopen = (lambda: open_port(request.port, request.baud)) if request.reconnect else None
+        loop = DriveLoop(port, link, commander, rate_hz=request.rate_hz, where=where,
+                         link_timeout_s=request.link_timeout_s, reopen=reopen, log=log,
+                         on_tick=on_tick)
+        failure: ServicebotError | None = None
+        with _csv(request.log, telemetry_csv, motors, link.has_arm) as csv_log:
+            loop.on_reading = csv_log.row if csv_log is not None else None
+            try:
+                hello = loop.connect(request.connect_timeout_s)
+                log(f"connected to {where}: {hello.description}")
+                loop.run(source)
+            except ServicebotError as exc:
+                failure = exc
+            finally:
+                signals.stopping()
+                confirmed = loop.stop_motors()
+                if loop.port is not None:
+                    loop.port.close()
+    summary = _summary(loop, request, link, motors, failure, confirmed)
+    if loop.hello is not None and on_summary is not None:
+        on_summary(summary)
+    if failure is not None:
+        raise _with_stop_note(failure, loop, confirmed)
+    return summary
+
+
+@contextlib.contextmanager
+def _csv(path: Path | None, opener: Callable[..., contextlib.AbstractContextManager[object]],
+         motors: MotorMap, has_arm: bool) -> Iterator[object]:
+    if path is None:
+        yield None
+    else:
+        with opener(path, motors, has_arm) as log:
+            yield log
+
+
+def _with_stop_note(failure: ServicebotError, loop: DriveLoop, confirmed: bool) -> ServicebotError:
+    if loop.hello is None:
+        return failure
+    watchdog = f"{loop.hello.watchdog_ms} ms" if loop.hello.watchdog_ms else "its timeout"
+    note = ("motors stopped (the firmware confirmed)" if confirmed else
+            f"stop sent but not confirmed; the firmware's watchdog stops the motors within "
+            f"{watchdog}")
+    error = type(failure)(f"{failure}; {note}")
+    return error
+
+
+def _summary(loop: DriveLoop, request: DriveRequest, link: BinaryLink | ArduinoLink,
+             motors: MotorMap, failure: ServicebotError | None, confirmed: bool) -> Summary:
+    now = loop.clock()
+    reading = loop.reading
+    outcome = "completed" if failure is None else _OUTCOMES.get(type(failure).__name__, "error")
+    duration = now - loop.t0_s
+    wheels = [
+        {"joint": name, "commanded_travel_rad": travel,
+         "measured_position_rad": reading.wheel_position_rad[i] if reading else None}
+        for i, (name, travel) in enumerate(zip(motors.wheel_joints, loop.commander.travel_rad,
+                                               strict=True))
+    ]
+    arm_sent = loop.commander.arm_sent
+    arm = [
+        {"joint": name, "target_rad": arm_sent[i] if arm_sent else None,
+         "measured_position_rad": (reading.arm_position_rad[i]
+                                   if reading and reading.arm_position_rad else None)}
+        for i, name in enumerate(motors.arm_joints)
+    ] if link.has_arm else []
+    return Summary(
+        protocol=link.name, port=request.port, baud=request.baud,
+        firmware=loop.hello.description if loop.hello else "", outcome=outcome,
+        duration_s=round(duration, 3), rate_hz=request.rate_hz, commands=loop.commands,
+        replies=loop.replies, errors=link.errors, reconnects=loop.reconnects,
+        stop_confirmed=confirmed, wheels=wheels, arm=arm,
+    )
+
+
+_OUTCOMES = {"Interrupted": "interrupted", "Terminated": "terminated", "LinkLost": "link_lost",
+             "PortFailed": "link_lost"}
