@@ -48,7 +48,7 @@ def script_plan(script: str, motors: MotorMap, link: Any, max_accel: float) -> P
     steps = parse_script(text, name, motors)
     for step in steps:
         if step.arm and not link.has_arm:
-            raise ScriptError(f"{name}:{step.line}: {NO_ARM}")
+            raise ScriptError(f"{name}:{step.arm_line}: {NO_ARM}")
         _warn_if_scaled(step, motors, f"{name}:{step.line}")
     return Plan(steps)
 

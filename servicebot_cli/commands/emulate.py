@@ -67,20 +67,20 @@ def emulate(robot_args: RobotArgs, protocol: str, baud: int | None, ticks_per_re
                               arduino, watchdog_ms, faults, seed, pace, _log)
     state_path = Path(state_file) if state_file else None
     stop = _StopFlag()
-    try:
-        device = emulator.open(Path(link_path) if link_path else None)
-        if state_path is not None:
-            write_state(state_path, emulator.state())  # a bad path fails before anyone waits
-        click.echo(device)
-        sys.stdout.flush()
-        _log(_banner(emulator, device, seed))
-        with stop:
+    with stop:  # from here on, SIGINT and SIGTERM end the serve loop cleanly
+        try:
+            device = emulator.open(Path(link_path) if link_path else None)
+            if state_path is not None:
+                write_state(state_path, emulator.state())  # a bad path fails before any wait
+            click.echo(device)
+            sys.stdout.flush()
+            _log(_banner(emulator, device, seed))
             ending = emulator.serve(stop.is_set, lambda s: write_state(state_path, s)
                                     if state_path is not None else None)
-        if state_path is not None:
-            write_state(state_path, {**emulator.state(), "ended": ending})
-    finally:
-        emulator.close()
+            if state_path is not None:
+                write_state(state_path, {**emulator.state(), "ended": ending})
+        finally:
+            emulator.close()
     _log("port closed" if ending == "died" else "stopped; port closed")
 
 

@@ -123,26 +123,25 @@ def run_drive(request: DriveRequest, link: BinaryLink | ArduinoLink, motors: Mot
 
     where = f"{request.port} at {request.baud} baud"
     commander = Commander(link, WheelShaper(motors, request.max_accel_rad_s2), motors)
-    with StopSignals() as signals:
+    with StopSignals() as signals, _csv(request.log, telemetry_csv, motors,
+                                         link.has_arm) as csv_log:
         port = open_port(request.port, request.baud)
         reopen = (lambda: open_port(request.port, request.baud)) if request.reconnect else None
         loop = DriveLoop(port, link, commander, rate_hz=request.rate_hz, where=where,
                          link_timeout_s=request.link_timeout_s, reopen=reopen, log=log,
-                         on_tick=on_tick)
+                         on_tick=on_tick, on_reading=csv_log.row if csv_log else None)
         failure: ServicebotError | None = None
-        with _csv(request.log, telemetry_csv, motors, link.has_arm) as csv_log:
-            loop.on_reading = csv_log.row if csv_log is not None else None
-            try:
-                hello = loop.connect(request.connect_timeout_s)
-                log(f"connected to {where}: {hello.description}")
-                loop.run(source)
-            except ServicebotError as exc:
-                failure = exc
-            finally:
-                signals.stopping()
-                confirmed = loop.stop_motors()
-                if loop.port is not None:
-                    loop.port.close()
+        try:
+            hello = loop.connect(request.connect_timeout_s)
+            log(f"connected to {where}: {hello.description}")
+            loop.run(source)
+        except ServicebotError as exc:
+            failure = exc
+        finally:
+            signals.stopping()
+            confirmed = loop.stop_motors()
+            if loop.port is not None:
+                loop.port.close()
     summary = _summary(loop, request, link, motors, failure, confirmed)
     if loop.hello is not None and on_summary is not None:
         on_summary(summary)

@@ -35,6 +35,7 @@ class Step:
         angular_rad_s: Yaw rate [rad/s].
         arm: Arm targets that start with this step, ``(joint, rad)`` pairs.
         line: Line of the script it came from (0 for a one-shot command).
+        arm_line: Line of the first ``arm`` line among ``arm`` (0 when none).
     """
 
     duration_s: float
@@ -42,6 +43,7 @@ class Step:
     angular_rad_s: float
     arm: tuple[tuple[str, float], ...] = ()
     line: int = 0
+    arm_line: int = 0
 
 
 class Plan:

@@ -56,7 +56,7 @@ def parse_script(text: str, name: str, motors: MotorMap) -> list[Step]:
             pending_line = pending_line or number
         elif keyword in ("twist", "stop"):
             linear, angular, duration = _timed(keyword, args, where)
-            steps.append(Step(duration, linear, angular, tuple(pending_arm), number))
+            steps.append(Step(duration, linear, angular, tuple(pending_arm), number, pending_line))
             pending_arm, pending_line = [], 0
         else:
             raise ScriptError(f"{where}: unknown command '{keyword}'; use twist, stop or arm "

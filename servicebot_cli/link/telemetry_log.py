@@ -52,21 +52,28 @@ class TelemetryCsv:
         self.rows += 1
 
 
+class _Discard(Exception):
+    """Leave nothing behind: the run never got a reply."""
+
+
 @contextlib.contextmanager
 def telemetry_csv(path: Path, motors: MotorMap, has_arm: bool) -> Iterator[TelemetryCsv]:
-    """A CSV log at ``path``, kept on every exit once it holds a row.
+    """A CSV log at ``path``, kept on every exit once it holds a row, else not written.
 
     Raises:
         OutputError: The file cannot be written (missing directory, permission).
     """
     failure: BaseException | None = None
-    with atomic_output(path) as handle:
-        log = TelemetryCsv(handle, motors, has_arm)
-        try:
-            yield log
-        except BaseException as exc:
+    try:
+        with atomic_output(path) as handle:
+            log = TelemetryCsv(handle, motors, has_arm)
+            try:
+                yield log
+            except BaseException as exc:  # keep the rows: close the file, then re-raise
+                failure = exc
             if not log.rows:
-                raise
-            failure = exc  # keep the rows: leave the with block normally, then re-raise
+                raise _Discard
+    except _Discard:
+        pass
     if failure is not None:
         raise failure
