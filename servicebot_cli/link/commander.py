@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Protocol
 
+from servicebot_cli.link.events import Event
 from servicebot_cli.link.motors import MotorMap
 from servicebot_cli.link.plan import Setpoint
 from servicebot_cli.link.shaping import WheelShaper
@@ -37,6 +38,19 @@ class HostLink(Protocol):
 
     def stop(self) -> tuple[bytes, int]:
         """Bytes and token for a stop."""
+
+    def feed(self, data: bytes, now_s: float) -> list[Event]:
+        """Events for the bytes received at ``now_s``."""
+
+    def reset(self) -> None:
+        """Forget the stream state (the port was reopened)."""
+
+    def describe(self, data: bytes) -> str:
+        """What ``data`` means, for people."""
+
+    @property
+    def errors(self) -> int:
+        """Rejected input so far."""
 
 
 class Commander:

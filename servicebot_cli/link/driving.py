@@ -8,18 +8,19 @@ a bug) the stop is sent before the run is reported.
 from __future__ import annotations
 
 import contextlib
+import statistics
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from servicebot_cli.errors import DescriptionError, ServicebotError
+from servicebot_cli.errors import DescriptionError, LinkError, LinkLost, ServicebotError
 from servicebot_cli.link.arduino import ArduinoConfig, ArduinoLink
 from servicebot_cli.link.binary import BinaryLink
-from servicebot_cli.link.commander import Commander
+from servicebot_cli.link.commander import Commander, HostLink
 from servicebot_cli.link.motors import MotorMap
 from servicebot_cli.link.session import DriveLoop, LinkStatus, Source
 from servicebot_cli.link.shaping import WheelShaper
-from servicebot_cli.link.signals import StopSignals
+from servicebot_cli.link.signals import Interrupted, StopSignals, Terminated
 from servicebot_cli.link.wire import BITS_PER_BYTE
 
 MIN_RATE_HZ = 4.0  # at least two commands per 500 ms watchdog period
@@ -64,6 +65,7 @@ class Summary:
     rate_hz: float
     commands: int
     replies: int
+    median_rtt_s: float | None
     errors: int
     reconnects: int
     stop_confirmed: bool
@@ -90,8 +92,7 @@ def serial_defaults(robot: object) -> tuple[str | None, int | None]:
     return None, None
 
 
-def make_link(protocol: str, motors: MotorMap,
-              arduino: ArduinoConfig | None) -> BinaryLink | ArduinoLink:
+def make_link(protocol: str, motors: MotorMap, arduino: ArduinoConfig | None) -> HostLink:
     """The host-side adapter for ``protocol`` (``servicebot`` or ``arduino``)."""
     if protocol == "arduino":
         assert arduino is not None
@@ -99,7 +100,7 @@ def make_link(protocol: str, motors: MotorMap,
     return BinaryLink(motors)
 
 
-def link_capacity_hz(link: BinaryLink | ArduinoLink, baud: int) -> float:
+def link_capacity_hz(link: HostLink, baud: int) -> float:
     """Most commands per second the link carries: the busier direction decides [Hz].
 
     A UART is full duplex: commands and replies each have ``baud / 10`` bytes a second.
@@ -107,7 +108,7 @@ def link_capacity_hz(link: BinaryLink | ArduinoLink, baud: int) -> float:
     return baud / BITS_PER_BYTE / max(link.command_bytes, link.reply_bytes)
 
 
-def run_drive(request: DriveRequest, link: BinaryLink | ArduinoLink, motors: MotorMap,
+def run_drive(request: DriveRequest, link: HostLink, motors: MotorMap,
               source: Source, *, log: Callable[[str], None],
               on_tick: Callable[[LinkStatus], None] | None = None,
               on_summary: Callable[[Summary], None] | None = None) -> Summary:
@@ -121,33 +122,41 @@ def run_drive(request: DriveRequest, link: BinaryLink | ArduinoLink, motors: Mot
     from servicebot_cli.link.telemetry_log import telemetry_csv
     from servicebot_cli.link.transport import open_port
 
-    where = f"{request.port} at {request.baud} baud"
     commander = Commander(link, WheelShaper(motors, request.max_accel_rad_s2), motors)
     with StopSignals() as signals, _csv(request.log, telemetry_csv, motors,
                                          link.has_arm) as csv_log:
         port = open_port(request.port, request.baud)
         reopen = (lambda: open_port(request.port, request.baud)) if request.reconnect else None
-        loop = DriveLoop(port, link, commander, rate_hz=request.rate_hz, where=where,
+        loop = DriveLoop(port, link, commander, rate_hz=request.rate_hz,
+                         where=f"{request.port} at {request.baud} baud",
                          link_timeout_s=request.link_timeout_s, reopen=reopen, log=log,
                          on_tick=on_tick, on_reading=csv_log.row if csv_log else None)
-        failure: ServicebotError | None = None
-        try:
-            hello = loop.connect(request.connect_timeout_s)
-            log(f"connected to {where}: {hello.description}")
-            loop.run(source)
-        except ServicebotError as exc:
-            failure = exc
-        finally:
-            signals.stopping()
-            confirmed = loop.stop_motors()
-            if loop.port is not None:
-                loop.port.close()
+        failure, confirmed = _drive_then_stop(loop, request, source, signals, log)
     summary = _summary(loop, request, link, motors, failure, confirmed)
     if loop.hello is not None and on_summary is not None:
         on_summary(summary)
     if failure is not None:
         raise _with_stop_note(failure, loop, confirmed)
     return summary
+
+
+def _drive_then_stop(loop: DriveLoop, request: DriveRequest, source: Source,
+                     signals: StopSignals, log: Callable[[str], None]
+                     ) -> tuple[ServicebotError | None, bool]:
+    """Connect and stream; whatever happens, stop. ``(what ended the run, stop confirmed)``."""
+    failure: ServicebotError | None = None
+    try:
+        hello = loop.connect(request.connect_timeout_s)
+        log(f"connected to {loop.where}: {hello.description}")
+        loop.run(source)
+    except ServicebotError as exc:  # Ctrl-C, SIGTERM and lost links arrive here too
+        failure = exc
+    finally:  # and any other exception (a bug) passes through here on its way out
+        signals.stopping()
+        confirmed = loop.stop_motors()
+        if loop.port is not None:
+            loop.port.close()
+    return failure, confirmed
 
 
 @contextlib.contextmanager
@@ -167,16 +176,22 @@ def _with_stop_note(failure: ServicebotError, loop: DriveLoop, confirmed: bool) 
     note = ("motors stopped (the firmware confirmed)" if confirmed else
             f"stop sent but not confirmed; the firmware's watchdog stops the motors within "
             f"{watchdog}")
-    error = type(failure)(f"{failure}; {note}")
-    return error
+    return type(failure)(f"{failure}; {note}")
 
 
-def _summary(loop: DriveLoop, request: DriveRequest, link: BinaryLink | ArduinoLink,
+def _outcome(failure: ServicebotError | None) -> str:
+    if failure is None:
+        return "completed"
+    for kind, name in ((Interrupted, "interrupted"), (Terminated, "terminated"),
+                       (LinkLost, "link_lost")):
+        if isinstance(failure, kind):
+            return name
+    return "link_error" if isinstance(failure, LinkError) else "error"
+
+
+def _summary(loop: DriveLoop, request: DriveRequest, link: HostLink,
              motors: MotorMap, failure: ServicebotError | None, confirmed: bool) -> Summary:
-    now = loop.clock()
     reading = loop.reading
-    outcome = "completed" if failure is None else _OUTCOMES.get(type(failure).__name__, "error")
-    duration = now - loop.t0_s
     wheels = [
         {"joint": name, "commanded_travel_rad": travel,
          "measured_position_rad": reading.wheel_position_rad[i] if reading else None}
@@ -184,20 +199,18 @@ def _summary(loop: DriveLoop, request: DriveRequest, link: BinaryLink | ArduinoL
                                                strict=True))
     ]
     arm_sent = loop.commander.arm_sent
+    measured = reading.arm_position_rad if reading is not None else None
     arm = [
         {"joint": name, "target_rad": arm_sent[i] if arm_sent else None,
-         "measured_position_rad": (reading.arm_position_rad[i]
-                                   if reading and reading.arm_position_rad else None)}
+         "measured_position_rad": measured[i] if measured else None}
         for i, name in enumerate(motors.arm_joints)
     ] if link.has_arm else []
     return Summary(
         protocol=link.name, port=request.port, baud=request.baud,
-        firmware=loop.hello.description if loop.hello else "", outcome=outcome,
-        duration_s=round(duration, 3), rate_hz=request.rate_hz, commands=loop.commands,
-        replies=loop.replies, errors=link.errors, reconnects=loop.reconnects,
-        stop_confirmed=confirmed, wheels=wheels, arm=arm,
+        firmware=loop.hello.description if loop.hello else "", outcome=_outcome(failure),
+        duration_s=round(max(0.0, loop.end_s - loop.t0_s), 3), rate_hz=request.rate_hz,
+        commands=loop.commands, replies=loop.replies,
+        median_rtt_s=round(statistics.median(loop.rtts_s), 4) if loop.rtts_s else None,
+        errors=link.errors, reconnects=loop.reconnects, stop_confirmed=confirmed,
+        wheels=wheels, arm=arm,
     )
-
-
-_OUTCOMES = {"Interrupted": "interrupted", "Terminated": "terminated", "LinkLost": "link_lost",
-             "PortFailed": "link_lost"}

@@ -8,15 +8,13 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from servicebot_cli.link.arduino import ArduinoLink
-from servicebot_cli.link.binary import BinaryLink
-from servicebot_cli.link.commander import Commander
+from servicebot_cli.link.commander import Commander, HostLink
 from servicebot_cli.link.motors import MotorMap
 from servicebot_cli.link.plan import Plan
 from servicebot_cli.link.shaping import WheelShaper
 
 
-def dry_run_lines(plan: Plan, link: BinaryLink | ArduinoLink, motors: MotorMap,
+def dry_run_lines(plan: Plan, link: HostLink, motors: MotorMap,
                   max_accel_rad_s2: float, rate_hz: float) -> Iterator[str]:
     """Lines ``t_s  hex bytes  meaning``, one per frame, after a short header."""
     commander = Commander(link, WheelShaper(motors, max_accel_rad_s2), motors)
@@ -39,5 +37,5 @@ def dry_run_lines(plan: Plan, link: BinaryLink | ArduinoLink, motors: MotorMap,
     yield _line(tick * period, data, link)
 
 
-def _line(t_s: float, data: bytes, link: BinaryLink | ArduinoLink) -> str:
+def _line(t_s: float, data: bytes, link: HostLink) -> str:
     return f"{t_s:7.3f}  {data.hex(' ')}  {link.describe(data)}"

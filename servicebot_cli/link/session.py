@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from typing import Protocol
 
 from servicebot_cli.errors import LinkError, LinkLost
-from servicebot_cli.link.commander import Commander
+from servicebot_cli.link.commander import Commander, HostLink
 from servicebot_cli.link.events import Ack, Event, Hello, Reading, Refused
 from servicebot_cli.link.plan import Setpoint
 from servicebot_cli.link.transport import Port
@@ -70,7 +70,7 @@ class DriveLoop:
         on_tick: Called with the status after each tick.
     """
 
-    def __init__(self, port: Port, link: object, commander: Commander, *, rate_hz: float,
+    def __init__(self, port: Port, link: HostLink, commander: Commander, *, rate_hz: float,
                  link_timeout_s: float, where: str,
                  clock: Callable[[], float] = time.monotonic,
                  reopen: Callable[[], Port] | None = None,
@@ -86,13 +86,14 @@ class DriveLoop:
         self.on_reading, self.on_tick = on_reading, on_tick
         self.hello: Hello | None = None
         self.reading: Reading | None = None
-        self.commands = self.replies = self.reconnects = self.received_bytes = 0
+        self.commands = self.replies = self.reconnects = self.received_bytes = self.stale = 0
         self.rtt_s: float | None = None
         self.reconnecting = False
-        self.t0_s = self.last_rx_s = clock()
+        self.t0_s = self.last_rx_s = self.end_s = clock()
         self._sent: dict[int, float] = {}
         self._acked: deque[int] = deque(maxlen=64)
         self._reply_times: deque[float] = deque(maxlen=256)
+        self.rtts_s: deque[float] = deque(maxlen=4096)
         self._faults: tuple[str, ...] = ()
         self._next_tick_s = self._last_tick_s = 0.0
 
@@ -199,24 +200,32 @@ class DriveLoop:
                 self._on_event(event, now)
 
     def _on_event(self, event: Event, now: float) -> None:
+        token = event.token if isinstance(event, Ack) else getattr(event, "ack", None)
+        if token is not None and token not in self._sent:
+            self.stale += 1  # a reply to nothing this run sent (left over from an earlier one)
+            return
         self.last_rx_s = now
         if isinstance(event, Hello):
             self.hello = event
         elif isinstance(event, Refused):
             self.log(event.reason)
         elif isinstance(event, Ack):
-            self._acked.append(event.token)
+            self._acknowledged(event.token, now)
         elif isinstance(event, Reading):
             self._on_reading(event, now)
+
+    def _acknowledged(self, token: int, now: float) -> None:
+        self._acked.append(token)
+        if token in self._sent:
+            self.rtt_s = now - self._sent.pop(token)
+            self.rtts_s.append(self.rtt_s)
 
     def _on_reading(self, reading: Reading, now: float) -> None:
         self.reading = reading
         self.replies += 1
         self._reply_times.append(now)
         if reading.ack is not None:
-            self._acked.append(reading.ack)
-            if reading.ack in self._sent:
-                self.rtt_s = now - self._sent.pop(reading.ack)
+            self._acknowledged(reading.ack, now)
         self.commander.observe_arm(reading.arm_position_rad)
         news = tuple(f for f in reading.faults if f not in self._faults and f != "RESET")
         if news:
@@ -240,8 +249,9 @@ class DriveLoop:
             try:
                 self.port = self.reopen()  # type: ignore[misc]
                 self.link.reset()
+                self._sent.clear()
                 self.connect(RECONNECT_PERIOD_S * 2)
-                self.port.write(self.commander.stop(self.clock())[0])  # zero before anything
+                self._send_stop()  # zero before anything
             except LinkError:
                 self._drop_port()
                 time.sleep(RECONNECT_PERIOD_S)
@@ -259,6 +269,7 @@ class DriveLoop:
 
     def stop_motors(self, timeout_s: float = 0.5) -> bool:
         """Send the stop; True once the firmware confirmed it within ``timeout_s``."""
+        self.end_s = self.clock()
         if self.port is None:
             return False
         try:
@@ -280,6 +291,7 @@ class DriveLoop:
     def _send_stop(self) -> int:
         assert self.port is not None
         data, token = self.commander.stop(self.clock())
+        self._sent[token] = self.clock()
         self.port.write(data)
         self.port.drain()
         return token
