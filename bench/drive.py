@@ -86,9 +86,11 @@ def library_run(emu: Emulator, protocol: str, rate: float, seconds: float) -> di
     motors = motor_map(load(RobotSource.bundled("real")))
     link = make_link(protocol, motors, ArduinoConfig(3436, 30.0))
     request = DriveRequest(emu.path, 9600, rate, 1.0, link_timeout_s=5.0, connect_timeout_s=3.0)
+    statuses = []
     summary = run_drive(request, link, motors, Plan([Step(seconds, 0.02, 0.0)]),
-                        log=lambda line: None)
-    return dataclasses.asdict(summary)
+                        log=lambda line: None, on_tick=statuses.append)
+    # replies in the last second of the stream: the rate the wire settled at
+    return {**dataclasses.asdict(summary), "reply_hz": statuses[-1].reply_rate_hz}
 
 
 def rate_table(repeat: int, seconds: float) -> list[list[str]]:
@@ -118,7 +120,8 @@ def rate_table(repeat: int, seconds: float) -> list[list[str]]:
 def _rate_row(protocol: str, rate: float, limit: float, runs: list[dict], how: str
               ) -> list[str]:
     sent = statistics.median(r["commands"] / r["duration_s"] for r in runs)
-    replies = statistics.median(r["replies"] / r["duration_s"] for r in runs)
+    replies = statistics.median(  # the stop's own reply is not part of the stream
+        r.get("reply_hz", (r["replies"] - 1) / r["duration_s"]) for r in runs)
     rtts = [r["median_rtt_s"] for r in runs if r["median_rtt_s"] is not None]
     rtt = f"{statistics.median(rtts) * 1000:.0f}" if rtts else "-"
     return [protocol, f"{rate:g}", how, f"{sent:.1f}", f"{replies:.1f}", f"{limit:.1f}",

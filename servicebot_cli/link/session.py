@@ -8,6 +8,7 @@ firmware to confirm it; the caller calls it on every way out.
 
 from __future__ import annotations
 
+import select
 import time
 from collections import deque
 from collections.abc import Callable
@@ -254,11 +255,19 @@ class DriveLoop:
                 self._send_stop()  # zero before anything
             except LinkError:
                 self._drop_port()
-                time.sleep(RECONNECT_PERIOD_S)
+                self._idle(source, RECONNECT_PERIOD_S)
         self.reconnecting = False
         self.reconnects += 1
         self.log(f"link back on {self.where}: {self.hello.description if self.hello else ''}")
         self._next_tick_s, self._last_tick_s = self.clock(), 0.0
+
+    @staticmethod
+    def _idle(source: Source, duration_s: float) -> None:
+        """Wait, still reading the source's input (teleop keys: q quits while reconnecting)."""
+        if not source.fds:
+            time.sleep(duration_s)
+        elif select.select(list(source.fds), [], [], duration_s)[0]:
+            source.poll()
 
     def _drop_port(self) -> None:
         if self.port is not None:

@@ -173,3 +173,12 @@ def test_emulate_dies_on_request(emulator):
     emu = emulator("--die-after", "0.5")
     assert emu.proc.wait(timeout=20) == 0
     assert "dying now" in emu.proc.stderr.read()
+
+
+def test_injected_latency_shows_in_the_round_trip(emulator):
+    emu = emulator("--latency", "0.3")
+    code, stdout, stderr = finish(servicebot("drive", "--port", emu.path, "--linear", "0.02",
+                                             "--duration", "1.5", "--format", "json"))
+    assert code == 0, stderr
+    summary = json.loads(stdout)
+    assert summary["median_rtt_s"] >= 0.3 and summary["errors"] == 0
