@@ -127,7 +127,7 @@ def _check_rate(rate: float, link: Any, baud: int, link_timeout: float) -> None:
     frame = max(link.command_bytes, link.reply_bytes)
     if rate > capacity:
         raise click.BadParameter(
-            f"{rate:g} Hz needs {rate * frame:.0f} bytes/s each way ({frame}-byte frames) but "
+            f"{rate:g} Hz needs {rate * frame:.0f} bytes/s one way ({frame}-byte frames) but "
             f"{baud} baud carries {baud / 10:.0f}; at most {capacity:.1f} Hz",
             param_hint="--rate")
     if rate < MIN_RATE_HZ:

@@ -193,10 +193,10 @@ def _summary(loop: DriveLoop, request: DriveRequest, link: HostLink,
              motors: MotorMap, failure: ServicebotError | None, confirmed: bool) -> Summary:
     reading = loop.reading
     wheels = [
-        {"joint": name, "commanded_travel_rad": travel,
-         "measured_position_rad": reading.wheel_position_rad[i] if reading else None}
-        for i, (name, travel) in enumerate(zip(motors.wheel_joints, loop.commander.travel_rad,
-                                               strict=True))
+        {"joint": name, "commanded_travel_rad": round(commanded, 4),
+         "measured_travel_rad": round(measured, 4) if reading else None}
+        for name, commanded, measured in zip(motors.wheel_joints, loop.commander.travel_rad,
+                                             loop.measured_travel_rad, strict=True)
     ]
     arm_sent = loop.commander.arm_sent
     measured = reading.arm_position_rad if reading is not None else None

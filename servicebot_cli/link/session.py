@@ -96,6 +96,8 @@ class DriveLoop:
         self._reply_times: deque[float] = deque(maxlen=256)
         self.rtts_s: deque[float] = deque(maxlen=4096)
         self._faults: tuple[str, ...] = ()
+        self.measured_travel_rad = [0.0] * len(commander.motors.wheel_joints)
+        self._last_positions: tuple[float, ...] | None = None
         self._next_tick_s = self._last_tick_s = 0.0
 
     # -- handshake ---------------------------------------------------------------------------
@@ -222,6 +224,11 @@ class DriveLoop:
             self.rtts_s.append(self.rtt_s)
 
     def _on_reading(self, reading: Reading, now: float) -> None:
+        if self._last_positions is not None:  # encoders may restart with the firmware: add steps
+            for i, (new, old) in enumerate(zip(reading.wheel_position_rad, self._last_positions,
+                                               strict=True)):
+                self.measured_travel_rad[i] += new - old
+        self._last_positions = reading.wheel_position_rad
         self.reading = reading
         self.replies += 1
         self._reply_times.append(now)
@@ -251,6 +258,7 @@ class DriveLoop:
                 self.port = self.reopen()  # type: ignore[misc]
                 self.link.reset()
                 self._sent.clear()
+                self._last_positions = None
                 self.connect(RECONNECT_PERIOD_S * 2)
                 self._send_stop()  # zero before anything
             except LinkError:

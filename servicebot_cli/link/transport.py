@@ -51,8 +51,8 @@ class Port:
         try:
             self._serial.write(data)
         except Exception as exc:  # pyserial raises SerialException, OSError and timeouts
-            raise LinkLost(f"link lost: writing to {self.name} failed ({_reason(exc)}); "
-                           "unplugged, or the device gone?") from None
+            raise LinkLost(f"link lost: writing to {self.name} failed ({_reason(exc)}): "
+                           "the device is gone (unplugged, or its firmware died)") from None
 
     def drain(self) -> None:
         """Wait until written bytes have left (tcdrain)."""
@@ -67,8 +67,8 @@ class Port:
             waiting = self._serial.in_waiting
             return self._serial.read(waiting) if waiting else b""
         except Exception as exc:
-            raise LinkLost(f"link lost: reading {self.name} failed ({_reason(exc)}); "
-                           "unplugged, or the device gone?") from None
+            raise LinkLost(f"link lost: reading {self.name} failed ({_reason(exc)}): "
+                           "the device is gone (unplugged, or its firmware died)") from None
 
     def wait(self, timeout_s: float, extra_fds: Sequence[int] = ()) -> list[int]:
         """Sleep until bytes arrive, one of ``extra_fds`` is readable, or ``timeout_s`` passes.

@@ -38,7 +38,8 @@ def test_the_descriptions_baud_is_the_default(run, tmp_path):
     urdf.write_text(REAL_URDF.read_text().replace(
         '<param name="baud_rate">9600</param>', '<param name="baud_rate">4800</param>'))
     assert_one_line_error(run("drive", urdf, "--dry-run", *ONE_SHOT), 2,
-                          "20 Hz needs 640 bytes/s", "4800 baud carries 480; at most 15.0 Hz")
+                          "20 Hz needs 640 bytes/s one way",
+                          "4800 baud carries 480; at most 15.0 Hz")
     assert run("drive", urdf, "--dry-run", "--baud", "9600", *ONE_SHOT).exit_code == 0
 
 

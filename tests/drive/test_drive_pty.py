@@ -43,6 +43,7 @@ def test_a_script_moves_the_encoders_as_commanded(emulator, tmp_path):
     for wheel, reported in zip(state["wheels"], summary["wheels"], strict=True):
         assert wheel["position_rad"] == pytest.approx(reported["commanded_travel_rad"],
                                                       rel=0.03, abs=0.01)
+        assert reported["measured_travel_rad"] == pytest.approx(wheel["position_rad"], abs=0.01)
     left, right = (state["wheels"][0]["position_rad"], state["wheels"][1]["position_rad"])
     assert right - left > 0.3  # the turn in place
     assert [a["position_rad"] for a in state["arm"]] == pytest.approx([0.4, 0, -0.2, 0])
