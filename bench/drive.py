@@ -22,35 +22,29 @@ import json
 import os
 import signal
 import statistics
-import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))  # the tests' helpers run the emulator and drive for real
+
+from tests.drive.conftest import Emulator as TestEmulator  # noqa: E402
+from tests.drive.conftest import servicebot, wait_for  # noqa: E402
+
 TICKS = ("--ticks-per-rev", "3436")
 PROTOCOLS = {"servicebot": (), "arduino": ("--protocol", "arduino", *TICKS)}
 
 
-def servicebot(*args: object) -> subprocess.Popen[str]:
-    return subprocess.Popen([sys.executable, "-m", "servicebot_cli", *map(str, args)],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=REPO)
+class Emulator(TestEmulator):
+    """``servicebot emulate --pace`` in another process (the tests' helper, paced)."""
 
-
-class Emulator:
     def __init__(self, protocol: str, state: Path) -> None:
-        self.state_path = state
-        self.proc = servicebot("emulate", "--pace", "--watchdog-ms", "500",
-                               "--state-file", state, *PROTOCOLS[protocol])
-        self.path = self.proc.stdout.readline().strip()
-
-    def state(self) -> dict:
-        return json.loads(self.state_path.read_text())
+        super().__init__(state, "--pace", "--watchdog-ms", "500", *PROTOCOLS[protocol])
 
     def close(self) -> None:
-        self.proc.send_signal(signal.SIGTERM)
-        self.proc.communicate(timeout=20)
+        self.stop()
 
 
 def limit_hz(protocol: str) -> float:
@@ -136,29 +130,20 @@ def stop_latency(protocol: str, repeat: int) -> list[float]:
             for _ in range(repeat):
                 drive = servicebot("drive", "--port", emu.path, *PROTOCOLS[protocol],
                                    "--linear", "0.02", "--duration", "60")
-                _wait(lambda: any(w["velocity_rad_s"] for w in emu.state()["wheels"]))
+                wait_for(lambda: any(w["velocity_rad_s"] for w in emu.state()["wheels"]),
+                         "the wheels to turn")
                 time.sleep(0.3)
                 before = emu.state()["counters"]["stops"]  # (arduino: m 0 0 at start counts)
                 sent_s = time.monotonic()
                 os.kill(drive.pid, signal.SIGINT)
                 drive.communicate(timeout=20)
-                state = _wait(lambda before=before: (s := emu.state())["counters"]["stops"]
-                              > before and s)
+                state = wait_for(lambda before=before: (s := emu.state())["counters"]["stops"]
+                                 > before and s, "the stop")
                 latencies.append(state["counters"]["last_stop_s"] - sent_s)
-                _wait(lambda: not emu.state()["moving"])
+                wait_for(lambda: not emu.state()["moving"], "the motors to stop")
         finally:
             emu.close()
     return latencies
-
-
-def _wait(condition, patience_s: float = 30.0):
-    deadline = time.monotonic() + patience_s
-    while time.monotonic() < deadline:
-        value = condition()
-        if value:
-            return value
-        time.sleep(0.005)
-    raise SystemExit("the emulator never reached the expected state")
 
 
 def markdown(headers: list[str], rows: list[list[str]]) -> str:

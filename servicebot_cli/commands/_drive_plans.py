@@ -14,6 +14,7 @@ from typing import Any
 import click
 
 from servicebot_cli.errors import ExitCode, NameNotFound, OutOfLimits, ServicebotError
+from servicebot_cli.kinematics.diff_drive import body_twist
 from servicebot_cli.link.motors import MotorMap
 from servicebot_cli.link.plan import Plan, Step
 from servicebot_cli.link.script import ScriptError, parse_script
@@ -80,8 +81,8 @@ def _warn_if_scaled(step: Step, motors: MotorMap, where: str) -> None:
     wanted = shaper.unlimited(step.linear_m_s, step.angular_rad_s)
     left, right = shaper.target(step.linear_m_s, step.angular_rad_s)
     if (left, right) != wanted:
-        r, b = motors.wheel_radius_m, motors.track_m
-        linear, angular = r * (left + right) / 2, r * (right - left) / b
+        linear, angular = body_twist(left, right, wheel_radius_m=motors.wheel_radius_m,
+                                     track_m=motors.track_m)
         click.echo(
             f"drive: warning: {where}: twist {step.linear_m_s:g} m/s, {step.angular_rad_s:g} "
             f"rad/s needs {max(map(abs, wanted)):.3g} rad/s of the wheels, over their "
@@ -105,8 +106,8 @@ def teleop_session(plan: Plan | None, motors: MotorMap
     if not sys.stdin.isatty():
         raise NoTerminal("teleop needs a terminal on stdin; give --script FILE (or - for "
                          "stdin) or --linear/--angular --duration")
-    top_linear = motors.max_wheel_rad_s * motors.wheel_radius_m
-    teleop = Teleop(sys.stdin.fileno(), top_linear, 2 * top_linear / motors.track_m)
+    teleop = Teleop(sys.stdin.fileno(), motors.geometry.max_linear_m_s,
+                    motors.geometry.max_angular_rad_s)
 
     def on_tick(status: Any) -> None:
         if sys.stderr.isatty():

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 from servicebot_cli.errors import DescriptionError, JointNotFound, OutOfLimits
 
 if TYPE_CHECKING:
+    from servicebot_cli.description.drive_geometry import DriveGeometry
     from servicebot_cli.description.robot import RobotDescription
 
 
@@ -30,8 +31,7 @@ class MotorMap:
         wheel_sides: ``left`` or ``right`` per wheel.
         wheel_axis_signs: +1 when a positive joint velocity rolls the robot forward.
         wheel_max_rad_s: Velocity limit per wheel [rad/s].
-        wheel_radius_m: Wheel radius [m].
-        track_m: Left-to-right wheel distance [m].
+        geometry: The drive geometry the URDF implies (radius, track, top speeds).
         arm_joints: Arm joint names, URDF order.
         arm_lower: Lower position limit per arm joint [rad].
         arm_upper: Upper position limit per arm joint [rad].
@@ -43,8 +43,7 @@ class MotorMap:
     wheel_sides: tuple[str, ...]
     wheel_axis_signs: tuple[int, ...]
     wheel_max_rad_s: tuple[float, ...]
-    wheel_radius_m: float
-    track_m: float
+    geometry: DriveGeometry
     arm_joints: tuple[str, ...]
     arm_lower: tuple[float, ...]
     arm_upper: tuple[float, ...]
@@ -54,6 +53,16 @@ class MotorMap:
     def max_wheel_rad_s(self) -> float:
         """The smallest wheel velocity limit [rad/s]: what a side may turn at."""
         return min(self.wheel_max_rad_s)
+
+    @property
+    def wheel_radius_m(self) -> float:
+        """Wheel radius [m]."""
+        return self.geometry.wheel_radius_m
+
+    @property
+    def track_m(self) -> float:
+        """Left-to-right wheel distance [m]."""
+        return self.geometry.track_m
 
     def clamp_wheels(self, speeds_rad_s: Sequence[float]) -> tuple[float, ...]:
         """Each wheel speed inside its limit; NaN becomes 0 (stop)."""
@@ -125,8 +134,7 @@ def motor_map(robot: RobotDescription) -> MotorMap:
         wheel_sides=tuple(w.side for w in wheels),
         wheel_axis_signs=tuple(w.axis_sign for w in wheels),
         wheel_max_rad_s=tuple(w.velocity_limit_rad_s for w in wheels),
-        wheel_radius_m=geometry.wheel_radius_m,
-        track_m=geometry.track_m,
+        geometry=geometry,
         arm_joints=tuple(space.names[i] for i in arm),
         arm_lower=tuple(float(space.lower[i]) for i in arm),
         arm_upper=tuple(float(space.upper[i]) for i in arm),

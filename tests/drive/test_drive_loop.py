@@ -51,7 +51,7 @@ def test_run_returns_a_summary_and_integrates_what_it_sent(emulator, real_motors
     summary = run_drive(request(emu.path), BinaryLink(real_motors), real_motors, plan,
                         log=lambda line: None, on_tick=statuses.append)
     assert summary.outcome == "completed" and summary.stop_confirmed
-    assert summary.commands == len(statuses) and 28 <= summary.commands <= 32
+    assert summary.commands == len(statuses) > 10  # one status per command sent
     assert statuses[-1].reply_rate_hz > 0 and statuses[-1].rtt_s is not None
     state = wait_for(lambda: (s := emu.state())["counters"]["stops"] == 1 and s, "the stop")
     for wheel, reported in zip(state["wheels"], summary.wheels, strict=True):
