@@ -6,6 +6,7 @@ Imported by the drive command's callback only (it pulls in the link package).
 from __future__ import annotations
 
 import contextlib
+import os
 import sys
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -110,8 +111,9 @@ def teleop_session(plan: Plan | None, motors: MotorMap
                     motors.geometry.max_angular_rad_s)
 
     def on_tick(status: Any) -> None:
-        if sys.stderr.isatty():
-            sys.stderr.write(f"\r\x1b[K{status_line(status, teleop, motors.wheel_sides)}")
+        if sys.stderr.isatty():  # one line that rewrites itself: never wider than the terminal
+            width = _columns(sys.stderr.fileno()) - 1
+            sys.stderr.write(f"\r\x1b[K{status_line(status, teleop, motors.wheel_sides, width)}")
             sys.stderr.flush()
 
     with cbreak_terminal(sys.stdin.fileno()):
@@ -119,3 +121,11 @@ def teleop_session(plan: Plan | None, motors: MotorMap
             yield teleop, on_tick
         finally:
             sys.stderr.write("\n")
+
+
+def _columns(fd: int) -> int:
+    """Width of the terminal on ``fd`` (80 when it does not say)."""
+    try:
+        return os.get_terminal_size(fd).columns or 80
+    except OSError:
+        return 80

@@ -18,7 +18,7 @@ from servicebot_cli.link.plan import Setpoint
 from servicebot_cli.link.session import LinkStatus
 
 STEPS = 10  # key presses from stop to full speed
-HELP = "arrows/wasd: drive  space/x: stop  q: quit"
+HELP = "arrows/wasd drive, space stops, q quits"
 
 _KEYS = {
     b"\x1b[A": "forward", b"w": "forward", b"\x1b[B": "back", b"s": "back",
@@ -104,8 +104,9 @@ class Teleop:
         return Setpoint(self.linear * self.linear_step, self.angular * self.angular_step)
 
 
-def status_line(status: LinkStatus, teleop: Teleop, sides: tuple[str, ...]) -> str:
-    """One line: twist, commanded and measured side speeds, link rate, errors, keys."""
+def status_line(status: LinkStatus, teleop: Teleop, sides: tuple[str, ...],
+                width: int = 1000) -> str:
+    """One line, at most ``width`` characters: twist, side speeds, link rate, errors, keys."""
     if status.reconnecting:
         link = "RECONNECTING (motors at zero)"
     else:
@@ -114,12 +115,13 @@ def status_line(status: LinkStatus, teleop: Teleop, sides: tuple[str, ...]) -> s
     commanded = _by_side(status.commanded_rad_s, sides)
     measured = (_by_side(status.reading.wheel_velocity_rad_s, sides)
                 if status.reading is not None else "-")
-    return (f"v {teleop.linear * teleop.linear_step:+.3f} m/s  "
-            f"w {teleop.angular * teleop.angular_step:+.3f} rad/s | cmd {commanded} | "
-            f"meas {measured} rad/s | {link} | errors {status.errors} | {HELP}")
+    linear = teleop.linear * teleop.linear_step
+    angular = teleop.angular * teleop.angular_step
+    return (f"v {linear:+.3f} m/s w {angular:+.3f} rad/s | cmd {commanded} | "
+            f"meas {measured} rad/s | {link} | errors {status.errors} | {HELP}")[:width]
 
 
 def _by_side(values: tuple[float, ...], sides: tuple[str, ...]) -> str:
     left = [v for v, s in zip(values, sides, strict=True) if s == "left"]
     right = [v for v, s in zip(values, sides, strict=True) if s == "right"]
-    return f"L {sum(left) / len(left):+.3f} R {sum(right) / len(right):+.3f}"
+    return f"L{sum(left) / len(left):+.3f} R{sum(right) / len(right):+.3f}"

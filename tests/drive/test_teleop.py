@@ -6,6 +6,7 @@ import fcntl
 import os
 import pty
 import select
+import struct
 import subprocess
 import sys
 import termios
@@ -41,8 +42,9 @@ def test_keys_step_the_twist_within_the_limits():
 class Terminal:
     """``servicebot drive`` with a pty as its controlling terminal."""
 
-    def __init__(self, *args: object) -> None:
+    def __init__(self, *args: object, columns: int = 200) -> None:
         self.master, slave = pty.openpty()
+        fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", 24, columns, 0, 0))
         self.before = termios.tcgetattr(slave)
         self.slave = slave
 
@@ -95,10 +97,24 @@ def test_teleop_drives_shows_status_and_restores_the_terminal(emulator, ending, 
         assert terminal.finish() == code, terminal.read()
         assert termios.tcgetattr(terminal.slave) == terminal.before  # cbreak mode undone
         text = terminal.read()
-        assert "meas L" in text and "errors 0" in text
+        assert "meas L+" in text and "errors 0" in text and "q quits" in text
         wait_for(lambda: emu.state()["counters"]["stops"] == 1, "the stop")
         assert not emu.state()["moving"]
     finally:
         if terminal.proc.poll() is None:
             terminal.proc.kill()
+        terminal.close()
+
+
+def test_the_status_line_fits_a_narrow_terminal(emulator):
+    emu = emulator()
+    terminal = Terminal("--port", emu.path, columns=60)
+    try:
+        wait_for(lambda: "cmd L" in terminal.read(), "the status line")
+        terminal.type(b"q")
+        assert terminal.finish() == 0
+        lines = [part for chunk in terminal.read().split("\r\x1b[K") for part in
+                 chunk.split("\r\n") if "cmd L" in part]
+        assert lines and all(len(line) < 60 for line in lines)
+    finally:
         terminal.close()
