@@ -114,8 +114,8 @@ def rate_table(repeat: int, seconds: float) -> list[list[str]]:
 def _rate_row(protocol: str, rate: float, limit: float, runs: list[dict], how: str
               ) -> list[str]:
     sent = statistics.median(r["commands"] / r["duration_s"] for r in runs)
-    replies = statistics.median(  # the stop's own reply is not part of the stream
-        r.get("reply_hz", (r["replies"] - 1) / r["duration_s"]) for r in runs)
+    replies = statistics.median(  # replies to the stream's commands (not to the stop)
+        r.get("reply_hz", min(r["replies"], r["commands"]) / r["duration_s"]) for r in runs)
     rtts = [r["median_rtt_s"] for r in runs if r["median_rtt_s"] is not None]
     rtt = f"{statistics.median(rtts) * 1000:.0f}" if rtts else "-"
     return [protocol, f"{rate:g}", how, f"{sent:.1f}", f"{replies:.1f}", f"{limit:.1f}",

@@ -18,12 +18,17 @@ from dataclasses import asdict
 from pathlib import Path
 from typing import Any, Protocol
 
+from servicebot_cli.errors import ServicebotError
 from servicebot_cli.link.emulator import MotorModel
 from servicebot_cli.link.wire import FaultInjector, PacedQueue, byte_time_s
 
 _IDLE_S = 0.02  # longest sleep: the watchdog and SIGINT are seen at least this often
 _STATE_PERIOD_S = 0.1
 _REPORT_PERIOD_S = 1.0
+
+
+class EmulatorError(ServicebotError):
+    """The emulator cannot be set up as asked (exit 2)."""
 
 
 class Firmware(Protocol):
@@ -77,13 +82,23 @@ class PtyEmulator:
         os.set_blocking(self.master, False)
         self.path = os.ttyname(self.slave)
         if link is not None:
-            temporary = link.with_name(f".{link.name}.{os.getpid()}")
+            self._symlink(link)
+        return str(link) if link is not None else self.path
+
+    def _symlink(self, link: Path) -> None:
+        """Point ``link`` at the device, replacing an older link atomically."""
+        if link.is_dir():
+            raise EmulatorError(f"--link {link}: is a directory; give the path of a link to make")
+        temporary = link.with_name(f".{link.name}.{os.getpid()}")
+        try:
             with contextlib.suppress(FileNotFoundError):
                 temporary.unlink()
             os.symlink(self.path, temporary)
             os.replace(temporary, link)
-            self.link = link
-        return str(link) if link is not None else self.path
+        except OSError as exc:
+            raise EmulatorError(f"--link {link}: cannot make the link: "
+                                f"{exc.strerror or exc}") from None
+        self.link = link
 
     def close(self) -> None:
         """Close the pty (hosts see the port vanish) and remove the symlink if it is ours."""
