@@ -13,6 +13,9 @@ protocols run side by side: the servicebot binary frames and ROSArduinoBridge te
    came off the paced wire. Medians over repeated runs.
 
     .venv/bin/python bench/drive.py [--repeat 5] [--seconds 3]
+
+It needs the test extra (``pip install -e '.[test]'``): it runs the emulator through the
+tests' helper. No peer tool needs installing: the two protocols are the comparison.
 """
 
 from __future__ import annotations
