@@ -84,10 +84,7 @@ def drive(robot_args: RobotArgs, port: str | None, baud: int | None, protocol: s
     _check_rate(rate, link, baud, link_timeout)
     source = _source(script, linear, angular, duration, arm, motors, link, max_accel)
     if dry_run:
-        from servicebot_cli.link.dry_run import dry_run_lines
-
-        for line in dry_run_lines(source, link, motors, max_accel, rate):
-            click.echo(line)
+        _dry_run(source, link, motors, max_accel, rate, fmt)
         return
     from servicebot_cli.link.driving import DriveRequest
 
@@ -158,6 +155,20 @@ def _source(script: str | None, linear: float | None, angular: float | None,
 
         return one_shot_plan(linear, angular, duration, arm, motors, link, max_accel)
     return None  # teleop, set up once the terminal is checked
+
+
+def _dry_run(plan: Any, link: Any, motors: Any, max_accel: float, rate: float, fmt: str) -> None:
+    from servicebot_cli.link.dry_run import dry_run_lines, planned_frames
+    from servicebot_cli.output.jsonable import dumps
+
+    if plan is None:
+        raise click.UsageError("--dry-run needs a plan: --script FILE or "
+                               "--linear/--angular/--duration (teleop has no frames to plan)")
+    if fmt == "json":
+        click.echo(dumps(list(planned_frames(plan, link, motors, max_accel, rate))), nl=False)
+        return
+    for line in dry_run_lines(plan, link, motors, max_accel, rate):
+        click.echo(line)
 
 
 def _run(request: Any, link: Any, motors: Any, source: Any, fmt: str) -> None:

@@ -129,3 +129,20 @@ def test_a_run_that_never_connected_leaves_no_log(run, tmp_path, fake_device):
                  *ONE_SHOT)
     assert result.exit_code == 4
     assert list(tmp_path.iterdir()) == []
+
+
+def test_dry_run_as_json(run):
+    import json
+
+    result = run("drive", "--dry-run", "--format", "json", "--linear", "0.01", "--duration",
+                 "0.1")
+    assert result.exit_code == 0, result.stderr
+    frames = json.loads(result.stdout)
+    assert [f["meaning"].split()[0] for f in frames] == ["PING", "SET_WHEELS", "SET_WHEELS",
+                                                        "STOP"]
+    assert frames[1] == {"t_s": 0.0, "bytes_hex": "aa 55 08 02 10 32 00 32 00 32 00 32 00 35 34",
+                         "meaning": "SET_WHEELS seq=2 [+0.050 +0.050 +0.050 +0.050] rad/s"}
+
+
+def test_dry_run_needs_a_plan(run):
+    assert_one_line_error(run("drive", "--dry-run"), 2, "--dry-run needs a plan")
