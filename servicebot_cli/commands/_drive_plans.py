@@ -30,7 +30,7 @@ class NoTerminal(ServicebotError):
     exit_code = ExitCode.USAGE
 
 
-def script_plan(script: str, motors: MotorMap, link: Any, max_accel: float) -> Plan:
+def script_plan(script: str, motors: MotorMap, link: Any) -> Plan:
     """The plan of a script file (``-`` for stdin), checked line by line.
 
     Raises:
@@ -56,8 +56,7 @@ def script_plan(script: str, motors: MotorMap, link: Any, max_accel: float) -> P
 
 
 def one_shot_plan(linear: float | None, angular: float | None, duration: float | None,
-                  arm: tuple[tuple[str, float], ...], motors: MotorMap, link: Any,
-                  max_accel: float) -> Plan:
+                  arm: tuple[tuple[str, float], ...], motors: MotorMap, link: Any) -> Plan:
     """The plan of ``--linear/--angular/--duration/--arm``.
 
     Raises:

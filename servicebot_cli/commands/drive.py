@@ -13,14 +13,7 @@ from servicebot_cli.commands._serial import (
     arduino_config,
     serial_options,
 )
-from servicebot_cli.errors import ExitCode, ServicebotError
 from servicebot_cli.options import JointValue, RobotArgs, format_option, robot_arguments
-
-
-class DriveUsageError(ServicebotError):
-    """A drive request that cannot run as given (exit 2)."""
-
-    exit_code = ExitCode.USAGE
 
 
 @click.command()
@@ -82,7 +75,7 @@ def drive(robot_args: RobotArgs, port: str | None, baud: int | None, protocol: s
     link = _link(protocol, motors, arduino_config(protocol, ticks_per_rev, pid_rate))
     port, baud = _port_and_baud(robot, port, baud, dry_run)
     _check_rate(rate, link, baud, link_timeout)
-    source = _source(script, linear, angular, duration, arm, motors, link, max_accel)
+    source = _source(script, linear, angular, duration, arm, motors, link)
     if dry_run:
         _dry_run(source, link, motors, max_accel, rate, fmt)
         return
@@ -142,18 +135,18 @@ def _check_rate(rate: float, link: Any, baud: int, link_timeout: float) -> None:
 
 def _source(script: str | None, linear: float | None, angular: float | None,
             duration: float | None, arm: tuple[tuple[str, float], ...], motors: Any,
-            link: Any, max_accel: float) -> Any:
+            link: Any) -> Any:
     one_shot = any(v is not None for v in (linear, angular, duration)) or bool(arm)
     if script is not None and one_shot:
         raise click.UsageError("give --script or --linear/--angular/--duration/--arm, not both")
     if script is not None:
         from servicebot_cli.commands._drive_plans import script_plan
 
-        return script_plan(script, motors, link, max_accel)
+        return script_plan(script, motors, link)
     if one_shot:
         from servicebot_cli.commands._drive_plans import one_shot_plan
 
-        return one_shot_plan(linear, angular, duration, arm, motors, link, max_accel)
+        return one_shot_plan(linear, angular, duration, arm, motors, link)
     return None  # teleop, set up once the terminal is checked
 
 

@@ -204,11 +204,6 @@ class ArduinoLink:
         """Garbage lines, unexpected replies and refusals so far."""
         return self._lines.garbage + self.unexpected + self.refused
 
-    @property
-    def received_bytes_discarded(self) -> int:
-        """Lines dropped as garbage (the text protocol counts lines, not bytes)."""
-        return self._lines.garbage + self.unexpected
-
     def describe(self, data: bytes) -> str:
         """The commands in ``data`` with the speeds they mean, for ``--dry-run``."""
         parts = []

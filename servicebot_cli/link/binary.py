@@ -124,11 +124,6 @@ class BinaryLink:
         """Rejected frames, malformed payloads and refusals so far."""
         return self._decoder.stats.errors + self.malformed + self.refused
 
-    @property
-    def received_bytes_discarded(self) -> int:
-        """Bytes dropped while hunting for frames (garbage on the line)."""
-        return self._decoder.stats.discarded_bytes
-
     def describe(self, data: bytes) -> str:
         """The frames in ``data``, decoded, for ``--dry-run``."""
         return "; ".join(msg.describe(frame) for frame in Decoder().feed(data))
