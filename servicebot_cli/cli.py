@@ -15,6 +15,7 @@ import click
 from servicebot_cli import __version__
 from servicebot_cli.commands.check import check
 from servicebot_cli.commands.drive import drive
+from servicebot_cli.commands.emulate import emulate
 from servicebot_cli.commands.expand import expand
 from servicebot_cli.commands.fk import fk
 from servicebot_cli.commands.ik import ik
@@ -104,5 +105,5 @@ def main(debug: bool) -> None:
     """
 
 
-for _command in (check, inspect, fk, ik, simulate, drive, expand):
+for _command in (check, inspect, fk, ik, simulate, drive, emulate, expand):
     main.add_command(_command)

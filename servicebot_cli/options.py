@@ -36,6 +36,7 @@ class RobotArgs:
         bundled: The ``--robot`` name, or None.
         packages: ``--package NAME=DIR`` pairs.
         values: The positional values as given, files and ``name:=value`` interleaved.
+        default: The bundled robot used when neither a file nor ``--robot`` is given.
     """
 
     files: tuple[str, ...]
@@ -43,9 +44,10 @@ class RobotArgs:
     bundled: str | None
     packages: tuple[tuple[str, str], ...]
     values: tuple[str, ...] = ()
+    default: str = DEFAULT_ROBOT
 
     def source(self) -> Any:
-        """The one RobotSource these arguments name (the bundled sim robot by default).
+        """The one RobotSource these arguments name (:attr:`default` when none is named).
 
         Raises:
             click.UsageError: Several files, or a file and ``--robot`` together.
@@ -62,7 +64,7 @@ class RobotArgs:
         if self.files:
             return RobotSource.of(self.files[0], xacro_args=self.xacro_args,
                                   packages=self.packages)
-        bundled = RobotSource.bundled(self.bundled or DEFAULT_ROBOT)
+        bundled = RobotSource.bundled(self.bundled or self.default)
         if self.xacro_args:
             raise click.UsageError(
                 "xacro arguments need a xacro FILE; the bundled robots are plain URDF "
@@ -167,12 +169,14 @@ class RobotArgument(click.ParamType):
         return [CompletionItem(incomplete, type="file")]
 
 
-def robot_arguments(multiple: bool = False) -> Callable[[F], F]:
+def robot_arguments(multiple: bool = False, default: str = DEFAULT_ROBOT) -> Callable[[F], F]:
     """Add ``[FILE] [NAME:=VALUE]...``, ``--robot`` and ``--package``; pass ``robot_args``.
 
     Args:
         multiple: Document several files (``check``); the command then reads
             ``robot_args.files`` itself instead of calling ``robot_args.source()``.
+        default: The bundled robot used when neither a file nor ``--robot`` is given
+            (``drive`` and ``emulate`` talk to the real robot's motors: ``real``).
     """
     metavar = "[FILE]... [NAME:=VALUE]..." if multiple else "[FILE] [NAME:=VALUE]..."
 
@@ -181,7 +185,8 @@ def robot_arguments(multiple: bool = False) -> Callable[[F], F]:
         def wrapper(*args: Any, robot_values: tuple[str, ...], bundled: str | None,
                     packages: tuple[tuple[str, str], ...], **kwargs: Any) -> Any:
             files, xacro_args = split_robot_args(robot_values)
-            robot_args = RobotArgs(files, xacro_args, bundled, packages, tuple(robot_values))
+            robot_args = RobotArgs(files, xacro_args, bundled, packages, tuple(robot_values),
+                                   default)
             return f(*args, robot_args=robot_args, **kwargs)
 
         wrapper = click.option(
@@ -192,7 +197,7 @@ def robot_arguments(multiple: bool = False) -> Callable[[F], F]:
         wrapper = click.option(
             "--robot", "bundled", type=BundledRobot(), default=None,
             help=f"Use a bundled robot by name: {', '.join(BUNDLED_ROBOTS)} "
-            f"(default: {DEFAULT_ROBOT} when no FILE is given).",
+            f"(default: {default} when no FILE is given).",
         )(wrapper)
         wrapper = click.argument(
             "robot_values", nargs=-1, type=RobotArgument(), metavar=metavar

@@ -14,9 +14,9 @@ from servicebot_cli.description.safe_xml import parse_xml
 from servicebot_cli.errors import UnsafeXmlError, XmlError
 from tests.conftest import SIM_URDF, XACRO_SOURCE, assert_one_line_error
 
-COMMANDS = ["check", "inspect", "fk", "ik", "simulate", "drive", "expand"]
+COMMANDS = ["check", "inspect", "fk", "ik", "simulate", "drive", "emulate", "expand"]
 # check reports a malformed file as a finding (exit 1); every other command refuses it (exit 2)
-LOADING_COMMANDS = ["inspect", "fk", "ik", "simulate", "drive", "expand"]
+LOADING_COMMANDS = ["inspect", "fk", "ik", "simulate", "drive", "emulate", "expand"]
 
 
 @pytest.mark.parametrize("command", COMMANDS)
@@ -56,14 +56,14 @@ def test_file_and_robot_together(run, command):
     assert_one_line_error(run(command, SIM_URDF, "--robot", "real"), 2, "not both")
 
 
-@pytest.mark.parametrize("command", ["inspect", "fk", "ik", "simulate", "drive"])
+@pytest.mark.parametrize("command", ["inspect", "fk", "ik", "simulate", "drive", "emulate"])
 def test_not_a_robot(run, command, tmp_path):
     other = tmp_path / "model.sdf"
     other.write_text('<sdf version="1.6"><model name="m"/></sdf>')
     assert_one_line_error(run(command, other), 2, "root element is <sdf>, not <robot>")
 
 
-@pytest.mark.parametrize("command", ["inspect", "fk", "ik", "simulate", "drive"])
+@pytest.mark.parametrize("command", ["inspect", "fk", "ik", "simulate", "drive", "emulate"])
 def test_urdf_that_pinocchio_rejects(run, command, tmp_path):
     bad = tmp_path / "nolimits.urdf"
     bad.write_text('<robot name="r"><link name="a"/><link name="b"/>'

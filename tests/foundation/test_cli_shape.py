@@ -12,7 +12,7 @@ import pytest
 from servicebot_cli import __version__
 from tests.conftest import REPO, SIM_URDF, run_servicebot
 
-SUBCOMMANDS = ["check", "drive", "expand", "fk", "ik", "inspect", "simulate"]
+SUBCOMMANDS = ["check", "drive", "emulate", "expand", "fk", "ik", "inspect", "simulate"]
 HEAVY = {"pinocchio", "trimesh", "yourdfpy", "matplotlib", "numpy", "xacro", "serial", "scipy",
          "lxml"}
 
@@ -55,7 +55,8 @@ def test_each_subcommand_has_help_with_the_robot_arguments(run, command):
     assert "--robot" in result.stdout and "--package" in result.stdout
 
 
-@pytest.mark.parametrize("args", [["--help"], ["fk", "--help"], ["check", "--help"]])
+@pytest.mark.parametrize("args", [["--help"], ["fk", "--help"], ["check", "--help"],
+                                  ["drive", "--help"], ["emulate", "--help"]])
 def test_help_imports_nothing_heavy(args):
     modules, stdout = _imported(args)
     assert "Usage:" in stdout

@@ -1,0 +1,67 @@
+"""What to drive: timed steps of twists and arm targets, asked for by time.
+
+A :class:`Plan` is the drive loop's source for a script or a one-shot command. Arm
+assignments are cumulative: a joint keeps the last target it was given, and joints never
+named hold the position the firmware reported when the run began.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Setpoint:
+    """What the robot should do now.
+
+    Attributes:
+        linear_m_s: Forward speed [m/s].
+        angular_rad_s: Yaw rate, counter-clockwise positive [rad/s].
+        arm: Arm targets given so far, ``(joint, rad)`` pairs; empty leaves the arm alone.
+    """
+
+    linear_m_s: float
+    angular_rad_s: float
+    arm: tuple[tuple[str, float], ...] = ()
+
+
+@dataclass(frozen=True)
+class Step:
+    """One timed step.
+
+    Attributes:
+        duration_s: How long it lasts [s].
+        linear_m_s: Forward speed [m/s].
+        angular_rad_s: Yaw rate [rad/s].
+        arm: Arm targets that start with this step, ``(joint, rad)`` pairs.
+        line: Line of the script it came from (0 for a one-shot command).
+        arm_line: Line of the first ``arm`` line among ``arm`` (0 when none).
+    """
+
+    duration_s: float
+    linear_m_s: float
+    angular_rad_s: float
+    arm: tuple[tuple[str, float], ...] = ()
+    line: int = 0
+    arm_line: int = 0
+
+
+class Plan:
+    """Timed steps in order; ``setpoint(t)`` is None once they are over."""
+
+    fds: tuple[int, ...] = ()
+
+    def __init__(self, steps: list[Step]) -> None:
+        self.steps = steps
+        self.duration_s = sum(step.duration_s for step in steps)
+
+    def setpoint(self, t_s: float) -> Setpoint | None:
+        """The setpoint ``t_s`` seconds after the start, or None when the plan is over."""
+        start = 0.0
+        arm: dict[str, float] = {}
+        for step in self.steps:
+            arm.update(step.arm)
+            if t_s < start + step.duration_s:
+                return Setpoint(step.linear_m_s, step.angular_rad_s, tuple(arm.items()))
+            start += step.duration_s
+        return None

@@ -1,0 +1,45 @@
+"""emulate's bad input: one line, exit 2, nothing left behind."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.conftest import assert_one_line_error
+
+
+@pytest.mark.parametrize(("args", "needles"), [
+    (("--drop", "2"), ("'--drop'", "give a number from 0 to 1")),
+    (("--corrupt", "-0.1"), ("'--corrupt'",)),
+    (("--latency", "-1"), ("must not be negative",)),
+    (("--die-after", "0"), ("must be above 0",)),
+    (("--protocol", "arduino"), ("--ticks-per-rev", "needed with --protocol arduino")),
+    (("--watchdog-ms", "0"), ("'--watchdog-ms'",)),
+])
+def test_bad_options(run, args, needles):
+    assert_one_line_error(run("emulate", *args), 2, *needles)
+
+
+def test_a_state_file_in_a_missing_directory(run, tmp_path):
+    result = run("emulate", "--state-file", tmp_path / "none" / "state.json")
+    assert_one_line_error(result, 2, "does not exist")
+    assert result.stdout == ""  # no device was announced
+
+
+def test_a_link_that_cannot_be_made(run, tmp_path):
+    assert_one_line_error(run("emulate", "--link", tmp_path / "none" / "tty"), 2,
+                          "cannot make the link")
+    assert_one_line_error(run("emulate", "--link", tmp_path), 2, "is a directory")
+
+
+def test_a_robot_the_binary_protocol_cannot_carry(run, tmp_path):
+    from tests.conftest import REAL_URDF
+
+    urdf = tmp_path / "three_arm_joints.urdf"
+    text = REAL_URDF.read_text()
+    text = text.replace('<joint name="arm_link3_to_link4" type="revolute">',
+                        '<joint name="arm_link3_to_link4" type="fixed">')
+    urdf.write_text(text)
+    assert_one_line_error(run("emulate", urdf), 2, "carries 4 wheels and 4 arm joints",
+                          "3 arm joints")
+    assert_one_line_error(run("drive", urdf, "--dry-run", "--duration", "1"), 2,
+                          "carries 4 wheels and 4 arm joints")

@@ -1,0 +1,120 @@
+"""Teleop on a real terminal (a pty), the emulator in another process; and key parsing."""
+
+from __future__ import annotations
+
+import fcntl
+import os
+import pty
+import select
+import struct
+import subprocess
+import sys
+import termios
+import time
+
+import pytest
+
+from servicebot_cli.link.teleop import Teleop, parse_keys
+from tests.conftest import REPO
+from tests.drive.conftest import PATIENCE_S, wait_for
+
+
+def test_keys():
+    assert parse_keys(b"w\x1b[Aa\x1b[D s") == ["forward", "forward", "left", "left", "stop",
+                                                  "back"]
+    assert parse_keys(b"\x1b") == ["quit"] and parse_keys(b"zq") == ["quit"]
+
+
+def test_keys_step_the_twist_within_the_limits():
+    teleop = Teleop(0, 0.035, 0.13)
+    for _ in range(15):
+        teleop.apply("forward")
+    teleop.apply("left")
+    setpoint = teleop.setpoint(0.0)
+    assert setpoint.linear_m_s == pytest.approx(0.035) and setpoint.angular_rad_s == \
+        pytest.approx(0.013)
+    teleop.apply("stop")
+    assert teleop.setpoint(0.0).linear_m_s == 0.0
+    teleop.apply("quit")
+    assert teleop.setpoint(0.0) is None
+
+
+class Terminal:
+    """``servicebot drive`` with a pty as its controlling terminal."""
+
+    def __init__(self, *args: object, columns: int = 200) -> None:
+        self.master, slave = pty.openpty()
+        fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", 24, columns, 0, 0))
+        self.before = termios.tcgetattr(slave)
+        self.slave = slave
+
+        def controlling_terminal() -> None:
+            os.setsid()
+            fcntl.ioctl(0, termios.TIOCSCTTY, 0)
+
+        self.proc = subprocess.Popen(
+            [sys.executable, "-m", "servicebot_cli", "drive", *map(str, args)], cwd=REPO,
+            stdin=slave, stdout=slave, stderr=slave, preexec_fn=controlling_terminal)
+        self.output = b""
+
+    def read(self) -> str:
+        while select.select([self.master], [], [], 0)[0]:
+            try:
+                self.output += os.read(self.master, 4096)
+            except OSError:
+                break
+        return self.output.decode(errors="replace")
+
+    def type(self, keys: bytes) -> None:
+        os.write(self.master, keys)
+
+    def finish(self) -> int:
+        deadline = time.monotonic() + PATIENCE_S
+        while self.proc.poll() is None and time.monotonic() < deadline:
+            self.read()
+            time.sleep(0.02)
+        code = self.proc.wait(timeout=1)
+        self.read()
+        return code
+
+    def close(self) -> None:
+        os.close(self.master)
+        os.close(self.slave)
+
+
+@pytest.mark.parametrize(("ending", "code"), [(b"q", 0), (b"\x03", 130)])
+def test_teleop_drives_shows_status_and_restores_the_terminal(emulator, ending, code):
+    emu = emulator()
+    terminal = Terminal("--port", emu.path)
+    try:
+        wait_for(lambda: "link" in terminal.read() and "cmd L" in terminal.output.decode(),
+                 "the status line")
+        terminal.type(b"www")
+        wait_for(lambda: any(w["velocity_rad_s"] > 0 for w in emu.state()["wheels"]),
+                 "the wheels to turn forward")
+        terminal.type(b"a")
+        terminal.type(ending)
+        assert terminal.finish() == code, terminal.read()
+        assert termios.tcgetattr(terminal.slave) == terminal.before  # cbreak mode undone
+        text = terminal.read()
+        assert "meas L+" in text and "errors 0" in text and "q quits" in text
+        wait_for(lambda: emu.state()["counters"]["stops"] == 1, "the stop")
+        assert not emu.state()["moving"]
+    finally:
+        if terminal.proc.poll() is None:
+            terminal.proc.kill()
+        terminal.close()
+
+
+def test_the_status_line_fits_a_narrow_terminal(emulator):
+    emu = emulator()
+    terminal = Terminal("--port", emu.path, columns=60)
+    try:
+        wait_for(lambda: "cmd L" in terminal.read(), "the status line")
+        terminal.type(b"q")
+        assert terminal.finish() == 0
+        lines = [part for chunk in terminal.read().split("\r\x1b[K") for part in
+                 chunk.split("\r\n") if "cmd L" in part]
+        assert lines and all(len(line) < 60 for line in lines)
+    finally:
+        terminal.close()
