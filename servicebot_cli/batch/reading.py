@@ -12,16 +12,15 @@ or, failing that, from the first meaningful character: ``{`` means JSON Lines.
 from __future__ import annotations
 
 import csv
-import io
 import itertools
 import json
-import sys
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import IO, Any
 
 from servicebot_cli.errors import ServicebotError
+from servicebot_cli.inputs import open_input_text
 
 CSV_SUFFIXES = (".csv", ".tsv")
 _JSON_KINDS = {list: "array", str: "string", int: "number", float: "number", bool: "boolean",
@@ -72,7 +71,7 @@ def open_source(path: str) -> tuple[Source, IO[str]]:
         BatchInputError: Missing, a directory, unreadable, empty, or a bad CSV header.
     """
     display = "<stdin>" if path == "-" else path
-    handle = _open(path, display)
+    handle = open_input_text(path, kind="a CSV or JSON Lines file", error=BatchInputError)
     lines = _numbered(handle)
     first = next(lines, None)
     if first is None:
@@ -85,22 +84,6 @@ def open_source(path: str) -> tuple[Source, IO[str]]:
     header = _split(first[1], delimiter)
     _check_header(display, first[0], header)
     return Source(display, kind, tuple(header), _csv_rows(lines, header, delimiter)), handle
-
-
-def _open(path: str, display: str) -> IO[str]:
-    if path == "-":
-        return io.TextIOWrapper(sys.stdin.buffer, encoding="utf-8", errors="replace")
-    target = Path(path)
-    try:
-        if target.is_dir():
-            raise BatchInputError(f"{display}: is a directory; give a CSV or JSON Lines file")
-        return target.open(encoding="utf-8", errors="replace", newline="")
-    except FileNotFoundError:
-        raise BatchInputError(f"{display}: no such file") from None
-    except PermissionError:
-        raise BatchInputError(f"{display}: permission denied; make it readable") from None
-    except OSError as exc:
-        raise BatchInputError(f"{display}: cannot read: {exc.strerror or exc}") from None
 
 
 def _numbered(handle: IO[str]) -> Iterator[tuple[int, str]]:

@@ -9,12 +9,12 @@ import contextlib
 import os
 import sys
 from collections.abc import Callable, Iterator
-from pathlib import Path
 from typing import Any
 
 import click
 
 from servicebot_cli.errors import ExitCode, NameNotFound, OutOfLimits, ServicebotError
+from servicebot_cli.inputs import read_input_text
 from servicebot_cli.kinematics.diff_drive import body_twist
 from servicebot_cli.link.motors import MotorMap
 from servicebot_cli.link.plan import Plan, Step
@@ -37,16 +37,7 @@ def script_plan(script: str, motors: MotorMap, link: Any) -> Plan:
         ScriptError: Unreadable, or a line that is wrong (named by number).
     """
     name = "<stdin>" if script == "-" else script
-    try:
-        text = sys.stdin.read() if script == "-" else Path(script).read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise ScriptError(f"{script}: no such file; give a drive script or '-' for stdin") from None
-    except IsADirectoryError:
-        raise ScriptError(f"{script}: is a directory; give a drive script file") from None
-    except PermissionError:
-        raise ScriptError(f"{script}: permission denied") from None
-    except UnicodeDecodeError as exc:
-        raise ScriptError(f"{name}: not UTF-8 text ({exc.reason}); save it as UTF-8") from None
+    text = read_input_text(script, kind="a drive script, or '-' for stdin", error=ScriptError)
     steps = parse_script(text, name, motors)
     for step in steps:
         if step.arm and not link.has_arm:

@@ -86,7 +86,7 @@ def check_controller_files(values: tuple[str, ...], urdfs: tuple[str, ...], bund
                            settings: Settings) -> CheckResult:
     """Check a controllers YAML against each URDF."""
     from servicebot_cli.checks import controllers
-    from servicebot_cli.description.loader import read_bytes
+    from servicebot_cli.inputs import display_path, read_input_text
 
     yaml_files, xacro_args = split_robot_args(values)
     if len(yaml_files) > 1:
@@ -94,11 +94,9 @@ def check_controller_files(values: tuple[str, ...], urdfs: tuple[str, ...], bund
     if urdfs and bundled:
         raise click.UsageError(f"give --urdf or --robot {bundled}, not both")
     yaml_path = Path(yaml_files[0]) if yaml_files else bundled_file(CONTROLLERS_YAML)
-    display = yaml_files[0] if yaml_files else f"{CONTROLLERS_YAML} (bundled)"
-    if not yaml_path.is_file():
-        problem = "is a directory" if yaml_path.is_dir() else "no such file"
-        raise DescriptionError(f"{display}: {problem}; give a ros2_control controllers YAML")
-    text = read_bytes(yaml_path, display).decode("utf-8", "replace")
+    display = yaml_files[0] if yaml_files else display_path(yaml_path)
+    text = read_input_text(str(yaml_path), kind="a ros2_control controllers YAML",
+                           error=DescriptionError)
     sources = [RobotSource.of(u, xacro_args=xacro_args, packages=packages) for u in urdfs]
     if not urdfs:
         if xacro_args:

@@ -16,6 +16,7 @@ from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.robot import RobotDescription
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
 from servicebot_cli.errors import DescriptionError
+from servicebot_cli.inputs import display_path, read_input_bytes
 
 XACRO_SUFFIXES = (".xacro",)
 
@@ -40,7 +41,7 @@ class RobotSource:
     def bundled(cls, name: str = resources.DEFAULT_ROBOT) -> RobotSource:
         """The bundled robot called ``name``."""
         path = resources.bundled_robot(name)
-        return cls(path=path, display=_display_path(path))
+        return cls(path=path, display=display_path(path))
 
     @classmethod
     def of(cls, path: str | os.PathLike[str], **kwargs: object) -> RobotSource:
@@ -52,43 +53,14 @@ class RobotSource:
         return PackageResolver.from_environment({k: Path(v) for k, v in self.packages})
 
 
-def _display_path(path: Path) -> str:
-    """``path`` relative to the working directory when inside it, else absolute.
-
-    A real path, so editors and CI annotations can open what a message points at.
-    """
-    try:
-        return str(path.resolve().relative_to(Path.cwd()))
-    except ValueError:
-        return str(path.resolve())
-
-
 def read_bytes(path: Path, display: str, max_bytes: int = MAX_BYTES) -> bytes:
-    """The content of ``path``, or one DescriptionError that says what to do.
+    """The content of a description file, or one DescriptionError that says what to do.
 
     Raises:
         DescriptionError: Missing, a directory, unreadable, or larger than ``max_bytes``.
     """
-    try:
-        if path.is_dir():
-            raise DescriptionError(f"{display}: is a directory; give a URDF or xacro file")
-        size = path.stat().st_size
-        if size > max_bytes:
-            raise DescriptionError(
-                f"{display}: file is {size / 1e6:.1f} MB, over the {max_bytes / 1e6:.0f} MB "
-                "limit for a robot description; is this really a URDF?"
-            )
-        return path.read_bytes()
-    except FileNotFoundError:
-        raise DescriptionError(
-            f"{display}: no such file; give a URDF or xacro file, or --robot sim|real"
-        ) from None
-    except PermissionError:
-        raise DescriptionError(
-            f"{display}: permission denied; make it readable (chmod +r) or run as its owner"
-        ) from None
-    except OSError as exc:
-        raise DescriptionError(f"{display}: cannot read: {exc.strerror or exc}") from None
+    return read_input_bytes(path, display, kind="a URDF or xacro file, or --robot sim|real",
+                            error=DescriptionError, max_bytes=max_bytes)
 
 
 def is_xacro(path: Path, data: bytes) -> bool:

@@ -15,6 +15,7 @@ from typing import Any
 
 from servicebot_cli.description.extensions import param
 from servicebot_cli.errors import DescriptionError
+from servicebot_cli.inputs import display_path, read_input_text
 
 DEFAULT_NAME = "controllers.yaml"
 
@@ -74,24 +75,16 @@ def read_controllers(path: Path, found_by: str) -> Controllers:
     """
     import yaml
 
+    text = read_input_text(str(path), kind="a ros2_control controllers YAML (--controllers)",
+                           error=ControllersError)
     try:
-        document = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise ControllersError(f"{path}: cannot read: {exc.strerror or exc}") from None
-    except (yaml.YAMLError, UnicodeDecodeError) as exc:
+        document = yaml.safe_load(text)
+    except yaml.YAMLError as exc:
         where = getattr(exc, "problem_mark", None)
         line = f":{where.line + 1}" if where is not None else ""
         raise ControllersError(f"{path}{line}: not valid YAML; fix the file or give "
                                "another with --controllers") from None
-    return parse_controllers(document, _display(path), found_by)
-
-
-def _display(path: Path) -> str:
-    """``path`` relative to the working directory when it is below it, else absolute."""
-    try:
-        return str(path.resolve().relative_to(Path.cwd().resolve()))
-    except ValueError:
-        return str(path)
+    return parse_controllers(document, display_path(path), found_by)
 
 
 def parse_controllers(document: Any, file: str, found_by: str) -> Controllers:

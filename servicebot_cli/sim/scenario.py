@@ -11,6 +11,7 @@ import math
 from dataclasses import dataclass, field
 from pathlib import Path as FsPath
 
+from servicebot_cli.inputs import read_input_text
 from servicebot_cli.sim.located import Located, Path, ScenarioError, parse
 from servicebot_cli.sim.schema import Reader
 
@@ -166,22 +167,8 @@ def load_scenario(path: str | FsPath | None) -> Scenario:
     """
     file = DEFAULT_SCENARIO if path is None else FsPath(path)
     display = "default scenario" if path is None else str(path)
-    try:
-        if file.is_dir():
-            raise ScenarioError(f"{display}: is a directory; give a YAML or JSON scenario file")
-        if file.stat().st_size > MAX_SCENARIO_BYTES:
-            raise ScenarioError(f"{display}: over {MAX_SCENARIO_BYTES // 1_000_000} MB; "
-                                "is this really a scenario?")
-        text = file.read_bytes().decode("utf-8")
-    except FileNotFoundError:
-        raise ScenarioError(f"{display}: no such file; give a YAML or JSON scenario, or none "
-                            "for the built-in one") from None
-    except PermissionError:
-        raise ScenarioError(f"{display}: permission denied; make it readable") from None
-    except UnicodeDecodeError:
-        raise ScenarioError(f"{display}: not UTF-8 text; give a YAML or JSON file") from None
-    except OSError as exc:
-        raise ScenarioError(f"{display}: cannot read: {exc.strerror or exc}") from None
+    text = read_input_text(str(file), kind="a YAML or JSON scenario, or none for the built-in "
+                           "one", error=ScenarioError, max_bytes=MAX_SCENARIO_BYTES)
     located = parse(text, display, json_syntax=file.suffix.lower() == ".json")
     return read_scenario(located, name="default" if path is None else file.stem)
 

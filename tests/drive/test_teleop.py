@@ -92,6 +92,7 @@ def test_teleop_drives_shows_status_and_restores_the_terminal(emulator, ending, 
         terminal.type(b"www")
         wait_for(lambda: any(w["velocity_rad_s"] > 0 for w in emu.state()["wheels"]),
                  "the wheels to turn forward")
+        wait_for(lambda: "meas L+" in terminal.read(), "the measured speed on the status line")
         terminal.type(b"a")
         terminal.type(ending)
         assert terminal.finish() == code, terminal.read()
