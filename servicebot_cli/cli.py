@@ -96,7 +96,7 @@ def main(debug: bool) -> None:
 
     Every command takes the robot description as an optional argument: a URDF or xacro
     file, then xacro arguments NAME:=VALUE. Without one it uses the bundled simulation
-    robot; --robot real picks the bundled real one.
+    robot (drive and emulate: the real one); --robot sim|real picks a bundled one.
 
     \b
     Exit codes: 0 ok, 1 the answer is no (findings, a difference, no IK solution),

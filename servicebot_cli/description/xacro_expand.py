@@ -237,7 +237,12 @@ class _Tracer:
         if isinstance(inner, OSError):
             return XacroError(f"{where}: cannot read included file '{inner.filename}': "
                               f"{inner.strerror}")
-        message = " ".join(str(exc).split()) or type(exc).__name__
+        import xacro
+
+        # A deliberate error (xacro.fatal in the file, or xacro's own checks) says it all;
+        # the "when evaluating expression" context only helps for Python errors.
+        shown = inner if isinstance(inner, xacro.XacroException) and inner.exc is None else exc
+        message = " ".join(str(shown).split()) or type(exc).__name__
         return XacroError(f"{where}: xacro: {message}")
 
     def take_origins(self, doc: xml.dom.minidom.Document) -> list[SourceRef | None]:

@@ -14,7 +14,7 @@ import yaml
 from servicebot_cli.description.drive_geometry import drive_geometry
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.description.sensors import camera_spec, imu_spec, lidar_spec
-from tests.conftest import CONTROLLERS_YAML, REAL_URDF, SIM_URDF, XACRO_SOURCE
+from tests.conftest import CONTROLLERS_YAML, REAL_URDF, REPO, SIM_URDF, XACRO_SOURCE
 
 
 @pytest.mark.parametrize(("hardware", "committed"), [("sim", SIM_URDF), ("real", REAL_URDF)])
@@ -190,7 +190,9 @@ def test_controllers_yaml_agrees_with_the_urdf():
     ]
 
 
-def test_unknown_hardware_argument_is_refused(run):
-    result = run("expand", XACRO_SOURCE, "hardware:=hil")
+def test_unknown_hardware_argument_is_refused(run, monkeypatch):
+    monkeypatch.chdir(REPO)
+    result = run("expand", "robots/service_robot.urdf.xacro", "hardware:=hil")
     assert result.exit_code == 2
-    assert "hardware:=hil is unknown; use hardware:=sim or hardware:=real" in result.stderr
+    assert result.stderr == ("Error: robots/service_robot.urdf.xacro:63:3: xacro: hardware:=hil "
+                             "is unknown; use hardware:=sim or hardware:=real\n")
