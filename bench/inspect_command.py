@@ -5,7 +5,7 @@ gives medians and the ratio to check_urdf. Peers: check_urdf and urdf_to_graphvi
 installed with Pinocchio) and yourdfpy (load plus a scene bounding box, as a Python user
 would measure it).
 
-    python bench/inspect.py [REPEATS]
+    python bench/inspect_command.py [REPEATS]
 """
 
 from __future__ import annotations
