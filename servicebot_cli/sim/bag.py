@@ -16,6 +16,7 @@ import numpy as np
 
 from servicebot_cli import __version__
 from servicebot_cli.output.files import OutputError, atomic_directory
+from servicebot_cli.sim.mcap_file import Channel, write_mcap
 from servicebot_cli.sim.msgdefs import MESSAGE_DEFINITIONS
 from servicebot_cli.sim.ros_messages import Stream
 
@@ -46,29 +47,19 @@ def write_bag(path: str | os.PathLike[str], streams: Sequence[Stream]) -> None:
 
 
 def _write_mcap(file: Path, streams: Sequence[Stream]) -> None:
-    from mcap.writer import CompressionType, Writer
-
+    channels = [Channel(topic=s.topic, message_encoding="cdr", schema_name=s.type,
+                        schema_encoding="ros2msg", schema_data=MESSAGE_DEFINITIONS[s.type].encode(),
+                        metadata={"offered_qos_profiles": _LATCHED_QOS if s.latched else ""})
+                for s in streams]
+    stamps = np.concatenate([s.stamps_ns for s in streams])
+    which = np.concatenate([np.full(len(s.payloads), i) for i, s in enumerate(streams)])
+    index = np.concatenate([np.arange(len(s.payloads)) for s in streams])
+    order = np.argsort(stamps, kind="stable")  # one stream's messages stay in their order
+    payloads = [p for s in streams for p in s.payloads]
     with file.open("wb") as handle:
-        writer = Writer(handle, compression=CompressionType.ZSTD)
-        writer.start(profile="ros2", library=f"servicebot {__version__}")
-        channels = []
-        for stream in streams:
-            schema = writer.register_schema(name=stream.type, encoding="ros2msg",
-                                            data=MESSAGE_DEFINITIONS[stream.type].encode())
-            metadata = {"offered_qos_profiles": _LATCHED_QOS if stream.latched else ""}
-            channels.append(writer.register_channel(topic=stream.topic, message_encoding="cdr",
-                                                    schema_id=schema, metadata=metadata))
-        stamps = np.concatenate([s.stamps_ns for s in streams])
-        which = np.concatenate([np.full(len(s.payloads), i) for i, s in enumerate(streams)])
-        index = np.concatenate([np.arange(len(s.payloads)) for s in streams])
-        order = np.argsort(stamps, kind="stable")
-        payloads = [p for s in streams for p in s.payloads]
-        channel_of = np.array(channels)[which[order]].tolist()
-        add = writer.add_message
-        for channel, t, sequence, k in zip(channel_of, stamps[order].tolist(),
-                                           index[order].tolist(), order.tolist(), strict=True):
-            add(channel, t, payloads[k], t, sequence)
-        writer.finish()
+        write_mcap(handle, channels, which[order], index[order], stamps[order],
+                   [payloads[k] for k in order.tolist()], profile="ros2",
+                   library=f"servicebot {__version__}")
 
 
 def _metadata(file_name: str, streams: Sequence[Stream]) -> str:
