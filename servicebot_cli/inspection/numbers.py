@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from servicebot_cli.description.elements import Vec3
+from servicebot_cli.kinematics.rotations import rpy_from_matrix
 
 
 def clean(value: float) -> float:
@@ -22,10 +21,5 @@ def vec3(values: np.ndarray) -> Vec3:
 
 
 def rpy_of(rotation: np.ndarray) -> Vec3:
-    """Roll, pitch, yaw [rad] of a rotation matrix, URDF convention ``Rz(y) Ry(p) Rx(r)``."""
-    pitch = math.atan2(-rotation[2, 0], math.hypot(rotation[0, 0], rotation[1, 0]))
-    if math.cos(pitch) < 1e-9:  # gimbal lock: put all of the rotation in yaw
-        return (0.0, clean(pitch), clean(math.atan2(-rotation[0, 1], rotation[1, 1])))
-    roll = math.atan2(rotation[2, 1], rotation[2, 2])
-    yaw = math.atan2(rotation[1, 0], rotation[0, 0])
-    return (clean(roll), clean(pitch), clean(yaw))
+    """Roll, pitch, yaw [rad] of a rotation matrix, cleaned; the same convention as ``fk``."""
+    return vec3(rpy_from_matrix(rotation))

@@ -20,6 +20,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.description.sensors import ImuSpec
+from servicebot_cli.kinematics.rotations import quaternion_from_matrix
 from servicebot_cli.sim import noise, rotations
 from servicebot_cli.sim.motion import Path2D, pose_at
 
@@ -64,7 +65,7 @@ def measure(spec: ImuSpec, transform_sensor_to_base: FloatArray, path: Path2D,
         rate[:, axis] = noise.apply(rate[:, axis], spec.angular_velocity_noise[axis], rng)
         accel[:, axis] = noise.apply(accel[:, axis], spec.linear_acceleration_noise[axis], rng)
     _, _, yaw = pose_at(path, times_s)
-    orientation = rotations.multiply(rotations.yaw(yaw), rotations.from_matrix(to_sensor))
+    orientation = rotations.multiply(rotations.yaw(yaw), quaternion_from_matrix(to_sensor))
     return ImuSamples(
         spec, times_s, orientation, rate, accel,
         tuple(noise.variance(s) for s in spec.angular_velocity_noise),  # type: ignore[arg-type]

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.kinematics.rotations import quaternion_from_matrix
 from servicebot_cli.kinematics.transforms import rpy_matrix
 from servicebot_cli.sim import cdr, rotations
 from servicebot_cli.sim.simulator import SimResult
@@ -185,7 +186,7 @@ def _tf(result: SimResult) -> list[Stream]:
     for i, name in enumerate(joints.names):
         joint = robot.joint(name)
         axis = np.array(joint.axis, float) / np.linalg.norm(joint.axis)
-        fixed = rotations.from_matrix(rpy_matrix(*joint.origin.rpy))
+        fixed = quaternion_from_matrix(rpy_matrix(*joint.origin.rpy))
         q = joints.positions[:, i]
         offset = np.array(joint.origin.xyz)
         slide = q[:, None] * (rpy_matrix(*joint.origin.rpy) @ axis) if joint.type == "prismatic" \
@@ -203,6 +204,6 @@ def _tf(result: SimResult) -> list[Stream]:
     static = [(f.parent, f.name, f.origin) for f in robot.fixed_frames]
     latched = _tf_stream(TF_STATIC_TOPIC, [(p, c) for p, c, _ in static], np.zeros(1),
                          [np.array(o.xyz)[None] for _, _, o in static],
-                         [rotations.from_matrix(rpy_matrix(*o.rpy))[None] for _, _, o in static],
+                         [quaternion_from_matrix(rpy_matrix(*o.rpy))[None] for _, _, o in static],
                          latched=True)
     return [tf, latched]

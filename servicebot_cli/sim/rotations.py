@@ -1,4 +1,7 @@
-"""Quaternions (x, y, z, w), as ROS messages carry them, for many rotations at once."""
+"""Quaternions (x, y, z, w), as ROS messages carry them, for many rotations at once.
+
+Matrices become quaternions with ``kinematics.rotations.quaternion_from_matrix``.
+"""
 
 from __future__ import annotations
 
@@ -6,17 +9,6 @@ import numpy as np
 import numpy.typing as npt
 
 FloatArray = npt.NDArray[np.float64]
-
-
-def from_matrix(rotation: FloatArray) -> FloatArray:
-    """Quaternion of a rotation matrix (3, 3), with w >= 0."""
-    m = rotation
-    w = np.sqrt(max(0.0, 1.0 + m[0, 0] + m[1, 1] + m[2, 2])) / 2.0
-    x = np.copysign(np.sqrt(max(0.0, 1.0 + m[0, 0] - m[1, 1] - m[2, 2])) / 2.0, m[2, 1] - m[1, 2])
-    y = np.copysign(np.sqrt(max(0.0, 1.0 - m[0, 0] + m[1, 1] - m[2, 2])) / 2.0, m[0, 2] - m[2, 0])
-    z = np.copysign(np.sqrt(max(0.0, 1.0 - m[0, 0] - m[1, 1] + m[2, 2])) / 2.0, m[1, 0] - m[0, 1])
-    q = np.array([x, y, z, w])
-    return q / np.linalg.norm(q)
 
 
 def about_axis(axis: FloatArray, angle_rad: FloatArray) -> FloatArray:
