@@ -52,9 +52,9 @@ class Emulator(TestEmulator):
 
 def limit_hz(protocol: str) -> float:
     from servicebot_cli.description.loader import RobotSource, load
-    from servicebot_cli.link.arduino import ArduinoConfig
-    from servicebot_cli.link.driving import link_capacity_hz, make_link
-    from servicebot_cli.link.motors import motor_map
+    from servicebot_cli.drive.driving import link_capacity_hz, make_link
+    from servicebot_cli.drive.motors import motor_map
+    from servicebot_cli.drive.protocols.arduino import ArduinoConfig
 
     motors = motor_map(load(RobotSource.bundled("real")))
     link = make_link(protocol, motors, ArduinoConfig(3436, 30.0))
@@ -75,10 +75,10 @@ def library_run(emu: Emulator, protocol: str, rate: float, seconds: float) -> di
     import dataclasses
 
     from servicebot_cli.description.loader import RobotSource, load
-    from servicebot_cli.link.arduino import ArduinoConfig
-    from servicebot_cli.link.driving import DriveRequest, make_link, run_drive
-    from servicebot_cli.link.motors import motor_map
-    from servicebot_cli.link.plan import Plan, Step
+    from servicebot_cli.drive.driving import DriveRequest, make_link, run_drive
+    from servicebot_cli.drive.motors import motor_map
+    from servicebot_cli.drive.plan import Plan, Step
+    from servicebot_cli.drive.protocols.arduino import ArduinoConfig
 
     motors = motor_map(load(RobotSource.bundled("real")))
     link = make_link(protocol, motors, ArduinoConfig(3436, 30.0))

@@ -21,8 +21,8 @@ import time
 from pathlib import Path
 
 from servicebot_cli.description.loader import RobotSource, load
-from servicebot_cli.sim.scenario import load_scenario
-from servicebot_cli.sim.session import Outputs, simulate_and_write
+from servicebot_cli.simulate.scenario.definition import load_scenario
+from servicebot_cli.simulate.session import Outputs, simulate_and_write
 
 
 def servicebot_run(scenario, robot) -> float:
@@ -42,7 +42,7 @@ def _command_at(scenario, t: float) -> tuple[float, float]:
 
 def _boxes(scenario):
     """Walls and boxes as (centre x, y, z, half x, y, z, yaw); cylinders as (x, y, r, h)."""
-    from servicebot_cli.sim.world import world_solids
+    from servicebot_cli.simulate.world.solids import world_solids
 
     out = []
     for s in world_solids(scenario.world):

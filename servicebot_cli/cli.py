@@ -21,7 +21,7 @@ from servicebot_cli.commands.fk import fk
 from servicebot_cli.commands.ik import ik
 from servicebot_cli.commands.inspect import inspect
 from servicebot_cli.commands.simulate import simulate
-from servicebot_cli.errors import ExitCode, ServicebotError
+from servicebot_cli.common.errors import ExitCode, ServicebotError
 
 
 class OneLineUsageError(click.ClickException):

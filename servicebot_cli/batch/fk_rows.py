@@ -23,7 +23,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.batch.reading import Row
-from servicebot_cli.errors import JointNotFound
+from servicebot_cli.common.errors import JointNotFound
 from servicebot_cli.kinematics.forward import pose_table, transforms
 from servicebot_cli.kinematics.frames import frame_id, link_names
 from servicebot_cli.kinematics.user_joints import Mimics, row_pairs, user_vector

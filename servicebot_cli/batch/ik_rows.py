@@ -21,7 +21,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.batch.reading import Row
-from servicebot_cli.kinematics.configuration import JointSpace
+from servicebot_cli.description.joint_space import JointSpace
 from servicebot_cli.kinematics.inverse import IkResult, IkTarget
 from servicebot_cli.kinematics.targets import TARGET_KEYS, BadTarget, row_target
 

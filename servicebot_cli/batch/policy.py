@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from typing import TypeVar
 
 from servicebot_cli.batch.reading import Row, Source
-from servicebot_cli.errors import ServicebotError
+from servicebot_cli.common.errors import ServicebotError
 
 T = TypeVar("T")
 POLICIES = ("stop", "skip")

@@ -19,8 +19,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import IO, Any
 
-from servicebot_cli.errors import ServicebotError
-from servicebot_cli.inputs import open_input_text
+from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.common.inputs import open_input_text
 
 CSV_SUFFIXES = (".csv", ".tsv")
 _JSON_KINDS = {list: "array", str: "string", int: "number", float: "number", bool: "boolean",

@@ -1,6 +1,6 @@
 """Writing batch results one line at a time: JSON Lines or CSV, to stdout or a file.
 
-A file is written atomically (see :mod:`servicebot_cli.output.files`): if the run stops on a
+A file is written atomically (see :mod:`servicebot_cli.common.files`): if the run stops on a
 bad line or is interrupted, the file is not created (or keeps its old content). Results
 stream: each is written as soon as it is computed.
 """
@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from servicebot_cli.batch.reading import CSV_SUFFIXES, JSONL_SUFFIXES
-from servicebot_cli.output.files import OutputError, atomic_output
+from servicebot_cli.common.files import OutputError, atomic_output
 
 WriteRow = Callable[[dict[str, Any]], None]
 

@@ -13,13 +13,13 @@ from typing import Any
 
 import click
 
-from servicebot_cli.errors import ExitCode, NameNotFound, OutOfLimits, ServicebotError
-from servicebot_cli.inputs import read_input_text
+from servicebot_cli.common.errors import ExitCode, NameNotFound, OutOfLimits, ServicebotError
+from servicebot_cli.common.inputs import read_input_text
+from servicebot_cli.drive.motors import MotorMap
+from servicebot_cli.drive.plan import Plan, Step
+from servicebot_cli.drive.script import ScriptError, parse_script
+from servicebot_cli.drive.shaping import WheelShaper
 from servicebot_cli.kinematics.diff_drive import body_twist
-from servicebot_cli.link.motors import MotorMap
-from servicebot_cli.link.plan import Plan, Step
-from servicebot_cli.link.script import ScriptError, parse_script
-from servicebot_cli.link.shaping import WheelShaper
 
 NO_ARM = "the ROSArduinoBridge protocol has no arm; arm targets need --protocol servicebot"
 
@@ -89,7 +89,7 @@ def teleop_session(plan: Plan | None, motors: MotorMap
     Raises:
         NoTerminal: Teleop without a terminal on stdin.
     """
-    from servicebot_cli.link.teleop import Teleop, cbreak_terminal, status_line
+    from servicebot_cli.drive.teleop.keyboard import Teleop, cbreak_terminal, status_line
 
     if plan is not None:
         yield plan, None

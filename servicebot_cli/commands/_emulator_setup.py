@@ -8,7 +8,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from servicebot_cli.link.wire import FaultInjector, Faults
+from servicebot_cli.drive.emulator.wire import FaultInjector, Faults
 
 
 def build_emulator(source: Any, protocol: str, baud: int | None, arduino: Any,
@@ -16,11 +16,11 @@ def build_emulator(source: Any, protocol: str, baud: int | None, arduino: Any,
                    log: Callable[[str], None]) -> Any:
     """A PtyEmulator (not yet opened) for the robot of ``source``."""
     from servicebot_cli.description.loader import load
-    from servicebot_cli.link.arduino_firmware import STOCK_AUTO_STOP_MS, ArduinoFirmware
-    from servicebot_cli.link.driving import serial_defaults
-    from servicebot_cli.link.emulator import BinaryFirmware, MotorModel
-    from servicebot_cli.link.motors import motor_map
-    from servicebot_cli.link.pty_emulator import PtyEmulator
+    from servicebot_cli.drive.driving import serial_defaults
+    from servicebot_cli.drive.emulator.arduino_firmware import STOCK_AUTO_STOP_MS, ArduinoFirmware
+    from servicebot_cli.drive.emulator.firmware import BinaryFirmware, MotorModel
+    from servicebot_cli.drive.emulator.pty import PtyEmulator
+    from servicebot_cli.drive.motors import motor_map
 
     robot = load(source)
     motors = motor_map(robot)
@@ -31,7 +31,7 @@ def build_emulator(source: Any, protocol: str, baud: int | None, arduino: Any,
     if protocol == "arduino":
         firmware: Any = ArduinoFirmware(model, arduino, baud)
     else:
-        from servicebot_cli.link.binary import BinaryLink
+        from servicebot_cli.drive.protocols.binary import BinaryLink
 
         BinaryLink(motors)  # refuses a robot the binary protocol cannot carry
         firmware = BinaryFirmware(model)
@@ -41,7 +41,7 @@ def build_emulator(source: Any, protocol: str, baud: int | None, arduino: Any,
 
 def write_state(path: Path, state: dict[str, Any]) -> None:
     """Write the emulator's state as JSON, atomically."""
-    from servicebot_cli.output.files import write_atomic
-    from servicebot_cli.output.jsonable import dumps
+    from servicebot_cli.common.files import write_atomic
+    from servicebot_cli.common.jsonable import dumps
 
     write_atomic(path, dumps(state))

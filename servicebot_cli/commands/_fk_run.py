@@ -11,6 +11,7 @@ import click
 
 from servicebot_cli.batch.fk_rows import FkBatch
 from servicebot_cli.batch.stream import stream
+from servicebot_cli.common.jsonable import dumps
 from servicebot_cli.description.robot import RobotDescription
 from servicebot_cli.kinematics.forward import frame_poses
 from servicebot_cli.kinematics.frames import link_names
@@ -21,7 +22,6 @@ from servicebot_cli.kinematics.user_joints import (
     user_vector,
 )
 from servicebot_cli.output import poses as render
-from servicebot_cli.output.jsonable import dumps
 
 
 def all_frames(robot: RobotDescription) -> list[str]:

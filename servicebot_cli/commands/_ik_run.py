@@ -18,17 +18,17 @@ import numpy.typing as npt
 
 from servicebot_cli.batch.ik_rows import IkBatch
 from servicebot_cli.batch.stream import stream
+from servicebot_cli.common.errors import ExitCode, ServicebotError
+from servicebot_cli.common.jsonable import dumps
+from servicebot_cli.description.joint_space import JointSpace
 from servicebot_cli.description.robot import RobotDescription
-from servicebot_cli.errors import ExitCode, ServicebotError
 from servicebot_cli.kinematics.chain import Chain
-from servicebot_cli.kinematics.configuration import JointSpace
 from servicebot_cli.kinematics.diagnosis import hint
 from servicebot_cli.kinematics.frames import link_names
 from servicebot_cli.kinematics.inverse import IkResult, IkSettings, IkSolver, IkTarget
 from servicebot_cli.kinematics.rotations import rpy_from_matrix
 from servicebot_cli.kinematics.user_joints import angular, user_values, user_vector
 from servicebot_cli.output.ik_report import ik_text
-from servicebot_cli.output.jsonable import dumps
 
 FloatArray = npt.NDArray[np.float64]
 

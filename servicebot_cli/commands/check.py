@@ -12,7 +12,7 @@ from typing import Any
 import click
 
 from servicebot_cli.commands.check_options import catalogue_options, report_options
-from servicebot_cli.options import BundledRobot, PackageDir, RobotArgs, robot_arguments
+from servicebot_cli.commands.options import BundledRobot, PackageDir, RobotArgs, robot_arguments
 
 _GROUP_ONLY = ("-h", "--help", "--list-rules", "--explain")
 

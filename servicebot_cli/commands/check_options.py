@@ -20,7 +20,7 @@ FORMATS = ("text", "json", "sarif", "junit", "github")
 def _list_rules(ctx: click.Context, _: click.Parameter, value: bool) -> None:
     if not value or ctx.resilient_parsing:
         return
-    from servicebot_cli.checks.catalogue import RULES
+    from servicebot_cli.check.catalogue import RULES
     from servicebot_cli.output.table import table
 
     rows = [(r.code, r.severity.value, r.name, r.summary) for r in RULES.values()]
@@ -32,7 +32,7 @@ def _list_rules(ctx: click.Context, _: click.Parameter, value: bool) -> None:
 def _explain(ctx: click.Context, param: click.Parameter, value: str | None) -> None:
     if value is None or ctx.resilient_parsing:
         return
-    from servicebot_cli.checks.catalogue import rule
+    from servicebot_cli.check.catalogue import rule
 
     try:
         found = rule(value)

@@ -10,12 +10,14 @@ from typing import Any
 
 import click
 
-from servicebot_cli.checks import files
-from servicebot_cli.checks.env import CheckEnv
-from servicebot_cli.checks.findings import Issue
-from servicebot_cli.checks.result import CheckResult
-from servicebot_cli.checks.runner import FileReport, check_source, place_issues
-from servicebot_cli.checks.settings import Settings, find_pyproject, load_settings
+from servicebot_cli.check import files
+from servicebot_cli.check.env import CheckEnv
+from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.result import CheckResult
+from servicebot_cli.check.runner import FileReport, check_source, place_issues
+from servicebot_cli.check.settings import Settings, find_pyproject, load_settings
+from servicebot_cli.commands.options import RobotArgs, split_robot_args
+from servicebot_cli.common.errors import DescriptionError, ExitCode
 from servicebot_cli.description.loader import RobotSource, read_description
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.resources import (
@@ -24,8 +26,6 @@ from servicebot_cli.description.resources import (
     DEFAULT_ROBOT,
     bundled_file,
 )
-from servicebot_cli.errors import DescriptionError, ExitCode
-from servicebot_cli.options import RobotArgs, split_robot_args
 
 
 def settings_for(report: dict[str, Any]) -> Settings:
@@ -85,8 +85,8 @@ def check_controller_files(values: tuple[str, ...], urdfs: tuple[str, ...], bund
                            packages: tuple[tuple[str, str], ...],
                            settings: Settings) -> CheckResult:
     """Check a controllers YAML against each URDF."""
-    from servicebot_cli.checks import controllers
-    from servicebot_cli.inputs import display_path, read_input_text
+    from servicebot_cli.check import controllers
+    from servicebot_cli.common.inputs import display_path, read_input_text
 
     yaml_files, xacro_args = split_robot_args(values)
     if len(yaml_files) > 1:
@@ -113,8 +113,8 @@ def check_controller_files(values: tuple[str, ...], urdfs: tuple[str, ...], bund
 
 def emit(result: CheckResult, fmt: str, output: str) -> None:
     """Render ``result`` to stdout or ``output`` (atomically); exit 1 when it fails."""
+    from servicebot_cli.common.files import atomic_output
     from servicebot_cli.output import findings, junit, sarif
-    from servicebot_cli.output.files import atomic_output
 
     to_stdout = output == "-"
     if fmt == "text":

@@ -8,12 +8,12 @@ from typing import Any
 
 import click
 
-from servicebot_cli.commands._serial import (
+from servicebot_cli.commands.options import JointValue, RobotArgs, format_option, robot_arguments
+from servicebot_cli.commands.serial_options import (
     Number,
     arduino_config,
     serial_options,
 )
-from servicebot_cli.options import JointValue, RobotArgs, format_option, robot_arguments
 
 
 @click.command()
@@ -68,7 +68,7 @@ def drive(robot_args: RobotArgs, port: str | None, baud: int | None, protocol: s
     5 link lost mid-run; 130 Ctrl-C; 143 SIGTERM (each after stopping the motors).
     """
     from servicebot_cli.description.loader import load
-    from servicebot_cli.link.motors import motor_map
+    from servicebot_cli.drive.motors import motor_map
 
     robot = load(robot_args.source())
     motors = motor_map(robot)
@@ -79,7 +79,7 @@ def drive(robot_args: RobotArgs, port: str | None, baud: int | None, protocol: s
     if dry_run:
         _dry_run(source, link, motors, max_accel, rate, fmt)
         return
-    from servicebot_cli.link.driving import DriveRequest
+    from servicebot_cli.drive.driving import DriveRequest
 
     request = DriveRequest(port, baud, rate, max_accel, link_timeout, connect_timeout,
                            reconnect, Path(log_path) if log_path else None)
@@ -87,14 +87,14 @@ def drive(robot_args: RobotArgs, port: str | None, baud: int | None, protocol: s
 
 
 def _link(protocol: str, motors: Any, arduino: Any) -> Any:
-    from servicebot_cli.link.driving import make_link
+    from servicebot_cli.drive.driving import make_link
 
     return make_link(protocol, motors, arduino)
 
 
 def _port_and_baud(robot: Any, port: str | None, baud: int | None,
                    dry_run: bool) -> tuple[str, int]:
-    from servicebot_cli.link.driving import serial_defaults
+    from servicebot_cli.drive.driving import serial_defaults
 
     default_port, default_baud = serial_defaults(robot)
     port = port or default_port
@@ -111,7 +111,7 @@ def _port_and_baud(robot: Any, port: str | None, baud: int | None,
 
 
 def _check_rate(rate: float, link: Any, baud: int, link_timeout: float) -> None:
-    from servicebot_cli.link.driving import COMFORT, MIN_RATE_HZ, link_capacity_hz
+    from servicebot_cli.drive.driving import COMFORT, MIN_RATE_HZ, link_capacity_hz
 
     capacity = link_capacity_hz(link, baud)
     frame = max(link.command_bytes, link.reply_bytes)
@@ -151,8 +151,8 @@ def _source(script: str | None, linear: float | None, angular: float | None,
 
 
 def _dry_run(plan: Any, link: Any, motors: Any, max_accel: float, rate: float, fmt: str) -> None:
-    from servicebot_cli.link.dry_run import dry_run_lines, planned_frames
-    from servicebot_cli.output.jsonable import dumps
+    from servicebot_cli.common.jsonable import dumps
+    from servicebot_cli.drive.dry_run import dry_run_lines, planned_frames
 
     if plan is None:
         raise click.UsageError("--dry-run needs a plan: --script FILE or "
@@ -166,8 +166,8 @@ def _dry_run(plan: Any, link: Any, motors: Any, max_accel: float, rate: float, f
 
 def _run(request: Any, link: Any, motors: Any, source: Any, fmt: str) -> None:
     from servicebot_cli.commands._drive_plans import teleop_session
-    from servicebot_cli.link.driving import run_drive
-    from servicebot_cli.output.jsonable import dumps
+    from servicebot_cli.common.jsonable import dumps
+    from servicebot_cli.drive.driving import run_drive
 
     def log(line: str) -> None:
         click.echo(f"\r\x1b[Kdrive: {line}" if sys.stderr.isatty() else f"drive: {line}",

@@ -10,12 +10,12 @@ from typing import Any
 
 import click
 
-from servicebot_cli.commands._serial import (
+from servicebot_cli.commands.options import RobotArgs, robot_arguments
+from servicebot_cli.commands.serial_options import (
     Number,
     arduino_config,
     serial_options,
 )
-from servicebot_cli.options import RobotArgs, robot_arguments
 
 
 @click.command()
@@ -59,7 +59,7 @@ def emulate(robot_args: RobotArgs, protocol: str, baud: int | None, ticks_per_re
     servicebot drive --port /dev/pts/3 --linear 0.03 --duration 2
     """
     from servicebot_cli.commands._emulator_setup import build_emulator, write_state
-    from servicebot_cli.link.wire import Faults
+    from servicebot_cli.drive.emulator.wire import Faults
 
     faults = Faults(drop, corrupt, latency, die_after, mute_after)
     arduino = arduino_config(protocol, ticks_per_rev, pid_rate)

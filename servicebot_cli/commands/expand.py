@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from servicebot_cli.options import RobotArgs, robot_arguments
+from servicebot_cli.commands.options import RobotArgs, robot_arguments
 
 
 @click.command()
@@ -23,9 +23,9 @@ def expand(robot_args: RobotArgs, output: str) -> None:
       servicebot expand robots/service_robot.urdf.xacro hardware:=real -o real.urdf
       servicebot expand my_robot.urdf.xacro --package my_robot_description=./src/desc
     """
+    from servicebot_cli.common.files import write_atomic
     from servicebot_cli.description.loader import RobotSource, read_description
     from servicebot_cli.description.resources import DEFAULT_ROBOT, XACRO_SOURCE, bundled_file
-    from servicebot_cli.output.files import write_atomic
 
     if robot_args.files:
         source = robot_args.source()

@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import click
 
-from servicebot_cli.commands._kinematics import (
+from servicebot_cli.commands.kinematics_options import (
     batch_options,
     clamp_option,
     deg_option,
     pick_frame,
 )
-from servicebot_cli.options import JointValue, RobotArgs, format_option, robot_arguments
+from servicebot_cli.commands.options import JointValue, RobotArgs, format_option, robot_arguments
 
 
 @click.command()

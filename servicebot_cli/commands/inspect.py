@@ -10,9 +10,9 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
-from servicebot_cli.errors import ExitCode
-from servicebot_cli.inspection import SECTIONS
-from servicebot_cli.options import JointValue, RobotArgs, robot_arguments
+from servicebot_cli.commands.options import JointValue, RobotArgs, robot_arguments
+from servicebot_cli.common.errors import ExitCode
+from servicebot_cli.inspect import SECTIONS
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -91,8 +91,8 @@ def _check_combination(sections: tuple[str, ...], fmt: str, render_path: str | N
 def _configuration(robot: RobotDescription, joints: tuple[tuple[str, float], ...],
                    clamp: bool) -> dict[str, float]:
     """The ``--joint`` values (clamped with ``--clamp``), checked before any work."""
-    from servicebot_cli.errors import NameNotFound, OutOfLimits
-    from servicebot_cli.inspection.poses import checked_values
+    from servicebot_cli.common.errors import NameNotFound, OutOfLimits
+    from servicebot_cli.inspect.poses import checked_values
 
     fixed = {j.name for j in robot.joints if not j.movable}
     try:
@@ -116,7 +116,7 @@ def _render(robot: RobotDescription, path: str, values: dict[str, float], clamp:
 
 def _show(robot: RobotDescription, sections: tuple[str, ...], fmt: str,
           values: dict[str, float], clamp: bool, resolver: Any, controllers: Path | None) -> None:
-    from servicebot_cli.inspection.report import Request, inspect_robot
+    from servicebot_cli.inspect.report import Request, inspect_robot
 
     wanted = ("tree",) if fmt in ("dot", "mermaid") else sections
     request = Request(tuple(wanted), values, clamp, resolver, controllers)
@@ -127,7 +127,7 @@ def _show(robot: RobotDescription, sections: tuple[str, ...], fmt: str,
 
 def _lines(inspection: Any, fmt: str) -> Any:
     if fmt == "json":
-        from servicebot_cli.output.jsonable import dumps
+        from servicebot_cli.common.jsonable import dumps
 
         return [dumps(inspection.to_json()).rstrip("\n")]
     if fmt == "markdown":
@@ -147,7 +147,7 @@ def _lines(inspection: Any, fmt: str) -> Any:
 def _run_diff(robot_args: RobotArgs, fmt: str) -> int:
     """Compare the two descriptions named; print the differences; 0 if equal, else 1."""
     from servicebot_cli.description.loader import RobotSource, load
-    from servicebot_cli.inspection.diff import compare
+    from servicebot_cli.inspect.diff import compare
     from servicebot_cli.output import diff_view
 
     sources = robot_args.sources()
@@ -158,7 +158,7 @@ def _run_diff(robot_args: RobotArgs, fmt: str) -> int:
                                "servicebot inspect A [NAME:=VALUE]... --diff B [NAME:=VALUE]...")
     result = compare(load(sources[0]), load(sources[1]))
     if fmt == "json":
-        from servicebot_cli.output.jsonable import dumps
+        from servicebot_cli.common.jsonable import dumps
 
         click.echo(dumps(diff_view.diff_json(result)), nl=False)
     elif fmt == "markdown":

@@ -7,8 +7,8 @@ from pathlib import Path
 
 import click
 
-from servicebot_cli.errors import ServicebotError
-from servicebot_cli.options import RobotArgs, format_option, robot_arguments
+from servicebot_cli.commands.options import RobotArgs, format_option, robot_arguments
+from servicebot_cli.common.errors import ServicebotError
 
 
 @click.command()
@@ -58,9 +58,9 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
       servicebot simulate --headless --saturation per-wheel --format json
     """
     from servicebot_cli.description.loader import load
-    from servicebot_cli.sim.live import display_problem
-    from servicebot_cli.sim.scenario import load_scenario
-    from servicebot_cli.sim.session import Outputs, simulate_and_write, with_overrides
+    from servicebot_cli.simulate.files.live import display_problem
+    from servicebot_cli.simulate.scenario.definition import load_scenario
+    from servicebot_cli.simulate.session import Outputs, simulate_and_write, with_overrides
 
     robot = load(robot_args.source())
     scenario = with_overrides(
@@ -77,14 +77,14 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
                                 progress=progress)
     _print(report, fmt)
     if not headless:
-        from servicebot_cli.sim.live import show
+        from servicebot_cli.simulate.files.live import show
 
         show(report.result, speed=speed)
 
 
 def _print(report: object, fmt: str) -> None:
-    from servicebot_cli.output.jsonable import dumps
-    from servicebot_cli.sim.render import summary_lines
+    from servicebot_cli.common.jsonable import dumps
+    from servicebot_cli.output.simulate_text import summary_lines
 
     summary = report.summary  # type: ignore[attr-defined]
     if fmt == "json":

@@ -11,12 +11,12 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
+from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.common.inputs import display_path, read_input_bytes
 from servicebot_cli.description import resources
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.robot import RobotDescription
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
-from servicebot_cli.errors import DescriptionError
-from servicebot_cli.inputs import display_path, read_input_bytes
 
 XACRO_SUFFIXES = (".xacro",)
 

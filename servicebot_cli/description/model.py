@@ -13,7 +13,7 @@ import tempfile
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from servicebot_cli.errors import DescriptionError
+from servicebot_cli.common.errors import DescriptionError
 
 if TYPE_CHECKING:
     import pinocchio as pin

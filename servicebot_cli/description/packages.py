@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from urllib.parse import unquote, urlparse
 
-from servicebot_cli.errors import PackageNotFound
+from servicebot_cli.common.errors import PackageNotFound
 
 _NAME_RE = re.compile(rb"<name>\s*([^<\s]+)\s*</name>")
 _CRAWL_DEPTH = 6  # deep enough for src/<group>/<repo>/<pkg>, shallow enough to stay instant

@@ -9,7 +9,7 @@ from __future__ import annotations
 from importlib import resources
 from pathlib import Path
 
-from servicebot_cli.errors import ServicebotError
+from servicebot_cli.common.errors import ServicebotError
 
 BUNDLED_ROBOTS = {
     "sim": "service_robot.urdf.xml",

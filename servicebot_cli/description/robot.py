@@ -14,17 +14,17 @@ from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from servicebot_cli.common.errors import FrameNotFound, JointNotFound, NameNotFound
 from servicebot_cli.description import elements as el
 from servicebot_cli.description import extensions as ext
 from servicebot_cli.description.model import build_model
 from servicebot_cli.description.safe_xml import PositionedElement
 from servicebot_cli.description.sources import SourceRef
-from servicebot_cli.errors import FrameNotFound, JointNotFound, NameNotFound
 
 if TYPE_CHECKING:
     import pinocchio as pin
 
-    from servicebot_cli.kinematics.configuration import JointSpace
+    from servicebot_cli.description.joint_space import JointSpace
 
 
 class LinkNotFound(NameNotFound):
@@ -217,6 +217,6 @@ class RobotDescription:
     @cached_property
     def joint_space(self) -> JointSpace:
         """Joint names, limits and configuration vectors for :attr:`model`."""
-        from servicebot_cli.kinematics.configuration import JointSpace
+        from servicebot_cli.description.joint_space import JointSpace
 
         return JointSpace.of(self.model, self.movable_joints)

@@ -12,7 +12,7 @@ import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from xml.parsers import expat
 
-from servicebot_cli.errors import UnsafeXmlError, XmlError
+from servicebot_cli.common.errors import UnsafeXmlError, XmlError
 
 MAX_BYTES = 32 * 1024 * 1024
 """Largest description accepted [bytes]; real URDFs are well under 1 MB."""

@@ -26,10 +26,10 @@ from pathlib import Path
 from xml.dom import expatbuilder
 from xml.parsers import expat
 
+from servicebot_cli.common.errors import DescriptionError, PackageNotFound, XacroError, XmlError
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.safe_xml import parse_xml
 from servicebot_cli.description.sources import SourceRef
-from servicebot_cli.errors import DescriptionError, PackageNotFound, XacroError, XmlError
 
 _SRC_ATTR = "servicebot-src"
 _VIA_ATTR = "servicebot-via"

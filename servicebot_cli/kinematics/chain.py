@@ -17,13 +17,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.errors import ServicebotError
+from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.kinematics.frames import frame_id, moving_joints
 
 if TYPE_CHECKING:
     import pinocchio as pin
 
-    from servicebot_cli.kinematics.configuration import JointSpace
+    from servicebot_cli.description.joint_space import JointSpace
 
 FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.intp]

@@ -11,7 +11,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from servicebot_cli.errors import FrameNotFound
+from servicebot_cli.common.errors import FrameNotFound
 
 if TYPE_CHECKING:
     import pinocchio as pin

@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from servicebot_cli.errors import ServicebotError
+from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.kinematics.inverse import IkTarget
 from servicebot_cli.kinematics.rotations import (
     AXES,

@@ -14,11 +14,11 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.errors import OutOfLimits, ServicebotError
+from servicebot_cli.common.errors import OutOfLimits, ServicebotError
 
 if TYPE_CHECKING:
     from servicebot_cli.description.elements import Joint
-    from servicebot_cli.kinematics.configuration import JointSpace
+    from servicebot_cli.description.joint_space import JointSpace
 
 FloatArray = npt.NDArray[np.float64]
 

@@ -9,8 +9,8 @@ from servicebot_cli.output.table import format_number
 
 if TYPE_CHECKING:
     from servicebot_cli.description.sensors import NoiseSpec
-    from servicebot_cli.inspection.joints import Limits
-    from servicebot_cli.inspection.links import ShapeInfo
+    from servicebot_cli.inspect.joints import Limits
+    from servicebot_cli.inspect.links import ShapeInfo
 
 _AXES = {(1.0, 0.0, 0.0): "x", (0.0, 1.0, 0.0): "y", (0.0, 0.0, 1.0): "z"}
 

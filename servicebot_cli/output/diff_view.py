@@ -14,7 +14,7 @@ from servicebot_cli.output.markdown import markdown_table
 from servicebot_cli.output.table import format_number
 
 if TYPE_CHECKING:
-    from servicebot_cli.inspection.diff import Difference, DiffResult
+    from servicebot_cli.inspect.diff import Difference, DiffResult
 
 WIDTH = 100
 DIFF_SCHEMA = "servicebot.inspect.diff/1"

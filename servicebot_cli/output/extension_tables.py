@@ -12,10 +12,10 @@ from servicebot_cli.output.blocks import Table
 from servicebot_cli.output.table import format_number
 
 if TYPE_CHECKING:
-    from servicebot_cli.inspection.interfaces import InterfaceInfo, InterfacesInfo
-    from servicebot_cli.inspection.plugins import PluginsInfo
-    from servicebot_cli.inspection.report import TopicsInfo
-    from servicebot_cli.inspection.sensors import SensorInfo
+    from servicebot_cli.inspect.interfaces import InterfaceInfo, InterfacesInfo
+    from servicebot_cli.inspect.plugins import PluginsInfo
+    from servicebot_cli.inspect.report import TopicsInfo
+    from servicebot_cli.inspect.sensors import SensorInfo
 
 
 def sensors_tables(sensors: tuple[SensorInfo, ...]) -> list[Table]:

@@ -10,10 +10,10 @@ from collections.abc import Iterator
 import click
 
 from servicebot_cli import __version__
-from servicebot_cli.checks.catalogue import RULES
-from servicebot_cli.checks.findings import Finding, Severity
-from servicebot_cli.checks.result import CheckResult
-from servicebot_cli.output.jsonable import dumps
+from servicebot_cli.check.catalogue import RULES
+from servicebot_cli.check.findings import Finding, Severity
+from servicebot_cli.check.result import CheckResult
+from servicebot_cli.common.jsonable import dumps
 
 JSON_FORMAT_VERSION = 1
 """Bumped when a key of ``check --format json`` changes meaning or goes away."""

@@ -13,8 +13,8 @@ from typing import TYPE_CHECKING
 from servicebot_cli.output import describe as d
 
 if TYPE_CHECKING:
-    from servicebot_cli.inspection.joints import JointInfo
-    from servicebot_cli.inspection.report import TreeInfo
+    from servicebot_cli.inspect.joints import JointInfo
+    from servicebot_cli.inspect.report import TreeInfo
 
 
 def edge_label(joint: JointInfo) -> list[str]:

@@ -14,9 +14,9 @@ from servicebot_cli.output.blocks import Table
 from servicebot_cli.output.table import format_number
 
 if TYPE_CHECKING:
-    from servicebot_cli.inspection.joints import FrameInfo, JointInfo
-    from servicebot_cli.inspection.links import LinkInfo, ShapeInfo
-    from servicebot_cli.inspection.totals import Totals
+    from servicebot_cli.inspect.joints import FrameInfo, JointInfo
+    from servicebot_cli.inspect.links import LinkInfo, ShapeInfo
+    from servicebot_cli.inspect.totals import Totals
 
 
 def links_tables(links: tuple[LinkInfo, ...]) -> list[Table]:

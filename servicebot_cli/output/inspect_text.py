@@ -13,7 +13,7 @@ from servicebot_cli.output.table import table
 from servicebot_cli.output.tree_view import tree_table
 
 if TYPE_CHECKING:
-    from servicebot_cli.inspection.report import Inspection
+    from servicebot_cli.inspect.report import Inspection
 
 WIDTH = 100
 

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
-from servicebot_cli.checks.catalogue import RULES
-from servicebot_cli.checks.result import CheckResult
+from servicebot_cli.check.catalogue import RULES
+from servicebot_cli.check.result import CheckResult
 
 
 def junit_text(result: CheckResult) -> str:

@@ -14,7 +14,7 @@ from servicebot_cli.output.inspect_text import section_tables
 from servicebot_cli.output.table import format_number
 
 if TYPE_CHECKING:
-    from servicebot_cli.inspection.report import Inspection
+    from servicebot_cli.inspect.report import Inspection
 
 
 def _cell(value: object) -> str:

@@ -15,7 +15,7 @@ from typing import IO, Any
 
 import numpy as np
 
-from servicebot_cli.inspection.geometry import FloatArray
+from servicebot_cli.inspect.geometry import FloatArray
 from servicebot_cli.output.solids import Solid
 
 VIEWS = {"iso": (20.0, -35.0), "front": (8.0, 0.0), "side": (8.0, -90.0), "top": (90.0, -90.0)}

@@ -8,10 +8,10 @@ from typing import IO, TYPE_CHECKING
 
 import numpy as np
 
-from servicebot_cli.errors import ServicebotError
-from servicebot_cli.inspection.geometry import mesh_library, posed_visuals
-from servicebot_cli.inspection.poses import link_transforms
-from servicebot_cli.output.files import atomic_output
+from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.common.files import atomic_output
+from servicebot_cli.inspect.geometry import mesh_library, posed_visuals
+from servicebot_cli.inspect.poses import link_transforms
 from servicebot_cli.output.picture import Scene, draw
 from servicebot_cli.output.solids import solids
 from servicebot_cli.output.table import format_number

@@ -9,10 +9,10 @@ from __future__ import annotations
 from pathlib import Path
 
 from servicebot_cli import __version__
-from servicebot_cli.checks.catalogue import RULES
-from servicebot_cli.checks.findings import Finding, Severity
-from servicebot_cli.checks.result import CheckResult
-from servicebot_cli.output.jsonable import dumps
+from servicebot_cli.check.catalogue import RULES
+from servicebot_cli.check.findings import Finding, Severity
+from servicebot_cli.check.result import CheckResult
+from servicebot_cli.common.jsonable import dumps
 
 SCHEMA = "https://docs.oasis-open.org/sarif/sarif/v2.1.0/errata01/os/schemas/sarif-schema-2.1.0.json"
 _LEVELS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}

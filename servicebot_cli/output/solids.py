@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from servicebot_cli.inspection.geometry import FloatArray, MeshLibrary, PosedShape
+from servicebot_cli.inspect.geometry import FloatArray, MeshLibrary, PosedShape
 
 MAX_MESH_FACES = 20_000
 DEFAULT_RGBA = (0.6, 0.6, 0.62, 1.0)

@@ -8,13 +8,13 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from servicebot_cli.inspection.joints import joint_info
+from servicebot_cli.inspect.joints import joint_info
 from servicebot_cli.output import describe as d
 from servicebot_cli.output.blocks import Table
 
 if TYPE_CHECKING:
-    from servicebot_cli.inspection.report import TreeInfo
-    from servicebot_cli.inspection.tree import TreeRow
+    from servicebot_cli.inspect.report import TreeInfo
+    from servicebot_cli.inspect.tree import TreeRow
 
 MAX_LEVELS = 8
 

@@ -10,7 +10,7 @@ import sys
 
 import pytest
 
-from servicebot_cli.checks import tree
+from servicebot_cli.check import tree
 from tests.check.helpers import codes, findings, fixture
 from tests.conftest import (
     REPO,

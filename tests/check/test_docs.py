@@ -6,15 +6,15 @@ import shutil
 
 import yaml
 
-from servicebot_cli.checks.catalogue import RULES
-from servicebot_cli.checks.rules_doc import markdown
+from servicebot_cli.check.catalogue import RULES
+from servicebot_cli.check.rules_doc import markdown
 from tests.conftest import REPO, SIM_URDF, run_servicebot
 
 
 def test_rules_md_is_generated_from_the_catalogue():
     committed = (REPO / "docs" / "rules.md").read_text()
     assert committed == markdown(), (
-        "docs/rules.md is stale: python -m servicebot_cli.checks.rules_doc > docs/rules.md")
+        "docs/rules.md is stale: python -m servicebot_cli.check.rules_doc > docs/rules.md")
     for code in RULES:
         assert f"### {code}\n" in committed
 

@@ -7,9 +7,9 @@ from pathlib import Path
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from servicebot_cli.checks.env import CheckEnv
-from servicebot_cli.checks.runner import check_source
-from servicebot_cli.checks.settings import Settings
+from servicebot_cli.check.env import CheckEnv
+from servicebot_cli.check.runner import check_source
+from servicebot_cli.check.settings import Settings
 from servicebot_cli.description.loader import RobotSource
 from tests.check.helpers import FIXTURES, codes, findings
 from tests.conftest import SIM_URDF

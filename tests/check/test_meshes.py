@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 import trimesh
 
-from servicebot_cli.checks.meshes import MeshError, load_mesh
+from servicebot_cli.check.meshes import MeshError, load_mesh
 from tests.check.corpus import erd_root
 from tests.check.helpers import FIXTURES
 

@@ -14,10 +14,10 @@ from concurrent.futures import ThreadPoolExecutor
 
 import pytest
 
-from servicebot_cli.checks.env import CheckEnv
-from servicebot_cli.checks.findings import Severity
-from servicebot_cli.checks.runner import check_source
-from servicebot_cli.checks.settings import Settings
+from servicebot_cli.check.env import CheckEnv
+from servicebot_cli.check.findings import Severity
+from servicebot_cli.check.runner import check_source
+from servicebot_cli.check.settings import Settings
 from servicebot_cli.description.loader import RobotSource
 from servicebot_cli.description.packages import PackageResolver
 from tests.check.corpus import check_urdf_rejects, erd_root, erd_urdfs, pybullet_urdfs

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from servicebot_cli.checks.catalogue import RULES
-from servicebot_cli.checks.findings import Severity
+from servicebot_cli.check.catalogue import RULES
+from servicebot_cli.check.findings import Severity
 from tests.check.helpers import FIXTURES, findings, fixture
 
 FILE_LEVEL = {"SB002", "SB017", "SB702"}  # about the whole file: no line to point at

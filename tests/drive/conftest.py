@@ -91,7 +91,7 @@ def finish(proc: subprocess.Popen[str], sig: int | None = None) -> tuple[int, st
 def real_motors() -> Any:
     """The real robot's motors and limits, from its URDF."""
     from servicebot_cli.description.loader import RobotSource, load
-    from servicebot_cli.link.motors import motor_map
+    from servicebot_cli.drive.motors import motor_map
 
     return motor_map(load(RobotSource.bundled("real")))
 

@@ -5,9 +5,9 @@ from __future__ import annotations
 import pytest
 
 from servicebot_cli.description.loader import RobotSource, load
-from servicebot_cli.link import messages as msg
-from servicebot_cli.link.driving import serial_defaults
-from servicebot_cli.link.protocol import Decoder
+from servicebot_cli.drive.driving import serial_defaults
+from servicebot_cli.drive.protocols import messages as msg
+from servicebot_cli.drive.protocols.framing import Decoder
 from tests.conftest import REAL_URDF, assert_one_line_error
 
 ONE_SHOT = ("--linear", "0.02", "--duration", "1")

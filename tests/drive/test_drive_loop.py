@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from servicebot_cli.link.binary import BinaryLink
-from servicebot_cli.link.driving import DriveRequest, run_drive
-from servicebot_cli.link.plan import Plan, Setpoint, Step
+from servicebot_cli.drive.driving import DriveRequest, run_drive
+from servicebot_cli.drive.plan import Plan, Setpoint, Step
+from servicebot_cli.drive.protocols.binary import BinaryLink
 from tests.drive.conftest import wait_for
 
 

@@ -6,13 +6,13 @@ import random
 
 import pytest
 
-from servicebot_cli.link import messages as msg
-from servicebot_cli.link.arduino import ArduinoConfig
-from servicebot_cli.link.arduino_firmware import ArduinoFirmware
-from servicebot_cli.link.binary import BinaryLink
-from servicebot_cli.link.emulator import BinaryFirmware, MotorModel
-from servicebot_cli.link.protocol import Decoder, Frame, encode_frame
-from servicebot_cli.link.wire import FaultInjector, Faults, PacedQueue, byte_time_s
+from servicebot_cli.drive.emulator.arduino_firmware import ArduinoFirmware
+from servicebot_cli.drive.emulator.firmware import BinaryFirmware, MotorModel
+from servicebot_cli.drive.emulator.wire import FaultInjector, Faults, PacedQueue, byte_time_s
+from servicebot_cli.drive.protocols import messages as msg
+from servicebot_cli.drive.protocols.arduino import ArduinoConfig
+from servicebot_cli.drive.protocols.binary import BinaryLink
+from servicebot_cli.drive.protocols.framing import Decoder, Frame, encode_frame
 
 
 @pytest.fixture

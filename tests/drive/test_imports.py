@@ -1,4 +1,4 @@
-"""The link package's layering: pure core modules, one pyserial importer, light commands."""
+"""The drive package's layering: pure core modules, one pyserial importer, light commands."""
 
 from __future__ import annotations
 
@@ -6,9 +6,10 @@ import ast
 
 from tests.conftest import REPO
 
-LINK = REPO / "servicebot_cli" / "link"
-PURE = ["protocol", "messages", "motors", "events", "binary", "arduino", "arduino_firmware",
-        "emulator", "wire", "plan", "script", "shaping", "commander", "dry_run"]
+DRIVE = REPO / "servicebot_cli" / "drive"
+PURE = ["protocols/framing", "protocols/messages", "motors", "protocols/events",
+        "protocols/binary", "protocols/arduino", "emulator/arduino_firmware", "emulator/firmware",
+        "emulator/wire", "plan", "script", "shaping", "session/commander", "dry_run"]
 IO = {"os", "sys", "select", "serial", "time", "pty", "tty", "termios", "subprocess", "socket",
       "click", "signal"}
 
@@ -25,10 +26,10 @@ def imported(path):
 
 def test_core_modules_do_no_io():
     for name in PURE:
-        assert not imported(LINK / f"{name}.py") & IO, name
+        assert not imported(DRIVE / f"{name}.py") & IO, name
 
 
 def test_only_transport_imports_pyserial():
     importers = {path.relative_to(REPO).as_posix()
                  for path in (REPO / "servicebot_cli").rglob("*.py") if "serial" in imported(path)}
-    assert importers == {"servicebot_cli/link/transport.py"}
+    assert importers == {"servicebot_cli/drive/transport.py"}

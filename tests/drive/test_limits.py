@@ -8,13 +8,13 @@ import math
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from servicebot_cli.link import messages as msg
-from servicebot_cli.link.arduino import ArduinoConfig, ArduinoLink
-from servicebot_cli.link.arduino_firmware import ArduinoFirmware
-from servicebot_cli.link.binary import BinaryLink
-from servicebot_cli.link.emulator import MotorModel
-from servicebot_cli.link.protocol import Decoder
-from servicebot_cli.link.shaping import WheelShaper
+from servicebot_cli.drive.emulator.arduino_firmware import ArduinoFirmware
+from servicebot_cli.drive.emulator.firmware import MotorModel
+from servicebot_cli.drive.protocols import messages as msg
+from servicebot_cli.drive.protocols.arduino import ArduinoConfig, ArduinoLink
+from servicebot_cli.drive.protocols.binary import BinaryLink
+from servicebot_cli.drive.protocols.framing import Decoder
+from servicebot_cli.drive.shaping import WheelShaper
 
 ANY_FLOAT = st.floats(allow_nan=True, allow_infinity=True)
 FOUR = st.lists(ANY_FLOAT, min_size=4, max_size=4)
@@ -107,8 +107,8 @@ def test_the_ramp_reaches_the_target_with_both_sides_together(real_motors):
 
 
 def test_the_emulated_firmware_clamps_and_flags_limit(real_motors):
-    from servicebot_cli.link.emulator import BinaryFirmware
-    from servicebot_cli.link.protocol import Frame, encode_frame
+    from servicebot_cli.drive.emulator.firmware import BinaryFirmware
+    from servicebot_cli.drive.protocols.framing import Frame, encode_frame
 
     model = MotorModel(real_motors, 0.5)
     firmware = BinaryFirmware(model)

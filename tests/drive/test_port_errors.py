@@ -7,8 +7,8 @@ import stat
 import subprocess
 import sys
 
-from servicebot_cli.link import messages as msg
-from servicebot_cli.link.protocol import encode_frame
+from servicebot_cli.drive.protocols import messages as msg
+from servicebot_cli.drive.protocols.framing import encode_frame
 from tests.conftest import assert_one_line_error
 
 ONE_SHOT = ("--linear", "0.01", "--duration", "0.5", "--connect-timeout", "0.5")
@@ -34,11 +34,11 @@ def test_not_a_serial_port(run, tmp_path):
 _AS_NOBODY = """
 import os, sys
 from servicebot_cli.cli import main
-import importlib, json, pkgutil, serial.tools.list_ports, servicebot_cli.link  # noqa
+import importlib, json, pkgutil, serial.tools.list_ports, servicebot_cli.drive  # noqa
 from servicebot_cli.description.loader import RobotSource, load
-from servicebot_cli.link.motors import motor_map
-for module in pkgutil.iter_modules(servicebot_cli.link.__path__):  # import while readable
-    importlib.import_module(f"servicebot_cli.link.{module.name}")
+from servicebot_cli.drive.motors import motor_map
+for module in pkgutil.walk_packages(servicebot_cli.drive.__path__, "servicebot_cli.drive."):
+    importlib.import_module(module.name)  # import while readable
 import servicebot_cli.commands._drive_plans  # noqa
 motor_map(load(RobotSource.bundled("real")))
 if os.geteuid() == 0:  # root opens everything: drop to nobody for a real permission check

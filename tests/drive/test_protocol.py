@@ -8,8 +8,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from servicebot_cli.link import messages as msg
-from servicebot_cli.link.protocol import (
+from servicebot_cli.drive.protocols import messages as msg
+from servicebot_cli.drive.protocols.framing import (
     MAX_PAYLOAD,
     OVERHEAD,
     SYNC,
@@ -142,7 +142,7 @@ def test_message_payload_round_trips():
 
 
 def test_wheel_positions_wrap_and_the_host_unwraps(real_motors):
-    from servicebot_cli.link.binary import BinaryLink
+    from servicebot_cli.drive.protocols.binary import BinaryLink
 
     link = BinaryLink(real_motors)
     positions = [30.0 + 0.5 * k for k in range(12)]  # crosses +32.768 rad

@@ -5,11 +5,17 @@ from __future__ import annotations
 import re
 import struct
 
-from servicebot_cli.link import messages as msg
-from servicebot_cli.link.arduino import ArduinoConfig
-from servicebot_cli.link.binary import BinaryLink
-from servicebot_cli.link.driving import link_capacity_hz
-from servicebot_cli.link.protocol import MAX_PAYLOAD, OVERHEAD, Decoder, Frame, encode_frame
+from servicebot_cli.drive.driving import link_capacity_hz
+from servicebot_cli.drive.protocols import messages as msg
+from servicebot_cli.drive.protocols.arduino import ArduinoConfig
+from servicebot_cli.drive.protocols.binary import BinaryLink
+from servicebot_cli.drive.protocols.framing import (
+    MAX_PAYLOAD,
+    OVERHEAD,
+    Decoder,
+    Frame,
+    encode_frame,
+)
 from tests.conftest import REPO
 
 DOC = (REPO / "docs" / "serial-protocol.md").read_text()
@@ -65,7 +71,7 @@ def test_the_arduino_example_numbers(real_motors):
 
 
 def test_the_watchdog_contract_is_stated_and_emulated(real_motors):
-    from servicebot_cli.link.emulator import BinaryFirmware, MotorModel
+    from servicebot_cli.drive.emulator.firmware import BinaryFirmware, MotorModel
 
     assert "for 500 ms** (it may use a shorter timeout, never a longer one" in DOC
     firmware = BinaryFirmware(MotorModel(real_motors, 0.5))

@@ -5,7 +5,7 @@ from __future__ import annotations
 import click
 from click.testing import CliRunner
 
-from servicebot_cli.options import RobotArgs, robot_arguments
+from servicebot_cli.commands.options import RobotArgs, robot_arguments
 
 
 @click.command()

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from servicebot_cli.link.plan import Plan, Setpoint
-from servicebot_cli.link.script import ScriptError, parse_script
+from servicebot_cli.drive.plan import Plan, Setpoint
+from servicebot_cli.drive.script import ScriptError, parse_script
 from tests.conftest import assert_one_line_error
 
 GOOD = """# a square-ish tour

@@ -14,7 +14,7 @@ import time
 
 import pytest
 
-from servicebot_cli.link.teleop import Teleop, parse_keys
+from servicebot_cli.drive.teleop.keyboard import Teleop, parse_keys
 from tests.conftest import REPO
 from tests.drive.conftest import PATIENCE_S, wait_for
 

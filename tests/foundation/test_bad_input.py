@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
+from servicebot_cli.common.errors import UnsafeXmlError, XmlError
 from servicebot_cli.description.safe_xml import parse_xml
-from servicebot_cli.errors import UnsafeXmlError, XmlError
 from tests.conftest import SIM_URDF, XACRO_SOURCE, assert_one_line_error
 
 COMMANDS = ["check", "inspect", "fk", "ik", "simulate", "drive", "emulate", "expand"]

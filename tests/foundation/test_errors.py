@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from servicebot_cli.errors import FrameNotFound, JointNotFound
+from servicebot_cli.common.errors import FrameNotFound, JointNotFound
 
 LINKS = ["base_link", "front_left_wheel", "lidar_link", "camera_link", "imu_link",
          "arm_base_link", "arm_link1", "arm_link2", "arm_tool_link"]

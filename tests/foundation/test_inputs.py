@@ -4,8 +4,13 @@ from __future__ import annotations
 
 import pytest
 
-from servicebot_cli.errors import ServicebotError
-from servicebot_cli.inputs import display_path, open_input_text, read_input_bytes, read_input_text
+from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.common.inputs import (
+    display_path,
+    open_input_text,
+    read_input_bytes,
+    read_input_text,
+)
 
 
 class _Wrong(ServicebotError):

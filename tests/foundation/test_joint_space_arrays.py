@@ -7,8 +7,8 @@ import math
 import numpy as np
 import pytest
 
+from servicebot_cli.common.errors import OutOfLimits
 from servicebot_cli.description.loader import RobotSource, load
-from servicebot_cli.errors import OutOfLimits
 
 
 def test_to_q_puts_each_value_where_the_joint_lives():
@@ -27,7 +27,7 @@ def test_to_q_puts_each_value_where_the_joint_lives():
 
 def test_to_q_keeps_a_given_base():
     robot = load(RobotSource.bundled("sim"))
-    from servicebot_cli.kinematics.configuration import JointSpace
+    from servicebot_cli.description.joint_space import JointSpace
 
     space = JointSpace.of(robot.model_with_base("planar"), robot.movable_joints)
     q0 = space.neutral()

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-from servicebot_cli.output.jsonable import dumps
+from servicebot_cli.common.jsonable import dumps
 from servicebot_cli.output.table import format_number, table
 
 

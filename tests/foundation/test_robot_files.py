@@ -11,9 +11,9 @@ from pathlib import Path
 import pytest
 import yaml
 
-from servicebot_cli.description.drive_geometry import drive_geometry
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.description.sensors import camera_spec, imu_spec, lidar_spec
+from servicebot_cli.kinematics.drive_geometry import drive_geometry
 from tests.conftest import CONTROLLERS_YAML, REAL_URDF, REPO, SIM_URDF, XACRO_SOURCE
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import click
 import pytest
 
-from servicebot_cli.options import RobotArgs, split_robot_args
+from servicebot_cli.commands.options import RobotArgs, split_robot_args
 
 
 def _args(*values: str, bundled: str | None = None) -> RobotArgs:

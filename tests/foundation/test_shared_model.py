@@ -9,11 +9,11 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from servicebot_cli.common.errors import JointNotFound, OutOfLimits, PackageNotFound
+from servicebot_cli.common.files import OutputError, atomic_output, write_atomic
 from servicebot_cli.description.loader import RobotSource, load, read_description
 from servicebot_cli.description.packages import PackageResolver
-from servicebot_cli.errors import JointNotFound, OutOfLimits, PackageNotFound
 from servicebot_cli.kinematics import diff_drive
-from servicebot_cli.output.files import OutputError, atomic_output, write_atomic
 from tests.conftest import FIXTURES, SIM_URDF
 
 
@@ -145,7 +145,7 @@ def test_bundled_robot_is_named_by_a_real_path(monkeypatch, tmp_path):
 
 
 def test_atomic_directory_appears_whole_or_not_at_all(tmp_path):
-    from servicebot_cli.output.files import atomic_directory
+    from servicebot_cli.common.files import atomic_directory
 
     target = tmp_path / "bag"
     with pytest.raises(RuntimeError), atomic_directory(target) as building:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from servicebot_cli.inspection.numbers import rpy_of
+from servicebot_cli.inspect.numbers import rpy_of
 from servicebot_cli.kinematics.rotations import matrix_from_rpy, rpy_from_matrix
 
 

@@ -10,7 +10,7 @@ import sys
 
 import pytest
 
-from servicebot_cli.inspection import SCHEMA, SECTIONS
+from servicebot_cli.inspect import SCHEMA, SECTIONS
 from tests.conftest import (
     CONTROLLERS_YAML,
     REAL_URDF,

@@ -13,7 +13,7 @@ import pydot
 import pytest
 
 from servicebot_cli.description.elements import Joint, Pose
-from servicebot_cli.inspection.tree import kinematic_tree
+from servicebot_cli.inspect.tree import kinematic_tree
 from tests.conftest import REAL_URDF, SIM_URDF
 from tests.inspect.conftest import write_chain
 

@@ -12,9 +12,9 @@ import numpy as np
 import pinocchio as pin
 import pytest
 
+from servicebot_cli.description.joint_space import JointSpace
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.kinematics.chain import Chain
-from servicebot_cli.kinematics.configuration import JointSpace
 from servicebot_cli.kinematics.diagnosis import hint
 from servicebot_cli.kinematics.frames import link_names
 from servicebot_cli.kinematics.inverse import IkSettings, IkSolver, IkTarget

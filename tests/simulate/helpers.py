@@ -6,11 +6,11 @@ import json
 from typing import Any
 
 from servicebot_cli.description.loader import RobotSource, load
-from servicebot_cli.sim import simulator
-from servicebot_cli.sim.body import SimRobot, sim_robot
-from servicebot_cli.sim.located import parse
-from servicebot_cli.sim.scenario import Scenario, read_scenario
-from servicebot_cli.sim.world import world_solids
+from servicebot_cli.simulate import simulator
+from servicebot_cli.simulate.body import SimRobot, sim_robot
+from servicebot_cli.simulate.scenario.definition import Scenario, read_scenario
+from servicebot_cli.simulate.scenario.located import parse
+from servicebot_cli.simulate.world.solids import world_solids
 
 
 def body() -> SimRobot:

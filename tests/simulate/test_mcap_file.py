@@ -10,7 +10,7 @@ import pytest
 from mcap.reader import make_reader
 from mcap.stream_reader import StreamReader
 
-from servicebot_cli.sim.mcap_file import MAGIC, Channel, write_mcap
+from servicebot_cli.simulate.bag.mcap_file import MAGIC, Channel, write_mcap
 
 CHANNELS = [
     Channel("/a", "cdr", "pkg/A", "ros2msg", b"int32 x", {"k": "v"}),

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from servicebot_cli.description.sensors import LidarSpec, NoiseSpec
-from servicebot_cli.sim.lidar import readings
-from servicebot_cli.sim.msgdefs import MESSAGE_DEFINITIONS
+from servicebot_cli.simulate.bag.msgdefs import MESSAGE_DEFINITIONS
+from servicebot_cli.simulate.sensors.lidar import readings
 from tests.simulate.helpers import body, run
 
 BODY = body()

@@ -1,0 +1,79 @@
+"""Catalogue texts for what URDF parsers ignore: Gazebo, ros2_control, controllers, the model."""
+
+from __future__ import annotations
+
+from servicebot_cli.check.catalogue import Rule
+from servicebot_cli.check.findings import Severity
+
+E, W, N = Severity.ERROR, Severity.WARNING, Severity.INFO
+
+ROS_RULES = (
+    # -- Gazebo, ros2_control, transmissions -----------------------------------------------------
+    Rule("SB501", "gazebo-unknown-reference", E, "<gazebo reference> names no link or joint",
+         "Gazebo silently ignores the block: its friction, colour, sensors or plugins never "
+         "apply.",
+         "Use the suggested name."),
+    Rule("SB502", "sensor-parameter", E, "A sensor parameter out of range",
+         "samples > 0, min_angle < max_angle, 0 < range min < range max, update_rate > 0, "
+         "image width and height > 0, clip near < far, noise stddev >= 0.",
+         "Write the sensor's real values."),
+    Rule("SB503", "mixed-gazebo", W, "Gazebo Classic and gz-sim plugins in one file",
+         "libgazebo_ros_* plugins load only in Gazebo Classic, gz-sim-* (ignition-gazebo-*) "
+         "only in gz-sim: one of the two sets never loads.",
+         "Keep one simulator's plugins, or select them with a xacro argument."),
+    Rule("SB504", "control-unknown-joint", E, "<ros2_control> names a joint that does not exist",
+         "The controller manager refuses to start.", "Use the suggested name."),
+    Rule("SB505", "control-interface", W, "A ros2_control interface name that is not standard",
+         "Standard interfaces are position, velocity, acceleration and effort; controllers "
+         "look for those names. A close misspelling is almost certainly a typo.",
+         "Use the suggested name."),
+    Rule("SB506", "control-fixed-joint", E, "A command interface on a fixed joint",
+         "A fixed joint cannot be commanded.", "Remove the command interface."),
+    Rule("SB507", "control-joint-twice", E, "A joint in two ros2_control systems",
+         "Two hardware systems would command the same joint; the resource manager refuses.",
+         "Keep the joint in one system."),
+    Rule("SB508", "control-limits", W, "Command limits outside the URDF limits",
+         "A command interface's min/max allows more than the joint's URDF position or "
+         "velocity limits.",
+         "Bring min/max inside the URDF limits."),
+    Rule("SB509", "control-no-plugin", E, "<ros2_control> without a hardware plugin",
+         "<hardware><plugin> names the hardware interface to load; without it nothing runs.",
+         "Add <hardware><plugin>package/Class</plugin></hardware>."),
+    Rule("SB510", "control-hardware-param", E, "A malformed hardware parameter",
+         "A serial port must be a device path (/dev/ttyUSB0, /dev/serial/by-id/...) and a "
+         "baud rate a standard one (9600, 115200, ...).",
+         "Write a device path and a standard baud rate."),
+    Rule("SB511", "transmission-unknown-joint", E,
+         "<transmission> names a joint that does not exist",
+         "The transmission loader fails or silently skips it.", "Use the suggested name."),
+    # -- controller configuration ----------------------------------------------------------------
+    Rule("SB601", "controllers-yaml", E, "The controllers YAML cannot be read",
+         "Not YAML, or not the shape of a ros2_control parameters file "
+         "(controller: ros__parameters: ...).",
+         "Fix the YAML at the reported line."),
+    Rule("SB602", "controller-unknown-joint", E,
+         "A controller names a joint the URDF does not have",
+         "left_wheel_names, right_wheel_names and joints must name URDF joints.",
+         "Use the suggested name."),
+    Rule("SB603", "wheel-radius", E, "wheel_radius disagrees with the URDF's wheels",
+         "diff_drive_controller's odometry and speed scale by the radius; the URDF's wheel "
+         "cylinders imply another value (beyond 1 %).",
+         "Use the value the URDF implies, or fix the URDF."),
+    Rule("SB604", "wheel-separation", E, "wheel_separation disagrees with the URDF's wheels",
+         "Turn rates and odometry scale by the separation of the left and right wheels; the "
+         "URDF's wheel positions imply another value (beyond 1 %).",
+         "Use the value the URDF implies, or fix the URDF."),
+    Rule("SB605", "wheel-side", E, "A left wheel on the right, or a right wheel on the left",
+         "The URDF puts the wheel on the other side of the robot (y > 0 is left, REP 103).",
+         "Swap the names between left_wheel_names and right_wheel_names."),
+    Rule("SB606", "controller-fixed-joint", E, "A controller commands a joint that cannot move",
+         "The joint is fixed in the URDF.", "Remove it from the controller."),
+    # -- model -----------------------------------------------------------------------------------
+    Rule("SB701", "model-build", E, "Pinocchio cannot build the model",
+         "Every servicebot command builds the same Pinocchio model; this is what it said. "
+         "Built only when the cheaper rules found no error.",
+         "Fix what the message says."),
+    Rule("SB702", "model-skipped", N, "The model was not built because of errors above",
+         "Building the model of a broken description says nothing new; fix the errors "
+         "reported before this one and check again."),
+)

@@ -1,0 +1,238 @@
+"""Catalogue texts for the URDF itself: parsing, the tree, joints, inertia, geometry."""
+
+from __future__ import annotations
+
+from servicebot_cli.check.catalogue import Rule
+from servicebot_cli.check.findings import Severity
+
+E, W, N = Severity.ERROR, Severity.WARNING, Severity.INFO
+
+URDF_RULES = (
+    # -- parse and safety ------------------------------------------------------------------------
+    Rule("SB001", "unreadable-file", E, "A file cannot be read",
+         "A file the description needs is missing, a directory, or not readable: a xacro "
+         "include, or a file found while walking a directory. A FILE named on the command "
+         "line that cannot be read stops the run with exit code 2 instead.",
+         "Fix the path or the permissions (chmod +r)."),
+    Rule("SB002", "empty-file", E, "The file is empty",
+         "An empty file (or one holding only whitespace) describes no robot.",
+         "Write a <robot name=\"...\"> element with at least one <link>."),
+    Rule("SB003", "invalid-utf8", E, "The file is not valid UTF-8",
+         "URDF and xacro files are read as UTF-8; a byte that is not UTF-8 usually means the "
+         "file was saved as Latin-1 or Windows-1252.",
+         "Save the file as UTF-8."),
+    Rule("SB004", "malformed-xml", E, "The XML is not well-formed",
+         "A strict parser stops at the first error and reports its line and column; nothing "
+         "is guessed or recovered, since a recovering parser silently drops elements.",
+         "Fix the XML at the reported position (a tag left open, a stray '<' or '&')."),
+    Rule("SB005", "unsafe-xml", E, "A DTD declares entities or names an external DTD",
+         "Entities can read local files (<!ENTITY x SYSTEM \"file:///etc/passwd\">) or expand "
+         "exponentially (billion laughs). They are refused, never resolved, and the network "
+         "is never used.",
+         "Remove the DOCTYPE; use xacro properties for repeated values."),
+    Rule("SB006", "xacro-failed", E, "xacro cannot expand the file",
+         "An unknown macro or property, a bad expression, a missing argument or include. The "
+         "position is the xacro element being expanded when it failed.",
+         "Fix the xacro source at the reported line, or pass the missing NAME:=VALUE."),
+    Rule("SB007", "package-not-found", E, "A $(find PKG) names a package that is nowhere",
+         "Packages resolve through --package NAME=DIR, ROS_PACKAGE_PATH and AMENT_PREFIX_PATH, "
+         "with no ROS installed; the message lists where it looked.",
+         "Pass --package NAME=DIR, or source the ROS workspace that holds the package."),
+    Rule("SB008", "not-a-robot", E, "The root element is not <robot>",
+         "A URDF's root element is <robot>; SDF files (<sdf>) and xacro fragments are not "
+         "robot descriptions.",
+         "Check the right file (for SDF use gz sdf --check)."),
+    Rule("SB009", "robot-unnamed", E, "<robot> has no name",
+         "urdfdom refuses a robot without a name attribute; an empty name is refused too.",
+         "Add name=\"my_robot\" to <robot>."),
+    Rule("SB010", "unknown-element", W, "An element that URDF does not define",
+         "Core URDF elements (link, joint, inertial, geometry...) are checked against the URDF "
+         "specification; a misspelt one is silently ignored by every parser. Extension "
+         "elements (gazebo, transmission, ros2_control, sensor, ...) and namespaced ones pass "
+         "quietly.",
+         "Use the suggested spelling, or remove the element."),
+    Rule("SB011", "unknown-attribute", W, "An attribute that URDF does not define",
+         "A misspelt attribute (<limit lowr=...>) is ignored by parsers and the default value "
+         "is used instead.",
+         "Use the suggested spelling, or remove the attribute."),
+    Rule("SB012", "missing-attribute", E, "A required element or attribute is missing",
+         "For example a joint without type, parent or child, an <inertial> without <mass> "
+         "or with fewer than six inertia values, a <box> without size, a <mesh> without "
+         "filename, a <limit> without effort or velocity, a <mimic> without joint.",
+         "Add the element or attribute the message names."),
+    Rule("SB013", "bad-number", E, "A value is not a number or has the wrong count",
+         "Numbers are plain decimals (1, -0.5, 2e-3); vectors have exactly three "
+         "components (rgba: four). urdfdom refuses anything else, including trailing spaces.",
+         "Write the value as the message shows."),
+    Rule("SB014", "non-finite", E, "NaN or infinity in a value",
+         "nan, inf and numbers too large for a double make every computation that touches "
+         "them meaningless; urdfdom refuses them.",
+         "Write a finite number."),
+    Rule("SB015", "too-large", E, "The file is over the size or complexity limits",
+         "Descriptions over 32 MB, with more than a million elements, nested over 256 deep "
+         "or with more than 20000 links are refused at once, instead of a build that takes "
+         "minutes.",
+         "Check that this really is a robot description."),
+    Rule("SB016", "urdf-version", E, "An unsupported <robot version>",
+         "urdfdom accepts version=\"1.0\" to \"1.2\" in the form x.y, and refuses the rest.",
+         "Remove the version attribute or set version=\"1.0\"."),
+    Rule("SB017", "xacro-warning", W, "xacro warned while expanding",
+         "xacro warns about deprecated syntax (for example a macro call without the xacro: "
+         "prefix or an unused argument); newer xacro versions refuse it.",
+         "Follow xacro's advice in the message."),
+    # -- tree and names --------------------------------------------------------------------------
+    Rule("SB101", "duplicate-link", E, "Two links have the same name",
+         "urdfdom refuses the file; the message names both lines.", "Rename one link."),
+    Rule("SB102", "duplicate-joint", E, "Two joints have the same name",
+         "urdfdom refuses the file; the message names both lines.", "Rename one joint."),
+    Rule("SB103", "unknown-link", E, "A joint names a link that does not exist",
+         "The joint's <parent link> or <child link> names no <link>.",
+         "Use the suggested name, or add the link."),
+    Rule("SB104", "no-root", E, "Every link has a parent: there is no root",
+         "A URDF is a tree with one root link, the one that is no joint's child. When every "
+         "link is some joint's child, the joints form a loop.",
+         "Remove the joint that closes the loop (see SB107)."),
+    Rule("SB105", "several-roots", E, "Several links have no parent",
+         "A URDF has exactly one root; urdfdom refuses the file and Pinocchio would build a "
+         "different robot. The message lists every root with the size of its subtree.",
+         "Attach every part to the robot with a joint (a fixed one if it does not move)."),
+    Rule("SB106", "two-parents", E, "A link is the child of two joints",
+         "check_urdf accepts this and silently keeps one of the joints. The message names "
+         "both joints.",
+         "Remove one of the joints, or give the second one its own child link."),
+    Rule("SB107", "kinematic-loop", E, "The joints form a loop",
+         "URDF cannot describe closed chains; check_urdf prints such a file forever. The "
+         "message prints the cycle.",
+         "Break the loop: remove one joint and model the closure in the controller or "
+         "simulator (a Gazebo joint in a <gazebo> block)."),
+    Rule("SB108", "disconnected-link", E, "A link no joint connects",
+         "A link that is neither parent nor child of any joint, in a robot with other links, "
+         "is a second root.",
+         "Attach it with a joint, or remove it."),
+    Rule("SB109", "no-links", E, "The robot has no links",
+         "A URDF needs at least one <link>.", "Add the robot's links."),
+    Rule("SB110", "unnamed", E, "A link or joint without a name",
+         "Every link and joint needs a non-empty, unique name.", "Add a name attribute."),
+    Rule("SB111", "duplicate-material", E, "Two top-level materials have the same name",
+         "urdfdom refuses the file.", "Rename one material or remove the duplicate."),
+    Rule("SB112", "undefined-material", W, "A material has no colour or texture and no definition",
+         "A <material name> with neither <color> nor <texture>, defined nowhere at the top "
+         "level, gives no colour (Gazebo/... names only mean something to Gazebo, in a "
+         "<gazebo> block).",
+         "Define the material at the top level with a <color rgba>."),
+    Rule("SB113", "color-out-of-range", W, "An rgba component outside [0, 1]",
+         "Colours are four numbers between 0 and 1, not 0-255.",
+         "Divide 0-255 values by 255."),
+    # -- joints ----------------------------------------------------------------------------------
+    Rule("SB201", "unknown-joint-type", E, "A joint type URDF does not have",
+         "URDF joints are revolute, continuous, prismatic, fixed, floating and planar. There "
+         "is no ball (spherical) joint: chain three revolute joints through two massless "
+         "links, or use floating.",
+         "Use one of the URDF joint types."),
+    Rule("SB202", "missing-limits", E, "A revolute or prismatic joint without <limit>",
+         "urdfdom refuses revolute and prismatic joints without limits; continuous joints "
+         "need none.",
+         "Add <limit lower upper effort velocity>, or make the joint continuous."),
+    Rule("SB203", "lower-above-upper", E, "A lower limit above the upper limit",
+         "No position satisfies the limits; planners and controllers fail.",
+         "Swap the limits."),
+    Rule("SB204", "equal-limits", W, "Equal lower and upper limits",
+         "The joint cannot move (check_urdf accepts it; some tools read 0/0 as no limits).",
+         "Make it fixed, or give it its real range."),
+    Rule("SB205", "negative-effort-velocity", E, "A negative effort or velocity limit",
+         "Effort and velocity limits are magnitudes; a negative one forbids any motion.",
+         "Write the magnitude."),
+    Rule("SB206", "zero-effort-velocity", W, "A zero effort or velocity limit on a moving joint",
+         "Controllers that enforce the limits will never move the joint.",
+         "Write the actuator's real limits."),
+    Rule("SB207", "zero-axis", E, "A moving joint with a zero axis",
+         "The joint moves about or along nothing; Pinocchio and KDL produce NaNs.",
+         "Write the axis, for example 0 0 1."),
+    Rule("SB208", "non-unit-axis", W, "An axis that is not a unit vector",
+         "Most tools normalise it, some scale the motion by its length.",
+         "Write the normalised axis."),
+    Rule("SB209", "mimic-unknown-joint", E, "<mimic> names a joint that does not exist",
+         "The mimicking joint follows nothing.", "Use the suggested name."),
+    Rule("SB210", "mimic-self", E, "A joint mimics itself", "The definition is circular.",
+         "Name the joint it should follow."),
+    Rule("SB211", "mimic-cycle", E, "Mimic joints that follow each other in a cycle",
+         "No joint in the cycle has an independent position; the message prints the cycle.",
+         "Make one joint of the cycle independent."),
+    Rule("SB212", "limits-in-degrees", W, "Angular limits that look like degrees",
+         "URDF angles are radians. Revolute limits beyond 2 pi that are whole numbers from "
+         "30 to 720 (90, 180, 360) were almost certainly written in degrees.",
+         "Convert to radians (180 -> 3.14159)."),
+    Rule("SB213", "soft-limits-outside", W, "safety_controller soft limits outside the hard limits",
+         "soft_lower_limit must be >= lower and soft_upper_limit <= upper (and soft lower <= "
+         "soft upper), or the safety controller allows what the joint cannot do.",
+         "Bring the soft limits inside the hard ones."),
+    Rule("SB214", "limits-ignored", N, "Position limits on a continuous joint are ignored",
+         "Continuous joints have no position limits; lower and upper are read by nothing.",
+         "Remove them, or make the joint revolute."),
+    # -- inertia ---------------------------------------------------------------------------------
+    Rule("SB301", "inertia-mismatch", W, "Inertia does not match the mass and collision geometry",
+         "The principal moments of the inertia are compared, in any frame, with those of a "
+         "solid of the link's mass filling its collision geometry (boxes, cylinders and "
+         "spheres by formula, closed meshes by their volume). Beyond a factor (2 by default, "
+         "inertia-factor in the settings) the values are printed with the ones that match.",
+         "Use the printed values, or compute the inertia from CAD."),
+    Rule("SB302", "negative-mass", E, "A negative mass", "Mass is positive or zero.",
+         "Write the link's mass in kg."),
+    Rule("SB303", "massless-moving-link", E, "A moving joint that moves nothing with mass",
+         "A joint other than fixed whose child link, and everything attached below it, has "
+         "no mass (zero, or no <inertial>): dynamics are singular and simulators drop or "
+         "refuse the link. Massless frames on fixed joints (tool frames, sensor frames) are "
+         "fine and not reported.",
+         "Give the moving link its mass and inertia."),
+    Rule("SB304", "missing-inertial", W, "A moving link without <inertial>",
+         "The link is moved by a joint but carries no mass; links below it do. Gazebo drops "
+         "massless links, KDL ignores them.",
+         "Add an <inertial>, or merge the link into its child."),
+    Rule("SB305", "zero-mass", W, "Zero mass on a moving link",
+         "The link is moved by a joint and has mass 0 (links below it have mass).",
+         "Give the link its mass, or merge it into its child."),
+    Rule("SB306", "inertia-not-positive", E, "An inertia matrix that is not positive definite",
+         "A principal moment is negative (or the matrix is not symmetric positive): no body "
+         "has such an inertia, and simulators explode. The principal moments are printed.",
+         "Compute the inertia again (solid formulas, or from CAD)."),
+    Rule("SB307", "singular-inertia", W, "Mass with a zero principal moment of inertia",
+         "A point or a rod: physically possible in the limit, but simulators need all three "
+         "moments positive.",
+         "Give the link a small realistic inertia."),
+    Rule("SB308", "triangle-inequality", E, "Principal moments that break the triangle inequality",
+         "For any body each principal moment is at most the sum of the other two "
+         "(Ixx + Iyy >= Izz ...); the printed moments cannot belong to a real body.",
+         "Compute the inertia again (solid formulas, or from CAD)."),
+    Rule("SB309", "root-link-inertia", N, "The root link carries inertia",
+         "KDL (robot_state_publisher, many ROS tools) ignores the root link's inertia and "
+         "warns; Pinocchio and Gazebo use it.",
+         "If KDL users matter, add a massless base_footprint root with a fixed joint."),
+    # -- geometry and files ----------------------------------------------------------------------
+    Rule("SB401", "mesh-not-found", E, "A mesh file cannot be found",
+         "Relative paths resolve from the URDF's directory, file:// from the root, "
+         "package://PKG through --package, ROS_PACKAGE_PATH and AMENT_PREFIX_PATH (as for "
+         "expand). The message says where it looked.",
+         "Fix the path, or pass --package NAME=DIR."),
+    Rule("SB402", "mesh-unloadable", E, "A mesh file cannot be loaded",
+         "The file exists but is not a mesh that trimesh (or the built-in STL, OBJ and "
+         "COLLADA readers) can read.",
+         "Export the mesh again as STL, OBJ or DAE."),
+    Rule("SB403", "mesh-empty", E, "A mesh with no triangles", "Nothing would be drawn or collide.",
+         "Export the mesh again."),
+    Rule("SB404", "mesh-scale", W, "A mesh of implausible size",
+         "A mesh larger than 20 m or smaller than 1 mm across (after scale) is usually in the "
+         "wrong unit: a mesh in millimetres is 1000 times too large.",
+         "Set <mesh scale=\"0.001 0.001 0.001\"> or export in metres."),
+    Rule("SB405", "non-positive-size", E, "A primitive with a zero or negative size",
+         "Box sizes, cylinder radius and length, and sphere radius must be positive.",
+         "Write the real size in metres."),
+    Rule("SB406", "unknown-geometry", E, "A <geometry> with no shape or an unknown one",
+         "URDF geometry is one of box, cylinder, sphere or mesh.",
+         "Use one of those shapes (a capsule: a cylinder and two spheres)."),
+)
+URDF_RULES += (
+    Rule("SB407", "capsule", W, "A <capsule>, which URDF does not define",
+         "pybullet and Drake read capsules; urdfdom, Pinocchio, RViz and Gazebo Classic "
+         "ignore the shape, so the link has no collision there.",
+         "Use a cylinder and two spheres for tools that need them."),
+)

@@ -1,0 +1,150 @@
+"""Controller configuration rules: a ros2_control controllers YAML against a URDF (SB601-SB606).
+
+Pure: YAML text and a RobotDescription in, issues out, each placed at its YAML line.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+import yaml
+
+from servicebot_cli.check.findings import Issue
+from servicebot_cli.common.errors import DescriptionError, NameNotFound
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.robot import RobotDescription
+    from servicebot_cli.kinematics.drive_geometry import DriveGeometry
+
+TOLERANCE = 0.01
+"""Relative difference allowed between the YAML and the URDF's wheel numbers."""
+
+
+def check(text: str, display: str, robot: RobotDescription) -> Iterator[Issue]:
+    """Every issue of the controllers YAML ``text`` (shown as ``display``) against ``robot``."""
+    try:
+        root = yaml.compose(text, Loader=yaml.SafeLoader)
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        where = (display, mark.line + 1, mark.column + 1) if mark else (display, 0, 0)
+        problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
+        yield Issue("SB601", f"not valid YAML: {problem}", where=where)
+        return
+    sections = _sections(root)
+    if not sections:
+        yield Issue("SB601", "no controller sections (NAME: ros__parameters: ...) found",
+                    where=(display, 1, 1))
+        return
+    checker = _Checker(display, robot)
+    for name, params in sections.items():
+        if name != "controller_manager":
+            yield from checker.section(name, params)
+
+
+def _sections(root: yaml.Node | None) -> dict[str, yaml.MappingNode]:
+    found: dict[str, yaml.MappingNode] = {}
+    if not isinstance(root, yaml.MappingNode):
+        return found
+    for key, value in root.value:
+        params = _get(value, "ros__parameters")
+        if isinstance(params, yaml.MappingNode):
+            found[str(key.value)] = params
+    return found
+
+
+def _get(node: yaml.Node, key: str) -> yaml.Node | None:
+    if isinstance(node, yaml.MappingNode):
+        for k, v in node.value:
+            if isinstance(k, yaml.ScalarNode) and k.value == key:
+                return v
+    return None
+
+
+def _number(node: yaml.Node | None) -> float | None:
+    if not isinstance(node, yaml.ScalarNode):
+        return None
+    try:
+        return float(node.value)
+    except ValueError:
+        return None
+
+
+class _Checker:
+    def __init__(self, display: str, robot: RobotDescription) -> None:
+        self.display = display
+        self.robot = robot
+        self.joints = {j.name: j for j in robot.joints}
+        self._geometry: DriveGeometry | None | str = None
+
+    def where(self, node: yaml.Node) -> tuple[str, int, int]:
+        return (self.display, node.start_mark.line + 1, node.start_mark.column + 1)
+
+    def geometry(self) -> DriveGeometry | str:
+        if self._geometry is None:
+            from servicebot_cli.kinematics.drive_geometry import drive_geometry
+
+            try:
+                self._geometry = drive_geometry(self.robot)
+            except DescriptionError as exc:
+                self._geometry = str(exc).split(": ", 1)[-1]
+        return self._geometry
+
+    def section(self, name: str, params: yaml.MappingNode) -> Iterator[Issue]:
+        for key in ("left_wheel_names", "right_wheel_names", "joints", "joint"):
+            node = _get(params, key)
+            if node is not None:
+                yield from self.names(name, key, node)
+        if _get(params, "left_wheel_names") is not None:
+            yield from self.wheels(name, params)
+
+    def names(self, section: str, key: str, node: yaml.Node) -> Iterator[Issue]:
+        items = node.value if isinstance(node, yaml.SequenceNode) else [node]
+        for item in items:
+            if not isinstance(item, yaml.ScalarNode):
+                yield Issue("SB601", f"{section}.{key} must be a list of joint names",
+                            where=self.where(item))
+                continue
+            joint = self.joints.get(item.value)
+            if joint is None:
+                hint = str(NameNotFound.for_name(item.value, list(self.joints))).split("; ", 1)
+                yield Issue("SB602", f"{section}.{key}: joint '{item.value}' is not in "
+                            f"{self.robot.display}; {hint[-1]}", where=self.where(item))
+            elif not joint.movable:
+                yield Issue("SB606", f"{section}.{key}: joint '{item.value}' is {joint.type} "
+                            "in the URDF", where=self.where(item))
+
+    def wheels(self, section: str, params: yaml.MappingNode) -> Iterator[Issue]:
+        geometry = self.geometry()
+        if isinstance(geometry, str):
+            yield Issue("SB603", f"{section}: cannot check the wheels: {geometry}",
+                        where=self.where(params))
+            return
+        for key, side in (("left_wheel_names", "left"), ("right_wheel_names", "right")):
+            node = _get(params, key)
+            items = node.value if isinstance(node, yaml.SequenceNode) else []
+            for item in items:
+                wheel = next((w for w in geometry.wheels if w.joint == item.value), None)
+                if wheel is not None and wheel.side != side:
+                    yield Issue("SB605", f"{section}.{key}: '{item.value}' is on the "
+                                f"{wheel.side} (y = {wheel.position_m[1]:g} m in the URDF)",
+                                where=self.where(item))
+        yield from self.value(section, params, "wheel_radius", geometry.wheel_radius_m, "SB603",
+                              ("left_wheel_radius_multiplier",))
+        yield from self.value(section, params, "wheel_separation", geometry.track_m, "SB604",
+                              ("wheel_separation_multiplier",))
+
+    def value(self, section: str, params: yaml.MappingNode, key: str, expected: float,
+              code: str, multipliers: tuple[str, ...]) -> Iterator[Issue]:
+        node = _get(params, key)
+        given = _number(node)
+        if node is None or given is None:
+            yield Issue(code, f"{section}: {key} is missing or not a number; the URDF implies "
+                        f"{expected:.6g} m", where=self.where(node or params),
+                        fix=f"{key}: {expected:.6g}")
+            return
+        for multiplier in multipliers:
+            given *= _number(_get(params, multiplier)) or 1.0
+        if abs(given - expected) > TOLERANCE * abs(expected):
+            yield Issue(code, f"{section}: {key} {given:g} m disagrees with the URDF's "
+                        f"{expected:.6g} m", where=self.where(node), fix=f"{key}: {expected:.6g}")

@@ -1,0 +1,99 @@
+"""Gazebo rules: references name real parts, sensors are sane, one simulator (SB501-SB503)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from servicebot_cli.check.findings import Issue
+from servicebot_cli.common.errors import NameNotFound
+from servicebot_cli.description import sensors as specs
+from servicebot_cli.description.elements import parse_float
+from servicebot_cli.description.extensions import Sensor, param
+from servicebot_cli.description.sensors import NoiseSpec
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.robot import RobotDescription
+
+_CLASSIC = ("libgazebo_ros", "gazebo_ros")
+_GZ_SIM = ("gz-sim", "libgz-sim", "ignition-gazebo", "libignition-gazebo", "gz::sim")
+
+
+def check(robot: RobotDescription) -> Iterator[Issue]:
+    """Every Gazebo issue of ``robot``."""
+    names = [link.name for link in robot.links] + [joint.name for joint in robot.joints]
+    known = set(names)
+    for block in robot.gazebo:
+        if block.reference is not None and block.reference not in known:
+            hint = str(NameNotFound.for_name(block.reference, names)).split("; ", 1)[-1]
+            yield Issue("SB501", f"<gazebo reference=\"{block.reference}\"> names no link or "
+                        f"joint; {hint}", block.element)
+    for sensor in robot.sensors:
+        for problem in _sensor_problems(sensor):
+            yield Issue("SB502", f"sensor '{sensor.name}': {problem}", sensor.element)
+    yield from _mixed(robot)
+
+
+def _sensor_problems(sensor: Sensor) -> Iterator[str]:
+    rate = sensor.update_rate_hz
+    if rate is not None and not (rate > 0 and math.isfinite(rate)):
+        yield f"update_rate {rate:g} Hz must be positive"
+    if sensor.type in specs.LIDAR_TYPES:
+        yield from _lidar(sensor)
+    elif sensor.type in specs.CAMERA_TYPES:
+        yield from _camera(specs.camera_spec(sensor))
+    elif sensor.type == "imu":
+        imu = specs.imu_spec(sensor)
+        for noise in (*imu.angular_velocity_noise, *imu.linear_acceleration_noise):
+            yield from _noise(noise)
+
+
+def _lidar(sensor: Sensor) -> Iterator[str]:
+    lidar = specs.lidar_spec(sensor)
+    root = "lidar" if any(k.startswith("lidar/") for k, _ in sensor.params) else "ray"
+    samples = param(sensor.params, f"{root}/scan/horizontal/samples")
+    count = parse_float(samples)
+    if samples is not None and not (count is not None and count > 0 and count.is_integer()):
+        yield f"horizontal samples '{samples}' must be a positive whole number"
+    low, high = lidar.min_angle_rad, lidar.max_angle_rad
+    if low is not None and high is not None and not low < high:
+        yield f"min_angle {low:g} rad must be below max_angle {high:g} rad"
+    near, far = lidar.min_range_m, lidar.max_range_m
+    if near is not None and not near > 0:
+        yield f"range min {near:g} m must be positive"
+    if near is not None and far is not None and not near < far:
+        yield f"range min {near:g} m must be below range max {far:g} m"
+    yield from _noise(lidar.noise)
+
+
+def _camera(camera: specs.CameraSpec) -> Iterator[str]:
+    for label, value in (("width", camera.width_px), ("height", camera.height_px)):
+        if value is not None and value <= 0:
+            yield f"image {label} {value} px must be positive"
+    fov = camera.horizontal_fov_rad
+    if fov is not None and not 0 < fov < 2 * math.pi:
+        yield f"horizontal_fov {fov:g} rad must be between 0 and 2 pi"
+    near, far = camera.near_clip_m, camera.far_clip_m
+    if near is not None and far is not None and not 0 < near < far:
+        yield f"clip near {near:g} m and far {far:g} m need 0 < near < far"
+    yield from _noise(camera.noise)
+
+
+def _noise(noise: NoiseSpec | None) -> Iterator[str]:
+    if noise is None:
+        return
+    for label, value in (("stddev", noise.stddev), ("bias_stddev", noise.bias_stddev)):
+        if not value >= 0:
+            yield f"noise {label} {value:g} must not be negative"
+
+
+def _mixed(robot: RobotDescription) -> Iterator[Issue]:
+    classic = [p for p in robot.plugins if p.filename.startswith(_CLASSIC)]
+    modern = [p for p in robot.plugins
+              if p.filename.startswith(_GZ_SIM) or p.name.startswith("gz::sim")]
+    if classic and modern:
+        yield Issue("SB503", f"{len(classic)} Gazebo Classic plugin(s) ('{classic[0].filename}') "
+                    f"and {len(modern)} gz-sim plugin(s) ('{modern[0].filename}') in one file; "
+                    "each simulator loads only its own", modern[0].element,
+                    fix="select the plugins with a xacro argument (sim:=classic|gz)")

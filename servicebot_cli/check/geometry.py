@@ -1,0 +1,104 @@
+"""Geometry rules: shapes known and positive, mesh files found, loadable and of plausible size.
+
+SB401-SB407. Mesh references resolve as in ``expand`` (relative to the file that wrote
+them, ``file://``, ``package://`` through the package search); each file is read once.
+"""
+
+from __future__ import annotations
+
+import math
+import xml.etree.ElementTree as ET
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound
+from servicebot_cli.check.findings import Issue
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.elements import Link, Shape
+    from servicebot_cli.description.robot import RobotDescription
+
+SHAPES = ("box", "cylinder", "sphere", "mesh")
+LARGEST_M = 20.0
+"""A mesh wider than this [m] is reported as implausibly large (SB404)."""
+SMALLEST_M = 0.001
+"""A mesh narrower than this [m] is reported as implausibly small (SB404)."""
+
+
+def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
+    """Every geometry issue of ``robot``."""
+    for link in robot.links:
+        for kind, shapes in (("visual", link.visuals), ("collision", link.collisions)):
+            for shape in shapes:
+                yield from _shape(robot, link, kind, shape, env)
+
+
+def _shape(robot: RobotDescription, link: Link, kind: str, shape: Shape,
+           env: CheckEnv) -> Iterator[Issue]:
+    element = shape.element.find("geometry") if shape.element is not None else None
+    if element is None:
+        return  # SB012 reports a missing <geometry>
+    found = [c for c in element if isinstance(c.tag, str)]
+    where = f"{kind} of link '{link.name}'"
+    if not found or found[0].tag not in (*SHAPES, "capsule"):
+        what = f"<{found[0].tag}>" if found else "nothing"
+        yield Issue("SB406", f"the geometry of the {where} holds {what}; use box, cylinder, "
+                    "sphere or mesh", element)
+        return
+    if found[0].tag == "capsule":
+        yield Issue("SB407", f"the {where} is a capsule, which only pybullet and Drake read",
+                    found[0])
+        return
+    yield from _sizes(found[0], where)
+    if found[0].tag == "mesh" and shape.geometry.filename and env.load_meshes:
+        yield from _mesh(robot, shape, found[0], where, env)
+
+
+def _sizes(element: ET.Element, where: str) -> Iterator[Issue]:
+    for key in ("size", "radius", "length", "scale"):
+        values = []
+        for text in (element.get(key) or "").split():
+            try:
+                values.append(float(text))
+            except ValueError:
+                return  # SB013 reports it
+        bad = [v for v in values if math.isfinite(v) and (v == 0 if key == "scale" else v <= 0)]
+        if bad:
+            yield Issue("SB405", f"<{element.tag} {key}=\"{element.get(key)}\"> of the {where}: "
+                        "sizes must be positive" + (" (scale 0 flattens it)" if key == "scale"
+                                                    else ""), element)
+
+
+def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str,
+          env: CheckEnv) -> Iterator[Issue]:
+    try:
+        info = env.mesh(robot, shape)
+    except MeshNotFound as exc:
+        yield Issue("SB401", f"{where}: {exc}", element,
+                    fix="fix the path, or pass --package NAME=DIR for package:// references")
+        return
+    except MeshError as exc:
+        yield Issue("SB402", f"{where}: mesh '{shape.geometry.filename}' cannot be loaded: {exc}",
+                    element)
+        return
+    if info.triangles == 0:
+        yield Issue("SB403", f"{where}: mesh '{shape.geometry.filename}' has no triangles",
+                    element)
+        return
+    scale = shape.geometry.scale
+    if not all(math.isfinite(s) for s in scale):
+        return
+    extent_m = max(abs(hi - lo) * abs(s) for lo, hi, s in zip(info.lower, info.upper, scale,
+                                                                  strict=True))
+    name = shape.geometry.filename
+    if extent_m > LARGEST_M:
+        yield Issue("SB404", f"{where}: mesh '{name}' is {extent_m:.4g} m across; is it in "
+                    "millimetres?", element, fix=_scale_fix(scale, 0.001))
+    elif 0 < extent_m < SMALLEST_M:
+        yield Issue("SB404", f"{where}: mesh '{name}' is {extent_m:.3g} m across; is a "
+                    "millimetre scale applied to a mesh already in metres?", element,
+                    fix=_scale_fix(scale, 1000.0))
+
+
+def _scale_fix(scale: tuple[float, float, float], factor: float) -> str:
+    return 'scale="' + " ".join(f"{s * factor:g}" for s in scale) + '"'

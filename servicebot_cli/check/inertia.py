@@ -1,0 +1,184 @@
+"""Inertia rules: masses, physically possible inertias, agreement with geometry (SB301-SB309)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from servicebot_cli.check import solids
+from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound
+from servicebot_cli.check.findings import Issue
+from servicebot_cli.kinematics.transforms import rpy_matrix
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.elements import Link
+    from servicebot_cli.description.robot import RobotDescription
+
+
+def _mass(link: Link) -> float:
+    mass = link.inertial.mass_kg if link.inertial else None
+    return mass if mass is not None and math.isfinite(mass) and mass > 0 else 0.0
+
+
+def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
+    """Every inertia issue of ``robot``."""
+    for link in robot.links:
+        inertial = link.inertial
+        if inertial is None:
+            continue
+        if inertial.mass_kg is not None and inertial.mass_kg < 0:
+            yield Issue("SB302", f"link '{link.name}' has mass {inertial.mass_kg:g} kg",
+                        inertial.element)
+            continue
+        values = inertial.inertia_kg_m2
+        if values is None or not all(math.isfinite(v) for v in values):
+            continue  # SB012/SB013/SB014 report it
+        physical = yield from _possible(link, values)
+        if physical and _mass(link) > 0:
+            yield from _against_geometry(robot, link, env)
+    yield from _moving_masses(robot)
+    root = robot.root_link
+    if root is not None and _mass(robot.link(root)) > 0:
+        link = robot.link(root)
+        yield Issue("SB309", f"root link '{root}' carries {_mass(link):g} kg; KDL-based tools "
+                    "(robot_state_publisher) ignore a root link's inertia", link.element,
+                    fix="add a massless root link (base_footprint) with a fixed joint to it, "
+                    "if KDL users matter")
+
+
+def _possible(link: Link, values: tuple[float, ...]) -> Iterator[Issue]:
+    """SB306-SB308; returns True when the inertia is a real body's."""
+    moments = np.linalg.eigvalsh(solids.tensor(values))  # type: ignore[arg-type]
+    scale = float(np.abs(moments).max())
+    shown = ", ".join(f"{m:.6g}" for m in moments)
+    element = link.inertial.element if link.inertial else None
+    if scale <= 1e-15:  # all zero, up to rounding in the file
+        if _mass(link) > 0:
+            yield Issue("SB307", f"link '{link.name}' has mass {_mass(link):g} kg and zero "
+                        "inertia (a point mass)", element)
+        return False
+    if moments[0] < -1e-9 * scale:
+        yield Issue("SB306", f"link '{link.name}' inertia is not positive definite: principal "
+                    f"moments {shown} kg m^2", element)
+        return False
+    if moments[0] <= 1e-9 * scale:
+        if _mass(link) > 0:
+            yield Issue("SB307", f"link '{link.name}' inertia has a zero principal moment "
+                        f"({shown} kg m^2)", element)
+        return False
+    if moments[0] + moments[1] < moments[2] * (1 - 1e-6):
+        yield Issue("SB308", f"link '{link.name}' principal moments {shown} kg m^2 break the "
+                    f"triangle inequality: {moments[0]:.6g} + {moments[1]:.6g} < "
+                    f"{moments[2]:.6g}", element)
+        return False
+    return True
+
+
+def _expected(robot: RobotDescription, link: Link, env: CheckEnv) -> solids.Solid | None:
+    """The link's collision geometry as one solid, or None when it cannot be known."""
+    parts = []
+    for shape in link.collisions:
+        geometry = shape.geometry
+        found = solids.primitive(geometry)
+        if found is not None:
+            volume, moment, label = found
+            parts.append(solids.placed(volume, np.zeros(3), moment, (1, 1, 1), shape.origin, label))
+            continue
+        if geometry.kind != "mesh" or not env.load_meshes:
+            return None
+        try:
+            info = env.mesh(robot, shape, with_mass=True)
+        except (MeshNotFound, MeshError):
+            return None
+        finite = all(map(math.isfinite, geometry.scale))
+        if info.mass is None or info.mass.volume <= 0 or not finite:
+            return None
+        parts.append(solids.placed(info.mass.volume, np.array(info.mass.centroid),
+                                   info.mass.second_moment, geometry.scale, shape.origin,
+                                   f"closed mesh '{geometry.filename}'"))
+    return solids.combined(parts) if parts else None
+
+
+def _against_geometry(robot: RobotDescription, link: Link, env: CheckEnv) -> Iterator[Issue]:
+    solid = _expected(robot, link, env)
+    inertial = link.inertial
+    if solid is None or inertial is None or inertial.inertia_kg_m2 is None:
+        return
+    mass = _mass(link)
+    expected = solids.inertia_of(solid, mass)
+    want = np.linalg.eigvalsh(expected)
+    have = np.linalg.eigvalsh(solids.tensor(inertial.inertia_kg_m2))
+    ratios = have / want
+    worst = float(max(ratios.max(), 1.0 / ratios.min()))
+    if worst <= env.inertia_factor:
+        return
+    rotation = rpy_matrix(*inertial.origin.rpy)
+    local = rotation.T @ expected @ rotation  # the geometry's inertia in the inertial's axes
+    direction = "too large" if ratios.max() >= 1.0 / ratios.min() else "too small"
+    yield Issue(
+        "SB301",
+        f"link '{link.name}' inertia (principal moments {_join(have)} kg m^2) does not match a "
+        f"{mass:g} kg {solid.label} ({_join(want)} kg m^2): up to {worst:.3g} times {direction}",
+        inertial.element,
+        fix=f"use {_components(local)}",
+    )
+
+
+def _join(values: np.ndarray) -> str:
+    return ", ".join(f"{v:.6g}" for v in values)
+
+
+def _components(matrix: np.ndarray) -> str:
+    diagonal = f"ixx={matrix[0, 0]:.6g} iyy={matrix[1, 1]:.6g} izz={matrix[2, 2]:.6g}"
+    off = {"ixy": matrix[0, 1], "ixz": matrix[0, 2], "iyz": matrix[1, 2]}
+    if all(abs(v) <= 1e-9 * abs(matrix).max() for v in off.values()):
+        return diagonal + " (ixy=ixz=iyz=0)"
+    return diagonal + " " + " ".join(f"{k}={v:.6g}" for k, v in off.items())
+
+
+def _moving_masses(robot: RobotDescription) -> Iterator[Issue]:
+    """SB303-SB305: what a moving joint moves must have mass; fixed frames may be massless."""
+    by_name = {link.name: link for link in robot.links}
+    below: dict[str, list[str]] = {}
+    for joint in robot.joints:
+        if joint.parent in by_name and joint.child in by_name:
+            below.setdefault(joint.parent or "", []).append(joint.child or "")
+    carried = _subtree_masses(by_name, below)
+    for joint in robot.joints:
+        link = by_name.get(joint.child or "")
+        if not joint.movable or link is None:
+            continue
+        if carried[link.name] == 0.0:
+            yield Issue("SB303", f"{joint.type} joint '{joint.name}' moves link '{link.name}', "
+                        "and nothing it carries has mass", link.element,
+                        fix="add an <inertial> with the link's real mass and inertia")
+        elif link.inertial is None:
+            yield Issue("SB304", f"link '{link.name}' is moved by joint '{joint.name}' but has "
+                        "no <inertial>", link.element, fix="add an <inertial>")
+        elif _mass(link) == 0.0 and link.inertial.mass_kg == 0.0:
+            yield Issue("SB305", f"link '{link.name}' is moved by joint '{joint.name}' and has "
+                        "mass 0", link.inertial.element, fix="give the link its real mass")
+
+
+def _subtree_masses(by_name: dict[str, Link], below: dict[str, list[str]]) -> dict[str, float]:
+    """Mass of each link plus everything below it, in one iterative post-order pass."""
+    carried: dict[str, float] = {}
+    for start in by_name:
+        if start in carried:
+            continue
+        stack = [(start, False)]
+        while stack:  # iterative, and safe on loops (a link on a loop is counted once)
+            name, children_done = stack.pop()
+            if children_done:
+                carried[name] = _mass(by_name[name]) + sum(
+                    carried.get(c, 0.0) for c in below.get(name, ()) if c != name)
+                continue
+            if name in carried:
+                continue
+            carried[name] = 0.0  # placeholder: marks the link as being visited
+            stack.append((name, True))
+            stack.extend((c, False) for c in below.get(name, ()) if c not in carried)
+    return carried

@@ -1,0 +1,154 @@
+"""Joint rules: types, limits, axes, mimic chains, safety controllers (SB201-SB214)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from servicebot_cli.check.findings import Issue
+from servicebot_cli.common.errors import NameNotFound
+from servicebot_cli.description.elements import JOINT_TYPES, parse_float
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.elements import Joint
+    from servicebot_cli.description.robot import RobotDescription
+
+_ADVICE = {
+    "ball": "URDF has no ball joint: chain three revolute joints through two massless links",
+    "spherical": "URDF has no spherical joint: chain three revolute joints through two "
+    "massless links",
+    "universal": "URDF has no universal joint: chain two revolute joints through a massless link",
+    "hinge": "a hinge is 'revolute' (or 'continuous' without limits)",
+    "slider": "a slider is 'prismatic'",
+    "free": "a free joint is 'floating'",
+    "gearbox": "URDF has no gearbox joint: use a revolute joint with <mimic>",
+}
+_TWO_PI = 2.0 * math.pi
+
+
+def check(robot: RobotDescription) -> Iterator[Issue]:
+    """Every joint issue of ``robot``."""
+    for joint in robot.joints:
+        if joint.type and joint.type not in JOINT_TYPES:
+            advice = _ADVICE.get(joint.type.lower(), f"use one of: {', '.join(JOINT_TYPES)}")
+            yield Issue("SB201", f"joint '{joint.name}' has type '{joint.type}', which URDF "
+                        f"does not have; {advice}", joint.element)
+            continue
+        yield from _limits(joint)
+        yield from _axis(joint)
+        yield from _safety(joint)
+    yield from _mimics(robot)
+
+
+def _limits(joint: Joint) -> Iterator[Issue]:
+    limits = joint.limits
+    if limits is None:
+        if joint.type in ("revolute", "prismatic"):
+            yield Issue("SB202", f"{joint.type} joint '{joint.name}' has no <limit>",
+                        joint.element, fix='add <limit lower="..." upper="..." effort="..." '
+                        'velocity="..."/>, or make the joint continuous')
+        return
+    if not joint.movable:
+        return
+    for label, value in (("effort", limits.effort), ("velocity", limits.velocity)):
+        if value is not None and value < 0:
+            yield Issue("SB205", f"joint '{joint.name}' has {label} limit {value:g}", joint.element,
+                        fix=f"{label}=\"{-value:g}\"")
+        elif value == 0:
+            yield Issue("SB206", f"joint '{joint.name}' has {label} limit 0: it can never move",
+                        joint.element)
+    if joint.type == "continuous":
+        element = joint.element.find("limit") if joint.element is not None else None
+        if element is not None and ("lower" in element.attrib or "upper" in element.attrib):
+            yield Issue("SB214", f"continuous joint '{joint.name}' has lower/upper limits, "
+                        "which are ignored", element)
+        return
+    if joint.type not in ("revolute", "prismatic"):
+        return
+    lower, upper = limits.lower or 0.0, limits.upper or 0.0
+    if lower > upper:
+        yield Issue("SB203", f"joint '{joint.name}' has lower {lower:g} > upper {upper:g}",
+                    joint.element, fix=f'lower="{upper:g}" upper="{lower:g}"')
+    elif lower == upper:
+        yield Issue("SB204", f"joint '{joint.name}' has lower = upper = {lower:g}: it cannot "
+                    "move", joint.element, fix="make it fixed, or give it its real range")
+    if joint.type == "revolute" and _degrees(lower, upper):
+        yield Issue("SB212", f"joint '{joint.name}' limits [{lower:g}, {upper:g}] look like "
+                    "degrees; URDF angles are radians", joint.element,
+                    fix=f'lower="{math.radians(lower):.6g}" upper="{math.radians(upper):.6g}"')
+
+
+def _degrees(lower: float, upper: float) -> bool:
+    """Whole numbers from 30 to 720: degrees. Radian placeholders (10, 100, 1e9) are not."""
+    values = [abs(v) for v in (lower, upper) if math.isfinite(v) and abs(v) > _TWO_PI + 1e-3]
+    return bool(values) and all(v == round(v) for v in values) and 30 <= max(values) <= 720
+
+
+def _axis(joint: Joint) -> Iterator[Issue]:
+    if not joint.movable or joint.type == "floating":
+        return
+    x, y, z = joint.axis
+    norm = math.sqrt(x * x + y * y + z * z)
+    if not math.isfinite(norm):
+        return  # SB013/SB014 report it
+    if norm == 0.0:
+        yield Issue("SB207", f"{joint.type} joint '{joint.name}' has axis 0 0 0", joint.element,
+                    fix='write the axis, e.g. <axis xyz="0 0 1"/>')
+    elif abs(norm - 1.0) > 1e-6:
+        unit = " ".join(f"{c / norm:.6g}" for c in (x, y, z))
+        yield Issue("SB208", f"joint '{joint.name}' axis has length {norm:.6g}, not 1",
+                    joint.element, fix=f'<axis xyz="{unit}"/>')
+
+
+def _safety(joint: Joint) -> Iterator[Issue]:
+    element = joint.element.find("safety_controller") if joint.element is not None else None
+    if element is None or joint.limits is None or joint.type not in ("revolute", "prismatic"):
+        return
+    soft_lower = parse_float(element.get("soft_lower_limit"))
+    soft_upper = parse_float(element.get("soft_upper_limit"))
+    lower, upper = joint.limits.lower or 0.0, joint.limits.upper or 0.0
+    problems = []
+    if soft_lower is not None and soft_lower < lower:
+        problems.append(f"soft_lower_limit {soft_lower:g} < lower {lower:g}")
+    if soft_upper is not None and soft_upper > upper:
+        problems.append(f"soft_upper_limit {soft_upper:g} > upper {upper:g}")
+    if soft_lower is not None and soft_upper is not None and soft_lower > soft_upper:
+        problems.append(f"soft_lower_limit {soft_lower:g} > soft_upper_limit {soft_upper:g}")
+    if problems:
+        yield Issue("SB213", f"joint '{joint.name}': " + "; ".join(problems), element,
+                    fix=f"keep the soft limits inside [{lower:g}, {upper:g}]")
+
+
+def _mimics(robot: RobotDescription) -> Iterator[Issue]:
+    names = [j.name for j in robot.joints]
+    follows: dict[str, str] = {}
+    for joint in robot.joints:
+        target = joint.mimic.joint if joint.mimic else None
+        if not target:
+            continue
+        if target == joint.name:
+            yield Issue("SB210", f"joint '{joint.name}' mimics itself", joint.element)
+        elif target not in names:
+            hint = str(NameNotFound.for_name(target, names)).split("; ", 1)[-1]
+            yield Issue("SB209", f"joint '{joint.name}' mimics '{target}', which does not "
+                        f"exist; {hint}", joint.element)
+        else:
+            follows[joint.name] = target
+    yield from _mimic_cycles(robot, follows)
+
+
+def _mimic_cycles(robot: RobotDescription, follows: dict[str, str]) -> Iterator[Issue]:
+    done: set[str] = set()
+    for start in follows:
+        path: list[str] = []
+        node: str | None = start
+        while node in follows and node not in done and node not in path:
+            path.append(node)
+            node = follows[node]
+        if node in path:
+            cycle = path[path.index(node):]
+            yield Issue("SB211", "mimic cycle: " + " -> ".join([*cycle, cycle[0]]),
+                        robot.joint(cycle[0]).element,
+                        fix=f"remove the <mimic> of '{cycle[0]}'")
+        done.update(path)

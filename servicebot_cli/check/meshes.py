@@ -1,0 +1,167 @@
+"""Mesh files: read once, summarised as size, volume and second moments.
+
+The one place ``check`` reads mesh files. STL, OBJ and COLLADA go through the fast readers
+of :mod:`mesh_readers`; other formats through trimesh, imported only then.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from servicebot_cli.check import mesh_readers
+
+_READERS = {".stl": mesh_readers.read_stl, ".obj": mesh_readers.read_obj,
+            ".dae": mesh_readers.read_dae}
+
+
+class MeshError(Exception):
+    """A mesh file that cannot be loaded; the message says why."""
+
+
+@dataclass(frozen=True)
+class MassProperties:
+    """Volume and second moments of a closed mesh, for unit density, in the file's units.
+
+    Attributes:
+        volume: Enclosed volume.
+        centroid: Centre of the enclosed volume.
+        second_moment: ``integral of (x - c)(x - c)^T dV`` about ``centroid`` (3x3).
+    """
+
+    volume: float
+    centroid: tuple[float, float, float]
+    second_moment: np.ndarray
+
+
+@dataclass(frozen=True)
+class MeshInfo:
+    """What the rules need to know of a mesh, in the file's units (before ``<mesh scale>``).
+
+    Attributes:
+        triangles: Number of triangles.
+        lower, upper: Corners of the axis-aligned bounding box.
+        mass: Volume and moments when asked for and the mesh is closed (every edge shared
+            by exactly two triangles), else None.
+        closed: Whether the mesh is closed; None when not asked for.
+    """
+
+    triangles: int
+    lower: tuple[float, float, float]
+    upper: tuple[float, float, float]
+    mass: MassProperties | None = None
+    closed: bool | None = None
+
+
+def load_mesh(path: Path, with_mass: bool = False) -> MeshInfo:
+    """Read and summarise the mesh at ``path``; ``with_mass`` adds volume and moments.
+
+    Raises:
+        MeshError: Unreadable, not a mesh of its format, or holding NaNs.
+    """
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise MeshError(f"cannot read: {exc.strerror or exc}") from None
+    reader = _READERS.get(path.suffix.lower())
+    try:
+        if reader is mesh_readers.read_dae and not with_mass:
+            return _bounds_only(*mesh_readers.read_dae_bounds(data))
+        triangles = reader(data) if reader else _with_trimesh(path)
+    except (mesh_readers.MeshFormatError, ValueError, IndexError) as exc:
+        raise MeshError(str(exc) or type(exc).__name__) from None
+    if not np.all(np.isfinite(triangles)):
+        raise MeshError("vertices with NaN or infinite coordinates")
+    return summarise(triangles, with_mass)
+
+
+def _bounds_only(count: int, lower: np.ndarray, upper: np.ndarray) -> MeshInfo:
+    if not (np.all(np.isfinite(lower)) and np.all(np.isfinite(upper))):
+        raise MeshError("vertices with NaN or infinite coordinates")
+    return MeshInfo(count, tuple(map(float, lower)), tuple(map(float, upper)))  # type: ignore[arg-type]
+
+
+def _with_trimesh(path: Path) -> np.ndarray:
+    try:
+        import trimesh
+    except ImportError:  # pragma: no cover - trimesh is a dependency
+        raise MeshError(f"no reader for '{path.suffix}' files (install trimesh)") from None
+    try:
+        loaded = trimesh.load(path, force="mesh", process=False)
+    except Exception as exc:  # trimesh raises anything from its many loaders
+        raise MeshError(f"trimesh cannot load it: {type(exc).__name__}: {exc}") from None
+    if not hasattr(loaded, "triangles"):
+        raise MeshError("trimesh found no triangles")
+    return np.asarray(loaded.triangles, dtype=np.float64).reshape(-1, 3, 3)
+
+
+def summarise(triangles: np.ndarray, with_mass: bool = False) -> MeshInfo:
+    """Bounding box of ``(n, 3, 3)`` triangles, and their mass properties if asked."""
+    if len(triangles) == 0:
+        zero = (0.0, 0.0, 0.0)
+        return MeshInfo(0, zero, zero, None, False if with_mass else None)
+    points = triangles.reshape(-1, 3)
+    lower, upper = points.min(axis=0), points.max(axis=0)
+    closed = _closed(triangles, float(np.abs(upper - lower).max())) if with_mass else None
+    return MeshInfo(
+        triangles=len(triangles),
+        lower=tuple(map(float, lower)), upper=tuple(map(float, upper)),  # type: ignore[arg-type]
+        mass=mass_properties(triangles) if closed else None,
+        closed=closed,
+    )
+
+
+def mass_properties(triangles: np.ndarray) -> MassProperties:
+    r"""Volume, centroid and second moments of a closed triangle mesh, for unit density.
+
+    Sums signed tetrahedra from the origin: volume :math:`v = \det[a\,b\,c] / 6`, second
+    moment :math:`v / 20 (a a^T + b b^T + c c^T + s s^T)` with :math:`s = a + b + c`.
+    """
+    a, b, c = triangles[:, 0], triangles[:, 1], triangles[:, 2]
+    v = np.einsum("ij,ij->i", a, np.cross(b, c)) / 6.0
+    s = a + b + c
+    volume = float(v.sum())
+    moment = np.einsum("i,ij,ik->jk", v / 20.0, s, s)
+    for p in (a, b, c):
+        moment += np.einsum("i,ij,ik->jk", v / 20.0, p, p)
+    centroid = (v[:, None] * s / 4.0).sum(axis=0) / volume if volume else s.mean(axis=0) / 3.0
+    if volume < 0:  # inward-facing triangles: same magnitudes
+        volume, moment = -volume, -moment
+    moment = moment - volume * np.outer(centroid, centroid)
+    return MassProperties(volume, tuple(map(float, centroid)), moment)  # type: ignore[arg-type]
+
+
+def _closed(triangles: np.ndarray, size: float) -> bool:
+    """Every edge shared by exactly two triangles, after merging coincident vertices."""
+    tolerance = max(size, 1e-12) * 1e-7
+    keys = np.round(triangles.reshape(-1, 3) / tolerance).astype(np.int64)
+    # One int64 per vertex position (a hash: a collision could only merge two far vertices)
+    packed = keys @ np.array([73856093, 19349663, 83492791], dtype=np.int64)
+    _, ids = np.unique(packed, return_inverse=True)
+    ids = ids.reshape(-1, 3)
+    edges = np.sort(np.concatenate([ids[:, [0, 1]], ids[:, [1, 2]], ids[:, [2, 0]]]), axis=1)
+    edges = edges[edges[:, 0] != edges[:, 1]]
+    _, counts = np.unique(edges[:, 0] * (int(ids.max()) + 1) + edges[:, 1], return_counts=True)
+    return bool(len(counts)) and bool(np.all(counts == 2))
+
+
+class MeshCache:
+    """Loads each mesh file once per run (and again only to add mass properties)."""
+
+    def __init__(self) -> None:
+        self._seen: dict[Path, MeshInfo | MeshError] = {}
+
+    def get(self, path: Path, with_mass: bool = False) -> MeshInfo:
+        """The summary of ``path``; raises the same MeshError every time for a bad file."""
+        found = self._seen.get(path)
+        if found is None or (with_mass and isinstance(found, MeshInfo) and found.closed is None):
+            try:
+                found = load_mesh(path, with_mass)
+            except MeshError as exc:
+                found = exc
+            self._seen[path] = found
+        if isinstance(found, MeshError):
+            raise found
+        return found

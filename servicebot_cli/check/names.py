@@ -1,0 +1,80 @@
+"""Names rules: links, joints and materials named once, materials defined (SB101-SB113)."""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from servicebot_cli.check.findings import Issue
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.robot import RobotDescription
+
+
+def check(robot: RobotDescription) -> Iterator[Issue]:
+    """Duplicate, empty and undefined names."""
+    if not robot.links:
+        yield Issue("SB109", "the robot has no <link>", robot.root,
+                    fix='add at least one <link name="base_link"/>')
+    for kind, code, items in (("link", "SB101", robot.links), ("joint", "SB102", robot.joints)):
+        first: dict[str, ET.Element | None] = {}
+        for item in items:
+            if not item.name.strip():
+                yield Issue("SB110", f"a <{kind}> without a name", item.element,
+                            fix=f'add name="..." to the <{kind}>')
+            elif item.name in first:
+                yield Issue(code, f"{kind} '{item.name}' is defined twice (first at "
+                            f"{robot.source_of(first[item.name])})", item.element,
+                            fix=f"rename one of the two {kind}s")
+            else:
+                first[item.name] = item.element
+    yield from _materials(robot)
+
+
+def _has_colour(material: ET.Element) -> bool:
+    return material.find("color") is not None or material.find("texture") is not None
+
+
+def _materials(robot: RobotDescription) -> Iterator[Issue]:
+    defined: dict[str, ET.Element] = {}
+    for material in robot.root.findall("material"):
+        name = material.get("name", "")
+        if name in defined:
+            yield Issue("SB111", f"material '{name}' is defined twice (first at "
+                        f"{robot.source_of(defined[name])})", material)
+        elif _has_colour(material):
+            defined[name] = material
+        else:
+            yield Issue("SB112", f"material '{name}' has no <color> or <texture>", material,
+                        fix='add <color rgba="r g b a"/> with values in [0, 1]')
+    for material in robot.root.findall("material"):
+        yield from _rgba(material)
+    for link in robot.links:
+        for visual in link.visuals:
+            material = visual.element.find("material") if visual.element is not None else None
+            if material is None:
+                continue
+            yield from _rgba(material)
+            name = material.get("name")
+            if name and name not in defined and not _has_colour(material):
+                known = ", ".join(sorted(defined)) or "none"
+                yield Issue("SB112", f"material '{name}' of link '{link.name}' has no colour "
+                            f"and is not defined at the top level (defined: {known})",
+                            material,
+                            fix=f'define <material name="{name}"><color rgba="..."/></material>')
+
+
+def _rgba(material: ET.Element) -> Iterator[Issue]:
+    color = material.find("color")
+    if color is None:
+        return
+    try:
+        values = [float(v) for v in (color.get("rgba") or "").split()]
+    except ValueError:
+        return  # SB013 reports it
+    if len(values) == 4 and not all(0.0 <= v <= 1.0 for v in values):
+        scaled = " ".join(f"{min(v / 255.0, 1.0):.3g}" if v > 1 else f"{v:g}" for v in values)
+        yield Issue("SB113", f"rgba '{color.get('rgba')}' of material "
+                    f"'{material.get('name', '')}' is outside [0, 1]", color,
+                    fix=f'rgba="{scaled}"')

@@ -1,0 +1,60 @@
+"""Errors met while reading a description, as issues: SB001-SB007, SB015.
+
+The loader raises one error for a file it cannot read, parse or expand; ``check`` reports
+it as a finding with the file, line and column the error names.
+"""
+
+from __future__ import annotations
+
+import re
+
+from servicebot_cli.check.findings import Issue
+from servicebot_cli.common.errors import (
+    DescriptionError,
+    PackageNotFound,
+    UnsafeXmlError,
+    XacroError,
+    XmlError,
+)
+
+_WHERE = re.compile(r"^(?P<file>.+?):(?P<line>\d+)(?::(?P<column>\d+))?: (?P<rest>.*)$", re.DOTALL)
+_LIMITS = ("limit for a robot description", "elements; refused", "deep; refused")
+
+
+def issue_of(error: DescriptionError, display: str) -> Issue:
+    """The issue for an error raised while reading ``display``."""
+    if isinstance(error, XmlError):
+        where = (error.file, error.line, error.column)
+        if isinstance(error, UnsafeXmlError):
+            return Issue("SB005", error.reason, where=where,
+                         fix="remove the DOCTYPE; use xacro properties for repeated values")
+        return Issue(_xml_code(error.reason), error.reason, where=where)
+    file, line, column, text = _split(str(error), display)
+    if isinstance(error, PackageNotFound):
+        return Issue("SB007", text, where=(file, line, column),
+                     fix="pass --package NAME=DIR, or source the workspace that holds it")
+    if isinstance(error, XacroError) and "cannot read included file" in text:
+        return Issue("SB001", text, where=(file, line, column))
+    if any(limit in text for limit in _LIMITS):
+        return Issue("SB015", text, where=(file, line, column))
+    return Issue("SB006", text.removeprefix("xacro: "), where=(file, line, column))
+
+
+def _xml_code(reason: str) -> str:
+    if reason.startswith("file is empty"):
+        return "SB002"
+    if reason.startswith("invalid UTF-8"):
+        return "SB003"
+    if any(limit in reason for limit in _LIMITS):
+        return "SB015"
+    return "SB004"
+
+
+def _split(message: str, display: str) -> tuple[str, int, int, str]:
+    """``file:line:col: text`` into its parts (line and column 0 when absent)."""
+    match = _WHERE.match(message)
+    if match:
+        return (match["file"], int(match["line"]), int(match["column"] or 0), match["rest"])
+    if message.startswith(display + ": "):
+        return display, 0, 0, message[len(display) + 2:]
+    return display, 0, 0, message

@@ -1,0 +1,55 @@
+"""The outcome of a run: every file's findings, the counts, and whether the run fails."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from servicebot_cli.check.findings import Finding, Severity
+from servicebot_cli.check.runner import FileReport
+
+
+@dataclass(frozen=True)
+class CheckResult:
+    """Findings of every checked file, in the order the files were given.
+
+    Attributes:
+        reports: One per file.
+        strict: Warnings fail the run.
+    """
+
+    reports: tuple[FileReport, ...]
+    strict: bool = False
+
+    @property
+    def findings(self) -> tuple[Finding, ...]:
+        """Every finding, file by file."""
+        return tuple(f for report in self.reports for f in report.findings)
+
+    def count(self, severity: Severity) -> int:
+        """How many findings have ``severity``."""
+        return sum(1 for f in self.findings if f.severity is severity)
+
+    def fails(self, finding: Finding) -> bool:
+        """True when ``finding`` fails the run (errors; warnings too with --strict)."""
+        return finding.severity is Severity.ERROR or (
+            self.strict and finding.severity is Severity.WARNING)
+
+    @property
+    def failed(self) -> bool:
+        """True when any finding fails the run."""
+        return any(self.fails(f) for f in self.findings)
+
+    def summary(self) -> str:
+        """``2 files: 1 error, 3 warnings, 1 info`` (and what that means)."""
+        files = f"{len(self.reports)} file{'s' if len(self.reports) != 1 else ''}"
+        parts = [_plural(self.count(Severity.ERROR), "error"),
+                 _plural(self.count(Severity.WARNING), "warning"),
+                 f"{self.count(Severity.INFO)} info"]
+        verdict = "failed" if self.failed else "passed"
+        if self.strict:
+            verdict += " (strict: warnings fail)"
+        return f"{files} checked: {', '.join(parts)}; {verdict}"
+
+
+def _plural(n: int, word: str) -> str:
+    return f"{n} {word}{'' if n == 1 else 's'}"

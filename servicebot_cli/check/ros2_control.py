@@ -1,0 +1,108 @@
+"""ros2_control and transmission rules (SB504-SB511)."""
+
+from __future__ import annotations
+
+import difflib
+import math
+import re
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from servicebot_cli.check.findings import Issue
+from servicebot_cli.common.errors import NameNotFound
+from servicebot_cli.description.elements import parse_float
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.elements import Joint
+    from servicebot_cli.description.extensions import ControlJoint, Interface, Ros2Control
+    from servicebot_cli.description.robot import RobotDescription
+
+INTERFACES = ("position", "velocity", "acceleration", "effort")
+BAUD_RATES = (50, 75, 110, 134, 150, 200, 300, 600, 1200, 1800, 2400, 4800, 9600, 19200, 38400,
+              57600, 115200, 230400, 460800, 500000, 576000, 921600, 1000000, 1152000, 1500000,
+              2000000, 2500000, 3000000, 3500000, 4000000)
+_PORT_KEYS = ("port", "serial_port", "device", "serial_device", "usb_port", "port_name")
+_BAUD_KEYS = ("baud_rate", "baudrate", "baud")
+_PORT_RE = re.compile(r"(/dev/\S+|COM\d+|(socket|rfc2217|loop|spy|hwgrep)://\S*)")
+
+
+def check(robot: RobotDescription) -> Iterator[Issue]:
+    """Every ros2_control and transmission issue of ``robot``."""
+    joints = {j.name: j for j in robot.joints}
+    owner: dict[str, str] = {}
+    for block in robot.ros2_control:
+        if not block.plugin:
+            yield Issue("SB509", f"<ros2_control name=\"{block.name}\"> has no <hardware>"
+                        "<plugin>", block.element,
+                        fix="add <hardware><plugin>package/HardwareClass</plugin></hardware>")
+        yield from _hardware(block)
+        for item in block.joints:
+            yield from _joint(item, joints, block)
+            if item.name in owner and owner[item.name] != block.name:
+                yield Issue("SB507", f"joint '{item.name}' is in ros2_control systems "
+                            f"'{owner[item.name]}' and '{block.name}'", item.element)
+            owner.setdefault(item.name, block.name)
+    names = list(joints)
+    for transmission in robot.transmissions:
+        for name in transmission.joints:
+            if name not in joints:
+                hint = str(NameNotFound.for_name(name, names)).split("; ", 1)[-1]
+                yield Issue("SB511", f"transmission '{transmission.name}' names joint '{name}', "
+                            f"which does not exist; {hint}", transmission.element)
+
+
+def _hardware(block: Ros2Control) -> Iterator[Issue]:
+    for key, value in block.hardware_params:
+        if key in _PORT_KEYS and not _PORT_RE.fullmatch(value):
+            yield Issue("SB510", f"ros2_control '{block.name}': {key} '{value}' is not a serial "
+                        "device path", block.element, fix=f"e.g. <param name=\"{key}\">"
+                        "/dev/ttyUSB0</param>")
+        if key in _BAUD_KEYS and not (value.isdigit() and int(value) in BAUD_RATES):
+            yield Issue("SB510", f"ros2_control '{block.name}': {key} '{value}' is not a standard "
+                        "baud rate", block.element,
+                        fix="use one of 9600, 19200, 38400, 57600, 115200, ...")
+
+
+def _joint(item: ControlJoint, joints: dict[str, Joint], block: Ros2Control) -> Iterator[Issue]:
+    joint = joints.get(item.name)
+    if joint is None:
+        hint = str(NameNotFound.for_name(item.name, list(joints))).split("; ", 1)[-1]
+        yield Issue("SB504", f"ros2_control '{block.name}' names joint '{item.name}', which does "
+                    f"not exist; {hint}", item.element)
+        return
+    if joint.type == "fixed" and item.command_interfaces:
+        yield Issue("SB506", f"fixed joint '{item.name}' has command interface(s) "
+                    f"{', '.join(i.name for i in item.command_interfaces)}", item.element)
+    for interface in (*item.command_interfaces, *item.state_interfaces):
+        close = difflib.get_close_matches(interface.name, INTERFACES, n=1, cutoff=0.75)
+        if close and close[0] != interface.name:
+            yield Issue("SB505", f"joint '{item.name}' interface '{interface.name}' is not "
+                        f"standard; did you mean '{close[0]}'?", item.element,
+                        fix=f'name="{close[0]}"')
+    for interface in item.command_interfaces:
+        yield from _command_limits(item, interface, joint)
+
+
+def _command_limits(item: ControlJoint, interface: Interface, joint: Joint) -> Iterator[Issue]:
+    limits = joint.limits
+    if limits is None:
+        return
+    if interface.name == "position" and joint.type in ("revolute", "prismatic"):
+        allowed = (limits.lower, limits.upper)
+    elif interface.name == "velocity" and limits.velocity is not None:
+        allowed = (-limits.velocity, limits.velocity)
+    elif interface.name == "effort" and limits.effort is not None:
+        allowed = (-limits.effort, limits.effort)
+    else:
+        return
+    low, high = parse_float(interface.get("min")), parse_float(interface.get("max"))
+    lo, hi = allowed
+    outside = []
+    if low is not None and lo is not None and math.isfinite(low) and low < lo - 1e-9:
+        outside.append(f"min {low:g} < {lo:g}")
+    if high is not None and hi is not None and math.isfinite(high) and high > hi + 1e-9:
+        outside.append(f"max {high:g} > {hi:g}")
+    if outside:
+        yield Issue("SB508", f"joint '{item.name}' {interface.name} command limits go beyond "
+                    f"the URDF: {'; '.join(outside)}", item.element,
+                    fix=f"keep min/max inside [{lo:g}, {hi:g}]")

@@ -1,0 +1,156 @@
+"""Run the catalogue over one description: read, run each family, place and filter findings.
+
+The order keeps broken files cheap: reading errors stop at once; the Pinocchio model is
+built only when every cheaper rule found no error.
+"""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from servicebot_cli.check import names, read_errors, syntax, tree
+from servicebot_cli.check.catalogue import RULES
+from servicebot_cli.check.env import CheckEnv
+from servicebot_cli.check.findings import Finding, Issue, Severity
+from servicebot_cli.check.settings import Settings
+from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.description.safe_xml import MAX_BYTES
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.loader import RobotSource
+    from servicebot_cli.description.robot import RobotDescription
+
+_SUPPRESS = re.compile(r"servicebot:\s*ignore\b([\s,A-Za-z0-9]*)", re.IGNORECASE)
+
+
+@dataclass(frozen=True)
+class FileReport:
+    """The findings of one checked file, in reporting order."""
+
+    file: str
+    findings: tuple[Finding, ...]
+
+
+def check_source(source: RobotSource, settings: Settings, env: CheckEnv) -> FileReport:
+    """Check one description.
+
+    Raises:
+        DescriptionError: The file itself cannot be read (missing, a directory, permission).
+    """
+    from servicebot_cli.description.loader import read_description
+
+    size = source.path.stat().st_size if source.path.is_file() else 0
+    if size > MAX_BYTES:
+        issue = Issue("SB015", f"file is {size / 1e6:.1f} MB, over the {MAX_BYTES / 1e6:.0f} MB "
+                      "limit for a robot description; refused unread", where=(source.display, 0, 0))
+        return _report(source.display, place_issues(None, [issue], settings))
+    try:
+        robot = read_description(source)
+    except DescriptionError as exc:
+        if _unreadable(exc, source):
+            raise
+        issue = read_errors.issue_of(exc, source.display)
+        return _report(source.display, place_issues(None, [issue], settings))
+    findings = place_issues(robot, _issues(robot, settings, env), settings)
+    return _report(source.display, findings + _model(robot, findings, settings))
+
+
+def _model(robot: RobotDescription, findings: list[Finding], settings: Settings) -> list[Finding]:
+    """SB701 when every reported finding is below error level, else SB702."""
+    from servicebot_cli.check import model
+
+    if any(f.code in ("SB008", "SB015") for f in findings):
+        return []
+    if any(f.severity is Severity.ERROR for f in findings):
+        skipped = Issue("SB702", "Pinocchio model not built: fix the errors above first",
+                        where=(robot.display, 0, 0))
+        return place_issues(robot, [skipped], settings)
+    return place_issues(robot, model.check(robot), settings) if settings.enabled("SB701") else []
+
+
+def _unreadable(exc: DescriptionError, source: RobotSource) -> bool:
+    """True for the loader's refusals of the file itself, which are not findings."""
+    text = str(exc)
+    return text.startswith(f"{source.display}: ") and any(
+        reason in text for reason in ("no such file", "is a directory", "permission denied",
+                                      "cannot read:", "not a xacro file"))
+
+
+def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Iterator[Issue]:
+    """Every rule family but the model, skipping families with no selected rule."""
+    from servicebot_cli.check import gazebo, geometry, inertia, joints, ros2_control
+
+    for warning in robot.warnings:
+        yield Issue("SB017", warning, where=(robot.display, 0, 0))
+    found = list(syntax.check(robot.root))
+    yield from found
+    if any(i.code in ("SB008", "SB015") for i in found):
+        return
+    wanted = settings.enabled
+    env.load_meshes = any(wanted(c) for c in ("SB401", "SB402", "SB403", "SB404", "SB301"))
+    families: list[tuple[str, Callable[[], Iterable[Issue]]]] = [
+        ("SB1", lambda: names.check(robot)), ("SB1", lambda: tree.check(robot)),
+        ("SB2", lambda: joints.check(robot)), ("SB3", lambda: inertia.check(robot, env)),
+        ("SB4", lambda: geometry.check(robot, env)), ("SB50", lambda: gazebo.check(robot)),
+        ("SB5", lambda: ros2_control.check(robot)),
+    ]
+    for prefix, family in families:
+        if any(wanted(code) for code in RULES if code.startswith(prefix)):
+            yield from family()
+
+
+def place_issues(robot: RobotDescription | None, issues: Iterable[Issue],
+                 settings: Settings) -> list[Finding]:
+    """Findings for the enabled, unsuppressed ``issues``, placed in their source files."""
+    parents: dict[ET.Element, ET.Element] | None = None
+    findings = []
+    for issue in issues:
+        if not settings.enabled(issue.code):
+            continue
+        if robot is not None and issue.element is not None:
+            if parents is None:
+                parents = {child: parent for parent in robot.root.iter() for child in parent}
+            if _suppressed(issue, parents):
+                continue
+        findings.append(_place(robot, issue, settings))
+    return findings
+
+
+def _suppressed(issue: Issue, parents: dict[ET.Element, ET.Element]) -> bool:
+    """True when ``<!-- servicebot: ignore CODE -->`` precedes the element or an ancestor.
+
+    A bare ``servicebot: ignore`` silences every rule there.
+    """
+    element: ET.Element | None = issue.element  # type: ignore[assignment]
+    while element is not None:
+        for comment in getattr(element, "leading_comments", ()):
+            match = _SUPPRESS.search(comment)
+            if match:
+                codes = re.findall(r"SB\d{3}", match.group(1).upper())
+                if not codes or issue.code in codes:
+                    return True
+        element = parents.get(element)
+    return False
+
+
+def _place(robot: RobotDescription | None, issue: Issue, settings: Settings) -> Finding:
+    via = None
+    if issue.where is not None:
+        file, line, column = issue.where
+    elif robot is not None:
+        ref = robot.source_of(issue.element)  # type: ignore[arg-type]
+        file, line, column = ref.file, ref.line, ref.column
+        via = ref.via.location() if ref.via else None
+    else:  # pragma: no cover - issues without a robot always carry `where`
+        file, line, column = "", 0, 0
+    return Finding(issue.code, settings.severity_of(issue.code), issue.message, file, line,
+                   column, issue.fix or RULES[issue.code].fix, via)
+
+
+def _report(file: str, findings: list[Finding]) -> FileReport:
+    ordered = sorted(findings, key=lambda f: (f.code == "SB702", f.file != file, *f.sort_key()))
+    return FileReport(file, tuple(ordered))

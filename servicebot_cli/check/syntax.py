@@ -1,0 +1,136 @@
+"""Parse-level rules on the parsed XML: root, name, version, elements, attributes, numbers.
+
+SB008-SB016. Walks the tree iteratively against :mod:`urdf_schema`; extension elements
+(``gazebo``, ``ros2_control``, namespaced ones...) are not entered.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import re
+import xml.etree.ElementTree as ET
+from collections.abc import Iterator
+
+from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.urdf_schema import EXTENSIONS, SPEC, TOP_LEVEL
+
+_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+_NON_FINITE = re.compile(r"[+-]?(?:nan|inf|infinity)", re.IGNORECASE)
+_VERSION = re.compile(r"(\d+)\.(\d+)")
+MAX_LINKS = 20_000
+"""Most links (or joints) checked; more is refused (SB015)."""
+
+
+def check(root: ET.Element) -> Iterator[Issue]:
+    """Every parse-level issue of the document under ``root``."""
+    if root.tag != "robot":
+        yield Issue("SB008", f"root element is <{root.tag}>, not <robot>; is this a URDF?", root)
+        return
+    yield from _robot_attributes(root)
+    counts = {tag: len(root.findall(tag)) for tag in ("link", "joint")}
+    for tag, count in counts.items():
+        if count > MAX_LINKS:
+            yield Issue("SB015", f"{count} <{tag}> elements, over the limit of {MAX_LINKS}; "
+                        "refused", root)
+            return
+    for child in root:
+        if not isinstance(child.tag, str):
+            continue
+        if child.tag in TOP_LEVEL:
+            yield from _element_tree(child)
+        elif not _is_extension(child.tag):
+            close = difflib.get_close_matches(child.tag, TOP_LEVEL, n=1, cutoff=0.6)
+            if close:
+                yield Issue("SB010", f"<{child.tag}> is not a URDF element; did you mean "
+                            f"<{close[0]}>?", child, fix=f"rename it <{close[0]}>")
+
+
+def _robot_attributes(root: ET.Element) -> Iterator[Issue]:
+    if not root.get("name", "").strip():
+        yield Issue("SB009", "<robot> has no name" if root.get("name") is None
+                    else "<robot> has an empty name", root, fix='add name="my_robot"')
+    version = root.get("version")
+    if version is not None:
+        match = _VERSION.fullmatch(version)
+        if not match:
+            yield Issue("SB016", f"version '{version}' is not in the form x.y", root)
+        elif not (match.group(1) == "1" and int(match.group(2)) <= 2):
+            yield Issue("SB016", f"version '{version}': only 1.0 to 1.2 are supported", root)
+
+
+def _is_extension(tag: str) -> bool:
+    return tag in EXTENSIONS or ":" in tag or tag.startswith("{")
+
+
+def _element_tree(top: ET.Element) -> Iterator[Issue]:
+    stack = [top]
+    while stack:  # iterative: depth is bounded by the parser, but stay uniform
+        element = stack.pop()
+        spec = SPEC[element.tag]
+        yield from _attributes(element, spec.attributes, spec.required)
+        present = set()
+        for child in element:
+            if not isinstance(child.tag, str) or _is_extension(child.tag):
+                continue
+            present.add(child.tag)
+            if child.tag in spec.children:
+                stack.append(child)
+            elif child.tag not in spec.extensions and element.tag != "geometry":  # SB406
+                yield _unknown(child, element, spec.children)
+        for needed in spec.required_children:
+            if needed not in present:
+                yield Issue("SB012", f"<{element.tag}>{_named(element)} has no <{needed}>",
+                            element, fix=f"add a <{needed}> element")
+        if element.tag == "dynamics" and not element.attrib.keys() & {"damping", "friction"}:
+            yield Issue("SB012", "<dynamics> has neither damping nor friction", element,
+                        fix="add damping=\"...\" or friction=\"...\", or remove <dynamics>")
+
+
+def _unknown(child: ET.Element, parent: ET.Element, allowed: tuple[str, ...]) -> Issue:
+    close = difflib.get_close_matches(child.tag, allowed, n=1, cutoff=0.6)
+    hint = f"; did you mean <{close[0]}>?" if close else f" (allowed: {', '.join(allowed)})"
+    return Issue("SB010", f"<{child.tag}> is not a URDF element inside <{parent.tag}>{hint}",
+                 child, fix=f"rename it <{close[0]}>" if close else "remove it")
+
+
+def _named(element: ET.Element) -> str:
+    name = element.get("name")
+    return f" '{name}'" if name else ""
+
+
+def _attributes(element: ET.Element, allowed: dict[str, int],
+                required: tuple[str, ...]) -> Iterator[Issue]:
+    for key, value in element.attrib.items():
+        if ":" in key or key.startswith("{"):
+            continue
+        if key not in allowed:
+            close = difflib.get_close_matches(key, list(allowed), n=1, cutoff=0.6)
+            hint = f"; did you mean '{close[0]}'?" if close else ""
+            yield Issue("SB011", f"<{element.tag}> has no attribute '{key}'{hint}", element,
+                        fix=f"rename it '{close[0]}'" if close else "remove it")
+        elif allowed[key]:
+            yield from _number(element, key, value, allowed[key])
+    for key in required:
+        if key not in element.attrib:
+            yield Issue("SB012", f"<{element.tag}>{_named(element)} has no '{key}' attribute",
+                        element, fix=f"add {key}=\"...\"")
+
+
+def _number(element: ET.Element, key: str, value: str, count: int) -> Iterator[Issue]:
+    parts = [value] if count == 1 else value.split()
+    where = f"<{element.tag}{_named(element)} {key}=\"{value}\">"
+    if len(parts) != count:
+        yield Issue("SB013", f"{where}: expected {count} numbers, found {len(parts)}", element)
+        return
+    for part in parts:
+        if _NON_FINITE.fullmatch(part.strip()):
+            yield Issue("SB014", f"{where}: '{part.strip()}' is not a finite number", element)
+        elif not _NUMBER.fullmatch(part):
+            yield Issue("SB013", f"{where}: '{part}' is not a number", element,
+                        fix="write a plain decimal number without spaces or units")
+        elif not math.isfinite(float(part)):
+            yield Issue("SB014", f"{where}: '{part}' overflows a double", element)
+        else:
+            continue
+        return

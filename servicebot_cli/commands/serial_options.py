@@ -1,0 +1,88 @@
+"""Options that ``drive`` and ``emulate`` share: protocol, baud, encoder counting, numbers.
+
+Light: Click only. Validation happens here, at the parsing edge.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Any, TypeVar
+
+import click
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+
+class Number(click.ParamType):
+    """A finite float, optionally above a minimum or within [0, 1]."""
+
+    name = "number"
+
+    def __init__(self, unit: str = "", *, positive: bool = False, fraction: bool = False,
+                 non_negative: bool = False) -> None:
+        self.unit, self.positive, self.fraction = unit, positive, fraction
+        self.non_negative = non_negative
+        self.name = unit or "number"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+                ) -> float:
+        """Parse and check the number."""
+        if isinstance(value, float):
+            number = value
+        else:
+            try:
+                number = float(value)
+            except (TypeError, ValueError):
+                self.fail(f"'{value}' is not a number", param, ctx)
+        if not math.isfinite(number):
+            self.fail(f"'{value}' is not a finite number", param, ctx)
+        if self.positive and number <= 0:
+            self.fail(f"{value} must be above 0", param, ctx)
+        if self.non_negative and number < 0:
+            self.fail(f"{value} must not be negative", param, ctx)
+        if self.fraction and not 0 <= number <= 1:
+            self.fail(f"{value} is a probability: give a number from 0 to 1", param, ctx)
+        return number
+
+
+def serial_options(f: F) -> F:
+    """``--protocol``, ``--baud``, ``--ticks-per-rev`` and ``--pid-rate``."""
+    f = click.option(
+        "--pid-rate", type=Number("HZ", positive=True), default=30.0, show_default=True,
+        help="arduino: the firmware's PID_RATE; `m` speeds are ticks per 1/PID_RATE s.",
+    )(f)
+    f = click.option(
+        "--ticks-per-rev", type=Number("TICKS", positive=True), default=None,
+        help="arduino: encoder ticks per wheel revolution (needed with --protocol arduino).",
+    )(f)
+    f = click.option(
+        "--baud", type=click.IntRange(min=50), default=None, metavar="N",
+        help="Baud rate (default: the description's ros2_control baud_rate, 9600 for the "
+        "real robot).",
+    )(f)
+    f = click.option(
+        "--protocol", type=click.Choice(["servicebot", "arduino"]), default="servicebot",
+        show_default=True,
+        help="servicebot: binary frames with CRC (docs/serial-protocol.md); arduino: the "
+        "ROSArduinoBridge text protocol (two motors, no arm).",
+    )(f)
+    return f
+
+
+def arduino_config(protocol: str, ticks_per_rev: float | None, pid_rate: float) -> Any:
+    """The ArduinoConfig for ``--protocol arduino``, else None.
+
+    Raises:
+        click.BadParameter: arduino without --ticks-per-rev.
+    """
+    if protocol != "arduino":
+        return None
+    if ticks_per_rev is None:
+        raise click.BadParameter(
+            "needed with --protocol arduino: encoder ticks per wheel revolution, since the "
+            "`m` command counts ticks", param_hint="--ticks-per-rev")
+    from servicebot_cli.drive.protocols.arduino import ArduinoConfig
+
+    return ArduinoConfig(ticks_per_rev, pid_rate)
+

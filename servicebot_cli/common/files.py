@@ -1,0 +1,111 @@
+"""Writing output files atomically: a reader sees the old file or the whole new one.
+
+Data goes to a temporary file beside the target, then ``os.replace`` puts it in place.
+An error or an interruption (Ctrl-C, SIGTERM turned into an exception) removes the
+temporary file, so nothing half-written is ever left behind.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import shutil
+import tempfile
+from collections.abc import Iterator
+from pathlib import Path
+from typing import IO, Any
+
+from servicebot_cli.common.errors import ServicebotError
+
+
+class OutputError(ServicebotError):
+    """An output file cannot be written: missing directory, no permission, disk full."""
+
+
+@contextlib.contextmanager
+def atomic_output(
+    path: str | os.PathLike[str], mode: str = "w", **open_kwargs: Any
+) -> Iterator[IO[Any]]:
+    """Open a temporary file beside ``path``; on success it replaces ``path``.
+
+    Args:
+        path: The file to create or replace.
+        mode: ``"w"`` for text (UTF-8, Unix newlines) or ``"wb"`` for bytes.
+        **open_kwargs: Passed to :func:`open`.
+
+    Raises:
+        OutputError: The directory is missing or not writable, or writing failed.
+    """
+    target = Path(path)
+    if target.is_dir():
+        raise OutputError(f"{target}: is a directory; give a file name to write")
+    directory = _parent(target)
+    try:
+        fd, tmp_name = tempfile.mkstemp(dir=directory, prefix=f".{target.name}.", suffix=".tmp")
+    except OSError as exc:
+        raise _cannot_write(target, directory, exc) from None
+    if "b" not in mode:
+        open_kwargs.setdefault("encoding", "utf-8")
+        open_kwargs.setdefault("newline", "\n")
+    try:
+        with os.fdopen(fd, mode, **open_kwargs) as handle:
+            yield handle
+        os.chmod(tmp_name, 0o644 & ~_umask())
+        os.replace(tmp_name, target)
+    except OSError as exc:
+        raise OutputError(f"{target}: cannot write: {exc.strerror or exc}") from None
+    finally:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(tmp_name)
+
+
+@contextlib.contextmanager
+def atomic_directory(path: str | os.PathLike[str]) -> Iterator[Path]:
+    """A temporary directory beside ``path``, renamed to ``path`` when the block succeeds.
+
+    For outputs made of several files (a rosbag2 directory): readers never see a partial one.
+
+    Raises:
+        OutputError: ``path`` exists, its parent is missing or not writable, or writing failed.
+    """
+    target = Path(path)
+    if target.exists():
+        raise OutputError(f"{target}: already exists; remove it or give another path")
+    parent = _parent(target)
+    try:
+        temporary = Path(tempfile.mkdtemp(dir=parent, prefix=f".{target.name}.", suffix=".tmp"))
+    except OSError as exc:
+        raise _cannot_write(target, parent, exc) from None
+    try:
+        yield temporary
+        os.chmod(temporary, 0o755 & ~_umask())
+        os.rename(temporary, target)
+    except OSError as exc:
+        raise OutputError(f"{target}: cannot write: {exc.strerror or exc}") from None
+    finally:
+        shutil.rmtree(temporary, ignore_errors=True)
+
+
+def _parent(target: Path) -> Path:
+    directory = target.parent if str(target.parent) else Path(".")
+    if not directory.is_dir():
+        raise OutputError(f"{target}: directory '{directory}' does not exist; create it first")
+    return directory
+
+
+def _cannot_write(target: Path, directory: Path, exc: OSError) -> OutputError:
+    if isinstance(exc, PermissionError):
+        return OutputError(f"{target}: permission denied writing in '{directory}'")
+    return OutputError(f"{target}: cannot write: {exc.strerror or exc}")
+
+
+def write_atomic(path: str | os.PathLike[str], content: str | bytes) -> None:
+    """Write ``content`` to ``path`` atomically (see :func:`atomic_output`)."""
+    with atomic_output(path, "wb" if isinstance(content, bytes) else "w") as handle:
+        handle.write(content)
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask

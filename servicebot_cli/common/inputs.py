@@ -1,0 +1,110 @@
+"""Reading the user's input files: one policy, one-line errors.
+
+Robot descriptions, scenarios, batch files, drive scripts and controller YAML files all fail
+the same ways (missing, a directory, unreadable, too big, not UTF-8); each failure becomes
+one line that names the file and says what to give instead. ``-`` means standard input
+where a command allows it.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import sys
+from collections.abc import Iterator
+from pathlib import Path
+from typing import IO
+
+from servicebot_cli.common.errors import ServicebotError
+
+STDIN = "-"
+
+
+def display_path(path: Path) -> str:
+    """``path`` relative to the working directory when inside it, else absolute.
+
+    A real path, so editors and CI annotations can open what a message points at.
+    """
+    try:
+        return str(path.resolve().relative_to(Path.cwd().resolve()))
+    except ValueError:
+        return str(path.resolve())
+
+
+@contextlib.contextmanager
+def _reading(display: str, kind: str, error: type[ServicebotError]) -> Iterator[None]:
+    """Turn the OS's reasons for not reading a file into one ``error`` line."""
+    try:
+        yield
+    except FileNotFoundError:
+        raise error(f"{display}: no such file; give {kind}") from None
+    except IsADirectoryError:
+        raise error(f"{display}: is a directory; give {kind}") from None
+    except PermissionError:
+        raise error(
+            f"{display}: permission denied; make it readable (chmod +r) or run as its owner"
+        ) from None
+    except OSError as exc:
+        raise error(f"{display}: cannot read: {exc.strerror or exc}") from None
+
+
+def read_input_bytes(path: Path, display: str, *, kind: str,
+                     error: type[ServicebotError] = ServicebotError,
+                     max_bytes: int | None = None) -> bytes:
+    """The content of the user's file ``path``.
+
+    Args:
+        path: The file.
+        display: How messages name it.
+        kind: What the user should give instead, e.g. ``"a URDF or xacro file"``.
+        error: The error class raised.
+        max_bytes: Refuse larger files without reading them [bytes].
+
+    Raises:
+        error: Missing, a directory, unreadable, or over ``max_bytes``.
+    """
+    with _reading(display, kind, error):
+        if path.is_dir():
+            raise IsADirectoryError
+        size = path.stat().st_size
+        if max_bytes is not None and size > max_bytes:
+            raise error(f"{display}: file is {size / 1e6:.1f} MB, over the "
+                        f"{max_bytes / 1e6:.0f} MB limit; is it the right file?")
+        return path.read_bytes()
+
+
+def read_input_text(path: str, *, kind: str, error: type[ServicebotError] = ServicebotError,
+                    max_bytes: int | None = None) -> str:
+    """The UTF-8 text of the user's file ``path``, or of standard input for ``-``.
+
+    Raises:
+        error: As :func:`read_input_bytes`, or the bytes are not UTF-8.
+    """
+    display = "<stdin>" if path == STDIN else path
+    if path == STDIN:
+        data = sys.stdin.buffer.read()
+    else:
+        data = read_input_bytes(Path(path), display, kind=kind, error=error, max_bytes=max_bytes)
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        line = data[: exc.start].count(b"\n") + 1
+        raise error(f"{display}:{line}: not UTF-8 text; save it as UTF-8") from None
+
+
+def open_input_text(path: str, *, kind: str,
+                    error: type[ServicebotError] = ServicebotError) -> IO[str]:
+    """A text handle on the user's file ``path`` (``-``: standard input), for streaming.
+
+    Bytes that are not UTF-8 read as U+FFFD, so a bad line is reported by the line's parser
+    instead of stopping the stream. The caller closes the handle.
+
+    Raises:
+        error: Missing, a directory or unreadable.
+    """
+    if path == STDIN:
+        return io.TextIOWrapper(sys.stdin.buffer, encoding="utf-8", errors="replace")
+    with _reading(path, kind, error):
+        if Path(path).is_dir():
+            raise IsADirectoryError
+        return open(path, encoding="utf-8", errors="replace", newline="")  # noqa: SIM115

@@ -1,0 +1,62 @@
+"""``--dry-run``: the frames a run would send, with their meaning, and no port.
+
+The same commander builds the same bytes as a real run, on a virtual clock at the command
+rate, so what is printed is what would go on the wire (the handshake, every tick, the stop).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from servicebot_cli.drive.motors import MotorMap
+from servicebot_cli.drive.plan import Plan
+from servicebot_cli.drive.session.commander import Commander, HostLink
+from servicebot_cli.drive.shaping import WheelShaper
+
+
+@dataclass(frozen=True)
+class PlannedFrame:
+    """One frame a run would send.
+
+    Attributes:
+        t_s: When, after the start [s].
+        bytes_hex: The bytes, in hex.
+        meaning: What they say, decoded.
+    """
+
+    t_s: float
+    bytes_hex: str
+    meaning: str
+
+
+def planned_frames(plan: Plan, link: HostLink, motors: MotorMap, max_accel_rad_s2: float,
+                   rate_hz: float) -> Iterator[PlannedFrame]:
+    """The handshake, every tick of ``plan`` at ``rate_hz`` and the stop, in order."""
+    commander = Commander(link, WheelShaper(motors, max_accel_rad_s2), motors)
+    commander.observe_arm(motors.clamp_arm([0.0] * len(motors.arm_joints)))
+    yield _frame(0.0, link.hello(), link)
+    period = 1.0 / rate_hz
+    tick = 0
+    while (setpoint := plan.setpoint(tick * period)) is not None:
+        data, _, _ = commander.command(setpoint, tick * period, period)
+        yield _frame(tick * period, data, link)
+        tick += 1
+    data, _ = commander.stop(tick * period)
+    yield _frame(tick * period, data, link)
+
+
+def dry_run_lines(plan: Plan, link: HostLink, motors: MotorMap, max_accel_rad_s2: float,
+                  rate_hz: float) -> Iterator[str]:
+    """Lines ``t_s  hex bytes  meaning``, one per frame, after a short header."""
+    yield (f"# {link.name} protocol, {rate_hz:g} Hz, {plan.duration_s:g} s; the frames a run "
+           "would send (no port opened)")
+    if link.has_arm:
+        yield "# arm joints a plan does not name hold 0 rad here (a real run: where they are)"
+    yield "# t_s  bytes  meaning"
+    for frame in planned_frames(plan, link, motors, max_accel_rad_s2, rate_hz):
+        yield f"{frame.t_s:7.3f}  {frame.bytes_hex}  {frame.meaning}"
+
+
+def _frame(t_s: float, data: bytes, link: HostLink) -> PlannedFrame:
+    return PlannedFrame(round(t_s, 6), data.hex(" "), link.describe(data))

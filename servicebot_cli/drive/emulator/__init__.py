@@ -1,0 +1,1 @@
+"""The motor controller emulated: firmware state machines, the wire model and a pseudo-terminal."""

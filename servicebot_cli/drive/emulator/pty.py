@@ -1,0 +1,221 @@
+"""Serve an emulated motor controller on a pseudo-terminal.
+
+The emulator owns the master side of a pty; a host opens the slave (``/dev/pts/N``) exactly
+as it opens ``/dev/ttyUSB0``. The emulator keeps its own handle on the slave, so a host may
+close the port and open it again (a reconnect) without the pty going away.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import pty
+import select
+import time
+import tty
+from collections.abc import Callable
+from dataclasses import asdict
+from pathlib import Path
+from typing import Any, Protocol
+
+from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.drive.emulator.firmware import MotorModel
+from servicebot_cli.drive.emulator.wire import FaultInjector, PacedQueue, byte_time_s
+
+_IDLE_S = 0.02  # longest sleep: the watchdog and SIGINT are seen at least this often
+_STATE_PERIOD_S = 0.1
+_REPORT_PERIOD_S = 1.0
+
+
+class EmulatorError(ServicebotError):
+    """The emulator cannot be set up as asked (exit 2)."""
+
+
+class Firmware(Protocol):
+    """What the server needs of a firmware (binary or ROSArduinoBridge)."""
+
+    protocol: str
+    model: MotorModel
+
+    def receive(self, data: bytes, now_s: float) -> bytes:
+        """Handle received bytes; return the reply bytes."""
+
+    def state(self) -> dict[str, object]:
+        """Protocol-specific state for the state file."""
+
+
+class PtyEmulator:
+    """A firmware on a pty, with baud-rate pacing and injected faults.
+
+    Args:
+        firmware: What answers.
+        injector: Drops and corrupts bytes both ways.
+        baud: The wire speed paced when ``pace`` is set.
+        pace: Release bytes no faster than ``baud`` allows, each way.
+        log: Where status lines go (stderr in the command).
+        clock: Monotonic time [s]; the state's times are on this clock.
+    """
+
+    def __init__(self, firmware: Firmware, injector: FaultInjector, *, baud: int, pace: bool,
+                 log: Callable[[str], None], clock: Callable[[], float] = time.monotonic) -> None:
+        self.firmware = firmware
+        self.injector = injector
+        self.faults = injector.faults
+        self.baud, self.pace = baud, pace
+        self.log, self.clock = log, clock
+        pacing = byte_time_s(baud) if pace else 0.0
+        self._rx, self._tx = PacedQueue(pacing), PacedQueue(pacing)
+        self.master = self.slave = -1
+        self.path = ""
+        self.link: Path | None = None
+        self.muted = False
+        self.tx_overflow = 0
+        self._start_s = clock()
+        self._seen = asdict(firmware.model.counters)
+        self._next_report_s = self._start_s + _REPORT_PERIOD_S
+        self._report_frames = 0
+
+    def open(self, link: Path | None = None) -> str:
+        """Create the pty (and a symlink ``link`` to it); return the path hosts open."""
+        self.master, self.slave = pty.openpty()
+        tty.setraw(self.slave)  # no echo, no line editing until a host configures it
+        os.set_blocking(self.master, False)
+        self.path = os.ttyname(self.slave)
+        if link is not None:
+            self._symlink(link)
+        return str(link) if link is not None else self.path
+
+    def _symlink(self, link: Path) -> None:
+        """Point ``link`` at the device, replacing an older link atomically."""
+        if link.is_dir():
+            raise EmulatorError(f"--link {link}: is a directory; give the path of a link to make")
+        temporary = link.with_name(f".{link.name}.{os.getpid()}")
+        try:
+            with contextlib.suppress(FileNotFoundError):
+                temporary.unlink()
+            os.symlink(self.path, temporary)
+            os.replace(temporary, link)
+        except OSError as exc:
+            raise EmulatorError(f"--link {link}: cannot make the link: "
+                                f"{exc.strerror or exc}") from None
+        self.link = link
+
+    def close(self) -> None:
+        """Close the pty (hosts see the port vanish) and remove the symlink if it is ours."""
+        for fd in (self.master, self.slave):
+            if fd >= 0:
+                with contextlib.suppress(OSError):
+                    os.close(fd)
+        self.master = self.slave = -1
+        if self.link is not None:
+            with contextlib.suppress(OSError):
+                if os.readlink(self.link) == self.path:
+                    self.link.unlink()
+
+    def serve(self, should_stop: Callable[[], bool],
+              on_state: Callable[[dict[str, Any]], None] | None = None) -> str:
+        """Answer until ``should_stop()``; return ``"stopped"`` or ``"died"`` (--die-after)."""
+        next_state_s = self._start_s
+        while not should_stop():
+            now = self.clock()
+            uptime = now - self._start_s
+            if self.faults.die_after_s is not None and uptime >= self.faults.die_after_s:
+                self.log(f"dying now, {uptime:.1f} s after start (--die-after)")
+                return "died"
+            if (not self.muted and self.faults.mute_after_s is not None
+                    and uptime >= self.faults.mute_after_s):
+                self.muted = True
+                self.log(f"muted: no more answers, {uptime:.1f} s after start (--mute-after)")
+            self._pump(now)
+            self._report(now)
+            if on_state is not None and now >= next_state_s:
+                on_state(self.state())
+                next_state_s = now + _STATE_PERIOD_S
+            ready, _, _ = select.select([self.master], [], [], self._timeout(now))
+            if ready:
+                self._read(self.clock())
+        return "stopped"
+
+    def _read(self, now: float) -> None:
+        try:
+            data = os.read(self.master, 4096)
+        except (BlockingIOError, InterruptedError):
+            return
+        except OSError:  # EIO: no host has the slave open
+            time.sleep(_IDLE_S)
+            return
+        if not self.muted:
+            self._rx.push(self.injector.apply(data), now)
+
+    def _pump(self, now: float) -> None:
+        received = self._rx.pop(now)
+        if received:
+            replies = self.firmware.receive(received, now)
+            if not self.muted:
+                self._tx.push(self.injector.apply(replies), now + self.faults.latency_s)
+        self.firmware.model.advance(now)
+        outgoing = self._tx.pop(now)
+        if outgoing:
+            try:
+                os.write(self.master, outgoing)
+            except (BlockingIOError, OSError):
+                self.tx_overflow += len(outgoing)  # nobody reads: a UART drops them too
+
+    def _timeout(self, now: float) -> float:
+        due = [t for t in (self._rx.next_due_s(), self._tx.next_due_s()) if t is not None]
+        return max(0.0, min([now + _IDLE_S, *due]) - now)
+
+    def _report(self, now: float) -> None:
+        counters = asdict(self.firmware.model.counters)
+        if counters["watchdog_trips"] > self._seen["watchdog_trips"]:
+            timeout_ms = round(self.firmware.model.watchdog_s * 1000)
+            self.log(f"watchdog: no motion command for {timeout_ms} ms; motors stopped")
+        if counters["stops"] > self._seen["stops"]:
+            self.log("STOP received; motors stopped")
+        if now >= self._next_report_s:
+            frames = counters["frames"] - self._report_frames
+            if frames:
+                wheels = " ".join(f"{v:+.3f}" for v in self.firmware.model.wheel_velocity_rad_s)
+                self.log(f"{frames} frames in the last second; wheels [{wheels}] rad/s; "
+                         f"{_counts(self.firmware.state())}")
+            self._report_frames = counters["frames"]
+            self._next_report_s = now + _REPORT_PERIOD_S
+        self._seen = counters
+
+
+    def state(self) -> dict[str, Any]:
+        """Everything a test or a user may want to know, JSON-ready."""
+        model = self.firmware.model
+        motors = model.motors
+        return {
+            "protocol": self.firmware.protocol,
+            "port": self.path,
+            "clock_s": model.now_s,
+            "uptime_s": model.now_s - self._start_s,
+            "watchdog_s": model.watchdog_s,
+            "moving": model.moving,
+            "muted": self.muted,
+            "wheels": [
+                {"joint": name, "position_rad": p, "velocity_rad_s": v}
+                for name, p, v in zip(motors.wheel_joints, model.wheel_position_rad,
+                                      model.wheel_velocity_rad_s, strict=True)
+            ],
+            "arm": [
+                {"joint": name, "position_rad": p, "target_rad": t}
+                for name, p, t in zip(motors.arm_joints, model.arm_position_rad,
+                                      model.arm_target_rad, strict=True)
+            ],
+            "counters": {**asdict(model.counters), **self.firmware.state()},
+            "wire": {"dropped": self.injector.dropped, "corrupted": self.injector.corrupted,
+                     "tx_overflow": self.tx_overflow,
+                     "paced_baud": self.baud if self.pace else None},
+        }
+
+
+def _counts(state: dict[str, object]) -> str:
+    parts = []
+    for key, value in state.items():
+        if isinstance(value, dict):
+            value = " ".join(f"{k} {v}" for k, v in value.items())
+        parts.append(f"{key.replace('_', ' ')} {value}")
+    return ", ".join(parts)

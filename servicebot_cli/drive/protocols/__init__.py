@@ -1,0 +1,1 @@
+"""The two serial protocols, host side: servicebot binary frames and ROSArduinoBridge text."""

@@ -1,0 +1,1 @@
+"""One drive run on an open port: the command loop, signals, the stop and the telemetry log."""

@@ -1,0 +1,1 @@
+"""Keyboard teleoperation: keys to twists, the terminal mode and the status line."""

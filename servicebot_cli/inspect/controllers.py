@@ -1,0 +1,141 @@
+"""The ros2_control controllers a description is used with, from their YAML file.
+
+A URDF does not say which controllers run, but the controller configuration does. It is
+found, in this order: the file given with ``--controllers``, the ``<parameters>`` of a
+``gazebo_ros2_control`` plugin (relative to the description), ``controllers.yaml`` beside
+the description. The topics each known controller type offers are documented ROS 2 Humble
+behaviour, written down here once.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.common.inputs import display_path, read_input_text
+from servicebot_cli.description.extensions import param
+
+DEFAULT_NAME = "controllers.yaml"
+
+
+class ControllersError(DescriptionError):
+    """A controller configuration that cannot be read or is not ros2_control YAML."""
+
+
+@dataclass(frozen=True)
+class Controller:
+    """One controller: its name, plugin type and ``ros__parameters`` (not in JSON)."""
+
+    name: str
+    type: str
+    params: dict[str, Any] = field(repr=False, compare=False)
+
+
+@dataclass(frozen=True)
+class Controllers:
+    """A controller configuration.
+
+    Attributes:
+        file: Where it was read, as the user would type it.
+        found_by: How it was found: ``--controllers``, ``gazebo_ros2_control`` or ``beside``.
+        controllers: Every controller the controller manager lists, in file order.
+    """
+
+    file: str
+    found_by: str
+    controllers: tuple[Controller, ...]
+
+
+def candidate_files(description: Path, plugins: tuple[Any, ...]) -> list[tuple[Path, str]]:
+    """Where the controller configuration may be, best first, with how each was found.
+
+    Args:
+        description: The description file (its directory anchors relative paths).
+        plugins: The description's Gazebo plugins.
+    """
+    directory = description.parent
+    found: list[tuple[Path, str]] = []
+    for plugin in plugins:
+        named = param(plugin.params, "parameters")
+        if "gazebo_ros2_control" in plugin.filename and named:
+            path = Path(named).expanduser()
+            found.append((path if path.is_absolute() else directory / path,
+                          "gazebo_ros2_control"))
+    found.append((directory / DEFAULT_NAME, "beside"))
+    return found
+
+
+def read_controllers(path: Path, found_by: str) -> Controllers:
+    """Read a ros2_control controller YAML file.
+
+    Raises:
+        ControllersError: Unreadable, not YAML, or without ``controller_manager``.
+    """
+    import yaml
+
+    text = read_input_text(str(path), kind="a ros2_control controllers YAML (--controllers)",
+                           error=ControllersError)
+    try:
+        document = yaml.safe_load(text)
+    except yaml.YAMLError as exc:
+        where = getattr(exc, "problem_mark", None)
+        line = f":{where.line + 1}" if where is not None else ""
+        raise ControllersError(f"{path}{line}: not valid YAML; fix the file or give "
+                               "another with --controllers") from None
+    return parse_controllers(document, display_path(path), found_by)
+
+
+def parse_controllers(document: Any, file: str, found_by: str) -> Controllers:
+    """The controllers in a parsed YAML ``document``.
+
+    Raises:
+        ControllersError: No ``controller_manager: ros__parameters`` mapping.
+    """
+    manager = _params_of(document, "controller_manager")
+    if manager is None:
+        raise ControllersError(
+            f"{file}: no 'controller_manager: ros__parameters:' mapping; is this a "
+            "ros2_control controller configuration?"
+        )
+    controllers = []
+    for name, value in manager.items():
+        if isinstance(value, dict) and isinstance(value.get("type"), str):
+            controllers.append(Controller(name, value["type"], _params_of(document, name) or {}))
+    return Controllers(file, found_by, tuple(controllers))
+
+
+def _params_of(document: Any, node: str) -> dict[str, Any] | None:
+    section = document.get(node) if isinstance(document, dict) else None
+    params = section.get("ros__parameters") if isinstance(section, dict) else None
+    return params if isinstance(params, dict) else None
+
+
+def find_controllers(description: Path, plugins: tuple[Any, ...],
+                     explicit: Path | None = None) -> tuple[Controllers | None, tuple[str, ...]]:
+    """The controller configuration for a description, and notes on what was not usable.
+
+    Args:
+        description: The description file.
+        plugins: Its Gazebo plugins (``gazebo_ros2_control`` may name the file).
+        explicit: The file given with ``--controllers``; its errors are raised, not noted.
+
+    Raises:
+        ControllersError: ``explicit`` cannot be read or is not a controller configuration.
+    """
+    if explicit is not None:
+        return read_controllers(explicit, "--controllers"), ()
+    notes = []
+    for path, found_by in candidate_files(description, plugins):
+        if not path.is_file():
+            if found_by != "beside":
+                notes.append(f"gazebo_ros2_control names {path}, which does not exist")
+            continue
+        try:
+            return read_controllers(path, found_by), tuple(notes)
+        except ControllersError as exc:
+            notes.append(str(exc))
+    notes.append("no controller configuration found (looked for controllers.yaml beside "
+                 "the description); give one with --controllers FILE")
+    return None, tuple(notes)

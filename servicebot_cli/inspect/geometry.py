@@ -1,0 +1,147 @@
+"""Visual geometry placed in the root frame, its meshes, and bounding boxes.
+
+Primitives are bounded exactly (a cylinder's box follows from its axis, not from a polygon);
+meshes are read with trimesh, found through the description's package resolver, and
+measured vertex by vertex. A mesh that cannot be found or read is reported, not fatal:
+``inspect`` still shows everything else, and ``check`` is the place to fix it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.description.elements import Shape
+from servicebot_cli.kinematics.transforms import pose_matrix
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.packages import PackageResolver
+    from servicebot_cli.description.robot import RobotDescription
+
+FloatArray = npt.NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class PosedShape:
+    """A visual shape and ``transform_shape_to_root`` (4x4) at some configuration."""
+
+    link: str
+    shape: Shape
+    transform: FloatArray = field(compare=False)
+
+
+@dataclass(frozen=True)
+class Mesh:
+    """Mesh vertices [m] (scaled, in the shape frame), shape (n, 3), and triangles (m, 3)."""
+
+    vertices: FloatArray
+    faces: npt.NDArray[np.int64]
+
+
+@dataclass
+class MeshLibrary:
+    """Loads each mesh file once and remembers the ones that failed.
+
+    Attributes:
+        resolver: Finds ``package://`` files.
+        base_dir: Directory that relative mesh paths are relative to.
+        problems: One line per mesh that could not be used.
+    """
+
+    resolver: PackageResolver
+    base_dir: Path
+    problems: list[str] = field(default_factory=list)
+    _cache: dict[str, Mesh | None] = field(default_factory=dict)
+
+    def get(self, filename: str) -> Mesh | None:
+        """The mesh at ``filename`` (as written in the URDF), unscaled; None if unusable."""
+        if filename not in self._cache:
+            self._cache[filename] = self._load(filename)
+        return self._cache[filename]
+
+    def _load(self, filename: str) -> Mesh | None:
+        try:
+            path = self.resolver.resolve_uri(filename, self.base_dir)
+        except ServicebotError as exc:
+            self.problems.append(f"mesh {filename}: {exc}")
+            return None
+        if not path.is_file():
+            self.problems.append(f"mesh {filename}: no such file ({path})")
+            return None
+        import trimesh
+
+        try:
+            loaded = trimesh.load(str(path), force="mesh")
+            vertices = np.asarray(loaded.vertices, dtype=float)
+            faces = np.asarray(loaded.faces, dtype=np.int64)
+        except Exception as exc:  # noqa: BLE001 -- trimesh raises many types for bad files
+            self.problems.append(f"mesh {filename}: cannot read: {type(exc).__name__}: {exc}")
+            return None
+        if len(vertices) == 0:
+            self.problems.append(f"mesh {filename}: has no vertices")
+            return None
+        return Mesh(vertices, faces)
+
+
+def mesh_library(robot: RobotDescription, resolver: PackageResolver) -> MeshLibrary:
+    """A MeshLibrary for ``robot``'s meshes (relative paths from its file's directory)."""
+    return MeshLibrary(resolver, robot.path.parent)
+
+
+def posed_visuals(robot: RobotDescription,
+                  link_transforms: Mapping[str, FloatArray]) -> list[PosedShape]:
+    """Every visual shape of every placed link, in URDF order."""
+    posed = []
+    for link in robot.links:
+        transform = link_transforms.get(link.name)
+        if transform is None:
+            continue
+        for shape in link.visuals:
+            if shape.geometry.kind:
+                posed.append(PosedShape(link.name, shape, transform @ pose_matrix(shape.origin)))
+    return posed
+
+
+def shape_bounds(posed: PosedShape, meshes: MeshLibrary) -> FloatArray | None:
+    """Axis-aligned box ``[[xmin, ymin, zmin], [xmax, ymax, zmax]]`` [m] of a placed shape.
+
+    For a cylinder of radius r and length l whose axis has unit direction a, the half extent
+    along world axis i is ``|a_i| l / 2 + r sqrt(1 - a_i^2)``.
+    """
+    g, t = posed.shape.geometry, posed.transform
+    centre, rotation = t[:3, 3], t[:3, :3]
+    if g.kind == "box" and g.size is not None:
+        half = np.abs(rotation) @ (np.abs(np.array(g.size, dtype=float)) / 2)
+    elif g.kind == "cylinder" and g.radius is not None and g.length is not None:
+        axis = rotation[:, 2]
+        half = np.abs(axis) * abs(g.length) / 2 + abs(g.radius) * np.sqrt(
+            np.clip(1 - axis**2, 0, 1))
+    elif g.kind == "sphere" and g.radius is not None:
+        half = np.full(3, abs(g.radius))
+    elif g.kind == "mesh" and g.filename:
+        mesh = meshes.get(g.filename)
+        if mesh is None:
+            return None
+        points = (mesh.vertices * np.array(g.scale)) @ rotation.T + centre
+        return np.array([points.min(axis=0), points.max(axis=0)])
+    else:
+        return None
+    if not np.all(np.isfinite(half)):
+        return None
+    return np.array([centre - half, centre + half])
+
+
+def bounding_box(shapes: list[PosedShape], meshes: MeshLibrary) -> FloatArray | None:
+    """The box around every shape, ``[[min xyz], [max xyz]]`` [m]; None when there is none."""
+    boxes = [b for b in (shape_bounds(s, meshes) for s in shapes) if b is not None]
+    if not boxes:
+        return None
+    stacked = np.array(boxes)
+    return np.array([stacked[:, 0].min(axis=0), stacked[:, 1].max(axis=0)])
+

@@ -1,0 +1,127 @@
+"""The topics a robot consumes and publishes, and where each one comes from.
+
+Sensors publish what their Gazebo ROS plugins say. Controllers consume and publish what their
+type does in ROS 2 Humble (``~/`` is the controller's own namespace). Hardware parameters
+that name a serial port are listed as a device, since the motors are reached through it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from servicebot_cli.inspect.controllers import Controller, Controllers
+from servicebot_cli.inspect.plugins import HardwareInfo
+from servicebot_cli.inspect.sensors import SensorInfo
+
+_PORT_KEYS = ("port", "serial_port", "device", "serial_device", "device_name")
+_BAUD_KEYS = ("baud_rate", "baudrate", "baud")
+
+
+@dataclass(frozen=True)
+class TopicInfo:
+    """One way in or out of the robot.
+
+    Attributes:
+        direction: ``in`` (the robot consumes it) or ``out`` (it publishes it).
+        kind: ``topic``, ``action`` or ``device``.
+        name: Topic, action or device name (relative names resolve in the node's namespace).
+        message: Message or action type, ROS 2 spelling; for a device, its settings.
+        provider: The controller, sensor or ros2_control system that provides it.
+        source: The provider's type and the file it is declared in.
+        note: Anything a user must know to see it under this name.
+    """
+
+    direction: str
+    kind: str
+    name: str
+    message: str | None
+    provider: str
+    source: str
+    note: str | None = None
+
+
+def _diff_drive(c: Controller) -> list[tuple[str, str, str, str, str | None]]:
+    stamped = c.params.get("use_stamped_vel", True) is not False
+    note = None if stamped else (
+        "Humble subscribes ~/cmd_vel_unstamped when use_stamped_vel is false; "
+        "remap it to ~/cmd_vel"
+    )
+    rows = [("in", "topic", "~/cmd_vel",
+             "geometry_msgs/msg/TwistStamped" if stamped else "geometry_msgs/msg/Twist", note),
+            ("out", "topic", "~/odom", "nav_msgs/msg/Odometry", None)]
+    if c.params.get("enable_odom_tf", True) is not False:
+        rows.append(("out", "topic", "/tf", "tf2_msgs/msg/TFMessage", None))
+    return rows
+
+
+def _trajectory(c: Controller) -> list[tuple[str, str, str, str, str | None]]:
+    return [("in", "topic", "~/joint_trajectory", "trajectory_msgs/msg/JointTrajectory", None),
+            ("in", "action", "~/follow_joint_trajectory",
+             "control_msgs/action/FollowJointTrajectory", None)]
+
+
+def _joint_states(c: Controller) -> list[tuple[str, str, str, str, str | None]]:
+    local = c.params.get("use_local_topics", False) is True
+    prefix = "~/" if local else "/"
+    return [("out", "topic", f"{prefix}joint_states", "sensor_msgs/msg/JointState", None)]
+
+
+def _commands(c: Controller) -> list[tuple[str, str, str, str, str | None]]:
+    return [("in", "topic", "~/commands", "std_msgs/msg/Float64MultiArray", None)]
+
+
+_KNOWN = {
+    "diff_drive_controller/DiffDriveController": _diff_drive,
+    "joint_trajectory_controller/JointTrajectoryController": _trajectory,
+    "joint_state_broadcaster/JointStateBroadcaster": _joint_states,
+    "forward_command_controller/ForwardCommandController": _commands,
+    "position_controllers/JointGroupPositionController": _commands,
+    "velocity_controllers/JointGroupVelocityController": _commands,
+    "effort_controllers/JointGroupEffortController": _commands,
+}
+
+
+def controller_topics(controllers: Controllers) -> list[TopicInfo]:
+    """What each controller of a known type consumes and publishes."""
+    rows = []
+    file_name = controllers.file.rsplit("/", 1)[-1]
+    for c in controllers.controllers:
+        derive = _KNOWN.get(c.type)
+        if derive is None:
+            continue
+        source = f"{file_name}: {c.name} ({c.type})"
+        for direction, kind, name, message, note in derive(c):
+            resolved = f"/{c.name}/{name[2:]}" if name.startswith("~/") else name
+            rows.append(TopicInfo(direction, kind, resolved, message, c.name, source, note))
+    return rows
+
+
+def sensor_topics(sensors: tuple[SensorInfo, ...]) -> list[TopicInfo]:
+    """What each sensor publishes."""
+    return [TopicInfo("out", "topic", t.name, t.message, s.name,
+                      f"{s.type} sensor on {s.link} ({s.plugin or 'no ROS plugin'})")
+            for s in sensors for t in s.topics]
+
+
+def device_topics(hardware: tuple[HardwareInfo, ...]) -> list[TopicInfo]:
+    """Serial ports named by ros2_control hardware parameters."""
+    rows = []
+    for system in hardware:
+        params: dict[str, Any] = {p.name: p.value for p in system.params}
+        port = next((params[k] for k in _PORT_KEYS if params.get(k)), None)
+        if port is None:
+            continue
+        baud = next((params[k] for k in _BAUD_KEYS if params.get(k)), None)
+        settings = f"serial, {baud} baud" if baud else "serial"
+        rows.append(TopicInfo("in", "device", port, settings, "ros2_control",
+                              f"ros2_control hardware {system.plugin} (system {system.name})"))
+    return rows
+
+
+def topics_info(sensors: tuple[SensorInfo, ...], hardware: tuple[HardwareInfo, ...],
+                controllers: Controllers | None) -> tuple[TopicInfo, ...]:
+    """Inputs first, then outputs; within each, controllers, devices, then sensors."""
+    rows = (controller_topics(controllers) if controllers else []) + device_topics(hardware) \
+        + sensor_topics(sensors)
+    return tuple(sorted(rows, key=lambda r: r.direction != "in"))

@@ -1,0 +1,181 @@
+"""Whole-robot numbers: degrees of freedom, mass, centre of mass, size, arm reach, drive.
+
+Mass counts every link's ``<inertial>`` (Pinocchio's fixed-base model would leave out the root
+link and everything fixed to it). The centre of mass and the bounding box are taken at one
+configuration, zero unless the user gives joint values.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from servicebot_cli.description.elements import Joint, Vec3
+from servicebot_cli.description.robot import RobotDescription
+from servicebot_cli.inspect.geometry import FloatArray, MeshLibrary, bounding_box, posed_visuals
+from servicebot_cli.inspect.joints import DOF
+from servicebot_cli.inspect.numbers import clean, vec3
+from servicebot_cli.inspect.tree import KinematicTree, descendants
+from servicebot_cli.kinematics.drive_geometry import DriveGeometry
+
+_PARALLEL = 0.999  # |cos| between a segment and a joint axis that counts as "along the axis"
+
+
+@dataclass(frozen=True)
+class Dof:
+    """Degrees of freedom: the drive wheels and every other movable joint (the arm)."""
+
+    total: int
+    wheels: int
+    arm: int
+
+
+@dataclass(frozen=True)
+class Box:
+    """An axis-aligned box in the root link frame [m]."""
+
+    min_m: Vec3
+    max_m: Vec3
+
+
+@dataclass(frozen=True)
+class ArmReach:
+    """The farthest the arm reaches from its shoulder, arm straight.
+
+    Attributes:
+        shoulder: The first arm joint whose next segment does not lie along its own axis
+            (a base yaw joint turns its column in place, so the column adds no reach).
+        tip: The frame at the end of the longest chain below the first arm joint.
+        reach_m: Sum of segment lengths from the shoulder to the tip [m].
+    """
+
+    shoulder: str
+    tip: str
+    reach_m: float
+
+
+@dataclass(frozen=True)
+class DriveInfo:
+    """The differential drive, from the foundation's drive geometry.
+
+    Attributes:
+        wheelbase_m: Distance between the front-most and rear-most wheel axles [m].
+        top_speed_m_s: Straight-line speed at the wheel velocity limit [m/s].
+        top_turn_rate_rad_s: Turn rate in place at the wheel velocity limit [rad/s].
+    """
+
+    left: tuple[str, ...]
+    right: tuple[str, ...]
+    wheel_radius_m: float
+    track_m: float
+    wheelbase_m: float
+    max_wheel_speed_rad_s: float
+    top_speed_m_s: float
+    top_turn_rate_rad_s: float
+
+
+@dataclass(frozen=True)
+class Totals:
+    """Whole-robot numbers at one configuration.
+
+    Attributes:
+        frame: The root link, the frame of the centre of mass and the bounding box.
+        configuration_rad_or_m: The joint values used (others are zero) [rad or m].
+        mass_kg: Sum of every link's mass [kg].
+        centre_of_mass_m: In the root link frame [m]; None without mass.
+        bounding_box_m: Around the visual geometry, root link frame [m].
+        notes: What was left out and why (unreadable meshes, no drive found).
+    """
+
+    frame: str | None
+    configuration_rad_or_m: dict[str, float]
+    dof: Dof
+    mass_kg: float
+    centre_of_mass_m: Vec3 | None
+    bounding_box_m: Box | None
+    arm: ArmReach | None
+    drive: DriveInfo | None
+    notes: tuple[str, ...]
+
+
+def mass_and_centre(robot: RobotDescription,
+                    transforms: Mapping[str, FloatArray]) -> tuple[float, Vec3 | None]:
+    """Total mass [kg] and centre of mass in the root frame [m]: sum of m_i c_i / sum m_i."""
+    total, moment = 0.0, np.zeros(3)
+    for link in robot.links:
+        inertial = link.inertial
+        if inertial is None or inertial.mass_kg is None or not math.isfinite(inertial.mass_kg):
+            continue
+        transform = transforms.get(link.name)
+        if transform is None:
+            continue
+        total += inertial.mass_kg
+        moment += inertial.mass_kg * (transform[:3, :3] @ inertial.origin.xyz + transform[:3, 3])
+    if total <= 0:
+        return total, None
+    return total, vec3(moment / total)
+
+
+def arm_reach(tree: KinematicTree, arm_joints: list[Joint],
+              transforms: Mapping[str, FloatArray]) -> ArmReach | None:
+    """The reach of the chain that starts at the first arm joint; None without an arm."""
+    if not arm_joints or arm_joints[0].child is None:
+        return None
+    first = arm_joints[0]
+    below = descendants(tree, first.child)
+    tip = max(below, key=lambda item: item[1])[0] if below else first.child
+    parent_joint = {j.child: j for j in tree.edges}
+    path = [parent_joint[tip]] if tip != first.child else [first]
+    while path[-1] is not first:
+        path.append(parent_joint[path[-1].parent])
+    path.reverse()
+    points = [transforms[j.child][:3, 3] for j in path]
+    start = 0
+    while start < len(path) - 1 and _adds_no_reach(path[start], points, start, transforms):
+        start += 1
+    reach = sum(float(np.linalg.norm(points[i + 1] - points[i]))
+                for i in range(start, len(points) - 1))
+    return ArmReach(path[start].name, tip, clean(reach))
+
+
+def _adds_no_reach(joint: Joint, points: list[FloatArray], i: int,
+                   transforms: Mapping[str, FloatArray]) -> bool:
+    segment = points[i + 1] - points[i]
+    length = float(np.linalg.norm(segment))
+    if length < 1e-12:
+        return True
+    if not joint.movable:
+        return False
+    axis = transforms[joint.child][:3, :3] @ np.array(joint.axis, dtype=float)
+    norm = float(np.linalg.norm(axis))
+    return norm > 0 and abs(float(axis @ segment)) / (norm * length) >= _PARALLEL
+
+
+def drive_info(drive: DriveGeometry) -> DriveInfo:
+    """The drive's numbers, with the wheelbase and top speeds the wheel limits allow."""
+    xs = [w.position_m[0] for w in drive.wheels]
+    return DriveInfo(
+        left=drive.left, right=drive.right, wheel_radius_m=clean(drive.wheel_radius_m),
+        track_m=clean(drive.track_m), wheelbase_m=clean(max(xs) - min(xs)),
+        max_wheel_speed_rad_s=drive.max_wheel_speed_rad_s,
+        top_speed_m_s=clean(drive.max_linear_m_s),
+        top_turn_rate_rad_s=clean(drive.max_angular_rad_s),
+    )
+
+
+def dof_of(robot: RobotDescription, wheel_joints: set[str]) -> Dof:
+    """Degrees of freedom, split into drive wheels and the rest."""
+    movable = [j for j in robot.joints if j.movable]
+    wheels = sum(DOF[j.type] for j in movable if j.name in wheel_joints)
+    total = sum(DOF[j.type] for j in movable)
+    return Dof(total, wheels, total - wheels)
+
+
+def box_of(robot: RobotDescription, transforms: Mapping[str, FloatArray],
+           meshes: MeshLibrary) -> Box | None:
+    """The bounding box of the visual geometry at ``transforms``."""
+    box = bounding_box(posed_visuals(robot, transforms), meshes)
+    return None if box is None else Box(vec3(box[0]), vec3(box[1]))

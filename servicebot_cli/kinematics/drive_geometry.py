@@ -1,0 +1,154 @@
+"""The differential-drive geometry a URDF implies: which joints are wheels, radius, track.
+
+A wheel is a continuous joint whose child link carries a cylinder turning about the joint's
+axis, with that axis horizontal and across the robot (the root link's y). Wheels on +y are
+left, on -y right. Nothing here is a constant: change the URDF and the numbers follow.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.description.elements import Joint, Shape
+from servicebot_cli.kinematics.link_poses import link_transforms
+from servicebot_cli.kinematics.transforms import pose_matrix
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.robot import RobotDescription
+
+_PARALLEL = 0.99  # |cos| of the angle between axes that counts as parallel (about 8 degrees)
+
+
+@dataclass(frozen=True)
+class Wheel:
+    """One drive wheel.
+
+    Attributes:
+        joint: The wheel's joint.
+        side: ``left`` or ``right``.
+        radius_m: Cylinder radius [m].
+        position_m: Wheel centre in the root link frame at the zero configuration [m].
+        axis_sign: +1 when a positive joint velocity rolls the robot forward, else -1.
+        velocity_limit_rad_s: The joint's ``<limit velocity>`` [rad/s]; inf if absent.
+    """
+
+    joint: str
+    side: str
+    radius_m: float
+    position_m: tuple[float, float, float]
+    axis_sign: int
+    velocity_limit_rad_s: float
+
+
+@dataclass(frozen=True)
+class DriveGeometry:
+    """The wheels of a differential-drive base and the numbers diff_drive_controller needs.
+
+    Attributes:
+        wheels: Every wheel, URDF order.
+        wheel_radius_m: Mean wheel radius [m].
+        track_m: Distance between the mean left and mean right wheel centres
+            (diff_drive_controller's ``wheel_separation``) [m].
+        max_wheel_speed_rad_s: The smallest wheel velocity limit [rad/s].
+    """
+
+    wheels: tuple[Wheel, ...]
+    wheel_radius_m: float
+    track_m: float
+    max_wheel_speed_rad_s: float
+
+    @property
+    def left(self) -> tuple[str, ...]:
+        """Left wheel joint names."""
+        return tuple(w.joint for w in self.wheels if w.side == "left")
+
+    @property
+    def right(self) -> tuple[str, ...]:
+        """Right wheel joint names."""
+        return tuple(w.joint for w in self.wheels if w.side == "right")
+
+    @property
+    def max_linear_m_s(self) -> float:
+        """Top straight-line speed the wheel limits allow [m/s]."""
+        return self.max_wheel_speed_rad_s * self.wheel_radius_m
+
+    @property
+    def max_angular_rad_s(self) -> float:
+        """Top turn-in-place rate the wheel limits allow [rad/s]."""
+        return 2.0 * self.max_linear_m_s / self.track_m
+
+
+def drive_geometry(robot: RobotDescription) -> DriveGeometry:
+    """Find the drive wheels of ``robot``.
+
+    Raises:
+        DescriptionError: Fewer than one wheel on either side, naming what was found.
+    """
+    world = _link_transforms(robot)
+    wheels = []
+    for joint in robot.joints:
+        wheel = _as_wheel(robot, joint, world)
+        if wheel is not None:
+            wheels.append(wheel)
+    sides = {side: [w for w in wheels if w.side == side] for side in ("left", "right")}
+    if not sides["left"] or not sides["right"]:
+        found = ", ".join(f"{w.joint} ({w.side})" for w in wheels) or "none"
+        raise DescriptionError(
+            f"{robot.display}: not a differential drive: needs continuous wheel joints on both "
+            f"sides with a cylinder about the joint axis (found: {found})"
+        )
+    left_y = np.mean([w.position_m[1] for w in sides["left"]])
+    right_y = np.mean([w.position_m[1] for w in sides["right"]])
+    return DriveGeometry(
+        wheels=tuple(wheels),
+        wheel_radius_m=float(np.mean([w.radius_m for w in wheels])),
+        track_m=float(left_y - right_y),
+        max_wheel_speed_rad_s=min(w.velocity_limit_rad_s for w in wheels),
+    )
+
+
+def _link_transforms(robot: RobotDescription) -> dict[str, np.ndarray]:
+    """Pose of every reachable link in the root frame at the zero configuration."""
+    return link_transforms(robot)
+
+
+def _as_wheel(robot: RobotDescription, joint: Joint, world: dict[str, np.ndarray]) -> Wheel | None:
+    if joint.type != "continuous" or joint.child not in world or joint.parent not in world:
+        return None
+    link = robot.link(joint.child)
+    cylinder = next(
+        (s for s in (*link.collisions, *link.visuals) if s.geometry.kind == "cylinder"), None
+    )
+    if cylinder is None or not cylinder.geometry.radius:
+        return None
+    axis = np.array(joint.axis, dtype=float)
+    if not np.all(np.isfinite(axis)) or np.linalg.norm(axis) == 0:
+        return None
+    axis /= np.linalg.norm(axis)
+    if abs(float(axis @ _cylinder_axis(cylinder))) < _PARALLEL:
+        return None
+    transform = world[joint.child]
+    axis_in_root = transform[:3, :3] @ axis
+    if abs(axis_in_root[1]) < _PARALLEL:
+        return None
+    position = transform[:3, 3]
+    limit = joint.limits.velocity if joint.limits and joint.limits.velocity else math.inf
+    return Wheel(
+        joint=joint.name,
+        side="left" if position[1] > 0 else "right",
+        radius_m=float(cylinder.geometry.radius),
+        position_m=(float(position[0]), float(position[1]), float(position[2])),
+        axis_sign=1 if axis_in_root[1] > 0 else -1,
+        velocity_limit_rad_s=float(limit),
+    )
+
+
+def _cylinder_axis(shape: Shape) -> np.ndarray:
+    """The cylinder's own z axis, expressed in its link frame."""
+    return pose_matrix(shape.origin)[:3, 2]
+

@@ -1,1 +1,0 @@
-"""The headless kinematic simulator behind ``servicebot simulate``."""

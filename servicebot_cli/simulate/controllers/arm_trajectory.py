@@ -1,0 +1,70 @@
+"""The arm controller: ``joint_trajectory`` points followed within the URDF's limits.
+
+Like joint_trajectory_controller given positions only, the reference moves linearly from the
+arm's state when the goal arrives to each point in turn, then holds the last one. The joints
+follow that reference at most at their URDF velocity limit and never leave their position
+limits, so a point asked for too soon is reached late, as on the real arm. While the arm tracks
+exactly, whole stretches are filled at once; ticks are stepped one by one only while it lags.
+"""
+
+from __future__ import annotations
+
+import bisect
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.simulate.scenario.definition import ArmTrajectory
+
+FloatArray = npt.NDArray[np.float64]
+_TRACKING = 1e-12  # [rad]: the joint is on its reference
+
+
+@dataclass(frozen=True)
+class ArmLimits:
+    """Per joint, in trajectory order: position limits [rad] and velocity limits [rad/s]."""
+
+    lower: FloatArray
+    upper: FloatArray
+    velocity: FloatArray
+
+
+def reference(trajectory: ArmTrajectory, q0: FloatArray, times_s: FloatArray) -> FloatArray:
+    """The interpolated reference at ``times_s``, shape (len(times_s), joints)."""
+    if not trajectory.points:
+        return np.broadcast_to(q0, (len(times_s), len(q0))).copy()
+    knots = np.array([trajectory.start_s] + [trajectory.start_s + p.time_from_start_s
+                                             for p in trajectory.points])
+    values = np.vstack([q0] + [np.array(p.positions) for p in trajectory.points])
+    if knots[1] == knots[0]:  # a first point at time 0 replaces the current state
+        knots, values = knots[1:], values[1:]
+    return np.column_stack([np.interp(times_s, knots, values[:, j], left=q0[j])
+                            for j in range(len(q0))])
+
+
+def follow(ref: FloatArray, q0: FloatArray, limits: ArmLimits, dt_s: float) -> FloatArray:
+    """Joint positions at each tick boundary following ``ref`` (shape (n+1, joints)).
+
+    Each tick moves every joint toward the reference by at most ``velocity * dt_s``.
+    """
+    speed = np.where(np.isnan(limits.velocity), np.inf, limits.velocity) * dt_s
+    lower = np.where(np.isnan(limits.lower), -np.inf, limits.lower)
+    upper = np.where(np.isnan(limits.upper), np.inf, limits.upper)
+    ref = np.clip(ref, lower, upper)
+    n = len(ref) - 1
+    q = np.empty_like(ref)
+    q[0] = np.clip(q0, lower, upper)
+    too_fast = np.flatnonzero(np.any(np.abs(np.diff(ref, axis=0)) > speed * (1 + 1e-9), axis=1))
+    k = 0
+    while k < n:
+        if np.max(np.abs(q[k] - ref[k]), initial=0.0) <= _TRACKING:
+            i = bisect.bisect_left(too_fast, k)
+            j = int(too_fast[i]) if i < len(too_fast) else n
+            if j > k:  # on the reference and it is slow enough: follow it exactly
+                q[k + 1:j + 1] = ref[k + 1:j + 1]
+                k = j
+                continue
+        q[k + 1] = q[k] + np.clip(ref[k + 1] - q[k], -speed, speed)
+        k += 1
+    return q

@@ -1,0 +1,96 @@
+"""One CSV file per stream, plus summary.json, in an output directory.
+
+Every file is written atomically. Numbers are written in the shortest form that reads back
+to the same float, so files are exact and the same seed gives the same bytes.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.common.files import OutputError, atomic_output, write_atomic
+from servicebot_cli.common.jsonable import dumps
+from servicebot_cli.simulate.simulator import SimResult
+
+
+def _table(header: Sequence[str], columns: Sequence[npt.ArrayLike]) -> str:
+    if not columns:
+        return ",".join(header) + "\n"
+    matrix = np.column_stack([np.asarray(c, dtype=float) for c in columns])
+    text = matrix.astype(str)  # numpy's shortest round-trip repr, in C
+    body = "\n".join(",".join(row) for row in text.tolist())
+    return ",".join(header) + "\n" + (body + "\n" if body else "")
+
+
+def tables(result: SimResult) -> dict[str, str]:
+    """File name to CSV text for every stream of ``result``."""
+    truth, plan, odom, joints = result.truth, result.plan, result.odometry, result.joints
+    ticks = np.arange(len(truth.x_m)) * truth.dt_s
+    lin = np.append(truth.linear_m_s, 0.0)
+    ang = np.append(truth.angular_rad_s, 0.0)
+    starts = np.arange(plan.ticks) * plan.dt_s
+    out = {
+        "ground_truth.csv": _table(("time_s", "x_m", "y_m", "yaw_rad", "linear_m_s",
+                                    "angular_rad_s"),
+                                   (ticks, truth.x_m, truth.y_m, truth.yaw_rad, lin, ang)),
+        "cmd_vel.csv": _table(("time_s", "target_linear_m_s", "target_angular_rad_s",
+                               "linear_m_s", "angular_rad_s", "left_wheel_rad_s",
+                               "right_wheel_rad_s"),
+                              (starts, plan.target_linear_m_s, plan.target_angular_rad_s,
+                               plan.linear_m_s, plan.angular_rad_s, plan.left_rad_s,
+                               plan.right_rad_s)),
+        "odometry.csv": _table(("time_s", "x_m", "y_m", "yaw_rad", "linear_m_s",
+                                "angular_rad_s"),
+                               (odom.times_s, odom.x_m, odom.y_m, odom.yaw_rad, odom.linear_m_s,
+                                odom.angular_rad_s)),
+        "joint_states.csv": _table(
+            ("time_s", *(f"{n}_rad" for n in joints.names), *(f"{n}_rad_s" for n in joints.names)),
+            (joints.times_s, *joints.positions.T, *joints.velocities.T)),
+        "collisions.csv": "time_s,obstacle,x_m,y_m,yaw_rad\n" + "".join(
+            f"{c.time_s!r},{c.obstacle},{c.x_m!r},{c.y_m!r},{c.yaw_rad!r}\n"
+            for c in result.contacts),
+    }
+    if result.scans is not None:
+        scans = result.scans
+        out["scan.csv"] = _table(("time_s", *(f"range_m@{a:.6f}rad" for a in scans.angles_rad)),
+                                 (scans.times_s, *scans.ranges_m.T))
+    if result.imu is not None:
+        imu = result.imu
+        out["imu.csv"] = _table(
+            ("time_s", "qx", "qy", "qz", "qw", "wx_rad_s", "wy_rad_s", "wz_rad_s",
+             "ax_m_s2", "ay_m_s2", "az_m_s2"),
+            (imu.times_s, *imu.orientation_xyzw.T, *imu.angular_velocity_rad_s.T,
+             *imu.linear_acceleration_m_s2.T))
+    if result.camera is not None:
+        cam, n = result.camera, len(result.camera_times_s)
+        out["camera_info.csv"] = _table(
+            ("time_s", "width_px", "height_px", "fx_px", "fy_px", "cx_px", "cy_px"),
+            (result.camera_times_s, *(np.full(n, v) for v in (cam.width_px, cam.height_px,
+                                                              cam.k[0], cam.k[4], cam.k[2],
+                                                              cam.k[5]))))
+    return out
+
+
+def write_directory(directory: str | Path, result: SimResult, summary: dict[str, Any]) -> None:
+    """Write every CSV and ``summary.json`` into ``directory`` (created if missing).
+
+    Raises:
+        OutputError: The directory cannot be created or written.
+    """
+    path = Path(directory)
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except FileExistsError:
+        raise OutputError(f"{path}: exists and is not a directory; give a directory for --out") \
+            from None
+    except OSError as exc:
+        raise OutputError(f"{path}: cannot create directory: {exc.strerror or exc}") from None
+    for name, text in tables(result).items():
+        with atomic_output(path / name) as handle:
+            handle.write(text)
+    write_atomic(path / "summary.json", dumps(summary))

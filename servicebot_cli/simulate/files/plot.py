@@ -1,0 +1,134 @@
+"""A picture of a run: the world from above with both paths and a LIDAR scan, and the arm.
+
+Drawn on a bare matplotlib Figure (no pyplot state), so it works without a display and the
+same run gives the same PNG bytes. The live window reuses :func:`draw_world`.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from servicebot_cli.common.files import atomic_output
+from servicebot_cli.simulate.simulator import SimResult
+from servicebot_cli.simulate.summary import odometry_in_world
+
+_OBSTACLE = {"facecolor": "#b0b0b0", "edgecolor": "#505050", "linewidth": 0.8}
+
+
+def draw_world(ax: Any, result: SimResult) -> None:
+    """Obstacles (low ones, below the LIDAR, hatched), with equal axes in metres."""
+    from matplotlib.patches import Circle, Polygon
+
+    lidar_z = None
+    if result.scans is not None and len(result.scans.origin_m):
+        lidar_z = float(result.scans.origin_m[0, 2])
+    for solid in result.solids:
+        low, high = solid.z_range_m
+        style = dict(_OBSTACLE)
+        if lidar_z is not None and not low <= lidar_z <= high:
+            style.update(facecolor="#e8e8e8", hatch="///")
+        if solid.kind == "cylinder":
+            ax.add_patch(Circle(tuple(solid.center_m[:2]), solid.half_m[0], **style))
+        else:
+            ax.add_patch(Polygon(solid.floor_corners(), closed=True, **style))
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.grid(True, linewidth=0.3, alpha=0.6)
+
+
+def footprint_outline(result: SimResult, x: float, y: float, yaw: float) -> np.ndarray:
+    """The footprint's corners in the world at a pose, closed, shape (5, 2)."""
+    corners = result.body.footprint.corners()
+    c, s = math.cos(yaw), math.sin(yaw)
+    world = np.column_stack((x + c * corners[:, 0] - s * corners[:, 1],
+                             y + s * corners[:, 0] + c * corners[:, 1]))
+    return np.vstack((world, world[:1]))
+
+
+def scan_points(result: SimResult, index: int) -> np.ndarray:
+    """Finite returns of scan ``index`` in the world frame, shape (M, 2)."""
+    scans = result.scans
+    assert scans is not None
+    ranges = scans.ranges_m[index]
+    ok = np.isfinite(ranges)
+    bearing = scans.yaw_rad[index] + scans.angles_rad[ok]
+    origin = scans.origin_m[index]
+    return np.column_stack((origin[0] + ranges[ok] * np.cos(bearing),
+                            origin[1] + ranges[ok] * np.sin(bearing)))
+
+
+def _draw_map(ax: Any, result: SimResult) -> None:
+    draw_world(ax, result)
+    truth = result.truth
+    ox, oy, _ = odometry_in_world(result)
+    ax.plot(truth.x_m, truth.y_m, color="#1f77b4", linewidth=1.6, label="ground truth")
+    ax.plot(ox, oy, color="#ff7f0e", linewidth=1.2, linestyle="--", label="wheel odometry")
+    if result.scans is not None and len(result.scans.times_s):
+        k = len(result.scans.times_s) - 1
+        points = scan_points(result, k)
+        ax.scatter(points[:, 0], points[:, 1], s=4, color="#d62728", zorder=3,
+                   label=f"LIDAR scan at {result.scans.times_s[k]:.1f} s")
+    start = footprint_outline(result, truth.x_m[0], truth.y_m[0], truth.yaw_rad[0])
+    end = footprint_outline(result, truth.x_m[-1], truth.y_m[-1], truth.yaw_rad[-1])
+    ax.plot(start[:, 0], start[:, 1], color="#2ca02c", linewidth=1.0, label="start")
+    ax.plot(end[:, 0], end[:, 1], color="#1f77b4", linewidth=1.0, label="end")
+    for contact in result.contacts:
+        ax.plot(contact.x_m, contact.y_m, marker="x", color="black", markersize=9, mew=2)
+    if result.contacts:
+        ax.plot([], [], marker="x", color="black", linestyle="", label="collision")
+    ax.legend(loc="upper right", fontsize=7, framealpha=0.85)
+    ax.set_title(f"{result.scenario.name}: {result.scenario.duration_s:g} s, seed {result.seed}")
+
+
+def _draw_arm(ax: Any, result: SimResult) -> None:
+    times = np.arange(len(result.arm_positions_rad)) * result.truth.dt_s
+    for j, name in enumerate(result.body.arm_joints):
+        ax.plot(times, result.arm_positions_rad[:, j], linewidth=1.2, label=name)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("joint angle [rad]")
+    ax.set_title("arm joints")
+    ax.grid(True, linewidth=0.3, alpha=0.6)
+    ax.legend(loc="best", fontsize=7)
+
+
+def _draw_drift(ax: Any, result: SimResult) -> None:
+    from servicebot_cli.simulate.world.motion import pose_at
+
+    ox, oy, _ = odometry_in_world(result)
+    tx, ty, _ = pose_at(result.truth, result.odometry.times_s)
+    ax.plot(result.odometry.times_s, np.hypot(ox - tx, oy - ty), color="#ff7f0e")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("odometry error [m]")
+    ax.set_title("odometry drift from ground truth")
+    ax.grid(True, linewidth=0.3, alpha=0.6)
+
+
+def figure(result: SimResult) -> Any:
+    """The run's figure: map on the left, arm angles and odometry drift on the right."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(13, 7), dpi=100, layout="constrained")
+    grid = fig.add_gridspec(2, 2, width_ratios=(1.25, 1))
+    _draw_map(fig.add_subplot(grid[:, 0]), result)
+    _draw_arm(fig.add_subplot(grid[0, 1]), result)
+    _draw_drift(fig.add_subplot(grid[1, 1]), result)
+    return fig
+
+
+def write_plot(path: str | Path, result: SimResult) -> None:
+    """Save the figure as PNG, atomically.
+
+    Raises:
+        OutputError: The file cannot be written.
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    fig = figure(result)
+    FigureCanvasAgg(fig)
+    with atomic_output(path, "wb") as handle:
+        fig.savefig(handle, format="png", metadata={"Software": None})

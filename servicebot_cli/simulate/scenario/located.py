@@ -1,0 +1,214 @@
+"""YAML and JSON documents as plain values, remembering where each value was written.
+
+Scenario errors must name the field and its line. PyYAML's composed nodes carry start marks;
+JSON is read by a small parser that records the same. Both give ``(value, positions)``:
+plain dicts, lists, strings, numbers, booleans and None, and a map from each value's path
+(a tuple of keys and indices) to its 1-based ``(line, column)``.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass
+from typing import Any
+
+from servicebot_cli.common.errors import ServicebotError
+
+Path = tuple[str | int, ...]
+Positions = dict[Path, tuple[int, int]]
+
+
+class ScenarioError(ServicebotError):
+    """A scenario file that cannot be read, parsed or validated; names the file and line."""
+
+
+@dataclass(frozen=True)
+class Located:
+    """A parsed document and where each of its values was written.
+
+    Attributes:
+        value: The document as plain Python values.
+        positions: Path of each value to its 1-based ``(line, column)``.
+        display: The file as the user named it.
+    """
+
+    value: Any
+    positions: Positions
+    display: str
+
+    def where(self, path: Path) -> str:
+        """``file:line`` of ``path``, or of its closest enclosing value that has a position."""
+        for end in range(len(path), -1, -1):
+            if path[:end] in self.positions:
+                line, _ = self.positions[path[:end]]
+                return f"{self.display}:{line}"
+        return self.display
+
+    def error(self, path: Path, message: str) -> ScenarioError:
+        """A ScenarioError ``file:line: field: message``."""
+        return ScenarioError(f"{self.where(path)}: {dotted(path) or 'scenario'}: {message}")
+
+
+def dotted(path: Path) -> str:
+    """``cmd_vel[2].linear_m_s`` for ``("cmd_vel", 2, "linear_m_s")``."""
+    text = ""
+    for part in path:
+        text += f"[{part}]" if isinstance(part, int) else (f".{part}" if text else part)
+    return text
+
+
+def parse(text: str, display: str, *, json_syntax: bool) -> Located:
+    """Parse ``text`` as JSON or YAML.
+
+    Raises:
+        ScenarioError: Not well-formed, with the line and column of the problem.
+    """
+    if json_syntax:
+        return _JsonParser(text, display).document()
+    return _parse_yaml(text, display)
+
+
+def _parse_yaml(text: str, display: str) -> Located:
+    import yaml
+
+    try:
+        node = yaml.compose(text, Loader=yaml.SafeLoader)
+    except yaml.MarkedYAMLError as exc:
+        mark = exc.problem_mark
+        line = f":{mark.line + 1}" if mark is not None else ""
+        raise ScenarioError(f"{display}{line}: not valid YAML: {exc.problem}") from None
+    except yaml.YAMLError as exc:
+        raise ScenarioError(f"{display}: not valid YAML: {exc}") from None
+    positions: Positions = {}
+    if node is None:
+        return Located({}, positions, display)
+    constructor = yaml.SafeLoader(text)
+    return Located(_yaml_value(node, (), positions, constructor, display), positions, display)
+
+
+def _yaml_value(node: Any, path: Path, positions: Positions, constructor: Any,
+                display: str) -> Any:
+    import yaml
+
+    positions[path] = (node.start_mark.line + 1, node.start_mark.column + 1)
+    if isinstance(node, yaml.MappingNode):
+        result: dict[str, Any] = {}
+        for key_node, value_node in node.value:
+            key = str(constructor.construct_object(key_node, deep=True))
+            if key in result:
+                raise ScenarioError(
+                    f"{display}:{key_node.start_mark.line + 1}: {dotted((*path, key))}: "
+                    "given twice; keep one"
+                )
+            result[key] = _yaml_value(value_node, (*path, key), positions, constructor, display)
+        return result
+    if isinstance(node, yaml.SequenceNode):
+        return [_yaml_value(item, (*path, i), positions, constructor, display)
+                for i, item in enumerate(node.value)]
+    try:
+        return constructor.construct_object(node, deep=True)
+    except yaml.YAMLError as exc:
+        line = node.start_mark.line + 1
+        raise ScenarioError(f"{display}:{line}: {dotted(path)}: {exc}") from None
+
+
+_NUMBER = re.compile(r"-?(?:0|[1-9]\d*)(?:\.\d+)?(?:[eE][-+]?\d+)?")
+_WHITESPACE = re.compile(r"[ \t\n\r]*")
+_LITERALS = {"true": True, "false": False, "null": None}
+
+
+class _JsonParser:
+    """Strict JSON (RFC 8259) with the position of every value."""
+
+    def __init__(self, text: str, display: str) -> None:
+        self.text, self.display, self.pos = text, display, 0
+        self.positions: Positions = {}
+
+    def document(self) -> Located:
+        value = self.value(())
+        self.skip()
+        if self.pos != len(self.text):
+            self.fail("extra data after the document")
+        return Located(value, self.positions, self.display)
+
+    def fail(self, reason: str) -> None:
+        line = self.text.count("\n", 0, self.pos) + 1
+        raise ScenarioError(f"{self.display}:{line}: not valid JSON: {reason}")
+
+    def skip(self) -> None:
+        self.pos = _WHITESPACE.match(self.text, self.pos).end()  # type: ignore[union-attr]
+
+    def value(self, path: Path) -> Any:
+        self.skip()
+        line = self.text.count("\n", 0, self.pos) + 1
+        column = self.pos - (self.text.rfind("\n", 0, self.pos) + 1) + 1
+        self.positions[path] = (line, column)
+        char = self.text[self.pos:self.pos + 1]
+        if char == "{":
+            return self.object(path)
+        if char == "[":
+            return self.array(path)
+        if char == '"':
+            return self.string()
+        for word, literal in _LITERALS.items():
+            if self.text.startswith(word, self.pos):
+                self.pos += len(word)
+                return literal
+        match = _NUMBER.match(self.text, self.pos)
+        if not match:
+            self.fail(f"unexpected {char!r}" if char else "unexpected end of file")
+        self.pos = match.end()  # type: ignore[union-attr]
+        return json.loads(match.group())  # type: ignore[union-attr]
+
+    def string(self) -> str:
+        try:
+            text, self.pos = json.decoder.scanstring(self.text, self.pos + 1)
+        except json.JSONDecodeError as exc:
+            self.fail(exc.msg)
+        return text
+
+    def object(self, path: Path) -> dict[str, Any]:
+        result: dict[str, Any] = {}
+        self.pos += 1
+        self.skip()
+        if self.text.startswith("}", self.pos):
+            self.pos += 1
+            return result
+        while True:
+            self.skip()
+            if not self.text.startswith('"', self.pos):
+                self.fail("expected a quoted key")
+            key = self.string()
+            if key in result:
+                self.fail(f"{dotted((*path, key))}: given twice; keep one")
+            self.skip()
+            if not self.text.startswith(":", self.pos):
+                self.fail(f"expected ':' after key {key!r}")
+            self.pos += 1
+            result[key] = self.value((*path, key))
+            if self.separator("}"):
+                return result
+
+    def array(self, path: Path) -> list[Any]:
+        result: list[Any] = []
+        self.pos += 1
+        self.skip()
+        if self.text.startswith("]", self.pos):
+            self.pos += 1
+            return result
+        while True:
+            result.append(self.value((*path, len(result))))
+            if self.separator("]"):
+                return result
+
+    def separator(self, close: str) -> bool:
+        """Consume ``,`` (False: more follows) or ``close`` (True: done)."""
+        self.skip()
+        char = self.text[self.pos:self.pos + 1]
+        self.pos += 1
+        if char == close:
+            return True
+        if char != ",":
+            self.fail(f"expected ',' or '{close}'" + (f", found {char!r}" if char else ""))
+        return False

@@ -1,0 +1,78 @@
+"""Checks of a scenario against the robot and the world, with the scenario line of each fault.
+
+The scenario's own checks need no robot; these do: the arm's joint names and limits come
+from the URDF, and the start pose must leave the footprint clear of every obstacle.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.common.errors import NameNotFound
+from servicebot_cli.simulate.body import SimRobot
+from servicebot_cli.simulate.scenario.definition import Scenario
+from servicebot_cli.simulate.scenario.located import Located, ScenarioError
+from servicebot_cli.simulate.world.solids import Solid, footprint_hits
+
+FloatArray = npt.NDArray[np.float64]
+
+
+def _error(scenario: Scenario, path: tuple[str | int, ...], message: str) -> ScenarioError:
+    located = scenario.source or Located({}, {}, scenario.name)
+    return located.error(path, message)
+
+
+def check_scenario(body: SimRobot, scenario: Scenario, solids: Sequence[Solid],
+                   meshes: Sequence[Any]) -> FloatArray:
+    """Check the arm goal and the start pose; return the arm's start positions [rad].
+
+    Raises:
+        ScenarioError: An unknown or wheel joint, a position outside its limits, or a start
+            pose whose footprint overlaps an obstacle.
+    """
+    q0 = _check_arm(body, scenario)
+    start = scenario.initial_pose
+    hit = footprint_hits(body.footprint, list(solids), np.array([start.x_m]),
+                         np.array([start.y_m]), np.array([start.yaw_rad]))
+    if hit[0] >= 0:
+        raise _error(scenario, ("initial_pose",), f"the robot's footprint overlaps "
+                     f"{solids[int(hit[0])].name}; start it somewhere clear")
+    if meshes:
+        from servicebot_cli.simulate.world.meshes import footprint_hits_meshes
+
+        mesh_hit = footprint_hits_meshes(body.footprint, meshes, np.array([start.x_m]),
+                                         np.array([start.y_m]), np.array([start.yaw_rad]))
+        if mesh_hit[0] >= 0:
+            raise _error(scenario, ("initial_pose",), f"the robot's footprint overlaps mesh "
+                         f"{int(mesh_hit[0]) + 1}; start it somewhere clear")
+    return q0
+
+
+def _check_arm(body: SimRobot, scenario: Scenario) -> FloatArray:
+    space = body.joint_space
+    index = [space.index(n) for n in body.arm_joints]
+    lower, upper = space.lower[index], space.upper[index]
+    q0 = np.clip(np.zeros(len(index)), np.nan_to_num(lower, nan=-np.inf),
+                 np.nan_to_num(upper, nan=np.inf))
+    trajectory = scenario.arm
+    for i, name in enumerate(trajectory.joint_names):
+        if name not in body.arm_joints:
+            wheel = name in {w.joint for w in body.geometry.wheels}
+            reason = ("is a wheel; wheels follow cmd_vel" if wheel else
+                      str(NameNotFound.for_name(name, body.arm_joints)).replace("no name ", ""))
+            raise _error(scenario, ("arm", "joint_names", i), f"'{name}' {reason}"
+                         if wheel else f"unknown arm joint: {reason}")
+    for p, point in enumerate(trajectory.points):
+        for i, name in enumerate(trajectory.joint_names):
+            j = body.arm_joints.index(name)
+            value, lo, hi = point.positions[i], lower[j], upper[j]
+            if not math.isnan(lo) and not lo - 1e-9 <= value <= hi + 1e-9:
+                raise _error(scenario, ("arm", "points", p, "positions", i),
+                             f"{name} = {value:g} rad is outside its URDF limits "
+                             f"[{lo:g}, {hi:g}] rad")
+    return q0

@@ -1,0 +1,93 @@
+"""The LIDAR: rays cast in 3D from the sensor's pose against the world, as Gazebo's ray sensor.
+
+Rays leave the sensor frame at the scan angles (Gazebo spaces ``samples`` rays evenly from
+``min_angle`` to ``max_angle``, both included) and are cast against the floor and every
+obstacle. Returns closer than ``min`` read -inf and those beyond ``max`` (or none) +inf, as
+REP 117 and ``sensor_msgs/LaserScan`` say; the others get the gaussian noise, are clipped into
+``[min, max]`` and rounded to the range resolution.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.description.sensors import LidarSpec
+from servicebot_cli.simulate.sensors import noise
+from servicebot_cli.simulate.world import raycast
+from servicebot_cli.simulate.world.motion import Path2D, pose_at
+from servicebot_cli.simulate.world.solids import Solid
+
+FloatArray = npt.NDArray[np.float64]
+RAYS_PER_BATCH = 32_768  # keeps each batch's temporaries in cache
+
+
+@dataclass(frozen=True)
+class Scans:
+    """LaserScan data: ``ranges`` (scans, samples) [m] at ``times_s``, and sensor poses."""
+
+    spec: LidarSpec
+    times_s: FloatArray
+    angles_rad: FloatArray
+    ranges_m: FloatArray
+    origin_m: FloatArray  # sensor position in the world per scan, (scans, 3)
+    yaw_rad: FloatArray  # sensor heading in the world per scan
+
+
+def scan_angles(spec: LidarSpec) -> FloatArray:
+    """Bearing of each ray in the sensor frame [rad]."""
+    if not spec.samples or spec.samples < 1 or spec.min_angle_rad is None \
+            or spec.max_angle_rad is None:
+        raise DescriptionError("the LIDAR sensor needs <samples>, <min_angle> and <max_angle>")
+    if spec.samples == 1:
+        return np.array([spec.min_angle_rad])
+    return np.linspace(spec.min_angle_rad, spec.max_angle_rad, spec.samples)
+
+
+def scan(spec: LidarSpec, transform_sensor_to_base: FloatArray, base_height_m: float,
+         path: Path2D, times_s: FloatArray, solids: Sequence[Solid], meshes: Sequence[Any],
+         rng: np.random.Generator, progress: Callable[[int], None] | None = None) -> Scans:
+    """Every scan of a run at ``times_s``."""
+    angles = scan_angles(spec)
+    x, y, yaw = pose_at(path, times_s)
+    local_dirs = transform_sensor_to_base[:3, :3] @ np.vstack(
+        (np.cos(angles), np.sin(angles), np.zeros_like(angles)))  # (3, R) in the base frame
+    offset = transform_sensor_to_base[:3, 3]
+    c, s = np.cos(yaw), np.sin(yaw)
+    origins = np.column_stack((x + c * offset[0] - s * offset[1],
+                               y + s * offset[0] + c * offset[1],
+                               np.full_like(x, base_height_m + offset[2])))
+    true = np.empty((len(times_s), len(angles)))
+    per_batch = max(1, RAYS_PER_BATCH // len(angles))
+    for start in range(0, len(times_s), per_batch):
+        stop = min(start + per_batch, len(times_s))
+        cb, sb = c[start:stop, None], s[start:stop, None]
+        dirs = np.stack((cb * local_dirs[0] - sb * local_dirs[1],
+                         sb * local_dirs[0] + cb * local_dirs[1],
+                         np.broadcast_to(local_dirs[2], cb.shape[:1] + local_dirs[2].shape)),
+                        axis=-1).reshape(-1, 3)
+        o = np.repeat(origins[start:stop], len(angles), axis=0)
+        true[start:stop] = raycast.cast(o, dirs, solids, meshes=meshes).reshape(stop - start, -1)
+        if progress is not None:
+            progress(stop - start)
+    sensor_yaw = yaw + np.arctan2(transform_sensor_to_base[1, 0], transform_sensor_to_base[0, 0])
+    return Scans(spec, times_s, angles, readings(true, spec, rng), origins, sensor_yaw)
+
+
+def readings(true_m: FloatArray, spec: LidarSpec, rng: np.random.Generator) -> FloatArray:
+    """What the sensor reports for true ranges: noise, clipping, resolution, +-inf."""
+    low = spec.min_range_m if spec.min_range_m is not None else 0.0
+    high = spec.max_range_m if spec.max_range_m is not None else np.inf
+    noisy = noise.apply(true_m, spec.noise, rng)
+    with np.errstate(invalid="ignore"):
+        values = np.clip(noisy, low, high)
+        if spec.range_resolution_m:
+            values = np.round(values / spec.range_resolution_m) * spec.range_resolution_m
+            values = np.clip(values, low, high)
+    values = np.where(true_m > high, np.inf, values)
+    return np.where(true_m < low, -np.inf, values)

@@ -1,0 +1,104 @@
+"""What a run comes to: distance, final poses, odometry drift, contacts, clearance, counts.
+
+The summary is what ``summary.json`` holds and ``--format json`` prints (keys documented in
+README.md). It carries no wall-clock time, so the same seed gives the same bytes.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from servicebot_cli.simulate.bag.ros_messages import Stream
+from servicebot_cli.simulate.simulator import SimResult
+
+
+def _pose(x: float, y: float, yaw: float) -> dict[str, float]:
+    return {"x_m": float(x), "y_m": float(y), "yaw_rad": float(math.remainder(yaw, math.tau))}
+
+
+def odometry_in_world(result: SimResult) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The odometry estimate moved into the world frame (odom starts at the initial pose)."""
+    start, odom = result.scenario.initial_pose, result.odometry
+    c, s = math.cos(start.yaw_rad), math.sin(start.yaw_rad)
+    return (start.x_m + c * odom.x_m - s * odom.y_m, start.y_m + s * odom.x_m + c * odom.y_m,
+            start.yaw_rad + odom.yaw_rad)
+
+
+def summarize(result: SimResult, streams: list[Stream]) -> dict[str, Any]:
+    """The run's summary as plain JSON-ready values."""
+    truth = result.truth
+    distance = float(np.sum(np.hypot(np.diff(truth.x_m), np.diff(truth.y_m))))
+    ox, oy, oyaw = odometry_in_world(result)
+    from servicebot_cli.simulate.world.motion import pose_at
+
+    tx, ty, tyaw = pose_at(truth, result.odometry.times_s)
+    drift = np.hypot(ox - tx, oy - ty)
+    closest = result.closest
+    return {
+        "robot": result.body.robot.name,
+        "scenario": result.scenario.name,
+        "seed": result.seed,
+        "duration_s": result.scenario.duration_s,
+        "distance_m": distance,
+        "final_pose": _pose(truth.x_m[-1], truth.y_m[-1], truth.yaw_rad[-1]),
+        "odometry_final_pose": _pose(ox[-1], oy[-1], oyaw[-1]) if len(ox) else None,
+        "odometry_drift": {
+            "final_position_m": float(drift[-1]) if len(drift) else 0.0,
+            "max_position_m": float(drift.max()) if len(drift) else 0.0,
+            "final_yaw_rad": float(abs(math.remainder(oyaw[-1] - tyaw[-1], math.tau)))
+            if len(drift) else 0.0,
+        },
+        "collisions": [{"time_s": c.time_s, "obstacle": c.obstacle,
+                        **_pose(c.x_m, c.y_m, c.yaw_rad)} for c in result.contacts],
+        "min_obstacle_distance_m": 0.0 if result.contacts else closest.distance_m,
+        "closest_obstacle": result.solids[closest.solid].name if closest.solid >= 0 else None,
+        "closest_time_s": closest.index * truth.dt_s if closest.index >= 0 else None,
+        "arm_final_positions_rad": dict(zip(result.body.arm_joints,
+                                            result.arm_positions_rad[-1].tolist(), strict=True)),
+        "end_effector": end_effector(result),
+        "messages": {s.topic: len(s.payloads) for s in streams},
+    }
+
+
+def end_effector(result: SimResult) -> dict[str, Any] | None:
+    """World position of the arm's last frame in the final configuration of the whole robot.
+
+    One Pinocchio configuration holds the planar base (x, y, cos, sin of yaw), every wheel
+    and every arm joint.
+    """
+    import pinocchio as pin
+
+    body = result.body
+    tip = _arm_tip(body)
+    if tip is None:
+        return None
+    model, space = body.model, body.joint_space
+    q = space.to_q(result.joints.positions[-1] if len(result.joints.times_s)
+                   else np.zeros(len(space.names)))
+    yaw = result.truth.yaw_rad[-1]
+    q[:4] = (result.truth.x_m[-1], result.truth.y_m[-1], math.cos(yaw), math.sin(yaw))
+    data = model.createData()
+    pin.framesForwardKinematics(model, data, q)
+    # Pinocchio's data.oMf[i] is transform_frame_to_world; the floor is base_height_m below.
+    position = np.array(data.oMf[model.getFrameId(tip)].translation)
+    position[2] += body.base_height_m
+    return {"frame": tip, "position_m": position.tolist()}
+
+
+def _arm_tip(body: Any) -> str | None:
+    """The first link below the arm joints that is no joint's parent (the end effector)."""
+    robot = body.robot
+    below = {robot.joint(n).child for n in body.arm_joints}
+    changed = True
+    while changed:
+        changed = False
+        for joint in robot.joints:
+            if joint.parent in below and joint.child not in below:
+                below.add(joint.child)
+                changed = True
+    parents = {j.parent for j in robot.joints}
+    leaves = [link.name for link in robot.links if link.name in below and link.name not in parents]
+    return leaves[0] if leaves else None

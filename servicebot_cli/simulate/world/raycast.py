@@ -1,0 +1,100 @@
+r"""Rays against boxes, cylinders, the floor and meshes, all rays of a batch at once.
+
+A ray :math:`o + t d` (unit :math:`d`) is moved into each solid's frame and intersected in
+closed form: the slab method for boxes, a quadratic and two caps for cylinders, one division
+for the floor (z = 0). Meshes go to trimesh (Embree when ``embreex`` is installed). The result
+is the distance to the nearest surface the ray enters, inf where it hits nothing.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.simulate.world.solids import Solid
+
+FloatArray = npt.NDArray[np.float64]
+
+
+def cast(origins: FloatArray, directions: FloatArray, solids: Sequence[Solid], *,
+         floor: bool = True, meshes: Sequence[Any] = ()) -> FloatArray:
+    """Distance along each ray to the first surface it enters [m].
+
+    Args:
+        origins: Ray origins, shape (N, 3).
+        directions: Unit directions, shape (N, 3).
+        solids: Boxes and cylinders.
+        floor: Include the plane z = 0.
+        meshes: trimesh.Trimesh objects, in the same frame.
+
+    Returns:
+        Distances, shape (N,); inf where a ray hits nothing.
+    """
+    # Components as separate contiguous arrays: numpy is several times faster on those
+    # than on reductions along a short last axis.
+    o = [np.ascontiguousarray(origins[:, i]) for i in range(3)]
+    d = [np.ascontiguousarray(directions[:, i]) for i in range(3)]
+    level = bool(np.all(d[2] == 0.0))
+    best = np.full(len(directions), np.inf)
+    if floor and not level:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = -o[2] / d[2]
+        np.minimum(best, np.where((d[2] < 0) & (t >= 0), t, np.inf), out=best)
+    for solid in solids:
+        low, high = solid.z_range_m
+        if level and not np.any((o[2] >= low) & (o[2] <= high)):
+            continue  # a horizontal scan that passes above or below the solid
+        rot = solid.rotation
+        ol = [sum((o[j] - solid.center_m[j]) * rot[j, i] for j in range(3)) for i in range(3)]
+        dl = [sum(d[j] * rot[j, i] for j in range(3) if rot[j, i] != 0.0) for i in range(3)]
+        dl = [x if isinstance(x, np.ndarray) else np.zeros_like(best) for x in dl]
+        hit = _box(ol, dl, solid.half_m) if solid.kind == "box" else _cylinder(ol, dl, solid.half_m)
+        np.minimum(best, hit, out=best)
+    for mesh in meshes:
+        np.minimum(best, mesh_distances(mesh, origins, directions), out=best)
+    return best
+
+
+def _box(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
+    """Slab method: entry distance into an axis-aligned box centred at the origin."""
+    near = far = None
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for i in range(3):
+            inv = 1.0 / d[i]
+            t1, t2 = (-half[i] - o[i]) * inv, (half[i] - o[i]) * inv
+            lo, hi = np.fmin(t1, t2), np.fmax(t1, t2)
+            near = lo if near is None else np.fmax(near, lo, out=near)
+            far = hi if far is None else np.fmin(far, hi, out=far)
+    return np.where((near <= far) & (near >= 0.0), near, np.inf)
+
+
+def _cylinder(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
+    """Entry distance into a cylinder of radius ``half[0]`` and half length ``half[2]``."""
+    radius, half_length = half[0], half[2]
+    a = d[0] * d[0] + d[1] * d[1]
+    b = o[0] * d[0] + o[1] * d[1]
+    c = o[0] * o[0] + o[1] * o[1] - radius**2
+    disc = b * b - a * c
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t_side = (-b - np.sqrt(np.maximum(disc, 0.0))) / a
+        z = o[2] + t_side * d[2]
+        side = np.where((disc >= 0) & (a > 0) & (t_side >= 0) & (np.abs(z) <= half_length),
+                        t_side, np.inf)
+        t_cap = (-np.sign(d[2]) * half_length - o[2]) / d[2]
+        px, py = o[0] + t_cap * d[0], o[1] + t_cap * d[1]
+        cap = np.where((t_cap >= 0) & (px * px + py * py <= radius**2), t_cap, np.inf)
+    return np.fmin(side, cap)
+
+
+def mesh_distances(mesh: Any, origins: FloatArray, directions: FloatArray) -> FloatArray:
+    """First hit on a trimesh mesh per ray."""
+    out = np.full(len(directions), np.inf)
+    locations, index_ray, _ = mesh.ray.intersects_location(
+        np.ascontiguousarray(origins), np.ascontiguousarray(directions), multiple_hits=False)
+    if len(index_ray):
+        distance = np.einsum("ij,ij->i", locations - origins[index_ray], directions[index_ray])
+        np.minimum.at(out, index_ray, distance)
+    return out
