@@ -8,6 +8,7 @@ import only Click and light helpers at the top, so ``--help`` and shell completi
 from __future__ import annotations
 
 import sys
+import traceback
 from typing import Any, NoReturn
 
 import click
@@ -22,6 +23,7 @@ from servicebot_cli.commands.ik import ik
 from servicebot_cli.commands.inspect import inspect
 from servicebot_cli.commands.simulate import simulate
 from servicebot_cli.common.errors import ExitCode, ServicebotError
+from servicebot_cli.common.signals import EndedBySignal, signals_as_exceptions
 
 
 class OneLineUsageError(click.ClickException):
@@ -53,38 +55,45 @@ class ServicebotGroup(click.Group):
             raise OneLineUsageError(exc) from None
 
     def invoke(self, ctx: click.Context) -> Any:
-        """Run the subcommand; turn our errors and unexpected ones into exit codes."""
+        """Run the subcommand; turn our errors and unexpected ones into exit codes.
+
+        ``--debug`` adds the traceback on stderr and keeps the documented exit code.
+        """
+        debug = bool(ctx.params.get("debug"))
         try:
-            return super().invoke(ctx)
+            with signals_as_exceptions():
+                return super().invoke(ctx)
         except click.exceptions.NoArgsIsHelpError:
             raise
         except click.UsageError as exc:
             path = " ".join(filter(None, [ctx.command_path, ctx.invoked_subcommand]))
             raise OneLineUsageError(exc, path) from None
         except ServicebotError as exc:
-            if ctx.params.get("debug"):
-                raise
-            _fail(ctx, str(exc), exc.exit_code)
+            _fail(ctx, str(exc), exc.exit_code, debug)
         except (click.exceptions.Exit, click.ClickException, click.Abort):
             raise
         except BrokenPipeError:
             sys.stderr.close()  # the reader went away (| head): nothing left to say
             ctx.exit(ExitCode.OK)
         except KeyboardInterrupt:
-            _fail(ctx, "interrupted", ExitCode.INTERRUPTED)
+            _fail(ctx, "interrupted", ExitCode.INTERRUPTED, debug)
+        except EndedBySignal as exc:
+            _fail(ctx, exc.description, exc.exit_code, debug)
         except Exception as exc:
-            if ctx.params.get("debug"):
-                raise
             _fail(
                 ctx,
                 f"internal error: {type(exc).__name__}: {exc}. This is a bug in servicebot; "
                 "rerun with --debug for the traceback and report it",
-                ExitCode.INTERNAL,
+                ExitCode.INTERNAL, debug,
             )
 
 
-def _fail(ctx: click.Context, message: str, code: int) -> NoReturn:
-    click.echo(f"Error: {' '.join(message.split())}", err=True)
+def _fail(ctx: click.Context, message: str, code: int, debug: bool) -> NoReturn:
+    """One ``Error:`` line (none for an empty message), the traceback with --debug, the code."""
+    if debug:
+        traceback.print_exc(file=sys.stderr)
+    if message.strip():
+        click.echo(f"Error: {' '.join(message.split())}", err=True)
     ctx.exit(code)
 
 
@@ -101,7 +110,8 @@ def main(debug: bool) -> None:
     \b
     Exit codes: 0 ok, 1 the answer is no (findings, a difference, no IK solution),
     2 bad input, 3 internal error, 4 serial link error, 5 serial link lost,
-    130 interrupted (Ctrl-C), 143 terminated (SIGTERM).
+    129 hung up (SIGHUP), 130 interrupted (Ctrl-C), 131 quit (SIGQUIT),
+    143 terminated (SIGTERM). --debug adds the traceback and keeps the code.
     """
 
 

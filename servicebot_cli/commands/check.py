@@ -12,12 +12,13 @@ from typing import Any
 import click
 
 from servicebot_cli.commands.check_options import catalogue_options, report_options
+from servicebot_cli.commands.command import Command, Group
 from servicebot_cli.commands.options import BundledRobot, PackageDir, RobotArgs, robot_arguments
 
 _GROUP_ONLY = ("-h", "--help", "--list-rules", "--explain")
 
 
-class CheckGroup(click.Group):
+class CheckGroup(Group):
     """``check`` whose first argument, when not a subcommand, is the start of ``check urdf``."""
 
     def parse_args(self, ctx: click.Context, args: list[str]) -> list[str]:
@@ -55,7 +56,7 @@ def check() -> None:
     """
 
 
-@check.command("urdf")
+@check.command("urdf", cls=Command)
 @robot_arguments(multiple=True)
 @report_options
 @catalogue_options
@@ -75,7 +76,7 @@ def urdf(robot_args: RobotArgs, **report: Any) -> None:
     check_run.emit(result, report["fmt"], report["output"])
 
 
-@check.command("controllers")
+@check.command("controllers", cls=Command)
 @click.argument("values", nargs=-1, metavar="[YAML] [NAME:=VALUE]...")
 @click.option("--urdf", "urdfs", multiple=True, type=click.Path(dir_okay=False),
               help="Check against this URDF or xacro (repeatable; default: both bundled robots).")

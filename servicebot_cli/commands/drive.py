@@ -8,6 +8,7 @@ from typing import Any
 
 import click
 
+from servicebot_cli.commands.command import Command
 from servicebot_cli.commands.options import JointValue, RobotArgs, format_option, robot_arguments
 from servicebot_cli.commands.serial_options import (
     Number,
@@ -16,7 +17,7 @@ from servicebot_cli.commands.serial_options import (
 )
 
 
-@click.command()
+@click.command(cls=Command)
 @robot_arguments(default="real")
 @click.option("--port", metavar="PATH",
               help="Serial device (default: the description's ros2_control port, "

@@ -10,6 +10,7 @@ from typing import Any
 
 import click
 
+from servicebot_cli.commands.command import Command
 from servicebot_cli.commands.options import RobotArgs, robot_arguments
 from servicebot_cli.commands.serial_options import (
     Number,
@@ -18,7 +19,7 @@ from servicebot_cli.commands.serial_options import (
 )
 
 
-@click.command()
+@click.command(cls=Command)
 @robot_arguments(default="real")
 @serial_options
 @click.option("--pace", is_flag=True,

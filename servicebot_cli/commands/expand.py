@@ -4,10 +4,11 @@ from __future__ import annotations
 
 import click
 
+from servicebot_cli.commands.command import Command
 from servicebot_cli.commands.options import RobotArgs, robot_arguments
 
 
-@click.command()
+@click.command(cls=Command)
 @robot_arguments()
 @click.option("-o", "--output", type=click.Path(dir_okay=False, allow_dash=True), default="-",
               help="Write the URDF here (atomically) instead of to stdout.")

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import click
 
+from servicebot_cli.commands.command import Command
 from servicebot_cli.commands.kinematics_options import (
     batch_options,
     clamp_option,
@@ -13,7 +14,7 @@ from servicebot_cli.commands.kinematics_options import (
 from servicebot_cli.commands.options import JointValue, RobotArgs, format_option, robot_arguments
 
 
-@click.command()
+@click.command(cls=Command)
 @robot_arguments()
 @click.option("-j", "--joint", "joints", type=JointValue(), multiple=True, metavar="NAME=VALUE",
               help="A joint's value [rad, or deg with --deg; m for prismatic joints] "

@@ -4,25 +4,32 @@ from __future__ import annotations
 
 import click
 
+from servicebot_cli.commands.command import Command
 from servicebot_cli.commands.kinematics_options import (
     batch_options,
     clamp_option,
     deg_option,
     pick_frame,
 )
-from servicebot_cli.commands.options import JointValue, RobotArgs, format_option, robot_arguments
+from servicebot_cli.commands.options import (
+    JointValue,
+    Number,
+    RobotArgs,
+    format_option,
+    robot_arguments,
+)
 
 
-@click.command()
+@click.command(cls=Command)
 @robot_arguments()
 @click.option("-f", "--frame", metavar="FRAME", default=None,
               help="The frame to move (default: the arm's tool frame).")
-@click.option("--position", nargs=3, type=float, metavar="X Y Z", default=None,
+@click.option("--position", nargs=3, type=Number("M"), metavar="X Y Z", default=None,
               help="Target position [m] in the root link's frame (with --with-base: the "
               "frame where the root link stands now).")
-@click.option("--rpy", nargs=3, type=float, metavar="R P Y", default=None,
+@click.option("--rpy", nargs=3, type=Number("ANGLE"), metavar="R P Y", default=None,
               help="Target roll, pitch, yaw [rad, or deg with --deg] (URDF convention).")
-@click.option("--quat", nargs=3 + 1, type=float, metavar="X Y Z W", default=None,
+@click.option("--quat", nargs=3 + 1, type=Number(), metavar="X Y Z W", default=None,
               help="Target orientation as a quaternion (normalised for you).")
 @click.option("--orientation-axes", metavar="AXES", default=None,
               help="Which angles matter: all (default with --rpy/--quat), none, or a comma "
@@ -35,9 +42,9 @@ from servicebot_cli.commands.options import JointValue, RobotArgs, format_option
 @click.option("--with-base", is_flag=True,
               help="Also move the mobile base (planar x, y, yaw): say where the robot should "
               "stand. It stays put when the arm alone reaches.")
-@click.option("--tol-m", type=click.FloatRange(min=0, min_open=True), default=1e-6, metavar="M",
+@click.option("--tol-m", type=Number("M", positive=True), default=1e-6, metavar="M",
               show_default=True, help="Accepted position error [m].")
-@click.option("--tol-rad", type=click.FloatRange(min=0, min_open=True), default=1e-6,
+@click.option("--tol-rad", type=Number("RAD", positive=True), default=1e-6,
               metavar="RAD",
               show_default=True, help="Accepted orientation error [rad].")
 @click.option("--max-attempts", type=click.IntRange(min=1), default=100, show_default=True,

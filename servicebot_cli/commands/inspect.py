@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
+from servicebot_cli.commands.command import Command
 from servicebot_cli.commands.options import JointValue, RobotArgs, robot_arguments
 from servicebot_cli.common.errors import ExitCode
 from servicebot_cli.inspect import SECTIONS
@@ -21,7 +22,7 @@ FORMATS = ("text", "json", "markdown", "dot", "mermaid")
 VIEWS = ("iso", "front", "side", "top")
 
 
-@click.command()
+@click.command(cls=Command)
 @robot_arguments()
 @click.option("--section", "sections", multiple=True, type=click.Choice(SECTIONS),
               metavar="NAME", help=f"Show only this part (repeatable): {', '.join(SECTIONS)}.")

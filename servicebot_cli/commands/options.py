@@ -9,6 +9,8 @@ Validation happens here, at the parsing edge, so commands receive clean values.
 from __future__ import annotations
 
 import functools
+import math
+import os
 import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -16,6 +18,7 @@ from pathlib import Path
 from typing import Any, TypeVar
 
 import click
+from click.core import ParameterSource
 from click.shell_completion import CompletionItem
 
 from servicebot_cli.description.resources import BUNDLED_ROBOTS, DEFAULT_ROBOT
@@ -102,11 +105,19 @@ class RobotArgs:
 
 
 def split_robot_args(values: Sequence[str]) -> tuple[tuple[str, ...], tuple[tuple[str, str], ...]]:
-    """Split positional values into files and ``name:=value`` xacro arguments."""
-    files, xacro_args = [], []
+    """Split positional values into files and ``name:=value`` xacro arguments.
+
+    Raises:
+        click.BadParameter: A malformed argument, or one name given twice for one file.
+    """
+    files: list[str] = []
+    xacro_args: list[tuple[str, str]] = []
+    group: list[tuple[str, str]] = []  # the arguments after the latest file
     for value in values:
         match = _XACRO_ARG_RE.match(value)
         if match:
+            group.append((match.group(1), match.group(2)))
+            _refuse_repeated_xacro_args(group)
             xacro_args.append((match.group(1), match.group(2)))
         elif ":=" in value:
             raise click.BadParameter(
@@ -115,7 +126,126 @@ def split_robot_args(values: Sequence[str]) -> tuple[tuple[str, ...], tuple[tupl
             )
         else:
             files.append(value)
+            group = []
     return tuple(files), tuple(xacro_args)
+
+
+def _refuse_repeated_xacro_args(xacro_args: Sequence[tuple[str, str]]) -> None:
+    """Raise when one xacro argument is given twice: xacro would keep the last silently."""
+    seen: dict[str, str] = {}
+    for name, value in xacro_args:
+        if name in seen:
+            raise click.BadParameter(
+                f"{name}:= given twice ({name}:={seen[name]} and {name}:={value}); give it once",
+                param_hint="xacro argument")
+        seen[name] = value
+
+
+class Number(click.ParamType):
+    """A finite number, optionally bounded. NaN and infinities are always refused.
+
+    Every numeric option of every command uses this type (a test walks them all), so
+    ``--tol-m nan`` or ``--duration-s inf`` is one clear line and exit 2, never a wrong run.
+    """
+
+    name = "number"
+
+    def __init__(self, unit: str = "", *, positive: bool = False, fraction: bool = False,
+                 non_negative: bool = False, maximum: float | None = None) -> None:
+        self.unit, self.positive, self.fraction = unit, positive, fraction
+        self.non_negative, self.maximum = non_negative, maximum
+        self.name = unit or "number"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+                ) -> float:
+        """Parse and check the number."""
+        if isinstance(value, float):
+            number = value
+        else:
+            try:
+                number = float(value)
+            except (TypeError, ValueError):
+                self.fail(f"'{value}' is not a number", param, ctx)
+        if not math.isfinite(number):
+            self.fail(f"'{value}' is not a finite number", param, ctx)
+        if self.positive and number <= 0:
+            self.fail(f"{value} must be above 0", param, ctx)
+        if self.non_negative and number < 0:
+            self.fail(f"{value} must not be negative", param, ctx)
+        if self.fraction and not 0 <= number <= 1:
+            self.fail(f"{value} is a probability: give a number from 0 to 1", param, ctx)
+        if self.maximum is not None and number > self.maximum:
+            self.fail(f"{value} is above the maximum {self.maximum:g}", param, ctx)
+        return number
+
+
+class OutputPath(click.ParamType):
+    """A file or directory the command will write, checked before any work is done.
+
+    The extension must be one the writer produces; the directory it goes in must exist and
+    be writable; a directory output (``--out``) must not be a file, and with ``fresh`` must
+    not exist yet (it is renamed into place at the end). Nothing is created here.
+    """
+
+    def __init__(self, suffixes: Sequence[str] = (), *, directory: bool = False,
+                 fresh: bool = False, allow_dash: bool = False, what: str = "") -> None:
+        self.suffixes = tuple(s.lower() for s in suffixes)
+        self.directory, self.fresh, self.allow_dash = directory, fresh, allow_dash
+        self.what = what
+        self.name = "DIR" if directory else "FILE" + (self.suffixes[0] if self.suffixes else "")
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+                ) -> str:
+        """Check ``value`` as an output path; return it unchanged."""
+        text = os.fspath(value)
+        if self.allow_dash and text == "-":
+            return text
+        path = Path(text)
+        if not text.strip():
+            self.fail("an empty path; give a file name", param, ctx)
+        if self.suffixes and not any(text.lower().endswith(s) for s in self.suffixes):
+            what = f"{self.what} " if self.what else ""
+            self.fail(f"'{text}': {what}files end in {' or '.join(self.suffixes)}; "
+                      f"name it e.g. '{path.stem or 'out'}{self.suffixes[0]}'", param, ctx)
+        if self.directory and path.exists() and not path.is_dir():
+            self.fail(f"'{text}' is a file; give a directory", param, ctx)
+        if not self.directory and path.is_dir():
+            self.fail(f"'{text}' is a directory; give a file name", param, ctx)
+        if self.fresh and path.exists():
+            self.fail(f"'{text}' already exists; remove it or give another path", param, ctx)
+        target = path if self.directory and path.is_dir() else path.parent
+        parent = target if str(target) else Path(".")
+        if not parent.is_dir():
+            self.fail(f"'{text}': directory '{parent}' does not exist; create it first",
+                      param, ctx)
+        if not os.access(parent, os.W_OK | os.X_OK):
+            self.fail(f"'{text}': permission denied writing in '{parent}'", param, ctx)
+        return text
+
+
+def given(ctx: click.Context, name: str) -> bool:
+    """Whether the user gave parameter ``name`` (on the command line or in the environment)."""
+    return ctx.get_parameter_source(name) in (ParameterSource.COMMANDLINE,
+                                              ParameterSource.ENVIRONMENT)
+
+
+def refuse_without(ctx: click.Context, option: str, needs: str, *, name: str | None = None,
+                   present: bool = False) -> None:
+    """Refuse ``option`` when the option it needs is absent: it would have no effect.
+
+    Args:
+        ctx: The command's context.
+        option: The flag as the user types it, e.g. ``"--view"``.
+        needs: What it needs, as the user types it, e.g. ``"--render FILE.png"``.
+        name: The parameter's name in ``ctx.params`` (default: from ``option``).
+        present: Whether what it needs was given.
+
+    Raises:
+        click.UsageError: ``option`` was given and ``present`` is false.
+    """
+    if given(ctx, name or option.lstrip("-").replace("-", "_")) and not present:
+        raise click.UsageError(f"{option} has no effect without {needs}; add {needs} or "
+                               f"drop {option}", ctx=ctx)
 
 
 class BundledRobot(click.ParamType):

@@ -5,45 +5,14 @@ Light: Click only. Validation happens here, at the parsing edge.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from typing import Any, TypeVar
 
 import click
 
+from servicebot_cli.commands.options import Number
+
 F = TypeVar("F", bound=Callable[..., Any])
-
-
-class Number(click.ParamType):
-    """A finite float, optionally above a minimum or within [0, 1]."""
-
-    name = "number"
-
-    def __init__(self, unit: str = "", *, positive: bool = False, fraction: bool = False,
-                 non_negative: bool = False) -> None:
-        self.unit, self.positive, self.fraction = unit, positive, fraction
-        self.non_negative = non_negative
-        self.name = unit or "number"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
-                ) -> float:
-        """Parse and check the number."""
-        if isinstance(value, float):
-            number = value
-        else:
-            try:
-                number = float(value)
-            except (TypeError, ValueError):
-                self.fail(f"'{value}' is not a number", param, ctx)
-        if not math.isfinite(number):
-            self.fail(f"'{value}' is not a finite number", param, ctx)
-        if self.positive and number <= 0:
-            self.fail(f"{value} must be above 0", param, ctx)
-        if self.non_negative and number < 0:
-            self.fail(f"{value} must not be negative", param, ctx)
-        if self.fraction and not 0 <= number <= 1:
-            self.fail(f"{value} is a probability: give a number from 0 to 1", param, ctx)
-        return number
 
 
 def serial_options(f: F) -> F:

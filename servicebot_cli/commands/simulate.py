@@ -7,11 +7,12 @@ from pathlib import Path
 
 import click
 
-from servicebot_cli.commands.options import RobotArgs, format_option, robot_arguments
+from servicebot_cli.commands.command import Command
+from servicebot_cli.commands.options import Number, RobotArgs, format_option, robot_arguments
 from servicebot_cli.common.errors import ServicebotError
 
 
-@click.command()
+@click.command(cls=Command)
 @robot_arguments()
 @click.option("-s", "--scenario", "scenario_file", type=click.Path(dir_okay=False),
               help="Scenario file, YAML or JSON (default: the built-in loop in a room).")
@@ -20,21 +21,22 @@ from servicebot_cli.common.errors import ServicebotError
               help="Write one CSV per stream and summary.json into this directory.")
 @click.option("--bag", type=click.Path(), help="Write a ROS 2 bag (MCAP storage) directory.")
 @click.option("--plot", type=click.Path(dir_okay=False), help="Save a picture of the run (PNG).")
-@click.option("--seed", type=int, default=0, show_default=True, help="Seed of all sensor noise.")
-@click.option("--duration-s", type=click.FloatRange(min=0, min_open=True, max=86400),
+@click.option("--seed", type=click.IntRange(min=0, max=2**63 - 1), default=0, show_default=True,
+              help="Seed of all sensor noise.")
+@click.option("--duration-s", type=Number("S", positive=True, maximum=86400),
               help="Simulated time [s], instead of the scenario's.")
-@click.option("--wheel-separation-multiplier", type=click.FloatRange(min=0, min_open=True),
+@click.option("--wheel-separation-multiplier", type=Number(positive=True),
               help="diff_drive_controller's wheel_separation_multiplier.")
 @click.option("--saturation", type=click.Choice(["keep-curvature", "per-wheel"]),
               help="Wheel speed limits: scale both sides (keep the curvature) or clip each "
               "wheel alone as Gazebo does.  [scenario default: keep-curvature]")
-@click.option("--cmd-vel-timeout-s", type=click.FloatRange(min=0, min_open=True),
+@click.option("--cmd-vel-timeout-s", type=Number("S", positive=True),
               help="Commands older than this ramp to zero.  [scenario default: 0.5]")
-@click.option("--max-linear-acceleration", "max_linear", type=click.FloatRange(min=0,
-              min_open=True), help="Acceleration limit [m/s^2].  [default: none]")
-@click.option("--max-angular-acceleration", "max_angular", type=click.FloatRange(min=0,
-              min_open=True), help="Angular acceleration limit [rad/s^2].  [default: none]")
-@click.option("--speed", type=click.FloatRange(min=0, min_open=True), default=1.0,
+@click.option("--max-linear-acceleration", "max_linear", type=Number("M_S2", positive=True),
+              help="Acceleration limit [m/s^2].  [default: none]")
+@click.option("--max-angular-acceleration", "max_angular", type=Number("RAD_S2", positive=True),
+              help="Angular acceleration limit [rad/s^2].  [default: none]")
+@click.option("--speed", type=Number(positive=True), default=1.0,
               show_default=True, help="Playback speed of the live window.")
 @click.option("--progress/--no-progress", default=None,
               help="Progress bar on stderr  [default: on a terminal, outside CI].")

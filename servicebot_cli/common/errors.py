@@ -20,7 +20,9 @@ class ExitCode(IntEnum):
     INTERNAL = 3  # a bug in servicebot; the message says how to get the traceback
     LINK = 4  # the serial link cannot be opened or the firmware does not answer as expected
     LINK_LOST = 5  # the link went silent mid-run; motors were told to stop
+    HANGUP = 129  # SIGHUP (128 + SIGHUP): the terminal closed; motors stopped, files cleaned
     INTERRUPTED = 130  # Ctrl-C (128 + SIGINT), after any motors were stopped
+    QUIT = 131  # SIGQUIT (128 + SIGQUIT), after any motors were stopped
     TERMINATED = 143  # SIGTERM (128 + SIGTERM), after any motors were stopped
 
 
@@ -31,6 +33,16 @@ class ServicebotError(Exception):
     """
 
     exit_code: ExitCode = ExitCode.USAGE
+
+
+class AnswerIsNo(ServicebotError):
+    """The command ran and its answer is "no": findings, a difference, a target not reached.
+
+    Every command says "no" this way (exit 1). The result is already on stdout; the message,
+    when there is one, is the one line on stderr that says why.
+    """
+
+    exit_code = ExitCode.FAILED
 
 
 class DescriptionError(ServicebotError):

@@ -81,8 +81,8 @@ def test_dry_run_of_the_arduino_protocol(run):
     (("--rate", "2"), ("too slow to keep the firmware's watchdog fed",)),
     (("--rate", "20", "--link-timeout", "0.05"), ("shorter than two command periods",)),
     (("--rate", "abc"), ("'abc' is not a number",)),
-    (("--linear", "inf"), ("not a finite number",)),
-    (("--duration", "-1"), ("must be above 0",)),
+    (("--angular", "inf"), ("not a finite number",)),
+    (("--rate", "-1"), ("must be above 0",)),
 ])
 def test_bad_numbers(run, args, needles):
     base = ("--linear", "0.02", "--duration", "1")

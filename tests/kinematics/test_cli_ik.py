@@ -107,7 +107,7 @@ def test_the_seed_is_where_the_answer_starts(run):
 @pytest.mark.parametrize(("args", "needles"), [
     ([], ["give a target: --position X Y Z, or a --targets file"]),
     (["--position", "1", "2"], ["requires 3 arguments"]),
-    (["--position", "1", "x", "3"], ["'x' is not a valid float"]),
+    (["--position", "1", "x", "3"], ["'x' is not a number"]),
     (["--position", "1", "nan", "3"], ["not a finite number"]),
     (["--position", "0.5", "0", "0.5", "--rpy", "0", "0", "0", "--quat", "0", "0", "0", "1"],
      ["--rpy or --quat, not both"]),
