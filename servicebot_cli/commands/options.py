@@ -15,13 +15,17 @@ import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
 from click.core import ParameterSource
 from click.shell_completion import CompletionItem
 
 from servicebot_cli.description.resources import BUNDLED_ROBOTS, DEFAULT_ROBOT
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.loader import RobotSource
+    from servicebot_cli.description.robot import RobotDescription
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -49,7 +53,7 @@ class RobotArgs:
     values: tuple[str, ...] = ()
     default: str = DEFAULT_ROBOT
 
-    def source(self) -> Any:
+    def source(self) -> RobotSource:
         """The one RobotSource these arguments name (:attr:`default` when none is named).
 
         Raises:
@@ -75,7 +79,7 @@ class RobotArgs:
             )
         return bundled
 
-    def sources(self) -> list[Any]:
+    def sources(self) -> list[RobotSource]:
         """Every RobotSource named, in order; empty when none is named.
 
         ``--robot`` comes first, then each file with the xacro arguments that follow it:
@@ -141,7 +145,7 @@ def _refuse_repeated_xacro_args(xacro_args: Sequence[tuple[str, str]]) -> None:
         seen[name] = value
 
 
-class Number(click.ParamType):
+class Number(click.ParamType[float]):
     """A finite number, optionally bounded. NaN and infinities are always refused.
 
     Every numeric option of every command uses this type (a test walks them all), so
@@ -156,7 +160,7 @@ class Number(click.ParamType):
         self.non_negative, self.maximum = non_negative, maximum
         self.name = unit or "number"
 
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+    def convert(self, value: str | float, param: click.Parameter | None, ctx: click.Context | None
                 ) -> float:
         """Parse and check the number."""
         if isinstance(value, float):
@@ -179,7 +183,7 @@ class Number(click.ParamType):
         return number
 
 
-class OutputPath(click.ParamType):
+class OutputPath(click.ParamType[str]):
     """A file or directory the command will write, checked before any work is done.
 
     The extension must be one the writer produces; the directory it goes in must exist and
@@ -194,8 +198,8 @@ class OutputPath(click.ParamType):
         self.what = what
         self.name = "DIR" if directory else "FILE" + (self.suffixes[0] if self.suffixes else "")
 
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
-                ) -> str:
+    def convert(self, value: str | os.PathLike[str], param: click.Parameter | None,
+                ctx: click.Context | None) -> str:
         """Check ``value`` as an output path; return it unchanged."""
         text = os.fspath(value)
         if self.allow_dash and text == "-":
@@ -248,12 +252,13 @@ def refuse_without(ctx: click.Context, option: str, needs: str, *, name: str | N
                                f"drop {option}", ctx=ctx)
 
 
-class BundledRobot(click.ParamType):
+class BundledRobot(click.ParamType[str]):
     """A bundled robot name (``sim``, ``real``); completes the names."""
 
     name = "robot"
 
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> str:
+    def convert(self, value: str, param: click.Parameter | None, ctx: click.Context | None
+                ) -> str:
         """Accept a bundled robot name."""
         if value in BUNDLED_ROBOTS:
             return str(value)
@@ -267,13 +272,12 @@ class BundledRobot(click.ParamType):
         return [CompletionItem(n) for n in BUNDLED_ROBOTS if n.startswith(incomplete)]
 
 
-class PackageDir(click.ParamType):
+class PackageDir(click.ParamType[tuple[str, str]]):
     """``NAME=DIR``: where a ROS package lives, for ``$(find NAME)`` and ``package://NAME``."""
 
     name = "NAME=DIR"
 
-    def convert(
-        self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+    def convert(self, value: str | float, param: click.Parameter | None, ctx: click.Context | None
     ) -> tuple[str, str]:
         """Split and check ``NAME=DIR``."""
         if isinstance(value, tuple):
@@ -287,7 +291,7 @@ class PackageDir(click.ParamType):
         return name, directory
 
 
-class RobotArgument(click.ParamType):
+class RobotArgument(click.ParamType[str]):
     """A robot file or a xacro ``NAME:=VALUE``; completes file names."""
 
     name = "FILE|NAME:=VALUE"
@@ -337,13 +341,12 @@ def robot_arguments(multiple: bool = False, default: str = DEFAULT_ROBOT) -> Cal
     return decorate
 
 
-class JointValue(click.ParamType):
+class JointValue(click.ParamType[tuple[str, float]]):
     """``NAME=VALUE``: a joint and its position (a number; [rad] or [m], or [deg] with --deg)."""
 
     name = "NAME=VALUE"
 
-    def convert(
-        self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+    def convert(self, value: str | float, param: click.Parameter | None, ctx: click.Context | None
     ) -> tuple[str, float]:
         """Split and check ``NAME=VALUE``."""
         if isinstance(value, tuple):
@@ -359,6 +362,88 @@ class JointValue(click.ParamType):
         if number != number or number in (float("inf"), float("-inf")):
             self.fail(f"'{text}' for joint '{name}' is not a finite number", param, ctx)
         return name, number
+
+
+    def shell_complete(
+        self, ctx: click.Context, param: click.Parameter, incomplete: str
+    ) -> list[CompletionItem]:
+        """Complete ``NAME=`` with the movable joints of the robot on the command line."""
+        if "=" in incomplete:
+            return []
+        robot = robot_for_completion(ctx)
+        names = [j.name for j in robot.joints if j.movable] if robot is not None else []
+        return [CompletionItem(f"{name}=", help=_joint_help(robot, name))
+                for name in names if name.startswith(incomplete)]
+
+
+class FrameName(click.ParamType[str]):
+    """A frame of the robot (a link, or a link fixed to another); completes the names."""
+
+    name = "FRAME"
+
+    def shell_complete(
+        self, ctx: click.Context, param: click.Parameter, incomplete: str
+    ) -> list[CompletionItem]:
+        """Complete the link names of the robot on the command line."""
+        robot = robot_for_completion(ctx)
+        names = [link.name for link in robot.links] if robot is not None else []
+        return [CompletionItem(name) for name in names if name.startswith(incomplete)]
+
+
+SERIAL_PATTERNS = ("/dev/ttyUSB*", "/dev/ttyACM*", "/dev/ttyAMA*", "/dev/ttyS[0-3]",
+                   "/dev/serial/by-id/*", "/dev/cu.*", "/dev/tty.usb*")
+"""Where serial adapters appear on Linux and macOS, most likely first."""
+
+
+class SerialPort(click.ParamType[str]):
+    """A serial device path; completes the serial devices present, then any path."""
+
+    name = "PATH"
+
+    def shell_complete(
+        self, ctx: click.Context, param: click.Parameter, incomplete: str
+    ) -> list[CompletionItem]:
+        """Complete the serial devices that exist now (USB adapters first)."""
+        import glob
+
+        found = [path for pattern in SERIAL_PATTERNS for path in sorted(glob.glob(pattern))]
+        matching = [CompletionItem(p) for p in found if p.startswith(incomplete)]
+        return matching or [CompletionItem(incomplete, type="file")]
+
+
+def robot_for_completion(ctx: click.Context) -> RobotDescription | None:
+    """The robot named on the command line so far, read without building a model.
+
+    None when it cannot be read: completion never fails, and never imports Pinocchio.
+    """
+    from servicebot_cli.common.errors import ServicebotError
+    from servicebot_cli.description.loader import RobotSource, read_description
+
+    values = tuple(ctx.params.get("robot_values") or ())
+    files = [v for v in values if not _XACRO_ARG_RE.match(v)]
+    xacro_args = tuple((m.group(1), m.group(2)) for v in values
+                       if (m := _XACRO_ARG_RE.match(v)))
+    try:
+        if files:
+            source = RobotSource.of(files[0], xacro_args=xacro_args,
+                                    packages=tuple(ctx.params.get("packages") or ()))
+        else:
+            source = RobotSource.bundled(ctx.params.get("bundled") or DEFAULT_ROBOT)
+        return read_description(source)
+    except (ServicebotError, OSError, ValueError):
+        return None
+
+
+def _joint_help(robot: RobotDescription | None, name: str) -> str | None:
+    """``revolute, -1.57..1.57`` for a joint, shown by shells that show help (zsh, fish)."""
+    joint = next((j for j in robot.joints if j.name == name), None) if robot else None
+    if joint is None:
+        return None
+    limits = joint.limits
+    if limits is None or limits.lower is None or limits.upper is None \
+            or joint.type == "continuous":
+        return joint.type
+    return f"{joint.type}, {limits.lower:g}..{limits.upper:g}"
 
 
 format_option = click.option(

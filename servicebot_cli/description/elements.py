@@ -291,8 +291,9 @@ def read_materials(root: ET.Element) -> dict[str, tuple[float, float, float, flo
         rgba = None
         if color is not None:
             parts = [parse_float(p) for p in (color.get("rgba") or "").split()]
-            if len(parts) == 4 and all(p is not None for p in parts):
-                rgba = tuple(parts)  # type: ignore[assignment]
+            numbers = [p for p in parts if p is not None]
+            if len(parts) == len(numbers) == 4:
+                rgba = (numbers[0], numbers[1], numbers[2], numbers[3])
         materials[material.get("name", "")] = rgba
     return materials
 

@@ -198,10 +198,11 @@ def _read_sensor(element: ET.Element, reference: str | None) -> Sensor:
 
 def _sdf_pose(text: str | None) -> Pose:
     """SDF ``<pose>x y z roll pitch yaw</pose>``; identity when absent or malformed."""
-    values = [parse_float(v) for v in (text or "").split()]
-    if len(values) != 6 or any(v is None for v in values):
+    parsed = [parse_float(v) for v in (text or "").split()]
+    values = [v for v in parsed if v is not None]
+    if len(parsed) != 6 or len(values) != 6:
         return Pose()
-    x, y, z, roll, pitch, yaw = values  # type: ignore[misc]
+    x, y, z, roll, pitch, yaw = values
     return Pose((x, y, z), (roll, pitch, yaw))
 
 

@@ -74,8 +74,10 @@ class JointSpace:
             types.append(joint.type)
             limits = joint.limits
             bounded = joint.type != "continuous" and limits is not None
-            lower.append(limits.lower if bounded and limits.lower is not None else math.nan)
-            upper.append(limits.upper if bounded and limits.upper is not None else math.nan)
+            lower.append(limits.lower if bounded and limits and limits.lower is not None
+                         else math.nan)
+            upper.append(limits.upper if bounded and limits and limits.upper is not None
+                         else math.nan)
             velocity.append(limits.velocity if limits and limits.velocity is not None else math.nan)
             idx_q.append(pin_joint.idx_q)
             idx_v.append(pin_joint.idx_v)

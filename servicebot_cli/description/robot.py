@@ -184,8 +184,8 @@ class RobotDescription:
         """Where ``element`` was written: the xacro line for xacro input, else the URDF line."""
         if element is None:
             return SourceRef(self.display, 0)
-        origin = getattr(element, "origin", None)
-        if origin is not None:
+        origin = getattr(element, "origin", None)  # set by the xacro tracer
+        if isinstance(origin, SourceRef):
             return origin
         return SourceRef(self.display, getattr(element, "sourceline", 0),
                          getattr(element, "column", 0))

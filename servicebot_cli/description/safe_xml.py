@@ -126,6 +126,7 @@ class _Builder:
                 exc.offset + 1,
             ) from None
         root = self.tree.close()
+        assert isinstance(root, PositionedElement)  # the element_factory makes every element
         return XmlDocument(root=root, text=text, doctype=self.doctype)
 
     def _where(self) -> tuple[int, int]:
@@ -143,6 +144,7 @@ class _Builder:
                 self.filename, f"elements nested over {MAX_DEPTH} deep; refused", *self._where()
             )
         element = self.tree.start(tag, attrs)
+        assert isinstance(element, PositionedElement)
         element.sourceline, element.column = self._where()
         if self.comments:
             element.leading_comments = tuple(self.comments)

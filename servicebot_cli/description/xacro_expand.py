@@ -166,7 +166,8 @@ class _Tracer:
                 setattr(xacro, name, fn)
             subst._eval_find = saved_find
 
-    def _parse(self, inp: object, filename: str | None = None) -> xml.dom.minidom.Document:
+    def _parse(self, inp: str | xml.dom.minidom.Document | None,
+               filename: str | None = None) -> xml.dom.minidom.Document:
         import xacro
 
         if inp is not None:
@@ -273,7 +274,8 @@ class _PositionBuilder(expatbuilder.ExpatBuilderNS):
         self._filename = filename
 
     def start_element_handler(self, name: str, attributes: list[str]) -> None:
-        line = self._parser.CurrentLineNumber
-        column = self._parser.CurrentColumnNumber + 1
+        parser = self._parser  # type: ignore[attr-defined]  # typeshed omits ExpatBuilder._parser
+        line, column = parser.CurrentLineNumber, parser.CurrentColumnNumber + 1
         super().start_element_handler(name, attributes)
-        self._tracer.record(self.curNode, self._filename, line, column)
+        if isinstance(self.curNode, xml.dom.minidom.Element):
+            self._tracer.record(self.curNode, self._filename, line, column)
