@@ -419,7 +419,8 @@ def robot_for_completion(ctx: click.Context) -> RobotDescription | None:
     from servicebot_cli.common.errors import ServicebotError
     from servicebot_cli.description.loader import RobotSource, read_description
 
-    values = tuple(ctx.params.get("robot_values") or ())
+    # While completing, Click leaves the positional values it has not bound in ctx.args.
+    values = tuple(ctx.params.get("robot_values") or ()) + tuple(ctx.args)
     files = [v for v in values if not _XACRO_ARG_RE.match(v)]
     xacro_args = tuple((m.group(1), m.group(2)) for v in values
                        if (m := _XACRO_ARG_RE.match(v)))
