@@ -16,17 +16,19 @@ Output rows::
 from __future__ import annotations
 
 import itertools
-from collections.abc import Iterable, Iterator, Sequence
-from typing import TYPE_CHECKING, Any
+from collections.abc import Iterable, Iterator, Mapping, Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.batch.reading import Row
+from servicebot_cli.batch.stream import RowKind
 from servicebot_cli.common.errors import JointNotFound
 from servicebot_cli.kinematics.forward import pose_table, transforms
 from servicebot_cli.kinematics.frames import frame_id, link_names
-from servicebot_cli.kinematics.user_joints import Mimics, row_pairs, user_vector
+from servicebot_cli.kinematics.json_types import JsonObject, JsonValue
+from servicebot_cli.kinematics.user_joints import Mimics, clamped_user_vector, row_pairs
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -42,7 +44,12 @@ _POSE_COLUMNS = ("x_m", "y_m", "z_m", "roll_{u}", "pitch_{u}", "yaw_{u}", "qx", 
 
 
 class FkBatch:
-    """Poses of fixed frames for a stream of configurations."""
+    """Poses of fixed frames for a stream of configurations.
+
+    Attributes:
+        clamped_values: Values ``--clamp`` moved onto a limit.
+        clamped_lines: Lines that had such a value.
+    """
 
     def __init__(self, robot: RobotDescription, frames: Sequence[str], relative_to: str, *,
                  deg: bool, clamp: bool) -> None:
@@ -58,6 +65,7 @@ class FkBatch:
         self.deg, self.clamp = deg, clamp
         self.unit = "deg" if deg else "rad"
         self._columns = self._header()
+        self.clamped_values = self.clamped_lines = 0
 
     def columns(self) -> list[str]:
         """CSV header: ``line`` then the pose columns of each frame."""
@@ -81,15 +89,20 @@ class FkBatch:
 
     def parse(self, row: Row) -> FloatArray:
         """The row's configuration, one value per joint [rad or m]."""
-        values = row.values
-        if isinstance(values.get("joints"), dict):  # an ik result line
-            values = values["joints"]
+        values: Mapping[str, JsonValue] = row.values
+        joints = values.get("joints")
+        if isinstance(joints, Mapping):  # an ik result line
+            values = joints
         pairs = row_pairs(values, RESULT_COLUMNS)
-        return user_vector(self.space, pairs, deg=self.deg, clamp=self.clamp,
-                           mimics=self.mimics)
+        vector, clamped = clamped_user_vector(self.space, pairs, deg=self.deg, clamp=self.clamp,
+                                              mimics=self.mimics)
+        if clamped:
+            self.clamped_values += len(clamped)
+            self.clamped_lines += 1
+        return vector
 
     def results(self, items: Iterable[tuple[Row, FloatArray]],
-                kind: str) -> Iterator[dict[str, Any]]:
+                kind: RowKind) -> Iterator[JsonObject]:
         """One output row per input row, computed a chunk at a time."""
         iterator = iter(items)
         while chunk := list(itertools.islice(iterator, CHUNK)):
@@ -105,7 +118,7 @@ class FkBatch:
                 yield self._json_row(row.line, values) if kind == "jsonl" else \
                     self._csv_row(row.line, values)
 
-    def _json_row(self, line: int, poses: FloatArray) -> dict[str, Any]:
+    def _json_row(self, line: int, poses: FloatArray) -> JsonObject:
         table = poses.tolist()
         return {"line": line, "poses": [
             {"frame": frame, "position_m": p[0:3], f"rpy_{self.unit}": p[3:6],
@@ -113,5 +126,5 @@ class FkBatch:
             for frame, p in zip(self.frames, table, strict=True)
         ]}
 
-    def _csv_row(self, line: int, poses: FloatArray) -> dict[str, Any]:
+    def _csv_row(self, line: int, poses: FloatArray) -> JsonObject:
         return dict(zip(self._columns, [line, *poses.ravel().tolist()], strict=True))

@@ -1,6 +1,6 @@
 """``ik --targets``: one target per line in, one solution per line out, warm-started.
 
-Each solve starts from the previous line's solution (the first from ``--seed``), so a path
+Each solve starts from the previous line's solution (the first from ``--start``), so a path
 of nearby targets gives a smooth path of joint values. A target that is not reached still
 gives a line (``success`` false, the best try and a hint); the run then ends with exit 1.
 
@@ -14,36 +14,18 @@ Output rows::
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
-from typing import Any, Protocol
-
-import numpy as np
-import numpy.typing as npt
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 
 from servicebot_cli.batch.reading import Row
-from servicebot_cli.description.joint_space import JointSpace
-from servicebot_cli.kinematics.inverse import IkResult, IkTarget
+from servicebot_cli.batch.stream import RowKind
+from servicebot_cli.kinematics.ik import IkSession
+from servicebot_cli.kinematics.inverse import IkTarget
+from servicebot_cli.kinematics.json_types import JsonObject
 from servicebot_cli.kinematics.targets import TARGET_KEYS, BadTarget, row_target
-
-FloatArray = npt.NDArray[np.float64]
 
 _TAIL = ("position_error_m", "orientation_error_rad", "iterations", "attempts", "solutions",
          "solve_time_s", "hint")
 TARGET_COLUMNS = TARGET_KEYS | {"line"}
-
-
-class Solves(Protocol):
-    """What the batch needs from the command: a seed, a solve, and a report."""
-
-    space: JointSpace
-    seed: FloatArray
-    deg: bool
-
-    def solve(self, target: IkTarget, seed: FloatArray) -> tuple[IkResult, float, str | None]:
-        """Solve from ``seed``: the result, the time [s], a hint on failure."""
-
-    def report(self, result: IkResult, elapsed_s: float, why: str | None) -> dict[str, Any]:
-        """JSON-ready values of a result."""
 
 
 class IkBatch:
@@ -53,16 +35,20 @@ class IkBatch:
         failed: Line numbers of targets that were not reached.
     """
 
-    def __init__(self, run: Solves, frame: str, *, axes: tuple[str, ...] | None) -> None:
-        """Read targets for ``frame``; ``axes`` from ``--orientation-axes`` (None: per line)."""
-        self.run, self.frame, self.axes = run, frame, axes
+    def __init__(self, session: IkSession, *, axes: tuple[str, ...] | None) -> None:
+        """Read targets for the session's frame; ``axes`` from ``--orientation-axes``.
+
+        ``axes`` None: each line uses all three angles if it has an orientation, none if not.
+        """
+        self.session, self.frame, self.axes = session, session.frame, axes
         self.failed: list[int] = []
 
     def columns(self) -> list[str]:
         """CSV header of the results."""
-        base = ["base_x_m", "base_y_m", f"base_yaw_{'deg' if self.run.deg else 'rad'}"] \
-            if self.run.space.base_nq else []
-        return ["line", "success", *self.run.space.names, *base, *_TAIL]
+        space = self.session.space
+        base = ["base_x_m", "base_y_m", f"base_yaw_{'deg' if self.session.deg else 'rad'}"] \
+            if space.base_nq else []
+        return ["line", "success", *space.names, *base, *_TAIL]
 
     def check_header(self, columns: Sequence[str]) -> None:
         """Every CSV column must be a target column (other frames' columns are skipped).
@@ -79,24 +65,28 @@ class IkBatch:
 
     def parse(self, row: Row) -> IkTarget:
         """The target of one line (raises BadTarget or BadNumber when unusable)."""
-        return row_target(row.values, self.frame, deg=self.run.deg, axes=self.axes)
+        return row_target(row.values, self.frame, deg=self.session.deg, axes=self.axes)
 
     def results(self, items: Iterable[tuple[Row, IkTarget]],
-                kind: str) -> Iterator[dict[str, Any]]:
+                kind: RowKind) -> Iterator[JsonObject]:
         """Solve each target from the last solution; one output row each."""
-        seed = self.run.seed
+        start = self.session.start
         for row, target in items:
-            result, elapsed_s, why = self.run.solve(target, seed)
-            if result.success:
-                seed = result.q
+            outcome = self.session.solve(target, start)
+            if outcome.success:
+                start = outcome.result.q
             else:
                 self.failed.append(row.line)
-            report = self.run.report(result, elapsed_s, why)
-            yield {"line": row.line, **report} if kind == "jsonl" else self._flat(row.line, report)
+            values = self.session.values(outcome)
+            yield {"line": row.line, **values} if kind == "jsonl" else \
+                self._flat(row.line, values)
 
-    def _flat(self, line: int, report: dict[str, Any]) -> dict[str, Any]:
-        flat = {"line": line, "success": report["success"], **report["joints"]}
-        if report["base"]:
-            flat.update({f"base_{k}": v for k, v in report["base"].items()})
-        flat.update({k: report[k] for k in _TAIL})
+    def _flat(self, line: int, values: JsonObject) -> JsonObject:
+        flat: JsonObject = {"line": line, "success": values["success"]}
+        joints, base = values["joints"], values["base"]
+        if isinstance(joints, Mapping):
+            flat.update(joints)
+        if isinstance(base, Mapping):
+            flat.update({f"base_{k}": v for k, v in base.items()})
+        flat.update({k: values[k] for k in _TAIL})
         return flat

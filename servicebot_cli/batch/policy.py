@@ -9,13 +9,15 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
-from typing import TypeVar
+from typing import Literal, TypeAlias, TypeVar
 
 from servicebot_cli.batch.reading import Row, Source
 from servicebot_cli.common.errors import ServicebotError
 
 T = TypeVar("T")
-POLICIES = ("stop", "skip")
+OnError: TypeAlias = Literal["stop", "skip"]
+"""What a bad line does: ``stop`` the run, or ``skip`` the line and go on."""
+POLICIES: tuple[OnError, ...] = ("stop", "skip")
 
 
 class BadLine(ServicebotError):
@@ -39,7 +41,7 @@ class Tally:
     skipped: int = 0
 
 
-def handled(source: Source, handle: Callable[[Row], T], *, on_error: str,
+def handled(source: Source, handle: Callable[[Row], T], *, on_error: OnError,
             warn: Callable[[str], None], tally: Tally) -> Iterator[tuple[Row, T]]:
     """``(row, handle(row))`` for every usable row of ``source``, lazily.
 

@@ -14,13 +14,14 @@ from __future__ import annotations
 import csv
 import itertools
 import json
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import IO, Any
+from typing import IO
 
 from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.common.inputs import open_input_text
+from servicebot_cli.kinematics.json_types import JsonValue
 
 CSV_SUFFIXES = (".csv", ".tsv")
 _JSON_KINDS = {list: "array", str: "string", int: "number", float: "number", bool: "boolean",
@@ -43,7 +44,7 @@ class Row:
     """
 
     line: int
-    values: dict[str, Any] = field(default_factory=dict)
+    values: Mapping[str, JsonValue] = field(default_factory=dict)
     error: str = ""
 
 
@@ -139,7 +140,8 @@ def _csv_rows(lines: Iterator[tuple[int, str]], header: list[str],
         if len(cells) != len(header):
             yield Row(number, error=f"has {len(cells)} fields, the header has {len(header)}")
             continue
-        yield Row(number, dict(zip(header, cells, strict=True)))
+        values: dict[str, JsonValue] = dict(zip(header, cells, strict=True))
+        yield Row(number, values)
 
 
 def _json_rows(lines: Iterator[tuple[int, str]]) -> Iterator[Row]:

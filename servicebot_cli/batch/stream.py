@@ -1,20 +1,41 @@
 """One batch run, for ``fk --configs`` and ``ik --targets``: read, convert, write, count.
 
-A stage turns input rows into results; this module wires it between a reader and a writer,
-applies the ``--on-error`` policy, and reports what it skipped.
+A stage turns input rows into result rows; this module wires it between a reader and a
+sink, applies the ``--on-error`` policy, and reports what it skipped. The sink (a file
+written atomically, or stdout) is passed in: it belongs to ``output``.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from typing import Any, Protocol
+from contextlib import AbstractContextManager
+from dataclasses import dataclass
+from typing import Literal, Protocol, TypeAlias, TypeVar
 
-from servicebot_cli.batch.policy import Tally, handled
+from servicebot_cli.batch.policy import OnError, Tally, handled
 from servicebot_cli.batch.reading import Row, open_source
-from servicebot_cli.batch.writing import output_kind, row_writer
+from servicebot_cli.kinematics.json_types import JsonObject
+
+RowKind: TypeAlias = Literal["csv", "jsonl"]
+"""The shape of result rows: flat CSV columns, or nested JSON Lines objects."""
+WriteRow = Callable[[JsonObject], None]
+Warn = Callable[[str], None]
+"""Where a batch says what it skipped or changed: one line each (stderr)."""
+T = TypeVar("T")
 
 
-class Stage(Protocol):
+class RowSink(Protocol):
+    """Where result rows go, one at a time, as they are computed."""
+
+    @property
+    def kind(self) -> RowKind:
+        """The row shape the sink writes."""
+
+    def open(self, columns: Sequence[str]) -> AbstractContextManager[WriteRow]:
+        """Start writing rows with ``columns`` (the CSV header); the block's end commits."""
+
+
+class Stage(Protocol[T]):
     """What a command does with each line."""
 
     def columns(self) -> list[str]:
@@ -23,30 +44,50 @@ class Stage(Protocol):
     def check_header(self, columns: Sequence[str]) -> None:
         """Refuse a CSV input header the stage cannot use (raise a ServicebotError)."""
 
-    def parse(self, row: Row) -> Any:
+    def parse(self, row: Row) -> T:
         """The usable content of a line (raise a ServicebotError when there is none)."""
 
-    def results(self, items: Iterable[tuple[Row, Any]], kind: str) -> Iterator[dict[str, Any]]:
+    def results(self, items: Iterable[tuple[Row, T]], kind: RowKind) -> Iterator[JsonObject]:
         """One result row per parsed line, lazily."""
 
 
-def stream(stage: Stage, path: str, *, output: str | None, fmt: str, on_error: str,
-           warn: Callable[[str], None]) -> tuple[Tally, str]:
-    """Run ``stage`` over every line of ``path``, writing results as they come.
+@dataclass(frozen=True)
+class BatchSummary:
+    """What a batch run did.
 
-    Returns:
-        The counts, and the input's name for messages.
+    Attributes:
+        source: The input's name for messages (``<stdin>`` for ``-``).
+        rows: Lines read (not blank, not comments).
+        skipped: Lines skipped under ``--on-error skip``.
+        failed: Line numbers whose answer is no (targets not reached).
     """
-    kind = output_kind(output, fmt)
+
+    source: str
+    rows: int
+    skipped: int = 0
+    failed: tuple[int, ...] = ()
+
+
+def stream(stage: Stage[T], path: str, sink: RowSink, *, on_error: OnError,
+           warn: Warn) -> BatchSummary:
+    """Run ``stage`` over every line of ``path``, writing results to ``sink`` as they come.
+
+    The sink is opened after the input's header is read and checked, so a bad input
+    leaves no output file.
+
+    Raises:
+        BatchInputError: The input cannot be opened or its header is unusable.
+        BadLine: An unusable line under ``--on-error stop``.
+    """
     source, handle = open_source(path)
     tally = Tally()
     with handle:
         if source.kind == "csv":
             stage.check_header(source.columns)
         items = handled(source, stage.parse, on_error=on_error, warn=warn, tally=tally)
-        with row_writer(output, kind, stage.columns()) as write:
-            for result in stage.results(items, kind):
+        with sink.open(stage.columns()) as write:
+            for result in stage.results(items, sink.kind):
                 write(result)
     if tally.skipped:
         warn(f"skipped {tally.skipped} of {tally.rows} lines of {source.display}")
-    return tally, source.display
+    return BatchSummary(source.display, tally.rows, tally.skipped)

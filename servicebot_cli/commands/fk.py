@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Literal
+
 import click
 
 from servicebot_cli.commands.command import Command
@@ -9,9 +11,18 @@ from servicebot_cli.commands.kinematics_options import (
     batch_options,
     clamp_option,
     deg_option,
-    pick_frame,
+    echo_notes,
+    refuse_format_with_file,
+    warn,
 )
-from servicebot_cli.commands.options import JointValue, RobotArgs, format_option, robot_arguments
+from servicebot_cli.commands.options import (
+    FrameName,
+    JointValue,
+    RobotArgs,
+    format_option,
+    refuse_without,
+    robot_arguments,
+)
 
 
 @click.command(cls=Command)
@@ -19,9 +30,9 @@ from servicebot_cli.commands.options import JointValue, RobotArgs, format_option
 @click.option("-j", "--joint", "joints", type=JointValue(), multiple=True, metavar="NAME=VALUE",
               help="A joint's value [rad, or deg with --deg; m for prismatic joints] "
               "(repeatable; unnamed joints stay at zero).")
-@click.option("-f", "--frame", "frames", multiple=True, metavar="FRAME",
+@click.option("-f", "--frame", "frames", type=FrameName(), multiple=True, metavar="FRAME",
               help="A frame (link) to place (repeatable; default: the arm's tool frame).")
-@click.option("--relative-to", metavar="FRAME", default=None,
+@click.option("--relative-to", type=FrameName(), metavar="FRAME", default=None,
               help="Express poses in this frame (default: the root link).")
 @click.option("--all-frames", is_flag=True, help="Every link and fixed frame, as one table.")
 @deg_option
@@ -30,9 +41,11 @@ from servicebot_cli.commands.options import JointValue, RobotArgs, format_option
                "joint names, or JSON Lines of {name: value}; - for stdin); one pose line per "
                "input line.")
 @format_option
-def fk(robot_args: RobotArgs, joints: tuple[tuple[str, float], ...], frames: tuple[str, ...],
-       relative_to: str | None, all_frames: bool, deg: bool, clamp: bool, configs: str | None,
-       output: str | None, on_error: str, fmt: str) -> None:
+@click.pass_context
+def fk(ctx: click.Context, robot_args: RobotArgs, joints: tuple[tuple[str, float], ...],
+       frames: tuple[str, ...], relative_to: str | None, all_frames: bool, deg: bool,
+       clamp: bool, configs: str | None, output: str | None,
+       on_error: Literal["stop", "skip"], fmt: str) -> None:
     """Forward kinematics: the pose of frames for given joint values.
 
     Prints position [m], roll-pitch-yaw (URDF convention: fixed axes X, Y, Z), the
@@ -46,23 +59,27 @@ def fk(robot_args: RobotArgs, joints: tuple[tuple[str, float], ...], frames: tup
       servicebot fk --all-frames --relative-to arm_base_link
       servicebot fk --configs configs.csv -o poses.jsonl
     """
-    from servicebot_cli.description.loader import load
-
-    robot = load(robot_args.source())  # a bad robot file is the first thing to report
-    from servicebot_cli.commands import _fk_run
-
     if all_frames and frames:
         raise click.UsageError("give --frame or --all-frames, not both")
     if configs is not None and joints:
         raise click.UsageError("give --joint values or a --configs file, not both")
-    chosen = _fk_run.all_frames(robot) if all_frames else \
-        [pick_frame(robot, f) for f in frames] or [pick_frame(robot, None)]
-    reference = pick_frame(robot, relative_to or robot.root_link or "")
-    if configs is not None:
-        _fk_run.batch(robot, chosen, reference, configs, output=output, fmt=fmt, deg=deg,
-                      clamp=clamp, on_error=on_error)
+    for option in ("--output", "--on-error"):
+        refuse_without(ctx, option, "--configs FILE", present=configs is not None)
+    refuse_without(ctx, "--clamp", "--joint NAME=VALUE or --configs FILE",
+                   present=bool(joints) or configs is not None)
+    refuse_format_with_file(ctx, output)
+    from servicebot_cli.kinematics.fk import FrameQuery
+
+    query = FrameQuery(robot_args.source(), frames, all_frames, relative_to, deg, clamp)
+    if configs is None:
+        from servicebot_cli.kinematics.fk import FkRequest, run
+        from servicebot_cli.output.poses import fk_output
+
+        result = run(FkRequest(query, joints))
+        echo_notes(result.notes)
+        click.echo(fk_output(result, fmt), nl=False)
         return
-    if output is not None:
-        raise click.UsageError("--output is for batch results (--configs); redirect stdout")
-    _fk_run.single(robot, chosen, reference, joints, fmt=fmt, deg=deg, clamp=clamp,
-                   as_table=all_frames)
+    from servicebot_cli.batch import fk as batch
+    from servicebot_cli.output.batch_rows import RowFile
+
+    batch.run(batch.FkBatchRequest(query, configs, on_error), RowFile(output, fmt), warn=warn)

@@ -2,27 +2,58 @@
 
 from __future__ import annotations
 
+import time
+from typing import Literal
+
 import click
 
 from servicebot_cli.commands.command import Command
 from servicebot_cli.commands.kinematics_options import (
+    RandomSeed,
     batch_options,
     clamp_option,
     deg_option,
-    pick_frame,
+    echo_notes,
+    refuse_format_with_file,
+    warn,
 )
 from servicebot_cli.commands.options import (
+    FrameName,
     JointValue,
     Number,
     RobotArgs,
     format_option,
+    refuse_without,
     robot_arguments,
 )
 
 
-@click.command(cls=Command)
+class IkCommand(Command):
+    """``ik``: ``--seed NAME=VALUE`` (start values, before ``--start``) points at ``--start``.
+
+    Checked before Click's parse, so ``--seed a=1 --seed b=2`` gets the way out rather than
+    "given 2 times".
+    """
+
+    def parse_args(self, ctx: click.Context, args: list[str]) -> list[str]:
+        """Refuse start values given to ``--seed``, then parse as :class:`Command` does."""
+        for index, arg in enumerate(args):
+            if arg == "--":
+                break
+            value = args[index + 1] if arg == "--seed" and index + 1 < len(args) else \
+                arg.removeprefix("--seed=") if arg.startswith("--seed=") else None
+            if value is not None and "=" in value:
+                RandomSeed().fail(RandomSeed.joint_value_message(value), ctx=ctx,
+                                  param=self._seed_param())
+        return super().parse_args(ctx, args)
+
+    def _seed_param(self) -> click.Parameter | None:
+        return next((p for p in self.params if p.name == "seed"), None)
+
+
+@click.command(cls=IkCommand)
 @robot_arguments()
-@click.option("-f", "--frame", metavar="FRAME", default=None,
+@click.option("-f", "--frame", type=FrameName(), metavar="FRAME", default=None,
               help="The frame to move (default: the arm's tool frame).")
 @click.option("--position", nargs=3, type=Number("M"), metavar="X Y Z", default=None,
               help="Target position [m] in the root link's frame (with --with-base: the "
@@ -34,10 +65,10 @@ from servicebot_cli.commands.options import (
 @click.option("--orientation-axes", metavar="AXES", default=None,
               help="Which angles matter: all (default with --rpy/--quat), none, or a comma "
               "list of roll, pitch, yaw (e.g. pitch). The others are left free.")
-@click.option("--seed", "seeds", type=JointValue(), multiple=True, metavar="NAME=VALUE",
+@click.option("--start", type=JointValue(), multiple=True, metavar="NAME=VALUE",
               help="Start from these joint values (repeatable; others at zero, or their "
-              "nearest limit). The solution nearest the seed is returned.")
-@click.option("--random-seed", type=click.IntRange(min=0), default=None, metavar="N",
+              "nearest limit). The solution nearest the start is returned.")
+@click.option("--seed", type=RandomSeed(), default=None, metavar="N",
               help="Seed of the random restarts: the same number gives the same answer.")
 @click.option("--with-base", is_flag=True,
               help="Also move the mobile base (planar x, y, yaw): say where the robot should "
@@ -49,22 +80,24 @@ from servicebot_cli.commands.options import (
               show_default=True, help="Accepted orientation error [rad].")
 @click.option("--max-attempts", type=click.IntRange(min=1), default=100, show_default=True,
               metavar="N",
-              help="Attempts: the seed, then random restarts within the limits.")
+              help="Attempts: the start, then random restarts within the limits.")
 @click.option("--solutions", type=click.IntRange(min=1), default=3, show_default=True,
               metavar="N",
-              help="Converged solutions to compare before returning the one nearest the seed.")
+              help="Converged solutions to compare before returning the one nearest the start.")
 @deg_option
 @clamp_option
 @batch_options("--targets", help="Batch: one target per line (CSV or JSON Lines, the column "
                "names of fk's output; - for stdin); each solve starts from the previous "
                "solution.")
 @format_option
-def ik(robot_args: RobotArgs, frame: str | None, position: tuple[float, ...] | None,
-       rpy: tuple[float, ...] | None, quat: tuple[float, ...] | None,
-       orientation_axes: str | None, seeds: tuple[tuple[str, float], ...],
-       random_seed: int | None, with_base: bool, tol_m: float, tol_rad: float,
-       max_attempts: int, solutions: int, deg: bool, clamp: bool, targets: str | None,
-       output: str | None, on_error: str, fmt: str) -> None:
+@click.pass_context
+def ik(ctx: click.Context, robot_args: RobotArgs, frame: str | None,
+       position: tuple[float, float, float] | None, rpy: tuple[float, float, float] | None,
+       quat: tuple[float, float, float, float] | None, orientation_axes: str | None,
+       start: tuple[tuple[str, float], ...], seed: int | None, with_base: bool, tol_m: float,
+       tol_rad: float, max_attempts: int, solutions: int, deg: bool, clamp: bool,
+       targets: str | None, output: str | None, on_error: Literal["stop", "skip"],
+       fmt: str) -> None:
     """Inverse kinematics: joint values that put a frame at a target.
 
     Joint limits are always respected and continuous joints wrap. Exit code 0 when the
@@ -76,28 +109,40 @@ def ik(robot_args: RobotArgs, frame: str | None, position: tuple[float, ...] | N
       servicebot ik --position 0.5 0.2 0.4
       servicebot ik --position 0.4 0.1 0.2 --rpy 0 90 0 --deg --orientation-axes pitch
       servicebot ik --position 2.0 1.0 0.5 --with-base --format json
-      servicebot ik --targets path.csv -o joints.jsonl --random-seed 1
+      servicebot ik --targets path.csv -o joints.jsonl --seed 1
     """
-    from servicebot_cli.description.loader import load
-
-    robot = load(robot_args.source())  # a bad robot file is the first thing to report
-    from servicebot_cli.commands import _ik_run
-    from servicebot_cli.kinematics.inverse import IkSettings
-    from servicebot_cli.kinematics.targets import make_target, parse_axes
-
     if rpy is not None and quat is not None:
         raise click.UsageError("give --rpy or --quat, not both")
     if position is not None and targets is not None:
         raise click.UsageError("give --position or --targets, not both")
     if position is None and targets is None:
         raise click.UsageError("give a target: --position X Y Z, or a --targets file")
-    if targets is None and output is not None:
-        raise click.UsageError("--output is for batch results (--targets); redirect stdout")
-    settings = IkSettings(tol_m, tol_rad, max_attempts, solutions=solutions)
-    run = _ik_run.setup(robot, pick_frame(robot, frame), seeds, with_base=with_base,
-                        settings=settings, random_seed=random_seed, deg=deg, clamp=clamp)
-    axes = parse_axes(orientation_axes, targets is not None or rpy is not None or quat is not None)
-    if targets is not None:
-        _ik_run.batch(run, targets, axes=axes, output=output, fmt=fmt, on_error=on_error)
+    for option in ("--output", "--on-error"):
+        refuse_without(ctx, option, "--targets FILE", present=targets is not None)
+    refuse_without(ctx, "--clamp", "--start NAME=VALUE", present=bool(start))
+    refuse_format_with_file(ctx, output)
+    from servicebot_cli.common.errors import AnswerIsNo
+    from servicebot_cli.kinematics.ik import IkProblem
+    from servicebot_cli.kinematics.inverse import IkSettings
+    from servicebot_cli.output import ik_report
+
+    problem = IkProblem(robot_args.source(), frame, start, seed, with_base,
+                        IkSettings(tol_m, tol_rad, max_attempts, solutions=solutions), deg, clamp)
+    if targets is None:
+        from servicebot_cli.kinematics.ik import IkRequest, TargetSpec, run
+
+        assert position is not None  # checked above: one of --position, --targets
+        answer = run(IkRequest(problem, TargetSpec(position, rpy, quat, orientation_axes)),
+                     clock=time.perf_counter)
+        echo_notes(answer.notes)
+        click.echo(ik_report.ik_output(answer, fmt), nl=False)
+        if not answer.success:
+            raise AnswerIsNo(ik_report.refusal(answer))
         return
-    _ik_run.single(run, make_target(position, rpy=rpy, quat=quat, deg=deg, axes=axes), fmt)
+    from servicebot_cli.batch import ik as batch
+    from servicebot_cli.output.batch_rows import RowFile
+
+    summary = batch.run(batch.IkBatchRequest(problem, targets, orientation_axes, on_error),
+                        RowFile(output, fmt), warn=warn, clock=time.perf_counter)
+    if summary.failed:
+        raise AnswerIsNo(ik_report.batch_refusal(summary))

@@ -1,16 +1,22 @@
-"""Options that ``fk`` and ``ik`` share, and how both pick their frame. Light: click only."""
+"""Options that ``fk`` and ``ik`` share, and their parameter types. Light: click only."""
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any, TypeVar
+from pathlib import Path
+from typing import Any, TypeVar
 
 import click
 
-if TYPE_CHECKING:
-    from servicebot_cli.description.robot import RobotDescription
+from servicebot_cli.commands.options import OutputPath, given
 
 F = TypeVar("F", bound=Callable[..., Any])
+
+# What -o/--output writes: CSV (.csv, .tsv with tabs) or JSON Lines (.jsonl, .ndjson, .json).
+# The same list as output.batch_rows.OUTPUT_SUFFIXES, which is not imported here: it would
+# load the batch package at --help; a test checks that the two agree.
+OUTPUT_SUFFIXES = (".csv", ".tsv", ".jsonl", ".ndjson", ".json")
 
 deg_option = click.option(
     "--deg", is_flag=True,
@@ -19,8 +25,33 @@ deg_option = click.option(
 )
 clamp_option = click.option(
     "--clamp", is_flag=True,
-    help="Clamp joint values outside their limits instead of refusing them.",
+    help="Clamp joint values outside their limits instead of refusing them (a note on "
+    "stderr says which).",
 )
+
+
+class InputFile(click.ParamType[str]):
+    """A batch input: ``-`` for standard input, or a readable file. Checked before any work."""
+
+    name = "FILE"
+
+    def convert(self, value: str | os.PathLike[str], param: click.Parameter | None,
+                ctx: click.Context | None) -> str:
+        """Check ``value`` names a readable file (or is ``-``); return it unchanged."""
+        text = os.fspath(value)
+        if text == "-":
+            return text
+        path = Path(text)
+        kind = "give a CSV or JSON Lines file, or - for stdin"
+        if not path.exists():
+            self.fail(f"'{text}': no such file; {kind}", param, ctx)
+        if path.is_dir():
+            self.fail(f"'{text}' is a directory; {kind}", param, ctx)
+        if not os.access(path, os.R_OK):
+            self.fail(f"'{text}': permission denied; make it readable (chmod +r)", param, ctx)
+        return text
+
+
 def batch_options(flag: str, help: str) -> Callable[[F], F]:
     """The batch input option ``flag`` (a file, ``-`` for stdin), ``--output``, ``--on-error``."""
 
@@ -32,32 +63,66 @@ def batch_options(flag: str, help: str) -> Callable[[F], F]:
             "skip it, say so on stderr, and go on.",
         )(f)
         f = click.option(
-            "-o", "--output", type=click.Path(dir_okay=False, allow_dash=True), default=None,
-            help="Batch results to this file, written atomically (.csv or .jsonl; default "
-            "stdout: CSV with --format text, JSON Lines with --format json).",
+            "-o", "--output", type=OutputPath(suffixes=OUTPUT_SUFFIXES, allow_dash=True,
+                                              what="batch result"),
+            default=None,
+            help=f"Batch results to this file (needs {flag}), written atomically (.csv or "
+            ".jsonl; default stdout: CSV with --format text, JSON Lines with --format json).",
         )(f)
-        return click.option(flag, type=click.Path(dir_okay=False, allow_dash=True),
-                            default=None, help=help)(f)
+        return click.option(flag, type=InputFile(), default=None, help=help)(f)
 
     return decorate
 
 
-def pick_frame(robot: RobotDescription, name: str | None) -> str:
-    """``name`` if it is a frame of ``robot``; without one, the arm's tool frame.
-
-    When the tool frame is chosen by its place in the tree rather than its name, a note on
-    stderr says which frame it is.
+def refuse_format_with_file(ctx: click.Context, output: str | None) -> None:
+    """Refuse ``--format`` beside ``--output FILE``: the file's extension names its format.
 
     Raises:
-        FrameNotFound: ``name`` is not a link, with the nearest names.
+        click.UsageError: Both were given.
     """
-    from servicebot_cli.kinematics.frames import default_tool_frame, frame_id, link_names
+    if given(ctx, "fmt") and output not in (None, "-"):
+        raise click.UsageError("--format has no effect with --output FILE: its extension "
+                               "names the format (.csv or .jsonl); drop --format", ctx=ctx)
 
-    if name is not None:
-        frame_id(robot.model, name, link_names(robot))
-        return name
-    choice = default_tool_frame(robot)
-    if not choice.obvious:
-        click.echo(f"note: no --frame given; using '{choice.name}', the tip of the longest "
-                   f"chain ({choice.joints} joints)", err=True)
-    return choice.name
+
+class RandomSeed(click.ParamType[int]):
+    """``--seed N``: the seed of the random restarts, a whole number from 0.
+
+    ``ik`` once took start values as ``--seed NAME=VALUE``; such a value is refused with
+    the option that takes it now.
+    """
+
+    name = "N"
+
+    @staticmethod
+    def joint_value_message(text: str) -> str:
+        """Why ``NAME=VALUE`` is refused, and the option that takes it."""
+        return (f"'{text}' is a joint value, not a random seed: use --start {text} for a "
+                "start configuration (--seed N seeds the random restarts)")
+
+    def convert(self, value: str | int, param: click.Parameter | None, ctx: click.Context | None
+                ) -> int:
+        """Parse the seed; point NAME=VALUE at ``--start``."""
+        if isinstance(value, int):
+            return value
+        text = str(value)
+        if "=" in text:
+            self.fail(self.joint_value_message(text), param, ctx)
+        try:
+            number = int(text)
+        except ValueError:
+            self.fail(f"'{text}' is not a whole number", param, ctx)
+        if number < 0:
+            self.fail(f"{number} is negative; give a whole number from 0", param, ctx)
+        return number
+
+
+def echo_notes(notes: tuple[str, ...] | list[str]) -> None:
+    """Each note on its own stderr line."""
+    for note in notes:
+        click.echo(note, err=True)
+
+
+def warn(message: str) -> None:
+    """One line on stderr: what a batch skipped or changed."""
+    click.echo(message, err=True)

@@ -35,7 +35,7 @@ def frame_id(model: pin.Model, name: str, known: Sequence[str]) -> int:
     import pinocchio as pin
 
     if name in known and model.existFrame(name, pin.FrameType.BODY):
-        return model.getFrameId(name, pin.FrameType.BODY)
+        return int(model.getFrameId(name, pin.FrameType.BODY))
     raise FrameNotFound.for_name(name, known, robot=model.name)
 
 
@@ -92,3 +92,23 @@ def link_names(robot: RobotDescription) -> tuple[str, ...]:
 def _looks_like_tool(name: str) -> bool:
     lowered = name.lower()
     return any(word in lowered for word in _TOOL_WORDS)
+
+
+def pick_frame(robot: RobotDescription, name: str | None) -> tuple[str, str | None]:
+    """``name`` if it is a frame of ``robot``; without one, the arm's tool frame.
+
+    Returns:
+        The frame, and a note saying which frame was chosen when the tool frame was picked
+        by its place in the tree rather than by its name (else None).
+
+    Raises:
+        FrameNotFound: ``name`` is not a link, with the nearest names.
+    """
+    if name is not None:
+        frame_id(robot.model, name, link_names(robot))
+        return name, None
+    choice = default_tool_frame(robot)
+    if choice.obvious:
+        return choice.name, None
+    return choice.name, (f"note: no --frame given; using '{choice.name}', the tip of the "
+                         f"longest chain ({choice.joints} joints)")

@@ -74,6 +74,30 @@ class Mimics:
         return values
 
 
+@dataclass(frozen=True)
+class Clamped:
+    """A joint value ``--clamp`` moved onto a limit, in the user's unit.
+
+    Attributes:
+        joint: The joint.
+        given: The value given [rad, deg or m].
+        limit: The limit used instead, same unit.
+        unit: ``rad``, ``deg`` or ``m``.
+        side: ``lower`` or ``upper``.
+    """
+
+    joint: str
+    given: float
+    limit: float
+    unit: str
+    side: str
+
+    def note(self) -> str:
+        """One stderr line: which joint, the value given, the limit used."""
+        return (f"note: --clamp: joint '{self.joint}' = {self.given:g} {self.unit} is outside "
+                f"its limits; using its {self.side} limit {self.limit:g} {self.unit}")
+
+
 def user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *, deg: bool = False,
                 clamp: bool = False, mimics: Mimics | None = None) -> FloatArray:
     """One value per joint [rad or m] from ``(name, value)`` pairs in the user's units.
@@ -81,6 +105,19 @@ def user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *, deg: b
     Unnamed joints stay at zero (even where zero is outside their limits, as for Panda's
     fourth joint: see :func:`unnamed_outside`), or follow their leader when ``mimics`` says
     they mimic one. Only the values the user gave are checked against the limits.
+
+    Raises:
+        JointNotFound: An unknown name, nearest names first.
+        BadNumber: A joint named twice.
+        OutOfLimits: A given value outside its limits (unless ``clamp``), in the user's unit.
+    """
+    return clamped_user_vector(space, pairs, deg=deg, clamp=clamp, mimics=mimics)[0]
+
+
+def clamped_user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *,
+                        deg: bool = False, clamp: bool = False, mimics: Mimics | None = None
+                        ) -> tuple[FloatArray, tuple[Clamped, ...]]:
+    """As :func:`user_vector`, with what ``clamp`` moved onto a limit, joint by joint.
 
     Raises:
         JointNotFound: An unknown name, nearest names first.
@@ -104,13 +141,26 @@ def user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *, deg: b
         named[list(mimics.follower)] |= named[list(mimics.leader)]
     inside = space.clamped(values)
     if clamp:
-        return np.where(named, inside, values)
+        return np.where(named, inside, values), _clamped(space, values, inside, named, deg)
     probe = np.where(named, values, inside)
     try:
         space.checked(probe)
     except OutOfLimits:
         raise _out_of_limits(space, probe, deg) from None
-    return values
+    return values, ()
+
+
+def _clamped(space: JointSpace, values: FloatArray, inside: FloatArray,
+             named: npt.NDArray[np.bool_], deg: bool) -> tuple[Clamped, ...]:
+    """The named joints whose value ``inside`` moved by more than the limits' slack."""
+    moved = named & (np.abs(values - inside) > 1e-9)
+    out = []
+    for i in np.flatnonzero(moved):
+        scale = math.degrees(1.0) if deg and space.types[i] != "prismatic" else 1.0
+        side = "lower" if values[i] < inside[i] else "upper"
+        out.append(Clamped(space.names[i], float(values[i] * scale), float(inside[i] * scale),
+                           unit_of(space, int(i), deg), side))
+    return tuple(out)
 
 
 def unnamed_outside(space: JointSpace, values: FloatArray) -> list[str]:

@@ -13,13 +13,16 @@ With ``--deg`` the angles are in degrees and the keys say so (``rpy_deg``, ``ang
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator, Sequence
-from typing import TYPE_CHECKING, Any
+from collections.abc import Iterable, Iterator, Sequence
+from typing import TYPE_CHECKING
 
+from servicebot_cli.common.jsonable import dumps
 from servicebot_cli.output.table import format_number, table
 
 if TYPE_CHECKING:
+    from servicebot_cli.kinematics.fk import FkResult
     from servicebot_cli.kinematics.forward import FramePose
+    from servicebot_cli.kinematics.json_types import JsonObject
 
 _TINY = 1e-12  # |values| below this print as 0: rounding noise of the transforms
 
@@ -34,9 +37,9 @@ def rpy_of(pose: FramePose, deg: bool) -> list[float]:
     return [math.degrees(a) if deg else float(a) for a in pose.rpy_rad]
 
 
-def pose_json(pose: FramePose, deg: bool, matrix: bool = True) -> dict[str, Any]:
+def pose_json(pose: FramePose, deg: bool, matrix: bool = True) -> JsonObject:
     """One pose as a JSON object (keys carry their units)."""
-    out: dict[str, Any] = {
+    out: JsonObject = {
         "frame": pose.frame,
         "position_m": [float(v) for v in pose.position_m],
         f"rpy_{'deg' if deg else 'rad'}": rpy_of(pose, deg),
@@ -47,14 +50,22 @@ def pose_json(pose: FramePose, deg: bool, matrix: bool = True) -> dict[str, Any]
     return out
 
 
-def fk_json(robot: str, poses: Sequence[FramePose], joints: dict[str, float], relative_to: str,
-            deg: bool) -> dict[str, Any]:
+def fk_json(result: FkResult) -> JsonObject:
     """The whole ``fk`` answer as JSON."""
-    return {"robot": robot, "relative_to": relative_to, "angle_unit": "deg" if deg else "rad",
-            "joints": joints, "poses": [pose_json(p, deg) for p in poses]}
+    deg = result.deg
+    return {"robot": result.robot, "relative_to": result.relative_to,
+            "angle_unit": "deg" if deg else "rad", "joints": dict(result.joints),
+            "poses": [pose_json(p, deg) for p in result.poses]}
 
 
-def _numbers(values: Sequence[float]) -> str:
+def fk_output(result: FkResult, fmt: str) -> str:
+    """What ``fk`` prints on stdout: JSON, or text blocks (a table for every frame)."""
+    if fmt == "json":
+        return dumps(fk_json(result))
+    return "".join(f"{line}\n" for line in fk_text(result.poses, result.deg, result.as_table))
+
+
+def _numbers(values: Iterable[float]) -> str:
     return "  ".join(format_number(clean(v)) for v in values)
 
 

@@ -122,7 +122,7 @@ def test_missing_input_and_unwritable_output(run, tmp_path):
     assert_one_line_error(run("fk", "--configs", configs, "-o", tmp_path / "no" / "x.csv"), 2,
                           "does not exist")
     assert_one_line_error(run("fk", "--configs", configs, "-o", tmp_path / "x.txt"), 2,
-                          "cannot tell the format", ".csv or .jsonl")
+                          "'--output'", "files end in .csv or .tsv or .jsonl")
     assert_one_line_error(run("fk", "--configs", configs, "-j", "arm_base_to_link1=0"), 2,
                           "not both")
 

@@ -27,7 +27,7 @@ def test_fk_output_feeds_ik_and_fk_confirms_every_answer(run, tmp_path):
     path = [[0.1 * k, 0.3 - 0.05 * k, 0.5, -0.2] for k in range(8)]
     poses = poses_of(run, tmp_path, path)
     out = tmp_path / "solutions.jsonl"
-    result = run("ik", "--targets", poses, "-o", out, "--random-seed", "2")
+    result = run("ik", "--targets", poses, "-o", out, "--seed", "2")
     assert result.exit_code == 0 and result.stdout == "" and result.stderr == ""
     answers = [json.loads(line) for line in out.read_text().splitlines()]
     assert [a["line"] for a in answers] == list(range(2, 10))
@@ -47,8 +47,8 @@ def test_warm_start_follows_the_path(run, tmp_path):
     path = [[0.02 * k, 0.4, -0.6, 0.3] for k in range(10)]
     poses = poses_of(run, tmp_path, path)
     result = run("ik", "--targets", poses, "--orientation-axes", "none", "--format", "json",
-                 "--seed", "arm_link1_to_link2=0.4", "--seed", "arm_link2_to_link3=-0.6",
-                 "--seed", "arm_link3_to_link4=0.3", "--solutions", "1")
+                 "--start", "arm_link1_to_link2=0.4", "--start", "arm_link2_to_link3=-0.6",
+                 "--start", "arm_link3_to_link4=0.3", "--solutions", "1")
     answers = [json.loads(line) for line in result.stdout.splitlines()]
     yaw = [a["joints"]["arm_base_to_link1"] for a in answers]
     assert yaw == pytest.approx([0.02 * k for k in range(10)], abs=1e-5)
@@ -58,7 +58,7 @@ def test_warm_start_follows_the_path(run, tmp_path):
 def test_csv_out_and_targets_without_orientation(run, tmp_path):
     targets = tmp_path / "targets.csv"
     targets.write_text("x,y,z\n0.5,0.2,0.4\n0.3,-0.3,0.6\n")
-    result = run("ik", "--targets", targets, "--random-seed", "0")
+    result = run("ik", "--targets", targets, "--seed", "0")
     table = list(csv.DictReader(result.stdout.splitlines()))
     assert list(table[0]) == ["line", "success", "front_left_wheel_joint",
                               "front_right_wheel_joint", "rear_left_wheel_joint",
@@ -83,7 +83,7 @@ def test_json_lines_targets_in_every_spelling(run, tmp_path):
         {"position_m": [x, y, z], "quaternion_xyzw": pose["quaternion_xyzw"]},
     ]) + "\n")
     result = run("ik", "--targets", targets, "--orientation-axes", "pitch", "--format", "json",
-                 "--random-seed", "0")
+                 "--seed", "0")
     answers = [json.loads(line) for line in result.stdout.splitlines()]
     assert result.exit_code == 0 and [a["success"] for a in answers] == [True] * 4
     targets.write_text('{"position_m": [0.5, 0.2, 0.4]}\n')
@@ -96,7 +96,7 @@ def test_with_base_columns(run, tmp_path):
     targets = tmp_path / "targets.csv"
     targets.write_text("x_m,y_m,z_m\n3,1,0.5\n")
     table = list(csv.DictReader(run("ik", "--targets", targets, "--with-base", "--deg",
-                                    "--random-seed", "0").stdout.splitlines()))
+                                    "--seed", "0").stdout.splitlines()))
     assert {"base_x_m", "base_y_m", "base_yaw_deg"} <= set(table[0])
     assert table[0]["success"] == "true" and float(table[0]["base_x_m"]) > 1
 
@@ -131,6 +131,6 @@ def test_fk_output_with_several_frames_uses_the_asked_frame(run, tmp_path):
     poses = poses_of(run, tmp_path, [[0.2, 0.1, 0.3, 0.0]], "-f", "arm_link4", "-f",
                      "arm_tool_link")
     result = run("ik", "--targets", poses, "-f", "arm_link4", "--format", "json",
-                 "--random-seed", "0")
+                 "--seed", "0")
     answer = json.loads(result.stdout)
     assert answer["success"] and answer["position_error_m"] <= 1e-6

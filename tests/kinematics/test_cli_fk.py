@@ -122,7 +122,7 @@ def test_mimic_joints_follow_and_unnamed_joints_outside_limits_are_noted(run):
     (["-j", "arm_link1_to_link2"], ["is not NAME=VALUE"]),
     (["-j", "arm_link1_to_link2=1", "-j", "arm_link1_to_link2=0"], ["given twice"]),
     (["-f", "arm_link2", "--all-frames"], ["--frame or --all-frames, not both"]),
-    (["-o", "x.jsonl"], ["--output is for batch results"]),
+    (["-o", "x.jsonl"], ["--output has no effect without --configs FILE"]),
 ])
 def test_bad_input_is_one_line_and_exit_2(run, args, needles):
     assert_one_line_error(run("fk", *args), 2, *needles)

@@ -11,7 +11,7 @@ from tests.conftest import assert_one_line_error, run_servicebot
 
 
 def ik_json(run, *args):
-    result = run("ik", *args, "--format", "json", "--random-seed", "1")
+    result = run("ik", *args, "--format", "json", "--seed", "1")
     return result, json.loads(result.stdout)
 
 
@@ -62,12 +62,12 @@ def test_with_base_says_where_to_stand(run):
     assert result.exit_code == 0
     base = answer["base"]
     assert list(base) == ["x_m", "y_m", "yaw_rad"] and math.hypot(base["x_m"], base["y_m"]) > 0.5
-    text = run("ik", "--position", "2", "1", "0.5", "--with-base", "--random-seed", "1").stdout
+    text = run("ik", "--position", "2", "1", "0.5", "--with-base", "--seed", "1").stdout
     assert "\nbase: x " in text
 
 
 def test_out_of_reach_exits_1_with_the_best_try_and_the_distance(run):
-    result = run("ik", "--position", "2", "1", "0.5", "--random-seed", "1", "--max-attempts", "5")
+    result = run("ik", "--position", "2", "1", "0.5", "--seed", "1", "--max-attempts", "5")
     assert result.exit_code == 1
     assert result.stdout.startswith("arm_tool_link NOT reached (best found below): position "
                                     "only;")
@@ -89,16 +89,16 @@ def test_an_orientation_the_arm_cannot_make(run):
 
 
 def test_the_random_seed_makes_answers_repeat(run):
-    args = ["ik", "--position", "0.3", "-0.4", "0.5", "--format", "json", "--random-seed", "5"]
+    args = ["ik", "--position", "0.3", "-0.4", "0.5", "--format", "json", "--seed", "5"]
     first, again = (json.loads(run(*args).stdout) for _ in range(2))
     assert first["joints"] == again["joints"] and first["iterations"] == again["iterations"]
 
 
-def test_the_seed_is_where_the_answer_starts(run):
+def test_the_start_is_where_the_answer_starts(run):
     start = json.loads(run("fk", "-j", "arm_link1_to_link2=0.4", "-j", "arm_link2_to_link3=-0.6",
                            "--format", "json").stdout)["poses"][0]
     result, answer = ik_json(run, "--position", *map(str, start["position_m"]),
-                             "--seed", "arm_link1_to_link2=0.4", "--seed",
+                             "--start", "arm_link1_to_link2=0.4", "--start",
                              "arm_link2_to_link3=-0.6")
     assert answer["joints"]["arm_link1_to_link2"] == pytest.approx(0.4, abs=1e-9)
     assert answer["joints"]["arm_link2_to_link3"] == pytest.approx(-0.6, abs=1e-9)
@@ -117,13 +117,14 @@ def test_the_seed_is_where_the_answer_starts(run):
     (["--position", "0.5", "0", "0.5", "--rpy", "0", "1", "0", "--orientation-axes", "tilt"],
      ["'tilt' is not an axis"]),
     (["--position", "0.5", "0", "0.5", "-f", "tool"], ["no frame 'tool'", "arm_tool_link"]),
-    (["--position", "0.5", "0", "0.5", "--seed", "arm_link1_to_link2=3"],
+    (["--position", "0.5", "0", "0.5", "--start", "arm_link1_to_link2=3"],
      ["outside its limits [-1.57, 1.57] rad"]),
-    (["--position", "0.5", "0", "0.5", "--seed", "arm_lnk=3"], ["no joint 'arm_lnk'"]),
+    (["--position", "0.5", "0", "0.5", "--start", "arm_lnk=3"], ["no joint 'arm_lnk'"]),
     (["--position", "0.5", "0", "0.5", "--tol-m", "0"], ["--tol-m"]),
-    (["--position", "0.5", "0", "0.5", "--random-seed", "-1"], ["--random-seed"]),
-    (["--position", "0.5", "0", "0.5", "-o", "x.csv"], ["--output is for batch results"]),
-    (["--position", "0.5", "0", "0.5", "--targets", "x.csv"], ["--position or --targets"]),
+    (["--position", "0.5", "0", "0.5", "--seed", "-1"], ["--seed"]),
+    (["--position", "0.5", "0", "0.5", "-o", "x.csv"],
+     ["--output has no effect without --targets FILE"]),
+    (["--position", "0.5", "0", "0.5", "--targets", "-"], ["--position or --targets"]),
     (["--position", "0.2", "0", "0.1", "-f", "lidar_link"], ["frame 'lidar_link' is fixed to "
                                                              "the root: no joint moves it"]),
 ])
@@ -149,7 +150,7 @@ def test_a_chain_of_one_continuous_joint(run):
     """A wheel: one joint, (cos, sin) in q; any random seed gives the same angle."""
     for seed in range(4):
         result = run("ik", "-f", "front_left_wheel", "--position", "0.17", "0.27", "-0.08",
-                     "--rpy", "0", "1", "0", "--random-seed", str(seed), "--format", "json")
+                     "--rpy", "0", "1", "0", "--seed", str(seed), "--format", "json")
         answer = json.loads(result.stdout)
         assert answer["success"] and answer["joints"]["front_left_wheel_joint"] == \
             pytest.approx(1.0, abs=1e-6)

@@ -8,11 +8,11 @@ import numpy as np
 import pytest
 
 from servicebot_cli.batch.reading import BatchInputError, open_source
-from servicebot_cli.batch.writing import output_kind
 from servicebot_cli.common.files import OutputError
 from servicebot_cli.kinematics.rotations import matrix_from_rpy
 from servicebot_cli.kinematics.targets import BadTarget, make_target, parse_axes, row_target
 from servicebot_cli.kinematics.user_joints import BadNumber
+from servicebot_cli.output.batch_rows import output_kind
 
 
 def rows_of(path):

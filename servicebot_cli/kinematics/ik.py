@@ -1,0 +1,231 @@
+"""``ik`` as one call: a request in, the answer (or the best try and why) out. No I/O.
+
+The command turns its options into an :class:`IkRequest`; :func:`run` loads the robot,
+builds the solver and solves; ``output.ik_report`` renders the :class:`IkAnswer`. Batch mode
+(``--targets``) builds the same :class:`IkSession` from the same :class:`IkProblem` (see
+``batch.ik``). The clock is passed in: solve times are measured around the pure solver.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.description.joint_space import JointSpace
+from servicebot_cli.description.loader import RobotSource, load
+from servicebot_cli.description.robot import RobotDescription
+from servicebot_cli.kinematics.chain import Chain
+from servicebot_cli.kinematics.diagnosis import hint
+from servicebot_cli.kinematics.frames import link_names, pick_frame
+from servicebot_cli.kinematics.inverse import IkResult, IkSettings, IkSolver, IkTarget
+from servicebot_cli.kinematics.json_types import JsonObject
+from servicebot_cli.kinematics.targets import make_target, parse_axes
+from servicebot_cli.kinematics.user_joints import clamped_user_vector, user_values
+
+FloatArray = npt.NDArray[np.float64]
+Clock = Callable[[], float]
+"""Seconds from an arbitrary origin (``time.perf_counter``)."""
+
+
+@dataclass(frozen=True)
+class IkProblem:
+    """What every solve of one command shares.
+
+    Attributes:
+        robot: The description to load.
+        frame: The frame to move; None: the arm's tool frame.
+        start: ``(name, value)`` pairs to start from, in the user's units; other joints
+            start at zero, or their nearest limit.
+        seed: Seed of the random restarts; None: a fresh one each run.
+        with_base: Also move a planar mobile base.
+        settings: Tolerances and effort.
+        deg: Angles in degrees, in and out.
+        clamp: Clamp start values outside their limits instead of refusing them.
+    """
+
+    robot: RobotSource
+    frame: str | None = None
+    start: tuple[tuple[str, float], ...] = ()
+    seed: int | None = None
+    with_base: bool = False
+    settings: IkSettings = field(default_factory=IkSettings)
+    deg: bool = False
+    clamp: bool = False
+
+
+@dataclass(frozen=True)
+class TargetSpec:
+    """A target as typed: a position [m], optionally roll-pitch-yaw or a quaternion.
+
+    Attributes:
+        position_m: ``x, y, z`` [m] in the root link's frame.
+        rpy: Roll, pitch, yaw [rad, or deg with the problem's ``deg``].
+        quat: Quaternion ``x, y, z, w`` (normalised for you).
+        axes: ``--orientation-axes`` as typed; None: all with an orientation, none without.
+    """
+
+    position_m: tuple[float, ...]
+    rpy: tuple[float, ...] | None = None
+    quat: tuple[float, ...] | None = None
+    axes: str | None = None
+
+
+@dataclass(frozen=True)
+class IkRequest:
+    """One target to reach."""
+
+    problem: IkProblem
+    target: TargetSpec
+
+
+@dataclass(frozen=True)
+class IkOutcome:
+    """One solve: the solver's result, how long it took, and why it failed.
+
+    Attributes:
+        result: The answer or the best try.
+        elapsed_s: Solve time [s].
+        hint: Why the target was not reached; None when it was.
+    """
+
+    result: IkResult
+    elapsed_s: float
+    hint: str | None
+
+    @property
+    def success(self) -> bool:
+        """The target was reached."""
+        return self.result.success
+
+
+class IkSession:
+    """The model, solver, start configuration and random generator of one command.
+
+    Attributes:
+        robot: The description.
+        space: Joint space solved on (with the planar base for ``with_base``).
+        solver: The IK solver for the chain of the frame.
+        start: Full configuration to start from.
+        deg: Angles in degrees for the user.
+        notes: Lines for stderr: the frame picked, start values clamped.
+    """
+
+    def __init__(self, problem: IkProblem, clock: Clock) -> None:
+        """Load the robot and build everything a solve needs.
+
+        Raises:
+            DescriptionError: The robot cannot be loaded.
+            FrameNotFound: The frame is not a link.
+            JointNotFound, OutOfLimits: A bad start value (without ``clamp``).
+        """
+        robot = load(problem.robot)
+        frame, note = pick_frame(robot, problem.frame)
+        model = robot.model_with_base("planar") if problem.with_base else robot.model
+        space = JointSpace.of(model, robot.movable_joints) if problem.with_base \
+            else robot.joint_space
+        chain = Chain(model, space, frame, link_names(robot))
+        values, clamped = clamped_user_vector(space, problem.start, deg=problem.deg,
+                                              clamp=problem.clamp)
+        # a start is a starting point: joints it does not name start inside their limits
+        self.robot: RobotDescription = robot
+        self.space = space
+        self.solver = IkSolver(chain, problem.settings)
+        self.start: FloatArray = space.to_q(space.clamped(values))
+        self.deg = problem.deg
+        self.notes = (*((note,) if note else ()), *(c.note() for c in clamped))
+        self._rng = np.random.default_rng(problem.seed)
+        self._clock = clock
+
+    @property
+    def frame(self) -> str:
+        """The frame solved for."""
+        return self.solver.chain.frame_name
+
+    def solve(self, target: IkTarget, start: FloatArray) -> IkOutcome:
+        """Solve from ``start``; with a hint when the target was not reached."""
+        begin = self._clock()
+        result = self.solver.solve(target, start, self._rng)
+        elapsed_s = self._clock() - begin
+        why = None if result.success else hint(self.solver, target, start, self._rng)
+        return IkOutcome(result, elapsed_s, why)
+
+    def values(self, outcome: IkOutcome) -> JsonObject:
+        """``outcome`` as JSON values in the user's units (see :func:`outcome_values`)."""
+        return outcome_values(self.space, outcome, self.deg)
+
+
+@dataclass(frozen=True)
+class IkAnswer:
+    """The answer to one target.
+
+    Attributes:
+        robot: The robot's name.
+        frame: The frame moved.
+        relative_to: The frame the target is in (the root link).
+        target: The target.
+        space: The joint space solved on (names, units and limits for the report).
+        outcome: The solve.
+        deg: Angles in degrees for the user.
+        notes: Lines for stderr: the frame picked, start values clamped.
+    """
+
+    robot: str
+    frame: str
+    relative_to: str
+    target: IkTarget
+    space: JointSpace = field(repr=False)
+    outcome: IkOutcome
+    deg: bool = False
+    notes: tuple[str, ...] = ()
+
+    @property
+    def success(self) -> bool:
+        """The target was reached."""
+        return self.outcome.success
+
+
+def run(request: IkRequest, *, clock: Clock) -> IkAnswer:
+    """Solve one target, from the request's start configuration.
+
+    Raises:
+        DescriptionError, FrameNotFound, JointNotFound, OutOfLimits: As :class:`IkSession`.
+        BadTarget: A malformed target or orientation axes.
+    """
+    spec, problem = request.target, request.problem
+    has_orientation = spec.rpy is not None or spec.quat is not None
+    axes = parse_axes(spec.axes, has_orientation)
+    session = IkSession(problem, clock)
+    target = make_target(spec.position_m, rpy=spec.rpy, quat=spec.quat, deg=problem.deg,
+                         axes=axes)
+    return IkAnswer(session.robot.name, session.frame, session.robot.root_link or "", target,
+                    session.space, session.solve(target, session.start), problem.deg,
+                    session.notes)
+
+
+def base_pose(space: JointSpace, q: FloatArray) -> tuple[float, float, float] | None:
+    """Where a planar base stands in ``q``: ``x`` [m], ``y`` [m], ``yaw`` [rad]; None without."""
+    if not space.base_nq:
+        return None
+    return float(q[0]), float(q[1]), math.atan2(q[3], q[2])
+
+
+def outcome_values(space: JointSpace, outcome: IkOutcome, deg: bool) -> JsonObject:
+    """A solve as JSON values: joints (and base) in the user's units, errors, effort, hint."""
+    result = outcome.result
+    pose = base_pose(space, result.q)
+    base: JsonObject | None = None
+    if pose is not None:
+        x, y, yaw = pose
+        base = {"x_m": x, "y_m": y,
+                f"yaw_{'deg' if deg else 'rad'}": math.degrees(yaw) if deg else yaw}
+    return {"success": result.success,
+            "joints": user_values(space, space.from_q(result.q), deg=deg),
+            "base": base, "position_error_m": result.position_error_m,
+            "orientation_error_rad": result.orientation_error_rad,
+            "iterations": result.iterations, "attempts": result.attempts,
+            "solutions": result.solutions, "solve_time_s": outcome.elapsed_s,
+            "hint": outcome.hint}

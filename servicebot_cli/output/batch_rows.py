@@ -1,0 +1,99 @@
+"""Writing batch results one line at a time: JSON Lines or CSV, to stdout or a file.
+
+A file is written atomically (see :mod:`servicebot_cli.common.files`): if the run stops on a
+bad line or is interrupted (Ctrl-C, SIGTERM, SIGHUP), the file is not created (or keeps its
+old content). Results stream: each is written as soon as it is computed.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import csv
+import json
+import sys
+from collections.abc import Iterator, Sequence
+from pathlib import Path
+from typing import IO
+
+from servicebot_cli.batch.reading import CSV_SUFFIXES, JSONL_SUFFIXES
+from servicebot_cli.batch.stream import RowKind, WriteRow
+from servicebot_cli.common.files import OutputError, atomic_output
+from servicebot_cli.kinematics.json_types import JsonObject, JsonValue
+
+OUTPUT_SUFFIXES = (*CSV_SUFFIXES, *JSONL_SUFFIXES)
+"""Extensions ``-o/--output`` accepts: the format comes from them."""
+
+
+def output_kind(output: str | None, fmt: str) -> RowKind:
+    """``csv`` or ``jsonl``: from the output file's extension, else from ``--format``.
+
+    On stdout, ``--format json`` gives JSON Lines and ``text`` gives CSV.
+
+    Raises:
+        OutputError: An output file whose extension names neither format.
+    """
+    if output and output != "-":
+        suffix = Path(output).suffix.lower()
+        if suffix in CSV_SUFFIXES:
+            return "csv"
+        if suffix in JSONL_SUFFIXES:
+            return "jsonl"
+        raise OutputError(f"{output}: cannot tell the format from '{suffix or 'no extension'}'; "
+                          "name it .csv or .jsonl")
+    return "jsonl" if fmt == "json" else "csv"
+
+
+class RowFile:
+    """A batch's results: a file written atomically, or stdout (None or ``-``)."""
+
+    def __init__(self, output: str | None, fmt: str) -> None:
+        """Write to ``output`` in the format its extension names, or per ``fmt`` on stdout.
+
+        Raises:
+            OutputError: An output file whose extension names neither format.
+        """
+        self.output = None if output in (None, "-") else output
+        self._kind = output_kind(self.output, fmt)
+
+    @property
+    def kind(self) -> RowKind:
+        """``csv`` or ``jsonl``."""
+        return self._kind
+
+    @contextlib.contextmanager
+    def open(self, columns: Sequence[str]) -> Iterator[WriteRow]:
+        """A function that writes one result row (a dict with ``columns`` as keys).
+
+        A file appears (replacing an old one) only when the block ends without an error.
+        """
+        if self.output is None:
+            yield _writer(sys.stdout, self._kind, columns, ",")
+            sys.stdout.flush()
+            return
+        delimiter = "\t" if self.output.lower().endswith(".tsv") else ","
+        with atomic_output(self.output) as handle:
+            yield _writer(handle, self._kind, columns, delimiter)
+
+
+def _writer(handle: IO[str], kind: RowKind, columns: Sequence[str], delimiter: str) -> WriteRow:
+    if kind == "jsonl":
+        dumps, write = json.dumps, handle.write
+
+        def write_json(row: JsonObject) -> None:
+            write(dumps(row, allow_nan=False) + "\n")
+
+        return write_json
+    writer = csv.writer(handle, delimiter=delimiter, lineterminator="\n")
+    writer.writerow(columns)
+    keys = list(columns)
+
+    def write_csv(row: JsonObject) -> None:
+        writer.writerow([_cell(row.get(key)) for key in keys])
+
+    return write_csv
+
+
+def _cell(value: JsonValue) -> JsonValue:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return "" if value is None else value
