@@ -44,13 +44,20 @@ class RobotSource:
         return cls(path=path, display=display_path(path))
 
     @classmethod
-    def of(cls, path: str | os.PathLike[str], **kwargs: object) -> RobotSource:
+    def of(cls, path: str | os.PathLike[str], *, xacro_args: tuple[tuple[str, str], ...] = (),
+           packages: tuple[tuple[str, str], ...] = ()) -> RobotSource:
         """A source for a path given by the user."""
-        return cls(path=Path(path), display=str(path), **kwargs)  # type: ignore[arg-type]
+        return cls(path=Path(path), display=str(path), xacro_args=xacro_args,
+                   packages=packages)
 
     def resolver(self) -> PackageResolver:
-        """Package search for this source: ``--package`` first, then the environment."""
-        return PackageResolver.from_environment({k: Path(v) for k, v in self.packages})
+        """Package search for this source.
+
+        ``--package`` first, then the file's own package and workspace, then the environment
+        (see :mod:`~servicebot_cli.description.packages`).
+        """
+        return PackageResolver.from_environment({k: Path(v) for k, v in self.packages},
+                                                context=self.path.parent)
 
 
 def read_bytes(path: Path, display: str, max_bytes: int = MAX_BYTES) -> bytes:

@@ -1,16 +1,27 @@
 """Find ROS packages without ROS: ``$(find pkg)`` and ``package://pkg/...``.
 
-Search order, first hit wins:
+One resolver for every command. A package is looked for, first hit wins:
 
 1. ``--package NAME=DIR`` given by the user;
-2. ``ROS_PACKAGE_PATH``: each entry is a package or a tree holding packages
-   (a directory with a ``package.xml``; its ``<name>`` or, failing that, the directory name);
-3. ``AMENT_PREFIX_PATH``: ``PREFIX/share/NAME`` where the ament index lists ``NAME``
-   (or the directory simply exists).
+2. the package that holds the file: the nearest ``package.xml`` above it, by its ``<name>``;
+3. every package of the enclosing workspace: ``package.xml`` files under the colcon workspace
+   (the directory whose ``src/`` holds the file) or else the repository root, skipping trees
+   marked ``COLCON_IGNORE``, ``AMENT_IGNORE`` or ``CATKIN_IGNORE``;
+4. ``ROS_PACKAGE_PATH``: each entry a package or a tree of packages;
+5. ``AMENT_PREFIX_PATH``: ``PREFIX/share/NAME``;
+6. a directory called NAME in a directory of those two paths (Pinocchio's convention).
+
+Steps 1-5 are how ROS finds packages. What only some loaders accept resolves too, with a
+warning that ROS would not find it: a directory called NAME above the file (Pinocchio and
+yourdfpy search directory names: example-robot-data's ``package://example-robot-data/``),
+``NAME/...`` beside the file or one of its parents (pybullet's ``package://meshes/...``), and
+``package:///abs/path``. Relative directories are made absolute once, against the current
+directory. Every lookup remembers how it was answered (:attr:`PackageResolver.found`).
 """
 
 from __future__ import annotations
 
+import functools
 import os
 import re
 from collections.abc import Mapping
@@ -21,35 +32,84 @@ from urllib.parse import unquote, urlparse
 from servicebot_cli.common.errors import PackageNotFound
 
 _NAME_RE = re.compile(rb"<name>\s*([^<\s]+)\s*</name>")
-_CRAWL_DEPTH = 6  # deep enough for src/<group>/<repo>/<pkg>, shallow enough to stay instant
-_SKIP_DIRS = {"build", "install", "log", "node_modules", "__pycache__"}
+_CRAWL_DEPTH = 8  # src/<group>/<repo>/<pkg> and deeper vendored trees, and still instant
+_SKIP_DIRS = {"build", "install", "log", "node_modules", "__pycache__", "site-packages"}
+_IGNORE_MARKERS = ("COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE")
+_CRAWL_BUDGET = 5000  # directories visited under one root: a home directory stays instant
+REMOTE_SCHEMES = ("http://", "https://")
+
+
+@dataclass(frozen=True)
+class PackageLocation:
+    """Where a package was found, and how.
+
+    Attributes:
+        name: The package name asked for.
+        path: Its directory.
+        how: How it was found, for people: ``"--package"``, ``"workspace /ws (package.xml)"``...
+        ros_finds_it: Whether ROS (``ros2 pkg prefix``, robot_state_publisher, Gazebo) would
+            find it the same way; False for what only some loaders accept.
+    """
+
+    name: str
+    path: Path
+    how: str
+    ros_finds_it: bool = True
+
+    @property
+    def warning(self) -> str | None:
+        """Why ROS would not find it, or None."""
+        if self.ros_finds_it:
+            return None
+        return (f"package '{self.name}' resolves only as {self.how}; ROS finds packages by "
+                "the <name> of their package.xml on its package paths, so ROS tools would "
+                "not find it")
 
 
 @dataclass(frozen=True)
 class PackageResolver:
-    """Resolves package names to directories.
+    """Resolves package names to directories, as ROS and the common loaders do.
 
     Attributes:
-        explicit: ``--package`` mappings, name to directory.
-        ros_package_path: Directories from ``ROS_PACKAGE_PATH``.
-        ament_prefix_path: Prefixes from ``AMENT_PREFIX_PATH``.
+        explicit: ``--package`` mappings, name to directory (absolute).
+        ros_package_path: Directories from ``ROS_PACKAGE_PATH`` (absolute).
+        ament_prefix_path: Prefixes from ``AMENT_PREFIX_PATH`` (absolute).
+        context: The directory of the file being read: where its package and workspace are
+            looked for. None: only the paths above.
+        found: Every package resolved so far, by name (filled as lookups happen).
     """
 
     explicit: Mapping[str, Path] = field(default_factory=dict)
     ros_package_path: tuple[Path, ...] = ()
     ament_prefix_path: tuple[Path, ...] = ()
+    context: Path | None = None
+    found: dict[str, PackageLocation] = field(default_factory=dict, compare=False)
 
     @classmethod
     def from_environment(
-        cls, explicit: Mapping[str, Path] | None = None, environ: Mapping[str, str] | None = None
+        cls, explicit: Mapping[str, Path] | None = None, environ: Mapping[str, str] | None = None,
+        context: Path | None = None,
     ) -> PackageResolver:
-        """Build a resolver from ``--package`` mappings and the environment."""
+        """Build a resolver from ``--package`` mappings and the environment.
+
+        Args:
+            explicit: ``--package`` mappings; relative directories are relative to the current
+                directory.
+            environ: The environment (default: this process's).
+            context: The directory of the file being read, if any.
+        """
         env = os.environ if environ is None else environ
         return cls(
-            explicit=dict(explicit or {}),
+            explicit={name: Path(path).absolute() for name, path in (explicit or {}).items()},
             ros_package_path=_split_path(env.get("ROS_PACKAGE_PATH", "")),
             ament_prefix_path=_split_path(env.get("AMENT_PREFIX_PATH", "")),
+            context=None if context is None else Path(context).absolute(),
         )
+
+    def for_directory(self, directory: Path) -> PackageResolver:
+        """The same search for a file in ``directory`` (an included file, another robot)."""
+        return PackageResolver(self.explicit, self.ros_package_path, self.ament_prefix_path,
+                               directory.absolute(), self.found)
 
     def find(self, name: str) -> Path:
         """Directory of package ``name`` (its share directory for ament installs).
@@ -57,38 +117,114 @@ class PackageResolver:
         Raises:
             PackageNotFound: Naming the package and every place searched.
         """
-        if name in self.explicit:
-            return self.explicit[name]
-        for root in self.ros_package_path:
-            found = _crawl(root, name)
-            if found is not None:
-                return found
-        for prefix in self.ament_prefix_path:
-            share = prefix / "share" / name
-            if share.is_dir():
-                return share
-        raise PackageNotFound(f"package '{name}' not found; looked in {self._searched()}")
+        return self.locate(name, self.context).path
+
+    def locate(self, name: str, context: Path | None = None) -> PackageLocation:
+        """Where package ``name`` is and how it was found, for a file in ``context``.
+
+        Raises:
+            PackageNotFound: Naming the package and every place searched.
+        """
+        location = self._ros_location(name, context) or self._loader_location(name, context)
+        if location is None:
+            raise PackageNotFound(f"package '{name}' not found; looked in "
+                                  f"{self._searched(context)}")
+        self.found.setdefault(name, location)
+        return location
 
     def resolve_uri(self, uri: str, base_dir: Path) -> Path:
         """File path for a mesh or include reference.
 
         Args:
-            uri: ``package://pkg/rel``, ``file:///abs``, an absolute path or a relative path.
-            base_dir: Directory that relative paths are relative to (the URDF's own).
+            uri: ``package://pkg/rel``, ``package:///abs``, ``file:///abs``, an absolute
+                path or a relative path.
+            base_dir: Directory of the file that holds the reference (relative paths and the
+                file's own package and workspace start there).
+
+        Raises:
+            PackageNotFound: A ``package://`` reference to a package that is nowhere.
         """
         if uri.startswith("package://"):
-            rest = uri[len("package://") :]
-            name, _, rel = rest.partition("/")
-            return self.find(name) / unquote(rel)
+            name, _, rel = uri[len("package://"):].partition("/")
+            rel = unquote(rel)
+            if not name:  # package:///abs: some loaders read it as a plain path
+                self.found.setdefault("", PackageLocation(
+                    "", Path("/"), "package:/// (an absolute path)", ros_finds_it=False))
+                return Path("/") / rel
+            location = (self._ros_location(name, base_dir)
+                        or self._loader_location(name, base_dir)
+                        or self._relative_location(name, rel, base_dir))
+            if location is None:
+                raise PackageNotFound(f"package '{name}' not found; looked in "
+                                      f"{self._searched(base_dir)}")
+            self.found.setdefault(name, location)
+            return location.path / rel
         if uri.startswith("file://"):
             return Path(unquote(urlparse(uri).path))
         path = Path(uri).expanduser()
         return path if path.is_absolute() else base_dir / path
 
-    def _searched(self) -> str:
+    def warnings(self) -> list[str]:
+        """One line per package found only the way some loaders find it."""
+        return [w for location in self.found.values() if (w := location.warning)]
+
+    # -- the search, step by step ------------------------------------------------------------
+
+    def _ros_location(self, name: str, context: Path | None) -> PackageLocation | None:
+        if name in self.explicit:
+            return PackageLocation(name, self.explicit[name], "--package")
+        if context is not None:
+            holder = holding_package(context)
+            if holder is not None and holder[0] == name:
+                return PackageLocation(name, holder[1], f"the package holding the file "
+                                       f"({_short(holder[1] / 'package.xml')})")
+            root = workspace_root(context)
+            if root is not None:
+                path = packages_under(root).get(name)
+                if path is not None:
+                    return PackageLocation(name, path, f"workspace {_short(root)} "
+                                           f"({_short(path / 'package.xml')})")
+        for entry in self.ros_package_path:
+            path = packages_under(entry).get(name)
+            if path is not None:
+                return PackageLocation(name, path, f"ROS_PACKAGE_PATH entry {_short(entry)}")
+        for prefix in self.ament_prefix_path:
+            share = prefix / "share" / name
+            if share.is_dir():
+                return PackageLocation(name, share, f"AMENT_PREFIX_PATH prefix {_short(prefix)}")
+        for directory in (*self.ros_package_path, *(p / "share" for p in self.ament_prefix_path)):
+            if (directory / name).is_dir():
+                return PackageLocation(name, directory / name,
+                                       f"directory {name} in {_short(directory)}")
+        return None
+
+    def _loader_location(self, name: str, context: Path | None) -> PackageLocation | None:
+        """A directory called ``name`` above the file (Pinocchio's and yourdfpy's way)."""
+        if context is None:
+            return None
+        for ancestor in (context, *context.parents):
+            if ancestor.name == name:
+                return PackageLocation(name, ancestor, f"the directory {_short(ancestor)} "
+                                       "above the file", ros_finds_it=False)
+        return None
+
+    def _relative_location(self, name: str, rel: str, base_dir: Path) -> PackageLocation | None:
+        """``NAME/rel`` beside the file or one of its parents (pybullet's way)."""
+        for ancestor in (base_dir, *base_dir.parents):
+            if (ancestor / name / rel).exists():
+                return PackageLocation(name, ancestor / name, f"the directory "
+                                       f"{_short(ancestor / name)} beside the file",
+                                       ros_finds_it=False)
+        return None
+
+    def _searched(self, context: Path | None) -> str:
         places = []
         if self.explicit:
             places.append("--package " + ", ".join(sorted(self.explicit)))
+        if context is not None:
+            root = workspace_root(context)
+            places.append(f"the workspace {_short(root)}" if root is not None
+                          else f"the packages above {_short(context)}")
         places.append(
             "ROS_PACKAGE_PATH=" + (":".join(map(str, self.ros_package_path)) or "(unset)")
         )
@@ -98,12 +234,40 @@ class PackageResolver:
         return "; ".join(places) + "; give its directory with --package NAME=DIR"
 
 
-def _split_path(value: str) -> tuple[Path, ...]:
-    return tuple(Path(p) for p in value.split(os.pathsep) if p)
+def is_remote(uri: str) -> bool:
+    """Whether ``uri`` is fetched over the network (Gazebo Fuel meshes): never 'missing'."""
+    return uri.lower().startswith(REMOTE_SCHEMES)
 
 
-def _package_name(directory: Path) -> str | None:
-    """The package's name if ``directory`` holds a package.xml, else None."""
+def holding_package(directory: Path) -> tuple[str, Path] | None:
+    """The name and directory of the nearest package at or above ``directory``."""
+    for ancestor in (directory, *directory.parents):
+        name = package_name(ancestor)
+        if name is not None:
+            return name, ancestor
+    return None
+
+
+def workspace_root(directory: Path) -> Path | None:
+    """Where the packages of ``directory``'s workspace are looked for.
+
+    The colcon workspace (the directory whose ``src/`` holds ``directory``), else the
+    repository root (the nearest directory with ``.git``), else the directory above the
+    package that holds ``directory``; None when there is none of these.
+    """
+    ancestors = (directory, *directory.parents)
+    for ancestor in ancestors:
+        if ancestor.name == "src" and ancestor.parent != ancestor:
+            return ancestor.parent
+    for ancestor in ancestors:
+        if (ancestor / ".git").exists():
+            return ancestor
+    holder = holding_package(directory)
+    return None if holder is None else holder[1].parent
+
+
+def package_name(directory: Path) -> str | None:
+    """The package's ``<name>`` if ``directory`` holds a package.xml, else None."""
     manifest = directory / "package.xml"
     try:
         head = manifest.read_bytes()[:65536]
@@ -113,24 +277,47 @@ def _package_name(directory: Path) -> str | None:
     return match.group(1).decode("utf-8", "replace") if match else directory.name
 
 
-def _crawl(root: Path, name: str) -> Path | None:
-    """Breadth-first search under ``root`` for package ``name``; packages do not nest."""
+@functools.lru_cache(maxsize=64)
+def packages_under(root: Path) -> dict[str, Path]:
+    """Every package at or under ``root`` by name, nearest first; packages do not nest.
+
+    Hidden directories, build products and trees marked ``COLCON_IGNORE``, ``AMENT_IGNORE``
+    or ``CATKIN_IGNORE`` are skipped, as colcon skips them. Cached for the process.
+    """
+    found: dict[str, Path] = {}
     frontier = [root]
+    budget = _CRAWL_BUDGET
     for _ in range(_CRAWL_DEPTH):
-        next_frontier = []
+        next_frontier: list[Path] = []
         for directory in frontier:
-            found = _package_name(directory)
-            if found is not None:
-                if found == name:
-                    return directory
+            budget -= 1
+            if budget < 0:
+                return found
+            if any((directory / marker).exists() for marker in _IGNORE_MARKERS):
+                continue
+            name = package_name(directory)
+            if name is not None:
+                found.setdefault(name, directory)
                 continue
             try:
                 children = sorted(os.scandir(directory), key=lambda e: e.name)
             except OSError:
                 continue
-            for entry in children:
-                hidden = entry.name.startswith(".") or entry.name in _SKIP_DIRS
-                if entry.is_dir() and not hidden:
-                    next_frontier.append(Path(entry.path))
+            next_frontier.extend(
+                Path(entry.path) for entry in children
+                if entry.is_dir() and not entry.name.startswith(".")
+                and entry.name not in _SKIP_DIRS)
         frontier = next_frontier
-    return None
+    return found
+
+
+def _split_path(value: str) -> tuple[Path, ...]:
+    return tuple(Path(p).absolute() for p in value.split(os.pathsep) if p)
+
+
+def _short(path: Path) -> str:
+    """``path`` relative to the current directory when inside it."""
+    try:
+        return str(path.relative_to(Path.cwd())) or "."
+    except ValueError:
+        return str(path)
