@@ -121,8 +121,8 @@ class Chain:
         import pinocchio as pin
 
         if self.vector_space:
-            return self.lower + (self.upper - self.lower) * rng.random(self.model.nq)
-        q = pin.neutral(self.model)
+            return self.lower + (self.upper - self.lower) * rng.random(int(self.model.nq))
+        q: FloatArray = pin.neutral(self.model)
         bounded = np.isfinite(self.lower)
         q[bounded] = rng.uniform(self.lower[bounded], self.upper[bounded])
         for j in range(1, self.model.njoints):

@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.kinematics.residuals import residual_for
+from servicebot_cli.kinematics.residuals import Residual, residual_for
 
 if TYPE_CHECKING:
     from servicebot_cli.kinematics.chain import Chain
@@ -159,7 +159,7 @@ class IkSolver:
 
         return float(np.linalg.norm(pin.difference(self.chain.model, start, q)))
 
-    def _descend(self, residual: object, q: FloatArray,
+    def _descend(self, residual: Residual, q: FloatArray,
                  hold_base: bool) -> tuple[FloatArray, float, int, bool]:
         """One attempt: damped least-squares steps from ``q`` until converged or stalled.
 
@@ -169,9 +169,9 @@ class IkSolver:
         Returns:
             The best ``q`` of the attempt, its squared error, iterations used, and success.
         """
-        evaluate, within = residual.evaluate, self._within  # type: ignore[attr-defined]
+        evaluate, within = residual.evaluate, self._within
         step_of, move = self._step, self._move
-        residual.reset(q)  # type: ignore[attr-defined]
+        residual.reset(q)
         gate2 = self._gate2
         earlier = previous = math.inf
         best_q, best_err2 = q, math.inf
@@ -190,7 +190,7 @@ class IkSolver:
             q = move(q, step_of(jacobian, error, _DAMPING * err2 + _DAMPING_FLOOR), residual)
         return best_q, float(best_err2), iteration, False
 
-    def _settle(self, residual: object, q: FloatArray) -> tuple[FloatArray, int, bool]:
+    def _settle(self, residual: Residual, q: FloatArray) -> tuple[FloatArray, int, bool]:
         """Levenberg-Marquardt with step acceptance from ``q`` into the nearest minimum.
 
         Only for solves that failed: a step that does not lower the error is undone and the
@@ -199,14 +199,14 @@ class IkSolver:
         Returns:
             The settled ``q``, iterations used, and whether it met the tolerance after all.
         """
-        residual.reset(q)  # type: ignore[attr-defined]
-        error, jacobian = residual.evaluate(q)  # type: ignore[attr-defined]
+        residual.reset(q)
+        error, jacobian = residual.evaluate(q)
         err2 = error.dot(error)
         damping = _DAMPING * err2 + _DAMPING_FLOOR
         for iteration in range(1, self.settings.max_iterations + 1):
             step = self._step(jacobian, error, damping)
             candidate = self._move(q, step, residual)
-            new_error, new_jacobian = residual.evaluate(candidate)  # type: ignore[attr-defined]
+            new_error, new_jacobian = residual.evaluate(candidate)
             new2 = new_error.dot(new_error)
             if new2 < err2:
                 if new2 <= self._gate2 and self._within(residual):
@@ -217,9 +217,9 @@ class IkSolver:
                 if done:
                     break
             else:
-                extra = residual.extra  # type: ignore[attr-defined]
+                extra = residual.extra
                 if extra:
-                    residual.shift(-step[-extra:])  # type: ignore[attr-defined]
+                    residual.shift(-step[-extra:])
                 damping *= 4
                 if damping > 1e9:
                     break
@@ -228,6 +228,7 @@ class IkSolver:
     def _step(self, jacobian: FloatArray, error: FloatArray, damping: float) -> FloatArray:
         """The damped least-squares step, capped at :data:`_MAX_STEP`."""
         rows, cols = jacobian.shape
+        step: FloatArray
         if rows <= cols:
             factor = self._factor[rows]
             factor.compute(np.dot(jacobian, jacobian.T) + damping * self._eye[rows])
@@ -241,21 +242,21 @@ class IkSolver:
             step *= _MAX_STEP / math.sqrt(size2)
         return step
 
-    def _move(self, q: FloatArray, step: FloatArray, residual: object) -> FloatArray:
+    def _move(self, q: FloatArray, step: FloatArray, residual: Residual) -> FloatArray:
         """``q`` moved by the joints' part of ``step``, projected into the limits.
 
         The rest of ``step`` moves the residual's own unknowns (free angles).
         """
-        extra = residual.extra  # type: ignore[attr-defined]
+        extra = residual.extra
         if extra:
-            residual.shift(step[-extra:])  # type: ignore[attr-defined]
+            residual.shift(step[-extra:])
             step = step[:-extra]
         q = q + step if self._integrate is None else self._integrate(self.chain.model, q, step)
         np.maximum(q, self.chain.lower, out=q)
         np.minimum(q, self.chain.upper, out=q)
         return q
 
-    def _within(self, residual: object) -> bool:
-        position, orientation = residual.errors()  # type: ignore[attr-defined]
+    def _within(self, residual: Residual) -> bool:
+        position, orientation = residual.errors()
         return position <= self.settings.tolerance_m and (
             orientation is None or orientation <= self.settings.tolerance_rad)

@@ -25,13 +25,20 @@ import numpy.typing as npt
 from servicebot_cli.kinematics.rotations import AXES, rpy_from_matrix
 
 if TYPE_CHECKING:
+    import pinocchio as pin
+
     from servicebot_cli.kinematics.chain import Chain
 
 FloatArray = npt.NDArray[np.float64]
 
 
-class _Residual:
-    """Shared set-up: the chain, the target, the frame pose of the last evaluation."""
+class Residual:
+    """Shared set-up: the chain, the target, the frame pose of the last evaluation.
+
+    Attributes:
+        extra: Unknowns besides the joints (free angles of orientation).
+        last_q: The configuration of the last evaluation.
+    """
 
     extra = 0  # unknowns besides the joints (free angles of orientation)
 
@@ -46,21 +53,26 @@ class _Residual:
         self._pose = pin.SE3.Identity()
         self.last_q: FloatArray | None = None
 
-    def _kinematics(self, q: FloatArray, reference: object) -> FloatArray:
+    def _kinematics(self, q: FloatArray, reference: pin.ReferenceFrame) -> FloatArray:
         """Forward kinematics and the frame Jacobian; remembers ``q`` and the frame pose."""
         pin = self._pin
         self.last_q = q
         pin.computeJointJacobians(self._model, self._data, q)
         self._pose = pin.updateFramePlacement(self._model, self._data, self._frame)
         # (6, nv) even for one joint, which eigenpy would hand back as a flat vector
-        return pin.getFrameJacobian(self._model, self._data, self._frame, reference).reshape(
-            6, self._model.nv)
+        jacobian: FloatArray = pin.getFrameJacobian(self._model, self._data, self._frame,
+                                                    reference).reshape(6, self._model.nv)
+        return jacobian
 
     def reset(self, q: FloatArray) -> None:
         """Prepare an attempt that starts at ``q`` (only :class:`SomeAxes` has state)."""
 
     def shift(self, step: FloatArray) -> None:
         """Move the extra unknowns (only :class:`SomeAxes` has any)."""
+
+    def evaluate(self, q: FloatArray) -> tuple[FloatArray, FloatArray]:
+        """``(e, J)`` at ``q``: the error to drive to zero and its Jacobian."""
+        raise NotImplementedError
 
     def position_error_m(self) -> float:
         """Distance from the frame to the target position [m], at the last evaluation."""
@@ -72,7 +84,7 @@ class _Residual:
         raise NotImplementedError
 
 
-class FullPose(_Residual):
+class FullPose(Residual):
     """Position and all three angles of orientation."""
 
     def __init__(self, chain: Chain, position_m: FloatArray, rotation: FloatArray) -> None:
@@ -91,7 +103,7 @@ class FullPose(_Residual):
         return self.position_error_m(), math.sqrt(angle.dot(angle))
 
 
-class PositionOnly(_Residual):
+class PositionOnly(Residual):
     """Position only: orientation is free."""
 
     def __init__(self, chain: Chain, position_m: FloatArray) -> None:
@@ -108,7 +120,7 @@ class PositionOnly(_Residual):
         return self.position_error_m(), None
 
 
-class SomeAxes(_Residual):
+class SomeAxes(Residual):
     r"""Position and some of roll, pitch and yaw; the other angles are free.
 
     The free angles become unknowns of their own, beside the joints: the target is
@@ -125,7 +137,7 @@ class SomeAxes(_Residual):
                  axes: tuple[str, ...]) -> None:
         super().__init__(chain, position_m, rotation)
         self._free = [k for k, axis in enumerate(AXES) if axis not in axes]
-        self._angles = rpy_from_matrix(self._rotation)
+        self._angles = rpy_from_matrix(np.array(rotation, dtype=float))
         self._local = self._pin.ReferenceFrame.LOCAL
         self.extra = len(self._free)
         self._target = self._pin.SE3(self._rotation, self._position)

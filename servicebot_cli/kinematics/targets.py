@@ -13,12 +13,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from typing import Any
 
 import numpy as np
 
 from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.kinematics.inverse import IkTarget
+from servicebot_cli.kinematics.json_types import JsonValue
 from servicebot_cli.kinematics.rotations import (
     AXES,
     BadRotation,
@@ -76,9 +76,12 @@ def make_target(position: Sequence[float], *, rpy: Sequence[float] | None = None
         if not math.isfinite(value):
             raise BadTarget(f"target value {value} is not a finite number")
     try:
-        rotation = None if rpy is None and quat is None else (
-            matrix_from_quaternion(np.array(quat)) if quat is not None else
-            matrix_from_rpy(np.radians(rpy) if deg else np.array(rpy, dtype=float)))
+        rotation = None
+        if quat is not None:
+            rotation = matrix_from_quaternion(np.array(quat, dtype=float))
+        elif rpy is not None:
+            angles = np.array(rpy, dtype=float)
+            rotation = matrix_from_rpy(np.radians(angles) if deg else angles)
     except BadRotation as exc:
         raise BadTarget(str(exc)) from None
     chosen = (AXES if rotation is not None else ()) if axes is None else axes
@@ -88,7 +91,7 @@ def make_target(position: Sequence[float], *, rpy: Sequence[float] | None = None
     return IkTarget(np.array(position, dtype=float), rotation, chosen)
 
 
-def row_target(values: Mapping[str, Any], frame: str, *, deg: bool,
+def row_target(values: Mapping[str, JsonValue], frame: str, *, deg: bool,
                axes: tuple[str, ...] | None) -> IkTarget:
     """A target from a batch line (CSV cells or a JSON object).
 
@@ -111,16 +114,17 @@ def row_target(values: Mapping[str, Any], frame: str, *, deg: bool,
     return make_target(position, axes=axes)
 
 
-def _flatten(values: Mapping[str, Any], frame: str) -> dict[str, Any]:
+def _flatten(values: Mapping[str, JsonValue], frame: str) -> dict[str, JsonValue]:
     """Flat ``name: value`` from CSV cells or JSON (lists, fk's ``poses``, frame prefixes)."""
-    if isinstance(values.get("poses"), list):
-        poses = [p for p in values["poses"] if isinstance(p, dict)]
+    listed = values.get("poses")
+    if isinstance(listed, list):
+        poses = [p for p in listed if isinstance(p, dict)]
         match = [p for p in poses if p.get("frame") == frame] or (poses if len(poses) == 1
                                                                  else [])
         if not match:
             raise BadTarget(f"the line's poses have no frame '{frame}'")
         values = match[0]
-    flat: dict[str, Any] = {}
+    flat: dict[str, JsonValue] = {}
     prefix = f"{frame}."
     for key, value in values.items():
         key = key[len(prefix):] if key.startswith(prefix) else key
@@ -134,7 +138,7 @@ def _flatten(values: Mapping[str, Any], frame: str) -> dict[str, Any]:
     return flat
 
 
-def _first_present(flat: Mapping[str, Any], options: Sequence[Sequence[str]],
+def _first_present(flat: Mapping[str, JsonValue], options: Sequence[Sequence[str]],
                    what: str) -> Sequence[str]:
     for keys in options:
         if all(k in flat for k in keys):
@@ -142,5 +146,5 @@ def _first_present(flat: Mapping[str, Any], options: Sequence[Sequence[str]],
     raise BadTarget(f"the line has no {what}")
 
 
-def _numbers(flat: Mapping[str, Any], keys: Sequence[str]) -> list[float]:
+def _numbers(flat: Mapping[str, JsonValue], keys: Sequence[str]) -> list[float]:
     return [number(flat[k], f"'{k}'") for k in keys]

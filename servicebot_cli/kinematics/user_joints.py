@@ -9,12 +9,13 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.common.errors import OutOfLimits, ServicebotError
+from servicebot_cli.kinematics.json_types import JsonValue
 
 if TYPE_CHECKING:
     from servicebot_cli.description.elements import Joint
@@ -190,7 +191,7 @@ def user_values(space: JointSpace, values: FloatArray, *, deg: bool = False) -> 
     return {name: float(v) for name, v in zip(space.names, shown, strict=True)}
 
 
-def number(value: Any, what: str) -> float:
+def number(value: JsonValue, what: str) -> float:
     """A finite float from a CSV cell (text) or a JSON value (a number).
 
     Raises:
@@ -213,7 +214,8 @@ def number(value: Any, what: str) -> float:
     return float(value)
 
 
-def row_pairs(values: Mapping[str, Any], ignore: Iterable[str] = ()) -> list[tuple[str, float]]:
+def row_pairs(values: Mapping[str, JsonValue],
+              ignore: Iterable[str] = ()) -> list[tuple[str, float]]:
     """``(joint, value)`` pairs of a batch row, each value checked to be a number.
 
     Keys in ``ignore`` (result columns such as ``line`` or ``success``) are left out. All
