@@ -1,19 +1,37 @@
 """``servicebot check``: validate URDF and xacro files, and controller configurations, for CI.
 
 ``check urdf [FILE|DIR]...`` and ``check controllers [YAML]``; ``check FILE...`` is short for
-``check urdf FILE...``. Only Click and the light catalogue are imported here; the rules,
-numpy and Pinocchio load inside the callbacks.
+``check urdf FILE...``. Each subcommand turns its options into a
+:class:`~servicebot_cli.check.run.CheckRequest`, calls :func:`servicebot_cli.check.run.run`
+and hands the result to ``output/findings``. Only Click and the light catalogue are imported
+here; the rules, numpy and Pinocchio load inside the callbacks.
 """
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING
 
 import click
 
-from servicebot_cli.commands.check_options import catalogue_options, report_options
+from servicebot_cli.commands.check_options import (
+    ReportOptions,
+    catalogue_options,
+    refuse_catalogue_mix,
+    report_options,
+    settings_path,
+)
 from servicebot_cli.commands.command import Command, Group
-from servicebot_cli.commands.options import BundledRobot, PackageDir, RobotArgs, robot_arguments
+from servicebot_cli.commands.options import (
+    BundledRobot,
+    PackageDir,
+    RobotArgs,
+    refuse_without,
+    robot_arguments,
+    split_robot_args,
+)
+
+if TYPE_CHECKING:
+    from servicebot_cli.check.run import CheckRequest, SettingsChoice
 
 _GROUP_ONLY = ("-h", "--help", "--list-rules", "--explain")
 
@@ -26,6 +44,7 @@ class CheckGroup(Group):
         first = args[0] if args else ""
         if first not in self.commands and first.split("=")[0] not in _GROUP_ONLY:
             args = ["urdf", *args]
+        refuse_catalogue_mix(self, ctx, args[: self._own_args(ctx, args)])
         return super().parse_args(ctx, args)
 
     def format_help(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
@@ -37,6 +56,15 @@ class CheckGroup(Group):
             self.format_help_text(ctx, formatter)
             urdf_command.format_options(sub, formatter)
         self.format_commands(ctx, formatter)
+
+
+class CheckCommand(Command):
+    """A ``check`` subcommand: ``--list-rules`` and ``--explain`` refuse company."""
+
+    def parse_args(self, ctx: click.Context, args: list[str]) -> list[str]:
+        """Refuse a catalogue option beside anything else, then parse as Command does."""
+        refuse_catalogue_mix(self, ctx, args)
+        return super().parse_args(ctx, args)
 
 
 @click.group(cls=CheckGroup, context_settings={"help_option_names": ["-h", "--help"]})
@@ -56,11 +84,11 @@ def check() -> None:
     """
 
 
-@check.command("urdf", cls=Command)
+@check.command("urdf", cls=CheckCommand)
 @robot_arguments(multiple=True)
 @report_options
 @catalogue_options
-def urdf(robot_args: RobotArgs, **report: Any) -> None:
+def urdf(robot_args: RobotArgs, report: ReportOptions) -> None:
     """Check URDF and xacro files and directories (default: the bundled robot).
 
     \b
@@ -69,25 +97,29 @@ def urdf(robot_args: RobotArgs, **report: Any) -> None:
       servicebot check urdf robots/ --strict --format github
       servicebot check urdf my_robot.urdf.xacro use_gripper:=true --format sarif -o check.sarif
     """
-    from servicebot_cli.commands import check_run
+    from servicebot_cli.check.run import CheckRequest, UrdfTargets
 
-    settings = check_run.settings_for(report)
-    result = check_run.check_urdf_files(robot_args, settings)
-    check_run.emit(result, report["fmt"], report["output"])
+    if robot_args.files and robot_args.bundled:
+        raise click.UsageError(f"give FILEs or --robot {robot_args.bundled}, not both")
+    default = None if robot_args.files else robot_args.source()
+    targets = UrdfTargets(robot_args.files, robot_args.xacro_args, robot_args.packages, default)
+    _run(CheckRequest(targets, _settings(report)), report)
 
 
-@check.command("controllers", cls=Command)
+@check.command("controllers", cls=CheckCommand)
 @click.argument("values", nargs=-1, metavar="[YAML] [NAME:=VALUE]...")
 @click.option("--urdf", "urdfs", multiple=True, type=click.Path(dir_okay=False),
               help="Check against this URDF or xacro (repeatable; default: both bundled robots).")
 @click.option("--robot", "bundled", type=BundledRobot(), default=None,
               help="Check against one bundled robot (sim or real) instead of both.")
 @click.option("--package", "packages", type=PackageDir(), multiple=True, metavar="NAME=DIR",
-              help="Where ROS package NAME lives, for the URDF's $(find) and package://.")
+              help="Where ROS package NAME lives, for the --urdf file's $(find) and package://.")
 @report_options
 @catalogue_options
-def controllers(values: tuple[str, ...], urdfs: tuple[str, ...], bundled: str | None,
-                packages: tuple[tuple[str, str], ...], **report: Any) -> None:
+@click.pass_context
+def controllers(ctx: click.Context, values: tuple[str, ...], urdfs: tuple[str, ...],
+                bundled: str | None, packages: tuple[tuple[str, str], ...],
+                report: ReportOptions) -> None:
     """Check a ros2_control controllers YAML against the URDF (default: the bundled pair).
 
     Joint names in left_wheel_names, right_wheel_names and joints must exist and move;
@@ -98,8 +130,42 @@ def controllers(values: tuple[str, ...], urdfs: tuple[str, ...], bundled: str | 
       servicebot check controllers
       servicebot check controllers config/controllers.yaml --urdf my_robot.urdf.xacro
     """
-    from servicebot_cli.commands import check_run
+    from servicebot_cli.check.run import CheckRequest, ControllerTargets
+    from servicebot_cli.description.loader import RobotSource
 
-    settings = check_run.settings_for(report)
-    result = check_run.check_controller_files(values, urdfs, bundled, packages, settings)
-    check_run.emit(result, report["fmt"], report["output"])
+    yaml_files, xacro_args = split_robot_args(values)
+    if len(yaml_files) > 1:
+        raise click.UsageError(f"one controllers YAML at a time, got {len(yaml_files)}")
+    if urdfs and bundled:
+        raise click.UsageError(f"give --urdf or --robot {bundled}, not both")
+    if xacro_args and not urdfs:
+        raise click.UsageError("xacro arguments need a xacro --urdf FILE")
+    refuse_without(ctx, "--package", "--urdf FILE", name="packages", present=bool(urdfs))
+    sources = tuple(RobotSource.of(u, xacro_args=xacro_args, packages=packages) for u in urdfs)
+    if bundled:
+        sources = (RobotSource.bundled(bundled),)
+    targets = ControllerTargets(yaml_files[0] if yaml_files else None, sources)
+    _run(CheckRequest(targets, _settings(report)), report)
+
+
+def _settings(report: ReportOptions) -> SettingsChoice:
+    """The settings part of a request; ``--config`` and ``--isolated`` exclude each other."""
+    from servicebot_cli.check.run import SettingsChoice
+
+    if report.isolated and report.config:
+        raise click.UsageError("--config has no effect with --isolated (which reads no "
+                               "pyproject.toml); drop one of them")
+    return SettingsChoice(report.select, report.ignore, report.strict, settings_path(report),
+                          report.isolated)
+
+
+def _run(request: CheckRequest, report: ReportOptions) -> None:
+    """Run the check, show the report; the answer is no (exit 1) when the run fails."""
+    from servicebot_cli.check.run import run
+    from servicebot_cli.common.errors import AnswerIsNo
+    from servicebot_cli.output.findings import show
+
+    result = run(request)
+    show(result, report.fmt, report.output)
+    if result.failed:
+        raise AnswerIsNo("")  # the summary line already says so

@@ -1,6 +1,7 @@
 """``check`` findings for people (text), scripts (JSON) and GitHub workflow annotations.
 
-Renderers only render: a CheckResult in, text out. SARIF and JUnit live beside this module.
+Renderers only render: a CheckResult in, text out. SARIF and JUnit live beside this module;
+:func:`show` picks the renderer and writes to stdout or, atomically, to a file.
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from servicebot_cli import __version__
 from servicebot_cli.check.catalogue import RULES
 from servicebot_cli.check.findings import Finding, Severity
 from servicebot_cli.check.result import CheckResult
+from servicebot_cli.common.files import atomic_output
 from servicebot_cli.common.jsonable import dumps
 
 JSON_FORMAT_VERSION = 1
@@ -99,3 +101,29 @@ def github_lines(result: CheckResult) -> Iterator[str]:
         message = finding.message + (f" (fix: {finding.fix})" if finding.fix else "")
         yield f"::{level} {','.join(properties)}::{_escape_data(message)}"
     yield result.summary()
+
+
+def report_text(result: CheckResult, fmt: str, colour: bool = False) -> str:
+    """The whole report in ``fmt`` (text, github, json, sarif or junit), ending in a newline."""
+    from servicebot_cli.output import junit, sarif
+
+    if fmt == "text":
+        return "\n".join(text_lines(result, colour=colour)) + "\n"
+    if fmt == "github":
+        return "\n".join(github_lines(result)) + "\n"
+    renderers = {"json": json_text, "sarif": sarif.sarif_text, "junit": junit.junit_text}
+    return renderers[fmt](result)
+
+
+def show(result: CheckResult, fmt: str, output: str) -> None:
+    """Print the report (``output`` is ``-``) or write it atomically, the summary on stderr.
+
+    Raises:
+        OutputError: The file cannot be written.
+    """
+    if output == "-":
+        click.echo(report_text(result, fmt, colour=True), nl=False)
+        return
+    with atomic_output(output) as handle:
+        handle.write(report_text(result, fmt))
+    click.echo(result.summary(), err=True)

@@ -1,0 +1,165 @@
+"""One run of ``servicebot check``: a request in, every file's findings out.
+
+Click-free: the command turns its options into a :class:`CheckRequest`, calls :func:`run`
+and hands the :class:`~servicebot_cli.check.result.CheckResult` to ``output/findings``.
+Problems with the command line itself (two YAMLs, FILEs and ``--robot`` together) are
+refused by the command before a request is made.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from servicebot_cli.check import files
+from servicebot_cli.check.env import CheckEnv
+from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.result import CheckResult
+from servicebot_cli.check.runner import FileReport, check_source, place_issues
+from servicebot_cli.check.settings import Settings, find_pyproject, load_settings
+from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.description.loader import RobotSource, read_description
+from servicebot_cli.description.packages import PackageResolver
+from servicebot_cli.description.resources import BUNDLED_ROBOTS, CONTROLLERS_YAML, bundled_file
+
+
+@dataclass(frozen=True)
+class SettingsChoice:
+    """Where the settings come from, and the command-line options over them.
+
+    Attributes:
+        select: ``--select`` codes or prefixes (empty: the settings' own).
+        ignore: ``--ignore`` codes or prefixes, added to the settings' own.
+        strict: ``--strict``/``--no-strict``, or None for the settings' own.
+        config: A pyproject.toml to read instead of the nearest one.
+        isolated: Read no pyproject.toml at all.
+        cwd: Where the search for the nearest pyproject.toml starts.
+    """
+
+    select: tuple[str, ...] = ()
+    ignore: tuple[str, ...] = ()
+    strict: bool | None = None
+    config: Path | None = None
+    isolated: bool = False
+    cwd: Path = Path(".")
+
+
+@dataclass(frozen=True)
+class UrdfTargets:
+    """``check urdf``: description files and directories of them.
+
+    Attributes:
+        paths: Files and directories, as given; empty means :attr:`default`.
+        xacro_args: ``name:=value`` pairs for every xacro file.
+        packages: ``--package NAME=DIR`` pairs.
+        default: The description checked when no path is given.
+    """
+
+    paths: tuple[str, ...] = ()
+    xacro_args: tuple[tuple[str, str], ...] = ()
+    packages: tuple[tuple[str, str], ...] = ()
+    default: RobotSource | None = None
+
+
+@dataclass(frozen=True)
+class ControllerTargets:
+    """``check controllers``: one controllers YAML against one or more URDFs.
+
+    Attributes:
+        yaml_file: The YAML as given, or None for the bundled ``controllers.yaml``.
+        urdfs: Descriptions to check it against; empty means both bundled robots.
+    """
+
+    yaml_file: str | None = None
+    urdfs: tuple[RobotSource, ...] = ()
+
+
+@dataclass(frozen=True)
+class CheckRequest:
+    """What to check and with which settings."""
+
+    targets: UrdfTargets | ControllerTargets
+    settings: SettingsChoice = SettingsChoice()
+
+
+def settings_of(choice: SettingsChoice) -> Settings:
+    """The settings file (unless ``isolated``), then the command-line options over it.
+
+    Raises:
+        SettingsError: An unreadable settings file or an unknown rule code.
+    """
+    path = None
+    if not choice.isolated:
+        path = choice.config or find_pyproject(choice.cwd.resolve())
+    return load_settings(path).with_options(choice.select, choice.ignore, choice.strict)
+
+
+def run(request: CheckRequest) -> CheckResult:
+    """Check what ``request`` names; every finding is collected, none raised.
+
+    Raises:
+        SettingsError: Bad settings (exit 2).
+        DescriptionError: A file the user named cannot be read at all (exit 2).
+    """
+    settings = settings_of(request.settings)
+    if isinstance(request.targets, UrdfTargets):
+        reports = _check_urdfs(request.targets, settings)
+    else:
+        reports = _check_controllers(request.targets, settings)
+    return CheckResult(tuple(reports), settings.strict)
+
+
+def _sources(targets: UrdfTargets) -> list[tuple[RobotSource, bool]]:
+    """Each source to check, and whether the user named it (else it was found in a directory)."""
+    if not targets.paths:
+        return [(targets.default or RobotSource.bundled(), True)]
+    found: list[tuple[RobotSource, bool]] = []
+    for name in targets.paths:
+        path = Path(name)
+        if not path.is_dir():
+            found.append((RobotSource(path, name, targets.xacro_args, targets.packages), True))
+            continue
+        inside = list(files.walk(path))
+        if not inside:
+            raise DescriptionError(f"{name}: is a directory with no robot files "
+                                   f"({', '.join('*' + s for s in files.SUFFIXES)})")
+        for file in inside:
+            args = targets.xacro_args if file.suffix == ".xacro" else ()
+            found.append((RobotSource(file, str(file), args, targets.packages), False))
+    return found
+
+
+def _check_urdfs(targets: UrdfTargets, settings: Settings) -> list[FileReport]:
+    """A report per description; a file found in a directory that cannot be read is SB001."""
+    resolver = PackageResolver.from_environment({k: Path(v) for k, v in targets.packages})
+    env = CheckEnv(resolver=resolver, inertia_factor=settings.inertia_factor)
+    reports = []
+    for source, named in _sources(targets):
+        try:
+            reports.append(check_source(source, settings, env))
+        except DescriptionError as exc:
+            if named:
+                raise
+            issue = Issue("SB001", str(exc).split(": ", 1)[-1], where=(source.display, 0, 0))
+            reports.append(FileReport(source.display,
+                                      tuple(place_issues(None, [issue], settings))))
+    return reports
+
+
+def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[FileReport]:
+    """A report per URDF the controllers YAML is checked against."""
+    from servicebot_cli.check import controllers
+    from servicebot_cli.common.inputs import display_path, read_input_text
+
+    yaml_path = Path(targets.yaml_file) if targets.yaml_file else bundled_file(CONTROLLERS_YAML)
+    display = targets.yaml_file or display_path(yaml_path)
+    text = read_input_text(str(yaml_path), kind="a ros2_control controllers YAML",
+                           error=DescriptionError)
+    sources = targets.urdfs or tuple(RobotSource.bundled(name) for name in BUNDLED_ROBOTS)
+    reports = []
+    for source in sources:
+        robot = read_description(source)
+        issues = controllers.check(text, display, robot)
+        reports.append(FileReport(f"{display} against {source.display}",
+                                  tuple(place_issues(robot, issues, settings))))
+    return reports
