@@ -65,3 +65,6 @@ class Plan:
                 return Setpoint(step.linear_m_s, step.angular_rad_s, tuple(arm.items()))
             start += step.duration_s
         return None
+
+    def poll(self) -> None:
+        """Nothing to read: a plan has no input (it watches no file descriptors)."""

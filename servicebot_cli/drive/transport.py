@@ -14,7 +14,7 @@ import grp
 import os
 import select
 from collections.abc import Sequence
-from typing import Any
+from typing import Protocol
 
 from servicebot_cli.common.errors import LinkError, LinkLost
 
@@ -34,6 +34,29 @@ class PortBusy(LinkError):
     """Another program holds the port."""
 
 
+class SerialDevice(Protocol):
+    """What :class:`Port` uses of an open ``serial.Serial`` (pyserial ships no types)."""
+
+    @property
+    def in_waiting(self) -> int:
+        """Bytes received and not yet read."""
+
+    def write(self, data: bytes) -> int | None:
+        """Send ``data``."""
+
+    def read(self, size: int = 1) -> bytes:
+        """Up to ``size`` bytes."""
+
+    def flush(self) -> None:
+        """Wait until written bytes have left."""
+
+    def fileno(self) -> int:
+        """The file descriptor, for select."""
+
+    def close(self) -> None:
+        """Close the device."""
+
+
 class Port:
     """An open serial port as the drive loop uses it.
 
@@ -42,7 +65,7 @@ class Port:
         name: The path it was opened as, for messages.
     """
 
-    def __init__(self, serial: Any, name: str) -> None:
+    def __init__(self, serial: SerialDevice, name: str) -> None:
         self._serial = serial
         self.name = name
 

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 
-from servicebot_cli.drive.emulator.firmware import MotorModel
+from servicebot_cli.drive.emulator.firmware import MotorModel, State
 from servicebot_cli.drive.protocols.arduino import TWO_PI, ArduinoConfig
 
 STOCK_AUTO_STOP_MS = 2000
@@ -96,10 +96,11 @@ class ArduinoFirmware:
                                              strict=True)):
             sides[side].append(sign * (self.model.wheel_position_rad[i] - self._offset_rad[i]))
         per_rad = self.config.ticks_per_rev / TWO_PI
-        return tuple(  # type: ignore[return-value]
-            math.floor(sum(v) / len(v) * per_rad + 0.5) for v in (sides["left"], sides["right"]))
+        left, right = (math.floor(sum(v) / len(v) * per_rad + 0.5)
+                       for v in (sides["left"], sides["right"]))
+        return left, right
 
-    def state(self) -> dict[str, object]:
+    def state(self) -> State:
         """Extra state for the emulator's state file."""
         left, right = self.encoder_ticks(self.model.now_s)
         return {"encoder_ticks": {"left": left, "right": right}}

@@ -12,12 +12,16 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import TypeAlias
 
 from servicebot_cli.drive.motors import MotorMap
 from servicebot_cli.drive.protocols import messages as msg
 from servicebot_cli.drive.protocols.framing import Decoder, Frame, encode_frame
 
 FIRMWARE_VERSION = (1, 0)
+
+JsonValue: TypeAlias = "str | int | float | bool | None | list[JsonValue] | dict[str, JsonValue]"
+State: TypeAlias = dict[str, JsonValue]  # state for the emulator's state file, JSON-ready
 
 
 @dataclass
@@ -156,11 +160,10 @@ class BinaryFirmware:
     def _handle(self, frame: Frame, now_s: float) -> Frame:
         self.model.counters.frames += 1
         kind = frame.type
-        expected = msg.PAYLOAD_SIZE.get(kind) if kind in msg.MsgType._value2member_map_ else None
         if kind not in (msg.MsgType.PING, msg.MsgType.SET_WHEELS, msg.MsgType.SET_ARM,
                         msg.MsgType.STOP):
             return self._nack(frame, msg.NackReason.UNKNOWN_TYPE)
-        if len(frame.payload) != expected:
+        if len(frame.payload) != msg.PAYLOAD_SIZE[msg.MsgType(kind)]:
             return self._nack(frame, msg.NackReason.BAD_LENGTH)
         if kind == msg.MsgType.PING:
             watchdog_ms = round(self.model.watchdog_s * 1000)
@@ -196,7 +199,7 @@ class BinaryFirmware:
             tuple(model.wheel_position_rad), tuple(model.wheel_velocity_rad_s),
             tuple(model.arm_position_rad), faults))
 
-    def state(self) -> dict[str, object]:
+    def state(self) -> State:
         """The decoder's counts, for the emulator's state file."""
         stats = self.decoder.stats
         return {"crc_errors": stats.crc_errors, "bad_length": stats.bad_length,

@@ -249,13 +249,16 @@ class DriveLoop:
         self.commander.link_lost(self.clock())
         self._drop_port()
         self.reconnecting = True
+        reopen = self.reopen
+        if reopen is None:
+            raise lost
         while self.port is None:
             if source.setpoint(self.clock() - self.t0_s) is None:
                 raise LinkLost(f"{lost}; the run ended before the link came back")
             if self.on_tick is not None:
                 self.on_tick(self.status(self.clock()))
             try:
-                self.port = self.reopen()  # type: ignore[misc]
+                self.port = reopen()
                 self.link.reset()
                 self._sent.clear()
                 self._last_positions = None
