@@ -71,8 +71,18 @@ def read_bytes(path: Path, display: str, max_bytes: int = MAX_BYTES) -> bytes:
 
 
 def is_xacro(path: Path, data: bytes) -> bool:
-    """True for ``.xacro`` files and for URDF-named files that use xacro elements."""
-    return path.suffix in XACRO_SUFFIXES or b"<xacro:" in data or b"$(arg " in data
+    """True for ``.xacro`` files: what ROS runs xacro on.
+
+    A ``.urdf`` file is URDF even when it holds xacro elements (ros/urdf's ``pr2_desc.urdf``):
+    robot_state_publisher and check_urdf read it as it is, and so does servicebot, with a
+    warning (see :func:`uses_xacro`).
+    """
+    return path.suffix in XACRO_SUFFIXES
+
+
+def uses_xacro(data: bytes) -> bool:
+    """Whether the bytes hold xacro elements or substitutions."""
+    return b"<xacro:" in data or b"$(arg " in data
 
 
 def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDescription:
@@ -90,9 +100,13 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
                 f"{source.display}: not a xacro file, so xacro arguments ({names}) mean nothing"
             )
         document = parse_xml(data, source.display, max_bytes=max_bytes)
+        warnings = (f"{source.display}: holds xacro elements, but is not a .xacro file: read "
+                    "as plain URDF, as ROS tools read it (name it .urdf.xacro to expand it)",
+                    ) if uses_xacro(data) else ()
         return RobotDescription(
             display=source.display, path=source.path, xml_text=document.text,
             root=document.root, doctype=document.doctype, files=(source.display,),
+            warnings=warnings,
         )
     from servicebot_cli.description.xacro_expand import expand
 

@@ -64,7 +64,7 @@ def expand(
 
     Raises:
         XmlError: A file is not well-formed or unsafe (with its line and column).
-        XacroError: xacro failed (with the line being expanded) or an argument is unknown.
+        XacroError: xacro failed (with the line being expanded).
         PackageNotFound: ``$(find pkg)`` names a package that is nowhere.
     """
     display = str(path)
@@ -82,21 +82,27 @@ def expand(
             raise
         except Exception as exc:  # xacro raises bare Python errors from expressions, too
             raise tracer.error(exc, xacro.filestack) from None
-    unknown = sorted(set(given) - tracer.known_args)
-    if unknown:
-        declared = ", ".join(sorted(tracer.known_args)) or "none"
-        raise XacroError(
-            f"{display}: xacro argument '{unknown[0]}' is not used by this file "
-            f"(its arguments: {declared})"
-        )
     origins = tracer.take_origins(doc)
     _add_banner(doc, Path(display).name, given)
     return Expansion(
         xml_text=doc.toprettyxml(indent="  "),
         origins=tuple(origins),
         files=tuple(tracer.files),
-        warnings=_warning_lines(captured.getvalue()),
+        warnings=_warning_lines(captured.getvalue()) + _unread_args(display, given, tracer),
     )
+
+
+def _unread_args(display: str, given: Mapping[str, str], tracer: _Tracer) -> tuple[str, ...]:
+    """A warning per argument the file neither declares nor visibly reads.
+
+    Not an error: ROS xacro accepts any argument, and a file can read one under a computed
+    name (``$(arg ${'v' + 'ar'})``) that no scan of its text sees.
+    """
+    declared = ", ".join(sorted(tracer.known_args)) or "none"
+    return tuple(
+        f"{display}: xacro argument '{name}' is not declared or read by this file (its "
+        f"arguments: {declared}); xacro ignores it unless the file reads it under a computed name"
+        for name in sorted(set(given) - tracer.known_args))
 
 
 def _add_banner(doc: xml.dom.minidom.Document, name: str, args: Mapping[str, str]) -> None:

@@ -110,12 +110,21 @@ def test_bundled_xacro_positions_point_into_the_includes():
     assert robot.ros2_control[0].hardware_param("baud_rate") == "9600"
 
 
-def test_unknown_xacro_argument_is_an_error(run, project):
+def test_an_argument_the_file_does_not_read_is_a_warning_as_ros_xacro_accepts_it(run, project):
     root, package = project
-    assert_one_line_error(
-        run("expand", "robot.urdf.xacro", "tga:=b", "--package", f"demo_pkg={package}"),
-        2, "xacro argument 'tga' is not used", "its arguments: tag",
-    )
+    result = run("expand", "robot.urdf.xacro", "tga:=b", "--package", f"demo_pkg={package}")
+    assert result.exit_code == 0
+    assert result.stderr.startswith("warning: robot.urdf.xacro: xacro argument 'tga' is not "
+                                    "declared or read by this file (its arguments: tag)")
+
+
+def test_an_argument_read_under_a_computed_name_is_used(run, tmp_path):
+    (tmp_path / "r.urdf.xacro").write_text(
+        '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        "  <link name=\"$(arg ${'v' + 'ar'})\"/>\n</robot>\n")
+    result = run("expand", tmp_path / "r.urdf.xacro", "var:=base")
+    assert result.exit_code == 0, result.stderr
+    assert '<link name="base"/>' in result.stdout
 
 
 def test_malformed_xacro_argument_is_a_usage_error(run):
