@@ -52,7 +52,7 @@ class Emulator(TestEmulator):
 
 def limit_hz(protocol: str) -> float:
     from servicebot_cli.description.loader import RobotSource, load
-    from servicebot_cli.drive.driving import link_capacity_hz, make_link
+    from servicebot_cli.drive.link_setup import link_capacity_hz, make_link
     from servicebot_cli.drive.motors import motor_map
     from servicebot_cli.drive.protocols.arduino import ArduinoConfig
 
@@ -63,7 +63,7 @@ def limit_hz(protocol: str) -> float:
 
 def rate_run(emu: Emulator, protocol: str, rate: float, seconds: float) -> dict:
     drive = servicebot("drive", "--port", emu.path, *PROTOCOLS[protocol], "--rate", rate,
-                       "--linear", "0.02", "--duration", seconds, "--format", "json")
+                       "--linear", "0.02", "--duration-s", seconds, "--format", "json")
     stdout, stderr = drive.communicate(timeout=60)
     if drive.returncode != 0:
         raise SystemExit(f"drive failed ({drive.returncode}): {stderr}")
@@ -75,17 +75,22 @@ def library_run(emu: Emulator, protocol: str, rate: float, seconds: float) -> di
     import dataclasses
 
     from servicebot_cli.description.loader import RobotSource, load
-    from servicebot_cli.drive.driving import DriveRequest, make_link, run_drive
+    from servicebot_cli.drive.driving import StreamSettings, run_drive
+    from servicebot_cli.drive.link_setup import make_link
     from servicebot_cli.drive.motors import motor_map
     from servicebot_cli.drive.plan import Plan, Step
     from servicebot_cli.drive.protocols.arduino import ArduinoConfig
 
     motors = motor_map(load(RobotSource.bundled("real")))
     link = make_link(protocol, motors, ArduinoConfig(3436, 30.0))
-    request = DriveRequest(emu.path, 9600, rate, 1.0, link_timeout_s=5.0, connect_timeout_s=3.0)
+    settings = StreamSettings(emu.path, 9600, rate, 1.0, link_timeout_s=5.0,
+                              connect_timeout_s=3.0)
     statuses = []
-    summary = run_drive(request, link, motors, Plan([Step(seconds, 0.02, 0.0)]),
-                        log=lambda line: None, on_tick=statuses.append)
+    driven = run_drive(settings, link, motors, Plan([Step(seconds, 0.02, 0.0)]),
+                       log=lambda line: None, on_tick=statuses.append)
+    if driven.summary is None or driven.failure is not None:
+        raise SystemExit(f"the library run failed: {driven.failure}")
+    summary = driven.summary
     # replies in the last second of the stream: the rate the wire settled at
     return {**dataclasses.asdict(summary), "reply_hz": statuses[-1].reply_rate_hz}
 
@@ -132,7 +137,7 @@ def stop_latency(protocol: str, repeat: int) -> list[float]:
         try:
             for _ in range(repeat):
                 drive = servicebot("drive", "--port", emu.path, *PROTOCOLS[protocol],
-                                   "--linear", "0.02", "--duration", "60")
+                                   "--linear", "0.02", "--duration-s", "60")
                 wait_for(lambda: any(w["velocity_rad_s"] for w in emu.state()["wheels"]),
                          "the wheels to turn")
                 time.sleep(0.3)

@@ -1,16 +1,22 @@
-"""Options that ``drive`` and ``emulate`` share: protocol, baud, encoder counting, numbers.
+"""Options that ``drive`` and ``emulate`` share: protocol, baud and encoder counting.
 
-Light: Click only. Validation happens here, at the parsing edge.
+Light: Click only (the domain is imported when a value is built). Validation happens here,
+at the parsing edge: ``--ticks-per-rev`` and ``--pid-rate`` are refused without
+``--protocol arduino``, where they would have no effect.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any, TypeVar
+import contextlib
+from collections.abc import Callable, Iterator
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
 
-from servicebot_cli.commands.options import Number
+from servicebot_cli.commands.options import Number, given, refuse_without
+
+if TYPE_CHECKING:
+    from servicebot_cli.drive.protocols.arduino import ArduinoConfig
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -39,12 +45,17 @@ def serial_options(f: F) -> F:
     return f
 
 
-def arduino_config(protocol: str, ticks_per_rev: float | None, pid_rate: float) -> Any:
+def arduino_config(protocol: str, ticks_per_rev: float | None,
+                   pid_rate: float) -> ArduinoConfig | None:
     """The ArduinoConfig for ``--protocol arduino``, else None.
 
     Raises:
-        click.BadParameter: arduino without --ticks-per-rev.
+        click.UsageError: ``--ticks-per-rev`` or ``--pid-rate`` without arduino.
+        click.BadParameter: arduino without ``--ticks-per-rev``.
     """
+    ctx = click.get_current_context()
+    for option in ("--ticks-per-rev", "--pid-rate"):
+        refuse_without(ctx, option, "--protocol arduino", present=protocol == "arduino")
     if protocol != "arduino":
         return None
     if ticks_per_rev is None:
@@ -55,3 +66,37 @@ def arduino_config(protocol: str, ticks_per_rev: float | None, pid_rate: float) 
 
     return ArduinoConfig(ticks_per_rev, pid_rate)
 
+
+def refuse_with(ctx: click.Context, option: str, other: str, why: str, *,
+                present: bool, name: str | None = None) -> None:
+    """Refuse ``option`` next to ``other`` (when ``present``): together it has no effect.
+
+    Args:
+        ctx: The command's context.
+        option: The flag as the user types it, e.g. ``"--log"``.
+        other: The option that makes it pointless, e.g. ``"--dry-run"``.
+        why: Why, in a few words.
+        present: Whether ``other`` was given.
+        name: The parameter's name in ``ctx.params`` (default: from ``option``).
+
+    Raises:
+        click.UsageError: ``option`` was given and ``other`` is present.
+    """
+    if given(ctx, name or option.lstrip("-").replace("-", "_")) and present:
+        raise click.UsageError(f"{option} has no effect with {other} ({why}); drop {option} "
+                               f"or {other}", ctx=ctx)
+
+
+@contextlib.contextmanager
+def bad_options() -> Iterator[None]:
+    """Report the domain's :class:`~servicebot_cli.drive.request.BadOption` as Click does.
+
+    Raises:
+        click.BadParameter: For a BadOption, naming its option.
+    """
+    from servicebot_cli.drive.request import BadOption
+
+    try:
+        yield
+    except BadOption as exc:
+        raise click.BadParameter(str(exc), param_hint=exc.option) from None

@@ -1,8 +1,8 @@
-"""One drive run from start to stop: choose the protocol, open the port, stream, always stop.
+"""One drive run on a port: open it, stream, always stop, and say how it went.
 
 This is where the pieces meet: the port is opened here (the only place), handed to the
-loop, and whatever ends the run (the end of the plan, quit, Ctrl-C, SIGTERM, a lost link,
-a bug) the stop is sent before the run is reported.
+loop, and whatever ends the run (the end of the plan, quit, Ctrl-C, SIGTERM, SIGHUP,
+SIGQUIT, a lost link, a bug) the stop is sent before the run is reported.
 """
 
 from __future__ import annotations
@@ -12,24 +12,22 @@ import statistics
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from servicebot_cli.common.errors import DescriptionError, LinkError, LinkLost, ServicebotError
-from servicebot_cli.drive.emulator.wire import BITS_PER_BYTE
+from servicebot_cli.common.errors import LinkError, LinkLost, ServicebotError
 from servicebot_cli.drive.motors import MotorMap
-from servicebot_cli.drive.protocols.arduino import ArduinoConfig, ArduinoLink
-from servicebot_cli.drive.protocols.binary import BinaryLink
 from servicebot_cli.drive.session.commander import Commander, HostLink
 from servicebot_cli.drive.session.loop import DriveLoop, LinkStatus, Source
-from servicebot_cli.drive.session.signals import Interrupted, StopSignals, Terminated
+from servicebot_cli.drive.session.signals import OUTCOMES, StopSignals
 from servicebot_cli.drive.shaping import WheelShaper
 
-MIN_RATE_HZ = 4.0  # at least two commands per 500 ms watchdog period
-COMFORT = 0.8  # above this share of the link, warn: no room left for retries and noise
+if TYPE_CHECKING:
+    from servicebot_cli.drive.session.telemetry_log import TelemetryCsv
 
 
 @dataclass(frozen=True)
-class DriveRequest:
-    """How to drive.
+class StreamSettings:
+    """How to stream to an open port.
 
     Attributes:
         port: Serial device path.
@@ -53,8 +51,42 @@ class DriveRequest:
 
 
 @dataclass(frozen=True)
+class WheelTravel:
+    """How far one wheel turned.
+
+    Attributes:
+        joint: The wheel joint.
+        commanded_travel_rad: The commanded speeds integrated over the run [rad].
+        measured_travel_rad: What its encoder reported, or None without telemetry [rad].
+    """
+
+    joint: str
+    commanded_travel_rad: float
+    measured_travel_rad: float | None
+
+
+@dataclass(frozen=True)
+class ArmJointEnd:
+    """Where one arm joint was sent and where it was at the end.
+
+    Attributes:
+        joint: The arm joint.
+        target_rad: The last target sent, or None when none was [rad].
+        measured_position_rad: The last position reported, or None [rad].
+    """
+
+    joint: str
+    target_rad: float | None
+    measured_position_rad: float | None
+
+
+@dataclass(frozen=True)
 class Summary:
-    """What a run did, for the last stderr line and ``--format json``."""
+    """What a run did, for the last stderr line and ``--format json``.
+
+    ``outcome`` is ``completed``, ``interrupted``, ``terminated``, ``hung_up``, ``quit``,
+    ``link_lost``, ``link_error`` or ``error``.
+    """
 
     protocol: str
     port: str
@@ -69,87 +101,65 @@ class Summary:
     errors: int
     reconnects: int
     stop_confirmed: bool
-    wheels: list[dict[str, object]]
-    arm: list[dict[str, object]]
+    wheels: tuple[WheelTravel, ...]
+    arm: tuple[ArmJointEnd, ...]
 
 
-def serial_defaults(robot: object) -> tuple[str | None, int | None]:
-    """``port`` and ``baud_rate`` of the description's ros2_control hardware, if it names them.
+@dataclass(frozen=True)
+class Driven:
+    """How a run on a port ended.
 
-    Raises:
-        DescriptionError: A baud_rate that is not a whole number.
+    Attributes:
+        summary: What it did; None when the firmware never answered.
+        failure: What ended it early (its message says whether the stop was confirmed), or
+            None when the source was done.
     """
-    for block in getattr(robot, "ros2_control", ()):
-        port, baud = block.hardware_param("port"), block.hardware_param("baud_rate")
-        if port or baud:
-            try:
-                return port, int(baud) if baud else None
-            except ValueError:
-                raise DescriptionError(
-                    f"{robot.display}: <param name=\"baud_rate\">{baud}</param> is not a whole "  # type: ignore[attr-defined]
-                    "number; fix the URDF or give --baud"
-                ) from None
-    return None, None
+
+    summary: Summary | None
+    failure: ServicebotError | None
 
 
-def make_link(protocol: str, motors: MotorMap, arduino: ArduinoConfig | None) -> HostLink:
-    """The host-side adapter for ``protocol`` (``servicebot`` or ``arduino``)."""
-    if protocol == "arduino":
-        assert arduino is not None
-        return ArduinoLink(motors, arduino)
-    return BinaryLink(motors)
-
-
-def link_capacity_hz(link: HostLink, baud: int) -> float:
-    """Most commands per second the link carries: the busier direction decides [Hz].
-
-    A UART is full duplex: commands and replies each have ``baud / 10`` bytes a second.
-    """
-    return baud / BITS_PER_BYTE / max(link.command_bytes, link.reply_bytes)
-
-
-def run_drive(request: DriveRequest, link: HostLink, motors: MotorMap,
+def run_drive(settings: StreamSettings, link: HostLink, motors: MotorMap,
               source: Source, *, log: Callable[[str], None],
-              on_tick: Callable[[LinkStatus], None] | None = None,
-              on_summary: Callable[[Summary], None] | None = None) -> Summary:
+              on_tick: Callable[[LinkStatus], None] | None = None) -> Driven:
     """Drive until ``source`` is done; stop the motors on every way out.
 
+    Whatever ends the run once the port is open (Ctrl-C, a signal, a lost link) is in the
+    result, after the stop was sent. Any other exception (a bug) propagates, after the stop.
+
     Raises:
-        LinkError: The port cannot be opened or the firmware does not answer (exit 4).
-        LinkLost: The link went silent (exit 5), after the stop was sent.
-        Interrupted: Ctrl-C (exit 130), after the stop. Terminated: SIGTERM (exit 143).
+        LinkError: The port cannot be opened (exit 4).
+        OutputError: The ``--log`` file cannot be written.
     """
-    from servicebot_cli.drive.session.telemetry_log import telemetry_csv
     from servicebot_cli.drive.transport import open_port
 
-    commander = Commander(link, WheelShaper(motors, request.max_accel_rad_s2), motors)
-    with StopSignals() as signals, _csv(request.log, telemetry_csv, motors,
-                                         link.has_arm) as csv_log:
-        port = open_port(request.port, request.baud)
-        reopen = (lambda: open_port(request.port, request.baud)) if request.reconnect else None
-        loop = DriveLoop(port, link, commander, rate_hz=request.rate_hz,
-                         where=f"{request.port} at {request.baud} baud",
-                         link_timeout_s=request.link_timeout_s, reopen=reopen, log=log,
+    commander = Commander(link, WheelShaper(motors, settings.max_accel_rad_s2), motors)
+    with StopSignals() as signals, _telemetry_log(settings.log, motors,
+                                                  link.has_arm) as csv_log:
+        port = open_port(settings.port, settings.baud)
+        reopen = (lambda: open_port(settings.port, settings.baud)) if settings.reconnect \
+            else None
+        loop = DriveLoop(port, link, commander, rate_hz=settings.rate_hz,
+                         where=f"{settings.port} at {settings.baud} baud",
+                         link_timeout_s=settings.link_timeout_s, reopen=reopen, log=log,
                          on_tick=on_tick, on_reading=csv_log.row if csv_log else None)
-        failure, confirmed = _drive_then_stop(loop, request, source, signals, log)
-    summary = _summary(loop, request, link, motors, failure, confirmed)
-    if loop.hello is not None and on_summary is not None:
-        on_summary(summary)
+        failure, confirmed = _drive_then_stop(loop, settings, source, signals, log)
+    summary = _summary(loop, settings, link, motors, failure, confirmed)
     if failure is not None:
-        raise _with_stop_note(failure, loop, confirmed)
-    return summary
+        failure = _with_stop_note(failure, loop, confirmed)
+    return Driven(summary if loop.hello is not None else None, failure)
 
 
-def _drive_then_stop(loop: DriveLoop, request: DriveRequest, source: Source,
+def _drive_then_stop(loop: DriveLoop, settings: StreamSettings, source: Source,
                      signals: StopSignals, log: Callable[[str], None]
                      ) -> tuple[ServicebotError | None, bool]:
     """Connect and stream; whatever happens, stop. ``(what ended the run, stop confirmed)``."""
     failure: ServicebotError | None = None
     try:
-        hello = loop.connect(request.connect_timeout_s)
+        hello = loop.connect(settings.connect_timeout_s)
         log(f"connected to {loop.where}: {hello.description}")
         loop.run(source)
-    except ServicebotError as exc:  # Ctrl-C, SIGTERM and lost links arrive here too
+    except ServicebotError as exc:  # Ctrl-C, the signals and lost links arrive here too
         failure = exc
     finally:  # and any other exception (a bug) passes through here on its way out
         signals.stopping()
@@ -160,13 +170,15 @@ def _drive_then_stop(loop: DriveLoop, request: DriveRequest, source: Source,
 
 
 @contextlib.contextmanager
-def _csv(path: Path | None, opener: Callable[..., contextlib.AbstractContextManager[object]],
-         motors: MotorMap, has_arm: bool) -> Iterator[object]:
+def _telemetry_log(path: Path | None, motors: MotorMap,
+                   has_arm: bool) -> Iterator[TelemetryCsv | None]:
     if path is None:
         yield None
-    else:
-        with opener(path, motors, has_arm) as log:
-            yield log
+        return
+    from servicebot_cli.drive.session.telemetry_log import telemetry_csv
+
+    with telemetry_csv(path, motors, has_arm) as csv_log:
+        yield csv_log
 
 
 def _with_stop_note(failure: ServicebotError, loop: DriveLoop, confirmed: bool) -> ServicebotError:
@@ -182,33 +194,33 @@ def _with_stop_note(failure: ServicebotError, loop: DriveLoop, confirmed: bool) 
 def _outcome(failure: ServicebotError | None) -> str:
     if failure is None:
         return "completed"
-    for kind, name in ((Interrupted, "interrupted"), (Terminated, "terminated"),
-                       (LinkLost, "link_lost")):
+    outcomes: tuple[tuple[type[ServicebotError], str], ...] = (*OUTCOMES,
+                                                                (LinkLost, "link_lost"))
+    for kind, name in outcomes:
         if isinstance(failure, kind):
             return name
     return "link_error" if isinstance(failure, LinkError) else "error"
 
 
-def _summary(loop: DriveLoop, request: DriveRequest, link: HostLink,
+def _summary(loop: DriveLoop, settings: StreamSettings, link: HostLink,
              motors: MotorMap, failure: ServicebotError | None, confirmed: bool) -> Summary:
     reading = loop.reading
-    wheels = [
-        {"joint": name, "commanded_travel_rad": round(commanded, 4),
-         "measured_travel_rad": round(measured, 4) if reading else None}
+    wheels = tuple(
+        WheelTravel(name, round(commanded, 4), round(measured, 4) if reading else None)
         for name, commanded, measured in zip(motors.wheel_joints, loop.commander.travel_rad,
                                              loop.measured_travel_rad, strict=True)
-    ]
+    )
     arm_sent = loop.commander.arm_sent
-    measured = reading.arm_position_rad if reading is not None else None
-    arm = [
-        {"joint": name, "target_rad": arm_sent[i] if arm_sent else None,
-         "measured_position_rad": measured[i] if measured else None}
+    measured_arm = reading.arm_position_rad if reading is not None else None
+    arm = tuple(
+        ArmJointEnd(name, arm_sent[i] if arm_sent else None,
+                    measured_arm[i] if measured_arm else None)
         for i, name in enumerate(motors.arm_joints)
-    ] if link.has_arm else []
+    ) if link.has_arm else ()
     return Summary(
-        protocol=link.name, port=request.port, baud=request.baud,
+        protocol=link.name, port=settings.port, baud=settings.baud,
         firmware=loop.hello.description if loop.hello else "", outcome=_outcome(failure),
-        duration_s=round(max(0.0, loop.end_s - loop.t0_s), 3), rate_hz=request.rate_hz,
+        duration_s=round(max(0.0, loop.end_s - loop.t0_s), 3), rate_hz=settings.rate_hz,
         commands=loop.commands, replies=loop.replies,
         median_rtt_s=round(statistics.median(loop.rtts_s), 4) if loop.rtts_s else None,
         errors=link.errors, reconnects=loop.reconnects, stop_confirmed=confirmed,

@@ -46,16 +46,30 @@ def planned_frames(plan: Plan, link: HostLink, motors: MotorMap, max_accel_rad_s
     yield _frame(tick * period, data, link)
 
 
-def dry_run_lines(plan: Plan, link: HostLink, motors: MotorMap, max_accel_rad_s2: float,
-                  rate_hz: float) -> Iterator[str]:
-    """Lines ``t_s  hex bytes  meaning``, one per frame, after a short header."""
-    yield (f"# {link.name} protocol, {rate_hz:g} Hz, {plan.duration_s:g} s; the frames a run "
-           "would send (no port opened)")
-    if link.has_arm:
-        yield "# arm joints a plan does not name hold 0 rad here (a real run: where they are)"
-    yield "# t_s  bytes  meaning"
-    for frame in planned_frames(plan, link, motors, max_accel_rad_s2, rate_hz):
-        yield f"{frame.t_s:7.3f}  {frame.bytes_hex}  {frame.meaning}"
+@dataclass(frozen=True)
+class DryRun:
+    """What a run would send, with what it needs to be read.
+
+    Attributes:
+        protocol: The protocol's name.
+        rate_hz: Commands per second.
+        duration_s: How long the plan lasts [s].
+        has_arm: Whether the protocol carries arm targets (unnamed joints then hold 0 rad).
+        frames: The handshake, every tick and the stop, in order.
+    """
+
+    protocol: str
+    rate_hz: float
+    duration_s: float
+    has_arm: bool
+    frames: tuple[PlannedFrame, ...]
+
+
+def dry_run(plan: Plan, link: HostLink, motors: MotorMap, max_accel_rad_s2: float,
+            rate_hz: float) -> DryRun:
+    """The frames a run of ``plan`` at ``rate_hz`` would send."""
+    frames = tuple(planned_frames(plan, link, motors, max_accel_rad_s2, rate_hz))
+    return DryRun(link.name, rate_hz, plan.duration_s, link.has_arm, frames)
 
 
 def _frame(t_s: float, data: bytes, link: HostLink) -> PlannedFrame:

@@ -5,12 +5,12 @@ from __future__ import annotations
 import pytest
 
 from servicebot_cli.description.loader import RobotSource, load
-from servicebot_cli.drive.driving import serial_defaults
+from servicebot_cli.drive.link_setup import serial_defaults
 from servicebot_cli.drive.protocols import messages as msg
 from servicebot_cli.drive.protocols.framing import Decoder
 from tests.conftest import REAL_URDF, assert_one_line_error
 
-ONE_SHOT = ("--linear", "0.02", "--duration", "1")
+ONE_SHOT = ("--linear", "0.02", "--duration-s", "1")
 
 
 def frames_of(stdout):
@@ -50,7 +50,7 @@ def test_a_description_without_a_port_needs_one(run):
 
 def test_dry_run_prints_the_frames_without_a_port(run, real_motors):
     result = run("drive", "--dry-run", "--linear", "0.05", "--angular", "0.02",
-                 "--duration", "1.5", "--arm", "arm_base_to_link1=0.4")
+                 "--duration-s", "1.5", "--arm", "arm_base_to_link1=0.4")
     assert result.exit_code == 0, result.stderr
     frames = frames_of(result.stdout)
     kinds = [msg.MsgType(f.type).name for _, f in frames]
@@ -69,7 +69,7 @@ def test_dry_run_prints_the_frames_without_a_port(run, real_motors):
 
 def test_dry_run_of_the_arduino_protocol(run):
     result = run("drive", "--dry-run", "--protocol", "arduino", "--ticks-per-rev", "3436",
-                 "--linear", "0.05", "--duration", "1")
+                 "--linear", "0.05", "--duration-s", "1")
     assert result.exit_code == 0, result.stderr
     lines = [ln for ln in result.stdout.splitlines() if not ln.startswith("#")]
     assert "'b'" in lines[0] and "'m 9 9': left +0.494 rad/s" in result.stdout
@@ -79,14 +79,21 @@ def test_dry_run_of_the_arduino_protocol(run):
 @pytest.mark.parametrize(("args", "needles"), [
     (("--rate", "31"), ("Invalid value for --rate", "at most 30.0 Hz")),
     (("--rate", "2"), ("too slow to keep the firmware's watchdog fed",)),
-    (("--rate", "20", "--link-timeout", "0.05"), ("shorter than two command periods",)),
     (("--rate", "abc"), ("'abc' is not a number",)),
     (("--angular", "inf"), ("not a finite number",)),
     (("--rate", "-1"), ("must be above 0",)),
 ])
 def test_bad_numbers(run, args, needles):
-    base = ("--linear", "0.02", "--duration", "1")
+    base = ("--linear", "0.02", "--duration-s", "1")
     assert_one_line_error(run("drive", "--dry-run", *base, *args), 2, *needles)
+
+
+def test_a_link_timeout_shorter_than_two_periods_fails_before_the_port_opens(run, fake_device):
+    device = fake_device()
+    assert_one_line_error(run("drive", "--port", device.path, "--rate", "20",
+                              "--link-timeout-s", "0.05", *ONE_SHOT), 2,
+                          "Invalid value for --link-timeout-s", "shorter than two command periods")
+    assert device.received == b""
 
 
 def test_a_rate_close_to_the_limit_warns(run):
@@ -99,7 +106,7 @@ def test_modes_do_not_mix(run, tmp_path):
     script = tmp_path / "s.txt"
     script.write_text("stop 1\n")
     assert_one_line_error(run("drive", "--script", script, "--linear", "0.1"), 2, "not both")
-    assert_one_line_error(run("drive", "--linear", "0.1"), 2, "--duration", "needed")
+    assert_one_line_error(run("drive", "--linear", "0.1"), 2, "--duration-s", "needed")
 
 
 def test_teleop_needs_a_terminal(run):
@@ -108,9 +115,9 @@ def test_teleop_needs_a_terminal(run):
 
 
 def test_arm_targets_are_checked_against_the_urdf(run):
-    assert_one_line_error(run("drive", "--dry-run", "--duration", "1", "--arm",
+    assert_one_line_error(run("drive", "--dry-run", "--duration-s", "1", "--arm",
                               "arm_base_to_link1=1.6"), 2, "outside its limits [-1.57, 1.57]")
-    assert_one_line_error(run("drive", "--dry-run", "--duration", "1", "--arm",
+    assert_one_line_error(run("drive", "--dry-run", "--duration-s", "1", "--arm",
                               "arm_base_to_lnk1=0.1"), 2, "did you mean 'arm_base_to_link1'")
 
 
@@ -125,7 +132,7 @@ def test_a_log_in_a_missing_directory_fails_before_the_port_opens(run, tmp_path,
 def test_a_run_that_never_connected_leaves_no_log(run, tmp_path, fake_device):
     device = fake_device()
     log = tmp_path / "run.csv"
-    result = run("drive", "--port", device.path, "--log", log, "--connect-timeout", "0.3",
+    result = run("drive", "--port", device.path, "--log", log, "--connect-timeout-s", "0.3",
                  *ONE_SHOT)
     assert result.exit_code == 4
     assert list(tmp_path.iterdir()) == []
@@ -134,7 +141,7 @@ def test_a_run_that_never_connected_leaves_no_log(run, tmp_path, fake_device):
 def test_dry_run_as_json(run):
     import json
 
-    result = run("drive", "--dry-run", "--format", "json", "--linear", "0.01", "--duration",
+    result = run("drive", "--dry-run", "--format", "json", "--linear", "0.01", "--duration-s",
                  "0.1")
     assert result.exit_code == 0, result.stderr
     frames = json.loads(result.stdout)

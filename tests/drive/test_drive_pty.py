@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import csv
 import json
+import os
 import signal
 
 import pytest
 
 from tests.drive.conftest import finish, servicebot, wait_for
 
-LONG = ("--linear", "0.03", "--duration", "60")
+LONG = ("--linear", "0.03", "--duration-s", "60")
 
 
 def state_when(emu, condition, what):
@@ -53,16 +54,22 @@ def test_a_script_moves_the_encoders_as_commanded(emulator, tmp_path):
     assert "warning: " in stderr and "scaled to" in stderr
 
 
-@pytest.mark.parametrize(("sig", "code", "words"), [
-    (signal.SIGINT, 130, "interrupted (Ctrl-C)"), (signal.SIGTERM, 143, "terminated (SIGTERM)")])
-def test_signals_stop_the_motors_first(emulator, tmp_path, sig, code, words):
+@pytest.mark.parametrize(("sig", "code", "words", "outcome"), [
+    (signal.SIGINT, 130, "interrupted (Ctrl-C)", "interrupted"),
+    (signal.SIGTERM, 143, "terminated (SIGTERM)", "terminated"),
+    (signal.SIGHUP, 129, "hung up (SIGHUP)", "hung_up"),
+    (signal.SIGQUIT, 131, "quit (SIGQUIT)", "quit"),
+])
+def test_signals_stop_the_motors_first(emulator, tmp_path, sig, code, words, outcome):
     emu = emulator()
     log = tmp_path / "run.csv"
-    drive = servicebot("drive", "--port", emu.path, *LONG, "--log", log)
+    drive = servicebot("drive", "--port", emu.path, *LONG, "--log", log, "--format", "json")
     wait_for(moving(emu), "the wheels to turn")
-    got, _, stderr = finish(drive, sig)
+    got, stdout, stderr = finish(drive, sig)
     assert got == code, stderr
     assert stderr.splitlines()[-1] == f"Error: {words}; motors stopped (the firmware confirmed)"
+    summary = json.loads(stdout)
+    assert summary["outcome"] == outcome and summary["stop_confirmed"] is True
     state = state_when(emu, lambda s: s["counters"]["stops"] == 1, "the stop")
     assert not state["moving"]
     assert state["counters"]["watchdog_trips"] == 0  # stopped by drive, not by the watchdog
@@ -82,7 +89,7 @@ def test_killing_the_emulator_mid_run_is_link_lost(emulator):
 
 
 def test_a_silent_firmware_is_link_lost_and_its_watchdog_stops(emulator):
-    emu = emulator("--mute-after", "1.5")
+    emu = emulator("--mute-after-s", "1.5")
     code, _, stderr = finish(servicebot("drive", "--port", emu.path, *LONG))
     assert code == 5, stderr
     assert f"no reply from the firmware on {emu.path} at 9600 baud for 1 s" in stderr
@@ -105,8 +112,8 @@ def test_the_watchdog_stops_the_motors_when_drive_is_killed(emulator):
 def test_corrupted_bytes_are_rejected_and_never_move_a_motor(emulator):
     emu = emulator("--corrupt", "0.02", "--drop", "0.005", "--seed", "1")
     code, stdout, stderr = finish(servicebot(
-        "drive", "--port", emu.path, "--linear", "0", "--duration", "2",
-        "--connect-timeout", "10", "--format", "json"))
+        "drive", "--port", emu.path, "--linear", "0", "--duration-s", "2",
+        "--connect-timeout-s", "10", "--format", "json"))
     assert code == 0, stderr
     state = state_when(emu, lambda s: s["counters"]["commands"] >= 30, "the commands")
     assert state["wire"]["corrupted"] > 0 and state["counters"]["crc_errors"] > 0
@@ -119,7 +126,7 @@ def test_reconnect_keeps_the_motors_at_zero_until_the_link_is_back(emulator, tmp
     link = tmp_path / "ttyROBOT"
     first = emulator("--link", link)
     drive = servicebot("drive", "--port", link, "--reconnect", "--linear", "0.02",
-                       "--duration", "6", "--format", "json")
+                       "--duration-s", "6", "--format", "json")
     wait_for(moving(first), "the wheels to turn")
     first.proc.kill()
     first.proc.communicate()
@@ -137,7 +144,7 @@ def test_the_arduino_protocol_end_to_end(emulator):
     emu = emulator("--protocol", "arduino", "--ticks-per-rev", "3436", "--watchdog-ms", "500")
     code, stdout, stderr = finish(servicebot(
         "drive", "--port", emu.path, "--protocol", "arduino", "--ticks-per-rev", "3436",
-        "--linear", "0.02", "--angular", "0.05", "--duration", "1.5", "--format", "json"))
+        "--linear", "0.02", "--angular", "0.05", "--duration-s", "1.5", "--format", "json"))
     assert code == 0, stderr
     summary = json.loads(stdout)
     assert summary["stop_confirmed"] and summary["firmware"].startswith("ROSArduinoBridge")
@@ -151,14 +158,14 @@ def test_the_arduino_protocol_end_to_end(emulator):
 def test_a_paced_link_carries_the_default_rate(emulator):
     emu = emulator("--pace")
     code, stdout, stderr = finish(servicebot("drive", "--port", emu.path, "--linear", "0.02",
-                                             "--duration", "2", "--format", "json"))
+                                             "--duration-s", "2", "--format", "json"))
     assert code == 0, stderr
     summary = json.loads(stdout)
     assert summary["errors"] == 0 and summary["replies"] >= summary["commands"] - 1
     assert emu.state()["wire"]["paced_baud"] == 9600
 
 
-@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM, signal.SIGHUP])
 def test_emulate_prints_its_device_and_exits_cleanly(emulator, tmp_path, sig):
     link = tmp_path / "ttyEMU"
     emu = emulator("--link", link)
@@ -170,16 +177,29 @@ def test_emulate_prints_its_device_and_exits_cleanly(emulator, tmp_path, sig):
     assert emu.state()["ended"] == "stopped"
 
 
+def test_emulate_replaces_a_stale_link_and_removes_it_on_exit(emulator, tmp_path):
+    """A link left by a killed emulator points to a pty that is gone: it may be replaced."""
+    ptys = [int(name) for name in os.listdir("/dev/pts") if name.isdigit()]
+    gone = f"/dev/pts/{max(ptys, default=0) + 1000}"
+    link = tmp_path / "ttyROBOT"
+    os.symlink(gone, link)
+    emu = emulator("--link", link)
+    assert os.readlink(link) == emu.state()["port"] != gone
+    code, stderr = emu.stop()
+    assert code == 0, stderr
+    assert not os.path.lexists(link)
+
+
 def test_emulate_dies_on_request(emulator):
-    emu = emulator("--die-after", "0.5")
+    emu = emulator("--die-after-s", "0.5")
     assert emu.proc.wait(timeout=20) == 0
     assert "dying now" in emu.proc.stderr.read()
 
 
 def test_injected_latency_shows_in_the_round_trip(emulator):
-    emu = emulator("--latency", "0.3")
+    emu = emulator("--latency-s", "0.3")
     code, stdout, stderr = finish(servicebot("drive", "--port", emu.path, "--linear", "0.02",
-                                             "--duration", "1.5", "--format", "json"))
+                                             "--duration-s", "1.5", "--format", "json"))
     assert code == 0, stderr
     summary = json.loads(stdout)
     assert summary["median_rtt_s"] >= 0.3 and summary["errors"] == 0

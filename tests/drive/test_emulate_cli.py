@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import os
+
 import pytest
 
 from tests.conftest import assert_one_line_error
@@ -10,8 +12,8 @@ from tests.conftest import assert_one_line_error
 @pytest.mark.parametrize(("args", "needles"), [
     (("--drop", "2"), ("'--drop'", "give a number from 0 to 1")),
     (("--corrupt", "-0.1"), ("'--corrupt'",)),
-    (("--latency", "-1"), ("must not be negative",)),
-    (("--die-after", "0"), ("must be above 0",)),
+    (("--latency-s", "-1"), ("must not be negative",)),
+    (("--die-after-s", "0"), ("must be above 0",)),
     (("--protocol", "arduino"), ("--ticks-per-rev", "needed with --protocol arduino")),
     (("--watchdog-ms", "0"), ("'--watchdog-ms'",)),
 ])
@@ -31,6 +33,34 @@ def test_a_link_that_cannot_be_made(run, tmp_path):
     assert_one_line_error(run("emulate", "--link", tmp_path), 2, "is a directory")
 
 
+def test_an_existing_file_at_link_is_never_touched(run, tmp_path):
+    notes = tmp_path / "notes.txt"
+    notes.write_text("my notes\n")
+    result = run("emulate", "--link", notes)
+    assert_one_line_error(result, 2, f"--link {notes}: already exists", "give another path")
+    assert result.stdout == ""  # no device was announced
+    assert not notes.is_symlink() and notes.read_text() == "my notes\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["notes.txt"]
+
+
+def test_a_symlink_that_is_not_an_emulators_is_never_touched(run, tmp_path):
+    notes = tmp_path / "notes.txt"
+    notes.write_text("my notes\n")
+    link = tmp_path / "tty"
+    link.symlink_to(notes)
+    assert_one_line_error(run("emulate", "--link", link), 2, f"is a symlink to {notes}")
+    assert os.readlink(link) == str(notes) and notes.read_text() == "my notes\n"
+
+
+def test_a_link_to_a_pty_in_use_is_never_touched(run, tmp_path, fake_device):
+    device = fake_device()  # another emulator's live pty
+    link = tmp_path / "tty"
+    link.symlink_to(device.path)
+    assert_one_line_error(run("emulate", "--link", link), 2, f"links to {device.path}",
+                          "in use")
+    assert os.readlink(link) == device.path
+
+
 def test_a_robot_the_binary_protocol_cannot_carry(run, tmp_path):
     from tests.conftest import REAL_URDF
 
@@ -41,5 +71,5 @@ def test_a_robot_the_binary_protocol_cannot_carry(run, tmp_path):
     urdf.write_text(text)
     assert_one_line_error(run("emulate", urdf), 2, "carries 4 wheels and 4 arm joints",
                           "3 arm joints")
-    assert_one_line_error(run("drive", urdf, "--dry-run", "--duration", "1"), 2,
+    assert_one_line_error(run("drive", urdf, "--dry-run", "--duration-s", "1"), 2,
                           "carries 4 wheels and 4 arm joints")

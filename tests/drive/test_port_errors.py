@@ -11,7 +11,7 @@ from servicebot_cli.drive.protocols import messages as msg
 from servicebot_cli.drive.protocols.framing import encode_frame
 from tests.conftest import assert_one_line_error
 
-ONE_SHOT = ("--linear", "0.01", "--duration", "0.5", "--connect-timeout", "0.5")
+ONE_SHOT = ("--linear", "0.01", "--duration-s", "0.5", "--connect-timeout-s", "0.5")
 
 
 def test_missing_port_lists_the_ports_that_exist(run, tmp_path, fake_device):
@@ -39,7 +39,7 @@ from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.drive.motors import motor_map
 for module in pkgutil.walk_packages(servicebot_cli.drive.__path__, "servicebot_cli.drive."):
     importlib.import_module(module.name)  # import while readable
-import servicebot_cli.commands._drive_plans  # noqa
+import servicebot_cli.output.drive_text  # noqa
 motor_map(load(RobotSource.bundled("real")))
 if os.geteuid() == 0:  # root opens everything: drop to nobody for a real permission check
     os.setgroups([]); os.setgid(65534); os.setuid(65534)

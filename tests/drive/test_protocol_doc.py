@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 import struct
 
-from servicebot_cli.drive.driving import link_capacity_hz
+from servicebot_cli.drive.link_setup import link_capacity_hz
 from servicebot_cli.drive.protocols import messages as msg
 from servicebot_cli.drive.protocols.arduino import ArduinoConfig
 from servicebot_cli.drive.protocols.binary import BinaryLink

@@ -16,12 +16,13 @@ import tty
 from collections.abc import Callable
 from dataclasses import asdict
 from pathlib import Path
-from typing import Any, Protocol
+from typing import Protocol
 
 from servicebot_cli.common.errors import ServicebotError
-from servicebot_cli.drive.emulator.firmware import MotorModel
+from servicebot_cli.drive.emulator.firmware import MotorModel, State
 from servicebot_cli.drive.emulator.wire import FaultInjector, PacedQueue, byte_time_s
 
+PTS_DIR = "/dev/pts/"
 _IDLE_S = 0.02  # longest sleep: the watchdog and SIGINT are seen at least this often
 _STATE_PERIOD_S = 0.1
 _REPORT_PERIOD_S = 1.0
@@ -40,7 +41,7 @@ class Firmware(Protocol):
     def receive(self, data: bytes, now_s: float) -> bytes:
         """Handle received bytes; return the reply bytes."""
 
-    def state(self) -> dict[str, object]:
+    def state(self) -> State:
         """Protocol-specific state for the state file."""
 
 
@@ -76,7 +77,16 @@ class PtyEmulator:
         self._report_frames = 0
 
     def open(self, link: Path | None = None) -> str:
-        """Create the pty (and a symlink ``link`` to it); return the path hosts open."""
+        """Create the pty (and a symlink ``link`` to it); return the path hosts open.
+
+        Raises:
+            EmulatorError: ``link`` is a path that is not ours to replace (checked before the
+                pty is made), or the link cannot be made.
+        """
+        if link is not None:
+            problem = link_problem(link)
+            if problem:
+                raise EmulatorError(f"--link {link}: {problem}")
         self.master, self.slave = pty.openpty()
         tty.setraw(self.slave)  # no echo, no line editing until a host configures it
         os.set_blocking(self.master, False)
@@ -86,9 +96,7 @@ class PtyEmulator:
         return str(link) if link is not None else self.path
 
     def _symlink(self, link: Path) -> None:
-        """Point ``link`` at the device, replacing an older link atomically."""
-        if link.is_dir():
-            raise EmulatorError(f"--link {link}: is a directory; give the path of a link to make")
+        """Point ``link`` at the device, replacing a stale link atomically."""
         temporary = link.with_name(f".{link.name}.{os.getpid()}")
         try:
             with contextlib.suppress(FileNotFoundError):
@@ -113,19 +121,19 @@ class PtyEmulator:
                     self.link.unlink()
 
     def serve(self, should_stop: Callable[[], bool],
-              on_state: Callable[[dict[str, Any]], None] | None = None) -> str:
-        """Answer until ``should_stop()``; return ``"stopped"`` or ``"died"`` (--die-after)."""
+              on_state: Callable[[State], None] | None = None) -> str:
+        """Answer until ``should_stop()``; return ``"stopped"`` or ``"died"`` (--die-after-s)."""
         next_state_s = self._start_s
         while not should_stop():
             now = self.clock()
             uptime = now - self._start_s
             if self.faults.die_after_s is not None and uptime >= self.faults.die_after_s:
-                self.log(f"dying now, {uptime:.1f} s after start (--die-after)")
+                self.log(f"dying now, {uptime:.1f} s after start (--die-after-s)")
                 return "died"
             if (not self.muted and self.faults.mute_after_s is not None
                     and uptime >= self.faults.mute_after_s):
                 self.muted = True
-                self.log(f"muted: no more answers, {uptime:.1f} s after start (--mute-after)")
+                self.log(f"muted: no more answers, {uptime:.1f} s after start (--mute-after-s)")
             self._pump(now)
             self._report(now)
             if on_state is not None and now >= next_state_s:
@@ -182,8 +190,7 @@ class PtyEmulator:
             self._next_report_s = now + _REPORT_PERIOD_S
         self._seen = counters
 
-
-    def state(self) -> dict[str, Any]:
+    def state(self) -> State:
         """Everything a test or a user may want to know, JSON-ready."""
         model = self.firmware.model
         motors = model.motors
@@ -212,7 +219,29 @@ class PtyEmulator:
         }
 
 
-def _counts(state: dict[str, object]) -> str:
+def link_problem(link: Path) -> str:
+    """Why ``link`` may not become the emulator's symlink; empty when it may.
+
+    A free path may, and so may a stale link an emulator left behind: a symlink to a
+    pseudo-terminal that no longer exists (its emulator was killed). Anything else is not
+    ours: a file, a directory, another symlink, or a link to a pty in use.
+    """
+    if not os.path.lexists(link):
+        return ""
+    if link.is_symlink():
+        target = os.readlink(link)
+        if target.startswith(PTS_DIR) and not os.path.exists(target):
+            return ""
+        if target.startswith(PTS_DIR):
+            return (f"links to {target}, which is in use (another emulator?); stop that "
+                    f"emulator or give another path")
+        return f"is a symlink to {target}, not an emulator's device; give another path"
+    if link.is_dir():
+        return "is a directory; give the path of a link to make"
+    return "already exists and is not an emulator's link; give another path (it is left as is)"
+
+
+def _counts(state: State) -> str:
     parts = []
     for key, value in state.items():
         if isinstance(value, dict):

@@ -29,13 +29,17 @@ _KEYS = {
 
 @contextlib.contextmanager
 def cbreak_terminal(fd: int) -> Iterator[None]:
-    """Put the terminal on ``fd`` in cbreak mode; restore its settings on exit."""
+    """Put the terminal on ``fd`` in cbreak mode; restore its settings on exit.
+
+    A terminal that hung up cannot be restored, and needs not be: that failure is ignored.
+    """
     saved = termios.tcgetattr(fd)
     try:
         tty.setcbreak(fd)
         yield
     finally:
-        termios.tcsetattr(fd, termios.TCSADRAIN, saved)
+        with contextlib.suppress(termios.error, OSError):
+            termios.tcsetattr(fd, termios.TCSADRAIN, saved)
 
 
 def parse_keys(data: bytes) -> list[str]:
@@ -64,7 +68,7 @@ class Teleop:
     """
 
     def __init__(self, fd: int, max_linear_m_s: float, max_angular_rad_s: float) -> None:
-        self.fds = (fd,)
+        self.fds: tuple[int, ...] = (fd,)
         self.linear_step = max_linear_m_s / STEPS
         self.angular_step = max_angular_rad_s / STEPS
         self.linear = 0  # in steps

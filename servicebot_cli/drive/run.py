@@ -1,0 +1,73 @@
+"""``servicebot drive`` without Click: a request in, a dry run or a finished run out.
+
+Everything that can be checked is checked before the port opens: the robot's motors, the
+protocol, the port and baud rate, the command rate, the plan (every script line, every arm
+target) and, for teleop, the terminal. Then the run streams, and stops on every way out.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Callable
+from typing import TypeAlias
+
+from servicebot_cli.drive.driving import Driven, StreamSettings, run_drive
+from servicebot_cli.drive.dry_run import DryRun, dry_run
+from servicebot_cli.drive.link_setup import check_rate, make_link, port_and_baud
+from servicebot_cli.drive.motors import MotorMap, motor_map
+from servicebot_cli.drive.plan import Plan
+from servicebot_cli.drive.plans import one_shot_plan, script_plan
+from servicebot_cli.drive.request import BadOption, DriveRequest, Keyboard, OneShot
+from servicebot_cli.drive.session.commander import HostLink
+from servicebot_cli.drive.teleop.terminal import Terminal, keyboard_session
+
+DriveResult: TypeAlias = DryRun | Driven
+
+
+def drive(request: DriveRequest, *, log: Callable[[str], None],
+          terminal: Terminal | None = None) -> DriveResult:
+    """Plan or run ``request``; warnings and progress lines go to ``log``.
+
+    Args:
+        request: What to drive, and how.
+        log: Told warnings (before the run) and events (during it), one line each.
+        terminal: The keyboard and status line for teleop (default: stdin and stderr).
+
+    Raises:
+        BadOption: A value the robot or the link rules out (exit 2).
+        DescriptionError: The description cannot be loaded or driven (exit 2).
+        ScriptError: A script line that is wrong (exit 2).
+        NoTerminal: Teleop without a terminal on stdin (exit 2).
+        LinkError: The port cannot be opened (exit 4).
+    """
+    from servicebot_cli.description.loader import load
+
+    robot = load(request.robot)
+    motors = motor_map(robot)
+    link = make_link(request.protocol, motors, request.arduino)
+    port, baud = port_and_baud(robot, request.port, request.baud, need_port=not request.dry_run)
+    check_rate(request.rate_hz, link, baud, None if request.dry_run else request.link_timeout_s,
+               log)
+    settings = StreamSettings(port, baud, request.rate_hz, request.max_accel_rad_s2,
+                              request.link_timeout_s, request.connect_timeout_s,
+                              request.reconnect, request.log)
+    if isinstance(request.mode, Keyboard):
+        if request.dry_run:
+            raise BadOption("--dry-run", "teleop has no frames to plan; give --script FILE or "
+                            "--linear/--angular/--duration-s")
+        keys = terminal or Terminal(sys.stdin, sys.stderr)
+        with keyboard_session(keys, motors) as (teleop, on_tick):
+            return run_drive(settings, link, motors, teleop, log=log, on_tick=on_tick)
+    plan = _plan(request, motors, link, log)
+    if request.dry_run:
+        return dry_run(plan, link, motors, request.max_accel_rad_s2, request.rate_hz)
+    return run_drive(settings, link, motors, plan, log=log)
+
+
+def _plan(request: DriveRequest, motors: MotorMap, link: HostLink,
+          log: Callable[[str], None]) -> Plan:
+    if isinstance(request.mode, OneShot):
+        return one_shot_plan(request.mode, motors, link, log)
+    if isinstance(request.mode, Keyboard):
+        raise ValueError("the keyboard has no plan")
+    return script_plan(request.mode, motors, link, log)
