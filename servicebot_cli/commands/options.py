@@ -192,9 +192,11 @@ class OutputPath(click.ParamType[str]):
     """
 
     def __init__(self, suffixes: Sequence[str] = (), *, directory: bool = False,
-                 fresh: bool = False, allow_dash: bool = False, what: str = "") -> None:
+                 fresh: bool = False, allow_dash: bool = False, what: str = "",
+                 parents: bool = False) -> None:
         self.suffixes = tuple(s.lower() for s in suffixes)
         self.directory, self.fresh, self.allow_dash = directory, fresh, allow_dash
+        self.parents = parents  # missing directories above it will be created (as xacro -o)
         self.what = what
         self.name = "DIR" if directory else "FILE" + (self.suffixes[0] if self.suffixes else "")
 
@@ -219,6 +221,10 @@ class OutputPath(click.ParamType[str]):
             self.fail(f"'{text}' already exists; remove it or give another path", param, ctx)
         target = path if self.directory and path.is_dir() else path.parent
         parent = target if str(target) else Path(".")
+        if self.parents:
+            parent = next((p for p in (parent, *parent.parents) if p.exists()), Path("."))
+            if not parent.is_dir():
+                self.fail(f"'{text}': '{parent}' is a file, not a directory", param, ctx)
         if not parent.is_dir():
             self.fail(f"'{text}': directory '{parent}' does not exist; create it first",
                       param, ctx)

@@ -24,13 +24,15 @@ class OutputError(ServicebotError):
 
 @contextlib.contextmanager
 def atomic_output(
-    path: str | os.PathLike[str], mode: str = "w", **open_kwargs: Any
+    path: str | os.PathLike[str], mode: str = "w", *, make_parents: bool = False,
+    **open_kwargs: Any
 ) -> Iterator[IO[Any]]:
     """Open a temporary file beside ``path``; on success it replaces ``path``.
 
     Args:
         path: The file to create or replace.
         mode: ``"w"`` for text (UTF-8, Unix newlines) or ``"wb"`` for bytes.
+        make_parents: Create missing directories above ``path`` first (as ``xacro -o``).
         **open_kwargs: Passed to :func:`open`.
 
     Raises:
@@ -39,6 +41,11 @@ def atomic_output(
     target = Path(path)
     if target.is_dir():
         raise OutputError(f"{target}: is a directory; give a file name to write")
+    if make_parents and str(target.parent):
+        try:
+            target.parent.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise _cannot_write(target, target.parent, exc) from None
     directory = _parent(target)
     try:
         fd, tmp_name = tempfile.mkstemp(dir=directory, prefix=f".{target.name}.", suffix=".tmp")
@@ -99,9 +106,11 @@ def _cannot_write(target: Path, directory: Path, exc: OSError) -> OutputError:
     return OutputError(f"{target}: cannot write: {exc.strerror or exc}")
 
 
-def write_atomic(path: str | os.PathLike[str], content: str | bytes) -> None:
+def write_atomic(path: str | os.PathLike[str], content: str | bytes, *,
+                 make_parents: bool = False) -> None:
     """Write ``content`` to ``path`` atomically (see :func:`atomic_output`)."""
-    with atomic_output(path, "wb" if isinstance(content, bytes) else "w") as handle:
+    with atomic_output(path, "wb" if isinstance(content, bytes) else "w",
+                       make_parents=make_parents) as handle:
         handle.write(content)
 
 
