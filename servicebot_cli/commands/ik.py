@@ -128,21 +128,20 @@ def ik(ctx: click.Context, robot_args: RobotArgs, frame: str | None,
 
     problem = IkProblem(robot_args.source(), frame, start, seed, with_base,
                         IkSettings(tol_m, tol_rad, max_attempts, solutions=solutions), deg, clamp)
-    if targets is None:
+    if position is not None:
         from servicebot_cli.kinematics.ik import IkRequest, TargetSpec, run
 
-        assert position is not None  # checked above: one of --position, --targets
         answer = run(IkRequest(problem, TargetSpec(position, rpy, quat, orientation_axes)),
                      clock=time.perf_counter)
         echo_notes(answer.notes)
         click.echo(ik_report.ik_output(answer, fmt), nl=False)
         if not answer.success:
             raise AnswerIsNo(ik_report.refusal(answer))
-        return
-    from servicebot_cli.batch import ik as batch
-    from servicebot_cli.output.batch_rows import RowFile
+    elif targets is not None:
+        from servicebot_cli.batch import ik as batch
+        from servicebot_cli.output.batch_rows import RowFile
 
-    summary = batch.run(batch.IkBatchRequest(problem, targets, orientation_axes, on_error),
-                        RowFile(output, fmt), warn=warn, clock=time.perf_counter)
-    if summary.failed:
-        raise AnswerIsNo(ik_report.batch_refusal(summary))
+        summary = batch.run(batch.IkBatchRequest(problem, targets, orientation_axes, on_error),
+                            RowFile(output, fmt), warn=warn, clock=time.perf_counter)
+        if summary.failed:
+            raise AnswerIsNo(ik_report.batch_refusal(summary))
