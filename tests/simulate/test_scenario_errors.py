@@ -31,6 +31,23 @@ YAML_CASES = [
      "duration_s: 1}\n", ":4:", "cmd_vel[1].start_s: 6 s is before the previous segment"),
     ("duration_s: [1\n", ":2:", "not valid YAML"),
     ("duration_s: 10\nduration_s: 11\n", ":2:", "given twice"),
+    # Values the command line refuses are refused in the file too.
+    ("duration_s: .nan\n", ":1:", "duration_s: expected a finite number, got nan"),
+    ("duration_s: .inf\n", ":1:", "duration_s: expected a finite number, got inf"),
+    ("duration_s: 10\ncontroller:\n  wheel_separation_multiplier: .nan\n", ":3:",
+     "controller.wheel_separation_multiplier: expected a finite number, got nan"),
+    ("duration_s: 10\ncontroller:\n  max_linear_acceleration_m_s2: .inf\n", ":3:",
+     "controller.max_linear_acceleration_m_s2: expected a finite number, got inf"),
+    ("duration_s: 10\ncontroller:\n  cmd_vel_timeout_s: -.inf\n", ":3:",
+     "controller.cmd_vel_timeout_s: expected a finite number, got -inf"),
+    ("duration_s: 10\ncmd_vel:\n  - {duration_s: 1, linear_m_s: .NaN}\n", ":3:",
+     "cmd_vel[0].linear_m_s: expected a finite number, got nan"),
+    ("duration_s: 10\ninitial_pose: {x_m: 1" + "0" * 400 + "}\n", ":2:",
+     "initial_pose.x_m: expected a finite number, got an integer too large for a float"),
+    ("duration_s: 10\ninitial_pose: {x_m: 1" + "0" * 5000 + "}\n", ":2:",
+     "initial_pose.x_m: expected a finite number, got an integer too long to read"),
+    # The seed is the command line's alone (--seed): a scenario cannot carry one.
+    ("duration_s: 10\nseed: -1\n", ":2:", "seed: unknown field"),
 ]
 
 
@@ -42,6 +59,10 @@ JSON_CASES = [
     ('{\n  "duration_s": 10,\n}\n', ":3:", "not valid JSON"),
     ('{"duration_s": 10, "world": {"walls": [{"from_m": [0, 0], "to_m": [0, 0]}]}}', ":1:",
      "world.walls[0].to_m: a wall needs two different ends"),
+    ('{\n  "duration_s": 1e999\n}\n', ":2:", "duration_s: expected a finite number, got inf"),
+    ('{\n  "duration_s": NaN\n}\n', ":2:", "not valid JSON: unexpected 'N'"),
+    ('{\n  "duration_s": 1' + "0" * 5000 + '\n}\n', ":2:",
+     "not valid JSON: a number too long to read"),
 ]
 
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 import json
 import re
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, NoReturn
 
 from servicebot_cli.common.errors import ServicebotError
 
@@ -106,11 +106,14 @@ def _yaml_value(node: Any, path: Path, positions: Positions, constructor: Any,
     if isinstance(node, yaml.SequenceNode):
         return [_yaml_value(item, (*path, i), positions, constructor, display)
                 for i, item in enumerate(node.value)]
+    line = node.start_mark.line + 1
     try:
         return constructor.construct_object(node, deep=True)
     except yaml.YAMLError as exc:
-        line = node.start_mark.line + 1
         raise ScenarioError(f"{display}:{line}: {dotted(path)}: {exc}") from None
+    except ValueError:  # an integer of more digits than Python converts
+        raise ScenarioError(f"{display}:{line}: {dotted(path)}: expected a finite number, "
+                            "got an integer too long to read") from None
 
 
 _NUMBER = re.compile(r"-?(?:0|[1-9]\d*)(?:\.\d+)?(?:[eE][-+]?\d+)?")
@@ -132,7 +135,7 @@ class _JsonParser:
             self.fail("extra data after the document")
         return Located(value, self.positions, self.display)
 
-    def fail(self, reason: str) -> None:
+    def fail(self, reason: str) -> NoReturn:
         line = self.text.count("\n", 0, self.pos) + 1
         raise ScenarioError(f"{self.display}:{line}: not valid JSON: {reason}")
 
@@ -158,8 +161,11 @@ class _JsonParser:
         match = _NUMBER.match(self.text, self.pos)
         if not match:
             self.fail(f"unexpected {char!r}" if char else "unexpected end of file")
-        self.pos = match.end()  # type: ignore[union-attr]
-        return json.loads(match.group())  # type: ignore[union-attr]
+        self.pos = match.end()
+        try:
+            return json.loads(match.group())
+        except ValueError:  # an integer of more digits than Python converts
+            self.fail("a number too long to read")
 
     def string(self) -> str:
         try:

@@ -66,15 +66,20 @@ class Reader:
         value = self.get(path)
         if isinstance(value, bool) or not isinstance(value, int | float):
             raise self.error(path, f"expected a number, got {_show(value)}")
-        if not math.isfinite(value):
+        try:
+            number = float(value)
+        except OverflowError:
+            raise self.error(path, "expected a finite number, got an integer too large for "
+                             "a float") from None
+        if not math.isfinite(number):
             raise self.error(path, f"expected a finite number, got {value}")
-        if positive and value <= 0:
-            raise self.error(path, f"must be positive, got {value:g}")
-        if minimum is not None and value < minimum:
-            raise self.error(path, f"must be at least {minimum:g}, got {value:g}")
-        if maximum is not None and value > maximum:
-            raise self.error(path, f"must be at most {maximum:g}, got {value:g}")
-        return float(value)
+        if positive and number <= 0:
+            raise self.error(path, f"must be positive, got {number:g}")
+        if minimum is not None and number < minimum:
+            raise self.error(path, f"must be at least {minimum:g}, got {number:g}")
+        if maximum is not None and number > maximum:
+            raise self.error(path, f"must be at most {maximum:g}, got {number:g}")
+        return number
 
     def optional_number(self, path: Path, **bounds: Any) -> float | None:
         """A number, or None when absent."""
