@@ -22,14 +22,14 @@ from pathlib import Path
 
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.simulate.scenario.definition import load_scenario
-from servicebot_cli.simulate.session import Outputs, simulate_and_write
+from servicebot_cli.simulate.session import Outputs, run_and_write
 
 
 def servicebot_run(scenario, robot) -> float:
     with tempfile.TemporaryDirectory() as tmp:
         start = time.perf_counter()
-        simulate_and_write(robot, scenario, seed=0, outputs=Outputs(bag=f"{tmp}/bag"),
-                           scenario_dir=Path.cwd())
+        run_and_write(robot, scenario, seed=0, outputs=Outputs(bag=f"{tmp}/bag"),
+                      scenario_dir=Path.cwd())
         return time.perf_counter() - start
 
 

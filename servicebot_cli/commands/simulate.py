@@ -8,8 +8,17 @@ from pathlib import Path
 import click
 
 from servicebot_cli.commands.command import Command
-from servicebot_cli.commands.options import Number, RobotArgs, format_option, robot_arguments
-from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.commands.options import (
+    Number,
+    OutputPath,
+    RobotArgs,
+    format_option,
+    given,
+    robot_arguments,
+)
+
+PLOT_SUFFIXES = (".png", ".svg", ".pdf")
+"""What the plot writer produces, chosen by the file's extension."""
 
 
 @click.command(cls=Command)
@@ -17,10 +26,12 @@ from servicebot_cli.common.errors import ServicebotError
 @click.option("-s", "--scenario", "scenario_file", type=click.Path(dir_okay=False),
               help="Scenario file, YAML or JSON (default: the built-in loop in a room).")
 @click.option("--headless", is_flag=True, help="No window: simulate, write outputs, print.")
-@click.option("--out", "out_dir", type=click.Path(file_okay=False),
+@click.option("--out", "out_dir", type=OutputPath(directory=True),
               help="Write one CSV per stream and summary.json into this directory.")
-@click.option("--bag", type=click.Path(), help="Write a ROS 2 bag (MCAP storage) directory.")
-@click.option("--plot", type=click.Path(dir_okay=False), help="Save a picture of the run (PNG).")
+@click.option("--bag", type=OutputPath(directory=True, fresh=True),
+              help="Write a ROS 2 bag (MCAP storage) directory; it must not exist yet.")
+@click.option("--plot", type=OutputPath(suffixes=PLOT_SUFFIXES, what="plot"),
+              metavar="FILE.png", help="Save a picture of the run (.png, .svg or .pdf).")
 @click.option("--seed", type=click.IntRange(min=0, max=2**63 - 1), default=0, show_default=True,
               help="Seed of all sensor noise.")
 @click.option("--duration-s", type=Number("S", positive=True, maximum=86400),
@@ -37,7 +48,7 @@ from servicebot_cli.common.errors import ServicebotError
 @click.option("--max-angular-acceleration", "max_angular", type=Number("RAD_S2", positive=True),
               help="Angular acceleration limit [rad/s^2].  [default: none]")
 @click.option("--speed", type=Number(positive=True), default=1.0,
-              show_default=True, help="Playback speed of the live window.")
+              show_default=True, help="Playback speed of the live window (not with --headless).")
 @click.option("--progress/--no-progress", default=None,
               help="Progress bar on stderr  [default: on a terminal, outside CI].")
 @format_option
@@ -59,41 +70,34 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
       servicebot simulate --headless -s run.yaml --out results --bag run_bag --plot run.png
       servicebot simulate --headless --saturation per-wheel --format json
     """
-    from servicebot_cli.description.loader import load
-    from servicebot_cli.simulate.files.live import display_problem
-    from servicebot_cli.simulate.scenario.definition import load_scenario
-    from servicebot_cli.simulate.session import Outputs, simulate_and_write, with_overrides
+    from servicebot_cli.output.simulate_text import show_simulation
+    from servicebot_cli.simulate import session
+    from servicebot_cli.simulate.session import Outputs, Overrides, SimulateRequest
 
-    robot = load(robot_args.source())
-    scenario = with_overrides(
-        load_scenario(scenario_file), duration_s, saturation=saturation,
-        wheel_separation_multiplier=wheel_separation_multiplier,
-        cmd_vel_timeout_s=cmd_vel_timeout_s, max_linear_acceleration_m_s2=max_linear,
-        max_angular_acceleration_rad_s2=max_angular)
-    problem = "" if headless else display_problem()
-    if problem:  # checked after the input, before any work
-        raise ServicebotError(f"{problem}; use --headless (with --plot FILE.png for a picture)")
-    base_dir = Path(scenario_file).parent if scenario_file else Path.cwd()
-    report = simulate_and_write(robot, scenario, seed=seed, outputs=Outputs(out_dir, bag, plot),
-                                scenario_dir=base_dir, stderr=sys.stderr,
-                                progress=progress)
-    _print(report, fmt)
+    _refuse_without_effect(headless, out_dir, bag)
+    overrides = Overrides(duration_s=duration_s, saturation=saturation,
+                          wheel_separation_multiplier=wheel_separation_multiplier,
+                          cmd_vel_timeout_s=cmd_vel_timeout_s,
+                          max_linear_acceleration_m_s2=max_linear,
+                          max_angular_acceleration_rad_s2=max_angular)
+    request = SimulateRequest(robot_args.source(), scenario_file, overrides, seed,
+                              Outputs(out_dir, bag, plot), live_window=not headless,
+                              progress=progress)
+    report = session.run(request, stderr=sys.stderr)
+    show_simulation(report, fmt)
     if not headless:
         from servicebot_cli.simulate.files.live import show
 
         show(report.result, speed=speed)
 
 
-def _print(report: object, fmt: str) -> None:
-    from servicebot_cli.common.jsonable import dumps
-    from servicebot_cli.output.simulate_text import summary_lines
-
-    summary = report.summary  # type: ignore[attr-defined]
-    if fmt == "json":
-        click.echo(dumps(summary), nl=False)
-    else:
-        for line in summary_lines(summary):
-            click.echo(line)
-    rtf = summary["duration_s"] / max(report.wall_s, 1e-9)  # type: ignore[attr-defined]
-    click.echo(f"simulated {summary['duration_s']:g} s in {report.wall_s:.2f} s "  # type: ignore[attr-defined]
-               f"(real-time factor {rtf:.0f})", err=True)
+def _refuse_without_effect(headless: bool, out_dir: str | None, bag: str | None) -> None:
+    """Refuse ``--speed`` with ``--headless``, and one directory for ``--out`` and ``--bag``."""
+    ctx = click.get_current_context()
+    if headless and given(ctx, "speed"):
+        raise click.UsageError("--speed has no effect with --headless: it is the live "
+                               "window's playback speed; drop --speed or --headless", ctx=ctx)
+    if out_dir is not None and bag is not None \
+            and Path(out_dir).resolve() == Path(bag).resolve():
+        raise click.BadParameter(f"'{bag}' is also the --out directory; give the bag its own "
+                                 "path", ctx=ctx, param_hint="--bag")

@@ -1,22 +1,32 @@
-"""One ``simulate`` invocation, from parsed options to files.
+"""One ``simulate`` invocation: a request in, the run's report out, every output written.
 
-The command's work, kept out of Click so bench/simulate.py can drive and time it.
+Click-free, so the command only builds a :class:`SimulateRequest` and bench/simulate.py can
+drive and time the same function. The progress stream and the clock are injected.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import time
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, TextIO
+from typing import TYPE_CHECKING, TextIO
 
+from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.simulate.scenario.definition import Scenario
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.loader import RobotSource
+    from servicebot_cli.description.robot import RobotDescription
+    from servicebot_cli.simulate.bag.ros_messages import Stream
+    from servicebot_cli.simulate.simulator import SimResult
+    from servicebot_cli.simulate.summary import Summary
 
 
 @dataclass(frozen=True)
 class Outputs:
-    """Where a run writes: a CSV directory, a bag directory, a PNG; None for none."""
+    """Where a run writes: a CSV directory, a bag directory, a picture; None for none."""
 
     out_dir: str | None = None
     bag: str | None = None
@@ -24,27 +34,96 @@ class Outputs:
 
 
 @dataclass(frozen=True)
-class Report:
-    """What the command prints: the summary and the wall time the run took [s]."""
+class Overrides:
+    """Command-line values that replace the scenario file's; None keeps the file's."""
 
-    summary: dict[str, Any]
+    duration_s: float | None = None
+    saturation: str | None = None
+    wheel_separation_multiplier: float | None = None
+    cmd_vel_timeout_s: float | None = None
+    max_linear_acceleration_m_s2: float | None = None
+    max_angular_acceleration_rad_s2: float | None = None
+
+
+@dataclass(frozen=True)
+class SimulateRequest:
+    """Everything one run needs.
+
+    Attributes:
+        robot: The robot description to simulate.
+        scenario_file: A YAML or JSON scenario, or None for the built-in one.
+        overrides: Values that replace the scenario's.
+        seed: Seed of all sensor noise (non-negative).
+        outputs: Files and directories to write.
+        live_window: The run is played back in a window afterwards: a display must exist.
+        progress: Draw a progress bar (None: on a terminal, outside CI).
+    """
+
+    robot: RobotSource
+    scenario_file: str | None = None
+    overrides: Overrides = Overrides()
+    seed: int = 0
+    outputs: Outputs = Outputs()
+    live_window: bool = False
+    progress: bool | None = None
+
+
+@dataclass(frozen=True)
+class SimulateReport:
+    """What the command shows: the summary, the wall time of the run [s] and the run itself."""
+
+    summary: Summary
     wall_s: float
-    result: Any
+    result: SimResult
+
+    @property
+    def real_time_factor(self) -> float:
+        """Simulated time over the wall time the run took."""
+        return self.summary["duration_s"] / max(self.wall_s, 1e-9)
 
 
-def with_overrides(scenario: Scenario, duration_s: float | None = None,
-                   **controller: Any) -> Scenario:
-    """``scenario`` with command-line values in place of the file's (None: keep the file's)."""
-    changes = {k: v for k, v in controller.items() if v is not None}
-    ctrl = dataclasses.replace(scenario.controller, **changes)
-    return dataclasses.replace(scenario, controller=ctrl,
-                               duration_s=duration_s if duration_s else scenario.duration_s)
+def run(request: SimulateRequest, *, stderr: TextIO | None = None,
+             clock: Callable[[], float] = time.perf_counter) -> SimulateReport:
+    """Load the robot and the scenario, run it and write every requested output.
+
+    Args:
+        request: The run.
+        stderr: Where the progress bar goes (None: no bar).
+        clock: Wall clock [s] for the report's ``wall_s``.
+
+    Raises:
+        ServicebotError: Bad robot or scenario, no display for the live window, or an
+            output that cannot be written.
+    """
+    from servicebot_cli.description.loader import load
+    from servicebot_cli.simulate.files.live import display_problem
+    from servicebot_cli.simulate.scenario.definition import load_scenario
+
+    robot = load(request.robot)
+    scenario = with_overrides(load_scenario(request.scenario_file), request.overrides)
+    problem = display_problem() if request.live_window else ""
+    if problem:  # checked after the input, before any work
+        raise ServicebotError(f"{problem}; use --headless (with --plot FILE.png for a picture)")
+    scenario_dir = Path(request.scenario_file).parent if request.scenario_file else Path.cwd()
+    return run_and_write(robot, scenario, seed=request.seed, outputs=request.outputs,
+                         scenario_dir=scenario_dir, stderr=stderr, progress=request.progress,
+                         clock=clock)
 
 
-def simulate_and_write(robot: Any, scenario: Scenario, *, seed: int, outputs: Outputs,
-                       scenario_dir: Path, stderr: TextIO | None = None,
-                       progress: bool | None = None) -> Report:
-    """Run the scenario and write every requested output.
+def with_overrides(scenario: Scenario, overrides: Overrides) -> Scenario:
+    """``scenario`` with the values of ``overrides`` that are not None in place of its own."""
+    changes = {f.name: getattr(overrides, f.name) for f in dataclasses.fields(overrides)
+               if f.name != "duration_s" and getattr(overrides, f.name) is not None}
+    controller = dataclasses.replace(scenario.controller, **changes)
+    duration_s = scenario.duration_s if overrides.duration_s is None else overrides.duration_s
+    return dataclasses.replace(scenario, controller=controller, duration_s=duration_s)
+
+
+def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
+                  outputs: Outputs, scenario_dir: Path, stderr: TextIO | None = None,
+                  progress: bool | None = None,
+                  clock: Callable[[], float] = time.perf_counter) -> SimulateReport:
+    """Run ``scenario`` on a loaded robot and write ``outputs``; the wall time excludes loading.
 
     Raises:
         ServicebotError: Bad scenario for this robot, or an output that cannot be written.
@@ -57,36 +136,43 @@ def simulate_and_write(robot: Any, scenario: Scenario, *, seed: int, outputs: Ou
     from servicebot_cli.simulate.world.meshes import load_meshes
     from servicebot_cli.simulate.world.solids import world_solids
 
-    start = time.perf_counter()
+    start = clock()
     body = sim_robot(robot)
     meshes = load_meshes(scenario, scenario_dir)
-    bar = Progress(simulator.scan_count(body, scenario) + 3, stderr, enabled=progress) \
-        if stderr is not None else None
+    writers = _writers(outputs)
+    bar = Progress(simulator.scan_count(body, scenario) + len(writers), stderr,
+                   enabled=progress) if stderr is not None else None
     result = simulator.run(body, scenario, seed=seed, solids=world_solids(scenario.world),
                            meshes=meshes, progress=bar.advance if bar else None)
     streams = ros_messages.streams(result)
     summary = summarize(result, streams)
-    for stage, write in _writers(outputs, result, streams, summary):
+    for stage, write in writers:
         if bar:
             bar.stage(stage)
-        write()
+        write(result, streams, summary)
         if bar:
             bar.advance()
     if bar:
         bar.close()
-    return Report(summary, time.perf_counter() - start, result)
+    return SimulateReport(summary, clock() - start, result)
 
 
-def _writers(outputs: Outputs, result: Any, streams: Any, summary: Any) -> list[tuple[str, Any]]:
+Writer = Callable[["SimResult", "Sequence[Stream]", "Summary"], None]
+"""Writes one output from the run, its message streams and its summary."""
+
+
+def _writers(outputs: Outputs) -> list[tuple[str, Writer]]:
+    """The writers ``outputs`` asks for, in order, each with its progress-bar label."""
     from servicebot_cli.simulate.bag.rosbag import write_bag
     from servicebot_cli.simulate.files.csv_out import write_directory
     from servicebot_cli.simulate.files.plot import write_plot
 
-    writers = []
-    if outputs.bag:
-        writers.append(("writing bag", lambda: write_bag(outputs.bag, streams)))  # type: ignore[arg-type]
-    if outputs.out_dir:
-        writers.append(("writing CSV", lambda: write_directory(outputs.out_dir, result, summary)))  # type: ignore[arg-type]
-    if outputs.plot:
-        writers.append(("plotting", lambda: write_plot(outputs.plot, result)))  # type: ignore[arg-type]
+    writers: list[tuple[str, Writer]] = []
+    if (bag := outputs.bag) is not None:
+        writers.append(("writing bag", lambda result, streams, summary: write_bag(bag, streams)))
+    if (out_dir := outputs.out_dir) is not None:
+        writers.append(("writing CSV", lambda result, streams, summary:
+                        write_directory(out_dir, result, summary)))
+    if (plot := outputs.plot) is not None:
+        writers.append(("plotting", lambda result, streams, summary: write_plot(plot, result)))
     return writers

@@ -7,19 +7,78 @@ README.md). It carries no wall-clock time, so the same seed gives the same bytes
 from __future__ import annotations
 
 import math
-from typing import Any
+from collections.abc import Sequence
+from typing import TypedDict
 
 import numpy as np
+import numpy.typing as npt
 
 from servicebot_cli.simulate.bag.ros_messages import Stream
+from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.simulator import SimResult
+from servicebot_cli.simulate.world.motion import Contact
+
+FloatArray = npt.NDArray[np.float64]
 
 
-def _pose(x: float, y: float, yaw: float) -> dict[str, float]:
+class Pose(TypedDict):
+    """A pose on the floor in the world frame; yaw wrapped to [-pi, pi]."""
+
+    x_m: float
+    y_m: float
+    yaw_rad: float
+
+
+class Drift(TypedDict):
+    """How far wheel odometry is from the ground truth."""
+
+    final_position_m: float
+    max_position_m: float
+    final_yaw_rad: float
+
+
+class Collision(TypedDict):
+    """Where and when the base touched an obstacle."""
+
+    time_s: float
+    obstacle: str
+    x_m: float
+    y_m: float
+    yaw_rad: float
+
+
+class EndEffector(TypedDict):
+    """The arm's last frame and its world position [m] at the end."""
+
+    frame: str
+    position_m: list[float]
+
+
+class Summary(TypedDict):
+    """The run's summary: ``summary.json`` and ``--format json`` (keys in README.md)."""
+
+    robot: str
+    scenario: str
+    seed: int
+    duration_s: float
+    distance_m: float
+    final_pose: Pose
+    odometry_final_pose: Pose | None
+    odometry_drift: Drift
+    collisions: list[Collision]
+    min_obstacle_distance_m: float
+    closest_obstacle: str | None
+    closest_time_s: float | None
+    arm_final_positions_rad: dict[str, float]
+    end_effector: EndEffector | None
+    messages: dict[str, int]
+
+
+def _pose(x: float, y: float, yaw: float) -> Pose:
     return {"x_m": float(x), "y_m": float(y), "yaw_rad": float(math.remainder(yaw, math.tau))}
 
 
-def odometry_in_world(result: SimResult) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def odometry_in_world(result: SimResult) -> tuple[FloatArray, FloatArray, FloatArray]:
     """The odometry estimate moved into the world frame (odom starts at the initial pose)."""
     start, odom = result.scenario.initial_pose, result.odometry
     c, s = math.cos(start.yaw_rad), math.sin(start.yaw_rad)
@@ -27,7 +86,7 @@ def odometry_in_world(result: SimResult) -> tuple[np.ndarray, np.ndarray, np.nda
             start.yaw_rad + odom.yaw_rad)
 
 
-def summarize(result: SimResult, streams: list[Stream]) -> dict[str, Any]:
+def summarize(result: SimResult, streams: Sequence[Stream]) -> Summary:
     """The run's summary as plain JSON-ready values."""
     truth = result.truth
     distance = float(np.sum(np.hypot(np.diff(truth.x_m), np.diff(truth.y_m))))
@@ -51,8 +110,7 @@ def summarize(result: SimResult, streams: list[Stream]) -> dict[str, Any]:
             "final_yaw_rad": float(abs(math.remainder(oyaw[-1] - tyaw[-1], math.tau)))
             if len(drift) else 0.0,
         },
-        "collisions": [{"time_s": c.time_s, "obstacle": c.obstacle,
-                        **_pose(c.x_m, c.y_m, c.yaw_rad)} for c in result.contacts],
+        "collisions": [_collision(c) for c in result.contacts],
         "min_obstacle_distance_m": 0.0 if result.contacts else closest.distance_m,
         "closest_obstacle": result.solids[closest.solid].name if closest.solid >= 0 else None,
         "closest_time_s": closest.index * truth.dt_s if closest.index >= 0 else None,
@@ -63,7 +121,13 @@ def summarize(result: SimResult, streams: list[Stream]) -> dict[str, Any]:
     }
 
 
-def end_effector(result: SimResult) -> dict[str, Any] | None:
+def _collision(contact: Contact) -> Collision:
+    pose = _pose(contact.x_m, contact.y_m, contact.yaw_rad)
+    return {"time_s": contact.time_s, "obstacle": contact.obstacle, "x_m": pose["x_m"],
+            "y_m": pose["y_m"], "yaw_rad": pose["yaw_rad"]}
+
+
+def end_effector(result: SimResult) -> EndEffector | None:
     """World position of the arm's last frame in the final configuration of the whole robot.
 
     One Pinocchio configuration holds the planar base (x, y, cos, sin of yaw), every wheel
@@ -88,7 +152,7 @@ def end_effector(result: SimResult) -> dict[str, Any] | None:
     return {"frame": tip, "position_m": position.tolist()}
 
 
-def _arm_tip(body: Any) -> str | None:
+def _arm_tip(body: SimRobot) -> str | None:
     """The first link below the arm joints that is no joint's parent (the end effector)."""
     robot = body.robot
     below = {robot.joint(n).child for n in body.arm_joints}

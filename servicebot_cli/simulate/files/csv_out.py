@@ -1,21 +1,27 @@
 """One CSV file per stream, plus summary.json, in an output directory.
 
-Every file is written atomically. Numbers are written in the shortest form that reads back
-to the same float, so files are exact and the same seed gives the same bytes.
+Every file is written to a temporary first and renamed into place only once all are written,
+so an error or a signal leaves no temporary file and no partial set of new files. Numbers are
+written in the shortest form that reads back to the same float, so files are exact and the
+same seed gives the same bytes.
 """
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.common.files import OutputError, atomic_output, write_atomic
+from servicebot_cli.common.files import OutputError, atomic_directory, atomic_output
 from servicebot_cli.common.jsonable import dumps
 from servicebot_cli.simulate.simulator import SimResult
+
+if TYPE_CHECKING:
+    from servicebot_cli.simulate.summary import Summary
 
 
 def _table(header: Sequence[str], columns: Sequence[npt.ArrayLike]) -> str:
@@ -76,21 +82,25 @@ def tables(result: SimResult) -> dict[str, str]:
     return out
 
 
-def write_directory(directory: str | Path, result: SimResult, summary: dict[str, Any]) -> None:
-    """Write every CSV and ``summary.json`` into ``directory`` (created if missing).
+def write_directory(directory: str | Path, result: SimResult, summary: Summary) -> None:
+    """Write every CSV and ``summary.json`` into ``directory``.
+
+    A missing directory is built under a temporary name beside it and renamed into place;
+    in an existing one, every file is written to a temporary first and all are renamed at
+    the end. Either way an interrupted run leaves no temporary and no partial set of files.
 
     Raises:
         OutputError: The directory cannot be created or written.
     """
     path = Path(directory)
-    try:
-        path.mkdir(parents=True, exist_ok=True)
-    except FileExistsError:
-        raise OutputError(f"{path}: exists and is not a directory; give a directory for --out") \
-            from None
-    except OSError as exc:
-        raise OutputError(f"{path}: cannot create directory: {exc.strerror or exc}") from None
-    for name, text in tables(result).items():
-        with atomic_output(path / name) as handle:
-            handle.write(text)
-    write_atomic(path / "summary.json", dumps(summary))
+    files = {**tables(result), "summary.json": dumps(summary)}
+    if path.exists() and not path.is_dir():
+        raise OutputError(f"{path}: exists and is not a directory; give a directory for --out")
+    if not path.exists():
+        with atomic_directory(path) as temporary:
+            for name, text in files.items():
+                (temporary / name).write_text(text, encoding="utf-8", newline="\n")
+        return
+    with contextlib.ExitStack() as stack:  # each file is renamed into place on exit
+        for name, text in files.items():
+            stack.enter_context(atomic_output(path / name)).write(text)

@@ -1,7 +1,7 @@
 """A picture of a run: the world from above with both paths and a LIDAR scan, and the arm.
 
 Drawn on a bare matplotlib Figure (no pyplot state), so it works without a display and the
-same run gives the same PNG bytes. The live window reuses :func:`draw_world`.
+same run gives the same PNG, SVG or PDF bytes. The live window reuses :func:`draw_world`.
 """
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from servicebot_cli.common.files import atomic_output
+from servicebot_cli.common.files import OutputError, atomic_output
 from servicebot_cli.simulate.simulator import SimResult
 from servicebot_cli.simulate.summary import odometry_in_world
 
@@ -120,15 +120,31 @@ def figure(result: SimResult) -> Any:
     return fig
 
 
+PLOT_FORMATS = {".png": "png", ".svg": "svg", ".pdf": "pdf"}
+"""File extension to the format matplotlib writes."""
+
+# Metadata that would change the bytes between two runs of the same seed (dates, versions).
+_NO_METADATA = {"png": {"Software": None}, "svg": {"Date": None, "Creator": None},
+                "pdf": {"CreationDate": None, "Creator": None, "Producer": None}}
+
+
 def write_plot(path: str | Path, result: SimResult) -> None:
-    """Save the figure as PNG, atomically.
+    """Save the figure as PNG, SVG or PDF (by the extension), atomically.
 
     Raises:
-        OutputError: The file cannot be written.
+        OutputError: The extension is none of :data:`PLOT_FORMATS`, or the file cannot be
+            written.
     """
+    import matplotlib
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
+    fmt = PLOT_FORMATS.get(Path(path).suffix.lower())
+    if fmt is None:
+        raise OutputError(f"{path}: a plot is written as {', '.join(PLOT_FORMATS)}; "
+                          "name the file with one of these extensions")
     fig = figure(result)
     FigureCanvasAgg(fig)
-    with atomic_output(path, "wb") as handle:
-        fig.savefig(handle, format="png", metadata={"Software": None})
+    # A fixed salt makes SVG element ids, and so the bytes, the same for the same run.
+    with matplotlib.rc_context({"svg.hashsalt": "servicebot"}), \
+            atomic_output(path, "wb") as handle:
+        fig.savefig(handle, format=fmt, metadata=_NO_METADATA[fmt])

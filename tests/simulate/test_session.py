@@ -1,0 +1,61 @@
+"""The click-free ``simulate`` entry point: a request in, a typed report out."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+
+import pytest
+
+from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.common.jsonable import dumps
+from servicebot_cli.description.loader import RobotSource
+from servicebot_cli.output.simulate_text import speed_line, summary_lines
+from servicebot_cli.simulate import session
+from servicebot_cli.simulate.session import Outputs, Overrides, SimulateReport, SimulateRequest
+
+
+def _ticks(*values: float):
+    """A clock that returns ``values`` in turn: the wall time is known exactly."""
+    it = iter(values)
+    return lambda: next(it)
+
+
+def test_run_returns_the_summary_and_the_wall_time_of_the_run(tmp_path):
+    request = SimulateRequest(RobotSource.bundled("sim"), overrides=Overrides(duration_s=5.0),
+                              seed=3, outputs=Outputs(out_dir=str(tmp_path / "out")))
+    report = session.run(request, clock=_ticks(10.0, 10.5))
+    assert isinstance(report, SimulateReport)
+    assert report.wall_s == 0.5 and report.real_time_factor == pytest.approx(10.0)
+    assert report.summary["duration_s"] == 5.0 and report.summary["seed"] == 3
+    assert report.result.scenario.duration_s == 5.0
+    assert json.loads((tmp_path / "out" / "summary.json").read_text()) == json.loads(
+        dumps(report.summary))
+    assert speed_line(report) == "simulated 5 s in 0.50 s (real-time factor 10)"
+    lines = list(summary_lines(report.summary))
+    assert lines[0] == "service_robot, scenario default, 5 s, seed 3"
+
+
+def test_overrides_replace_only_what_they_name(tmp_path):
+    scenario = tmp_path / "s.yaml"
+    scenario.write_text("duration_s: 2\ncontroller: {cmd_vel_timeout_s: 0.25, "
+                        "saturation: per-wheel}\n")
+    request = SimulateRequest(RobotSource.bundled("sim"), str(scenario),
+                              Overrides(wheel_separation_multiplier=1.2))
+    controller = session.run(request).result.scenario.controller
+    assert (controller.wheel_separation_multiplier, controller.cmd_vel_timeout_s,
+            controller.saturation) == (1.2, 0.25, "per-wheel")
+    changed = session.run(dataclasses.replace(
+        request, overrides=Overrides(duration_s=1.0, saturation="keep-curvature")))
+    assert changed.result.scenario.duration_s == 1.0
+    assert changed.result.scenario.controller.saturation == "keep-curvature"
+
+
+def test_live_window_without_a_display_is_refused_before_any_work(tmp_path, monkeypatch):
+    monkeypatch.setenv("DISPLAY", "")
+    monkeypatch.setenv("WAYLAND_DISPLAY", "")
+    request = SimulateRequest(RobotSource.bundled("sim"), live_window=True,
+                              outputs=Outputs(out_dir=str(tmp_path / "out")))
+    with pytest.raises(ServicebotError, match="--headless"):
+        session.run(request)
+    assert list(tmp_path.iterdir()) == []
