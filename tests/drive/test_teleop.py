@@ -6,6 +6,7 @@ import fcntl
 import os
 import pty
 import select
+import signal
 import struct
 import subprocess
 import sys
@@ -118,4 +119,25 @@ def test_the_status_line_fits_a_narrow_terminal(emulator):
                  chunk.split("\r\n") if "cmd L" in part]
         assert lines and all(len(line) < 60 for line in lines)
     finally:
+        terminal.close()
+
+
+def test_a_hang_up_during_teleop_stops_the_motors_and_restores_the_terminal(emulator):
+    emu = emulator()
+    terminal = Terminal("--port", emu.path)
+    try:
+        wait_for(lambda: "cmd L" in terminal.read(), "the status line")
+        terminal.type(b"ww")
+        wait_for(lambda: any(w["velocity_rad_s"] > 0 for w in emu.state()["wheels"]),
+                 "the wheels to turn forward")
+        os.kill(terminal.proc.pid, signal.SIGHUP)
+        assert terminal.finish() == 129, terminal.read()
+        assert termios.tcgetattr(terminal.slave) == terminal.before  # cbreak mode undone
+        assert "Error: hung up (SIGHUP); motors stopped (the firmware confirmed)" in \
+            terminal.read()
+        wait_for(lambda: emu.state()["counters"]["stops"] == 1, "the stop")
+        assert not emu.state()["moving"] and emu.state()["counters"]["watchdog_trips"] == 0
+    finally:
+        if terminal.proc.poll() is None:
+            terminal.proc.kill()
         terminal.close()
