@@ -177,6 +177,14 @@ def test_emulate_prints_its_device_and_exits_cleanly(emulator, tmp_path, sig):
     assert emu.state()["ended"] == "stopped"
 
 
+def test_emulate_quit_by_sigquit_still_removes_its_link(emulator, tmp_path):
+    link = tmp_path / "ttyEMU"
+    emu = emulator("--link", link)
+    code, stderr = emu.stop(signal.SIGQUIT)
+    assert code == 131 and stderr.splitlines()[-1] == "Error: quit (SIGQUIT)"
+    assert not os.path.lexists(link)
+
+
 def test_emulate_replaces_a_stale_link_and_removes_it_on_exit(emulator, tmp_path):
     """A link left by a killed emulator points to a pty that is gone: it may be replaced."""
     ptys = [int(name) for name in os.listdir("/dev/pts") if name.isdigit()]
