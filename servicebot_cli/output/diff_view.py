@@ -99,3 +99,18 @@ def diff_json(result: DiffResult) -> dict[str, Any]:
         "differences": [{"element": d.element, "field": d.field, "change": d.change,
                          "a": d.a, "b": d.b, "unit": d.unit} for d in result.differences],
     }
+
+
+def show(result: DiffResult, fmt: str) -> None:
+    """Print the differences as text (coloured on a terminal), Markdown or JSON."""
+    import click
+
+    if fmt == "json":
+        from servicebot_cli.common.jsonable import dumps
+
+        click.echo(dumps(diff_json(result)), nl=False)
+        return
+    lines = diff_markdown(result) if fmt == "markdown" else diff_lines(
+        result, lambda text, colour: click.style(text, fg=colour))
+    for line in lines:
+        click.echo(line)

@@ -1,4 +1,8 @@
-"""``servicebot inspect`` for a terminal: each section as tables no wider than 100 columns."""
+"""``servicebot inspect`` for a terminal: each section as tables no wider than 100 columns.
+
+:func:`show` is the one place that prints an inspection: notes on stderr, the picture, then
+the sections in the format asked for.
+"""
 
 from __future__ import annotations
 
@@ -6,14 +10,17 @@ import textwrap
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
+import click
+
 from servicebot_cli.output import extension_tables as ext
 from servicebot_cli.output import inspect_tables as core
 from servicebot_cli.output.blocks import Table
-from servicebot_cli.output.table import table
+from servicebot_cli.output.table import format_number, table
 from servicebot_cli.output.tree_view import tree_table
 
 if TYPE_CHECKING:
     from servicebot_cli.inspect.report import Inspection
+    from servicebot_cli.inspect.run import Clamped, InspectResult
 
 WIDTH = 100
 
@@ -64,3 +71,53 @@ def _args(inspection: Inspection) -> str:
     if not inspection.xacro_args:
         return ""
     return " " + " ".join(f"{k}:={v}" for k, v in inspection.xacro_args.items())
+
+
+def clamp_note(clamped: Clamped) -> str:
+    """``note: --clamp: joint 'j' 5 rad is above its upper limit; using 2.61799 rad``."""
+    side = "above its upper" if clamped.limit == "upper" else "below its lower"
+    return (f"note: --clamp: joint '{clamped.joint}' {format_number(clamped.given)} "
+            f"{clamped.unit} is {side} limit; using {format_number(clamped.used)} "
+            f"{clamped.unit}")
+
+
+def inspection_lines(inspection: Inspection, fmt: str) -> Iterator[str]:
+    """The sections as ``text``, ``json``, ``markdown``, or the tree as ``dot``/``mermaid``."""
+    if fmt == "json":
+        from servicebot_cli.common.jsonable import dumps
+
+        yield dumps(inspection.to_json()).rstrip("\n")
+    elif fmt == "markdown":
+        from servicebot_cli.output.markdown import markdown_lines
+
+        yield from markdown_lines(inspection)
+    elif fmt in ("dot", "mermaid"):
+        from servicebot_cli.output.graph import dot_lines, mermaid_lines
+
+        tree = inspection.tree
+        if tree is not None:
+            yield from dot_lines(tree, inspection.robot) if fmt == "dot" else mermaid_lines(tree)
+    else:
+        yield from text_lines(inspection, lambda text: click.style(text, bold=True))
+
+
+def show(result: InspectResult, fmt: str, render_path: str | None = None,
+         view: str = "iso") -> None:
+    """Clamping notes and render warnings on stderr, the picture to ``render_path``, the
+    sections on stdout.
+
+    Raises:
+        RenderError: Nothing to draw.
+        OutputError: The picture cannot be written.
+    """  # noqa: D205
+    for clamped in result.clamped:
+        click.echo(clamp_note(clamped), err=True)
+    if result.picture is not None and render_path is not None:
+        from servicebot_cli.output.render import write_picture
+
+        for problem in write_picture(result.picture, render_path, view):
+            click.echo(f"warning: {problem}", err=True)
+        click.echo(f"wrote {render_path}", err=True)
+    if result.inspection is not None:
+        for line in inspection_lines(result.inspection, fmt):
+            click.echo(line)

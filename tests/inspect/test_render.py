@@ -50,7 +50,7 @@ def test_other_picture_formats(run, tmp_path, name, magic):
 
 def test_bad_render_targets_leave_nothing_behind(run, tmp_path):
     assert_one_line_error(run("inspect", "--render", tmp_path / "robot.gif"), 2,
-                          "name it .png, .svg or .pdf")
+                          "--render", "end in .png or .svg or .pdf", "robot.png")
     assert_one_line_error(run("inspect", "--render", tmp_path / "no" / "robot.png"), 2,
                           "does not exist")
     assert_one_line_error(run("inspect", "--render", tmp_path / "r.png", "--joint", "nope=1"),
