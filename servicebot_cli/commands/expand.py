@@ -5,14 +5,19 @@ from __future__ import annotations
 import click
 
 from servicebot_cli.commands.command import Command
-from servicebot_cli.commands.options import RobotArgs, robot_arguments
+from servicebot_cli.commands.options import OutputPath, RobotArgs, refuse_without, robot_arguments
+
+URDF_SUFFIXES = (".urdf", ".xml")
+"""What ``-o`` may be called: ``robot.urdf``, ``robot.urdf.xml`` (as the bundled ones), ``.xml``."""
 
 
 @click.command(cls=Command)
 @robot_arguments()
-@click.option("-o", "--output", type=click.Path(dir_okay=False, allow_dash=True), default="-",
-              help="Write the URDF here (atomically) instead of to stdout.")
-def expand(robot_args: RobotArgs, output: str) -> None:
+@click.option("-o", "--output", type=OutputPath(URDF_SUFFIXES, allow_dash=True, what="URDF"),
+              default="-", metavar="FILE.urdf",
+              help="Write the URDF here (.urdf or .xml, atomically) instead of to stdout.")
+@click.pass_context
+def expand(ctx: click.Context, robot_args: RobotArgs, output: str) -> None:
     """Expand a xacro file into URDF.
 
     Without FILE, expands the bundled robot's xacro source into exactly the bundled
@@ -28,10 +33,15 @@ def expand(robot_args: RobotArgs, output: str) -> None:
     from servicebot_cli.description.loader import RobotSource, read_description
     from servicebot_cli.description.resources import DEFAULT_ROBOT, XACRO_SOURCE, bundled_file
 
+    refuse_without(ctx, "--package", "a xacro FILE", name="packages",
+                   present=bool(robot_args.files))
     if robot_args.files:
         source = robot_args.source()
     else:
         args = dict(robot_args.xacro_args)
+        if robot_args.bundled and "hardware" in args:
+            raise click.UsageError(f"give hardware:={args['hardware']} or --robot "
+                                   f"{robot_args.bundled}, not both")
         args.setdefault("hardware", robot_args.bundled or DEFAULT_ROBOT)
         path = bundled_file(XACRO_SOURCE)
         source = RobotSource(path, str(path), tuple(args.items()), robot_args.packages)
