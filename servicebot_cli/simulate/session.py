@@ -142,18 +142,20 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
     writers = _writers(outputs)
     bar = Progress(simulator.scan_count(body, scenario) + len(writers), stderr,
                    enabled=progress) if stderr is not None else None
-    result = simulator.run(body, scenario, seed=seed, solids=world_solids(scenario.world),
-                           meshes=meshes, progress=bar.advance if bar else None)
-    streams = ros_messages.streams(result)
-    summary = summarize(result, streams)
-    for stage, write in writers:
+    try:
+        result = simulator.run(body, scenario, seed=seed, solids=world_solids(scenario.world),
+                               meshes=meshes, progress=bar.advance if bar else None)
+        streams = ros_messages.streams(result)
+        summary = summarize(result, streams)
+        for stage, write in writers:
+            if bar:
+                bar.stage(stage)
+            write(result, streams, summary)
+            if bar:
+                bar.advance()
+    finally:  # an error line, or Ctrl-C's, starts on a clean line
         if bar:
-            bar.stage(stage)
-        write(result, streams, summary)
-        if bar:
-            bar.advance()
-    if bar:
-        bar.close()
+            bar.close()
     return SimulateReport(summary, clock() - start, result)
 
 
