@@ -1,9 +1,9 @@
-"""``fk`` as one call: a request in, the poses and the notes about them out. No I/O.
+"""``fk`` as one call: a request in, the poses and the notes about them out. No click.
 
-The command turns its options into a :class:`FkRequest`; :func:`run` loads the robot,
-picks the frames, checks the joint values and computes the poses; ``output.poses`` renders
-the :class:`FkResult`. Batch mode (``--configs``) shares :class:`FrameQuery` and
-:func:`resolve_frames` (see ``batch.fk``).
+Nothing is printed. The command turns its options into a :class:`FkRequest`; :func:`run`
+loads the robot (through the shared loader), picks the frames, checks the joint values and
+computes the poses; ``output.poses`` renders the :class:`FkResult`. Batch mode
+(``--configs``) shares :class:`FrameQuery` and :func:`resolve_frames` (see ``batch.fk``).
 """
 
 from __future__ import annotations

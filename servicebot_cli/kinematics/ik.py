@@ -1,9 +1,10 @@
-"""``ik`` as one call: a request in, the answer (or the best try and why) out. No I/O.
+"""``ik`` as one call: a request in, the answer (or the best try and why) out. No click.
 
-The command turns its options into an :class:`IkRequest`; :func:`run` loads the robot,
-builds the solver and solves; ``output.ik_report`` renders the :class:`IkAnswer`. Batch mode
-(``--targets``) builds the same :class:`IkSession` from the same :class:`IkProblem` (see
-``batch.ik``). The clock is passed in: solve times are measured around the pure solver.
+Nothing is printed. The command turns its options into an :class:`IkRequest`; :func:`run`
+loads the robot (through the shared loader), builds the solver and solves;
+``output.ik_report`` renders the :class:`IkAnswer`. Batch mode (``--targets``) builds the
+same :class:`IkSession` from the same :class:`IkProblem` (see ``batch.ik``). The clock is
+passed in: solve times are measured around the pure solver.
 """
 
 from __future__ import annotations
