@@ -7,7 +7,7 @@ from servicebot_cli.check.findings import Severity
 
 E, W, N = Severity.ERROR, Severity.WARNING, Severity.INFO
 
-URDF_RULES = (
+URDF_RULES: tuple[Rule, ...] = (
     # -- parse and safety ------------------------------------------------------------------------
     Rule("SB001", "unreadable-file", E, "A file cannot be read",
          "A file the description needs is missing, a directory, or not readable: a xacro "

@@ -8,7 +8,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-import yaml
+import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.findings import Issue
 from servicebot_cli.common.errors import DescriptionError, NameNotFound

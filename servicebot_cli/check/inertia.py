@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Generator, Iterator
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -49,9 +49,9 @@ def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
                     "if KDL users matter")
 
 
-def _possible(link: Link, values: tuple[float, ...]) -> Iterator[Issue]:
+def _possible(link: Link, values: tuple[float, ...]) -> Generator[Issue, None, bool]:
     """SB306-SB308; returns True when the inertia is a real body's."""
-    moments = np.linalg.eigvalsh(solids.tensor(values))  # type: ignore[arg-type]
+    moments = np.linalg.eigvalsh(solids.tensor(values))
     scale = float(np.abs(moments).max())
     shown = ", ".join(f"{m:.6g}" for m in moments)
     element = link.inertial.element if link.inertial else None

@@ -13,8 +13,9 @@ import warnings
 import xml.etree.ElementTree as ET
 
 import numpy as np
+import numpy.typing as npt
 
-FloatArray = np.ndarray
+FloatArray = npt.NDArray[np.float64]
 
 
 class MeshFormatError(ValueError):
@@ -63,12 +64,13 @@ def _fan(vertices: FloatArray, polygons: list[list[int]]) -> FloatArray:
     return _take(vertices, np.array(tris, dtype=np.int64).reshape(-1, 3))
 
 
-def _take(vertices: FloatArray, index: np.ndarray) -> FloatArray:
+def _take(vertices: FloatArray, index: npt.NDArray[np.int64]) -> FloatArray:
     if not len(index):
         return np.zeros((0, 3, 3))
     if index.min() < 0 or index.max() >= len(vertices):
         raise MeshFormatError("a face refers to a vertex that does not exist")
-    return vertices[index]
+    triangles: FloatArray = vertices[index]
+    return triangles
 
 
 def _fan_counts(vertices: FloatArray, indices: np.ndarray, counts: np.ndarray) -> FloatArray:
@@ -163,8 +165,9 @@ def _primitive_triangles(prim: ET.Element, ns: str) -> int:
     return 0
 
 
-def _instances(scene: ET.Element, ns: str, geometries: dict) -> list:
-    found = []
+def _instances(scene: ET.Element, ns: str, geometries: dict[str | None, ET.Element]
+               ) -> list[tuple[ET.Element, FloatArray]]:
+    found: list[tuple[ET.Element, FloatArray]] = []
     stack = [(node, np.eye(4)) for node in scene.findall(f"{ns}node")]
     while stack:
         node, parent = stack.pop()
@@ -203,7 +206,8 @@ def _axis_angle(axis: FloatArray, angle: float) -> FloatArray:
         return np.eye(3)
     x, y, z = axis / norm
     k = np.array([[0, -z, y], [z, 0, -x], [-y, x, 0]])
-    return np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * (k @ k)
+    rotation: FloatArray = np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * (k @ k)
+    return rotation
 
 
 def _positions(mesh: ET.Element, ns: str) -> FloatArray:

@@ -52,17 +52,17 @@ def _materials(robot: RobotDescription) -> Iterator[Issue]:
         yield from _rgba(material)
     for link in robot.links:
         for visual in link.visuals:
-            material = visual.element.find("material") if visual.element is not None else None
-            if material is None:
+            used = visual.element.find("material") if visual.element is not None else None
+            if used is None:
                 continue
-            yield from _rgba(material)
-            name = material.get("name")
-            if name and name not in defined and not _has_colour(material):
+            yield from _rgba(used)
+            used_name = used.get("name")
+            if used_name and used_name not in defined and not _has_colour(used):
                 known = ", ".join(sorted(defined)) or "none"
-                yield Issue("SB112", f"material '{name}' of link '{link.name}' has no colour "
-                            f"and is not defined at the top level (defined: {known})",
-                            material,
-                            fix=f'define <material name="{name}"><color rgba="..."/></material>')
+                yield Issue("SB112", f"material '{used_name}' of link '{link.name}' has no "
+                            f"colour and is not defined at the top level (defined: {known})",
+                            used, fix=f'define <material name="{used_name}"><color '
+                            'rgba="..."/></material>')
 
 
 def _rgba(material: ET.Element) -> Iterator[Issue]:

@@ -7,6 +7,7 @@ up across shapes and transform simply; the inertia tensor is ``I = tr(C) E - C``
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -68,7 +69,7 @@ def placed(volume: float, centroid: np.ndarray, moment: np.ndarray, scale: tuple
 def combined(solids: list[Solid]) -> Solid:
     """The solids as one body of uniform density (parallel-axis theorem)."""
     volume = sum(s.volume_m3 for s in solids)
-    centroid = sum(s.volume_m3 * s.centroid_m for s in solids) / volume
+    centroid = np.sum([s.volume_m3 * s.centroid_m for s in solids], axis=0) / volume
     moment = np.zeros((3, 3))
     for s in solids:
         d = s.centroid_m - centroid
@@ -82,10 +83,11 @@ def combined(solids: list[Solid]) -> Solid:
 def inertia_of(solid: Solid, mass_kg: float) -> np.ndarray:
     """Inertia tensor [kg m^2] about the centroid, link axes, for ``mass_kg`` spread uniformly."""
     moment = solid.second_moment * (mass_kg / solid.volume_m3)
-    return np.trace(moment) * np.eye(3) - moment
+    inertia: np.ndarray = np.trace(moment) * np.eye(3) - moment
+    return inertia
 
 
-def tensor(values: tuple[float, float, float, float, float, float]) -> np.ndarray:
+def tensor(values: Sequence[float]) -> np.ndarray:
     """The 3x3 inertia matrix of URDF's ``(ixx, ixy, ixz, iyy, iyz, izz)``."""
     ixx, ixy, ixz, iyy, iyz, izz = values
     return np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]], dtype=float)

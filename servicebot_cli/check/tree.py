@@ -64,23 +64,23 @@ def _loops(edges: list[Joint]) -> Iterator[Issue]:
         state[start] = 1
         while stack:
             node, todo = stack[-1]
-            joint = next(todo, None)
-            if joint is None:
+            step = next(todo, None)
+            if step is None:
                 state[node] = 2
                 stack.pop()
                 if path:
                     path.pop()
                 continue
-            child = joint.child or ""
+            child = step.child or ""
             if state.get(child) == 1:
-                cycle = _cycle(path + [joint], child)
+                cycle = _cycle(path + [step], child)
                 key = frozenset(j.name for j in cycle)
                 if key not in seen:
                     seen.add(key)
                     yield _loop_issue(cycle)
             elif child not in state:
                 state[child] = 1
-                path.append(joint)
+                path.append(step)
                 stack.append((child, iter(out.get(child, ()))))
 
 
@@ -98,9 +98,9 @@ def _loop_issue(cycle: list[Joint]) -> Issue:
                      joint.element, fix=f"remove joint '{joint.name}'")
     text = cycle[0].parent or ""
     shown = cycle if len(cycle) <= 12 else [*cycle[:6], None, *cycle[-5:]]
-    for joint in shown:
-        text += f" ... ({len(cycle) - 11} more joints)" if joint is None else \
-            f" -[{joint.name}]-> {joint.child}"
+    for hop in shown:
+        text += f" ... ({len(cycle) - 11} more joints)" if hop is None else \
+            f" -[{hop.name}]-> {hop.child}"
     return Issue("SB107", f"kinematic loop: {text}", cycle[-1].element,
                  fix=f"remove one joint of the loop, e.g. '{cycle[-1].name}'")
 

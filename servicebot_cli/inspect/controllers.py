@@ -73,7 +73,7 @@ def read_controllers(path: Path, found_by: str) -> Controllers:
     Raises:
         ControllersError: Unreadable, not YAML, or without ``controller_manager``.
     """
-    import yaml
+    import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
     text = read_input_text(str(path), kind="a ros2_control controllers YAML (--controllers)",
                            error=ControllersError)

@@ -129,12 +129,12 @@ def facts(robot: RobotDescription) -> Facts:
 def same(a: Any, b: Any) -> bool:
     """Equal, with numbers compared to 1e-9 relative (and 1e-12 absolute)."""
     if isinstance(a, bool) or isinstance(b, bool):
-        return a == b
+        return bool(a == b)
     if isinstance(a, int | float) and isinstance(b, int | float):
         return math.isclose(a, b, rel_tol=1e-9, abs_tol=1e-12)
     if isinstance(a, list | tuple) and isinstance(b, list | tuple):
         return len(a) == len(b) and all(same(x, y) for x, y in zip(a, b, strict=True))
-    return a == b
+    return bool(a == b)
 
 
 def compare_facts(a: Facts, b: Facts, a_name: str, b_name: str) -> DiffResult:

@@ -78,7 +78,9 @@ class MeshLibrary:
 
         try:
             loaded = trimesh.load(str(path), force="mesh")
-            vertices = np.asarray(loaded.vertices, dtype=float)
+            if not isinstance(loaded, trimesh.Trimesh):
+                raise TypeError(f"not a triangle mesh but a {type(loaded).__name__}")
+            vertices = np.asarray(loaded.vertices, dtype=np.float64)
             faces = np.asarray(loaded.faces, dtype=np.int64)
         except Exception as exc:  # noqa: BLE001 -- trimesh raises many types for bad files
             self.problems.append(f"mesh {filename}: cannot read: {type(exc).__name__}: {exc}")

@@ -6,7 +6,7 @@ the view that fits each sensor and names the ROS topics with their message types
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from servicebot_cli.description.extensions import Sensor, param, params_all
 from servicebot_cli.description.sensors import (
@@ -63,30 +63,29 @@ def _message(name: str) -> str:
 def sensor_info(sensor: Sensor) -> SensorInfo:
     """The summary of ``sensor``."""
     plugin = sensor.plugins[0] if sensor.plugins else None
-    base = {"name": sensor.name, "type": sensor.type, "link": sensor.reference,
-            "update_rate_hz": sensor.update_rate_hz,
-            "plugin": plugin.filename if plugin else None}
+    base = SensorInfo(sensor.name, sensor.type, "other", sensor.reference,
+                      sensor.update_rate_hz, plugin.filename if plugin else None,
+                      sensor.reference, ())
     if sensor.type in LIDAR_TYPES:
         spec = lidar_spec(sensor)
         output = param(plugin.params, "output_type") if plugin else None
-        topics = (Topic(spec.topic, _message(output or "sensor_msgs/LaserScan")),)
-        return SensorInfo(**base, kind="lidar", frame=spec.frame, lidar=spec,
-                          topics=_present(topics))
+        topics = _present((spec.topic, _message(output or "sensor_msgs/LaserScan")))
+        return replace(base, kind="lidar", frame=spec.frame, lidar=spec, topics=topics)
     if sensor.type in CAMERA_TYPES:
         cam = camera_spec(sensor)
-        topics = (Topic(cam.image_topic, "sensor_msgs/msg/Image"),
-                  Topic(cam.info_topic, "sensor_msgs/msg/CameraInfo"))
-        return SensorInfo(**base, kind="camera", frame=cam.frame, camera=cam,
-                          topics=_present(topics))
+        topics = _present((cam.image_topic, "sensor_msgs/msg/Image"),
+                          (cam.info_topic, "sensor_msgs/msg/CameraInfo"))
+        return replace(base, kind="camera", frame=cam.frame, camera=cam, topics=topics)
     if sensor.type == "imu":
         imu = imu_spec(sensor)
-        topics = (Topic(imu.topic, "sensor_msgs/msg/Imu"),)
-        return SensorInfo(**base, kind="imu", frame=imu.frame, imu=imu, topics=_present(topics))
-    return SensorInfo(**base, kind="other", frame=sensor.reference, topics=_other_topics(sensor))
+        topics = _present((imu.topic, "sensor_msgs/msg/Imu"))
+        return replace(base, kind="imu", frame=imu.frame, imu=imu, topics=topics)
+    return replace(base, topics=_other_topics(sensor))
 
 
-def _present(topics: tuple[Topic, ...]) -> tuple[Topic, ...]:
-    return tuple(t for t in topics if t.name)
+def _present(*topics: tuple[str | None, str]) -> tuple[Topic, ...]:
+    """The topics that have a name."""
+    return tuple(Topic(name, message) for name, message in topics if name)
 
 
 def _other_topics(sensor: Sensor) -> tuple[Topic, ...]:

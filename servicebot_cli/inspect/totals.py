@@ -122,17 +122,17 @@ def mass_and_centre(robot: RobotDescription,
 def arm_reach(tree: KinematicTree, arm_joints: list[Joint],
               transforms: Mapping[str, FloatArray]) -> ArmReach | None:
     """The reach of the chain that starts at the first arm joint; None without an arm."""
-    if not arm_joints or arm_joints[0].child is None:
+    first = arm_joints[0] if arm_joints else None
+    if first is None or first.child is None:
         return None
-    first = arm_joints[0]
     below = descendants(tree, first.child)
     tip = max(below, key=lambda item: item[1])[0] if below else first.child
-    parent_joint = {j.child: j for j in tree.edges}
+    parent_joint = {j.child or "": j for j in tree.edges}
     path = [parent_joint[tip]] if tip != first.child else [first]
     while path[-1] is not first:
-        path.append(parent_joint[path[-1].parent])
+        path.append(parent_joint[path[-1].parent or ""])
     path.reverse()
-    points = [transforms[j.child][:3, 3] for j in path]
+    points = [transforms[j.child or ""][:3, 3] for j in path]
     start = 0
     while start < len(path) - 1 and _adds_no_reach(path[start], points, start, transforms):
         start += 1
@@ -149,7 +149,7 @@ def _adds_no_reach(joint: Joint, points: list[FloatArray], i: int,
         return True
     if not joint.movable:
         return False
-    axis = transforms[joint.child][:3, :3] @ np.array(joint.axis, dtype=float)
+    axis = transforms[joint.child or ""][:3, :3] @ np.array(joint.axis, dtype=float)
     norm = float(np.linalg.norm(axis))
     return norm > 0 and abs(float(axis @ segment)) / (norm * length) >= _PARALLEL
 

@@ -27,16 +27,27 @@ WIDTH = 100
 
 def section_tables(inspection: Inspection, name: str) -> list[Table]:
     """The tables of section ``name`` (which must be present)."""
-    value = getattr(inspection, name)
-    if name == "tree":
-        return [tree_table(value)]
-    makers: dict[str, Callable[[object], list[Table]]] = {
-        "links": core.links_tables, "joints": core.joints_tables,
-        "frames": core.frames_tables, "sensors": ext.sensors_tables,
-        "plugins": ext.plugins_tables, "interfaces": ext.interfaces_tables,
-        "topics": ext.topics_tables, "totals": core.totals_tables,
-    }
-    return makers[name](value)
+    i = inspection
+    match name:
+        case "tree" if i.tree is not None:
+            return [tree_table(i.tree)]
+        case "links" if i.links is not None:
+            return core.links_tables(i.links)
+        case "joints" if i.joints is not None:
+            return core.joints_tables(i.joints)
+        case "frames" if i.frames is not None:
+            return core.frames_tables(i.frames)
+        case "sensors" if i.sensors is not None:
+            return ext.sensors_tables(i.sensors)
+        case "plugins" if i.plugins is not None:
+            return ext.plugins_tables(i.plugins)
+        case "interfaces" if i.interfaces is not None:
+            return ext.interfaces_tables(i.interfaces)
+        case "topics" if i.topics is not None:
+            return ext.topics_tables(i.topics)
+        case "totals" if i.totals is not None:
+            return core.totals_tables(i.totals)
+    raise KeyError(f"section '{name}' is not in this inspection")
 
 
 def text_lines(inspection: Inspection, title: Callable[[str], str] = str) -> Iterator[str]:

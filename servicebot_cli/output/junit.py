@@ -15,10 +15,10 @@ from servicebot_cli.check.result import CheckResult
 def junit_text(result: CheckResult) -> str:
     """The JUnit XML report of a run."""
     failing = sum(1 for r in result.reports if any(result.fails(f) for f in r.findings))
-    counts = {"tests": str(len(result.reports)), "failures": str(failing), "errors": "0",
-              "skipped": "0"}
-    suites = ET.Element("testsuites", name="servicebot check", **counts)
-    suite = ET.SubElement(suites, "testsuite", name="servicebot check", **counts)
+    counts = {"name": "servicebot check", "tests": str(len(result.reports)),
+              "failures": str(failing), "errors": "0", "skipped": "0"}
+    suites = ET.Element("testsuites", counts)
+    suite = ET.SubElement(suites, "testsuite", counts)
     for report in result.reports:
         case = ET.SubElement(suite, "testcase", classname="servicebot.check", name=report.file,
                              file=report.file)

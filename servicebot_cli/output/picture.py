@@ -51,7 +51,7 @@ def _shaded(rgba: Sequence[float], polygon: FloatArray) -> tuple[float, ...]:
     r, g, b = rgba[:3]
     if max(r, g, b) < 0.2:  # black parts (tyres) would lose all shading: lift them a little
         r, g, b = (0.15 + 0.85 * c for c in (r, g, b))
-    return (r * factor, g * factor, b * factor, rgba[3])
+    return (float(r * factor), float(g * factor), float(b * factor), float(rgba[3]))
 
 
 def _limits(scene: Scene) -> tuple[FloatArray, FloatArray]:
@@ -64,7 +64,7 @@ def _limits(scene: Scene) -> tuple[FloatArray, FloatArray]:
 
 
 def _draw_solids(ax: Any, scene: Scene) -> None:
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # type: ignore[import-untyped]
 
     polygons, faces, edges = [], [], []
     for solid in scene.solids:
