@@ -4,6 +4,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from enum import Enum
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    import xml.etree.ElementTree as ET
 
 
 class Severity(str, Enum):
@@ -74,6 +78,6 @@ class Issue:
 
     code: str
     message: str
-    element: object | None = None
+    element: ET.Element | None = None
     fix: str | None = None
     where: tuple[str, int, int] | None = None

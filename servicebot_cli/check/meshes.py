@@ -80,7 +80,7 @@ def load_mesh(path: Path, with_mass: bool = False) -> MeshInfo:
 def _bounds_only(count: int, lower: np.ndarray, upper: np.ndarray) -> MeshInfo:
     if not (np.all(np.isfinite(lower)) and np.all(np.isfinite(upper))):
         raise MeshError("vertices with NaN or infinite coordinates")
-    return MeshInfo(count, tuple(map(float, lower)), tuple(map(float, upper)))  # type: ignore[arg-type]
+    return MeshInfo(count, _xyz(lower), _xyz(upper))
 
 
 def _with_trimesh(path: Path) -> np.ndarray:
@@ -107,7 +107,7 @@ def summarise(triangles: np.ndarray, with_mass: bool = False) -> MeshInfo:
     closed = _closed(triangles, float(np.abs(upper - lower).max())) if with_mass else None
     return MeshInfo(
         triangles=len(triangles),
-        lower=tuple(map(float, lower)), upper=tuple(map(float, upper)),  # type: ignore[arg-type]
+        lower=_xyz(lower), upper=_xyz(upper),
         mass=mass_properties(triangles) if closed else None,
         closed=closed,
     )
@@ -130,7 +130,13 @@ def mass_properties(triangles: np.ndarray) -> MassProperties:
     if volume < 0:  # inward-facing triangles: same magnitudes
         volume, moment = -volume, -moment
     moment = moment - volume * np.outer(centroid, centroid)
-    return MassProperties(volume, tuple(map(float, centroid)), moment)  # type: ignore[arg-type]
+    return MassProperties(volume, _xyz(centroid), moment)
+
+
+def _xyz(values: np.ndarray) -> tuple[float, float, float]:
+    """A 3-vector as three floats."""
+    x, y, z = (float(v) for v in values)
+    return x, y, z
 
 
 def _closed(triangles: np.ndarray, size: float) -> bool:

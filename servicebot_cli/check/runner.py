@@ -125,7 +125,7 @@ def _suppressed(issue: Issue, parents: dict[ET.Element, ET.Element]) -> bool:
 
     A bare ``servicebot: ignore`` silences every rule there.
     """
-    element: ET.Element | None = issue.element  # type: ignore[assignment]
+    element = issue.element
     while element is not None:
         for comment in getattr(element, "leading_comments", ()):
             match = _SUPPRESS.search(comment)
@@ -142,7 +142,7 @@ def _place(robot: RobotDescription | None, issue: Issue, settings: Settings) -> 
     if issue.where is not None:
         file, line, column = issue.where
     elif robot is not None:
-        ref = robot.source_of(issue.element)  # type: ignore[arg-type]
+        ref = robot.source_of(issue.element)
         file, line, column = ref.file, ref.line, ref.column
         via = ref.via.location() if ref.via else None
     else:  # pragma: no cover - issues without a robot always carry `where`
