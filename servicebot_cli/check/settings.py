@@ -16,14 +16,19 @@ from __future__ import annotations
 import sys
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
+from datetime import date, datetime, time
 from pathlib import Path
-from typing import Any
+from typing import TypeAlias
 
 from servicebot_cli.check.catalogue import RULES, matches, rule, valid_pattern
 from servicebot_cli.check.findings import Severity
 from servicebot_cli.common.errors import ServicebotError
 
 _KEYS = ("select", "ignore", "strict", "inertia-factor", "severity")
+
+TomlValue: TypeAlias = (str | int | float | bool | date | datetime | time
+                        | list["TomlValue"] | dict[str, "TomlValue"])
+"""Any value a TOML document holds."""
 
 
 class SettingsError(ServicebotError):
@@ -101,13 +106,19 @@ def load_settings(path: Path | None) -> Settings:
         document = tomllib.loads(path.read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
         raise SettingsError(f"{path}: cannot read settings: {exc}") from None
-    table = document.get("tool", {}).get("servicebot", {}).get("check")
+    table = _child(_child(document, "tool"), "servicebot").get("check")
     if table is None:
         return Settings()
     return _from_table(table, str(path))
 
 
-def _from_table(table: Any, where: str) -> Settings:
+def _child(table: dict[str, TomlValue], key: str) -> dict[str, TomlValue]:
+    """The sub-table ``key`` (empty when absent or not a table)."""
+    value = table.get(key, {})
+    return value if isinstance(value, dict) else {}
+
+
+def _from_table(table: TomlValue, where: str) -> Settings:
     if not isinstance(table, dict):
         raise SettingsError(f"{where}: [tool.servicebot.check] must be a table")
     unknown = sorted(set(table) - set(_KEYS))
@@ -125,13 +136,13 @@ def _from_table(table: Any, where: str) -> Settings:
     return Settings(select, ignore, strict, float(factor), _severities(table, where), where)
 
 
-def _codes(value: Any, where: str) -> tuple[str, ...]:
+def _codes(value: TomlValue, where: str) -> tuple[str, ...]:
     if isinstance(value, str) or not isinstance(value, list):
         raise SettingsError(f"{where} must be a list of codes, e.g. [\"SB309\"]")
     return tuple(_pattern(v, where) for v in value)
 
 
-def _pattern(pattern: Any, where: str) -> str:
+def _pattern(pattern: TomlValue, where: str) -> str:
     """A code, a code prefix or ``ALL``; a rule's name is turned into its code."""
     if isinstance(pattern, str) and valid_pattern(pattern):
         return pattern.upper()
@@ -141,7 +152,7 @@ def _pattern(pattern: Any, where: str) -> str:
         raise SettingsError(f"{where}: {exc.args[0]}") from None
 
 
-def _severities(table: dict[str, Any], where: str) -> dict[str, Severity]:
+def _severities(table: dict[str, TomlValue], where: str) -> dict[str, Severity]:
     given = table.get("severity", {})
     if not isinstance(given, dict):
         raise SettingsError(f"{where}: severity must be a table, e.g. {{ SB304 = \"error\" }}")
