@@ -8,8 +8,9 @@ of everything that moves with the base. Nothing is a constant of the bundled rob
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Generic, TypeVar
 
 import numpy as np
 import numpy.typing as npt
@@ -33,17 +34,21 @@ from servicebot_cli.simulate.world.solids import Footprint
 if TYPE_CHECKING:
     import pinocchio as pin
 
-    from servicebot_cli.description.elements import Joint
+    from servicebot_cli.description.elements import Geometry, Joint
+    from servicebot_cli.description.extensions import Sensor
     from servicebot_cli.description.robot import RobotDescription
 
 FloatArray = npt.NDArray[np.float64]
+SpecT = TypeVar("SpecT", LidarSpec, ImuSpec, CameraSpec)
+Placement = Callable[[str], FloatArray]
+"""A link's name to ``transform_link_to_base`` (4, 4) with the base at the origin."""
 
 
 @dataclass(frozen=True)
-class Mounted:
+class Mounted(Generic[SpecT]):
     """A sensor and where it sits: ``transform_sensor_to_base`` (4, 4) at floor height 0."""
 
-    spec: LidarSpec | ImuSpec | CameraSpec
+    spec: SpecT
     transform_sensor_to_base: FloatArray
 
 
@@ -67,9 +72,9 @@ class SimRobot:
     arm_joints: tuple[str, ...]
     base_height_m: float
     footprint: Footprint
-    lidar: Mounted | None
-    imu: Mounted | None
-    camera: Mounted | None
+    lidar: Mounted[LidarSpec] | None
+    imu: Mounted[ImuSpec] | None
+    camera: Mounted[CameraSpec] | None
 
     @property
     def root_link(self) -> str:
@@ -113,14 +118,14 @@ def sim_robot(robot: RobotDescription) -> SimRobot:
     )
 
 
-def _mount(robot: RobotDescription, types: tuple[str, ...], read: object,
-           placement: object) -> Mounted | None:
+def _mount(robot: RobotDescription, types: tuple[str, ...], read: Callable[[Sensor], SpecT],
+           placement: Placement) -> Mounted[SpecT] | None:
     sensor = next((s for s in robot.sensors if s.type in types and s.reference), None)
-    if sensor is None:
+    if sensor is None or sensor.reference is None:
         return None
-    robot.require_frame(sensor.reference)  # type: ignore[arg-type]
-    transform = placement(sensor.reference) @ pose_matrix(sensor.pose)  # type: ignore[operator]
-    return Mounted(read(sensor), transform)  # type: ignore[operator]
+    robot.require_frame(sensor.reference)
+    transform = placement(sensor.reference) @ pose_matrix(sensor.pose)
+    return Mounted(read(sensor), transform)
 
 
 def _moves_with_base(robot: RobotDescription, wheels: set[str]) -> list[str]:
@@ -139,7 +144,7 @@ def _moves_with_base(robot: RobotDescription, wheels: set[str]) -> list[str]:
     return [link.name for link in robot.links if link.name in links]
 
 
-def _footprint(robot: RobotDescription, placement: object, wheels: set[str],
+def _footprint(robot: RobotDescription, placement: Placement, wheels: set[str],
                height_m: float) -> Footprint:
     corners = []
     for name in _moves_with_base(robot, wheels):
@@ -147,7 +152,7 @@ def _footprint(robot: RobotDescription, placement: object, wheels: set[str],
             box = _half_extents(shape.geometry)
             if box is None:
                 continue
-            transform = placement(name) @ pose_matrix(shape.origin)  # type: ignore[operator]
+            transform = placement(name) @ pose_matrix(shape.origin)
             signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)])
             corners.append((signs * box) @ transform[:3, :3].T + transform[:3, 3])
     if not corners:
@@ -162,15 +167,15 @@ def _footprint(robot: RobotDescription, placement: object, wheels: set[str],
                      float(high[2] + height_m))
 
 
-def _half_extents(geometry: object) -> FloatArray | None:
-    kind = getattr(geometry, "kind", "")
-    if kind == "box" and geometry.size:  # type: ignore[attr-defined]
-        return np.array(geometry.size) / 2  # type: ignore[attr-defined]
-    if kind == "cylinder" and geometry.radius and geometry.length:  # type: ignore[attr-defined]
-        r = geometry.radius  # type: ignore[attr-defined]
-        return np.array([r, r, geometry.length / 2])  # type: ignore[attr-defined]
-    if kind == "sphere" and geometry.radius:  # type: ignore[attr-defined]
-        return np.full(3, geometry.radius)  # type: ignore[attr-defined]
+def _half_extents(geometry: Geometry) -> FloatArray | None:
+    kind = geometry.kind
+    if kind == "box" and geometry.size:
+        return np.array(geometry.size) / 2
+    if kind == "cylinder" and geometry.radius and geometry.length:
+        r = geometry.radius
+        return np.array([r, r, geometry.length / 2])
+    if kind == "sphere" and geometry.radius:
+        return np.full(3, geometry.radius)
     return None
 
 

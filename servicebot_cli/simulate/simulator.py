@@ -10,11 +10,11 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.description.sensors import CameraSpec, ImuSpec, LidarSpec
 from servicebot_cli.kinematics import diff_drive
 from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.controllers import arm_trajectory as arm
@@ -25,6 +25,7 @@ from servicebot_cli.simulate.sensors import camera_info, imu, joint_states, lida
 from servicebot_cli.simulate.sensors.noise import stream_rng
 from servicebot_cli.simulate.sensors.sample import sample_times
 from servicebot_cli.simulate.world import motion
+from servicebot_cli.simulate.world.raycast import Mesh
 from servicebot_cli.simulate.world.solids import Closest, Solid, closest_approach, footprint_hits
 
 FloatArray = npt.NDArray[np.float64]
@@ -53,7 +54,7 @@ class SimResult:
 
 
 def run(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[Solid],
-        meshes: Sequence[Any] = (), progress: Callable[[int], None] | None = None) -> SimResult:
+        meshes: Sequence[Mesh] = (), progress: Callable[[int], None] | None = None) -> SimResult:
     """Simulate ``scenario``; ``progress`` is told how many LIDAR scans were cast."""
     solids = list(solids)
     arm_q0 = check_scenario(body, scenario, solids, meshes)
@@ -66,7 +67,7 @@ def run(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[Solid
     odom_path = odometry.dead_reckoning(
         plan.left_rad_s, plan.right_rad_s, dt, wheel_radius_m=geometry.wheel_radius_m,
         track_m=geometry.track_m * ctrl.wheel_separation_multiplier)
-    ticks = np.arange(n + 1) * dt
+    ticks = np.arange(n + 1, dtype=np.float64) * dt
     arm_q = _arm_positions(body, scenario, arm_q0, ticks, dt)
     names, positions = _joint_positions(body, sides, arm_q)
     publish = sample_times(ctrl.publish_rate_hz, scenario.duration_s)
@@ -79,14 +80,14 @@ def run(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[Solid
         arm_q, closest,
         _scans(body, scenario, truth, solids, meshes, seed, progress),
         _imu(body, scenario, truth, seed),
-        camera_info.intrinsics(body.camera.spec) if body.camera else None,  # type: ignore[arg-type]
+        camera_info.intrinsics(body.camera.spec) if body.camera else None,
         sample_times(_rate(body.camera.spec, scenario), scenario.duration_s)
         if body.camera else np.zeros(0),
     )
 
 
 def _ground_truth(body: SimRobot, scenario: Scenario, plan: WheelPlan, solids: list[Solid],
-                  meshes: Sequence[Any]) -> tuple[motion.Path2D, list[motion.Contact]]:
+                  meshes: Sequence[Mesh]) -> tuple[motion.Path2D, list[motion.Contact]]:
     """The base's real motion: wheel speeds through the floor's slip, stopped by obstacles."""
     geometry, slip = body.geometry, scenario.slip
     linear, angular = diff_drive.body_twist(
@@ -143,13 +144,13 @@ def _joint_positions(body: SimRobot, sides: FloatArray,
 
 
 def _scans(body: SimRobot, scenario: Scenario, truth: motion.Path2D, solids: list[Solid],
-           meshes: Sequence[Any], seed: int,
+           meshes: Sequence[Mesh], seed: int,
            progress: Callable[[int], None] | None) -> lidar.Scans | None:
     if body.lidar is None:
         return None
     spec = body.lidar.spec
     times = sample_times(_rate(spec, scenario), scenario.duration_s)
-    return lidar.scan(spec, body.lidar.transform_sensor_to_base, body.base_height_m,  # type: ignore[arg-type]
+    return lidar.scan(spec, body.lidar.transform_sensor_to_base, body.base_height_m,
                       truth, times, solids, meshes, stream_rng(seed, "scan"), progress)
 
 
@@ -159,7 +160,7 @@ def _imu(body: SimRobot, scenario: Scenario, truth: motion.Path2D,
         return None
     spec = body.imu.spec
     times = sample_times(_rate(spec, scenario), scenario.duration_s)
-    return imu.measure(spec, body.imu.transform_sensor_to_base, truth, times,  # type: ignore[arg-type]
+    return imu.measure(spec, body.imu.transform_sensor_to_base, truth, times,
                        stream_rng(seed, "imu"))
 
 
@@ -170,6 +171,6 @@ def scan_count(body: SimRobot, scenario: Scenario) -> int:
     return len(sample_times(_rate(body.lidar.spec, scenario), scenario.duration_s))
 
 
-def _rate(spec: Any, scenario: Scenario) -> float:
+def _rate(spec: LidarSpec | ImuSpec | CameraSpec, scenario: Scenario) -> float:
     """A sensor's update rate [Hz]; without one Gazebo updates every step, here every tick."""
     return float(spec.update_rate_hz or scenario.controller.update_rate_hz)

@@ -59,3 +59,21 @@ def test_live_window_without_a_display_is_refused_before_any_work(tmp_path, monk
     with pytest.raises(ServicebotError, match="--headless"):
         session.run(request)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_live_window_frame_draws_the_path_up_to_its_time():
+    from matplotlib.figure import Figure
+
+    from servicebot_cli.simulate.files import live
+    from servicebot_cli.simulate.summary import odometry_in_world
+
+    result = session.run(SimulateRequest(RobotSource.bundled("sim"),
+                                         overrides=Overrides(duration_s=4.0))).result
+    ax = Figure().add_subplot()
+    artists = live._artists(ax)
+    ox, oy, _ = odometry_in_world(result)
+    live._update(artists, result, 2.0, ox, oy)
+    xs, _ = artists.truth.get_data()
+    assert len(xs) == round(2.0 / result.truth.dt_s) + 1
+    assert len(artists.body.get_data()[0]) == 5  # the closed footprint outline
+    assert artists.clock.get_text().endswith("t =    2.0 s")

@@ -56,7 +56,7 @@ def test_sigterm_while_the_bag_is_written_leaves_no_bag(tmp_path):
 
 
 def test_sighup_while_a_new_out_directory_is_written_leaves_no_directory(tmp_path):
-    process = _start(tmp_path, "--duration-s", "600", "--out", "O")
+    process = _start(tmp_path, "--duration-s", "1800", "--out", "O")
     _wait_for(process, lambda: bool(_temporaries(tmp_path)))
     code, stderr = _end(process, signal.SIGHUP)
     assert code == 129, stderr
@@ -68,7 +68,7 @@ def test_sigterm_while_files_are_written_into_an_existing_out_directory(tmp_path
     out = tmp_path / "O"
     out.mkdir()
     (out / "notes.txt").write_text("mine")
-    process = _start(tmp_path, "--duration-s", "600", "--out", "O")
+    process = _start(tmp_path, "--duration-s", "1800", "--out", "O")
     _wait_for(process, lambda: bool(_temporaries(out)))
     code, stderr = _end(process, signal.SIGTERM)
     assert code == 143, stderr

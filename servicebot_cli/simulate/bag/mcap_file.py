@@ -18,7 +18,7 @@ import struct
 import zlib
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import BinaryIO
+from typing import BinaryIO, Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -150,14 +150,22 @@ def _schemas_and_channels(channels: Sequence[Channel]) -> tuple[list[bytes], lis
     return schemas, records
 
 
+class Compressor(Protocol):
+    """A chunk compressor (``zstandard.ZstdCompressor``)."""
+
+    def compress(self, data: bytes) -> bytes:
+        """``data`` compressed, as one frame."""
+        ...
+
+
 def _write_chunk(out: _Output, heads: np.ndarray, payloads: Sequence[bytes],
-                 offsets: npt.NDArray[np.int64], compressor: object) -> bytes:
+                 offsets: npt.NDArray[np.int64], compressor: Compressor) -> bytes:
     """Write one chunk and its message indexes; returns its chunk index record."""
     head_bytes = memoryview(heads.tobytes())
     width = _MESSAGE_HEAD.itemsize
     pieces = (head_bytes[k * width:(k + 1) * width] for k in range(len(payloads)))
     records = b"".join(itertools.chain.from_iterable(zip(pieces, payloads, strict=True)))
-    compressed = compressor.compress(records)  # type: ignore[attr-defined]
+    compressed = compressor.compress(records)
     first, last = int(heads["log_time"][0]), int(heads["log_time"][-1])
     chunk = _record(_CHUNK, struct.pack("<QQQI", first, last, len(records), zlib.crc32(records))
                     + _string("zstd") + struct.pack("<Q", len(compressed)) + compressed)

@@ -9,6 +9,7 @@ robot_state_publisher. Header stamps are simulated time.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -55,7 +56,7 @@ def streams(result: SimResult) -> list[Stream]:
 
 
 def _stream(topic: str, kind: str, layout: cdr.Layout, times: FloatArray,
-            fill: dict[str, FloatArray], latched: bool = False) -> Stream:
+            fill: Mapping[str, FloatArray | float], latched: bool = False) -> Stream:
     records = layout.records(len(times))
     cdr.set_stamps(records, times)
     for name, values in fill.items():
@@ -134,7 +135,7 @@ def _camera_info(result: SimResult) -> Stream:
     camera, spec = result.camera, result.body.camera
     assert camera is not None and spec is not None
     layout = cdr.Layout()
-    layout.header(spec.spec.frame or result.body.root_link)  # type: ignore[union-attr]
+    layout.header(spec.spec.frame or result.body.root_link)
     layout.constant("<I", camera.height_px)
     layout.constant("<I", camera.width_px)
     layout.string(camera.distortion_model)
@@ -144,7 +145,7 @@ def _camera_info(result: SimResult) -> Stream:
     for _ in range(6):  # binning_x, binning_y, roi x_offset, y_offset, height, width
         layout.constant("<I", 0)
     layout.constant("<B", 0)  # roi.do_rectify
-    topic = absolute(spec.spec.info_topic, "camera_info")  # type: ignore[union-attr]
+    topic = absolute(spec.spec.info_topic, "camera_info")
     return _stream(topic, "sensor_msgs/msg/CameraInfo", layout, result.camera_times_s, {
         "d": np.array(camera.d), "k": np.array(camera.k),
         "r": np.eye(3).ravel(), "p": np.array(camera.p)})

@@ -8,13 +8,23 @@ from __future__ import annotations
 
 import os
 import sys
-from typing import Any
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from servicebot_cli.simulate.files.plot import draw_world, footprint_outline, scan_points
 from servicebot_cli.simulate.simulator import SimResult
 from servicebot_cli.simulate.summary import odometry_in_world
+
+if TYPE_CHECKING:
+    from matplotlib.artist import Artist
+    from matplotlib.axes import Axes
+    from matplotlib.lines import Line2D
+    from matplotlib.text import Text
+
+FloatArray = npt.NDArray[np.float64]
 
 
 def display_problem(environ: dict[str, str] | None = None, platform: str = sys.platform) -> str:
@@ -50,9 +60,9 @@ def show(result: SimResult, *, speed: float = 1.0, frame_rate_hz: float = 20.0) 
     artists = _artists(ax)
     frames = np.arange(0.0, result.scenario.duration_s, speed / frame_rate_hz)
 
-    def update(t: float) -> list[Any]:
+    def update(t: float) -> list[Artist]:
         _update(artists, result, t, ox, oy)
-        return list(artists.values())
+        return [artists.truth, artists.odom, artists.body, artists.scan, artists.clock]
 
     animation = FuncAnimation(fig, update, frames=frames, interval=1000 / frame_rate_hz,
                               blit=False, repeat=False)
@@ -60,26 +70,38 @@ def show(result: SimResult, *, speed: float = 1.0, frame_rate_hz: float = 20.0) 
     del animation
 
 
-def _artists(ax: Any) -> dict[str, Any]:
-    return {
-        "truth": ax.plot([], [], color="#1f77b4", label="ground truth")[0],
-        "odom": ax.plot([], [], color="#ff7f0e", linestyle="--", label="wheel odometry")[0],
-        "body": ax.plot([], [], color="#1f77b4")[0],
-        "scan": ax.plot([], [], ".", color="#d62728", markersize=3, label="LIDAR")[0],
-        "clock": ax.set_title(""),
-    }
+@dataclass(frozen=True)
+class _Artists:
+    """What each frame of the animation redraws."""
+
+    truth: Line2D
+    odom: Line2D
+    body: Line2D
+    scan: Line2D
+    clock: Text
 
 
-def _update(artists: dict[str, Any], result: SimResult, t: float, ox: Any, oy: Any) -> None:
+def _artists(ax: Axes) -> _Artists:
+    return _Artists(
+        truth=ax.plot([], [], color="#1f77b4", label="ground truth")[0],
+        odom=ax.plot([], [], color="#ff7f0e", linestyle="--", label="wheel odometry")[0],
+        body=ax.plot([], [], color="#1f77b4")[0],
+        scan=ax.plot([], [], ".", color="#d62728", markersize=3, label="LIDAR")[0],
+        clock=ax.set_title(""),
+    )
+
+
+def _update(artists: _Artists, result: SimResult, t: float, ox: FloatArray,
+            oy: FloatArray) -> None:
     truth = result.truth
     k = min(int(t / truth.dt_s), len(truth.x_m) - 1)
-    artists["truth"].set_data(truth.x_m[:k + 1], truth.y_m[:k + 1])
+    artists.truth.set_data(truth.x_m[:k + 1], truth.y_m[:k + 1])
     j = int(np.searchsorted(result.odometry.times_s, t))
-    artists["odom"].set_data(ox[:j], oy[:j])
+    artists.odom.set_data(ox[:j], oy[:j])
     outline = footprint_outline(result, truth.x_m[k], truth.y_m[k], truth.yaw_rad[k])
-    artists["body"].set_data(outline[:, 0], outline[:, 1])
+    artists.body.set_data(outline[:, 0], outline[:, 1])
     if result.scans is not None and len(result.scans.times_s):
         s = max(int(np.searchsorted(result.scans.times_s, t, side="right")) - 1, 0)
         points = scan_points(result, s)
-        artists["scan"].set_data(points[:, 0], points[:, 1])
-    artists["clock"].set_text(f"{result.scenario.name}  t = {t:6.1f} s")
+        artists.scan.set_data(points[:, 0], points[:, 1])
+    artists.clock.set_text(f"{result.scenario.name}  t = {t:6.1f} s")

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -16,10 +16,14 @@ from servicebot_cli.common.files import OutputError, atomic_output
 from servicebot_cli.simulate.simulator import SimResult
 from servicebot_cli.simulate.summary import odometry_in_world
 
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
 _OBSTACLE = {"facecolor": "#b0b0b0", "edgecolor": "#505050", "linewidth": 0.8}
 
 
-def draw_world(ax: Any, result: SimResult) -> None:
+def draw_world(ax: Axes, result: SimResult) -> None:
     """Obstacles (low ones, below the LIDAR, hatched), with equal axes in metres."""
     from matplotlib.patches import Circle, Polygon
 
@@ -62,7 +66,7 @@ def scan_points(result: SimResult, index: int) -> np.ndarray:
                             origin[1] + ranges[ok] * np.sin(bearing)))
 
 
-def _draw_map(ax: Any, result: SimResult) -> None:
+def _draw_map(ax: Axes, result: SimResult) -> None:
     draw_world(ax, result)
     truth = result.truth
     ox, oy, _ = odometry_in_world(result)
@@ -85,7 +89,7 @@ def _draw_map(ax: Any, result: SimResult) -> None:
     ax.set_title(f"{result.scenario.name}: {result.scenario.duration_s:g} s, seed {result.seed}")
 
 
-def _draw_arm(ax: Any, result: SimResult) -> None:
+def _draw_arm(ax: Axes, result: SimResult) -> None:
     times = np.arange(len(result.arm_positions_rad)) * result.truth.dt_s
     for j, name in enumerate(result.body.arm_joints):
         ax.plot(times, result.arm_positions_rad[:, j], linewidth=1.2, label=name)
@@ -96,7 +100,7 @@ def _draw_arm(ax: Any, result: SimResult) -> None:
     ax.legend(loc="best", fontsize=7)
 
 
-def _draw_drift(ax: Any, result: SimResult) -> None:
+def _draw_drift(ax: Axes, result: SimResult) -> None:
     from servicebot_cli.simulate.world.motion import pose_at
 
     ox, oy, _ = odometry_in_world(result)
@@ -108,7 +112,7 @@ def _draw_drift(ax: Any, result: SimResult) -> None:
     ax.grid(True, linewidth=0.3, alpha=0.6)
 
 
-def figure(result: SimResult) -> Any:
+def figure(result: SimResult) -> Figure:
     """The run's figure: map on the left, arm angles and odometry drift on the right."""
     from matplotlib.figure import Figure
 

@@ -289,30 +289,30 @@ def _world(r: Reader, path: Path) -> World:
 
     def wall(p: Path) -> Wall:
         r.mapping(p, ("from_m", "to_m", "thickness_m", "height_m"), required=("from_m", "to_m"))
-        start, end = r.vector((*p, "from_m"), 2), r.vector((*p, "to_m"), 2)
+        start, end = r.pair((*p, "from_m")), r.pair((*p, "to_m"))
         if start == end:
             raise r.error((*p, "to_m"), "a wall needs two different ends")
-        return Wall(start, end, r.number((*p, "thickness_m"), 0.1, positive=True),  # type: ignore[arg-type]
+        return Wall(start, end, r.number((*p, "thickness_m"), 0.1, positive=True),
                     r.number((*p, "height_m"), 1.0, positive=True))
 
     def box(p: Path) -> Box:
         r.mapping(p, ("center_m", "size_m", "yaw_rad"), required=("center_m", "size_m"))
-        size = r.vector((*p, "size_m"), 3)
+        size = r.triple((*p, "size_m"))
         if min(size) <= 0:
             raise r.error((*p, "size_m"), "sizes must be positive")
         centre = r.vector((*p, "center_m"), (2, 3))
         z = centre[2] if len(centre) == 3 else size[2] / 2.0
-        return Box((centre[0], centre[1], z), size, r.number((*p, "yaw_rad"), 0.0))  # type: ignore[arg-type]
+        return Box((centre[0], centre[1], z), size, r.number((*p, "yaw_rad"), 0.0))
 
     def cylinder(p: Path) -> Cylinder:
         r.mapping(p, ("center_m", "radius_m", "height_m"), required=("center_m", "radius_m"))
-        return Cylinder(r.vector((*p, "center_m"), 2), r.number((*p, "radius_m"), positive=True),  # type: ignore[arg-type]
+        return Cylinder(r.pair((*p, "center_m")), r.number((*p, "radius_m"), positive=True),
                         r.number((*p, "height_m"), 1.0, positive=True))
 
     def mesh(p: Path) -> MeshObstacle:
         r.mapping(p, ("file", "xyz_m", "rpy_rad", "scale"), required=("file",))
-        return MeshObstacle(r.string((*p, "file")), r.vector((*p, "xyz_m"), 3, (0, 0, 0)),  # type: ignore[arg-type]
-                            r.vector((*p, "rpy_rad"), 3, (0, 0, 0)),  # type: ignore[arg-type]
+        return MeshObstacle(r.string((*p, "file")), r.triple((*p, "xyz_m"), (0, 0, 0)),
+                            r.triple((*p, "rpy_rad"), (0, 0, 0)),
                             r.number((*p, "scale"), 1.0, positive=True))
 
     return World(r.items((*path, "walls"), wall), r.items((*path, "boxes"), box),

@@ -8,15 +8,23 @@ plain dicts, lists, strings, numbers, booleans and None, and a map from each val
 
 from __future__ import annotations
 
+import datetime
 import json
 import re
 from dataclasses import dataclass
-from typing import Any, NoReturn
+from typing import TYPE_CHECKING, NoReturn, TypeAlias
 
 from servicebot_cli.common.errors import ServicebotError
 
+if TYPE_CHECKING:
+    from yaml import Node, SafeLoader  # type: ignore[import-untyped]  # PyYAML ships no types
+
 Path = tuple[str | int, ...]
 Positions = dict[Path, tuple[int, int]]
+Scalar: TypeAlias = "str | int | float | bool | None | bytes | datetime.date"
+"""A leaf value: what JSON or PyYAML's safe loader makes of a scalar."""
+Value: TypeAlias = "dict[str, Value] | list[Value] | Scalar"
+"""A document or any value inside one."""
 
 
 class ScenarioError(ServicebotError):
@@ -33,7 +41,7 @@ class Located:
         display: The file as the user named it.
     """
 
-    value: Any
+    value: Value
     positions: Positions
     display: str
 
@@ -70,7 +78,7 @@ def parse(text: str, display: str, *, json_syntax: bool) -> Located:
 
 
 def _parse_yaml(text: str, display: str) -> Located:
-    import yaml
+    import yaml  # PyYAML ships no types
 
     try:
         node = yaml.compose(text, Loader=yaml.SafeLoader)
@@ -87,13 +95,13 @@ def _parse_yaml(text: str, display: str) -> Located:
     return Located(_yaml_value(node, (), positions, constructor, display), positions, display)
 
 
-def _yaml_value(node: Any, path: Path, positions: Positions, constructor: Any,
-                display: str) -> Any:
+def _yaml_value(node: Node, path: Path, positions: Positions, constructor: SafeLoader,
+                display: str) -> Value:
     import yaml
 
     positions[path] = (node.start_mark.line + 1, node.start_mark.column + 1)
     if isinstance(node, yaml.MappingNode):
-        result: dict[str, Any] = {}
+        result: dict[str, Value] = {}
         for key_node, value_node in node.value:
             key = str(constructor.construct_object(key_node, deep=True))
             if key in result:
@@ -108,17 +116,19 @@ def _yaml_value(node: Any, path: Path, positions: Positions, constructor: Any,
                 for i, item in enumerate(node.value)]
     line = node.start_mark.line + 1
     try:
-        return constructor.construct_object(node, deep=True)
+        scalar: Scalar = constructor.construct_object(node, deep=True)
     except yaml.YAMLError as exc:
         raise ScenarioError(f"{display}:{line}: {dotted(path)}: {exc}") from None
     except ValueError:  # an integer of more digits than Python converts
         raise ScenarioError(f"{display}:{line}: {dotted(path)}: expected a finite number, "
                             "got an integer too long to read") from None
+    return scalar
 
 
 _NUMBER = re.compile(r"-?(?:0|[1-9]\d*)(?:\.\d+)?(?:[eE][-+]?\d+)?")
 _WHITESPACE = re.compile(r"[ \t\n\r]*")
 _LITERALS = {"true": True, "false": False, "null": None}
+_DECODER = json.JSONDecoder()
 
 
 class _JsonParser:
@@ -140,9 +150,11 @@ class _JsonParser:
         raise ScenarioError(f"{self.display}:{line}: not valid JSON: {reason}")
 
     def skip(self) -> None:
-        self.pos = _WHITESPACE.match(self.text, self.pos).end()  # type: ignore[union-attr]
+        blank = _WHITESPACE.match(self.text, self.pos)
+        assert blank is not None  # the pattern matches the empty string
+        self.pos = blank.end()
 
-    def value(self, path: Path) -> Any:
+    def value(self, path: Path) -> Value:
         self.skip()
         line = self.text.count("\n", 0, self.pos) + 1
         column = self.pos - (self.text.rfind("\n", 0, self.pos) + 1) + 1
@@ -163,19 +175,20 @@ class _JsonParser:
             self.fail(f"unexpected {char!r}" if char else "unexpected end of file")
         self.pos = match.end()
         try:
-            return json.loads(match.group())
+            number: int | float = json.loads(match.group())
         except ValueError:  # an integer of more digits than Python converts
             self.fail("a number too long to read")
+        return number
 
     def string(self) -> str:
         try:
-            text, self.pos = json.decoder.scanstring(self.text, self.pos + 1)
+            text, self.pos = _DECODER.raw_decode(self.text, self.pos)
         except json.JSONDecodeError as exc:
             self.fail(exc.msg)
-        return text
+        return str(text)
 
-    def object(self, path: Path) -> dict[str, Any]:
-        result: dict[str, Any] = {}
+    def object(self, path: Path) -> dict[str, Value]:
+        result: dict[str, Value] = {}
         self.pos += 1
         self.skip()
         if self.text.startswith("}", self.pos):
@@ -196,8 +209,8 @@ class _JsonParser:
             if self.separator("}"):
                 return result
 
-    def array(self, path: Path) -> list[Any]:
-        result: list[Any] = []
+    def array(self, path: Path) -> list[Value]:
+        result: list[Value] = []
         self.pos += 1
         self.skip()
         if self.text.startswith("]", self.pos):

@@ -10,9 +10,9 @@ from __future__ import annotations
 import difflib
 import math
 from collections.abc import Callable, Sequence
-from typing import Any, TypeVar
+from typing import TypeVar
 
-from servicebot_cli.simulate.scenario.located import Located, Path, ScenarioError
+from servicebot_cli.simulate.scenario.located import Located, Path, ScenarioError, Value
 
 T = TypeVar("T")
 
@@ -27,11 +27,16 @@ class Reader:
         """The error for ``path``."""
         return self.located.error(path, message)
 
-    def get(self, path: Path) -> Any:
+    def get(self, path: Path) -> Value:
         """The raw value at ``path`` (KeyError/IndexError when absent)."""
         value = self.located.value
         for part in path:
-            value = value[part]
+            if isinstance(value, dict) and isinstance(part, str):
+                value = value[part]
+            elif isinstance(value, list) and isinstance(part, int):
+                value = value[part]
+            else:
+                raise KeyError(part)
         return value
 
     def has(self, path: Path) -> bool:
@@ -81,10 +86,6 @@ class Reader:
             raise self.error(path, f"must be at most {maximum:g}, got {number:g}")
         return number
 
-    def optional_number(self, path: Path, **bounds: Any) -> float | None:
-        """A number, or None when absent."""
-        return self.number(path, **bounds) if self.has(path) else None
-
     def string(self, path: Path, default: str | None = None,
                choices: Sequence[str] | None = None) -> str:
         """A string, optionally one of ``choices``."""
@@ -113,6 +114,17 @@ class Reader:
             raise self.error(path, f"expected a list of {want} numbers, got {_show(value)}")
         return tuple(self.number((*path, i)) for i in range(len(value)))
 
+    def pair(self, path: Path) -> tuple[float, float]:
+        """A list of two numbers (a point on the floor)."""
+        x, y = self.vector(path, 2)
+        return x, y
+
+    def triple(self, path: Path, default: tuple[float, float, float] | None = None
+               ) -> tuple[float, float, float]:
+        """A list of three numbers; ``default`` when absent."""
+        x, y, z = self.vector(path, 3, default)
+        return x, y, z
+
     def items(self, path: Path, read: Callable[[Path], T]) -> tuple[T, ...]:
         """Each element of the list at ``path`` read by ``read``; empty when absent."""
         if not self.has(path):
@@ -123,7 +135,7 @@ class Reader:
         return tuple(read((*path, i)) for i in range(len(value)))
 
 
-def _show(value: Any) -> str:
+def _show(value: Value) -> str:
     if isinstance(value, dict):
         return "a mapping"
     if isinstance(value, list):

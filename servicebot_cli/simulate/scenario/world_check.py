@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -17,6 +16,7 @@ from servicebot_cli.common.errors import NameNotFound
 from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.scenario.definition import Scenario
 from servicebot_cli.simulate.scenario.located import Located, ScenarioError
+from servicebot_cli.simulate.world.raycast import Mesh
 from servicebot_cli.simulate.world.solids import Solid, footprint_hits
 
 FloatArray = npt.NDArray[np.float64]
@@ -28,7 +28,7 @@ def _error(scenario: Scenario, path: tuple[str | int, ...], message: str) -> Sce
 
 
 def check_scenario(body: SimRobot, scenario: Scenario, solids: Sequence[Solid],
-                   meshes: Sequence[Any]) -> FloatArray:
+                   meshes: Sequence[Mesh]) -> FloatArray:
     """Check the arm goal and the start pose; return the arm's start positions [rad].
 
     Raises:

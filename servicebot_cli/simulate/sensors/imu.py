@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.description.sensors import ImuSpec
+from servicebot_cli.description.sensors import ImuSpec, NoiseSpec
 from servicebot_cli.kinematics.rotations import quaternion_from_matrix
 from servicebot_cli.simulate.bag import quaternions as rotations
 from servicebot_cli.simulate.sensors import noise
@@ -69,6 +69,12 @@ def measure(spec: ImuSpec, transform_sensor_to_base: FloatArray, path: Path2D,
     orientation = rotations.multiply(rotations.yaw(yaw), quaternion_from_matrix(to_sensor))
     return ImuSamples(
         spec, times_s, orientation, rate, accel,
-        tuple(noise.variance(s) for s in spec.angular_velocity_noise),  # type: ignore[arg-type]
-        tuple(noise.variance(s) for s in spec.linear_acceleration_noise),  # type: ignore[arg-type]
+        _variances(spec.angular_velocity_noise), _variances(spec.linear_acceleration_noise),
     )
+
+
+def _variances(axes: tuple[NoiseSpec | None, NoiseSpec | None, NoiseSpec | None]
+               ) -> tuple[float, float, float]:
+    """The covariance diagonal a message reports for per-axis noise [unit^2]."""
+    x, y, z = axes
+    return noise.variance(x), noise.variance(y), noise.variance(z)

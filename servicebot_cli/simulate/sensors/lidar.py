@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -50,7 +49,7 @@ def scan_angles(spec: LidarSpec) -> FloatArray:
 
 
 def scan(spec: LidarSpec, transform_sensor_to_base: FloatArray, base_height_m: float,
-         path: Path2D, times_s: FloatArray, solids: Sequence[Solid], meshes: Sequence[Any],
+         path: Path2D, times_s: FloatArray, solids: Sequence[Solid], meshes: Sequence[raycast.Mesh],
          rng: np.random.Generator, progress: Callable[[int], None] | None = None) -> Scans:
     """Every scan of a run at ``times_s``."""
     angles = scan_angles(spec)

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -18,7 +17,7 @@ import numpy.typing as npt
 from servicebot_cli.kinematics.transforms import rpy_matrix
 from servicebot_cli.simulate.scenario.definition import Scenario
 from servicebot_cli.simulate.scenario.located import Located
-from servicebot_cli.simulate.world.raycast import mesh_distances
+from servicebot_cli.simulate.world.raycast import Mesh, mesh_distances
 from servicebot_cli.simulate.world.solids import Footprint
 
 FloatArray = npt.NDArray[np.float64]
@@ -26,7 +25,7 @@ IntArray = npt.NDArray[np.int64]
 _HEIGHTS = (0.02, 0.5, 0.98)  # fractions of the base's height where the outline is tested
 
 
-def load_meshes(scenario: Scenario, base_dir: Path) -> list[Any]:
+def load_meshes(scenario: Scenario, base_dir: Path) -> list[Mesh]:
     """The scenario's meshes, placed in the world (relative files are from ``base_dir``).
 
     Raises:
@@ -37,7 +36,7 @@ def load_meshes(scenario: Scenario, base_dir: Path) -> list[Any]:
     import trimesh
 
     located = scenario.source or Located({}, {}, scenario.name)
-    meshes = []
+    meshes: list[Mesh] = []
     for i, spec in enumerate(scenario.world.meshes):
         path = Path(spec.file) if Path(spec.file).is_absolute() else base_dir / spec.file
         where = ("world", "meshes", i, "file")
@@ -47,7 +46,7 @@ def load_meshes(scenario: Scenario, base_dir: Path) -> list[Any]:
             mesh = trimesh.load(path, force="mesh")
         except Exception as exc:  # trimesh raises many types for unreadable files
             raise located.error(where, f"cannot load '{spec.file}' as a mesh: {exc}") from None
-        if not hasattr(mesh, "faces") or not len(mesh.faces):
+        if not isinstance(mesh, trimesh.Trimesh) or not len(mesh.faces):
             raise located.error(where, f"'{spec.file}' has no triangles")
         transform = np.eye(4)
         transform[:3, :3] = rpy_matrix(*spec.rpy_rad) * spec.scale
@@ -57,7 +56,7 @@ def load_meshes(scenario: Scenario, base_dir: Path) -> list[Any]:
     return meshes
 
 
-def footprint_hits_meshes(footprint: Footprint, meshes: Sequence[Any], x: FloatArray,
+def footprint_hits_meshes(footprint: Footprint, meshes: Sequence[Mesh], x: FloatArray,
                           y: FloatArray, yaw: FloatArray) -> IntArray:
     """Index of the first mesh each pose's footprint outline crosses, -1 where free."""
     hit = np.full(len(x), -1, dtype=np.int64)

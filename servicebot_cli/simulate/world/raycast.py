@@ -9,7 +9,7 @@ is the distance to the nearest surface the ray enters, inf where it hits nothing
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any
+from typing import Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -17,10 +17,29 @@ import numpy.typing as npt
 from servicebot_cli.simulate.world.solids import Solid
 
 FloatArray = npt.NDArray[np.float64]
+IntArray = npt.NDArray[np.int64]
+
+
+class RayQueries(Protocol):
+    """trimesh's ray queries on one mesh (``mesh.ray``), as the simulator calls them."""
+
+    def intersects_location(self, ray_origins: FloatArray, ray_directions: FloatArray,
+                            multiple_hits: bool = ...) -> tuple[FloatArray, IntArray, IntArray]:
+        """Hit points, the ray of each hit and the triangle it hit."""
+        ...
+
+
+class Mesh(Protocol):
+    """A triangle mesh placed in the world (a ``trimesh.Trimesh``)."""
+
+    @property
+    def ray(self) -> RayQueries:
+        """Ray queries against this mesh."""
+        ...
 
 
 def cast(origins: FloatArray, directions: FloatArray, solids: Sequence[Solid], *,
-         floor: bool = True, meshes: Sequence[Any] = ()) -> FloatArray:
+         floor: bool = True, meshes: Sequence[Mesh] = ()) -> FloatArray:
     """Distance along each ray to the first surface it enters [m].
 
     Args:
@@ -28,7 +47,7 @@ def cast(origins: FloatArray, directions: FloatArray, solids: Sequence[Solid], *
         directions: Unit directions, shape (N, 3).
         solids: Boxes and cylinders.
         floor: Include the plane z = 0.
-        meshes: trimesh.Trimesh objects, in the same frame.
+        meshes: Placed meshes (trimesh.Trimesh), in the same frame.
 
     Returns:
         Distances, shape (N,); inf where a ray hits nothing.
@@ -60,14 +79,14 @@ def cast(origins: FloatArray, directions: FloatArray, solids: Sequence[Solid], *
 
 def _box(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
     """Slab method: entry distance into an axis-aligned box centred at the origin."""
-    near = far = None
+    near = np.full(np.shape(d[0]), -np.inf)
+    far = np.full(np.shape(d[0]), np.inf)
     with np.errstate(divide="ignore", invalid="ignore"):
         for i in range(3):
             inv = 1.0 / d[i]
             t1, t2 = (-half[i] - o[i]) * inv, (half[i] - o[i]) * inv
-            lo, hi = np.fmin(t1, t2), np.fmax(t1, t2)
-            near = lo if near is None else np.fmax(near, lo, out=near)
-            far = hi if far is None else np.fmin(far, hi, out=far)
+            np.fmax(near, np.fmin(t1, t2), out=near)
+            np.fmin(far, np.fmax(t1, t2), out=far)
     return np.where((near <= far) & (near >= 0.0), near, np.inf)
 
 
@@ -89,7 +108,7 @@ def _cylinder(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> Flo
     return np.fmin(side, cap)
 
 
-def mesh_distances(mesh: Any, origins: FloatArray, directions: FloatArray) -> FloatArray:
+def mesh_distances(mesh: Mesh, origins: FloatArray, directions: FloatArray) -> FloatArray:
     """First hit on a trimesh mesh per ray."""
     out = np.full(len(directions), np.inf)
     locations, index_ray, _ = mesh.ray.intersects_location(

@@ -161,7 +161,7 @@ def _polygons_overlap(corners: FloatArray, other: FloatArray) -> npt.NDArray[np.
 def _circle_distance(footprint: Footprint, solid: Solid, x: FloatArray, y: FloatArray,
                      yaw: FloatArray) -> FloatArray:
     """Signed distance from each footprint to a vertical cylinder (negative: overlapping)."""
-    dx, dy = solid.center_m[0] - x, solid.center_m[1] - y
+    dx, dy = float(solid.center_m[0]) - x, float(solid.center_m[1]) - y
     c, s = np.cos(yaw), np.sin(yaw)
     lx, ly = c * dx + s * dy, -s * dx + c * dy  # the centre in the base frame
     qx = np.clip(lx, footprint.x_min_m, footprint.x_max_m)
@@ -169,7 +169,7 @@ def _circle_distance(footprint: Footprint, solid: Solid, x: FloatArray, y: Float
     outside = np.hypot(lx - qx, ly - qy)
     depth = np.minimum.reduce([lx - footprint.x_min_m, footprint.x_max_m - lx,
                                ly - footprint.y_min_m, footprint.y_max_m - ly])
-    return np.where(outside > 0, outside, -depth) - solid.half_m[0]
+    return np.where(outside > 0, outside, -depth) - float(solid.half_m[0])
 
 
 def footprint_clearance(footprint: Footprint, solids: list[Solid], x: FloatArray, y: FloatArray,
@@ -213,13 +213,14 @@ def _points_to_polygon(points: FloatArray, polygon: FloatArray) -> FloatArray:
 
 def _point_distance(solid: Solid, x: FloatArray, y: FloatArray) -> FloatArray:
     """Floor distance from points to a solid's outline (0 inside)."""
-    dx, dy = x - solid.center_m[0], y - solid.center_m[1]
+    dx, dy = x - float(solid.center_m[0]), y - float(solid.center_m[1])
     if solid.kind == "cylinder":
-        return np.maximum(np.hypot(dx, dy) - solid.half_m[0], 0.0)
+        return np.maximum(np.hypot(dx, dy) - float(solid.half_m[0]), 0.0)
     r = solid.rotation
-    lx, ly = r[0, 0] * dx + r[1, 0] * dy, r[0, 1] * dx + r[1, 1] * dy
-    ox = np.maximum(np.abs(lx) - solid.half_m[0], 0.0)
-    oy = np.maximum(np.abs(ly) - solid.half_m[1], 0.0)
+    r00, r01, r10, r11 = float(r[0, 0]), float(r[0, 1]), float(r[1, 0]), float(r[1, 1])
+    lx, ly = r00 * dx + r10 * dy, r01 * dx + r11 * dy
+    ox = np.maximum(np.abs(lx) - float(solid.half_m[0]), 0.0)
+    oy = np.maximum(np.abs(ly) - float(solid.half_m[1]), 0.0)
     return np.hypot(ox, oy)
 
 
