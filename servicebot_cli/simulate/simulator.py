@@ -91,7 +91,7 @@ def _ground_truth(body: SimRobot, scenario: Scenario, plan: WheelPlan, solids: l
     """The base's real motion: wheel speeds through the floor's slip, stopped by obstacles."""
     geometry, slip = body.geometry, scenario.slip
     linear, angular = diff_drive.body_twist(
-        plan.left_rad_s, plan.right_rad_s,  # type: ignore[arg-type]
+        plan.left_rad_s, plan.right_rad_s,  # type: ignore[arg-type]  # body_twist is typed for floats
         wheel_radius_m=geometry.wheel_radius_m, track_m=geometry.track_m * slip.track_factor)
     keep = 1.0 - slip.longitudinal
     start = scenario.initial_pose

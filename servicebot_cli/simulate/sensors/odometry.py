@@ -35,7 +35,7 @@ def dead_reckoning(left_rad_s: FloatArray, right_rad_s: FloatArray, dt_s: float,
                    wheel_radius_m: float, track_m: float) -> motion.Path2D:
     """The odometry path at every tick boundary, from the wheel speeds each tick."""
     # body_twist is plain arithmetic, so it takes whole arrays of wheel speeds.
-    linear, angular = diff_drive.body_twist(left_rad_s, right_rad_s,  # type: ignore[arg-type]
+    linear, angular = diff_drive.body_twist(left_rad_s, right_rad_s,  # type: ignore[arg-type]  # typed for floats
                                             wheel_radius_m=wheel_radius_m, track_m=track_m)
     return motion.integrate((0.0, 0.0, 0.0), np.asarray(linear), np.asarray(angular), dt_s)
 
