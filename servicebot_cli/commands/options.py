@@ -225,6 +225,8 @@ class OutputPath(click.ParamType[str]):
             parent = next((p for p in (parent, *parent.parents) if p.exists()), Path("."))
             if not parent.is_dir():
                 self.fail(f"'{text}': '{parent}' is a file, not a directory", param, ctx)
+        if parent.exists() and not parent.is_dir():
+            self.fail(f"'{text}': '{parent}' is a file, not a directory", param, ctx)
         if not parent.is_dir():
             self.fail(f"'{text}': directory '{parent}' does not exist; create it first",
                       param, ctx)
@@ -237,6 +239,27 @@ def given(ctx: click.Context, name: str) -> bool:
     """Whether the user gave parameter ``name`` (on the command line or in the environment)."""
     return ctx.get_parameter_source(name) in (ParameterSource.COMMANDLINE,
                                               ParameterSource.ENVIRONMENT)
+
+
+def refuse_with(ctx: click.Context, option: str, other: str, *, name: str | None = None,
+                present: bool = True, why: str = "") -> None:
+    """Refuse ``option`` next to ``other``, with which it would have no effect.
+
+    Args:
+        ctx: The command's context.
+        option: The flag as the user types it, e.g. ``"--speed"``.
+        other: The option it cannot go with, as the user types it, e.g. ``"--headless"``.
+        name: The parameter's name in ``ctx.params`` (default: from ``option``).
+        present: Whether ``other`` was given.
+        why: A short reason, e.g. ``"which has no window"``.
+
+    Raises:
+        click.UsageError: ``option`` was given and ``other`` is present.
+    """
+    if given(ctx, name or option.lstrip("-").replace("-", "_")) and present:
+        reason = f" ({why})" if why else ""
+        raise click.UsageError(f"{option} has no effect with {other}{reason}; drop one of them",
+                               ctx=ctx)
 
 
 def refuse_without(ctx: click.Context, option: str, needs: str, *, name: str | None = None,

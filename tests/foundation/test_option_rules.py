@@ -34,7 +34,8 @@ def _ids(item):
     return f"{' '.join(path)} {max(option.opts, key=len)}"
 
 
-NUMERIC = [item for item in OPTIONS if isinstance(item[1].type, (Number, click.types.FloatParamType))]
+NUMERIC = [item for item in OPTIONS
+           if isinstance(item[1].type, (Number, click.types.FloatParamType))]
 SINGLE = [item for item in OPTIONS if not (item[1].multiple or item[1].count or item[1].is_flag)]
 
 
