@@ -31,7 +31,8 @@ _PORT_ONLY = (("--port", "port", "no port is opened"),
               ("--log", "log_path", "no telemetry comes back"),
               ("--reconnect", "reconnect", "no link to lose"),
               ("--connect-timeout-s", "connect_timeout_s", "no firmware to wait for"),
-              ("--link-timeout-s", "link_timeout_s", "no link to lose"))
+              ("--link-timeout-s", "link_timeout_s", "no link to lose"),
+              ("--boot-time-s", "boot_time_s", "no board to boot"))
 
 
 @click.command(cls=Command)
@@ -47,6 +48,12 @@ _PORT_ONLY = (("--port", "port", "no port is opened"),
 @click.option("--duration-s", type=Number("S", positive=True), help="One-shot duration [s].")
 @click.option("--arm", "arm", type=JointValue(), multiple=True,
               help="One-shot arm target NAME=VALUE [rad] (repeatable).")
+@click.option("--max-speed", type=Number("RAD_S", positive=True), default=None,
+              help="Cap every wheel at this speed [rad/s], below the URDF's limit (first "
+              "tests on a real robot).")
+@click.option("--deadman-ms", type=click.IntRange(min=1), default=None, metavar="MS",
+              help="Teleop: stop the wheels when no key arrived for this long (hold a key: "
+              "auto-repeat keeps them going; give more than its delay, ~600 ms).")
 @click.option("--rate", type=Number("HZ", positive=True), default=20.0, show_default=True,
               help="Commands per second; refused above what the baud rate carries.")
 @click.option("--max-accel", type=Number("RAD_S2", positive=True), default=1.0,
@@ -55,6 +62,10 @@ _PORT_ONLY = (("--port", "port", "no port is opened"),
               show_default=True, help="No reply for this long is a lost link (exit 5) [s].")
 @click.option("--connect-timeout-s", type=Number("S", positive=True), default=2.0,
               show_default=True, help="How long the firmware may take to answer at first [s].")
+@click.option("--boot-time-s", type=Number("S", non_negative=True), default=0.0,
+              show_default=True,
+              help="Wait this long after opening the port before the handshake: a board "
+              "that resets when the port opens (Arduino Uno) needs ~1.5 s [s].")
 @click.option("--reconnect", is_flag=True,
               help="After a lost link, reopen the port and go on (motors at zero meanwhile).")
 @click.option("--log", "log_path", type=OutputPath(suffixes=(".csv",)), metavar="FILE.csv",
@@ -64,8 +75,9 @@ _PORT_ONLY = (("--port", "port", "no port is opened"),
 def drive(robot_args: RobotArgs, port: str | None, baud: int | None, protocol: str,
           ticks_per_rev: float | None, pid_rate: float, script: str | None,
           linear: float | None, angular: float | None, duration_s: float | None,
-          arm: tuple[tuple[str, float], ...], rate: float, max_accel: float,
-          link_timeout_s: float, connect_timeout_s: float, reconnect: bool,
+          arm: tuple[tuple[str, float], ...], max_speed: float | None,
+          deadman_ms: int | None, rate: float, max_accel: float, link_timeout_s: float,
+          connect_timeout_s: float, boot_time_s: float, reconnect: bool,
           log_path: str | None, dry_run: bool, fmt: str) -> None:
     """Stream commands to the motors over serial, safely; stop them on every exit.
 
@@ -92,11 +104,11 @@ def drive(robot_args: RobotArgs, port: str | None, baud: int | None, protocol: s
     from servicebot_cli.output.drive_text import drive_log, show_drive
 
     _refuse_port_options(dry_run)
+    mode = _mode(script, linear, angular, duration_s, arm, dry_run, deadman_ms)
     request = DriveRequest(
-        robot_args.source(), _mode(script, linear, angular, duration_s, arm, dry_run),
-        protocol, arduino_config(protocol, ticks_per_rev, pid_rate), port, baud, rate,
-        max_accel, link_timeout_s, connect_timeout_s, reconnect,
-        Path(log_path) if log_path else None, dry_run)
+        robot_args.source(), mode, protocol, arduino_config(protocol, ticks_per_rev, pid_rate),
+        port, baud, rate, max_accel, link_timeout_s, connect_timeout_s, reconnect,
+        Path(log_path) if log_path else None, dry_run, boot_time_s, max_speed)
     with bad_options():
         result = run_drive(request, log=drive_log)
     show_drive(result, fmt)
@@ -112,11 +124,15 @@ def _refuse_port_options(dry_run: bool) -> None:
 
 
 def _mode(script: str | None, linear: float | None, angular: float | None,
-          duration_s: float | None, arm: tuple[tuple[str, float], ...], dry_run: bool) -> Mode:
+          duration_s: float | None, arm: tuple[tuple[str, float], ...], dry_run: bool,
+          deadman_ms: int | None) -> Mode:
     """What to drive, from the mode options; refuses a mix of modes and a missing duration."""
     from servicebot_cli.drive.request import Keyboard, OneShot, ScriptFile
 
     one_shot = any(v is not None for v in (linear, angular, duration_s)) or bool(arm)
+    if deadman_ms is not None and (script is not None or one_shot):
+        raise click.UsageError("--deadman-ms is for teleop (no --script, no --linear/"
+                               "--angular/--duration-s): a plan has no keys to hold")
     if script is not None and one_shot:
         raise click.UsageError("give --script or --linear/--angular/--duration-s/--arm, "
                                "not both")
@@ -126,7 +142,7 @@ def _mode(script: str | None, linear: float | None, angular: float | None,
         if dry_run:
             raise click.UsageError("--dry-run needs a plan: --script FILE or --linear/--angular"
                                    "/--duration-s (teleop has no frames to plan)")
-        return Keyboard()
+        return Keyboard(None if deadman_ms is None else deadman_ms / 1000.0)
     if duration_s is None:
         raise click.BadParameter("needed with --linear, --angular or --arm",
                                  param_hint="--duration-s")

@@ -17,7 +17,8 @@ from typing import TYPE_CHECKING
 from servicebot_cli.common.errors import LinkError, LinkLost, ServicebotError
 from servicebot_cli.drive.motors import MotorMap
 from servicebot_cli.drive.session.commander import Commander, HostLink
-from servicebot_cli.drive.session.loop import DriveLoop, LinkStatus, Source
+from servicebot_cli.drive.session.contracts import LinkStatus, Source, Suspender
+from servicebot_cli.drive.session.loop import DriveLoop
 from servicebot_cli.drive.session.signals import OUTCOMES, StopSignals
 from servicebot_cli.drive.shaping import WheelShaper
 
@@ -38,6 +39,7 @@ class StreamSettings:
         connect_timeout_s: How long the handshake may take [s].
         reconnect: Reopen the port after a lost link instead of giving up.
         log: CSV telemetry log, or None.
+        boot_s: Time the board needs to boot after the port opens [s].
     """
 
     port: str
@@ -48,6 +50,11 @@ class StreamSettings:
     connect_timeout_s: float
     reconnect: bool = False
     log: Path | None = None
+    boot_s: float = 0.0
+
+
+class StopUnconfirmed(LinkError):
+    """The run ended, but the firmware never reported the wheels stopped (exit 4)."""
 
 
 @dataclass(frozen=True)
@@ -84,8 +91,8 @@ class ArmJointEnd:
 class Summary:
     """What a run did, for the last stderr line and ``--format json``.
 
-    ``outcome`` is ``completed``, ``interrupted``, ``terminated``, ``hung_up``, ``quit``,
-    ``link_lost``, ``link_error`` or ``error``.
+    ``outcome`` is ``completed``, ``stop_unconfirmed``, ``interrupted``, ``terminated``,
+    ``hung_up``, ``quit``, ``link_lost``, ``link_error`` or ``error``.
     """
 
     protocol: str
@@ -121,7 +128,8 @@ class Driven:
 
 def run_drive(settings: StreamSettings, link: HostLink, motors: MotorMap,
               source: Source, *, log: Callable[[str], None],
-              on_tick: Callable[[LinkStatus], None] | None = None) -> Driven:
+              on_tick: Callable[[LinkStatus], None] | None = None,
+              suspender: Suspender | None = None) -> Driven:
     """Drive until ``source`` is done; stop the motors on every way out.
 
     Whatever ends the run once the port is open (Ctrl-C, a signal, a lost link) is in the
@@ -142,7 +150,9 @@ def run_drive(settings: StreamSettings, link: HostLink, motors: MotorMap,
         loop = DriveLoop(port, link, commander, rate_hz=settings.rate_hz,
                          where=f"{settings.port} at {settings.baud} baud",
                          link_timeout_s=settings.link_timeout_s, reopen=reopen, log=log,
-                         on_tick=on_tick, on_reading=csv_log.row if csv_log else None)
+                         on_tick=on_tick, on_reading=csv_log.row if csv_log else None,
+                         boot_s=settings.boot_s, connect_timeout_s=settings.connect_timeout_s,
+                         suspender=suspender)
         failure, confirmed = _drive_then_stop(loop, settings, source, signals, log)
     summary = _summary(loop, settings, link, motors, failure, confirmed)
     if failure is not None:
@@ -166,7 +176,18 @@ def _drive_then_stop(loop: DriveLoop, settings: StreamSettings, source: Source,
         confirmed = loop.stop_motors()
         if loop.port is not None:
             loop.port.close()
+    if failure is None and not confirmed and loop.hello is not None:
+        failure = StopUnconfirmed(
+            f"stop not confirmed: the firmware on {loop.where} did not report the wheels "
+            f"stopped within {loop.link.stop_timeout_s:g} s of the first of "
+            f"{loop.stops_sent} stops ({_stop_evidence(loop.link.name)})")
     return failure, confirmed
+
+
+def _stop_evidence(protocol: str) -> str:
+    if protocol == "arduino":
+        return "ROSArduinoBridge: encoder counts that stop changing"
+    return "TELEMETRY with every wheel at zero"
 
 
 @contextlib.contextmanager
@@ -184,18 +205,19 @@ def _telemetry_log(path: Path | None, motors: MotorMap,
 def _with_stop_note(failure: ServicebotError, loop: DriveLoop, confirmed: bool) -> ServicebotError:
     if loop.hello is None:
         return failure
-    watchdog = f"{loop.hello.watchdog_ms} ms" if loop.hello.watchdog_ms else "its timeout"
+    auto_stop = loop.link.auto_stop_note(loop.hello)
     note = ("motors stopped (the firmware confirmed)" if confirmed else
-            f"stop sent but not confirmed; the firmware's watchdog stops the motors within "
-            f"{watchdog}")
+            f"stop sent but not confirmed; {auto_stop}")
+    if isinstance(failure, StopUnconfirmed):
+        note = auto_stop
     return type(failure)(f"{failure}; {note}")
 
 
 def _outcome(failure: ServicebotError | None) -> str:
     if failure is None:
         return "completed"
-    outcomes: tuple[tuple[type[ServicebotError], str], ...] = (*OUTCOMES,
-                                                                (LinkLost, "link_lost"))
+    outcomes: tuple[tuple[type[ServicebotError], str], ...] = (
+        *OUTCOMES, (LinkLost, "link_lost"), (StopUnconfirmed, "stop_unconfirmed"))
     for kind, name in outcomes:
         if isinstance(failure, kind):
             return name

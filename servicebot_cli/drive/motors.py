@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 from servicebot_cli.common.errors import DescriptionError, JointNotFound, OutOfLimits
@@ -63,6 +63,23 @@ class MotorMap:
     def track_m(self) -> float:
         """Left-to-right wheel distance [m]."""
         return self.geometry.track_m
+
+    def capped(self, max_wheel_rad_s: float | None) -> MotorMap:
+        """These motors with every wheel limited to ``max_wheel_rad_s`` too (``--max-speed``).
+
+        Raises:
+            OutOfLimits: A cap above the URDF's limit (it would not cap anything).
+        """
+        if max_wheel_rad_s is None:
+            return self
+        if max_wheel_rad_s > self.max_wheel_rad_s:
+            raise OutOfLimits(
+                f"{max_wheel_rad_s:g} rad/s is above {self.robot}'s wheel limit of "
+                f"{self.max_wheel_rad_s:g} rad/s in the URDF; give a smaller cap, or none")
+        return replace(
+            self, wheel_max_rad_s=tuple(min(v, max_wheel_rad_s) for v in self.wheel_max_rad_s),
+            geometry=replace(self.geometry, max_wheel_speed_rad_s=min(
+                self.geometry.max_wheel_speed_rad_s, max_wheel_rad_s)))
 
     def clamp_wheels(self, speeds_rad_s: Sequence[float]) -> tuple[float, ...]:
         """Each wheel speed inside its limit; NaN becomes 0 (stop)."""

@@ -6,6 +6,7 @@ its curvature) and ``warn`` is told so, naming the script line or the options.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 
 from servicebot_cli.common.errors import NameNotFound, OutOfLimits
@@ -69,7 +70,9 @@ def warn_if_scaled(step: Step, motors: MotorMap, where: str,
         return
     linear, angular = body_twist(left, right, wheel_radius_m=motors.wheel_radius_m,
                                  track_m=motors.track_m)
+    needed = max(map(abs, wanted))
+    needs = f"{needed:.3g} rad/s" if math.isfinite(needed) else "more rad/s than a float holds"
     warn(f"warning: {where}: twist {step.linear_m_s:g} m/s, {step.angular_rad_s:g} rad/s "
-         f"needs {max(map(abs, wanted)):.3g} rad/s of the wheels, over their "
+         f"needs {needs} of the wheels, over their "
          f"{motors.max_wheel_rad_s:g} rad/s limit; scaled to {linear:.4g} m/s, "
          f"{angular:.4g} rad/s (curvature kept)")

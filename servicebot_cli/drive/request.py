@@ -59,7 +59,13 @@ class ScriptFile:
 
 @dataclass(frozen=True)
 class Keyboard:
-    """No mode option: teleop from the keyboard on stdin."""
+    """No mode option: teleop from the keyboard on stdin.
+
+    Attributes:
+        deadman_s: Stop the wheels when no key arrived for this long, or None [s].
+    """
+
+    deadman_s: float | None = None
 
 
 Mode: TypeAlias = OneShot | ScriptFile | Keyboard
@@ -83,6 +89,8 @@ class DriveRequest:
         reconnect: Reopen the port after a lost link.
         log: CSV telemetry log, or None.
         dry_run: Plan the frames only; no port.
+        boot_s: Time the board needs to boot after the port opens [s].
+        max_wheel_rad_s: A wheel speed cap below the URDF's limit (``--max-speed``) [rad/s].
     """
 
     robot: RobotSource
@@ -98,3 +106,5 @@ class DriveRequest:
     reconnect: bool = False
     log: Path | None = None
     dry_run: bool = False
+    boot_s: float = 0.0
+    max_wheel_rad_s: float | None = None

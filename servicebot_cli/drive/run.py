@@ -11,6 +11,7 @@ import sys
 from collections.abc import Callable
 from typing import TypeAlias
 
+from servicebot_cli.common.errors import OutOfLimits
 from servicebot_cli.drive.driving import Driven, StreamSettings, run_drive
 from servicebot_cli.drive.dry_run import DryRun, dry_run
 from servicebot_cli.drive.link_setup import check_rate, make_link, port_and_baud
@@ -43,21 +44,25 @@ def drive(request: DriveRequest, *, log: Callable[[str], None],
     from servicebot_cli.description.loader import load
 
     robot = load(request.robot)
-    motors = motor_map(robot)
+    try:
+        motors = motor_map(robot).capped(request.max_wheel_rad_s)
+    except OutOfLimits as exc:
+        raise BadOption("--max-speed", str(exc)) from None
     link = make_link(request.protocol, motors, request.arduino)
     port, baud = port_and_baud(robot, request.port, request.baud, need_port=not request.dry_run)
     check_rate(request.rate_hz, link, baud, None if request.dry_run else request.link_timeout_s,
                log)
     settings = StreamSettings(port, baud, request.rate_hz, request.max_accel_rad_s2,
                               request.link_timeout_s, request.connect_timeout_s,
-                              request.reconnect, request.log)
+                              request.reconnect, request.log, request.boot_s)
     if isinstance(request.mode, Keyboard):
         if request.dry_run:
             raise BadOption("--dry-run", "teleop has no frames to plan; give --script FILE or "
                             "--linear/--angular/--duration-s")
         keys = terminal or Terminal(sys.stdin, sys.stderr)
-        with keyboard_session(keys, motors) as (teleop, on_tick):
-            return run_drive(settings, link, motors, teleop, log=log, on_tick=on_tick)
+        with keyboard_session(keys, motors, request.mode.deadman_s) as session:
+            return run_drive(settings, link, motors, session.teleop, log=log,
+                             on_tick=session.on_tick, suspender=session.job_control)
     plan = _plan(request, motors, link, log)
     if request.dry_run:
         return dry_run(plan, link, motors, request.max_accel_rad_s2, request.rate_hz)

@@ -32,16 +32,26 @@ class WheelShaper:
     def unlimited(self, linear_m_s: float, angular_rad_s: float) -> tuple[float, float]:
         """Left and right speeds [rad/s] the kinematics ask for.
 
-        A twist that is not finite, or so large that the speeds overflow, is a stop.
+        A twist that is not a number (NaN) is a stop. A finite twist so large that the speeds
+        overflow asks for infinite speeds (:meth:`target` still scales it down correctly).
         """
-        left, right = wheel_speeds(linear_m_s, angular_rad_s,
-                                   wheel_radius_m=self.motors.wheel_radius_m,
-                                   track_m=self.motors.track_m)
-        return (left, right) if math.isfinite(left) and math.isfinite(right) else (0.0, 0.0)
+        if math.isnan(linear_m_s) or math.isnan(angular_rad_s):
+            return 0.0, 0.0
+        return wheel_speeds(linear_m_s, angular_rad_s, wheel_radius_m=self.motors.wheel_radius_m,
+                            track_m=self.motors.track_m)
 
     def target(self, linear_m_s: float, angular_rad_s: float) -> tuple[float, float]:
-        """Left and right speeds [rad/s] within the wheel limit, curvature kept."""
+        """Left and right speeds [rad/s] within the wheel limit, curvature kept.
+
+        The twist is first divided by its largest component when its speeds would overflow:
+        the same path, at a speed a float holds, scaled down to the limit from there.
+        """
         left, right = self.unlimited(linear_m_s, angular_rad_s)
+        if not (math.isfinite(left) and math.isfinite(right)):
+            size = max(abs(linear_m_s), abs(angular_rad_s))
+            if not math.isfinite(size):
+                return 0.0, 0.0  # an infinite twist has no direction to keep
+            left, right = self.unlimited(linear_m_s / size, angular_rad_s / size)
         return saturate_keep_curvature(left, right, self.motors.max_wheel_rad_s)
 
     def step(self, linear_m_s: float, angular_rad_s: float, dt_s: float) -> tuple[float, ...]:

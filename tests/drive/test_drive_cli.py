@@ -72,7 +72,7 @@ def test_dry_run_of_the_arduino_protocol(run):
                  "--linear", "0.05", "--duration-s", "1")
     assert result.exit_code == 0, result.stderr
     lines = [ln for ln in result.stdout.splitlines() if not ln.startswith("#")]
-    assert "'b'" in lines[0] and "'m 9 9': left +0.494 rad/s" in result.stdout
+    assert "'b'" in lines[0] and "'m 9 9': left +0.499 rad/s" in result.stdout
     assert lines[-1].endswith("'m 0 0': left +0.000 rad/s, right +0.000 rad/s; 'e'")
 
 

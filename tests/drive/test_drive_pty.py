@@ -133,7 +133,7 @@ def test_reconnect_keeps_the_motors_at_zero_until_the_link_is_back(emulator, tmp
     second = emulator("--link", link)
     code, stdout, stderr = finish(drive)
     assert code == 0, stderr
-    assert "reconnecting every 0.5 s, motors at zero" in stderr and "link back" in stderr
+    assert "reconnecting (motors at zero" in stderr and "link back" in stderr
     assert json.loads(stdout)["reconnects"] == 1
     state = state_when(second, lambda s: s["counters"]["stops"] >= 2, "the final stop")
     assert state["counters"]["first_command"] == "STOP"  # zero first, before any motion

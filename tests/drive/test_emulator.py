@@ -119,7 +119,7 @@ def test_arduino_firmware_speaks_like_the_stock_one(real_motors):
     arduino = ArduinoFirmware(model, ArduinoConfig(3436, 30.0), 9600)
     assert arduino.receive(b"b\r", 0.0) == b" 9600\r\n"
     assert arduino.receive(b"m 9 -9\r", 0.0) == b"OK\r\n"
-    assert arduino.receive(b"e\r", 1.0) == b"270 -270\r\n"  # 9 ticks x 30 Hz x 1 s
+    assert arduino.receive(b"e\r", 1.0) == b"273 -273\r\n"  # 9 ticks per 33 ms, for 1 s
     assert arduino.receive(b"r\r", 1.0) == b"OK\r\n"
     assert arduino.receive(b"e\r", 1.0) == b"0 0\r\n"
     assert arduino.receive(b"u 20:12:0:50\r", 1.0) == b"OK\r\n"

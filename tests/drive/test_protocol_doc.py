@@ -64,10 +64,14 @@ def test_the_sizing_arithmetic(real_motors):
 
 def test_the_arduino_example_numbers(real_motors):
     config = ArduinoConfig(3436, 30.0)
-    assert round(config.ticks_per_frame(0.5), 2) == 9.11
+    assert config.pid_interval_s == 0.033  # the firmware's integer 1000 / 30
+    assert round(config.ticks_per_frame(0.5), 2) == 9.02
     assert config.max_ticks(real_motors.max_wheel_rad_s) == 9
-    assert round(config.speed_rad_s(9), 3) == 0.494 and round(config.speed_rad_s(1), 3) == 0.055
-    assert "0.5 rad/s is 9.11 ticks, sent as 9 (0.494 rad/s); one tick is 0.055 rad/s" in DOC
+    assert round(config.speed_rad_s(9), 3) == 0.499 and round(config.speed_rad_s(1), 3) == 0.055
+    assert "0.5 rad/s is 9.02 ticks, sent as 9 (0.499 rad/s); one tick is 0.055 rad/s" in DOC
+    coarse = ArduinoConfig(3400, 30.0)  # 9 ticks would be 0.504 rad/s at the real 33 ms
+    assert coarse.max_ticks(0.5) == 8 and round(coarse.speed_rad_s(8), 3) == 0.448
+    assert "With N = 3400, 9 ticks would be 0.504 rad/s: 8 is sent (0.448 rad/s)" in DOC
 
 
 def test_the_watchdog_contract_is_stated_and_emulated(real_motors):

@@ -7,6 +7,7 @@ mrad and are unwrapped here into continuous angles.
 
 from __future__ import annotations
 
+from collections import deque
 from collections.abc import Sequence
 
 from servicebot_cli.drive.motors import MotorMap
@@ -29,6 +30,8 @@ class BinaryLink:
     command_bytes = msg.COMMAND_FRAME_BYTES
     reply_bytes = msg.REPLY_FRAME_BYTES
     has_arm = True
+    stop_timeout_s = 0.5  # docs/serial-protocol.md: wait up to 0.5 s, resend after 0.25 s
+    stop_resend_s = 0.25
 
     def __init__(self, motors: MotorMap) -> None:
         if len(motors.wheel_joints) != msg.SLOTS or len(motors.arm_joints) != msg.SLOTS:
@@ -44,6 +47,7 @@ class BinaryLink:
         self._decoder = Decoder()
         self._raw: tuple[float, ...] | None = None
         self._unwrapped = [0.0] * msg.SLOTS
+        self._speeds: deque[tuple[int, tuple[float, ...]]] = deque(maxlen=32)
         self.refused = 0
         self.malformed = 0
 
@@ -116,8 +120,24 @@ class BinaryLink:
                 self._unwrapped[i] += step
         self._raw = raw
         faults = tuple(f.name or "" for f in msg.Fault if f in telemetry.faults)
+        self._speeds.append((seq, telemetry.wheel_velocity_rad_s))
         return Reading(seq, tuple(self._unwrapped), telemetry.wheel_velocity_rad_s,
                        telemetry.arm_position_rad, faults)
+
+    def still(self, stop_tokens: set[int], now_s: float) -> bool:
+        """Whether the TELEMETRY answering a STOP reports every wheel at zero."""
+        return any(seq in stop_tokens and not any(speeds) for seq, speeds in self._speeds)
+
+    def refusal_advice(self, where: str) -> str:
+        """What to update when the firmware refuses every command."""
+        return (f"the firmware on {where} refuses the motion commands (NACK): it does not "
+                "implement servicebot protocol v1's SET_WHEELS and STOP; update it "
+                "(docs/serial-protocol.md, firmware/)")
+
+    def auto_stop_note(self, hello: Hello | None) -> str:
+        """Who stops the motors when drive could not."""
+        watchdog = f"{hello.watchdog_ms} ms" if hello and hello.watchdog_ms else "its timeout"
+        return f"the firmware's watchdog stops the motors within {watchdog}"
 
     @property
     def errors(self) -> int:

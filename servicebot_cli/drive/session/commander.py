@@ -12,7 +12,7 @@ from typing import Protocol
 
 from servicebot_cli.drive.motors import MotorMap
 from servicebot_cli.drive.plan import Setpoint
-from servicebot_cli.drive.protocols.events import Event
+from servicebot_cli.drive.protocols.events import Event, Hello
 from servicebot_cli.drive.shaping import WheelShaper
 
 
@@ -23,6 +23,8 @@ class HostLink(Protocol):
     has_arm: bool
     command_bytes: int
     reply_bytes: int
+    stop_timeout_s: float
+    stop_resend_s: float
 
     def hello(self) -> bytes:
         """The handshake request."""
@@ -47,6 +49,15 @@ class HostLink(Protocol):
 
     def describe(self, data: bytes) -> str:
         """What ``data`` means, for people."""
+
+    def still(self, stop_tokens: set[int], now_s: float) -> bool:
+        """Whether what the firmware reported since a stop in ``stop_tokens`` shows it stopped."""
+
+    def refusal_advice(self, where: str) -> str:
+        """One line: what to rebuild or configure when the firmware refuses every command."""
+
+    def auto_stop_note(self, hello: Hello | None) -> str:
+        """Who stops the motors, and when, if drive could not."""
 
     @property
     def errors(self) -> int:

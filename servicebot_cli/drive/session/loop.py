@@ -12,46 +12,25 @@ import select
 import time
 from collections import deque
 from collections.abc import Callable
-from dataclasses import dataclass
-from typing import Protocol
 
 from servicebot_cli.common.errors import LinkError, LinkLost
 from servicebot_cli.drive.plan import Setpoint
 from servicebot_cli.drive.protocols.events import Ack, Event, Hello, Reading, Refused
 from servicebot_cli.drive.session.commander import Commander, HostLink
+from servicebot_cli.drive.session.contracts import (
+    FirmwareRefuses,
+    LinkStatus,
+    Source,
+    Suspender,
+)
+from servicebot_cli.drive.session.probe import probe_other, silence_error
 from servicebot_cli.drive.transport import Port
 
 HELLO_PERIOD_S = 0.25  # handshake retry
-RECONNECT_PERIOD_S = 0.5
+RECONNECT_PERIOD_S = 0.5  # the first wait after a failed reconnect; it doubles from there
+RECONNECT_MAX_PERIOD_S = 4.0  # ... up to this
+REFUSALS_TO_FAIL = 5  # refusals in a row, nothing accepted between: the firmware cannot
 _MAX_DT_PERIODS = 4  # a late tick ramps as if at most this many periods passed
-
-
-class Source(Protocol):
-    """Where setpoints come from: a plan or the keyboard."""
-
-    fds: tuple[int, ...]
-
-    def setpoint(self, t_s: float) -> Setpoint | None:
-        """The setpoint at ``t_s`` after the start, or None when done."""
-
-    def poll(self) -> None:
-        """Consume input that made one of :attr:`fds` readable."""
-
-
-@dataclass(frozen=True)
-class LinkStatus:
-    """A snapshot of the run, for the status line and the summary."""
-
-    t_s: float
-    commanded_rad_s: tuple[float, ...]
-    reading: Reading | None
-    reply_rate_hz: float
-    rtt_s: float | None
-    errors: int
-    commands: int
-    replies: int
-    reconnecting: bool
-    scaled: bool
 
 
 class DriveLoop:
@@ -69,6 +48,10 @@ class DriveLoop:
         log: Where event lines go.
         on_reading: Called with ``(t_s, reading, commanded_rad_s)`` for each telemetry.
         on_tick: Called with the status after each tick.
+        boot_s: Time the board needs after the port opens before it answers (a board that
+            resets on open) [s]; the handshake waits this long before it asks.
+        connect_timeout_s: How long a reconnect's handshake may take, after ``boot_s`` [s].
+        suspender: Teleop's job control, or None.
     """
 
     def __init__(self, port: Port, link: HostLink, commander: Commander, *, rate_hz: float,
@@ -77,7 +60,9 @@ class DriveLoop:
                  reopen: Callable[[], Port] | None = None,
                  log: Callable[[str], None] = lambda line: None,
                  on_reading: Callable[[float, Reading, tuple[float, ...]], None] | None = None,
-                 on_tick: Callable[[LinkStatus], None] | None = None) -> None:
+                 on_tick: Callable[[LinkStatus], None] | None = None,
+                 boot_s: float = 0.0, connect_timeout_s: float = 2.0,
+                 suspender: Suspender | None = None) -> None:
         self.port: Port | None = port
         self.link = link
         self.commander = commander
@@ -85,6 +70,10 @@ class DriveLoop:
         self.link_timeout_s = link_timeout_s
         self.where, self.clock, self.reopen, self.log = where, clock, reopen, log
         self.on_reading, self.on_tick = on_reading, on_tick
+        self.boot_s, self.suspender = boot_s, suspender
+        self.connect_timeout_s = connect_timeout_s
+        self.refused_in_a_row = 0
+        self.stops_sent = 0
         self.hello: Hello | None = None
         self.reading: Reading | None = None
         self.commands = self.replies = self.reconnects = self.received_bytes = self.stale = 0
@@ -110,14 +99,18 @@ class DriveLoop:
                 firmware speaking another version.
         """
         assert self.port is not None
+        self._boot_wait()
         start = self.clock()
         received_before, errors_before = self.received_bytes, self.link.errors
         self.hello, next_hello = None, start
         while self.hello is None:
             now = self.clock()
             if now - start >= timeout_s:
-                raise self._silent(timeout_s, self.received_bytes - received_before,
-                                   self.link.errors - errors_before)
+                received = self.received_bytes - received_before
+                raise silence_error(
+                    self.where, self.link.name, timeout_s, received,
+                    self.link.errors - errors_before,
+                    None if received else probe_other(self.port, self.link.name))
             if now >= next_hello:
                 self.port.write(self.link.hello())
                 next_hello = now + HELLO_PERIOD_S
@@ -129,18 +122,13 @@ class DriveLoop:
         self.last_rx_s = self.clock()
         return self.hello
 
-    def _silent(self, timeout_s: float, received: int, errors: int) -> LinkError:
-        other = "arduino" if self.link.name == "servicebot" else "servicebot"
-        if received == 0:
-            return LinkError(
-                f"no answer from the firmware on {self.where} within {timeout_s:g} s: is the "
-                f"board powered and running {self.link.name}-protocol firmware, and is the "
-                "baud rate right (--baud)?"
-            )
-        return LinkError(
-            f"{self.where} answers, but not in the {self.link.name} protocol ({received} bytes, "
-            f"{errors} rejected): check --baud, or try --protocol {other}"
-        )
+    def _boot_wait(self) -> None:
+        """Let a board that resets on open boot; what its bootloader says is not a reply."""
+        assert self.port is not None
+        deadline = self.clock() + self.boot_s
+        while (left := deadline - self.clock()) > 0:
+            self.port.wait(left)
+            self.port.read_available()
 
     # -- streaming ---------------------------------------------------------------------------
 
@@ -164,6 +152,7 @@ class DriveLoop:
     def _stream(self, source: Source) -> None:
         while True:
             assert self.port is not None
+            self._job_control(source)
             now = self.clock()
             self._receive(now)
             if now - self.last_rx_s > self.link_timeout_s:
@@ -176,6 +165,25 @@ class DriveLoop:
                 self._tick(setpoint, now)
             if self.port.wait(self._next_tick_s - self.clock(), source.fds):
                 source.poll()
+
+    def _job_control(self, source: Source) -> None:
+        """Ctrl-Z: stop the wheels, then suspend; after SIGCONT, go on as after a pause."""
+        if self.suspender is None:
+            return
+        if self.suspender.requested:
+            self.suspender.requested = False
+            confirmed = self.stop_motors()
+            self.log("suspended (Ctrl-Z): motors stopped"
+                     + (" (the firmware confirmed)" if confirmed else ", not confirmed")
+                     + "; `fg` resumes at zero speed")
+            self.suspender.suspend()
+            self.suspender.resumed = True
+        if self.suspender.resumed:
+            self.suspender.resumed = False
+            now = self.clock()
+            self.last_rx_s = self._next_tick_s = now  # the pause was ours, not the link's
+            self._last_tick_s = 0.0
+            self.commander.link_lost(now)  # ramp from zero
 
     def _tick(self, setpoint: Setpoint, now: float) -> None:
         assert self.port is not None
@@ -208,14 +216,23 @@ class DriveLoop:
             self.stale += 1  # a reply to nothing this run sent (left over from an earlier one)
             return
         self.last_rx_s = now
+        if isinstance(event, Refused):
+            self._refused(event)
+            return
+        self.refused_in_a_row = 0
         if isinstance(event, Hello):
             self.hello = event
-        elif isinstance(event, Refused):
-            self.log(event.reason)
         elif isinstance(event, Ack):
             self._acknowledged(event.token, now)
         elif isinstance(event, Reading):
             self._on_reading(event, now)
+
+    def _refused(self, event: Refused) -> None:
+        self.refused_in_a_row += 1
+        if self.refused_in_a_row == 1:
+            self.log(event.reason)
+        if self.refused_in_a_row >= REFUSALS_TO_FAIL and self.hello is not None:
+            raise FirmwareRefuses(self.link.refusal_advice(self.where))
 
     def _acknowledged(self, token: int, now: float) -> None:
         self._acked.append(token)
@@ -245,28 +262,31 @@ class DriveLoop:
     # -- losing and finding the link ---------------------------------------------------------
 
     def _reconnect(self, source: Source, lost: LinkLost) -> None:
-        self.log(f"{lost}; reconnecting every {RECONNECT_PERIOD_S:g} s, motors at zero")
+        self.log(f"{lost}; reconnecting (motors at zero; retries back off from "
+                 f"{RECONNECT_PERIOD_S:g} s to {RECONNECT_MAX_PERIOD_S:g} s)")
         self.commander.link_lost(self.clock())
         self._drop_port()
         self.reconnecting = True
         reopen = self.reopen
         if reopen is None:
             raise lost
+        pause_s = RECONNECT_PERIOD_S
         while self.port is None:
             if source.setpoint(self.clock() - self.t0_s) is None:
                 raise LinkLost(f"{lost}; the run ended before the link came back")
             if self.on_tick is not None:
                 self.on_tick(self.status(self.clock()))
-            try:
+            try:  # one open per attempt: a board that resets on open gets its boot time
                 self.port = reopen()
                 self.link.reset()
                 self._sent.clear()
                 self._last_positions = None
-                self.connect(RECONNECT_PERIOD_S * 2)
+                self.connect(self.connect_timeout_s)
                 self._send_stop()  # zero before anything
             except LinkError:
                 self._drop_port()
-                self._idle(source, RECONNECT_PERIOD_S)
+                self._idle(source, pause_s)
+                pause_s = min(RECONNECT_MAX_PERIOD_S, 2 * pause_s)
         self.reconnecting = False
         self.reconnects += 1
         self.log(f"link back on {self.where}: {self.hello.description if self.hello else ''}")
@@ -287,30 +307,37 @@ class DriveLoop:
 
     # -- stopping ----------------------------------------------------------------------------
 
-    def stop_motors(self, timeout_s: float = 0.5) -> bool:
-        """Send the stop; True once the firmware confirmed it within ``timeout_s``."""
+    def stop_motors(self) -> bool:
+        """Send the stop until the firmware reports the wheels stopped; True once it did.
+
+        What counts as stopped is the protocol's (:meth:`HostLink.still`): telemetry with the
+        wheels at zero, or encoder counts that stop changing. The stop is resent every
+        ``link.stop_resend_s`` until then, for at most ``link.stop_timeout_s``.
+        """
         self.end_s = self.clock()
         if self.port is None:
             return False
         try:
             tokens = {self._send_stop()}
-            deadline = self.clock() + timeout_s
-            resend = self.clock() + timeout_s / 2
-            while self.clock() < deadline:
-                self._receive(self.clock())
-                if tokens & set(self._acked):
+            deadline = self.clock() + self.link.stop_timeout_s
+            resend = self.clock() + self.link.stop_resend_s
+            while (now := self.clock()) < deadline:
+                self._receive(now)
+                if self.link.still(tokens, now):
                     return True
-                if self.clock() >= resend:
+                if now >= resend:
                     tokens.add(self._send_stop())
-                    resend = deadline
+                    resend = now + self.link.stop_resend_s
                 self.port.wait(min(resend, deadline) - self.clock())
+            self._receive(self.clock())
+            return self.link.still(tokens, self.clock())
         except LinkError:
             return False
-        return False
 
     def _send_stop(self) -> int:
         assert self.port is not None
         data, token = self.commander.stop(self.clock())
+        self.stops_sent += 1
         self._sent[token] = self.clock()
         self.port.write(data)
         self.port.drain()

@@ -14,7 +14,8 @@ from typing import TextIO
 
 from servicebot_cli.common.errors import ExitCode, ServicebotError
 from servicebot_cli.drive.motors import MotorMap
-from servicebot_cli.drive.session.loop import LinkStatus
+from servicebot_cli.drive.session.contracts import LinkStatus
+from servicebot_cli.drive.teleop.job_control import JobControl, job_control
 from servicebot_cli.drive.teleop.keyboard import Teleop, cbreak_terminal, status_line
 
 
@@ -37,10 +38,25 @@ class Terminal:
     status: TextIO
 
 
+@dataclass(frozen=True)
+class KeyboardSession:
+    """Teleop on a terminal, ready for the drive loop.
+
+    Attributes:
+        teleop: The setpoint source.
+        on_tick: Draws the status line.
+        job_control: Ctrl-Z and SIGCONT handling.
+    """
+
+    teleop: Teleop
+    on_tick: Callable[[LinkStatus], None]
+    job_control: JobControl
+
+
 @contextlib.contextmanager
-def keyboard_session(terminal: Terminal, motors: MotorMap
-                     ) -> Iterator[tuple[Teleop, Callable[[LinkStatus], None]]]:
-    """``(source, on_tick)``: the keyboard in cbreak mode and its status line.
+def keyboard_session(terminal: Terminal, motors: MotorMap,
+                     deadman_s: float | None = None) -> Iterator[KeyboardSession]:
+    """The keyboard in cbreak mode, its status line and its job control.
 
     Raises:
         NoTerminal: No terminal on stdin.
@@ -49,18 +65,19 @@ def keyboard_session(terminal: Terminal, motors: MotorMap
         raise NoTerminal("teleop needs a terminal on stdin; give --script FILE (or - for "
                          "stdin) or --linear/--angular --duration-s")
     fd = terminal.keys.fileno()
-    teleop = Teleop(fd, motors.geometry.max_linear_m_s, motors.geometry.max_angular_rad_s)
+    top_m_s = motors.max_wheel_rad_s * motors.wheel_radius_m
+    teleop = Teleop(fd, top_m_s, 2.0 * top_m_s / motors.track_m, deadman_s=deadman_s)
     out = terminal.status
 
     def on_tick(status: LinkStatus) -> None:
         if out.isatty():  # one line that rewrites itself: never wider than the terminal
-            width = _columns(out.fileno()) - 1
-            out.write(f"\r\x1b[K{status_line(status, teleop, motors.wheel_sides, width)}")
+            width = min(79, _columns(out.fileno()) - 1)
+            out.write(f"\r\x1b[K{status_line(status, motors, width)}")
             out.flush()
 
-    with cbreak_terminal(fd):
+    with cbreak_terminal(fd), job_control(fd, teleop, out) as control:
         try:
-            yield teleop, on_tick
+            yield KeyboardSession(teleop, on_tick, control)
         finally:
             with contextlib.suppress(OSError):
                 out.write("\n")
