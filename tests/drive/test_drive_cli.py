@@ -153,3 +153,29 @@ def test_dry_run_as_json(run):
 
 def test_dry_run_needs_a_plan(run):
     assert_one_line_error(run("drive", "--dry-run"), 2, "--dry-run needs a plan")
+
+
+def test_a_twist_too_large_for_a_float_is_scaled_with_a_warning_not_zeroed(run):
+    result = run("drive", "--dry-run", "--linear", "1e308", "--duration-s", "0.5",
+                 "--max-accel", "100")
+    assert result.exit_code == 0, result.stderr
+    assert "more rad/s than a float holds" in result.stderr and "scaled to 0.035 m/s" \
+        in result.stderr
+    assert "[+0.500 +0.500 +0.500 +0.500] rad/s" in result.stdout
+
+
+def test_max_speed_caps_below_the_urdf_and_refuses_above_it(run):
+    result = run("drive", "--dry-run", "--protocol", "arduino", "--ticks-per-rev", "3436",
+                 "--max-speed", "0.2", "--linear", "1", "--duration-s", "0.5",
+                 "--max-accel", "100")
+    assert result.exit_code == 0, result.stderr
+    assert "'m 3 3': left +0.166 rad/s" in result.stdout and "'m 9 9'" not in result.stdout
+    result = run("drive", "--dry-run", "--max-speed", "0.6", "--linear", "1",
+                 "--duration-s", "0.5")
+    assert result.exit_code == 2 and "--max-speed" in result.stderr and \
+        "above service_robot's wheel limit of 0.5 rad/s" in result.stderr
+
+
+def test_deadman_is_for_teleop_only(run):
+    result = run("drive", "--deadman-ms", "600", "--linear", "0.01", "--duration-s", "1")
+    assert result.exit_code == 2 and "--deadman-ms is for teleop" in result.stderr

@@ -144,3 +144,67 @@ def test_a_hang_up_during_teleop_stops_the_motors_and_restores_the_terminal(emul
         if terminal.proc.poll() is None:
             terminal.proc.kill()
         terminal.close()
+
+
+def test_the_dead_man_stops_the_wheels_when_no_key_comes():
+    now = [0.0]
+    teleop = Teleop(0, 0.035, 0.13, deadman_s=0.6, clock=lambda: now[0])
+    teleop.apply("forward")
+    teleop.last_key_s = 0.0
+    now[0] = 0.5  # an auto-repeated key would arrive by now
+    assert teleop.setpoint(0.5).linear_m_s > 0
+    now[0] = 0.61
+    assert teleop.setpoint(0.61).linear_m_s == 0.0 and teleop.deadman_trips == 1
+    teleop.apply("forward")
+    teleop.last_key_s = now[0]
+    assert teleop.setpoint(0.62).linear_m_s == pytest.approx(0.0035)  # one step again
+
+
+def test_the_status_line_fits_80_columns_and_shows_the_scaled_twist(real_motors):
+    from servicebot_cli.drive.protocols.events import Reading
+    from servicebot_cli.drive.session.contracts import LinkStatus
+    from servicebot_cli.drive.teleop.keyboard import status_line
+
+    reading = Reading(7, (0.0,) * 4, (-0.487, 0.5, -0.487, 0.5), None)
+    status = LinkStatus(12.0, (-0.5, 0.5, -0.5, 0.5), reading, 20.0, 9.812, 999, 240, 230,
+                        False, True)
+    line = status_line(status, real_motors)
+    assert len(line) <= 79
+    # turning in place at the wheel limit: 0.5 rad/s * 0.07 m / 0.27 m = 0.13 rad/s
+    assert line.startswith("v+0.000 w+0.130*") and "L-0.50/-0.49 R+0.50/+0.50" in line
+    assert "20Hz rtt 9812ms err 999" in line and line.endswith("wasd/spc/q")
+
+
+def test_ctrl_z_stops_the_wheels_before_suspending_and_fg_resumes(emulator):
+    emu = emulator()
+    terminal = Terminal("--port", emu.path)
+    try:
+        wait_for(lambda: "Hz rtt" in terminal.read(), "the status line")
+        terminal.type(b"ww")
+        wait_for(lambda: any(w["velocity_rad_s"] > 0 for w in emu.state()["wheels"]),
+                 "the wheels to turn forward")
+        terminal.type(b"\x1a")  # Ctrl-Z
+        wait_for(lambda: "suspended (Ctrl-Z): motors stopped (the firmware confirmed)"
+                 in terminal.read(), "the suspension")
+        wait_for(lambda: _stopped_state(terminal.proc.pid), "the process to be stopped")
+        wait_for(lambda: not emu.state()["moving"], "the wheels to stop")
+        assert emu.state()["counters"]["stops"] == 1  # by drive, before it was suspended
+        assert termios.tcgetattr(terminal.slave)[3] & termios.ICANON  # the shell's terminal
+        time.sleep(1.5)  # longer than the link timeout
+        os.kill(terminal.proc.pid, signal.SIGCONT)  # fg
+        terminal.type(b"w")
+        wait_for(lambda: any(w["velocity_rad_s"] > 0 for w in emu.state()["wheels"]),
+                 "the wheels to turn again")
+        terminal.type(b"q")
+        assert terminal.finish() == 0, terminal.read()
+        assert "link lost" not in terminal.read()
+        assert termios.tcgetattr(terminal.slave) == terminal.before
+    finally:
+        if terminal.proc.poll() is None:
+            terminal.proc.kill()
+        terminal.close()
+
+
+def _stopped_state(pid: int) -> bool:
+    with open(f"/proc/{pid}/stat") as stat:
+        return stat.read().rsplit(")", 1)[1].split()[0] == "T"

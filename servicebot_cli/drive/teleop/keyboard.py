@@ -149,7 +149,7 @@ def status_line(status: LinkStatus, motors: MotorMap, width: int = 79) -> str:
     else:
         rtt = "-" if status.rtt_s is None else f"{min(status.rtt_s * 1000, 9999):.0f}ms"
         link = f"{status.reply_rate_hz:.0f}Hz rtt {rtt} err {status.errors}"
-    return "  ".join((twist, wheels, link, HELP))[:width]
+    return f"{twist} {wheels}  {link}  {HELP}"[:width]
 
 
 def _sides(values: tuple[float, ...], motors: MotorMap) -> tuple[float, float]:
