@@ -1,0 +1,1 @@
+"""Sweeps: one scenario over seeds, a grid of values and random draws, with expectations."""
