@@ -1,0 +1,67 @@
+"""A run's summary as flat metrics, and statistics of each metric over a group of runs.
+
+Every number of ``simulate``'s summary becomes one column, named by its dotted path as
+``--expect`` names it (``odometry_drift.final_position_m``); ``collisions`` is their count
+and ``end_effector.position_m`` gives ``end_effector.position_m[0]`` to ``[2]``. The fixed
+fields (robot, scenario, seed, duration, message counts) are not metrics.
+"""
+
+from __future__ import annotations
+
+import math
+import statistics
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+NOT_METRICS = ("robot", "scenario", "seed", "duration_s", "messages", "closest_obstacle")
+STATISTICS = ("mean", "std", "min", "median", "p95", "max")
+
+
+def flat_metrics(summary: Mapping[str, Any]) -> dict[str, float]:
+    """The summary's numbers by dotted path, in the summary's order."""
+    metrics: dict[str, float] = {}
+    for key, value in summary.items():
+        if key not in NOT_METRICS:
+            _flatten(key, value, metrics)
+    return metrics
+
+
+def _flatten(name: str, value: Any, out: dict[str, float]) -> None:
+    if name == "collisions" and isinstance(value, list):
+        out[name] = float(len(value))
+    elif isinstance(value, bool):
+        out[name] = float(value)
+    elif isinstance(value, int | float):
+        out[name] = float(value)
+    elif isinstance(value, Mapping):
+        for key, item in value.items():
+            _flatten(f"{name}.{key}", item, out)
+    elif isinstance(value, list):
+        for i, item in enumerate(value):
+            _flatten(f"{name}[{i}]", item, out)
+
+
+def describe(values: Sequence[float]) -> dict[str, float | None]:
+    """Mean, standard deviation (n - 1; 0 for one value), min, median, 95th percentile, max.
+
+    Missing values (NaN, e.g. no odometry) are left out; none left gives ``None`` for each.
+    """
+    present = sorted(v for v in values if not math.isnan(v))
+    if not present:
+        return dict.fromkeys(STATISTICS)
+    return {
+        "mean": statistics.fmean(present),
+        "std": statistics.stdev(present) if len(present) > 1 else 0.0,
+        "min": present[0],
+        "median": statistics.median(present),
+        "p95": _percentile(present, 0.95),
+        "max": present[-1],
+    }
+
+
+def _percentile(ordered: Sequence[float], q: float) -> float:
+    """Linear interpolation between closest ranks (numpy's default)."""
+    position = q * (len(ordered) - 1)
+    low = math.floor(position)
+    high = min(low + 1, len(ordered) - 1)
+    return ordered[low] + (ordered[high] - ordered[low]) * (position - low)
