@@ -22,6 +22,7 @@ from servicebot_cli.commands.fk import fk
 from servicebot_cli.commands.ik import ik
 from servicebot_cli.commands.inspect import inspect
 from servicebot_cli.commands.simulate import simulate
+from servicebot_cli.commands.sweep import sweep
 from servicebot_cli.common.errors import ExitCode, ServicebotError
 from servicebot_cli.common.signals import EndedBySignal, signals_as_exceptions
 
@@ -115,5 +116,5 @@ def main(debug: bool) -> None:
     """
 
 
-for _command in (check, inspect, fk, ik, simulate, drive, emulate, expand):
+for _command in (check, inspect, fk, ik, simulate, sweep, drive, emulate, expand):
     main.add_command(_command)
