@@ -12,7 +12,7 @@ import itertools
 import json
 import random
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path as FsPath
 
 from servicebot_cli import __version__
@@ -103,6 +103,24 @@ def plan(definition: SweepDefinition, base: Scenario, robot_xml: str) -> list[Ru
     return runs
 
 
+@dataclass(frozen=True)
+class SweptDocument(Located):
+    """A scenario document with swept values: their lines are the sweep file's.
+
+    Attributes:
+        swept: The sweep file's line of each swept field, keyed by the field's path.
+    """
+
+    swept: Located = field(default_factory=lambda: Located({}, {}, ""))
+
+    def where(self, path: Path) -> str:
+        """``sweep.yaml:line`` within a swept field, the scenario's ``file:line`` elsewhere."""
+        for end in range(len(path), 0, -1):
+            if path[:end] in self.swept.positions:
+                return self.swept.where(path[:end])
+        return super().where(path)
+
+
 def build_scenario(definition: SweepDefinition, base: Scenario, values: Values) -> Scenario:
     """``base`` with ``values`` in place, read (and so checked) by the scenario reader.
 
@@ -129,7 +147,9 @@ def build_scenario(definition: SweepDefinition, base: Scenario, values: Values) 
         raise definition.error(settings[name].where, f"{exc}; the scenario has no such "
                                "field") from None
     try:
-        return read_scenario(Located(document, positions, located.display), name=base.name)
+        return read_scenario(SweptDocument(document, base.source.positions, base.source.display,
+                                           Located({}, positions, located.display)),
+                             name=base.name)
     except ScenarioError as exc:
         raise SweepError(f"{exc}{_context(values)}") from None
 

@@ -1,0 +1,52 @@
+"""Every run of a sweep is byte for byte the `servicebot simulate` of the same values."""
+
+from __future__ import annotations
+
+import json
+
+import yaml
+
+from servicebot_cli.simulate.scenario.definition import DEFAULT_SCENARIO
+from tests.conftest import run_servicebot
+
+
+def _files(directory):
+    return {p.relative_to(directory).as_posix(): p.read_bytes()
+            for p in sorted(directory.rglob("*")) if p.is_file()}
+
+
+def test_a_run_equals_simulate_with_its_values_in_a_scenario_file(tmp_path, write_sweep):
+    # The sweep's scenario is a copy of the default one, so both summaries name it "loop".
+    (tmp_path / "sweep").mkdir()
+    (tmp_path / "sweep" / "loop.yaml").write_text(DEFAULT_SCENARIO.read_text())
+    sweep = write_sweep({
+        "scenario": "loop.yaml", "seeds": [0, 7], "set": {"duration_s": 20},
+        "grid": {"slip.track_factor": [0.95, 1.2]},
+        "sample": {"n": 1, "seed": 3, "initial_pose.yaw_rad": {"uniform": [-0.2, 0.2]}},
+    }, name="sweep/sweep.yaml")
+    out = tmp_path / "out"
+    result = run_servicebot("sweep", sweep, "--out", out, "--keep", "csv,bag", "--jobs", "2")
+    assert result.returncode == 0, result.stderr
+    rows = list(json.loads(p.read_text()) for p in (out / "runs").glob("*/run.json"))
+    assert len(rows) == 4
+    record = next(r for r in rows if r["seed"] == 7 and r["values"]["slip.track_factor"] == 1.2)
+    yaw = record["values"]["initial_pose.yaw_rad"]
+    assert -0.2 <= yaw <= 0.2
+
+    scenario = yaml.safe_load(DEFAULT_SCENARIO.read_text())
+    scenario["duration_s"] = 20
+    scenario["slip"]["track_factor"] = 1.2
+    scenario["initial_pose"]["yaw_rad"] = yaw
+    alone = tmp_path / "alone"
+    alone.mkdir()
+    (alone / "loop.yaml").write_text(yaml.safe_dump(scenario))
+    result = run_servicebot("simulate", "--headless", "-s", alone / "loop.yaml", "--seed", 7,
+                            "--out", alone / "csv", "--bag", alone / "bag")
+    assert result.returncode == 0, result.stderr
+
+    kept = out / "runs" / record["key"]
+    assert _files(kept / "csv") == _files(alone / "csv")
+    assert len(_files(kept / "csv")) >= 9
+    assert json.loads((kept / "csv" / "summary.json").read_text()) == record["summary"]
+    assert _files(kept / "bag").keys() == {"bag_0.mcap", "metadata.yaml"}
+    assert _files(kept / "bag") == _files(alone / "bag")
