@@ -19,6 +19,7 @@ from servicebot_cli.drive.protocols import messages as msg
 from servicebot_cli.drive.protocols.framing import Decoder, Frame, encode_frame
 
 FIRMWARE_VERSION = (1, 0)
+_DISTINCT_COMMANDS_KEPT = 32
 
 JsonValue: TypeAlias = "str | int | float | bool | None | list[JsonValue] | dict[str, JsonValue]"
 State: TypeAlias = dict[str, JsonValue]  # state for the emulator's state file, JSON-ready
@@ -37,6 +38,7 @@ class Counters:
     first_command: str | None = None
     last_stop_s: float | None = None
     max_abs_wheel_command_rad_s: float = 0.0
+    wheel_commands: list[list[float]] = field(default_factory=list)  # distinct, first 32
 
 
 @dataclass
@@ -106,6 +108,9 @@ class MotorModel:
         clamped = self.motors.clamp_wheels(speeds_rad_s)
         self.wheel_velocity_rad_s = list(clamped)
         self._motion_command("SET_WHEELS", now_s)
+        if list(clamped) not in self.counters.wheel_commands and len(
+                self.counters.wheel_commands) < _DISTINCT_COMMANDS_KEPT:
+            self.counters.wheel_commands.append(list(clamped))
         peak = max((abs(v) for v in clamped), default=0.0)
         self.counters.max_abs_wheel_command_rad_s = max(
             self.counters.max_abs_wheel_command_rad_s, peak)
