@@ -2,8 +2,8 @@
 
 Wheels, radius and track come from :func:`drive_geometry`; sensor specs from the Gazebo
 ``<sensor>`` blocks; where each sensor sits on the base from Pinocchio's frame placements in
-one configuration of the whole robot (planar base); the footprint from the collision shapes
-of everything that moves with the base. Nothing is a constant of the bundled robot.
+one configuration of the whole robot (planar base); the robot's shape from the collision
+shapes of every link. Nothing is a constant of the bundled robot.
 """
 
 from __future__ import annotations
@@ -29,12 +29,12 @@ from servicebot_cli.description.sensors import (
 )
 from servicebot_cli.kinematics.drive_geometry import DriveGeometry, drive_geometry
 from servicebot_cli.kinematics.transforms import pose_matrix
-from servicebot_cli.simulate.world.solids import Footprint
+from servicebot_cli.simulate.shape import RobotShape, robot_shape
 
 if TYPE_CHECKING:
     import pinocchio as pin
 
-    from servicebot_cli.description.elements import Geometry, Joint
+    from servicebot_cli.description.elements import Joint
     from servicebot_cli.description.extensions import Sensor
     from servicebot_cli.description.robot import RobotDescription
 
@@ -46,10 +46,11 @@ Placement = Callable[[str], FloatArray]
 
 @dataclass(frozen=True)
 class Mounted(Generic[SpecT]):
-    """A sensor and where it sits: ``transform_sensor_to_base`` (4, 4) at floor height 0."""
+    """A sensor and where it sits: ``transform_sensor_to_base`` (4, 4), and its link."""
 
     spec: SpecT
     transform_sensor_to_base: FloatArray
+    link: str = ""
 
 
 @dataclass(frozen=True, eq=False)
@@ -62,7 +63,7 @@ class SimRobot:
         joint_space: Movable joints of the planar-base model (one Pinocchio configuration).
         arm_joints: Movable joints that are not wheels, URDF order.
         base_height_m: Height of the root link's origin above the floor (wheels touching it).
-        footprint: Outline of everything that moves with the base.
+        shape: Every link's collision parts, posed by the arm joints.
         lidar, imu, camera: Mounted sensors, None where the URDF has none.
     """
 
@@ -71,7 +72,7 @@ class SimRobot:
     joint_space: JointSpace
     arm_joints: tuple[str, ...]
     base_height_m: float
-    footprint: Footprint
+    shape: RobotShape
     lidar: Mounted[LidarSpec] | None
     imu: Mounted[ImuSpec] | None
     camera: Mounted[CameraSpec] | None
@@ -101,6 +102,7 @@ def sim_robot(robot: RobotDescription) -> SimRobot:
     data = model.createData()
     pin.framesForwardKinematics(model, data, space.neutral())
     wheels = {w.joint for w in geometry.wheels}
+    arm_joints = tuple(n for n in space.names if n not in wheels)
     height = float(np.mean([w.radius_m - w.position_m[2] for w in geometry.wheels]))
 
     def placement(link: str) -> FloatArray:
@@ -109,9 +111,9 @@ def sim_robot(robot: RobotDescription) -> SimRobot:
 
     return SimRobot(
         robot=robot, geometry=geometry, joint_space=space,
-        arm_joints=tuple(n for n in space.names if n not in wheels),
+        arm_joints=arm_joints,
         base_height_m=height,
-        footprint=_footprint(robot, placement, wheels, height),
+        shape=_shape(robot, arm_joints),
         lidar=_mount(robot, LIDAR_TYPES, lidar_spec, placement),
         imu=_mount(robot, ("imu",), imu_spec, placement),
         camera=_mount(robot, CAMERA_TYPES, camera_spec, placement),
@@ -125,58 +127,18 @@ def _mount(robot: RobotDescription, types: tuple[str, ...], read: Callable[[Sens
         return None
     robot.require_frame(sensor.reference)
     transform = placement(sensor.reference) @ pose_matrix(sensor.pose)
-    return Mounted(read(sensor), transform)
+    return Mounted(read(sensor), transform, sensor.reference)
 
 
-def _moves_with_base(robot: RobotDescription, wheels: set[str]) -> list[str]:
-    """Links joined to the root by fixed joints or wheel joints only."""
-    root = robot.root_link
-    if root is None:
-        return []
-    links, changed = {root}, True
-    while changed:
-        changed = False
-        for joint in robot.joints:
-            rigid = joint.type == "fixed" or joint.name in wheels
-            if rigid and joint.parent in links and joint.child not in links:
-                links.add(joint.child or "")
-                changed = True
-    return [link.name for link in robot.links if link.name in links]
-
-
-def _footprint(robot: RobotDescription, placement: Placement, wheels: set[str],
-               height_m: float) -> Footprint:
-    corners = []
-    for name in _moves_with_base(robot, wheels):
-        for shape in robot.link(name).collisions:
-            box = _half_extents(shape.geometry)
-            if box is None:
-                continue
-            transform = placement(name) @ pose_matrix(shape.origin)
-            signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)])
-            corners.append((signs * box) @ transform[:3, :3].T + transform[:3, 3])
-    if not corners:
+def _shape(robot: RobotDescription, arm_joints: tuple[str, ...]) -> RobotShape:
+    shape = robot_shape(robot, arm_joints)
+    if not any(p.link == shape.root for p in shape.parts):
         raise DescriptionError(
             f"{robot.display}: the base has no box, cylinder or sphere collision shape, so "
             "the simulator cannot tell where it would touch obstacles; add <collision> to "
             f"{robot.root_link}"
         )
-    points = np.vstack(corners)
-    low, high = points.min(axis=0), points.max(axis=0)
-    return Footprint(float(low[0]), float(high[0]), float(low[1]), float(high[1]),
-                     float(high[2] + height_m))
-
-
-def _half_extents(geometry: Geometry) -> FloatArray | None:
-    kind = geometry.kind
-    if kind == "box" and geometry.size:
-        return np.array(geometry.size) / 2
-    if kind == "cylinder" and geometry.radius and geometry.length:
-        r = geometry.radius
-        return np.array([r, r, geometry.length / 2])
-    if kind == "sphere" and geometry.radius:
-        return np.full(3, geometry.radius)
-    return None
+    return shape
 
 
 def movable_joints(robot: RobotDescription, names: tuple[str, ...]) -> list[Joint]:

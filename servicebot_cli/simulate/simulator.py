@@ -25,8 +25,9 @@ from servicebot_cli.simulate.sensors import camera_info, imu, joint_states, lida
 from servicebot_cli.simulate.sensors.noise import stream_rng
 from servicebot_cli.simulate.sensors.sample import sample_times
 from servicebot_cli.simulate.world import motion
+from servicebot_cli.simulate.world.contacts import Closest, Tester, closest, obstacles, posed_parts
 from servicebot_cli.simulate.world.raycast import Mesh
-from servicebot_cli.simulate.world.solids import Closest, Solid, closest_approach, footprint_hits
+from servicebot_cli.simulate.world.solids import Solid
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -39,6 +40,7 @@ class SimResult:
     scenario: Scenario
     seed: int
     solids: list[Solid]
+    obstacle_names: list[str]
     plan: WheelPlan
     truth: motion.Path2D
     contacts: list[motion.Contact]
@@ -46,7 +48,7 @@ class SimResult:
     odometry: odometry.Odometry
     joints: joint_states.JointStates
     arm_positions_rad: FloatArray  # (n+1, arm joints) at tick boundaries
-    closest: Closest  # over tick boundaries
+    closest: Closest  # over tick boundaries; its part indexes body.shape.parts
     scans: lidar.Scans | None
     imu: imu.ImuSamples | None
     camera: camera_info.Intrinsics | None
@@ -57,28 +59,30 @@ def run(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[Solid
         meshes: Sequence[Mesh] = (), progress: Callable[[int], None] | None = None) -> SimResult:
     """Simulate ``scenario``; ``progress`` is told how many LIDAR scans were cast."""
     solids = list(solids)
-    arm_q0 = check_scenario(body, scenario, solids, meshes)
+    tester = Tester(body.shape, obstacles(solids, meshes))
+    arm_q0 = check_scenario(body, scenario, solids, meshes, tester)
     geometry, ctrl = body.geometry, scenario.controller
     plan = plan_wheels(scenario.cmd_vel, ctrl, geometry, scenario.duration_s)
-    truth, contacts = _ground_truth(body, scenario, plan, solids, meshes)
     dt, n = plan.dt_s, plan.ticks
+    ticks = np.arange(n + 1, dtype=np.float64) * dt
+    arm_q = _arm_positions(body, scenario, arm_q0, ticks, dt)
+    truth, contacts = _ground_truth(body, scenario, plan, tester, arm_q)
     sides = np.vstack((np.zeros((1, 2)), np.cumsum(np.column_stack((plan.left_rad_s,
                                                                      plan.right_rad_s)) * dt, 0)))
     odom_path = odometry.dead_reckoning(
         plan.left_rad_s, plan.right_rad_s, dt, wheel_radius_m=geometry.wheel_radius_m,
         track_m=geometry.track_m * ctrl.wheel_separation_multiplier)
-    ticks = np.arange(n + 1, dtype=np.float64) * dt
-    arm_q = _arm_positions(body, scenario, arm_q0, ticks, dt)
     names, positions = _joint_positions(body, sides, arm_q)
     publish = sample_times(ctrl.publish_rate_hz, scenario.duration_s)
-    closest = closest_approach(body.footprint, solids, truth.x_m, truth.y_m, truth.yaw_rad)
+    nearest = closest(tester, posed_parts(body.shape, truth.x_m, truth.y_m, truth.yaw_rad,
+                                          body.base_height_m, arm_q))
     return SimResult(
-        body, scenario, seed, solids, plan, truth, contacts, sides,
+        body, scenario, seed, solids, [o.name for o in tester.world], plan, truth, contacts, sides,
         odometry.published(odom_path, publish),
         joint_states.at_times(names, positions, dt,
                               sample_times(scenario.rates.joint_states_hz, scenario.duration_s)),
-        arm_q, closest,
-        _scans(body, scenario, truth, solids, meshes, seed, progress),
+        arm_q, nearest,
+        _scans(body, scenario, truth, arm_q, solids, meshes, seed, progress),
         _imu(body, scenario, truth, seed),
         camera_info.intrinsics(body.camera.spec) if body.camera else None,
         sample_times(_rate(body.camera.spec, scenario), scenario.duration_s)
@@ -86,30 +90,28 @@ def run(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[Solid
     )
 
 
-def _ground_truth(body: SimRobot, scenario: Scenario, plan: WheelPlan, solids: list[Solid],
-                  meshes: Sequence[Mesh]) -> tuple[motion.Path2D, list[motion.Contact]]:
-    """The base's real motion: wheel speeds through the floor's slip, stopped by obstacles."""
+def _ground_truth(body: SimRobot, scenario: Scenario, plan: WheelPlan, tester: Tester,
+                  arm_q: FloatArray) -> tuple[motion.Path2D, list[motion.Contact]]:
+    """The base's real motion: wheel speeds through the floor's slip, stopped by obstacles.
+
+    Any link touching an obstacle (with the arm where it is at that tick) stops the base.
+    """
     geometry, slip = body.geometry, scenario.slip
     linear, angular = diff_drive.body_twist(
         plan.left_rad_s, plan.right_rad_s,  # type: ignore[arg-type]  # body_twist is typed for floats
         wheel_radius_m=geometry.wheel_radius_m, track_m=geometry.track_m * slip.track_factor)
     keep = 1.0 - slip.longitudinal
     start = scenario.initial_pose
-    names = [s.name for s in solids] + [f"mesh {i}" for i in range(1, len(meshes) + 1)]
 
-    def collides(x: FloatArray, y: FloatArray, yaw: FloatArray) -> npt.NDArray[np.int64]:
-        hit = footprint_hits(body.footprint, solids, x, y, yaw)
-        if meshes:
-            from servicebot_cli.simulate.world.meshes import footprint_hits_meshes
-
-            free = hit < 0
-            mesh_hit = footprint_hits_meshes(body.footprint, meshes, x[free], y[free], yaw[free])
-            hit[np.flatnonzero(free)[mesh_hit >= 0]] = len(solids) + mesh_hit[mesh_hit >= 0]
-        return hit
+    def collides(ticks: npt.NDArray[np.int64], x: FloatArray, y: FloatArray,
+                 yaw: FloatArray) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]:
+        return tester.first_hits(posed_parts(body.shape, x, y, yaw, body.base_height_m,
+                                             arm_q[ticks]))
 
     return motion.integrate_blocked((start.x_m, start.y_m, start.yaw_rad),
                                     np.asarray(linear) * keep, np.asarray(angular) * keep,
-                                    plan.dt_s, collides, names)
+                                    plan.dt_s, collides, [o.name for o in tester.world],
+                                    body.shape.links)
 
 
 def _arm_positions(body: SimRobot, scenario: Scenario, q0: FloatArray, ticks: FloatArray,
@@ -143,15 +145,19 @@ def _joint_positions(body: SimRobot, sides: FloatArray,
     return names, np.column_stack(columns)
 
 
-def _scans(body: SimRobot, scenario: Scenario, truth: motion.Path2D, solids: list[Solid],
-           meshes: Sequence[Mesh], seed: int,
+def _scans(body: SimRobot, scenario: Scenario, truth: motion.Path2D, arm_q: FloatArray,
+           solids: list[Solid], meshes: Sequence[Mesh], seed: int,
            progress: Callable[[int], None] | None) -> lidar.Scans | None:
+    """The LIDAR's scans: the world and the robot's own links (the arm where it is)."""
     if body.lidar is None:
         return None
-    spec = body.lidar.spec
+    spec, mount = body.lidar.spec, body.lidar.transform_sensor_to_base
     times = sample_times(_rate(spec, scenario), scenario.duration_s)
-    return lidar.scan(spec, body.lidar.transform_sensor_to_base, body.base_height_m,
-                      truth, times, solids, meshes, stream_rng(seed, "scan"), progress)
+    ticks = np.clip(np.floor(times / truth.dt_s + 1e-9).astype(np.int64), 0, len(arm_q) - 1)
+    own = lidar.own_ranges(body.shape, body.lidar.link, mount,
+                           lidar.ray_directions(spec, mount), arm_q[ticks])
+    return lidar.scan(spec, mount, body.base_height_m, truth, times, solids, meshes,
+                      stream_rng(seed, "scan"), progress, own)
 
 
 def _imu(body: SimRobot, scenario: Scenario, truth: motion.Path2D,

@@ -38,10 +38,11 @@ class Drift(TypedDict):
 
 
 class Collision(TypedDict):
-    """Where and when the base touched an obstacle."""
+    """Where and when a link touched an obstacle (the base's pose then)."""
 
     time_s: float
     obstacle: str
+    link: str
     x_m: float
     y_m: float
     yaw_rad: float
@@ -68,6 +69,7 @@ class Summary(TypedDict):
     collisions: list[Collision]
     min_obstacle_distance_m: float
     closest_obstacle: str | None
+    closest_link: str | None
     closest_time_s: float | None
     arm_final_positions_rad: dict[str, float]
     end_effector: EndEffector | None
@@ -112,7 +114,9 @@ def summarize(result: SimResult, streams: Sequence[Stream]) -> Summary:
         },
         "collisions": [_collision(c) for c in result.contacts],
         "min_obstacle_distance_m": 0.0 if result.contacts else closest.distance_m,
-        "closest_obstacle": result.solids[closest.solid].name if closest.solid >= 0 else None,
+        "closest_obstacle": result.obstacle_names[closest.obstacle]
+        if closest.obstacle >= 0 else None,
+        "closest_link": result.body.shape.parts[closest.part].link if closest.part >= 0 else None,
         "closest_time_s": closest.index * truth.dt_s if closest.index >= 0 else None,
         "arm_final_positions_rad": dict(zip(result.body.arm_joints,
                                             result.arm_positions_rad[-1].tolist(), strict=True)),
@@ -123,7 +127,8 @@ def summarize(result: SimResult, streams: Sequence[Stream]) -> Summary:
 
 def _collision(contact: Contact) -> Collision:
     pose = _pose(contact.x_m, contact.y_m, contact.yaw_rad)
-    return {"time_s": contact.time_s, "obstacle": contact.obstacle, "x_m": pose["x_m"],
+    return {"time_s": contact.time_s, "obstacle": contact.obstacle, "link": contact.link,
+            "x_m": pose["x_m"],
             "y_m": pose["y_m"], "yaw_rad": pose["yaw_rad"]}
 
 

@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pytest
 
+from servicebot_cli.kinematics.link_poses import link_transforms
 from tests.simulate.helpers import body, run
 
 GEOMETRY = body().geometry
@@ -100,8 +101,12 @@ def test_the_base_stops_at_a_wall_and_logs_the_contact():
     result = run({"duration_s": 60, "cmd_vel": [{"duration_s": 60, "linear_m_s": v}],
                   "world": {"walls": [{"from_m": [wall_x, -2], "to_m": [wall_x, 2],
                                        "thickness_m": 0.1}]}})
-    front = body().footprint.x_max_m
+    # the arm, stretched out ahead at rest, reaches the 1 m wall first: the front of
+    # arm_link4 (0.3 m long along x) as the URDF tree places it
+    front = link_transforms(body().robot)["arm_link4"][0, 3] + 0.3
+    assert front == pytest.approx(0.8)
     assert len(result.contacts) == 1 and result.contacts[0].obstacle == "wall 1"
+    assert result.contacts[0].link == "arm_link4"
     gap = (wall_x - 0.05) - (result.truth.x_m[-1] + front)
     assert 0 <= gap <= v * result.plan.dt_s  # stopped within one step of the wall
     assert result.contacts[0].time_s == pytest.approx((wall_x - 0.05 - front) / v, abs=0.011)

@@ -26,7 +26,7 @@ YAML_CASES = [
     ("duration_s: 10\narm:\n  joint_names: [front_left_wheel_joint]\n  points: []\n", ":3:",
      "is a wheel"),
     ("duration_s: 10\ninitial_pose: {x_m: 1.0}\nworld:\n  cylinders:\n"
-     "    - {center_m: [1.2, 0], radius_m: 0.2}\n", ":2:", "overlaps cylinder 1"),
+     "    - {center_m: [1.2, 0], radius_m: 0.2}\n", ":2:", "base_link touches cylinder 1"),
     ("duration_s: 10\ncmd_vel:\n  - {start_s: 5, duration_s: 2}\n  - {start_s: 6, "
      "duration_s: 1}\n", ":4:", "cmd_vel[1].start_s: 6 s is before the previous segment"),
     ("duration_s: [1\n", ":2:", "not valid YAML"),

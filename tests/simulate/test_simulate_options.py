@@ -38,7 +38,7 @@ def test_out_under_a_regular_file_is_refused_before_the_run(run, tmp_path):
     (tmp_path / "file").write_text("x")
     line = assert_one_line_error(_refused_fast(run, "--out", tmp_path / "file" / "out"), 2,
                                  "--out")
-    assert "does not exist" in line
+    assert "is a file, not a directory" in line
     assert sorted(p.name for p in tmp_path.iterdir()) == ["file"]
 
 

@@ -57,8 +57,8 @@ def tables(result: SimResult) -> dict[str, str]:
         "joint_states.csv": _table(
             ("time_s", *(f"{n}_rad" for n in joints.names), *(f"{n}_rad_s" for n in joints.names)),
             (joints.times_s, *joints.positions.T, *joints.velocities.T)),
-        "collisions.csv": "time_s,obstacle,x_m,y_m,yaw_rad\n" + "".join(
-            f"{c.time_s!r},{c.obstacle},{c.x_m!r},{c.y_m!r},{c.yaw_rad!r}\n"
+        "collisions.csv": "time_s,obstacle,link,x_m,y_m,yaw_rad\n" + "".join(
+            f"{c.time_s!r},{c.obstacle},{c.link},{c.x_m!r},{c.y_m!r},{c.yaw_rad!r}\n"
             for c in result.contacts),
     }
     if result.scans is not None:

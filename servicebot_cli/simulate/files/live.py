@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.simulate.files.plot import draw_world, footprint_outline, scan_points
+from servicebot_cli.simulate.files.plot import draw_world, robot_outlines, scan_points
 from servicebot_cli.simulate.simulator import SimResult
 from servicebot_cli.simulate.summary import odometry_in_world
 
@@ -98,7 +98,9 @@ def _update(artists: _Artists, result: SimResult, t: float, ox: FloatArray,
     artists.truth.set_data(truth.x_m[:k + 1], truth.y_m[:k + 1])
     j = int(np.searchsorted(result.odometry.times_s, t))
     artists.odom.set_data(ox[:j], oy[:j])
-    outline = footprint_outline(result, truth.x_m[k], truth.y_m[k], truth.yaw_rad[k])
+    # the parts' outlines as one line, separated by NaN breaks
+    parts = robot_outlines(result, k)
+    outline = np.vstack([np.vstack((p, [[np.nan, np.nan]])) for p in parts])
     artists.body.set_data(outline[:, 0], outline[:, 1])
     if result.scans is not None and len(result.scans.times_s):
         s = max(int(np.searchsorted(result.scans.times_s, t, side="right")) - 1, 0)

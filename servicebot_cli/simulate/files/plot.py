@@ -6,7 +6,6 @@ same run gives the same PNG, SVG or PDF bytes. The live window reuses :func:`dra
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -45,13 +44,16 @@ def draw_world(ax: Axes, result: SimResult) -> None:
     ax.grid(True, linewidth=0.3, alpha=0.6)
 
 
-def footprint_outline(result: SimResult, x: float, y: float, yaw: float) -> np.ndarray:
-    """The footprint's corners in the world at a pose, closed, shape (5, 2)."""
-    corners = result.body.footprint.corners()
-    c, s = math.cos(yaw), math.sin(yaw)
-    world = np.column_stack((x + c * corners[:, 0] - s * corners[:, 1],
-                             y + s * corners[:, 0] + c * corners[:, 1]))
-    return np.vstack((world, world[:1]))
+def robot_outlines(result: SimResult, tick: int) -> list[np.ndarray]:
+    """Every collision part seen from above at a tick, each closed, shape (K, 2)."""
+    from servicebot_cli.simulate.shape import outlines
+    from servicebot_cli.simulate.world.contacts import posed_parts
+
+    truth, body = result.truth, result.body
+    posed = posed_parts(body.shape, truth.x_m[tick:tick + 1], truth.y_m[tick:tick + 1],
+                        truth.yaw_rad[tick:tick + 1], body.base_height_m,
+                        result.arm_positions_rad[tick:tick + 1])
+    return outlines(body.shape.parts, posed[0])
 
 
 def scan_points(result: SimResult, index: int) -> np.ndarray:
@@ -77,10 +79,10 @@ def _draw_map(ax: Axes, result: SimResult) -> None:
         points = scan_points(result, k)
         ax.scatter(points[:, 0], points[:, 1], s=4, color="#d62728", zorder=3,
                    label=f"LIDAR scan at {result.scans.times_s[k]:.1f} s")
-    start = footprint_outline(result, truth.x_m[0], truth.y_m[0], truth.yaw_rad[0])
-    end = footprint_outline(result, truth.x_m[-1], truth.y_m[-1], truth.yaw_rad[-1])
-    ax.plot(start[:, 0], start[:, 1], color="#2ca02c", linewidth=1.0, label="start")
-    ax.plot(end[:, 0], end[:, 1], color="#1f77b4", linewidth=1.0, label="end")
+    for tick, colour, label in ((0, "#2ca02c", "start"), (-1, "#1f77b4", "end")):
+        for i, outline in enumerate(robot_outlines(result, tick % len(truth.x_m))):
+            ax.plot(outline[:, 0], outline[:, 1], color=colour, linewidth=0.8,
+                    label=label if i == 0 else None)
     for contact in result.contacts:
         ax.plot(contact.x_m, contact.y_m, marker="x", color="black", markersize=9, mew=2)
     if result.contacts:

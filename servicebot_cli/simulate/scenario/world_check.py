@@ -1,7 +1,7 @@
 """Checks of a scenario against the robot and the world, with the scenario line of each fault.
 
 The scenario's own checks need no robot; these do: the arm's joint names and limits come
-from the URDF, and the start pose must leave the footprint clear of every obstacle.
+from the URDF, and the start pose must leave every link clear of every obstacle.
 """
 
 from __future__ import annotations
@@ -16,8 +16,9 @@ from servicebot_cli.common.errors import NameNotFound
 from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.scenario.definition import Scenario
 from servicebot_cli.simulate.scenario.located import Located, ScenarioError
+from servicebot_cli.simulate.world.contacts import Tester, obstacles, posed_parts
 from servicebot_cli.simulate.world.raycast import Mesh
-from servicebot_cli.simulate.world.solids import Solid, footprint_hits
+from servicebot_cli.simulate.world.solids import Solid
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -28,28 +29,25 @@ def _error(scenario: Scenario, path: tuple[str | int, ...], message: str) -> Sce
 
 
 def check_scenario(body: SimRobot, scenario: Scenario, solids: Sequence[Solid],
-                   meshes: Sequence[Mesh]) -> FloatArray:
+                   meshes: Sequence[Mesh], tester: Tester | None = None) -> FloatArray:
     """Check the arm goal and the start pose; return the arm's start positions [rad].
+
+    ``tester`` holds the solids and meshes already (built from them when None).
 
     Raises:
         ScenarioError: An unknown or wheel joint, a position outside its limits, or a start
-            pose whose footprint overlaps an obstacle.
+            pose where a link touches an obstacle.
     """
     q0 = _check_arm(body, scenario)
+    if tester is None:
+        tester = Tester(body.shape, obstacles(solids, meshes))
     start = scenario.initial_pose
-    hit = footprint_hits(body.footprint, list(solids), np.array([start.x_m]),
-                         np.array([start.y_m]), np.array([start.yaw_rad]))
-    if hit[0] >= 0:
-        raise _error(scenario, ("initial_pose",), f"the robot's footprint overlaps "
-                     f"{solids[int(hit[0])].name}; start it somewhere clear")
-    if meshes:
-        from servicebot_cli.simulate.world.meshes import footprint_hits_meshes
-
-        mesh_hit = footprint_hits_meshes(body.footprint, meshes, np.array([start.x_m]),
-                                         np.array([start.y_m]), np.array([start.yaw_rad]))
-        if mesh_hit[0] >= 0:
-            raise _error(scenario, ("initial_pose",), f"the robot's footprint overlaps mesh "
-                         f"{int(mesh_hit[0]) + 1}; start it somewhere clear")
+    posed = posed_parts(body.shape, np.array([start.x_m]), np.array([start.y_m]),
+                        np.array([start.yaw_rad]), body.base_height_m, q0[None, :])
+    obstacle, part = tester.first_hits(posed)
+    if obstacle[0] >= 0:
+        raise _error(scenario, ("initial_pose",), f"the robot's {body.shape.links[part[0]]} "
+                     f"touches {tester.world[obstacle[0]].name}; start it somewhere clear")
     return q0
 
 

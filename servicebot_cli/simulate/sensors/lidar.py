@@ -18,8 +18,10 @@ import numpy.typing as npt
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.description.sensors import LidarSpec
 from servicebot_cli.simulate.sensors import noise
+from servicebot_cli.simulate.shape import RobotShape
 from servicebot_cli.simulate.world import raycast
 from servicebot_cli.simulate.world.motion import Path2D, pose_at
+from servicebot_cli.simulate.world.robot_rays import cast_parts
 from servicebot_cli.simulate.world.solids import Solid
 
 FloatArray = npt.NDArray[np.float64]
@@ -50,8 +52,9 @@ def scan_angles(spec: LidarSpec) -> FloatArray:
 
 def scan(spec: LidarSpec, transform_sensor_to_base: FloatArray, base_height_m: float,
          path: Path2D, times_s: FloatArray, solids: Sequence[Solid], meshes: Sequence[raycast.Mesh],
-         rng: np.random.Generator, progress: Callable[[int], None] | None = None) -> Scans:
-    """Every scan of a run at ``times_s``."""
+         rng: np.random.Generator, progress: Callable[[int], None] | None = None,
+         own_m: FloatArray | None = None) -> Scans:
+    """Every scan of a run at ``times_s``; ``own_m`` (scans, rays) are ranges to the robot."""
     angles = scan_angles(spec)
     x, y, yaw = pose_at(path, times_s)
     local_dirs = transform_sensor_to_base[:3, :3] @ np.vstack(
@@ -72,10 +75,60 @@ def scan(spec: LidarSpec, transform_sensor_to_base: FloatArray, base_height_m: f
                         axis=-1).reshape(-1, 3)
         o = np.repeat(origins[start:stop], len(angles), axis=0)
         true[start:stop] = raycast.cast(o, dirs, solids, meshes=meshes).reshape(stop - start, -1)
+        if own_m is not None:
+            np.minimum(true[start:stop], own_m[start:stop], out=true[start:stop])
         if progress is not None:
             progress(stop - start)
     sensor_yaw = yaw + np.arctan2(transform_sensor_to_base[1, 0], transform_sensor_to_base[0, 0])
     return Scans(spec, times_s, angles, readings(true, spec, rng), origins, sensor_yaw)
+
+
+def ray_directions(spec: LidarSpec, transform_sensor_to_base: FloatArray) -> FloatArray:
+    """Each ray's unit direction in the base frame, shape (R, 3)."""
+    angles = scan_angles(spec)
+    local = np.column_stack((np.cos(angles), np.sin(angles), np.zeros_like(angles)))
+    return np.asarray(local @ transform_sensor_to_base[:3, :3].T, dtype=np.float64)
+
+
+def own_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: FloatArray,
+               directions: FloatArray, q: FloatArray) -> FloatArray:
+    """Distance along each ray to the robot's own links, per scan, shape (scans, R).
+
+    The sensor's own link is left out (Gazebo's ray sensor ignores the link it is on). Parts
+    fixed on the base are cast once; the arm's once per distinct arm configuration.
+
+    Args:
+        shape: The robot's parts.
+        sensor_link: The link the sensor is on.
+        transform_sensor_to_base: The sensor's pose on the base, (4, 4).
+        directions: Ray directions in the base frame, shape (R, 3).
+        q: The moving joints' positions at each scan, shape (scans, J).
+    """
+    keep = np.array([p.link != sensor_link for p in shape.parts], dtype=bool)
+    fixed = shape.fixed() & keep
+    moving = ~shape.fixed() & keep
+    origin = np.broadcast_to(transform_sensor_to_base[:3, 3], directions.shape)
+    parts = shape.parts
+    out = np.full((len(q), len(directions)), np.inf)
+    if fixed.any():
+        placed = shape.transforms_to_base(q[:1] if len(q) else np.zeros((1, len(shape.joints))))
+        out[:] = cast_parts([p for p, f in zip(parts, fixed, strict=True) if f],
+                            placed[:, fixed], origin, directions)
+    if moving.any() and len(q):
+        distinct, index = np.unique(q, axis=0, return_inverse=True)
+        moved = [p for p, m in zip(parts, moving, strict=True) if m]
+        hits = np.empty((len(distinct), len(directions)))
+        per_batch = max(1, raycast_batch() // max(1, len(directions) * len(moved)))
+        for start in range(0, len(distinct), per_batch):
+            placed = shape.transforms_to_base(distinct[start:start + per_batch])[:, moving]
+            hits[start:start + per_batch] = cast_parts(moved, placed, origin, directions)
+        np.minimum(out, hits[index.ravel()], out=out)
+    return out
+
+
+def raycast_batch() -> int:
+    """Rays cast per batch against the robot's parts."""
+    return RAYS_PER_BATCH
 
 
 def readings(true_m: FloatArray, spec: LidarSpec, rng: np.random.Generator) -> FloatArray:

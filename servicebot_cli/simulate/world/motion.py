@@ -13,7 +13,7 @@ for all ticks at once with cumulative sums, so a whole run is a handful of numpy
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -41,10 +41,11 @@ class Path2D:
 
 @dataclass(frozen=True)
 class Contact:
-    """The base touched an obstacle: the step starting at ``time_s`` was refused."""
+    """A link touched an obstacle: the base's step starting at ``time_s`` was refused."""
 
     time_s: float
     obstacle: str
+    link: str
     x_m: float
     y_m: float
     yaw_rad: float
@@ -74,17 +75,18 @@ def integrate(start: tuple[float, float, float], linear_m_s: FloatArray,
     return Path2D(dt_s, x, y, yaw, np.asarray(linear_m_s, float), np.asarray(angular_rad_s, float))
 
 
-Collides = Callable[[FloatArray, FloatArray, FloatArray], IntArray]
-"""Obstacle index touched by the footprint at each pose, -1 where free."""
+Collides = Callable[[IntArray, FloatArray, FloatArray, FloatArray], tuple[IntArray, IntArray]]
+"""Given ticks and the base poses at them: per pose, the obstacle touched and the link touching
+it (indices into the names), -1 where free. The tick says where the arm is."""
 
 
 def integrate_blocked(start: tuple[float, float, float], linear_m_s: FloatArray,
                       angular_rad_s: FloatArray, dt_s: float, collides: Collides,
-                      names: list[str]) -> tuple[Path2D, list[Contact]]:
+                      names: list[str], links: Sequence[str]) -> tuple[Path2D, list[Contact]]:
     """Like :func:`integrate`, but steps into obstacles are refused.
 
-    A step that would put the footprint into an obstacle leaves the base where it was (its
-    wheels still turn) and logs a contact.
+    A step that would put any link into an obstacle leaves the base where it was (its
+    wheels still turn) and logs a contact naming the obstacle and the link.
 
     While blocked, each later step is tried from the resting pose; the first one that is free
     (turning or backing away) resumes the motion.
@@ -97,7 +99,8 @@ def integrate_blocked(start: tuple[float, float, float], linear_m_s: FloatArray,
     k = 0
     while k < n:
         path = integrate((x[k], y[k], yaw[k]), lin[k:], ang[k:], dt_s)
-        hit = collides(path.x_m[1:], path.y_m[1:], path.yaw_rad[1:])
+        ticks = np.arange(k + 1, n + 1)
+        hit, link = collides(ticks, path.x_m[1:], path.y_m[1:], path.yaw_rad[1:])
         blocked = np.flatnonzero(hit >= 0)
         stop = n if not len(blocked) else k + int(blocked[0])
         x[k + 1:stop + 1] = path.x_m[1:stop - k + 1]
@@ -106,6 +109,7 @@ def integrate_blocked(start: tuple[float, float, float], linear_m_s: FloatArray,
         if stop == n:
             break
         contacts.append(Contact(stop * dt_s, names[int(hit[blocked[0]])],
+                                links[int(link[blocked[0]])],
                                 float(x[stop]), float(y[stop]), float(yaw[stop])))
         k = _wait_until_free(stop, x, y, yaw, lin, ang, dt_s, collides)
     moved_lin, moved_ang = _followed_twist(x, y, yaw, lin, ang)
@@ -118,7 +122,9 @@ def _wait_until_free(k: int, x: FloatArray, y: FloatArray, yaw: FloatArray, lin:
     n = len(lin)
     dx, dy, dyaw = arc_step(lin[k:], ang[k:], dt_s)
     c, s = np.cos(yaw[k]), np.sin(yaw[k])
-    free = collides(x[k] + c * dx - s * dy, y[k] + s * dx + c * dy, yaw[k] + dyaw) < 0
+    hit, _ = collides(np.arange(k + 1, n + 1), x[k] + c * dx - s * dy, y[k] + s * dx + c * dy,
+                      yaw[k] + dyaw)
+    free = hit < 0
     moving = (lin[k:] != 0) | (ang[k:] != 0)
     ok = np.flatnonzero(free & moving)
     resume = n if not len(ok) else k + int(ok[0])

@@ -37,6 +37,16 @@ class Mesh(Protocol):
         """Ray queries against this mesh."""
         ...
 
+    @property
+    def vertices(self) -> FloatArray:
+        """Vertex positions in the world [m], shape (V, 3)."""
+        ...
+
+    @property
+    def faces(self) -> IntArray:
+        """Vertex indices of each triangle, shape (F, 3)."""
+        ...
+
 
 def cast(origins: FloatArray, directions: FloatArray, solids: Sequence[Solid], *,
          floor: bool = True, meshes: Sequence[Mesh] = ()) -> FloatArray:
@@ -70,14 +80,15 @@ def cast(origins: FloatArray, directions: FloatArray, solids: Sequence[Solid], *
         ol = [sum((o[j] - solid.center_m[j]) * rot[j, i] for j in range(3)) for i in range(3)]
         dl = [sum(d[j] * rot[j, i] for j in range(3) if rot[j, i] != 0.0) for i in range(3)]
         dl = [x if isinstance(x, np.ndarray) else np.zeros_like(best) for x in dl]
-        hit = _box(ol, dl, solid.half_m) if solid.kind == "box" else _cylinder(ol, dl, solid.half_m)
+        hit = (box_entry(ol, dl, solid.half_m) if solid.kind == "box"
+               else cylinder_entry(ol, dl, solid.half_m))
         np.minimum(best, hit, out=best)
     for mesh in meshes:
         np.minimum(best, mesh_distances(mesh, origins, directions), out=best)
     return best
 
 
-def _box(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
+def box_entry(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
     """Slab method: entry distance into an axis-aligned box centred at the origin."""
     near = np.full(np.shape(d[0]), -np.inf)
     far = np.full(np.shape(d[0]), np.inf)
@@ -90,7 +101,7 @@ def _box(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArr
     return np.where((near <= far) & (near >= 0.0), near, np.inf)
 
 
-def _cylinder(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
+def cylinder_entry(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
     """Entry distance into a cylinder of radius ``half[0]`` and half length ``half[2]``."""
     radius, half_length = half[0], half[2]
     a = d[0] * d[0] + d[1] * d[1]
@@ -105,7 +116,8 @@ def _cylinder(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> Flo
         t_cap = (-np.sign(d[2]) * half_length - o[2]) / d[2]
         px, py = o[0] + t_cap * d[0], o[1] + t_cap * d[1]
         cap = np.where((t_cap >= 0) & (px * px + py * py <= radius**2), t_cap, np.inf)
-    return np.fmin(side, cap)
+    inside = (c < 0) & (np.abs(o[2]) < half_length)  # a ray from inside sees no entry
+    return np.where(inside, np.inf, np.fmin(side, cap))
 
 
 def mesh_distances(mesh: Mesh, origins: FloatArray, directions: FloatArray) -> FloatArray:

@@ -1,0 +1,235 @@
+r"""The robot's collision shape: every link's boxes, cylinders and spheres, posed with the arm.
+
+Each ``<collision>`` primitive of each link becomes a :class:`Part`. Parts are placed on the
+base by composing the URDF's joint origins and motions from the root, vectorised over many arm
+configurations at once:
+
+.. math:: T_{link \to base}(q) = T_{parent \to base}(q)\, T_{origin}\, M_{joint}(q_j)
+
+Wheel joints count as fixed: a wheel's collision cylinder turns about its own axis, so its
+spin does not move its surface. Mesh collision shapes are not parts (see :attr:`skipped`).
+Pure: a description in, arrays out.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.kinematics.transforms import pose_matrix
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.elements import Geometry, Joint
+    from servicebot_cli.description.robot import RobotDescription
+
+FloatArray = npt.NDArray[np.float64]
+KINDS = ("box", "cylinder", "sphere")
+
+
+@dataclass(frozen=True)
+class Part:
+    """One collision primitive of a link.
+
+    Attributes:
+        link: The link it belongs to.
+        kind: ``box``, ``cylinder`` (axis along its local z) or ``sphere``.
+        half_m: Box half sizes; ``(r, r, half length)`` for a cylinder; ``(r, r, r)`` for a sphere.
+        transform_part_to_link: The ``<collision><origin>``, (4, 4).
+    """
+
+    link: str
+    kind: str
+    half_m: FloatArray
+    transform_part_to_link: FloatArray
+
+    @property
+    def radius_m(self) -> float:
+        """Radius of the sphere around the part's centre that holds it."""
+        if self.kind == "box":
+            return float(np.linalg.norm(self.half_m))
+        if self.kind == "cylinder":
+            return float(np.hypot(self.half_m[0], self.half_m[2]))
+        return float(self.half_m[0])
+
+
+@dataclass(frozen=True, eq=False)
+class RobotShape:
+    """Every collision part of the robot and the joints that move them.
+
+    Attributes:
+        root: The base link, whose frame the parts are placed in.
+        parts: The primitives, in URDF link order.
+        joints: Movable joints that move parts (the arm's), in the order of ``q`` columns.
+        steps: Per link in tree order: (link, parent link, origin (4, 4), joint or None).
+        skipped: ``link: reason`` for collision shapes that are not parts (meshes, bad sizes).
+    """
+
+    root: str
+    parts: tuple[Part, ...]
+    joints: tuple[str, ...]
+    steps: tuple[tuple[str, str, FloatArray, Joint | None], ...]
+    skipped: tuple[str, ...]
+
+    @property
+    def links(self) -> tuple[str, ...]:
+        """The link of each part."""
+        return tuple(p.link for p in self.parts)
+
+    def fixed(self) -> npt.NDArray[np.bool_]:
+        """Which parts no movable joint moves (fixed on the base), shape (S,)."""
+        moved = self._moved_links()
+        return np.array([p.link not in moved for p in self.parts])
+
+    def _moved_links(self) -> set[str]:
+        moved: set[str] = set()
+        for link, parent, _, joint in self.steps:
+            if joint is not None or parent in moved:
+                moved.add(link)
+        return moved
+
+    def transforms_to_base(self, q: FloatArray) -> FloatArray:
+        """``transform_part_to_base`` of every part for each configuration.
+
+        Args:
+            q: Positions of :attr:`joints` [rad or m], shape (P, J).
+
+        Returns:
+            Shape (P, S, 4, 4).
+        """
+        q = np.asarray(q, dtype=float).reshape(-1, len(self.joints))
+        count = len(q)
+        links = {self.root: np.broadcast_to(np.eye(4), (count, 4, 4))}
+        for link, parent, origin, joint in self.steps:
+            placed = links[parent] @ origin
+            if joint is not None:
+                placed = placed @ joint_motions(joint, q[:, self.joints.index(joint.name)])
+            links[link] = placed
+        out = np.empty((count, len(self.parts), 4, 4))
+        for i, part in enumerate(self.parts):
+            out[:, i] = links[part.link] @ part.transform_part_to_link
+        return out
+
+
+def joint_motions(joint: Joint, values: FloatArray) -> FloatArray:
+    """Motion of a joint at each of ``values``, shape (P, 4, 4) (Rodrigues' formula).
+
+    Rotation by t about unit axis k: ``I + sin t K + (1 - cos t) K^2``; a prismatic joint
+    slides along k.
+    """
+    values = np.asarray(values, dtype=float)
+    out = np.broadcast_to(np.eye(4), (len(values), 4, 4)).copy()
+    axis = np.array(joint.axis, dtype=float)
+    norm = float(np.linalg.norm(axis))
+    if norm == 0 or not np.isfinite(norm):
+        return out
+    axis /= norm
+    if joint.type == "prismatic":
+        out[:, :3, 3] = values[:, None] * axis
+        return out
+    k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    out[:, :3, :3] += np.sin(values)[:, None, None] * k \
+        + (1 - np.cos(values))[:, None, None] * (k @ k)
+    return out
+
+
+def robot_shape(robot: RobotDescription, moving_joints: Sequence[str]) -> RobotShape:
+    """The collision parts of ``robot``; ``moving_joints`` move them, other joints are fixed.
+
+    Raises:
+        DescriptionError: The root link is unknown (no single root).
+    """
+    root = robot.root_link or ""
+    children: dict[str, list[Joint]] = {}
+    for joint in robot.joints:
+        children.setdefault(joint.parent or "", []).append(joint)
+    steps: list[tuple[str, str, FloatArray, Joint | None]] = []
+    seen, stack = {root}, [root]
+    while stack:
+        parent = stack.pop()
+        for joint in children.get(parent, ()):
+            if joint.child and joint.child not in seen:
+                seen.add(joint.child)
+                moving = joint if joint.name in moving_joints else None
+                steps.append((joint.child, parent, pose_matrix(joint.origin), moving))
+                stack.append(joint.child)
+    parts, skipped = [], []
+    for link in robot.links:
+        if link.name not in seen:
+            continue
+        for shape in link.collisions:
+            half = half_extents(shape.geometry)
+            if half is None:
+                skipped.append(f"{link.name}: {shape.geometry.kind or 'unknown'} collision shape")
+                continue
+            parts.append(Part(link.name, shape.geometry.kind, half, pose_matrix(shape.origin)))
+    return RobotShape(root, tuple(parts), tuple(moving_joints), tuple(steps), tuple(skipped))
+
+
+def half_extents(geometry: Geometry) -> FloatArray | None:
+    """Half sizes of a primitive (see :attr:`Part.half_m`), None for meshes or bad sizes."""
+    kind = geometry.kind
+    if kind == "box" and geometry.size and min(geometry.size) > 0:
+        return np.array(geometry.size, dtype=float) / 2
+    if kind == "cylinder" and geometry.radius and geometry.length \
+            and geometry.radius > 0 and geometry.length > 0:
+        r = geometry.radius
+        return np.array([r, r, geometry.length / 2])
+    if kind == "sphere" and geometry.radius and geometry.radius > 0:
+        return np.full(3, geometry.radius)
+    return None
+
+
+def outlines(parts: Sequence[Part], transforms: FloatArray) -> list[FloatArray]:
+    """Each part seen from above: its convex outline on the floor, closed, shape (K, 2).
+
+    Args:
+        parts: The parts.
+        transforms: ``transform_part_to_world`` of each part, shape (S, 4, 4).
+    """
+    out = []
+    for part, transform in zip(parts, transforms, strict=True):
+        points = _surface_points(part) @ transform[:3, :3].T + transform[:3, 3]
+        hull = convex_hull(points[:, :2])
+        out.append(np.vstack((hull, hull[:1])))
+    return out
+
+
+def _surface_points(part: Part) -> FloatArray:
+    """Points of the part's surface whose hull is its shape (circles as 32-gons)."""
+    h = part.half_m
+    if part.kind == "box":
+        signs = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)])
+        return signs * h
+    angles = np.linspace(0, 2 * np.pi, 32, endpoint=False)
+    circle = np.column_stack((np.cos(angles), np.sin(angles))) * h[0]
+    if part.kind == "cylinder":
+        return np.vstack([np.column_stack((circle, np.full(32, z))) for z in (-h[2], h[2])])
+    return np.vstack([np.column_stack((circle, np.zeros(32)))[:, order]
+                      for order in ([0, 1, 2], [0, 2, 1], [2, 0, 1])])
+
+
+def convex_hull(points: FloatArray) -> FloatArray:
+    """Convex hull of 2D points, counter-clockwise (Andrew's monotone chain), shape (K, 2)."""
+    unique = np.unique(np.round(points, 12), axis=0)
+    if len(unique) < 3:
+        return unique
+
+    def half(sequence: FloatArray) -> list[FloatArray]:
+        chain: list[FloatArray] = []
+        for p in sequence:
+            while len(chain) >= 2 and _turn(chain[-2], chain[-1], p) <= 0:
+                chain.pop()
+            chain.append(p)
+        return chain
+
+    lower, upper = half(unique), half(unique[::-1])
+    return np.array(lower[:-1] + upper[:-1])
+
+
+def _turn(a: FloatArray, b: FloatArray, c: FloatArray) -> float:
+    """Z of ``(b - a) x (c - a)``: positive when a, b, c turn counter-clockwise."""
+    return float((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))

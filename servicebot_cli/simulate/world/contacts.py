@@ -1,0 +1,222 @@
+r"""Contacts and clearance between the robot's collision parts and the world's obstacles.
+
+Every part of every link (base, wheels, sensors, arm), posed at each tick with the arm, is
+tested against every obstacle (boxes, walls, cylinders, meshes). The floor is not an
+obstacle: the wheels stand on it.
+
+A cheap bound comes first, for all poses at once with numpy: a part whose bounding sphere
+(centre :math:`c`, radius :math:`r`) lies farther than :math:`r` from an obstacle cannot touch
+it, and its distance is at least :math:`d(c, \text{obstacle}) - r`. Only the pairs that bound
+leaves open go to Coal (Pinocchio's collision library: GJK/EPA, exact for primitives, BVH for
+meshes).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.simulate.shape import Part, RobotShape
+from servicebot_cli.simulate.world.raycast import Mesh
+from servicebot_cli.simulate.world.solids import Solid
+
+FloatArray = npt.NDArray[np.float64]
+IntArray = npt.NDArray[np.int64]
+_CHUNK = 64  # exact distances measured per round of the clearance search
+
+
+@dataclass(frozen=True)
+class Obstacle:
+    """One obstacle as the contact tests see it.
+
+    Attributes:
+        name: How events name it (``wall 1``, ``mesh 2``).
+        geometry: Its Coal collision geometry.
+        transform: Its Coal pose in the world.
+        kind: ``box``, ``cylinder`` or ``mesh``.
+        center_m, rotation, half_m: The solid (for a mesh: its axis-aligned bounding box).
+    """
+
+    name: str
+    geometry: object
+    transform: object
+    kind: str
+    center_m: FloatArray
+    rotation: FloatArray
+    half_m: FloatArray
+
+    def point_distance(self, points: FloatArray) -> FloatArray:
+        """Distance from points (..., 3) to the obstacle (to its box for a mesh), 0 inside."""
+        local = (points - self.center_m) @ self.rotation
+        if self.kind == "cylinder":
+            radial = np.maximum(np.hypot(local[..., 0], local[..., 1]) - self.half_m[0], 0.0)
+            axial = np.maximum(np.abs(local[..., 2]) - self.half_m[2], 0.0)
+            return np.asarray(np.hypot(radial, axial), dtype=np.float64)
+        outside = np.maximum(np.abs(local) - self.half_m, 0.0)
+        return np.asarray(np.sqrt(np.einsum("...i,...i->...", outside, outside)),
+                          dtype=np.float64)
+
+
+def obstacles(solids: Sequence[Solid], meshes: Sequence[Mesh] = ()) -> list[Obstacle]:
+    """Coal objects for the world's solids and placed meshes (trimesh), in that order."""
+    import coal  # type: ignore[import-untyped]  # Coal ships no type information
+
+    out = []
+    for solid in solids:
+        geometry = (coal.Box(*(2 * solid.half_m)) if solid.kind == "box"
+                    else coal.Cylinder(float(solid.half_m[0]), 2 * float(solid.half_m[2])))
+        out.append(Obstacle(solid.name, geometry, coal.Transform3s(solid.rotation,
+                                                                   solid.center_m),
+                            solid.kind, solid.center_m, solid.rotation, solid.half_m))
+    for i, mesh in enumerate(meshes, 1):
+        vertices = np.asarray(mesh.vertices, dtype=np.float64)
+        faces = np.asarray(mesh.faces, dtype=np.int64)
+        model = coal.BVHModelOBBRSS()
+        model.beginModel(len(faces), len(vertices))
+        model.addVertices(vertices)
+        model.addTriangles(faces)
+        model.endModel()
+        low, high = vertices.min(axis=0), vertices.max(axis=0)
+        out.append(Obstacle(f"mesh {i}", model, coal.Transform3s(), "mesh", (low + high) / 2,
+                            np.eye(3), (high - low) / 2))
+    return out
+
+
+def part_geometry(part: Part) -> object:
+    """A Coal geometry for a robot part."""
+    import coal
+
+    if part.kind == "box":
+        return coal.Box(*(2 * part.half_m))
+    if part.kind == "cylinder":
+        return coal.Cylinder(float(part.half_m[0]), 2 * float(part.half_m[2]))
+    return coal.Sphere(float(part.half_m[0]))
+
+
+def posed_parts(shape: RobotShape, x: FloatArray, y: FloatArray, yaw: FloatArray,
+                base_height_m: float, q: FloatArray) -> FloatArray:
+    """``transform_part_to_world`` of every part at each pose, shape (P, S, 4, 4).
+
+    Args:
+        shape: The robot's parts.
+        x: Base positions along the world's x [m], shape (P,).
+        y: Base positions along the world's y [m], shape (P,).
+        yaw: Base headings [rad], shape (P,).
+        base_height_m: Height of the base frame above the floor.
+        q: The moving joints' positions at those poses, shape (P, J).
+    """
+    base = np.zeros((len(x), 4, 4))
+    c, s = np.cos(yaw), np.sin(yaw)
+    base[:, 0, 0], base[:, 0, 1], base[:, 1, 0], base[:, 1, 1] = c, -s, s, c
+    base[:, 2, 2] = base[:, 3, 3] = 1.0
+    base[:, 0, 3], base[:, 1, 3], base[:, 2, 3] = x, y, base_height_m
+    return base[:, None] @ shape.transforms_to_base(q)
+
+
+def _lower_bounds(shape: RobotShape, world: Sequence[Obstacle],
+                  posed: FloatArray) -> FloatArray:
+    """Lower bound of each part-obstacle distance, shape (P, S, O)."""
+    radius = np.array([p.radius_m for p in shape.parts])
+    centres = posed[..., :3, 3]
+    out = np.empty(posed.shape[:2] + (len(world),))
+    for o, obstacle in enumerate(world):
+        out[..., o] = obstacle.point_distance(centres) - radius
+    return out
+
+
+class Tester:
+    """Coal queries of one robot against one world, with the geometries built once."""
+
+    def __init__(self, shape: RobotShape, world: Sequence[Obstacle]) -> None:
+        self.shape = shape
+        self.world = list(world)
+        self.geometries = [part_geometry(p) for p in shape.parts]
+
+    def touching(self, posed: FloatArray, pose: int, part: int, obstacle: int) -> bool:
+        """Whether a part at ``posed[pose, part]`` touches an obstacle."""
+        import coal
+
+        transform = posed[pose, part]
+        request, result = coal.CollisionRequest(), coal.CollisionResult()
+        target = self.world[obstacle]
+        coal.collide(self.geometries[part], coal.Transform3s(transform[:3, :3], transform[:3, 3]),
+                     target.geometry, target.transform, request, result)
+        return bool(result.isCollision())
+
+    def distance(self, posed: FloatArray, pose: int, part: int, obstacle: int) -> float:
+        """Distance between a part and an obstacle [m] (0 when touching)."""
+        import coal
+
+        transform = posed[pose, part]
+        request, result = coal.DistanceRequest(), coal.DistanceResult()
+        target = self.world[obstacle]
+        coal.distance(self.geometries[part],
+                      coal.Transform3s(transform[:3, :3], transform[:3, 3]),
+                      target.geometry, target.transform, request, result)
+        return max(float(result.min_distance), 0.0)
+
+    def first_hits(self, posed: FloatArray) -> tuple[IntArray, IntArray]:
+        """Per pose, the first obstacle touched and the part touching it; -1 where free.
+
+        "First" is in obstacle order, then part order, so reports are stable.
+        """
+        obstacle = np.full(len(posed), -1, dtype=np.int64)
+        part = np.full(len(posed), -1, dtype=np.int64)
+        if not self.world or not len(posed):
+            return obstacle, part
+        bounds = _lower_bounds(self.shape, self.world, posed)
+        for p, s, o in sorted(zip(*np.nonzero(bounds <= 0.0), strict=True),
+                              key=lambda t: (t[0], t[2], t[1])):
+            if obstacle[p] >= 0 and (o > obstacle[p] or (o == obstacle[p] and s > part[p])):
+                continue
+            if self.touching(posed, int(p), int(s), int(o)):
+                obstacle[p], part[p] = o, s
+        return obstacle, part
+
+
+@dataclass(frozen=True)
+class Closest:
+    """The closest the robot came to an obstacle.
+
+    Attributes:
+        distance_m: The clearance [m]; inf in an empty world.
+        index: The pose (tick) where it happened, -1 for none.
+        obstacle: Index into the obstacles, -1 for none.
+        part: Index into the robot's parts, -1 for none.
+    """
+
+    distance_m: float
+    index: int
+    obstacle: int
+    part: int
+
+
+def closest(tester: Tester, posed: FloatArray, below: float = np.inf) -> Closest:
+    """The smallest part-obstacle distance over all poses, measured only where it can be.
+
+    Pairs are measured in order of their lower bound; the search stops when the next bound
+    is above the best distance found (or above ``below``, a clearance already known).
+    """
+    none = Closest(float("inf"), -1, -1, -1)
+    if not tester.world or not len(posed):
+        return none
+    bounds = _lower_bounds(tester.shape, tester.world, posed).ravel()
+    best, best_flat = float(below), -1
+    open_ = np.flatnonzero(bounds < best)
+    while len(open_):
+        take = open_ if len(open_) <= _CHUNK else \
+            open_[np.argpartition(bounds[open_], _CHUNK)[:_CHUNK]]
+        for flat in take:
+            p, s, o = np.unravel_index(flat, posed.shape[:2] + (len(tester.world),))
+            d = tester.distance(posed, int(p), int(s), int(o))
+            if d < best:
+                best, best_flat = d, int(flat)
+        bounds[take] = np.inf
+        open_ = open_[bounds[open_] < best]
+    if best_flat < 0:
+        return none
+    p, s, o = np.unravel_index(best_flat, posed.shape[:2] + (len(tester.world),))
+    return Closest(best, int(p), int(o), int(s))
