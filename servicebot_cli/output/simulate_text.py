@@ -34,12 +34,17 @@ def summary_lines(summary: Summary) -> Iterator[str]:
            f"{format_number(drift['final_yaw_rad'])} rad at the end "
            f"(max {format_number(drift['max_position_m'])} m)")
     closest = summary["min_obstacle_distance_m"]
-    near = f" ({summary['closest_obstacle']})" if summary["closest_obstacle"] else ""
+    near = (f" ({summary['closest_obstacle']}, {summary['closest_link']})"
+            if summary["closest_obstacle"] else "")
     yield f"closest obstacle  {format_number(closest)} m{near}"
     contacts = summary["collisions"]
     yield f"collisions        {len(contacts)}" + "".join(
-        f"; {c['obstacle']} at {format_number(c['time_s'])} s" for c in contacts[:3]) + (
-        ", ..." if len(contacts) > 3 else "")
+        f"; {c['link']} on {c['obstacle']} at {format_number(c['time_s'])} s"
+        for c in contacts[:3]) + (", ..." if len(contacts) > 3 else "")
+    own = summary["self_collisions"]
+    yield f"self collisions   {len(own)}" + "".join(
+        f"; {c['first']} on {c['second']} at {format_number(c['time_s'])} s"
+        for c in own[:3]) + (", ..." if len(own) > 3 else "")
     messages = ", ".join(f"{topic} {count}" for topic, count in summary["messages"].items())
     yield f"messages          {messages}"
 

@@ -21,6 +21,7 @@ from servicebot_cli.simulate.controllers import arm_trajectory as arm
 from servicebot_cli.simulate.controllers.diff_drive import WheelPlan, plan_wheels
 from servicebot_cli.simulate.scenario.definition import Scenario
 from servicebot_cli.simulate.scenario.world_check import check_scenario
+from servicebot_cli.simulate.self_contact import SelfContact, self_contacts
 from servicebot_cli.simulate.sensors import camera_info, imu, joint_states, lidar, odometry
 from servicebot_cli.simulate.sensors.noise import stream_rng
 from servicebot_cli.simulate.sensors.sample import sample_times
@@ -44,6 +45,7 @@ class SimResult:
     plan: WheelPlan
     truth: motion.Path2D
     contacts: list[motion.Contact]
+    self_contacts: list[SelfContact]
     wheel_angles_rad: FloatArray  # (n+1, 2): left, right side angle at tick boundaries
     odometry: odometry.Odometry
     joints: joint_states.JointStates
@@ -77,7 +79,10 @@ def run(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[Solid
     nearest = closest(tester, posed_parts(body.shape, truth.x_m, truth.y_m, truth.yaw_rad,
                                           body.base_height_m, arm_q))
     return SimResult(
-        body, scenario, seed, solids, [o.name for o in tester.world], plan, truth, contacts, sides,
+        body, scenario, seed, solids, [o.name for o in tester.world], plan, truth, contacts,
+        self_contacts(body.robot, body.shape, body.base_height_m, arm_q, dt)
+        if body.arm_joints else [],
+        sides,
         odometry.published(odom_path, publish),
         joint_states.at_times(names, positions, dt,
                               sample_times(scenario.rates.joint_states_hz, scenario.duration_s)),

@@ -48,6 +48,14 @@ class Collision(TypedDict):
     yaw_rad: float
 
 
+class SelfCollision(TypedDict):
+    """From ``time_s`` on, link ``first`` touches ``second`` (another link, or ``floor``)."""
+
+    time_s: float
+    first: str
+    second: str
+
+
 class EndEffector(TypedDict):
     """The arm's last frame and its world position [m] at the end."""
 
@@ -67,6 +75,7 @@ class Summary(TypedDict):
     odometry_final_pose: Pose | None
     odometry_drift: Drift
     collisions: list[Collision]
+    self_collisions: list[SelfCollision]
     min_obstacle_distance_m: float
     closest_obstacle: str | None
     closest_link: str | None
@@ -113,6 +122,8 @@ def summarize(result: SimResult, streams: Sequence[Stream]) -> Summary:
             if len(drift) else 0.0,
         },
         "collisions": [_collision(c) for c in result.contacts],
+        "self_collisions": [{"time_s": c.time_s, "first": c.first, "second": c.second}
+                            for c in result.self_contacts],
         "min_obstacle_distance_m": 0.0 if result.contacts else closest.distance_m,
         "closest_obstacle": result.obstacle_names[closest.obstacle]
         if closest.obstacle >= 0 else None,

@@ -138,3 +138,20 @@ def test_clearance_is_measured_to_the_real_outline():
     # the bounding rectangle's corner (0.3, 0.29) would be 44 mm closer
     rectangle = math.hypot(centre[0] - 0.3, centre[1] - 0.29) - radius
     assert result.closest.distance_m > rectangle + 0.04
+
+
+def test_the_arm_folding_onto_the_camera_is_a_self_collision():
+    arm = {"joint_names": ARM, "points": [{"time_from_start_s": 5,
+                                           "positions": [0.0, 0.5, 0.5, 0.5]}]}
+    result = run({"duration_s": 6, "arm": arm})
+    assert [(c.first, c.second) for c in result.self_contacts] == [("arm_link4", "camera_link")]
+    tick = round(result.self_contacts[0].time_s / result.plan.dt_s)
+
+    def overlap(k: int) -> float:
+        meshes = dict(reference_meshes(dict(zip(ARM, result.arm_positions_rad[k], strict=True))))
+        both = trimesh.boolean.intersection([meshes["arm_link4"], meshes["camera_link"]],
+                                            engine="manifold")
+        return float(both.volume) if len(both.faces) else 0.0
+
+    assert overlap(tick) > 0.0 and overlap(tick - 1) == 0.0  # manifold3d agrees on the tick
+    assert result.contacts == []  # the world is empty: no collision with an obstacle

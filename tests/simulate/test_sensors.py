@@ -38,7 +38,10 @@ def test_lidar_ranges_against_a_wall_match_the_geometry():
     quanta = measured[:, finite] / LIDAR.range_resolution_m
     np.testing.assert_allclose(quanta, np.round(quanta), atol=1e-6)
     assert np.all(np.isinf(measured[:, ~finite]))
-    assert np.all(np.isinf(scans.ranges_m[:, ~facing]))  # nothing behind: no return
+    behind = scans.ranges_m[:, ~facing]
+    # nothing behind but the robot's own arm_base_link, 0.23 m back, 24 rays wide
+    assert np.all(np.isinf(behind) | (np.abs(behind - 0.23) < 0.06))
+    assert np.isfinite(behind).sum(axis=1).tolist() == [24] * len(behind)
 
 
 def test_lidar_does_not_see_a_box_below_its_scan_plane():

@@ -1,0 +1,100 @@
+"""The arm touching the robot's own body (or the floor), with ``kinematics.collisions``.
+
+The check ``ik`` uses (adjacent and always-touching pairs left out) names the first pair that
+touches; each stretch of ticks where that pair touches is one event, at the tick it began.
+It runs at every distinct arm configuration where it could find something: where the bounding
+sphere of a moving part meets that of a part of a link not joined to its own, or the floor.
+ Pure: the robot and the arm's positions in, events out.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.simulate.shape import RobotShape
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.robot import RobotDescription
+
+FloatArray = npt.NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class SelfContact:
+    """From ``time_s`` on, link ``first`` touches ``second`` (another link or ``floor``)."""
+
+    time_s: float
+    first: str
+    second: str
+
+
+def self_contacts(robot: RobotDescription, shape: RobotShape, base_height_m: float,
+                  arm_q: FloatArray, dt_s: float) -> list[SelfContact]:
+    """Where the arm's motion puts links into each other or into the floor.
+
+    Args:
+        robot: The description.
+        shape: The robot's parts; its joints are ``arm_q``'s columns.
+        base_height_m: Height of the base frame above the floor [m].
+        arm_q: Arm positions at tick boundaries, shape (n+1, J).
+        dt_s: Control period [s].
+    """
+    import pinocchio as pin
+
+    from servicebot_cli.description.packages import PackageResolver
+    from servicebot_cli.kinematics.collisions import build_check
+
+    model = robot.model
+    check = build_check(robot, model, PackageResolver(context=robot.path.parent))
+    if not check.pairs or not len(arm_q):
+        return []
+    q = np.array(pin.neutral(model))
+    columns = [model.joints[model.getJointId(name)].idx_q for name in shape.joints]
+    changes = np.concatenate(([0], np.flatnonzero(np.any(np.diff(arm_q, axis=0), axis=1)) + 1))
+    changes = changes[_could_touch(robot, shape, base_height_m, arm_q[changes])]
+    events: list[SelfContact] = []
+    touching: set[tuple[str, str]] = set()
+    previous = -2
+    for k in changes:
+        if k != previous + 1:
+            touching = set()  # the ticks in between could not touch
+        q[columns] = arm_q[k]
+        contact = check.contact(q)
+        now = {(contact.first, contact.second)} if contact is not None else set()
+        events += [SelfContact(float(k * dt_s), *pair) for pair in sorted(now - touching)]
+        touching, previous = now, int(k)
+    return events
+
+
+def _could_touch(robot: RobotDescription, shape: RobotShape, base_height_m: float,
+                 q: FloatArray) -> npt.NDArray[np.bool_]:
+    """Per configuration: may a moving part touch another link's part, or the floor?
+
+    A moving part (bounding sphere) is compared with a part fixed on the base through that
+    part's box (which holds a cylinder or sphere too), with another moving part sphere to
+    sphere.
+    """
+    joined = {frozenset((j.parent, j.child)) for j in robot.joints}
+    fixed = shape.fixed()
+    radius = np.array([p.radius_m for p in shape.parts])
+    placed = shape.transforms_to_base(q)
+    centres = placed[..., :3, 3]
+    out = np.zeros(len(q), dtype=bool)
+    for i in np.flatnonzero(~fixed):
+        link = shape.parts[i].link
+        out |= centres[:, i, 2] - radius[i] < -base_height_m  # reaches the floor
+        for j, other in enumerate(shape.parts):
+            if other.link == link or frozenset((link, other.link)) in joined:
+                continue
+            if fixed[j]:
+                local = (centres[:, i] - placed[0, j, :3, 3]) @ placed[0, j, :3, :3]
+                gap = np.linalg.norm(np.maximum(np.abs(local) - other.half_m, 0.0), axis=1)
+                out |= gap < radius[i]
+            else:
+                gap = np.linalg.norm(centres[:, i] - centres[:, j], axis=1)
+                out |= gap < radius[i] + radius[j]
+    return out
