@@ -89,4 +89,4 @@ def _cooked(fd: int) -> Iterator[None]:
     finally:
         if cbreak is not None:
             with contextlib.suppress(termios.error, OSError):
-                tty.setcbreak(fd)
+                tty.setcbreak(fd, termios.TCSADRAIN)  # keep keys typed after fg
