@@ -23,6 +23,7 @@ from servicebot_cli.commands.options import (
     Number,
     RobotArgs,
     format_option,
+    refuse_with,
     refuse_without,
     robot_arguments,
 )
@@ -84,6 +85,12 @@ class IkCommand(Command):
 @click.option("--solutions", type=click.IntRange(min=1), default=3, show_default=True,
               metavar="N",
               help="Converged solutions to compare before returning the one nearest the start.")
+@click.option("--allow-collisions", is_flag=True,
+              help="Accept answers whose links intersect each other or the floor (by "
+              "default such answers are refused and the search goes on).")
+@click.option("--srdf", type=click.Path(exists=True, dir_okay=False), default=None,
+              metavar="FILE",
+              help="An SRDF whose <disable_collisions link1= link2=> pairs are not checked.")
 @deg_option
 @clamp_option
 @batch_options("--targets", help="Batch: one target per line (CSV or JSON Lines, the column "
@@ -95,14 +102,16 @@ def ik(ctx: click.Context, robot_args: RobotArgs, frame: str | None,
        position: tuple[float, float, float] | None, rpy: tuple[float, float, float] | None,
        quat: tuple[float, float, float, float] | None, orientation_axes: str | None,
        start: tuple[tuple[str, float], ...], seed: int | None, with_base: bool, tol_m: float,
-       tol_rad: float, max_attempts: int, solutions: int, deg: bool, clamp: bool,
-       targets: str | None, output: str | None, on_error: Literal["stop", "skip"],
-       fmt: str) -> None:
+       tol_rad: float, max_attempts: int, solutions: int, allow_collisions: bool,
+       srdf: str | None, deg: bool, clamp: bool, targets: str | None, output: str | None,
+       on_error: Literal["stop", "skip"], fmt: str) -> None:
     """Inverse kinematics: joint values that put a frame at a target.
 
-    Joint limits are always respected and continuous joints wrap. Exit code 0 when the
-    target is reached, 1 when not (the best try is printed, with a hint: out of reach by
-    how much, or an orientation the joints cannot make), 2 for bad input.
+    Joint limits are always respected and continuous joints wrap. An answer whose links
+    intersect each other or the floor (the URDF's collision geometry) is refused and the
+    search goes on. Exit code 0 when the target is reached, 1 when not (the best try is
+    printed, with a hint: out of reach by how much, an orientation the joints cannot make,
+    or the two links that would collide), 2 for bad input.
 
     \b
     Examples:
@@ -121,13 +130,16 @@ def ik(ctx: click.Context, robot_args: RobotArgs, frame: str | None,
         refuse_without(ctx, option, "--targets FILE", present=targets is not None)
     refuse_without(ctx, "--clamp", "--start NAME=VALUE", present=bool(start))
     refuse_format_with_file(ctx, output)
+    refuse_with(ctx, "--srdf", "--allow-collisions", present=allow_collisions,
+                why="which checks no pair")
     from servicebot_cli.common.errors import AnswerIsNo
-    from servicebot_cli.kinematics.ik import IkProblem
+    from servicebot_cli.kinematics.ik import CollisionOptions, IkProblem
     from servicebot_cli.kinematics.inverse import IkSettings
     from servicebot_cli.output import ik_report
 
     problem = IkProblem(robot_args.source(), frame, start, seed, with_base,
-                        IkSettings(tol_m, tol_rad, max_attempts, solutions=solutions), deg, clamp)
+                        IkSettings(tol_m, tol_rad, max_attempts, solutions=solutions), deg, clamp,
+                        CollisionOptions(not allow_collisions, srdf))
     if position is not None:
         from servicebot_cli.kinematics.ik import IkRequest, TargetSpec, run
 

@@ -1,4 +1,4 @@
-"""Why IK failed, in one hint: out of reach, an orientation the joints cannot make, or limits.
+"""Why IK failed, in one hint: a collision, out of reach, an orientation, or the limits.
 
 Pure: a solver, a target and a random generator in; a sentence out.
 """
@@ -10,6 +10,7 @@ from dataclasses import replace
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.kinematics.collisions import Contact
 from servicebot_cli.kinematics.inverse import IkSolver, IkTarget
 
 FloatArray = npt.NDArray[np.float64]
@@ -44,3 +45,9 @@ def hint(solver: IkSolver, target: IkTarget, seed: FloatArray, rng: np.random.Ge
     return (f"the target is within the arm's {reach.radius_m:.3g} m, but no configuration "
             f"within the joint limits reached it in {settings.max_attempts} attempts; the "
             "limits may forbid it, or raise --max-attempts")
+
+
+def collision_hint(contact: Contact) -> str:
+    """A hint for a target reached only with links in collision: which two."""
+    return (f"reachable only through a collision: {contact} would intersect; "
+            "--allow-collisions accepts it, or --srdf FILE can disable the pair")

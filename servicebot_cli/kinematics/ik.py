@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
@@ -20,16 +21,34 @@ from servicebot_cli.description.joint_space import JointSpace
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.description.robot import RobotDescription
 from servicebot_cli.kinematics.chain import Chain
-from servicebot_cli.kinematics.diagnosis import hint
+from servicebot_cli.kinematics.collisions import CollisionCheck, build_check
+from servicebot_cli.kinematics.diagnosis import collision_hint, hint
 from servicebot_cli.kinematics.frames import link_names, pick_frame
 from servicebot_cli.kinematics.inverse import IkResult, IkSettings, IkSolver, IkTarget
 from servicebot_cli.kinematics.json_types import JsonObject
+from servicebot_cli.kinematics.srdf import disabled_pairs
 from servicebot_cli.kinematics.targets import make_target, parse_axes
 from servicebot_cli.kinematics.user_joints import clamped_user_vector, user_values
+
+if TYPE_CHECKING:
+    import pinocchio as pin
 
 FloatArray = npt.NDArray[np.float64]
 Clock = Callable[[], float]
 """Seconds from an arbitrary origin (``time.perf_counter``)."""
+
+
+@dataclass(frozen=True)
+class CollisionOptions:
+    """Which answers count as collisions.
+
+    Attributes:
+        check: Refuse answers whose links intersect each other or the floor.
+        srdf: An SRDF whose ``<disable_collisions>`` pairs are not checked; None: none.
+    """
+
+    check: bool = True
+    srdf: str | None = None
 
 
 @dataclass(frozen=True)
@@ -46,6 +65,7 @@ class IkProblem:
         settings: Tolerances and effort.
         deg: Angles in degrees, in and out.
         clamp: Clamp start values outside their limits instead of refusing them.
+        collisions: Which answers count as collisions.
     """
 
     robot: RobotSource
@@ -56,6 +76,7 @@ class IkProblem:
     settings: IkSettings = field(default_factory=IkSettings)
     deg: bool = False
     clamp: bool = False
+    collisions: CollisionOptions = field(default_factory=CollisionOptions)
 
 
 @dataclass(frozen=True)
@@ -134,7 +155,8 @@ class IkSession:
         # a start is a starting point: joints it does not name start inside their limits
         self.robot: RobotDescription = robot
         self.space = space
-        self.solver = IkSolver(chain, problem.settings)
+        check = collision_check(robot, model, problem.robot, problem.collisions, chain.names)
+        self.solver = IkSolver(chain, problem.settings, check)
         self.start: FloatArray = space.to_q(space.clamped(values))
         self.deg = problem.deg
         self.notes = (*((note,) if note else ()), *(c.note() for c in clamped))
@@ -151,7 +173,8 @@ class IkSession:
         begin = self._clock()
         result = self.solver.solve(target, start, self._rng)
         elapsed_s = self._clock() - begin
-        why = None if result.success else hint(self.solver, target, start, self._rng)
+        why = None if result.success else collision_hint(result.contact) if result.contact \
+            else hint(self.solver, target, start, self._rng)
         return IkOutcome(result, elapsed_s, why)
 
     def values(self, outcome: IkOutcome) -> JsonObject:
@@ -187,6 +210,22 @@ class IkAnswer:
     def success(self) -> bool:
         """The target was reached."""
         return self.outcome.success
+
+
+def collision_check(robot: RobotDescription, model: pin.Model, source: RobotSource,
+                    options: CollisionOptions, moving: tuple[str, ...]) -> CollisionCheck | None:
+    """The collision check ``options`` ask for on ``model``, of the pairs ``moving`` moves.
+
+    None when turned off.
+
+    Raises:
+        BadSrdf: An unreadable SRDF, or one that names a link the robot does not have.
+        CollisionSetupError: A collision mesh that cannot be read.
+    """
+    if not options.check:
+        return None
+    disabled = disabled_pairs(options.srdf, link_names(robot)) if options.srdf else ()
+    return build_check(robot, model, source.resolver(), disabled=disabled, moving=moving)
 
 
 def run(request: IkRequest, *, clock: Clock) -> IkAnswer:

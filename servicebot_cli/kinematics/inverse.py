@@ -9,7 +9,9 @@ columns), the error-dependent damping of Sugihara (2011): large steps far away, 
 close in. Steps are capped, and joint limits are enforced after every step by projection,
 so no iterate, and no result, ever leaves them; continuous joints turn freely and wrap.
 
-An attempt that stops improving ends early, and the next starts from a random
+An answer is checked for collisions when the solver has a check (see
+:mod:`~servicebot_cli.kinematics.collisions`); a colliding one does not count, and the search
+goes on. An attempt that stops improving ends early, and the next starts from a random
 configuration within the limits (drawn from the caller's generator, so a fixed seed gives
 the same answer). The first attempt starts from the seed; with a mobile base, the first
 keeps the base still and the second lets it move. Of the converged solutions, the one
@@ -29,6 +31,7 @@ from servicebot_cli.kinematics.residuals import Residual, residual_for
 
 if TYPE_CHECKING:
     from servicebot_cli.kinematics.chain import Chain
+    from servicebot_cli.kinematics.collisions import CollisionCheck, Contact
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -86,6 +89,8 @@ class IkResult:
         iterations: Iterations over all attempts.
         attempts: Attempts made.
         solutions: Converged solutions found (the nearest to the seed was returned).
+        contact: When the target was reached only with links in collision: the first such
+            pair (``q`` is that configuration); None otherwise.
     """
 
     q: FloatArray = field(repr=False)
@@ -95,17 +100,25 @@ class IkResult:
     iterations: int
     attempts: int
     solutions: int
+    contact: Contact | None = None
 
 
 class IkSolver:
     """Solves IK for one chain; reuse it for many targets (batch mode warm-starts)."""
 
-    def __init__(self, chain: Chain, settings: IkSettings | None = None) -> None:
-        """Prepare the solver for ``chain`` with ``settings`` (defaults otherwise)."""
+    def __init__(self, chain: Chain, settings: IkSettings | None = None,
+                 collisions: CollisionCheck | None = None) -> None:
+        """Prepare the solver for ``chain`` with ``settings`` (defaults otherwise).
+
+        With ``collisions``, an answer whose links touch each other or the floor is not
+        one: the search goes on from other restarts. Its model is the one ``chain`` was
+        reduced from.
+        """
         import eigenpy
         import pinocchio as pin
 
         self.chain = chain
+        self.collisions = collisions
         self.settings = settings or IkSettings()
         sizes = range(1, 10 + chain.model.nv)
         self._factor = {n: eigenpy.LLT(np.eye(n)) for n in sizes}
@@ -125,33 +138,59 @@ class IkSolver:
         residual = residual_for(chain, target.position_m, target.rotation, target.axes)
         start = chain.clamp(chain.to_chain(seed))  # a fresh array: results stay in limits
         found: list[tuple[FloatArray, tuple[float, float | None]]] = []  # q, its errors
+        blocked: tuple[FloatArray, tuple[float, float | None], Contact] | None = None
         best_q, best_err2 = start, math.inf
         iterations = attempts = 0
-        while attempts < settings.max_attempts and len(found) < settings.solutions:
+        # beyond the reach sphere no restart can help: one attempt gives the best try
+        limit = 1 if self.out_of_reach(target) else settings.max_attempts
+        while attempts < limit and len(found) < settings.solutions:
             hold_base = chain.base_nq > 0 and attempts == 0
             q0 = start if attempts < (2 if chain.base_nq else 1) else chain.random_q(
                 rng, target.position_m)
             q, err2, used, converged = self._descend(residual, q0.copy(), hold_base)
             attempts, iterations = attempts + 1, iterations + used
             if converged:  # the residual still holds this q's state (and free angles)
-                found.append((q, residual.errors()))
+                contact = self._contact(q, seed)
+                if contact is None:
+                    found.append((q, residual.errors()))
+                elif blocked is None:
+                    blocked = (q, residual.errors(), contact)
             elif err2 < best_err2:
                 best_q, best_err2 = q, err2
-        if not found:  # settle the best try into its local minimum: the best residual
+        if not found and blocked is None:  # settle the best try into its local minimum
             best_q, used, settled = self._settle(residual, best_q.copy())
             iterations += used
             if settled:  # a slow descent, cut short as a stall, that does converge
-                found.append((best_q, residual.errors()))
+                contact = self._contact(best_q, seed)
+                if contact is None:
+                    found.append((best_q, residual.errors()))
+                else:
+                    blocked = (best_q, residual.errors(), contact)
+        contact = None
         if found:
             best_q, (position_error, orientation_error) = min(
                 found, key=lambda item: self._distance(start, item[0]))
+        elif blocked is not None:  # reached, but only through a collision: the best try
+            best_q, (position_error, orientation_error), contact = blocked
         else:
             if residual.last_q is not best_q:
                 residual.reset(best_q)
                 residual.evaluate(best_q)
             position_error, orientation_error = residual.errors()
         return IkResult(chain.to_full(best_q, seed), bool(found), position_error,
-                        orientation_error, iterations, attempts, len(found))
+                        orientation_error, iterations, attempts, len(found), contact)
+
+    def out_of_reach(self, target: IkTarget) -> bool:
+        """True when ``target`` lies beyond the chain's reach sphere (no base to move)."""
+        if self.chain.base_nq:
+            return False
+        return self.chain.reach.beyond_m(target.position_m) > self.settings.tolerance_m
+
+    def _contact(self, q: FloatArray, seed: FloatArray) -> Contact | None:
+        """The collision at chain ``q`` (other joints as in ``seed``); None: free, or unchecked."""
+        if self.collisions is None:
+            return None
+        return self.collisions.contact(self.chain.to_full(q, seed))
 
     def _distance(self, start: FloatArray, q: FloatArray) -> float:
         """How far ``q`` is from ``start`` (continuous joints the short way round)."""

@@ -51,6 +51,8 @@ def ik_output(answer: IkAnswer, fmt: str) -> str:
 
 def refusal(answer: IkAnswer) -> str:
     """The one stderr line when the target was not reached."""
+    if answer.outcome.result.contact is not None:  # the hint names the two links
+        return f"no IK solution for {answer.frame}: {answer.outcome.hint}"
     return (f"no IK solution for {answer.frame}: best position error "
             f"{answer.outcome.result.position_error_m:.3g} m; {answer.outcome.hint}")
 
