@@ -8,9 +8,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from servicebot_cli.batch.fk_chunks import stream_csv
 from servicebot_cli.batch.fk_rows import FkBatch
 from servicebot_cli.batch.policy import OnError
-from servicebot_cli.batch.stream import BatchSummary, RowSink, Warn, stream
+from servicebot_cli.batch.reading import open_source
+from servicebot_cli.batch.stream import BatchSummary, RowSink, Warn, stream_source
 from servicebot_cli.description.loader import load
 from servicebot_cli.kinematics.fk import FrameQuery, resolve_frames
 
@@ -44,7 +46,13 @@ def run(request: FkBatchRequest, sink: RowSink, *, warn: Warn) -> BatchSummary:
     for note in notes:
         warn(note)
     rows = FkBatch(robot, frames, reference, deg=query.deg, clamp=query.clamp)
-    summary = stream(rows, request.configs, sink, on_error=request.on_error, warn=warn)
+    source, handle = open_source(request.configs)
+    with handle:
+        if source.kind == "csv":
+            summary = stream_csv(rows, source, handle, sink, on_error=request.on_error,
+                                 warn=warn)
+        else:
+            summary = stream_source(rows, source, sink, on_error=request.on_error, warn=warn)
     if rows.clamped_values:
         warn(f"note: --clamp moved {rows.clamped_values} joint value"
              f"{'s' if rows.clamped_values != 1 else ''} onto a limit, on {rows.clamped_lines} "

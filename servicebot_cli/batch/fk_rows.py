@@ -25,10 +25,15 @@ import numpy.typing as npt
 from servicebot_cli.batch.reading import Row
 from servicebot_cli.batch.stream import RowKind
 from servicebot_cli.common.errors import JointNotFound
-from servicebot_cli.kinematics.forward import pose_table, transforms
+from servicebot_cli.kinematics.forward import configurations, frame_transforms, pose_table
 from servicebot_cli.kinematics.frames import frame_id, link_names
 from servicebot_cli.kinematics.json_types import JsonObject, JsonValue
-from servicebot_cli.kinematics.user_joints import Mimics, clamped_user_vector, row_pairs
+from servicebot_cli.kinematics.user_joints import (
+    Mimics,
+    angular,
+    clamped_user_vector,
+    row_pairs,
+)
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -36,6 +41,7 @@ if TYPE_CHECKING:
 FloatArray = npt.NDArray[np.float64]
 
 CHUNK = 512
+_LIMIT_SLACK = 1e-9  # as JointSpace.checked: a value this far outside a limit is on it
 # Columns of an ik result that are not joints: fk input skips them.
 RESULT_COLUMNS = ("line", "success", "position_error_m", "orientation_error_rad", "iterations",
                   "attempts", "solutions", "solve_time_s", "base_x_m", "base_y_m",
@@ -106,17 +112,69 @@ class FkBatch:
         """One output row per input row, computed a chunk at a time."""
         iterator = iter(items)
         while chunk := list(itertools.islice(iterator, CHUNK)):
-            matrices = np.stack([
-                transforms(self.model, self.data, self.space.to_q(values), self.ids,
-                           self.reference)
-                for _, values in chunk
-            ])
-            poses = pose_table(matrices) + 0.0  # no -0.0 in the output
-            if self.deg:
-                poses[..., 3:6] = np.degrees(poses[..., 3:6])
+            poses = self.pose_table(np.stack([values for _, values in chunk]))
             for (row, _), values in zip(chunk, poses, strict=True):
-                yield self._json_row(row.line, values) if kind == "jsonl" else \
+                yield self.json_row(row.line, values) if kind == "jsonl" else \
                     self._csv_row(row.line, values)
+
+    def chunk_vectors(self, given: FloatArray, joints: Sequence[int]) -> FloatArray | None:
+        """Joint values of many lines at once, as :meth:`parse` reads one line.
+
+        Args:
+            given: Values in the user's units, shape (lines, len(joints)).
+            joints: The joint-space index of each column.
+
+        Returns:
+            Shape (lines, joints of the space) [rad or m]; None when a value lies outside
+            its limits without ``clamp`` (the per-line path then names it).
+        """
+        space = self.space
+        values = np.zeros((given.shape[0], len(space.names)))
+        values[:, joints] = given
+        named = np.zeros(len(space.names), dtype=bool)
+        named[list(joints)] = True
+        if self.deg:
+            values = np.where(angular(space), np.radians(values), values)
+        mimics = self.mimics
+        for f, lead, k, c in zip(mimics.follower, mimics.leader, mimics.multiplier,
+                                 mimics.offset, strict=True):
+            if not named[f]:
+                values[:, f] = k * values[:, lead] + c
+        named[list(mimics.follower)] |= named[list(mimics.leader)]
+        bounded = ~np.isnan(space.lower)
+        inside = values.copy()
+        inside[:, bounded] = np.clip(values[:, bounded], space.lower[bounded],
+                                     space.upper[bounded])
+        if self.clamp:
+            moved = named & (np.abs(values - inside) > 1e-9)
+            self.clamped_values += int(moved.sum())
+            self.clamped_lines += int(moved.any(axis=1).sum())
+            return np.where(named, inside, values)
+        probe = np.where(named, values, inside)[:, bounded]
+        low, high = space.lower[bounded] - _LIMIT_SLACK, space.upper[bounded] + _LIMIT_SLACK
+        if not ((probe >= low) & (probe <= high)).all():
+            return None
+        return values
+
+    def pose_table(self, values: FloatArray) -> FloatArray:
+        """Poses of the frames for many configurations (see :func:`pose_table`).
+
+        Args:
+            values: One value per joint [rad or m], shape (lines, joints of the space).
+
+        Returns:
+            Shape (lines, frames, 10), angles in the user's unit, no ``-0.0``.
+        """
+        matrices = frame_transforms(self.model, self.data, configurations(self.space, values),
+                                    self.ids, self.reference)
+        poses = pose_table(matrices) + 0.0
+        if self.deg:
+            poses[..., 3:6] = np.degrees(poses[..., 3:6])
+        return poses
+
+    def json_row(self, line: int, poses: FloatArray) -> JsonObject:
+        """One JSON Lines result: the line and each frame's pose."""
+        return self._json_row(line, poses)
 
     def _json_row(self, line: int, poses: FloatArray) -> JsonObject:
         table = poses.tolist()

@@ -7,11 +7,11 @@ command ends with a count of what it skipped.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from typing import Literal, TypeAlias, TypeVar
 
-from servicebot_cli.batch.reading import Row, Source
+from servicebot_cli.batch.reading import Row
 from servicebot_cli.common.errors import ServicebotError
 
 T = TypeVar("T")
@@ -41,12 +41,14 @@ class Tally:
     skipped: int = 0
 
 
-def handled(source: Source, handle: Callable[[Row], T], *, on_error: OnError,
-            warn: Callable[[str], None], tally: Tally) -> Iterator[tuple[Row, T]]:
-    """``(row, handle(row))`` for every usable row of ``source``, lazily.
+def handled(display: str, rows: Iterable[Row], handle: Callable[[Row], T], *,
+            on_error: OnError, warn: Callable[[str], None],
+            tally: Tally) -> Iterator[tuple[Row, T]]:
+    """``(row, handle(row))`` for every usable row of ``rows``, lazily.
 
     Args:
-        source: The open input.
+        display: The input's name for messages.
+        rows: The rows of the open input.
         handle: Turns a row into a result; raises a ServicebotError for unusable content.
         on_error: ``stop`` or ``skip``.
         warn: Where skipped lines are reported (stderr).
@@ -55,14 +57,14 @@ def handled(source: Source, handle: Callable[[Row], T], *, on_error: OnError,
     Raises:
         BadLine: The first unusable line, under ``stop``.
     """
-    for row in source.rows:
+    for row in rows:
         tally.rows += 1
         try:
             if row.error:
                 raise RowError(row.error)
             result = handle(row)
         except ServicebotError as exc:
-            where = f"{source.display}:{row.line}"
+            where = f"{display}:{row.line}"
             if on_error == "stop":
                 raise BadLine(f"{where}: {exc} (--on-error skip goes on without the line)") \
                     from None

@@ -14,7 +14,7 @@ from __future__ import annotations
 import csv
 import itertools
 import json
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import IO
@@ -57,12 +57,18 @@ class Source:
         kind: ``csv`` or ``jsonl``.
         columns: CSV header names (empty for JSON Lines).
         rows: The rows, read lazily.
+        delimiter: The CSV delimiter (``,``, or a tab for ``.tsv``).
+        header_line: The header's line number (0 for JSON Lines). Until ``rows`` is read,
+            the handle :func:`open_source` returns stands just after it, so a reader of
+            chunks of raw lines (see :mod:`servicebot_cli.batch.fk_chunks`) may take over.
     """
 
     display: str
     kind: str
     columns: tuple[str, ...]
     rows: Iterator[Row]
+    delimiter: str = ","
+    header_line: int = 0
 
 
 def open_source(path: str) -> tuple[Source, IO[str]]:
@@ -84,7 +90,14 @@ def open_source(path: str) -> tuple[Source, IO[str]]:
     delimiter = "\t" if path.endswith(".tsv") else ","
     header = _split(first[1], delimiter)
     _check_header(display, first[0], header)
-    return Source(display, kind, tuple(header), _csv_rows(lines, header, delimiter)), handle
+    return Source(display, kind, tuple(header), csv_rows(lines, header, delimiter), delimiter,
+                  first[0]), handle
+
+
+def meaningful(text: str) -> bool:
+    """Whether line ``text`` holds data: not blank, not a ``#`` comment."""
+    stripped = text.strip()
+    return bool(stripped) and not stripped.startswith("#")
 
 
 def _numbered(handle: IO[str]) -> Iterator[tuple[int, str]]:
@@ -129,8 +142,9 @@ def _is_number(text: str) -> bool:
     return True
 
 
-def _csv_rows(lines: Iterator[tuple[int, str]], header: list[str],
-              delimiter: str) -> Iterator[Row]:
+def csv_rows(lines: Iterable[tuple[int, str]], header: Sequence[str],
+             delimiter: str) -> Iterator[Row]:
+    """A row per ``(line number, text)`` of a CSV body; a malformed line as an error row."""
     for number, text in lines:
         try:
             cells = _split(text, delimiter)

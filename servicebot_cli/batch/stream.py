@@ -13,12 +13,27 @@ from dataclasses import dataclass
 from typing import Literal, Protocol, TypeAlias, TypeVar
 
 from servicebot_cli.batch.policy import OnError, Tally, handled
-from servicebot_cli.batch.reading import Row, open_source
+from servicebot_cli.batch.reading import Row, Source, open_source
 from servicebot_cli.kinematics.json_types import JsonObject
 
 RowKind: TypeAlias = Literal["csv", "jsonl"]
 """The shape of result rows: flat CSV columns, or nested JSON Lines objects."""
-WriteRow = Callable[[JsonObject], None]
+
+
+class WriteRow(Protocol):
+    """Writes result rows: one at a time, or a block of rows already formatted."""
+
+    @property
+    def delimiter(self) -> str:
+        """The CSV delimiter of the output."""
+
+    def __call__(self, row: JsonObject) -> None:
+        """Write one row (a dict with the columns as keys)."""
+
+    def text(self, rows: str) -> None:
+        """Write rows already formatted in the output's format, each ending in a newline."""
+
+
 Warn = Callable[[str], None]
 """Where a batch says what it skipped or changed: one line each (stderr)."""
 T = TypeVar("T")
@@ -80,14 +95,41 @@ def stream(stage: Stage[T], path: str, sink: RowSink, *, on_error: OnError,
         BadLine: An unusable line under ``--on-error stop``.
     """
     source, handle = open_source(path)
-    tally = Tally()
     with handle:
-        if source.kind == "csv":
-            stage.check_header(source.columns)
-        items = handled(source, stage.parse, on_error=on_error, warn=warn, tally=tally)
-        with sink.open(stage.columns()) as write:
-            for result in stage.results(items, sink.kind):
-                write(result)
+        return stream_source(stage, source, sink, on_error=on_error, warn=warn)
+
+
+def stream_source(stage: Stage[T], source: Source, sink: RowSink, *, on_error: OnError,
+                  warn: Warn) -> BatchSummary:
+    """:func:`stream` on an input already open (the caller closes it).
+
+    Raises:
+        JointNotFound, BadTarget: A CSV header the stage cannot use.
+        BadLine: An unusable line under ``--on-error stop``.
+    """
+    tally = Tally()
+    if source.kind == "csv":
+        stage.check_header(source.columns)
+    with sink.open(stage.columns()) as write:
+        write_results(stage, source.rows, source.display, write, sink.kind,
+                      on_error=on_error, warn=warn, tally=tally)
+    return summarise(source.display, tally, warn)
+
+
+def write_results(stage: Stage[T], rows: Iterable[Row], display: str, write: WriteRow,
+                  kind: RowKind, *, on_error: OnError, warn: Warn, tally: Tally) -> None:
+    """Parse ``rows`` one by one through ``stage`` and write its results (the per-line path).
+
+    Raises:
+        BadLine: An unusable line under ``--on-error stop``.
+    """
+    items = handled(display, rows, stage.parse, on_error=on_error, warn=warn, tally=tally)
+    for result in stage.results(items, kind):
+        write(result)
+
+
+def summarise(display: str, tally: Tally, warn: Warn) -> BatchSummary:
+    """The summary of a run; says on ``warn`` how many lines were skipped."""
     if tally.skipped:
-        warn(f"skipped {tally.skipped} of {tally.rows} lines of {source.display}")
-    return BatchSummary(source.display, tally.rows, tally.skipped)
+        warn(f"skipped {tally.skipped} of {tally.rows} lines of {display}")
+    return BatchSummary(display, tally.rows, tally.skipped)

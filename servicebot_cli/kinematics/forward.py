@@ -21,6 +21,8 @@ from servicebot_cli.kinematics.frames import frame_id
 if TYPE_CHECKING:
     import pinocchio as pin
 
+    from servicebot_cli.description.joint_space import JointSpace
+
 FloatArray = npt.NDArray[np.float64]
 
 
@@ -78,6 +80,55 @@ def transforms(model: pin.Model, data: pin.Data, q: FloatArray, frames: Sequence
         transform_frame_to_world = pin.updateFramePlacement(model, data, frame)
         out[k] = transform_reference_to_world.actInv(transform_frame_to_world).homogeneous
     return out
+
+
+def frame_transforms(model: pin.Model, data: pin.Data, qs: FloatArray, frames: Sequence[int],
+                     reference: int) -> FloatArray:
+    """:func:`transforms` for many configurations: the same numbers, bit for bit.
+
+    Only the forward pass and the asked frames are computed per configuration. When the
+    reference is the root itself (its pose the identity at every ``q``), the product with
+    its inverse, which would change nothing, is skipped.
+
+    Args:
+        model: The Pinocchio model.
+        data: Its data (overwritten).
+        qs: Configurations, shape (n, model.nq).
+        frames: Frame indices.
+        reference: Index of the reference frame.
+
+    Returns:
+        Shape (n, len(frames), 4, 4).
+    """
+    import pinocchio as pin
+
+    forward_kinematics, place = pin.forwardKinematics, pin.updateFramePlacement
+    out = np.empty((len(qs), len(frames), 4, 4))
+    at_root = (model.frames[reference].parentJoint == 0
+               and model.frames[reference].placement.isIdentity(0.0))
+    for k, q in enumerate(qs):
+        forward_kinematics(model, data, q)
+        if at_root:
+            for i, frame in enumerate(frames):
+                out[k, i] = place(model, data, frame).homogeneous
+            continue
+        transform_reference_to_world = place(model, data, reference).copy()
+        for i, frame in enumerate(frames):
+            out[k, i] = transform_reference_to_world.actInv(place(model, data, frame)).homogeneous
+    return out
+
+
+def configurations(space: JointSpace, values: FloatArray) -> FloatArray:
+    """``space.to_q`` of each row of ``values`` (one value per joint), shape (n, nq)."""
+    qs = np.tile(space.neutral(), (len(values), 1))
+    for i, kind in enumerate(space.types):
+        start = space.idx_q[i]
+        if kind == "continuous":  # (cos, sin) in q
+            qs[:, start] = np.cos(values[:, i])
+            qs[:, start + 1] = np.sin(values[:, i])
+        else:
+            qs[:, start] = values[:, i]
+    return qs
 
 
 def frame_poses(model: pin.Model, data: pin.Data, q: FloatArray, frames: Sequence[str],

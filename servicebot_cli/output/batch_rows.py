@@ -75,22 +75,32 @@ class RowFile:
             yield _writer(handle, self._kind, columns, delimiter)
 
 
+class _Writer:
+    """Writes rows to ``handle``: JSON Lines, or CSV after a header of ``columns``."""
+
+    def __init__(self, handle: IO[str], kind: RowKind, columns: Sequence[str],
+                 delimiter: str) -> None:
+        self.delimiter, self._kind, self._keys = delimiter, kind, list(columns)
+        self._handle = handle
+        self._dumps = json.dumps
+        self._csv = csv.writer(handle, delimiter=delimiter, lineterminator="\n")
+        if kind == "csv":
+            self._csv.writerow(columns)
+
+    def __call__(self, row: JsonObject) -> None:
+        """Write one row."""
+        if self._kind == "jsonl":
+            self._handle.write(self._dumps(row, allow_nan=False) + "\n")
+        else:
+            self._csv.writerow([_cell(row.get(key)) for key in self._keys])
+
+    def text(self, rows: str) -> None:
+        """Write rows already formatted, each ending in a newline."""
+        self._handle.write(rows)
+
+
 def _writer(handle: IO[str], kind: RowKind, columns: Sequence[str], delimiter: str) -> WriteRow:
-    if kind == "jsonl":
-        dumps, write = json.dumps, handle.write
-
-        def write_json(row: JsonObject) -> None:
-            write(dumps(row, allow_nan=False) + "\n")
-
-        return write_json
-    writer = csv.writer(handle, delimiter=delimiter, lineterminator="\n")
-    writer.writerow(columns)
-    keys = list(columns)
-
-    def write_csv(row: JsonObject) -> None:
-        writer.writerow([_cell(row.get(key)) for key in keys])
-
-    return write_csv
+    return _Writer(handle, kind, columns, delimiter)
 
 
 def _cell(value: JsonValue) -> JsonValue:

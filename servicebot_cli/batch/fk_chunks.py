@@ -1,0 +1,122 @@
+"""``fk --configs`` on CSV, a chunk of lines at a time: parse, place and format with numpy.
+
+Most of a batch's time would go to Python work per line: a dict per row, a conversion per
+cell, a writer call per result. Here a chunk of :data:`CHUNK_LINES` lines is split at once,
+each joint column converted with one ``map(float, ...)``, the limits checked on the whole
+chunk, the poses computed by Pinocchio into one array, and the CSV text of the chunk made by
+one ``repr`` of its rows. Numbers are written as before: ``repr`` of each float, so output
+is byte for byte the per-line path's.
+
+A chunk with a line the fast path cannot take (a quoted or empty cell, a wrong field count,
+not a number, a value outside its limits) goes through the per-line path instead, so every
+error still names its line and ``--on-error`` behaves the same. Memory stays bounded by
+the chunk size.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+from typing import IO
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.batch.fk_rows import RESULT_COLUMNS, FkBatch
+from servicebot_cli.batch.policy import OnError, Tally
+from servicebot_cli.batch.reading import Source, csv_rows, meaningful
+from servicebot_cli.batch.stream import BatchSummary, RowSink, Warn, summarise, write_results
+
+FloatArray = npt.NDArray[np.float64]
+
+CHUNK_LINES = 4096
+"""Raw lines read, parsed and written at a time."""
+
+
+def stream_csv(batch: FkBatch, source: Source, handle: IO[str], sink: RowSink, *,
+               on_error: OnError, warn: Warn) -> BatchSummary:
+    """Poses for every line of an open CSV ``source``, chunk by chunk, to ``sink``.
+
+    Args:
+        batch: The frames, units and clamping.
+        source: The input, its header read (``handle`` stands just after it).
+        handle: The open input.
+        sink: Where result rows go.
+        on_error: What a bad line does.
+        warn: Where skipped lines are reported.
+
+    Raises:
+        JointNotFound: A header column that is neither a joint nor an ik result column.
+        BadLine: An unusable line under ``--on-error stop``.
+    """
+    batch.check_header(source.columns)
+    parser = ChunkParser(batch, source.columns, source.delimiter)
+    tally = Tally()
+    number = source.header_line
+    with sink.open(batch.columns()) as write:
+        while raw := list(itertools.islice(handle, CHUNK_LINES)):
+            lines = _numbered(raw, number)
+            number += len(raw)
+            values = parser.values([text for _, text in lines]) if lines else None
+            if values is None:  # line by line: the messages name the line
+                write_results(batch, csv_rows(lines, source.columns, source.delimiter),
+                              source.display, write, sink.kind, on_error=on_error, warn=warn,
+                              tally=tally)
+                continue
+            tally.rows += len(lines)
+            numbers = [n for n, _ in lines]
+            poses = batch.pose_table(values)
+            if sink.kind == "csv":
+                write.text(csv_text(numbers, poses, write.delimiter))
+            else:
+                for line, row in zip(numbers, poses, strict=True):
+                    write(batch.json_row(line, row))
+    return summarise(source.display, tally, warn)
+
+
+class ChunkParser:
+    """Joint values of a chunk of CSV lines, or None when a line needs the per-line path."""
+
+    def __init__(self, batch: FkBatch, columns: Sequence[str], delimiter: str) -> None:
+        """Read ``columns`` (the header) for ``batch``'s joints."""
+        self.batch, self.delimiter = batch, delimiter
+        self.width = len(columns)
+        self.joint_columns = [k for k, name in enumerate(columns) if name not in RESULT_COLUMNS]
+        self.joints = [batch.space.index(columns[k]) for k in self.joint_columns]
+
+    def values(self, texts: list[str]) -> FloatArray | None:
+        """One value per joint and line [rad or m], limits checked; None: go line by line."""
+        delimiter = self.delimiter
+        joined = delimiter.join(texts)
+        cells = joined.split(delimiter)
+        if '"' in joined or len(cells) != self.width * len(texts) or \
+                set(map(str.count, texts, itertools.repeat(delimiter))) != {self.width - 1}:
+            return None
+        try:
+            given = np.array([list(map(float, cells[k::self.width]))
+                              for k in self.joint_columns]).reshape(len(self.joints), -1).T
+        except ValueError:
+            return None
+        if not np.isfinite(given).all():
+            return None
+        return self.batch.chunk_vectors(given, self.joints)
+
+
+def _numbered(raw: list[str], before: int) -> list[tuple[int, str]]:
+    """``(line number, text)`` of the meaningful lines of ``raw``, which follow line ``before``."""
+    text = "".join(raw)
+    texts = text.splitlines()
+    if "#" not in text and len(texts) == len(raw) and not any(map(str.isspace, raw)):
+        return list(zip(range(before + 1, before + 1 + len(raw)), texts, strict=True))
+    return [(before + k, line.rstrip("\r\n")) for k, line in enumerate(raw, start=1)
+            if meaningful(line)]
+
+
+def csv_text(lines: Sequence[int], poses: FloatArray, delimiter: str) -> str:
+    """CSV rows ``line, pose...`` for a chunk: ``repr`` of every number, as csv.writer writes.
+
+    One ``repr`` of the whole table: a list's ``repr`` writes each float with ``repr``.
+    """
+    table = [[line, *row] for line, row in zip(lines, poses.reshape(len(lines), -1).tolist(),
+                                                strict=True)]
+    return repr(table)[2:-2].replace("], [", "\n").replace(", ", delimiter) + "\n"
