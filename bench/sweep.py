@@ -3,8 +3,8 @@
 A sweep of the default scenario (RUNS runs: 2 grid values x RUNS/2 seeds) runs through the
 same function as the command (servicebot_cli.sweep.session.run), in a fresh output directory
 each time, with 1 and with 2 local workers. Beside it, the same run alone in this process
-(run_and_write, what simulate times). Overhead per run = sweep wall time with one worker /
-RUNS - one run alone. Medians of --repeat tries.
+(run_and_write, what simulate times). Overhead per run = (sweep wall time with one worker -
+the sum of its runs' own wall times) / RUNS, beside one run alone. Medians of --repeat tries.
 Run: python bench/sweep.py [--runs 200] [--duration-s 180] [--repeat 3]
 """
 
@@ -30,12 +30,14 @@ from servicebot_cli.simulate.session import Outputs, Overrides, run_and_write, w
 from servicebot_cli.sweep.session import SweepRequest, run  # noqa: E402
 
 
-def sweep_wall(sweep_file: Path, jobs: int) -> tuple[float, int]:
+def sweep_wall(sweep_file: Path, jobs: int) -> tuple[float, int, float]:
+    """Wall time of the whole sweep, its runs, and the sum of the runs' own wall times [s]."""
     with tempfile.TemporaryDirectory() as out:
         start = time.perf_counter()
         report = run(SweepRequest(str(sweep_file), RobotSource.bundled("sim"), jobs=jobs,
                                   out_dir=out, progress=False))
-        return time.perf_counter() - start, len(report.results)
+        wall = time.perf_counter() - start
+        return wall, len(report.results), sum(r.record.wall_s for r in report.results)
 
 
 def alone_wall(duration_s: float, repeat: int) -> float:
@@ -63,14 +65,19 @@ def main() -> None:
             "grid": {"slip.track_factor": [1.0, 1.1]}, "expect": ["collisions == 0"]}))
         alone = alone_wall(args.duration_s, 2 * args.repeat + 1)
         walls: dict[int, list[float]] = {1: [], 2: []}
+        overheads: list[float] = []
+        load = os.getloadavg()[0]
         for _ in range(args.repeat):
             for jobs in (1, 2):
-                wall, runs = sweep_wall(sweep_file, jobs)
+                wall, runs, simulating = sweep_wall(sweep_file, jobs)
                 walls[jobs].append(wall)
+                if jobs == 1:  # what the sweep adds to its runs, per run
+                    overheads.append((wall - simulating) / runs)
     one, two = (statistics.median(walls[j]) for j in (1, 2))
-    overhead = one / runs - alone
+    overhead = statistics.median(overheads)
     print(f"default scenario, {args.duration_s:g} s simulated, {runs} runs, median of "
-          f"{args.repeat}")
+          f"{args.repeat}; load average {load:.1f} before, {os.getloadavg()[0]:.1f} after "
+          f"on {os.cpu_count()} cores")
     print(f"{'':34}{'wall [s]':>10}{'per run [s]':>13}")
     print(f"{'one run alone (run_and_write)':34}{'':>10}{alone:>13.3f}")
     print(f"{'sweep, 1 worker':34}{one:>10.2f}{one / runs:>13.3f}")
