@@ -116,7 +116,8 @@ def run(request: FkRequest) -> FkResult:
     space = robot.joint_space
     values, clamped = clamped_user_vector(space, request.joints, deg=query.deg,
                                           clamp=query.clamp,
-                                          mimics=Mimics.of(robot.joints, space))
+                                          mimics=Mimics.of(robot.joints, space),
+                                          fixed=[j.name for j in robot.joints if not j.movable])
     outside = unnamed_outside(space, values)
     if outside:
         notes += (f"note: {', '.join(outside)} not given: 0, outside the limits "

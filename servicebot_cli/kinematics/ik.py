@@ -150,8 +150,9 @@ class IkSession:
         space = JointSpace.of(model, robot.movable_joints) if problem.with_base \
             else robot.joint_space
         chain = Chain(model, space, frame, link_names(robot))
-        values, clamped = clamped_user_vector(space, problem.start, deg=problem.deg,
-                                              clamp=problem.clamp)
+        values, clamped = clamped_user_vector(
+            space, problem.start, deg=problem.deg, clamp=problem.clamp,
+            fixed=[j.name for j in robot.joints if not j.movable])
         # a start is a starting point: joints it does not name start inside their limits
         self.robot: RobotDescription = robot
         self.space = space

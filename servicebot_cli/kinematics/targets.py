@@ -27,6 +27,8 @@ from servicebot_cli.kinematics.rotations import (
 )
 from servicebot_cli.kinematics.user_joints import number
 
+MAX_POSITION_M = 1e6
+"""Largest target coordinate [m]: beyond it squares overflow long before any robot reaches."""
 POSITION_KEYS = (("x_m", "y_m", "z_m"), ("x", "y", "z"))
 QUATERNION_KEYS = ("qx", "qy", "qz", "qw")
 _JSON_LISTS = {"position_m": ("x_m", "y_m", "z_m"), "position": ("x_m", "y_m", "z_m"),
@@ -75,6 +77,10 @@ def make_target(position: Sequence[float], *, rpy: Sequence[float] | None = None
     for value in (*position, *(rpy or ()), *(quat or ())):
         if not math.isfinite(value):
             raise BadTarget(f"target value {value} is not a finite number")
+    for value in position:
+        if abs(value) > MAX_POSITION_M:
+            raise BadTarget(f"target position {value:g} m is not a place a robot reaches; "
+                            f"give metres within +-{MAX_POSITION_M:g}")
     try:
         rotation = None
         if quat is not None:

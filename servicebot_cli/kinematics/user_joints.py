@@ -6,15 +6,16 @@ and reported, in the unit the user typed. Pure: values in, arrays out.
 
 from __future__ import annotations
 
+import difflib
 import math
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Collection, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.common.errors import OutOfLimits, ServicebotError
+from servicebot_cli.common.errors import JointNotFound, OutOfLimits, ServicebotError
 from servicebot_cli.kinematics.json_types import JsonValue
 
 if TYPE_CHECKING:
@@ -116,12 +117,14 @@ def user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *, deg: b
 
 
 def clamped_user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *,
-                        deg: bool = False, clamp: bool = False, mimics: Mimics | None = None
-                        ) -> tuple[FloatArray, tuple[Clamped, ...]]:
+                        deg: bool = False, clamp: bool = False, mimics: Mimics | None = None,
+                        fixed: Collection[str] = ()) -> tuple[FloatArray, tuple[Clamped, ...]]:
     """As :func:`user_vector`, with what ``clamp`` moved onto a limit, joint by joint.
 
+    ``fixed`` names the robot's fixed joints: giving one a value is refused as such.
+
     Raises:
-        JointNotFound: An unknown name, nearest names first.
+        JointNotFound: An unknown name, nearest names first; a fixed joint, as fixed.
         BadNumber: A joint named twice.
         OutOfLimits: A given value outside its limits (unless ``clamp``), in the user's unit.
     """
@@ -129,6 +132,10 @@ def clamped_user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *
     for name, value in pairs:
         if name in assignments:
             raise BadNumber(f"joint '{name}' is given twice; give each joint once")
+        if name in fixed and name not in space.names:
+            near = difflib.get_close_matches(name, space.names, n=3, cutoff=0.0)
+            raise JointNotFound(f"joint '{name}' is fixed: it has no value to give; name a "
+                                f"movable joint ({', '.join(near)}, ...)")
         assignments[name] = value
     values = np.zeros(len(space.names))
     named = np.zeros(len(space.names), dtype=bool)
