@@ -47,6 +47,10 @@ PLOT_SUFFIXES = (".png", ".svg", ".pdf")
               help="Acceleration limit [m/s^2].  [default: none]")
 @click.option("--max-angular-acceleration", "max_angular", type=Number("RAD_S2", positive=True),
               help="Angular acceleration limit [rad/s^2].  [default: none]")
+@click.option("--controllers", "controllers_file", type=click.Path(dir_okay=False),
+              help="ros2_control controllers file for diff_drive_controller's parameters "
+              "[default: the one the robot's gazebo_ros2_control plugin names, else "
+              "controllers.yaml beside the robot].")
 @click.option("--speed", type=Number(positive=True), default=1.0,
               show_default=True, help="Playback speed of the live window (not with --headless).")
 @click.option("--progress/--no-progress", default=None,
@@ -56,7 +60,8 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
              out_dir: str | None, bag: str | None, plot: str | None, seed: int,
              duration_s: float | None, wheel_separation_multiplier: float | None,
              saturation: str | None, cmd_vel_timeout_s: float | None, max_linear: float | None,
-             max_angular: float | None, speed: float, progress: bool | None, fmt: str) -> None:
+             max_angular: float | None, controllers_file: str | None, speed: float,
+             progress: bool | None, fmt: str) -> None:
     """Simulate the robot's base, arm and sensors, headless and fast.
 
     Drives the diff-drive base with the scenario's timed cmd_vel, moves the arm along its
@@ -79,7 +84,8 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
                           wheel_separation_multiplier=wheel_separation_multiplier,
                           cmd_vel_timeout_s=cmd_vel_timeout_s,
                           max_linear_acceleration_m_s2=max_linear,
-                          max_angular_acceleration_rad_s2=max_angular)
+                          max_angular_acceleration_rad_s2=max_angular,
+                          controllers_file=controllers_file)
     request = SimulateRequest(robot_args.source(), scenario_file, overrides, seed,
                               Outputs(out_dir, bag, plot), live_window=not headless,
                               progress=progress)

@@ -43,6 +43,7 @@ class Overrides:
     cmd_vel_timeout_s: float | None = None
     max_linear_acceleration_m_s2: float | None = None
     max_angular_acceleration_rad_s2: float | None = None
+    controllers_file: str | None = None
 
 
 @dataclass(frozen=True)
@@ -107,27 +108,42 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
     scenario_dir = Path(request.scenario_file).parent if request.scenario_file else Path.cwd()
     return run_and_write(robot, scenario, seed=request.seed, outputs=request.outputs,
                          scenario_dir=scenario_dir, stderr=stderr, progress=request.progress,
-                         clock=clock)
+                         clock=clock, controllers=request.overrides.controllers_file)
 
 
 def with_overrides(scenario: Scenario, overrides: Overrides) -> Scenario:
     """``scenario`` with the values of ``overrides`` that are not None in place of its own."""
     changes = {f.name: getattr(overrides, f.name) for f in dataclasses.fields(overrides)
-               if f.name != "duration_s" and getattr(overrides, f.name) is not None}
+               if f.name not in ("duration_s", "controllers_file")
+               and getattr(overrides, f.name) is not None}
     controller = dataclasses.replace(scenario.controller, **changes)
     duration_s = scenario.duration_s if overrides.duration_s is None else overrides.duration_s
-    return dataclasses.replace(scenario, controller=controller, duration_s=duration_s)
+    return dataclasses.replace(scenario, controller=controller, duration_s=duration_s,
+                               controller_cli=scenario.controller_cli | frozenset(changes))
 
 
 def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
                   outputs: Outputs, scenario_dir: Path, stderr: TextIO | None = None,
                   progress: bool | None = None,
-                  clock: Callable[[], float] = time.perf_counter) -> SimulateReport:
+                  clock: Callable[[], float] = time.perf_counter,
+                  controllers: str | None = None) -> SimulateReport:
     """Run ``scenario`` on a loaded robot and write ``outputs``; the wall time excludes loading.
 
+    The controller's parameters come from the controllers file (``controllers``, else the
+    one the robot names or has beside it) where the scenario does not set them.
+
     Raises:
-        ServicebotError: Bad scenario for this robot, or an output that cannot be written.
+        ServicebotError: Bad scenario for this robot, an unreadable controllers file, or an
+            output that cannot be written.
     """
+    from servicebot_cli.simulate.controllers.config import (
+        find_controllers_file,
+        read_controllers_file,
+    )
+    from servicebot_cli.simulate.controllers.resolve import resolve
+
+    scenario = resolve(scenario, read_controllers_file(find_controllers_file(robot,
+                                                                             controllers)))
     from servicebot_cli.simulate import simulator
     from servicebot_cli.simulate.bag import ros_messages
     from servicebot_cli.simulate.body import sim_robot

@@ -83,6 +83,14 @@ class Summary(TypedDict):
     arm_final_positions_rad: dict[str, float]
     end_effector: EndEffector | None
     messages: dict[str, int]
+    controller: dict[str, ControllerValue]
+
+
+class ControllerValue(TypedDict):
+    """One controller parameter: its value (None: no limit) and where it came from."""
+
+    value: float | str | list[float] | None
+    source: str
 
 
 def _pose(x: float, y: float, yaw: float) -> Pose:
@@ -133,7 +141,20 @@ def summarize(result: SimResult, streams: Sequence[Stream]) -> Summary:
                                             result.arm_positions_rad[-1].tolist(), strict=True)),
         "end_effector": end_effector(result),
         "messages": {s.topic: len(s.payloads) for s in streams},
+        "controller": _controller(result),
     }
+
+
+def _controller(result: SimResult) -> dict[str, ControllerValue]:
+    """Each controller parameter the run used and its source (file, scenario, ...)."""
+    controller = result.scenario.controller
+    out: dict[str, ControllerValue] = {}
+    for name, source in result.scenario.controller_from:
+        value = getattr(controller, name)
+        shown = (list(value) if isinstance(value, tuple) else
+                 None if isinstance(value, float) and math.isinf(value) else value)
+        out[name] = {"value": shown, "source": source}
+    return out
 
 
 def _collision(contact: Contact) -> Collision:

@@ -112,7 +112,10 @@ def _odometry(result: SimResult) -> Stream:
                         ("linear", 3), ("angular", 3), ("twist_covariance", 36)):
         layout.field(name, "<f8", count)
     zeros = np.zeros_like(odom.x_m)
+    controller = result.scenario.controller  # the diagonals diff_drive_controller publishes
     return _stream(ODOM_TOPIC, "nav_msgs/msg/Odometry", layout, odom.times_s, {
+        "pose_covariance": np.diag(controller.pose_covariance_diagonal).ravel(),
+        "twist_covariance": np.diag(controller.twist_covariance_diagonal).ravel(),
         "position": np.column_stack((odom.x_m, odom.y_m, zeros)),
         "orientation": rotations.yaw(odom.yaw_rad),
         "linear": np.column_stack((odom.linear_m_s, zeros, zeros)),

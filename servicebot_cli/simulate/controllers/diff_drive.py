@@ -1,8 +1,9 @@
 """The diff-drive controller: timed ``cmd_vel`` in, wheel speeds per control tick out.
 
 It follows diff_drive_controller's update: a command older than ``cmd_vel_timeout_s`` is
-replaced by zero, the twist is rate-limited by the acceleration limits (so a timed-out
-robot ramps to a stop), turned into wheel speeds with ``wheel_separation * multiplier``,
+replaced by zero, the twist goes through the speed limiter (jerk, acceleration, velocity,
+from the last limited command; so a timed-out robot ramps to a stop), turned into wheel
+speeds with ``wheel_separation * multiplier``,
 and the wheel speeds are saturated at the URDF's velocity limit: both sides scaled together
 (curvature kept) or each wheel clipped alone (``per-wheel``, what Gazebo does).
 
@@ -12,7 +13,6 @@ tick while a value is ramping; constant stretches are filled in one numpy operat
 
 from __future__ import annotations
 
-import bisect
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -21,10 +21,10 @@ import numpy.typing as npt
 
 from servicebot_cli.kinematics import diff_drive
 from servicebot_cli.kinematics.drive_geometry import DriveGeometry
+from servicebot_cli.simulate.controllers.limiter import AxisLimits, limited
 from servicebot_cli.simulate.scenario.definition import CmdVel, Controller
 
 FloatArray = npt.NDArray[np.float64]
-_SETTLED = 1e-12  # a ramp this close to its target has arrived
 
 
 @dataclass(frozen=True)
@@ -68,34 +68,20 @@ def command_targets(segments: Sequence[CmdVel], ticks: int, dt_s: float,
     return linear, angular
 
 
-def rate_limited(target: FloatArray, max_rate: float, dt_s: float) -> FloatArray:
-    """``target`` followed with :func:`diff_drive.rate_limit`, starting from zero."""
-    out = np.empty_like(target)
-    changes = np.flatnonzero(np.diff(target)) + 1
-    value, k, n = 0.0, 0, len(target)
-    while k < n:
-        goal = float(target[k])
-        if abs(value - goal) <= _SETTLED:  # settled: hold until the target changes
-            value = goal
-            nxt = changes[bisect.bisect_right(changes, k)] if len(changes) and \
-                changes[-1] > k else n
-            out[k:nxt] = value
-            k = int(nxt)
-            continue
-        value = diff_drive.rate_limit(value, goal, max_rate, dt_s)
-        out[k] = value
-        k += 1
-    return out
-
-
 def plan_wheels(segments: Sequence[CmdVel], controller: Controller, geometry: DriveGeometry,
                 duration_s: float) -> WheelPlan:
     """Wheel speeds for every control tick of a run of ``duration_s``."""
     dt = 1.0 / controller.update_rate_hz
     ticks = max(1, int(np.ceil(duration_s / dt - 1e-9)))
     target_v, target_w = command_targets(segments, ticks, dt, controller.cmd_vel_timeout_s)
-    linear = rate_limited(target_v, controller.max_linear_acceleration_m_s2, dt)
-    angular = rate_limited(target_w, controller.max_angular_acceleration_rad_s2, dt)
+    c = controller
+    linear = limited(target_v, AxisLimits.mirrored(
+        c.min_linear_velocity_m_s, c.max_linear_velocity_m_s, c.min_linear_acceleration_m_s2,
+        c.max_linear_acceleration_m_s2, c.min_linear_jerk_m_s3, c.max_linear_jerk_m_s3), dt)
+    angular = limited(target_w, AxisLimits.mirrored(
+        c.min_angular_velocity_rad_s, c.max_angular_velocity_rad_s,
+        c.min_angular_acceleration_rad_s2, c.max_angular_acceleration_rad_s2,
+        c.min_angular_jerk_rad_s3, c.max_angular_jerk_rad_s3), dt)
     left, right = _saturated_wheels(linear, angular, controller, geometry)
     return WheelPlan(dt, target_v, target_w, linear, angular, left, right)
 

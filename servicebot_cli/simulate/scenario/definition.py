@@ -7,6 +7,7 @@ Without a file, the built-in ``default_scenario.yaml`` beside this module is use
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from pathlib import Path as FsPath
@@ -32,15 +33,31 @@ class Pose2D:
 
 @dataclass(frozen=True)
 class Controller:
-    """diff_drive_controller parameters (its names, with units)."""
+    """diff_drive_controller parameters (its names, with units); infinite: no limit.
+
+    ``min_*`` limits are negative (a minimum acceleration of -0.05 brakes at 0.05 m/s^2);
+    the covariance diagonals go into every Odometry message.
+    """
 
     update_rate_hz: float = 100.0
     publish_rate_hz: float = 50.0
     cmd_vel_timeout_s: float = 0.5
     wheel_separation_multiplier: float = 1.0
     saturation: str = "keep-curvature"
+    max_linear_velocity_m_s: float = math.inf
+    min_linear_velocity_m_s: float = -math.inf
     max_linear_acceleration_m_s2: float = math.inf
+    min_linear_acceleration_m_s2: float = -math.inf
+    max_linear_jerk_m_s3: float = math.inf
+    min_linear_jerk_m_s3: float = -math.inf
+    max_angular_velocity_rad_s: float = math.inf
+    min_angular_velocity_rad_s: float = -math.inf
     max_angular_acceleration_rad_s2: float = math.inf
+    min_angular_acceleration_rad_s2: float = -math.inf
+    max_angular_jerk_rad_s3: float = math.inf
+    min_angular_jerk_rad_s3: float = -math.inf
+    pose_covariance_diagonal: tuple[float, ...] = (0.0,) * 6
+    twist_covariance_diagonal: tuple[float, ...] = (0.0,) * 6
 
 
 @dataclass(frozen=True)
@@ -157,6 +174,12 @@ class Scenario:
     rates: Rates = Rates()
     name: str = "scenario"
     source: Located | None = field(default=None, repr=False, compare=False)
+    controller_given: frozenset[str] = frozenset()
+    """The controller fields the scenario file sets (they override the controllers file)."""
+    controller_cli: frozenset[str] = frozenset()
+    """The controller fields the command line sets (they override the scenario)."""
+    controller_from: tuple[tuple[str, str], ...] = ()
+    """Each controller field and where its value came from, once resolved."""
 
 
 def load_scenario(path: str | FsPath | None) -> Scenario:
@@ -189,6 +212,7 @@ def read_scenario(located: Located, name: str = "scenario") -> Scenario:
         duration_s=duration,
         initial_pose=_pose(r, ("initial_pose",)),
         controller=_controller(r, ("controller",)),
+        controller_given=_keys(r, ("controller",)),
         slip=_slip(r, ("slip",)),
         cmd_vel=_cmd_vel(r, ("cmd_vel",)),
         arm=_arm(r, ("arm",)),
@@ -213,23 +237,29 @@ def _controller(r: Reader, path: Path) -> Controller:
     names = [f for f in Controller.__dataclass_fields__]
     r.mapping(path, names)
     d = Controller()
-    return Controller(
-        update_rate_hz=r.number((*path, "update_rate_hz"), d.update_rate_hz, positive=True,
-                                maximum=10_000.0),
-        publish_rate_hz=r.number((*path, "publish_rate_hz"), d.publish_rate_hz, positive=True,
-                                 maximum=10_000.0),
-        cmd_vel_timeout_s=r.number((*path, "cmd_vel_timeout_s"), d.cmd_vel_timeout_s,
-                                   positive=True),
-        wheel_separation_multiplier=r.number((*path, "wheel_separation_multiplier"),
-                                             d.wheel_separation_multiplier, positive=True),
-        saturation=r.string((*path, "saturation"), d.saturation, SATURATIONS),
-        max_linear_acceleration_m_s2=r.number((*path, "max_linear_acceleration_m_s2"),
-                                              math.inf, positive=True)
-        if r.has((*path, "max_linear_acceleration_m_s2")) else math.inf,
-        max_angular_acceleration_rad_s2=r.number((*path, "max_angular_acceleration_rad_s2"),
-                                                 math.inf, positive=True)
-        if r.has((*path, "max_angular_acceleration_rad_s2")) else math.inf,
-    )
+    values: dict[str, object] = {}
+    for name in names:
+        where = (*path, name)
+        if not r.has(where):
+            continue
+        if name == "saturation":
+            values[name] = r.string(where, d.saturation, SATURATIONS)
+        elif name.endswith("_diagonal"):
+            values[name] = tuple(r.number((*where, i), minimum=0.0)
+                                 for i in range(len(r.vector(where, 6))))
+        elif name.startswith("min_"):
+            values[name] = r.number(where, maximum=0.0)
+        elif name.endswith("_rate_hz"):
+            values[name] = r.number(where, positive=True, maximum=10_000.0)
+        else:
+            values[name] = r.number(where, positive=True)
+    return dataclasses.replace(d, **values)  # type: ignore[arg-type]  # checked per field
+
+
+def _keys(r: Reader, path: Path) -> frozenset[str]:
+    """The keys of the mapping at ``path`` (none when absent)."""
+    value = r.get(path) if r.has(path) else None
+    return frozenset(value) if isinstance(value, dict) else frozenset()
 
 
 def _slip(r: Reader, path: Path) -> Slip:

@@ -1,0 +1,140 @@
+"""diff_drive_controller's parameters from a ros2_control controllers file.
+
+Which file: ``--controllers FILE`` when given; else the one the ``gazebo_ros2_control``
+plugin's ``<parameters>`` names (relative to the description); else ``controllers.yaml``
+beside the description; else none (the simulator's defaults). In the file, the controller
+whose ``type`` is ``diff_drive_controller/DiffDriveController`` under ``controller_manager``
+gives its ``ros__parameters``; ``controller_manager``'s ``update_rate`` is the control rate.
+Pure apart from reading the one file.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from servicebot_cli.common.errors import ServicebotError
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.robot import RobotDescription
+
+DIFF_DRIVE = "diff_drive_controller/DiffDriveController"
+_AXES = (("linear.x", "linear", "m_s"), ("angular.z", "angular", "rad_s"))
+
+
+class ControllersFileError(ServicebotError):
+    """A controllers file that cannot be read, or a parameter of the wrong type."""
+
+
+@dataclass(frozen=True)
+class ControllersFile:
+    """The diff-drive parameters a controllers file sets, by scenario field name."""
+
+    path: Path | None
+    values: Mapping[str, Any]
+
+
+def find_controllers_file(robot: RobotDescription, explicit: str | None) -> Path | None:
+    """The controllers file to read (see the module docstring), None when there is none."""
+    if explicit is not None:
+        return Path(explicit)
+    base = robot.path.parent
+    for plugin in robot.plugins:
+        if "gazebo_ros2_control" in plugin.filename or "gazebo_ros2_control" in plugin.name:
+            for key, text in plugin.params:
+                if key == "parameters" and text and not text.startswith("$("):
+                    named = Path(text.strip().removeprefix("file://"))
+                    path = named if named.is_absolute() else base / named
+                    if path.is_file():
+                        return path
+    beside = base / "controllers.yaml"
+    return beside if beside.is_file() else None
+
+
+def read_controllers_file(path: Path | None) -> ControllersFile:
+    """The scenario fields the diff-drive controller in ``path`` sets.
+
+    Raises:
+        ControllersFileError: Unreadable, not YAML, or a parameter that is not a number.
+    """
+    if path is None:
+        return ControllersFile(None, {})
+    import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
+
+    try:
+        document = yaml.safe_load(path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, yaml.YAMLError) as exc:
+        raise ControllersFileError(f"{path}: cannot read the controllers file: {exc}") from None
+    if not isinstance(document, dict):
+        raise ControllersFileError(f"{path}: expected a mapping of controllers")
+    manager = _parameters(document.get("controller_manager"))
+    name = next((key for key, value in manager.items()
+                 if isinstance(value, dict) and value.get("type") == DIFF_DRIVE), None)
+    params = _flat(_parameters(document.get(name))) if name else {}
+    values: dict[str, Any] = {}
+    if "update_rate" in manager:
+        values["update_rate_hz"] = _number(path, "update_rate", manager["update_rate"])
+    for key, field in (("publish_rate", "publish_rate_hz"),
+                       ("cmd_vel_timeout", "cmd_vel_timeout_s"),
+                       ("wheel_separation_multiplier", "wheel_separation_multiplier")):
+        if key in params:
+            values[field] = _number(path, key, params[key])
+    for prefix, axis, unit in _AXES:
+        values.update(_limits(path, params, prefix, axis, unit))
+    for key in ("pose_covariance_diagonal", "twist_covariance_diagonal"):
+        if key in params:
+            diagonal = params[key]
+            if not isinstance(diagonal, list) or len(diagonal) != 6:
+                raise ControllersFileError(f"{path}: {name}.{key}: expected 6 numbers")
+            values[key] = tuple(_number(path, key, v) for v in diagonal)
+    return ControllersFile(path, values)
+
+
+def _limits(path: Path, params: Mapping[str, Any], prefix: str, axis: str,
+            unit: str) -> dict[str, float]:
+    """Velocity, acceleration and jerk limits of one axis, where its ``has_*`` flag is set."""
+    out: dict[str, float] = {}
+    for kind, suffix in (("velocity", unit), ("acceleration", f"{unit[:-2]}_s2"),
+                         ("jerk", f"{unit[:-2]}_s3")):
+        flag = params.get(f"{prefix}.has_{kind}_limits")
+        if flag is None:
+            continue
+        if not flag:  # limits switched off: none, whatever the values say
+            out[f"max_{axis}_{kind}_{suffix}"] = math.inf
+            out[f"min_{axis}_{kind}_{suffix}"] = -math.inf
+            continue
+        high = params.get(f"{prefix}.max_{kind}")
+        if high is not None:
+            out[f"max_{axis}_{kind}_{suffix}"] = _number(path, f"{prefix}.max_{kind}", high)
+        low = params.get(f"{prefix}.min_{kind}")
+        if low is not None:
+            out[f"min_{axis}_{kind}_{suffix}"] = _number(path, f"{prefix}.min_{kind}", low)
+    return out
+
+
+def _parameters(section: Any) -> dict[str, Any]:
+    if isinstance(section, dict) and isinstance(section.get("ros__parameters"), dict):
+        return dict(section["ros__parameters"])
+    return {}
+
+
+def _flat(mapping: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
+    """Nested parameters (``linear: {x: {max_velocity: 1}}``) as dotted names."""
+    out: dict[str, Any] = {}
+    for key, value in mapping.items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict):
+            out.update(_flat(value, f"{name}."))
+        else:
+            out[name] = value
+    return out
+
+
+def _number(path: Path, key: str, value: Any) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float) \
+            or not math.isfinite(float(value)):
+        raise ControllersFileError(f"{path}: {key}: expected a finite number, got {value!r}")
+    return float(value)

@@ -1,0 +1,48 @@
+"""The controller a run uses: defaults, then the controllers file, the scenario, the command line.
+
+Each later source overrides the earlier ones field by field, and every field remembers where
+its value came from, for the summary. As diff_drive_controller does, a minimum limit left
+unset mirrors its maximum (``min_acceleration = -max_acceleration``); a maximum the scenario
+or the command line sets replaces the file's pair of limits.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+from servicebot_cli.simulate.controllers.config import ControllersFile
+from servicebot_cli.simulate.scenario.definition import Controller, Scenario
+
+DEFAULT = "default"
+SCENARIO = "scenario"
+COMMAND_LINE = "command line"
+
+
+def resolve(scenario: Scenario, file: ControllersFile) -> Scenario:
+    """``scenario`` with the file's values where neither it nor the command line set one."""
+    own = scenario.controller_given | scenario.controller_cli
+    # a maximum set here replaces the file's pair: its minimum mirrors it unless set too
+    paired = {"min_" + k[4:] for k in own if k.startswith("max_")}
+    from_file = {k: v for k, v in file.values.items() if k not in own | paired}
+    controller = dataclasses.replace(scenario.controller, **from_file)
+    origin = {}
+    for name in (f.name for f in dataclasses.fields(Controller)):
+        if name in scenario.controller_cli:
+            origin[name] = COMMAND_LINE
+        elif name in scenario.controller_given:
+            origin[name] = SCENARIO
+        elif name in from_file:
+            origin[name] = str(file.path)
+        else:
+            origin[name] = DEFAULT
+    mirrored = {}
+    for name in origin:
+        if name.startswith("min_") and origin[name] == DEFAULT:
+            high = getattr(controller, "max_" + name[4:])
+            if math.isfinite(high):
+                mirrored[name] = -high
+                origin[name] = origin["max_" + name[4:]]
+    controller = dataclasses.replace(controller, **mirrored)
+    return dataclasses.replace(scenario, controller=controller,
+                               controller_from=tuple(origin.items()))
