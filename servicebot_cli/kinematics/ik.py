@@ -17,12 +17,14 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.description.joint_space import JointSpace
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.description.robot import RobotDescription
 from servicebot_cli.kinematics.chain import Chain
 from servicebot_cli.kinematics.collisions import CollisionCheck, build_check
 from servicebot_cli.kinematics.diagnosis import collision_hint, hint
+from servicebot_cli.kinematics.drive_geometry import drive_geometry
 from servicebot_cli.kinematics.frames import link_names, pick_frame
 from servicebot_cli.kinematics.inverse import IkResult, IkSettings, IkSolver, IkTarget
 from servicebot_cli.kinematics.json_types import JsonObject
@@ -226,7 +228,21 @@ def collision_check(robot: RobotDescription, model: pin.Model, source: RobotSour
     if not options.check:
         return None
     disabled = disabled_pairs(options.srdf, link_names(robot)) if options.srdf else ()
-    return build_check(robot, model, source.resolver(), disabled=disabled, moving=moving)
+    return build_check(robot, model, source.resolver(), disabled=disabled, moving=moving,
+                       floor=is_mobile(robot))
+
+
+def is_mobile(robot: RobotDescription) -> bool:
+    """Whether ``robot`` stands on wheels, and so on a floor its links must stay above.
+
+    A fixed arm has no floor: it may be mounted on a table, a pedestal or a wall, and reach
+    below its base plane.
+    """
+    try:
+        drive_geometry(robot)
+    except DescriptionError:
+        return False
+    return True
 
 
 def run(request: IkRequest, *, clock: Clock) -> IkAnswer:
