@@ -10,7 +10,9 @@ from __future__ import annotations
 import contextlib
 import os
 import shutil
+import signal
 import tempfile
+import threading
 from collections.abc import Iterator
 from pathlib import Path
 from typing import IO, Any
@@ -47,14 +49,17 @@ def atomic_output(
         except OSError as exc:
             raise _cannot_write(target, target.parent, exc) from None
     directory = _parent(target)
-    try:
-        fd, tmp_name = tempfile.mkstemp(dir=directory, prefix=f".{target.name}.", suffix=".tmp")
-    except OSError as exc:
-        raise _cannot_write(target, directory, exc) from None
     if "b" not in mode:
         open_kwargs.setdefault("encoding", "utf-8")
         open_kwargs.setdefault("newline", "\n")
+    blocked = _block_signals()  # no signal between creating the file and owning its clean-up
     try:
+        fd, tmp_name = tempfile.mkstemp(dir=directory, prefix=f".{target.name}.", suffix=".tmp")
+    except OSError as exc:
+        _unblock_signals(blocked)
+        raise _cannot_write(target, directory, exc) from None
+    try:
+        _unblock_signals(blocked)  # a signal that came meanwhile raises here, inside the try
         with os.fdopen(fd, mode, **open_kwargs) as handle:
             yield handle
         os.chmod(tmp_name, 0o644 & ~_umask())
@@ -79,11 +84,14 @@ def atomic_directory(path: str | os.PathLike[str]) -> Iterator[Path]:
     if target.exists():
         raise OutputError(f"{target}: already exists; remove it or give another path")
     parent = _parent(target)
+    blocked = _block_signals()
     try:
         temporary = Path(tempfile.mkdtemp(dir=parent, prefix=f".{target.name}.", suffix=".tmp"))
     except OSError as exc:
+        _unblock_signals(blocked)
         raise _cannot_write(target, parent, exc) from None
     try:
+        _unblock_signals(blocked)
         yield temporary
         os.chmod(temporary, 0o755 & ~_umask())
         os.rename(temporary, target)
@@ -91,6 +99,25 @@ def atomic_directory(path: str | os.PathLike[str]) -> Iterator[Path]:
         raise OutputError(f"{target}: cannot write: {exc.strerror or exc}") from None
     finally:
         shutil.rmtree(temporary, ignore_errors=True)
+
+
+_DEFERRED = {signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT}
+
+
+def _block_signals() -> set[int | signal.Signals] | None:
+    """Hold back the signals that end a run, in the main thread; the mask to restore.
+
+    Between creating a temporary file and entering the ``try`` that removes it, a signal
+    would leave the file behind. Held back, it is delivered by :func:`_unblock_signals`.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        return None
+    return signal.pthread_sigmask(signal.SIG_BLOCK, _DEFERRED)
+
+
+def _unblock_signals(previous: set[int | signal.Signals] | None) -> None:
+    if previous is not None:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
 
 
 def _parent(target: Path) -> Path:

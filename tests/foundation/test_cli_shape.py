@@ -12,7 +12,7 @@ import pytest
 from servicebot_cli import __version__
 from tests.conftest import REPO, SIM_URDF, run_servicebot
 
-SUBCOMMANDS = ["check", "drive", "emulate", "expand", "fk", "ik", "inspect", "simulate"]
+SUBCOMMANDS = ["check", "drive", "emulate", "expand", "fk", "ik", "inspect", "simulate", "sweep"]
 HEAVY = {"pinocchio", "trimesh", "yourdfpy", "matplotlib", "numpy", "xacro", "serial", "scipy",
          "lxml"}
 
