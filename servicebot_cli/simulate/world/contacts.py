@@ -62,7 +62,7 @@ class Obstacle:
 
 def obstacles(solids: Sequence[Solid], meshes: Sequence[Mesh] = ()) -> list[Obstacle]:
     """Coal objects for the world's solids and placed meshes (trimesh), in that order."""
-    import coal  # type: ignore[import-untyped]  # Coal ships no type information
+    import coal  # ships no type information: see pyproject's mypy overrides
 
     out = []
     for solid in solids:
