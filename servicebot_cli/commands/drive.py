@@ -13,6 +13,7 @@ from servicebot_cli.commands.options import (
     Number,
     OutputPath,
     RobotArgs,
+    SerialPort,
     format_option,
     robot_arguments,
 )
@@ -37,7 +38,7 @@ _PORT_ONLY = (("--port", "port", "no port is opened"),
 
 @click.command(cls=Command)
 @robot_arguments(default="real")
-@click.option("--port", metavar="PATH",
+@click.option("--port", type=SerialPort(), metavar="PATH",
               help="Serial device (default: the description's ros2_control port, "
               "/dev/ttyUSB0 for the real robot).")
 @serial_options

@@ -16,7 +16,7 @@ import select
 from collections.abc import Sequence
 from typing import Protocol
 
-from servicebot_cli.common.errors import LinkError, LinkLost
+from servicebot_cli.common.errors import LinkError, LinkLost, ServicebotError
 
 WRITE_TIMEOUT_S = 0.5  # a write that cannot leave in this long means the port is dead
 _MAX_LISTED = 8
@@ -73,6 +73,8 @@ class Port:
         """Send ``data``; a port that fails or stalls raises LinkLost."""
         try:
             self._serial.write(data)
+        except ServicebotError:  # Ctrl-C or a signal raised mid-call: not the port
+            raise
         except Exception as exc:  # pyserial raises SerialException, OSError and timeouts
             raise LinkLost(f"link lost: writing to {self.name} failed ({_reason(exc)}): "
                            "the device is gone (unplugged, or its firmware died)") from None
@@ -81,6 +83,8 @@ class Port:
         """Wait until written bytes have left (tcdrain)."""
         try:
             self._serial.flush()
+        except ServicebotError:  # Ctrl-C or a signal raised mid-call: not the port
+            raise
         except Exception as exc:
             raise LinkLost(f"link lost: {self.name} failed ({_reason(exc)})") from None
 
@@ -89,6 +93,8 @@ class Port:
         try:
             waiting = self._serial.in_waiting
             return self._serial.read(waiting) if waiting else b""
+        except ServicebotError:  # Ctrl-C or a signal raised mid-call: not the port
+            raise
         except Exception as exc:
             raise LinkLost(f"link lost: reading {self.name} failed ({_reason(exc)}): "
                            "the device is gone (unplugged, or its firmware died)") from None

@@ -75,3 +75,18 @@ def test_help_imports_only_the_standard_library_and_click():
     modules = {name.split(".")[0] for name in json.loads(line[len("MODULES="):])}
     allowed = set(sys.stdlib_module_names) | {"click", "servicebot_cli"}
     assert modules <= allowed, sorted(modules - allowed)
+
+
+def test_serial_ports_complete_the_devices_present_else_paths():
+    import glob
+
+    from servicebot_cli.commands.options import SERIAL_PATTERNS
+
+    present = [p for pattern in SERIAL_PATTERNS for p in sorted(glob.glob(pattern))]
+    env = {**os.environ, "_SERVICEBOT_COMPLETE": "bash_complete",
+           "COMP_WORDS": "servicebot drive --port /dev/tty", "COMP_CWORD": "3"}
+    result = subprocess.run([sys.executable, "-m", "servicebot_cli"], capture_output=True,
+                            text=True, env=env, timeout=60)
+    offered = result.stdout.split()
+    wanted = [p for p in present if p.startswith("/dev/tty")]
+    assert offered == ([f"plain,{p}" for p in wanted] if wanted else ["file,/dev/tty"])
