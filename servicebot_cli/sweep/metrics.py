@@ -13,7 +13,9 @@ import statistics
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-NOT_METRICS = ("robot", "scenario", "seed", "duration_s", "messages", "closest_obstacle")
+NOT_METRICS = ("robot", "scenario", "seed", "duration_s", "messages", "closest_obstacle",
+               "closest_link", "controller")
+COUNTED = ("collisions", "self_collisions")  # lists of events: a metric by their number
 STATISTICS = ("mean", "std", "min", "median", "p95", "max")
 
 
@@ -27,7 +29,7 @@ def flat_metrics(summary: Mapping[str, Any]) -> dict[str, float]:
 
 
 def _flatten(name: str, value: Any, out: dict[str, float]) -> None:
-    if name == "collisions" and isinstance(value, list):
+    if name in COUNTED and isinstance(value, list):
         out[name] = float(len(value))
     elif isinstance(value, bool):
         out[name] = float(value)
