@@ -6,6 +6,7 @@ of :mod:`mesh_readers`; other formats through trimesh, imported only then.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -13,6 +14,8 @@ import numpy as np
 
 from servicebot_cli.check import mesh_readers
 
+LARGEST_COORDINATE = 1e9
+"""Meshes with coordinates beyond this (in the file's units) get no mass properties."""
 _READERS = {".stl": mesh_readers.read_stl, ".obj": mesh_readers.read_obj,
             ".dae": mesh_readers.read_dae}
 
@@ -104,13 +107,15 @@ def summarise(triangles: np.ndarray, with_mass: bool = False) -> MeshInfo:
         return MeshInfo(0, zero, zero, None, False if with_mass else None)
     points = triangles.reshape(-1, 3)
     lower, upper = points.min(axis=0), points.max(axis=0)
-    closed = _closed(triangles, float(np.abs(upper - lower).max())) if with_mass else None
-    return MeshInfo(
-        triangles=len(triangles),
-        lower=_xyz(lower), upper=_xyz(upper),
-        mass=mass_properties(triangles) if closed else None,
-        closed=closed,
-    )
+    size = float(np.abs(upper - lower).max())
+    if with_mass and not np.abs(points).max() <= LARGEST_COORDINATE:
+        return MeshInfo(len(triangles), _xyz(lower), _xyz(upper), None, False)
+    closed = _closed(triangles, size) if with_mass else None
+    mass = mass_properties(triangles) if closed else None
+    if mass is not None and not (math.isfinite(mass.volume)
+                                 and np.all(np.isfinite(mass.second_moment))):
+        mass = None
+    return MeshInfo(len(triangles), _xyz(lower), _xyz(upper), mass, closed)
 
 
 def mass_properties(triangles: np.ndarray) -> MassProperties:

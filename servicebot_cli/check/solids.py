@@ -66,8 +66,18 @@ def placed(volume: float, centroid: np.ndarray, moment: np.ndarray, scale: tuple
     )
 
 
+def usable(solid: Solid) -> bool:
+    """True when the solid's volume, centroid and moments are finite and the volume positive."""
+    return (math.isfinite(solid.volume_m3) and solid.volume_m3 > 0
+            and bool(np.all(np.isfinite(solid.centroid_m)))
+            and bool(np.all(np.isfinite(solid.second_moment))))
+
+
 def combined(solids: list[Solid]) -> Solid:
-    """The solids as one body of uniform density (parallel-axis theorem)."""
+    """The solids as one body of uniform density (parallel-axis theorem).
+
+    Callers pass shapes with positive, bounded sizes (:mod:`values`), so the volume is positive.
+    """
     volume = sum(s.volume_m3 for s in solids)
     centroid = np.sum([s.volume_m3 * s.centroid_m for s in solids], axis=0) / volume
     moment = np.zeros((3, 3))

@@ -15,7 +15,8 @@ from collections.abc import Iterator
 from servicebot_cli.check.findings import Issue
 from servicebot_cli.check.urdf_schema import EXTENSIONS, SPEC, TOP_LEVEL
 
-_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+# ASCII digits only: Python's float() reads "０.１" and Arabic-Indic digits, urdfdom does not
+_NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
 _NON_FINITE = re.compile(r"[+-]?(?:nan|inf|infinity)", re.IGNORECASE)
 _VERSION = re.compile(r"(\d+)\.(\d+)")
 MAX_LINKS = 20_000
@@ -82,9 +83,21 @@ def _element_tree(top: ET.Element) -> Iterator[Issue]:
             if needed not in present:
                 yield Issue("SB012", f"<{element.tag}>{_named(element)} has no <{needed}>",
                             element, fix=f"add a <{needed}> element")
+        yield from _empty_reference(element)
         if element.tag == "dynamics" and not element.attrib.keys() & {"damping", "friction"}:
             yield Issue("SB012", "<dynamics> has neither damping nor friction", element,
                         fix="add damping=\"...\" or friction=\"...\", or remove <dynamics>")
+
+
+def _empty_reference(element: ET.Element) -> Iterator[Issue]:
+    """A ``<mesh>`` or ``<texture>`` whose filename is empty or missing."""
+    filename = element.get("filename")
+    if element.tag == "mesh" and filename is not None and not filename.strip():
+        yield Issue("SB012", "<mesh> has an empty filename", element,
+                    fix="name the mesh file, e.g. filename=\"package://my_robot/meshes/base.stl\"")
+    elif element.tag == "texture" and not (filename or "").strip():
+        yield Issue("SB112", "<texture> has no filename, so it gives the material nothing",
+                    element, fix="add filename=\"...\" or remove the <texture>")
 
 
 def _unknown(child: ET.Element, parent: ET.Element, allowed: tuple[str, ...]) -> Issue:
