@@ -11,8 +11,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check.meshes import MeshCache, MeshError, MeshInfo
-from servicebot_cli.common.errors import PackageNotFound
-from servicebot_cli.description.packages import PackageResolver
+from servicebot_cli.check.packages import PackageSearch, Resolved
+from servicebot_cli.description.packages import PackageResolver, is_remote
 
 if TYPE_CHECKING:
     from servicebot_cli.description.elements import Shape
@@ -20,7 +20,19 @@ if TYPE_CHECKING:
 
 
 class MeshNotFound(Exception):
-    """A mesh reference that resolves to no file; the message says where it looked."""
+    """A mesh reference that resolves to no file; the message says where it looked.
+
+    Attributes:
+        resolved: Where the reference led (``path`` None: its package is nowhere).
+    """
+
+    def __init__(self, message: str, resolved: Resolved) -> None:
+        super().__init__(message)
+        self.resolved = resolved
+
+
+class RemoteMesh(MeshNotFound):
+    """A mesh fetched over the network (``https://``, Gazebo Fuel): never read here."""
 
 
 @dataclass
@@ -38,6 +50,16 @@ class CheckEnv:
     meshes: MeshCache = field(default_factory=MeshCache)
     inertia_factor: float = 2.0
     load_meshes: bool = True
+    search: PackageSearch = field(init=False)
+
+    def __post_init__(self) -> None:
+        self.search = PackageSearch(self.resolver)
+
+    def resolve(self, robot: RobotDescription, shape: Shape) -> Resolved:
+        """Where the ``<mesh filename>`` of ``shape`` leads (cached for the run)."""
+        filename = shape.geometry.filename or ""
+        base_dir = Path(robot.source_of(shape.element).file).parent.absolute()
+        return self.search.resolve(filename, base_dir)
 
     def mesh_path(self, robot: RobotDescription, shape: Shape) -> Path:
         """The file a ``<mesh filename>`` names.
@@ -46,15 +68,15 @@ class CheckEnv:
             MeshNotFound: Saying where it looked.
         """
         filename = shape.geometry.filename or ""
-        base_dir = Path(robot.source_of(shape.element).file).parent
-        try:
-            path = self.resolver.resolve_uri(filename, base_dir)
-        except PackageNotFound as exc:
-            raise MeshNotFound(f"mesh '{filename}': {exc}") from None
+        if is_remote(filename):
+            raise RemoteMesh(f"mesh '{filename}' is fetched over the network", Resolved(None))
+        resolved = self.resolve(robot, shape)
+        path = resolved.path
+        if path is None:
+            raise MeshNotFound(f"mesh '{filename}': {resolved.error}", resolved)
         if not path.is_file():
-            where = path if path.is_absolute() else Path.cwd() / path
             kind = "is a directory" if path.is_dir() else "does not exist"
-            raise MeshNotFound(f"mesh '{filename}': {where} {kind}")
+            raise MeshNotFound(f"mesh '{filename}': {path} {kind}", resolved)
         return path
 
     def mesh(self, robot: RobotDescription, shape: Shape, with_mass: bool = False) -> MeshInfo:
@@ -67,4 +89,4 @@ class CheckEnv:
         return self.meshes.get(self.mesh_path(robot, shape), with_mass)
 
 
-__all__ = ["CheckEnv", "MeshError", "MeshNotFound"]
+__all__ = ["CheckEnv", "MeshError", "MeshNotFound", "RemoteMesh"]

@@ -10,6 +10,9 @@ from pathlib import Path
 SUFFIXES = (".urdf", ".urdf.xml", ".xacro")
 SKIPPED_DIRS = {"build", "install", "log", "node_modules", "__pycache__", "site-packages"}
 _ROBOT_TAG = re.compile(rb"<robot\b[^>]*>", re.DOTALL)
+_MACRO_BLOCK = re.compile(rb"<xacro:macro\b.*?</xacro:macro>", re.DOTALL)
+_COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
+_CONTENT = re.compile(rb"<(?:link|joint|xacro:(?!include\b|property\b|arg\b|macro\b)[\w.-]+)\b")
 
 
 def is_robot_file(path: Path) -> bool:
@@ -18,16 +21,26 @@ def is_robot_file(path: Path) -> bool:
 
 
 def is_fragment(path: Path) -> bool:
-    """True for a xacro include: its ``<robot>`` has no name (it is checked via its includer)."""
+    """True for a xacro include, checked through the files that include it.
+
+    Its ``<robot>`` has no name, or it only defines macros: no link, joint or macro call
+    outside its ``<xacro:macro>`` definitions (a macro library such as ``panda_arm.xacro``).
+    """
     if path.suffix != ".xacro":
         return False
     try:
         with path.open("rb") as handle:
-            head = handle.read(65536)
+            head = handle.read(1 << 20)
     except OSError:
         return False  # reading it again will report the problem
     match = _ROBOT_TAG.search(head)
-    return match is not None and b"name=" not in match.group(0)
+    if match is None:
+        return False
+    if b"name=" not in match.group(0):
+        return True
+    text = _COMMENT.sub(b"", head)
+    outside = _MACRO_BLOCK.sub(b"", text)
+    return outside != text and _CONTENT.search(outside) is None
 
 
 def walk(directory: Path) -> Iterator[Path]:

@@ -11,8 +11,10 @@ import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound
+from servicebot_cli.check import values
+from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound, RemoteMesh
 from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.packages import FileTally
 
 if TYPE_CHECKING:
     from servicebot_cli.description.elements import Link, Shape
@@ -26,15 +28,17 @@ SMALLEST_M = 0.001
 
 
 def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
-    """Every geometry issue of ``robot``."""
+    """Every geometry issue of ``robot``; missing packages once per package (SB408)."""
+    tally = FileTally()
     for link in robot.links:
         for kind, shapes in (("visual", link.visuals), ("collision", link.collisions)):
             for shape in shapes:
-                yield from _shape(robot, link, kind, shape, env)
+                yield from _shape(robot, link, kind, shape, env, tally)
+    yield from tally.issues()
 
 
 def _shape(robot: RobotDescription, link: Link, kind: str, shape: Shape,
-           env: CheckEnv) -> Iterator[Issue]:
+           env: CheckEnv, tally: FileTally) -> Iterator[Issue]:
     element = shape.element.find("geometry") if shape.element is not None else None
     if element is None:
         return  # SB012 reports a missing <geometry>
@@ -51,7 +55,7 @@ def _shape(robot: RobotDescription, link: Link, kind: str, shape: Shape,
         return
     yield from _sizes(found[0], where)
     if found[0].tag == "mesh" and shape.geometry.filename and env.load_meshes:
-        yield from _mesh(robot, shape, found[0], where, env)
+        yield from _mesh(robot, shape, found[0], where, env, tally)
 
 
 def _sizes(element: ET.Element, where: str) -> Iterator[Issue]:
@@ -70,23 +74,31 @@ def _sizes(element: ET.Element, where: str) -> Iterator[Issue]:
 
 
 def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str,
-          env: CheckEnv) -> Iterator[Issue]:
+          env: CheckEnv, tally: FileTally) -> Iterator[Issue]:
     try:
         info = env.mesh(robot, shape)
+    except RemoteMesh:
+        tally.remote.append((shape.geometry.filename or "", element))
+        return
     except MeshNotFound as exc:
+        if exc.resolved.path is None:
+            tally.add_missing(exc.resolved, element)
+            return
+        tally.add_found(exc.resolved, element)
         yield Issue("SB401", f"{where}: {exc}", element,
-                    fix="fix the path, or pass --package NAME=DIR for package:// references")
+                    fix="fix the path: the package or directory holds no such file")
         return
     except MeshError as exc:
         yield Issue("SB402", f"{where}: mesh '{shape.geometry.filename}' cannot be loaded: {exc}",
                     element)
         return
+    tally.add_found(env.resolve(robot, shape), element)
     if info.triangles == 0:
         yield Issue("SB403", f"{where}: mesh '{shape.geometry.filename}' has no triangles",
                     element)
         return
     scale = shape.geometry.scale
-    if not all(math.isfinite(s) for s in scale):
+    if not values.usable_geometry(shape.geometry) or not values.plain_numbers(element):
         return
     extent_m = max(abs(hi - lo) * abs(s) for lo, hi, s in zip(info.lower, info.upper, scale,
                                                                   strict=True))

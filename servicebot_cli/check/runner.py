@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import re
 import xml.etree.ElementTree as ET
-from collections.abc import Callable, Iterable, Iterator
-from dataclasses import dataclass
+from collections.abc import Callable, Iterable, Iterator, Mapping
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check import names, read_errors, syntax, tree
@@ -22,6 +22,7 @@ from servicebot_cli.description.safe_xml import MAX_BYTES
 
 if TYPE_CHECKING:
     from servicebot_cli.description.loader import RobotSource
+    from servicebot_cli.description.packages import PackageLocation
     from servicebot_cli.description.robot import RobotDescription
 
 _SUPPRESS = re.compile(r"servicebot:\s*ignore\b([\s,A-Za-z0-9]*)", re.IGNORECASE)
@@ -29,10 +30,18 @@ _SUPPRESS = re.compile(r"servicebot:\s*ignore\b([\s,A-Za-z0-9]*)", re.IGNORECASE
 
 @dataclass(frozen=True)
 class FileReport:
-    """The findings of one checked file, in reporting order."""
+    """The findings of one checked file, in reporting order.
+
+    Attributes:
+        file: The file as the user named it (or as found in a directory).
+        findings: Its findings.
+        packages: Every package the file uses, by name: where and how it was found, or None
+            when it was found nowhere.
+    """
 
     file: str
     findings: tuple[Finding, ...]
+    packages: Mapping[str, PackageLocation | None] = field(default_factory=dict)
 
 
 def check_source(source: RobotSource, settings: Settings, env: CheckEnv) -> FileReport:
@@ -55,8 +64,11 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv) -> File
             raise
         issue = read_errors.issue_of(exc, source.display)
         return _report(source.display, place_issues(None, [issue], settings))
+    from servicebot_cli.check import packages
+
     findings = place_issues(robot, _issues(robot, settings, env), settings)
-    return _report(source.display, findings + _model(robot, findings, settings))
+    return _report(source.display, findings + _model(robot, findings, settings),
+                   packages.used(robot, env.search))
 
 
 def _model(robot: RobotDescription, findings: list[Finding], settings: Settings) -> list[Finding]:
@@ -147,10 +159,12 @@ def _place(robot: RobotDescription | None, issue: Issue, settings: Settings) -> 
         via = ref.via.location() if ref.via else None
     else:  # pragma: no cover - issues without a robot always carry `where`
         file, line, column = "", 0, 0
-    return Finding(issue.code, settings.severity_of(issue.code), issue.message, file, line,
+    severity = settings.severity.get(issue.code) or issue.severity or RULES[issue.code].severity
+    return Finding(issue.code, severity, issue.message, file, line,
                    column, issue.fix or RULES[issue.code].fix, via)
 
 
-def _report(file: str, findings: list[Finding]) -> FileReport:
+def _report(file: str, findings: list[Finding],
+            used: Mapping[str, PackageLocation | None] | None = None) -> FileReport:
     ordered = sorted(findings, key=lambda f: (f.code == "SB702", f.file != file, *f.sort_key()))
-    return FileReport(file, tuple(ordered))
+    return FileReport(file, tuple(ordered), dict(used or {}))

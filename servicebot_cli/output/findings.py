@@ -7,6 +7,7 @@ Renderers only render: a CheckResult in, text out. SARIF and JUnit live beside t
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 import click
 
@@ -16,6 +17,9 @@ from servicebot_cli.check.findings import Finding, Severity
 from servicebot_cli.check.result import CheckResult
 from servicebot_cli.common.files import atomic_output
 from servicebot_cli.common.jsonable import dumps
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.packages import PackageLocation
 
 JSON_FORMAT_VERSION = 1
 """Bumped when a key of ``check --format json`` changes meaning or goes away."""
@@ -57,6 +61,14 @@ def finding_record(finding: Finding, result: CheckResult) -> dict[str, object]:
     }
 
 
+def package_record(location: PackageLocation | None) -> dict[str, object]:
+    """How one package was found (documented in README.md); path null when nowhere."""
+    if location is None:
+        return {"path": None, "how": "not found", "ros_finds_it": False}
+    return {"path": str(location.path), "how": location.how,
+            "ros_finds_it": location.ros_finds_it}
+
+
 def json_text(result: CheckResult) -> str:
     """The versioned JSON document of a run."""
     return dumps({
@@ -64,7 +76,9 @@ def json_text(result: CheckResult) -> str:
         "tool": {"name": "servicebot check", "version": __version__},
         "files": [
             {"file": report.file,
-             "findings": [finding_record(f, result) for f in report.findings]}
+             "findings": [finding_record(f, result) for f in report.findings],
+             "packages": {name: package_record(location)
+                          for name, location in sorted(report.packages.items())}}
             for report in result.reports
         ],
         "summary": {

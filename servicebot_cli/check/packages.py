@@ -1,0 +1,160 @@
+"""The packages a description uses, how each was found, and the findings about them.
+
+Mesh references resolve through :class:`~servicebot_cli.description.packages.PackageResolver`,
+once per reference and directory in a run. Per file, a package that cannot be found is one
+finding saying how many meshes it hides (SB408), a package found only the way some loaders
+find it is one warning (SB409), and meshes fetched over the network are one note (SB410).
+"""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from servicebot_cli.check.findings import Issue
+from servicebot_cli.common.errors import PackageNotFound
+from servicebot_cli.description.packages import PackageLocation, PackageResolver, is_remote
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.robot import RobotDescription
+
+_FIND = re.compile(r"\$\(find\s+([^)\s]+)\s*\)")
+
+
+@dataclass(frozen=True)
+class Resolved:
+    """Where one mesh reference leads.
+
+    Attributes:
+        path: The file it names, or None when its package is nowhere.
+        package: The ``package://`` name, or None for paths and ``file://``.
+        location: How the package was found, or None.
+        error: Why the package was not found (where it looked), or None.
+    """
+
+    path: Path | None
+    package: str | None = None
+    location: PackageLocation | None = None
+    error: str | None = None
+
+
+@dataclass
+class PackageSearch:
+    """Resolves references with one resolver, remembering every answer for the run."""
+
+    resolver: PackageResolver = field(default_factory=PackageResolver.from_environment)
+    _resolved: dict[tuple[str, Path], Resolved] = field(default_factory=dict)
+    _located: dict[tuple[str, Path], PackageLocation | None] = field(default_factory=dict)
+
+    def resolve(self, uri: str, base_dir: Path) -> Resolved:
+        """Where ``uri``, written in a file in ``base_dir``, leads."""
+        key = (uri, base_dir)
+        if key not in self._resolved:
+            self._resolved[key] = self._resolve(uri, base_dir)
+        return self._resolved[key]
+
+    def _resolve(self, uri: str, base_dir: Path) -> Resolved:
+        if not uri.startswith("package://"):
+            return Resolved(self.resolver.resolve_uri(uri, base_dir))
+        name = uri[len("package://"):].partition("/")[0]
+        probe = PackageResolver(self.resolver.explicit, self.resolver.ros_package_path,
+                                self.resolver.ament_prefix_path, self.resolver.context)
+        try:
+            path = probe.resolve_uri(uri, base_dir)
+        except PackageNotFound as exc:
+            return Resolved(None, name, None, str(exc))
+        return Resolved(path, name, probe.found.get(name))
+
+    def locate(self, name: str, directory: Path) -> PackageLocation | None:
+        """How ``$(find name)`` in a file in ``directory`` was answered, or None."""
+        key = (name, directory)
+        if key not in self._located:
+            try:
+                self._located[key] = self.resolver.locate(name, directory)
+            except PackageNotFound:
+                self._located[key] = None
+        return self._located[key]
+
+
+def used(robot: RobotDescription, search: PackageSearch) -> dict[str, PackageLocation | None]:
+    """Every package the description uses, by name: its location, or None when not found.
+
+    ``$(find)`` packages of the xacro files read, then ``package://`` packages of meshes.
+    """
+    found: dict[str, PackageLocation | None] = {}
+    for file in robot.files if robot.expanded else ():
+        path = Path(file)
+        try:
+            text = path.read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            continue
+        for name in dict.fromkeys(_FIND.findall(text)):
+            if "$" not in name:
+                found.setdefault(name, search.locate(name, path.parent.absolute()))
+    for _, uri, base_dir in mesh_references(robot):
+        if uri.startswith("package://") and uri[len("package://"):].partition("/")[0]:
+            resolved = search.resolve(uri, base_dir)
+            if resolved.package is not None:
+                found.setdefault(resolved.package, resolved.location)
+    return found
+
+
+def mesh_references(robot: RobotDescription) -> Iterator[tuple[ET.Element, str, Path]]:
+    """Each ``<mesh>`` with a filename, the filename, and the directory of its source file."""
+    for link in robot.links:
+        for shape in (*link.visuals, *link.collisions):
+            uri = shape.geometry.filename
+            if shape.geometry.kind != "mesh" or not uri or shape.element is None:
+                continue
+            mesh = shape.element.find("geometry/mesh")
+            element = mesh if mesh is not None else shape.element
+            yield element, uri, Path(robot.source_of(shape.element).file).parent.absolute()
+
+
+@dataclass
+class FileTally:
+    """What one file's mesh references found, gathered while the geometry rules run."""
+
+    missing: dict[str, tuple[int, str, ET.Element]] = field(default_factory=dict)
+    loader_only: dict[str, tuple[PackageLocation, ET.Element]] = field(default_factory=dict)
+    remote: list[tuple[str, ET.Element]] = field(default_factory=list)
+
+    def add_missing(self, resolved: Resolved, element: ET.Element) -> None:
+        """Count a mesh hidden by a package that is nowhere."""
+        name = resolved.package or ""
+        count, message, first = self.missing.get(name, (0, resolved.error or "", element))
+        self.missing[name] = (count + 1, message, first)
+
+    def add_found(self, resolved: Resolved, element: ET.Element) -> None:
+        """Remember a package found only the way some loaders find it."""
+        if resolved.location is not None and not resolved.location.ros_finds_it:
+            self.loader_only.setdefault(resolved.location.name, (resolved.location, element))
+
+    def issues(self) -> Iterator[Issue]:
+        """SB408 per missing package, SB409 per loader-only package, SB410 for remote meshes."""
+        for name, (count, message, element) in self.missing.items():
+            meshes = f"{count} mesh{'es' if count != 1 else ''}"
+            yield Issue("SB408", f"{message.split(';', 1)[0]}: {meshes} not checked; looked in"
+                        f"{message.split('looked in', 1)[-1]}", element,
+                        fix=f"pass --package {name}=DIR, or check from the workspace that "
+                        "holds the package")
+        for location, element in self.loader_only.values():
+            message = location.warning or ""
+            if not location.name:
+                message = ("package:///PATH (three slashes) is read as an absolute path by some "
+                           "loaders; ROS resolves package:// by package name and would not find it")
+            yield Issue("SB409", message, element,
+                        fix=f"give the package a package.xml with <name>{location.name}</name>, "
+                        "or use a path relative to the file")
+        if self.remote:
+            uri, element = self.remote[0]
+            more = f" and {len(self.remote) - 1} more" if len(self.remote) > 1 else ""
+            yield Issue("SB410", f"mesh '{uri}'{more} fetched over the network (Gazebo Fuel): "
+                        "not read here", element)
+
+
+__all__ = ["FileTally", "PackageSearch", "Resolved", "is_remote", "mesh_references", "used"]
