@@ -8,7 +8,7 @@ itself) and :mod:`catalogue_ros` (Gazebo, ros2_control, controllers, the model).
 from __future__ import annotations
 
 import difflib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from servicebot_cli.check.findings import Severity
 
@@ -35,6 +35,8 @@ class Rule:
         summary: One line: what the rule finds.
         explanation: Why it matters, and what exactly triggers it.
         fix: How to fix it, when there is a general answer.
+        breaks: For a rule that is (or can be) an error, the standard consumer that refuses
+            the file or silently changes the robot (from :mod:`catalogue_breaks`).
     """
 
     code: str
@@ -43,6 +45,7 @@ class Rule:
     summary: str
     explanation: str
     fix: str | None = None
+    breaks: str | None = None
 
     @property
     def family(self) -> str:
@@ -51,11 +54,13 @@ class Rule:
 
 
 def _all_rules() -> dict[str, Rule]:
+    from servicebot_cli.check.catalogue_breaks import BREAKS
     from servicebot_cli.check.catalogue_ros import ROS_RULES
     from servicebot_cli.check.catalogue_urdf import URDF_RULES
 
     rules = (*URDF_RULES, *ROS_RULES)
-    return {rule.code: rule for rule in sorted(rules, key=lambda r: r.code)}
+    return {rule.code: replace(rule, breaks=BREAKS.get(rule.code))
+            for rule in sorted(rules, key=lambda r: r.code)}
 
 
 RULES: dict[str, Rule] = _all_rules()

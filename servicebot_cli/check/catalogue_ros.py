@@ -29,9 +29,12 @@ ROS_RULES = (
          "Use the suggested name."),
     Rule("SB506", "control-fixed-joint", E, "A command interface on a fixed joint",
          "A fixed joint cannot be commanded.", "Remove the command interface."),
-    Rule("SB507", "control-joint-twice", E, "A joint in two ros2_control systems",
-         "Two hardware systems would command the same joint; the resource manager refuses.",
-         "Keep the joint in one system."),
+    Rule("SB507", "control-joint-twice", E, "A joint interface in two ros2_control components",
+         "Two hardware components export the same command or state interface of a joint "
+         "(joint/position twice); the resource manager refuses the duplicate. One joint in an "
+         "actuator that only commands and a sensor that only reports (different interfaces) "
+         "is a supported layout and not reported.",
+         "Keep each interface of the joint in one component."),
     Rule("SB508", "control-limits", W, "Command limits outside the URDF limits",
          "A command interface's min/max allows more than the joint's URDF position or "
          "velocity limits.",

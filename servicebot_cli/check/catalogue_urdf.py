@@ -34,9 +34,11 @@ URDF_RULES: tuple[Rule, ...] = (
          "An unknown macro or property, a bad expression, a missing argument or include. The "
          "position is the xacro element being expanded when it failed.",
          "Fix the xacro source at the reported line, or pass the missing NAME:=VALUE."),
-    Rule("SB007", "package-not-found", E, "A $(find PKG) names a package that is nowhere",
-         "Packages resolve through --package NAME=DIR, ROS_PACKAGE_PATH and AMENT_PREFIX_PATH, "
-         "with no ROS installed; the message lists where it looked.",
+    Rule("SB007", "package-not-found", W, "A $(find PKG) names a package that is nowhere",
+         "Packages resolve as ROS finds them, with no ROS installed (the search is listed "
+         "under SB408); the message lists where it looked. The file cannot be expanded, so "
+         "nothing in it is checked; a missing package is the environment, not the file, so "
+         "this is a warning (--strict fails on it).",
          "Pass --package NAME=DIR, or source the ROS workspace that holds the package."),
     Rule("SB008", "not-a-robot", E, "The root element is not <robot>",
          "A URDF's root element is <robot>; SDF files (<sdf>) and xacro fragments are not "
@@ -133,9 +135,12 @@ URDF_RULES: tuple[Rule, ...] = (
          "urdfdom refuses revolute and prismatic joints without limits; continuous joints "
          "need none.",
          "Add <limit lower upper effort velocity>, or make the joint continuous."),
-    Rule("SB203", "lower-above-upper", E, "A lower limit above the upper limit",
-         "No position satisfies the limits; planners and controllers fail.",
-         "Swap the limits."),
+    Rule("SB203", "lower-above-upper", W, "A lower limit above the upper limit",
+         "pybullet reads lower > upper as 'no limit' and some pybullet_data models rely on "
+         "it; urdfdom accepts it. Elsewhere no position satisfies the limits: MoveIt's "
+         "bounds checks and Pinocchio's random configurations fail. Swapped limits are "
+         "usually a typo; for a joint without limits use type continuous.",
+         "Swap the limits, or make the joint continuous."),
     Rule("SB204", "equal-limits", W, "Equal lower and upper limits",
          "The joint cannot move (check_urdf accepts it; some tools read 0/0 as no limits).",
          "Make it fixed, or give it its real range."),
@@ -176,13 +181,17 @@ URDF_RULES: tuple[Rule, ...] = (
          "spheres by formula, closed meshes by their volume). Beyond a factor (2 by default, "
          "inertia-factor in the settings) the values are printed with the ones that match.",
          "Use the printed values, or compute the inertia from CAD."),
-    Rule("SB302", "negative-mass", E, "A negative mass", "Mass is positive or zero.",
+    Rule("SB302", "negative-mass", E, "A negative mass",
+         "Mass is positive or zero; no body has a negative mass.",
          "Write the link's mass in kg."),
-    Rule("SB303", "massless-moving-link", E, "A moving joint that moves nothing with mass",
+    Rule("SB303", "massless-moving-link", W, "A moving joint that moves nothing with mass",
          "A joint other than fixed whose child link, and everything attached below it, has "
          "no mass (zero, or no <inertial>): dynamics are singular and simulators drop or "
-         "refuse the link. Massless frames on fixed joints (tool frames, sensor frames) are "
-         "fine and not reported.",
+         "refuse the link. An error when the description is meant for a simulator (it has "
+         "<gazebo> elements, or a ros2_control hardware plugin for Gazebo, Ignition or gz); "
+         "a warning otherwise, since kinematic-only descriptions (MoveIt configurations, "
+         "RViz models) are valid without masses. Massless frames on fixed joints (tool "
+         "frames, sensor frames) are fine and not reported.",
          "Give the moving link its mass and inertia."),
     Rule("SB304", "missing-inertial", W, "A moving link without <inertial>",
          "The link is moved by a joint but carries no mass; links below it do. Gazebo drops "
@@ -207,12 +216,18 @@ URDF_RULES: tuple[Rule, ...] = (
          "KDL (robot_state_publisher, many ROS tools) ignores the root link's inertia and "
          "warns; Pinocchio and Gazebo use it.",
          "If KDL users matter, add a massless base_footprint root with a fixed joint."),
+    Rule("SB310", "inertia-without-mass", E, "Mass 0 with a non-zero inertia",
+         "Inertia is the integral of r^2 dm: a body without mass has none. A link with "
+         "<mass value=\"0\"> and non-zero moments is no body at all; each consumer reads it "
+         "differently (a massless frame, a body that turns but does not translate).",
+         "Give the link its real mass, or zero the inertia for a massless frame."),
     # -- geometry and files ----------------------------------------------------------------------
     Rule("SB401", "mesh-not-found", E, "A mesh file cannot be found",
          "Relative paths resolve from the URDF's directory, file:// from the root, "
-         "package://PKG through --package, ROS_PACKAGE_PATH and AMENT_PREFIX_PATH (as for "
-         "expand). The message says where it looked.",
-         "Fix the path, or pass --package NAME=DIR."),
+         "package://PKG/PATH in PKG's directory (found as in SB408). The package was found, "
+         "but the file is not in it, or the path names no file. A package that is nowhere "
+         "is SB408 instead.",
+         "Fix the path."),
     Rule("SB402", "mesh-unloadable", E, "A mesh file cannot be loaded",
          "The file exists but is not a mesh that trimesh (or the built-in STL, OBJ and "
          "COLLADA readers) can read.",
@@ -231,6 +246,26 @@ URDF_RULES: tuple[Rule, ...] = (
          "Use one of those shapes (a capsule: a cylinder and two spheres)."),
 )
 URDF_RULES += (
+    Rule("SB408", "package-not-found-for-meshes", W, "Meshes in a package that is nowhere",
+         "One finding per file and package, saying how many meshes it hides. A package is "
+         "looked for as ROS does, with no ROS installed: --package NAME=DIR; the package "
+         "holding the file (the nearest package.xml, by its <name>); every package of the "
+         "enclosing colcon workspace or repository (skipping COLCON_IGNORE, AMENT_IGNORE, "
+         "CATKIN_IGNORE); ROS_PACKAGE_PATH; AMENT_PREFIX_PATH (PREFIX/share/NAME); "
+         "directories named NAME on those paths. A missing package is the environment, not "
+         "the file (check_urdf accepts it), so a warning: the meshes are not checked.",
+         "Pass --package NAME=DIR, or check from the workspace that holds the package."),
+    Rule("SB409", "package-not-ros", W, "A package only some loaders would find",
+         "The package resolved, but not the way ROS finds packages: a directory named NAME "
+         "above the file (Pinocchio and yourdfpy read example-robot-data this way), NAME/ "
+         "beside the file (pybullet_data's package://meshes/), or package:///abs/path. "
+         "robot_state_publisher, RViz and Gazebo would not find the meshes. One finding per "
+         "file and package; --format json says how each package was found.",
+         "Give the package a package.xml with its <name>, or use paths relative to the file."),
+    Rule("SB410", "remote-mesh", N, "Meshes fetched over the network",
+         "http:// and https:// meshes (Gazebo Fuel models) are fetched by Gazebo when the "
+         "model loads; check never downloads them, so they are neither missing nor checked.",
+         None),
     Rule("SB407", "capsule", W, "A <capsule>, which URDF does not define",
          "pybullet and Drake read capsules; urdfdom, Pinocchio, RViz and Gazebo Classic "
          "ignore the shape, so the link has no collision there.",

@@ -36,7 +36,7 @@ def check(text: str, display: str, robot: RobotDescription) -> Iterator[Issue]:
         yield Issue("SB601", "no controller sections (NAME: ros__parameters: ...) found",
                     where=(display, 1, 1))
         return
-    checker = _Checker(display, robot)
+    checker = _Checker(display, robot, frozenset(sections))
     for name, params in sections.items():
         if name != "controller_manager":
             yield from checker.section(name, params)
@@ -71,9 +71,11 @@ def _number(node: yaml.Node | None) -> float | None:
 
 
 class _Checker:
-    def __init__(self, display: str, robot: RobotDescription) -> None:
+    def __init__(self, display: str, robot: RobotDescription,
+                 controllers: frozenset[str] = frozenset()) -> None:
         self.display = display
         self.robot = robot
+        self.controllers = controllers
         self.joints = {j.name: j for j in robot.joints}
         self._geometry: DriveGeometry | None | str = None
 
@@ -105,6 +107,8 @@ class _Checker:
                 yield Issue("SB601", f"{section}.{key} must be a list of joint names",
                             where=self.where(item))
                 continue
+            if self.not_a_joint(item.value):
+                continue
             joint = self.joints.get(item.value)
             if joint is None:
                 hint = str(NameNotFound.for_name(item.value, list(self.joints))).split("; ", 1)
@@ -113,6 +117,15 @@ class _Checker:
             elif not joint.movable:
                 yield Issue("SB606", f"{section}.{key}: joint '{item.value}' is {joint.type} "
                             "in the URDF", where=self.where(item))
+
+    def not_a_joint(self, name: str) -> bool:
+        """A name that is not a URDF joint's and is right as written.
+
+        A chained controller's reference interface (``pid_controller_left_wheel_joint/
+        left_wheel_joint``: a controller of this file, a slash, its reference) and a name a
+        launch file fills in (``$(var joint_prefix)1``).
+        """
+        return "$(" in name or name.partition("/")[0] in self.controllers
 
     def wheels(self, section: str, params: yaml.MappingNode) -> Iterator[Issue]:
         geometry = self.geometry()

@@ -74,6 +74,9 @@ class Issue:
         element: The XML element it is about, when there is one.
         fix: What to do instead.
         where: An explicit ``(file, line, column)``, for problems found before parsing.
+        severity: This occurrence's severity when the settings do not set the rule's, for
+            rules whose weight depends on the file (SB303 is an error only in a description
+            meant for a simulator); None for the catalogue's.
     """
 
     code: str
@@ -81,3 +84,4 @@ class Issue:
     element: ET.Element | None = None
     fix: str | None = None
     where: tuple[str, int, int] | None = None
+    severity: Severity | None = None

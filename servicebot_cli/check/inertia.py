@@ -8,9 +8,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from servicebot_cli.check import solids
+from servicebot_cli.check import solids, values
 from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound
-from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.kinematics.transforms import rpy_matrix
 
 if TYPE_CHECKING:
@@ -33,11 +33,17 @@ def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
             yield Issue("SB302", f"link '{link.name}' has mass {inertial.mass_kg:g} kg",
                         inertial.element)
             continue
-        values = inertial.inertia_kg_m2
-        if values is None or not all(math.isfinite(v) for v in values):
+        moments = inertial.inertia_kg_m2
+        if (moments is None or not values.bounded(moments, values.LARGEST_INERTIA)
+                or not values.plain_numbers(inertial.element)):
             continue  # SB012/SB013/SB014 report it
-        physical = yield from _possible(link, values)
-        if physical and _mass(link) > 0:
+        if inertial.mass_kg == 0.0 and any(moments):
+            yield Issue("SB310", f"link '{link.name}' has mass 0 and a non-zero inertia",
+                        inertial.element, fix="give the link its real mass, or zero the inertia "
+                        "(or remove the <inertial>) for a massless frame")
+            continue
+        physical = yield from _possible(link, moments)
+        if physical and _mass(link) > 0 and values.bounded((_mass(link),), values.LARGEST_INERTIA):
             yield from _against_geometry(robot, link, env)
     yield from _moving_masses(robot)
     root = robot.root_link
@@ -81,6 +87,8 @@ def _expected(robot: RobotDescription, link: Link, env: CheckEnv) -> solids.Soli
     """The link's collision geometry as one solid, or None when it cannot be known."""
     parts = []
     for shape in link.collisions:
+        if not values.usable_shape(shape):
+            return None  # SB012-SB014 and SB405 report it
         geometry = shape.geometry
         found = solids.primitive(geometry)
         if found is not None:
@@ -93,8 +101,7 @@ def _expected(robot: RobotDescription, link: Link, env: CheckEnv) -> solids.Soli
             info = env.mesh(robot, shape, with_mass=True)
         except (MeshNotFound, MeshError):
             return None
-        finite = all(map(math.isfinite, geometry.scale))
-        if info.mass is None or info.mass.volume <= 0 or not finite:
+        if info.mass is None or not info.mass.volume > 0:
             return None
         parts.append(solids.placed(info.mass.volume, np.array(info.mass.centroid),
                                    info.mass.second_moment, geometry.scale, shape.origin,
@@ -103,13 +110,20 @@ def _expected(robot: RobotDescription, link: Link, env: CheckEnv) -> solids.Soli
 
 
 def _against_geometry(robot: RobotDescription, link: Link, env: CheckEnv) -> Iterator[Issue]:
-    solid = _expected(robot, link, env)
     inertial = link.inertial
-    if solid is None or inertial is None or inertial.inertia_kg_m2 is None:
+    if inertial is None or inertial.inertia_kg_m2 is None or not values.usable_pose(
+            inertial.origin):
+        return
+    solid = _expected(robot, link, env)
+    if solid is None or not solids.usable(solid):
         return
     mass = _mass(link)
     expected = solids.inertia_of(solid, mass)
+    if not np.all(np.isfinite(expected)):
+        return
     want = np.linalg.eigvalsh(expected)
+    if not want.min() > 0:
+        return  # a flat solid: no inertia to compare with
     have = np.linalg.eigvalsh(solids.tensor(inertial.inertia_kg_m2))
     ratios = have / want
     worst = float(max(ratios.max(), 1.0 / ratios.min()))
@@ -147,20 +161,45 @@ def _moving_masses(robot: RobotDescription) -> Iterator[Issue]:
         if joint.parent in by_name and joint.child in by_name:
             below.setdefault(joint.parent or "", []).append(joint.child or "")
     carried = _subtree_masses(by_name, below)
+    simulator = simulated_by(robot)
     for joint in robot.joints:
         link = by_name.get(joint.child or "")
         if not joint.movable or link is None:
             continue
         if carried[link.name] == 0.0:
+            target = (f"; {simulator} needs mass on every moving link" if simulator
+                      else " (fine for kinematics only: no <gazebo> or simulator plugin here)")
             yield Issue("SB303", f"{joint.type} joint '{joint.name}' moves link '{link.name}', "
-                        "and nothing it carries has mass", link.element,
-                        fix="add an <inertial> with the link's real mass and inertia")
+                        f"and nothing it carries has mass{target}", link.element,
+                        fix="add an <inertial> with the link's real mass and inertia",
+                        severity=Severity.ERROR if simulator else Severity.WARNING)
         elif link.inertial is None:
             yield Issue("SB304", f"link '{link.name}' is moved by joint '{joint.name}' but has "
                         "no <inertial>", link.element, fix="add an <inertial>")
         elif _mass(link) == 0.0 and link.inertial.mass_kg == 0.0:
             yield Issue("SB305", f"link '{link.name}' is moved by joint '{joint.name}' and has "
                         "mass 0", link.inertial.element, fix="give the link its real mass")
+
+
+_SIMULATOR_PLUGINS = (("gz_ros2_control", "gz sim"), ("ign_ros2_control", "Ignition Gazebo"),
+                      ("gazebo_ros2_control", "Gazebo"), ("mujoco", "MuJoCo"),
+                      ("gazebo", "Gazebo"))
+
+
+def simulated_by(robot: RobotDescription) -> str | None:
+    """The simulator the description is meant for, or None for a kinematic-only description.
+
+    A ``<gazebo>`` element, or a ros2_control hardware plugin for Gazebo, Ignition, gz or
+    MuJoCo, says the file is simulated.
+    """
+    if robot.root.find("gazebo") is not None:
+        return "Gazebo"
+    for plugin in robot.root.iterfind("ros2_control/hardware/plugin"):
+        text = (plugin.text or "").strip().lower()
+        for prefix, name in _SIMULATOR_PLUGINS:
+            if text.startswith(prefix) or ("/" in text and prefix in text):
+                return name
+    return None
 
 
 def _subtree_masses(by_name: dict[str, Link], below: dict[str, list[str]]) -> dict[str, float]:

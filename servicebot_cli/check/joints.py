@@ -68,8 +68,10 @@ def _limits(joint: Joint) -> Iterator[Issue]:
         return
     lower, upper = limits.lower or 0.0, limits.upper or 0.0
     if lower > upper:
-        yield Issue("SB203", f"joint '{joint.name}' has lower {lower:g} > upper {upper:g}",
-                    joint.element, fix=f'lower="{upper:g}" upper="{lower:g}"')
+        yield Issue("SB203", f"joint '{joint.name}' has lower {lower:g} > upper {upper:g}: "
+                    "pybullet reads that as no limit, other tools as a range no position "
+                    "satisfies", joint.element,
+                    fix=f'lower="{upper:g}" upper="{lower:g}", or type="continuous" for no limit')
     elif lower == upper:
         yield Issue("SB204", f"joint '{joint.name}' has lower = upper = {lower:g}: it cannot "
                     "move", joint.element, fix="make it fixed, or give it its real range")

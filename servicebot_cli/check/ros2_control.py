@@ -29,7 +29,7 @@ _PORT_RE = re.compile(r"(/dev/\S+|COM\d+|(socket|rfc2217|loop|spy|hwgrep)://\S*)
 def check(robot: RobotDescription) -> Iterator[Issue]:
     """Every ros2_control and transmission issue of ``robot``."""
     joints = {j.name: j for j in robot.joints}
-    owner: dict[str, str] = {}
+    owner: dict[tuple[str, str, str], str] = {}
     for block in robot.ros2_control:
         if not block.plugin:
             yield Issue("SB509", f"<ros2_control name=\"{block.name}\"> has no <hardware>"
@@ -38,10 +38,7 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
         yield from _hardware(block)
         for item in block.joints:
             yield from _joint(item, joints, block)
-            if item.name in owner and owner[item.name] != block.name:
-                yield Issue("SB507", f"joint '{item.name}' is in ros2_control systems "
-                            f"'{owner[item.name]}' and '{block.name}'", item.element)
-            owner.setdefault(item.name, block.name)
+            yield from _twice(item, block, owner)
     names = list(joints)
     for transmission in robot.transmissions:
         for name in transmission.joints:
@@ -49,6 +46,24 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
                 hint = str(NameNotFound.for_name(name, names)).split("; ", 1)[-1]
                 yield Issue("SB511", f"transmission '{transmission.name}' names joint '{name}', "
                             f"which does not exist; {hint}", transmission.element)
+
+
+def _twice(item: ControlJoint, block: Ros2Control,
+           owner: dict[tuple[str, str, str], str]) -> Iterator[Issue]:
+    """SB507: the same interface of a joint in two components.
+
+    One joint in an actuator that only commands and a sensor that only reports (ros2_control
+    demos' modular robot) is a supported layout: the interfaces differ.
+    """
+    interfaces = [("command", i.name) for i in item.command_interfaces]
+    interfaces += [("state", i.name) for i in item.state_interfaces]
+    for kind, name in interfaces:
+        first = owner.setdefault((item.name, kind, name), block.name)
+        if first != block.name:
+            yield Issue("SB507", f"joint '{item.name}' {kind} interface '{name}' is in "
+                        f"ros2_control components '{first}' and '{block.name}'", item.element,
+                        fix="keep each interface of a joint in one component")
+            return
 
 
 def _hardware(block: Ros2Control) -> Iterator[Issue]:

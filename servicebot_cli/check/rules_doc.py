@@ -48,6 +48,8 @@ def markdown() -> str:
             lines.append(f"### {rule.code}\n")
             lines.append(f"**{rule.name}** ({rule.severity.value}): {_md(rule.summary)}.\n")
             lines.append(_md(rule.explanation) + "\n")
+            if rule.breaks:
+                lines.append(f"What breaks: {_md(rule.breaks)}.\n")
             if rule.fix:
                 lines.append(f"Fix: {_md(rule.fix)}\n")
             lines.append(f"Fixture: `tests/check/fixtures/{rule.code}_*`.\n")

@@ -121,6 +121,8 @@ def _explain(ctx: click.Context, param: click.Parameter, value: str | None) -> N
     click.echo(f"{found.code} {found.name} ({found.severity.value}, {found.family})")
     click.echo(f"\n{found.summary}.\n")
     click.echo(textwrap.fill(found.explanation, 88))
+    if found.breaks:
+        click.echo("\n" + textwrap.fill(f"What breaks: {found.breaks}.", 88))
     if found.fix:
         click.echo("\n" + textwrap.fill(f"Fix: {found.fix}", 88))
     click.echo("\nSilence it on one element with <!-- servicebot: ignore "

@@ -46,17 +46,17 @@ def test_a_directory_is_walked_and_xacro_includes_are_skipped(run):
 
 
 def test_check_file_is_short_for_check_urdf_file(run):
-    path = fixture("SB203")
+    path = fixture("SB205")
     assert run("check", path).stdout == run("check", "urdf", path).stdout
 
 
 def test_text_is_compiler_style_with_the_summary_last(run):
-    result = run("check", fixture("SB203"), "--isolated", "--ignore", "SB309")
+    result = run("check", fixture("SB205"), "--isolated", "--ignore", "SB309")
     lines = result.stdout.splitlines()
     assert result.exit_code == 1
-    assert lines[0] == (f"{fixture('SB203')}:26:3: error SB203 [lower-above-upper] joint "
-                        "'shoulder' has lower 1 > upper -1")
-    assert lines[1] == '    fix: lower="-1" upper="1"'
+    assert lines[0] == (f"{fixture('SB205')}:26:3: error SB205 [negative-effort-velocity] "
+                        "joint 'shoulder' has effort limit -10")
+    assert lines[1] == '    fix: effort="10"'
     assert lines[-1] == "1 file checked: 1 error, 0 warnings, 1 info; failed"
     assert "\x1b[" not in result.stdout
 
@@ -166,21 +166,21 @@ def test_inline_comment_inside_a_xacro_macro(run, tmp_path):
 
 def test_output_file_is_written_atomically_with_the_summary_on_stderr(run, tmp_path):
     out = tmp_path / "report.json"
-    result = run("check", fixture("SB203"), "--format", "json", "-o", out, "--isolated")
+    result = run("check", fixture("SB205"), "--format", "json", "-o", out, "--isolated")
     assert result.exit_code == 1 and result.stdout == ""
     assert result.stderr.strip() == "1 file checked: 1 error, 0 warnings, 2 info; failed"
-    assert codes(out.read_text()) == {"SB203", "SB309", "SB702"}
+    assert codes(out.read_text()) == {"SB205", "SB309", "SB702"}
     missing = tmp_path / "nope" / "report.json"
     assert_one_line_error(run("check", SIM_URDF, "-o", missing), 2, "does not exist")
     assert not missing.parent.exists()
 
 
 def test_colour_only_on_a_terminal():
-    piped = run_servicebot("check", fixture("SB203"), "--isolated")
+    piped = run_servicebot("check", fixture("SB205"), "--isolated")
     assert "\x1b[" not in piped.stdout
     leader, follower = pty.openpty()
     process = subprocess.Popen([sys.executable, "-m", "servicebot_cli", "check",
-                                str(fixture("SB203")), "--isolated"], stdout=follower,
+                                str(fixture("SB205")), "--isolated"], stdout=follower,
                                stderr=subprocess.DEVNULL)
     os.close(follower)
     output = b""

@@ -20,23 +20,23 @@ ISOLATED = SettingsChoice(isolated=True)
 
 
 def test_the_domain_run_needs_no_command_line():
-    path = fixture("SB203")
+    path = fixture("SB205")
     result = run_check(CheckRequest(UrdfTargets((str(path),)), ISOLATED))
     assert result.failed
     assert [r.file for r in result.reports] == [str(path)]
-    assert "SB203" in {f.code for f in result.findings}
+    assert "SB205" in {f.code for f in result.findings}
     clean = run_check(CheckRequest(UrdfTargets(default=RobotSource.bundled("real")), ISOLATED))
     assert not clean.failed and clean.reports[0].file.endswith("service_robot_real.urdf.xml")
 
 
 def test_the_domain_run_applies_the_settings_choice():
-    path = str(fixture("SB203"))
+    path = str(fixture("SB209"))
     only = run_check(CheckRequest(UrdfTargets((path,)),
                                   SettingsChoice(select=("SB2",), isolated=True)))
     assert {f.code[:3] for f in only.findings} == {"SB2"}
     ignored = run_check(CheckRequest(UrdfTargets((path,)),
-                               SettingsChoice(ignore=("SB203",), isolated=True)))
-    assert "SB203" not in {f.code for f in ignored.findings} and not ignored.failed
+                               SettingsChoice(ignore=("SB209",), isolated=True)))
+    assert "SB209" not in {f.code for f in ignored.findings} and not ignored.failed
 
 
 def test_the_domain_run_checks_controllers_against_each_urdf():
@@ -49,7 +49,7 @@ def test_the_domain_run_checks_controllers_against_each_urdf():
 
 
 def test_a_failing_check_is_exit_1_with_the_summary_and_no_error_line(run):
-    result = run("check", fixture("SB203"), "--isolated")
+    result = run("check", fixture("SB205"), "--isolated")
     assert result.exit_code == 1
     assert result.stderr == ""
     assert result.stdout.splitlines()[-1].endswith("; failed")
@@ -57,10 +57,10 @@ def test_a_failing_check_is_exit_1_with_the_summary_and_no_error_line(run):
 
 def test_a_failing_check_written_to_a_file_says_so_once_on_stderr(run, tmp_path):
     out = tmp_path / "report.sarif"
-    result = run("check", fixture("SB203"), "--isolated", "--format", "sarif", "-o", out)
+    result = run("check", fixture("SB205"), "--isolated", "--format", "sarif", "-o", out)
     assert result.exit_code == 1
     assert result.stderr.splitlines() == ["1 file checked: 1 error, 0 warnings, 2 info; failed"]
-    assert '"SB203"' in out.read_text()
+    assert '"SB205"' in out.read_text()
 
 
 @pytest.mark.parametrize(("args", "needles"), [

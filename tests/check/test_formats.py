@@ -12,7 +12,7 @@ import pytest
 from tests.check.helpers import fixture
 from tests.conftest import SIM_URDF
 
-MIXED = [fixture("SB203"), fixture("SB208"), SIM_URDF]  # an error, a warning, a clean robot
+MIXED = [fixture("SB209"), fixture("SB208"), SIM_URDF]  # an error, a warning, a clean robot
 
 
 def test_json_document(run):
@@ -26,7 +26,7 @@ def test_json_document(run):
     error = document["files"][0]["findings"][1]
     assert set(error) == {"code", "name", "severity", "fails", "message", "file", "line",
                           "column", "via", "fix"}
-    assert (error["code"], error["severity"], error["fails"]) == ("SB203", "error", True)
+    assert (error["code"], error["severity"], error["fails"]) == ("SB209", "error", True)
 
 
 def _sarif_schema():
@@ -51,16 +51,16 @@ def test_sarif_is_valid_2_1_0(run, strict):
     (sarif_run,) = log["runs"]
     rules = sarif_run["tool"]["driver"]["rules"]
     results = sarif_run["results"]
-    assert {r["ruleId"] for r in results} >= {"SB203", "SB208", "SB017"}
+    assert {r["ruleId"] for r in results} >= {"SB209", "SB208", "SB017"}
     for entry in results:
         assert rules[entry["ruleIndex"]]["id"] == entry["ruleId"]
         assert entry["level"] in ("error", "warning", "note")
         assert entry["locations"][0]["physicalLocation"]["artifactLocation"]["uri"]
     warning = next(r for r in results if r["ruleId"] == "SB208")
     assert warning["level"] == ("error" if strict else "warning")
-    region = next(r for r in results if r["ruleId"] == "SB203")["locations"][0][
+    region = next(r for r in results if r["ruleId"] == "SB209")["locations"][0][
         "physicalLocation"]["region"]
-    assert region == {"startLine": 26, "startColumn": 3}
+    assert region == {"startLine": 43, "startColumn": 3}
 
 
 def test_junit_is_well_formed(run):
@@ -72,7 +72,7 @@ def test_junit_is_well_formed(run):
     cases = suite.findall("testcase")
     assert [c.get("name") for c in cases][:2] == [str(p) for p in MIXED[:2]]
     (failure,) = cases[0].findall("failure")
-    assert failure.get("type") == "SB203"
+    assert failure.get("type") == "SB209"
     assert "SB208" in cases[1].findtext("system-out")
     strict = ET.fromstring(run("check", *MIXED, "--format", "junit", "--strict").stdout)
     assert strict[0].get("failures") == "2"
@@ -80,15 +80,15 @@ def test_junit_is_well_formed(run):
 
 def test_github_annotations(run, tmp_path):
     odd = tmp_path / "a,b:c.urdf"
-    odd.write_text(fixture("SB203").read_text())
-    result = run("check", fixture("SB203"), fixture("SB208"), odd, "--format", "github",
+    odd.write_text(fixture("SB209").read_text())
+    result = run("check", fixture("SB209"), fixture("SB208"), odd, "--format", "github",
                  "--isolated")
     lines = result.stdout.splitlines()
     pattern = re.compile(r"^::(error|warning|notice) file=[^,]+(,line=\d+,col=\d+)?,title=SB\d{3} "
                          r"[a-z0-9-]+::.+$")
     annotations = [ln for ln in lines if ln.startswith("::")]
     assert annotations and all(pattern.match(ln) for ln in annotations), annotations
-    assert f"::error file={fixture('SB203')},line=26,col=3,title=SB203 lower-above-upper::" \
+    assert f"::error file={fixture('SB209')},line=43,col=3,title=SB209 mimic-unknown-joint::" \
         in result.stdout
     assert "a%2Cb%3Ac.urdf" in result.stdout
     assert lines[-1].startswith("3 files checked")

@@ -26,8 +26,8 @@ from tests.conftest import REAL_URDF, SIM_URDF
 
 # Reviewed defects, by rule: SB209 mimic of a joint that is not there; SB308 CAD inertias that
 # break the triangle inequality by 10-90 %; SB306 inertias with a negative principal moment;
-# SB303 fingers moved by joints with no mass anywhere; SB401 meshes under package:/// (three
-# slashes) or /usr/Romeo; SB501 <gazebo reference> to links that were renamed; SB511 a
+# SB310 feet whose mass was rounded to 0 on export, keeping their inertia; SB401 meshes
+# under /usr/Romeo; SB501 <gazebo reference> to links that were renamed; SB511 a
 # transmission kept for a joint cut from the reduced model; ur3.urdf holds an empty <robot>.
 KNOWN_DEFECTS = {
     "alex_description/urdf/alex_psyonic_hands.urdf": {"SB209", "SB308"},
@@ -35,8 +35,8 @@ KNOWN_DEFECTS = {
     "allegro_hand_description/urdf/allegro_right_hand.urdf": {"SB308"},
     "anymal_c_simple_description/urdf/anymal.urdf": {"SB308"},
     "pr2_description/urdf/pr2.urdf": {"SB308", "SB501"},
-    "romeo_description/urdf/romeo.urdf": {"SB303"},
-    "romeo_description/urdf/romeo_laas_small.urdf": {"SB303", "SB306", "SB308", "SB401"},
+    "bolt_description/robots/bolt.urdf": {"SB310"},
+    "romeo_description/urdf/romeo_laas_small.urdf": {"SB306", "SB308", "SB401"},
     "romeo_description/urdf/romeo_small.urdf": {"SB308"},
     "talos_data/robots/talos_full_v2.urdf": {"SB401"},
     "talos_data/robots/talos_full_v2_box.urdf": {"SB401"},
