@@ -13,9 +13,11 @@ URDF_SUFFIXES = (".urdf", ".xml")
 
 @click.command(cls=Command)
 @robot_arguments()
-@click.option("-o", "--output", type=OutputPath(URDF_SUFFIXES, allow_dash=True, what="URDF"),
+@click.option("-o", "--output",
+              type=OutputPath(URDF_SUFFIXES, allow_dash=True, what="URDF", parents=True),
               default="-", metavar="FILE.urdf",
-              help="Write the URDF here (.urdf or .xml, atomically) instead of to stdout.")
+              help="Write the URDF here (.urdf or .xml, atomically) instead of to stdout; "
+              "missing directories are created, as xacro -o does.")
 @click.pass_context
 def expand(ctx: click.Context, robot_args: RobotArgs, output: str) -> None:
     """Expand a xacro file into URDF.
@@ -51,4 +53,4 @@ def expand(ctx: click.Context, robot_args: RobotArgs, output: str) -> None:
     if output == "-":
         click.echo(robot.xml_text, nl=False)
     else:
-        write_atomic(output, robot.xml_text)
+        write_atomic(output, robot.xml_text, make_parents=True)

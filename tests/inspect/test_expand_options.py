@@ -25,12 +25,26 @@ def test_dash_is_stdout(run):
 @pytest.mark.parametrize(("target", "needle"), [
     ("robot.txt", "URDF files end in .urdf or .xml"),
     ("robot.xacro", "name it e.g. 'robot.urdf'"),
-    ("missing/robot.urdf", "does not exist"),
 ])
 def test_bad_output_paths_are_refused_before_the_xacro_is_read(run, tmp_path, target, needle):
     result = run("expand", tmp_path / "nope.xacro", "-o", tmp_path / target)
     assert_one_line_error(result, 2, "--output", needle)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_missing_output_directories_are_created_as_xacro_does(run, tmp_path):
+    out = tmp_path / "build" / "urdf" / "robot.urdf"
+    result = run("expand", XACRO_SOURCE, "hardware:=real", "-o", out)
+    assert result.exit_code == 0, result.stderr
+    assert out.read_text() == REAL_URDF.read_text()
+    assert [p.name for p in out.parent.iterdir()] == ["robot.urdf"]  # no temporary file left
+
+
+def test_a_file_in_the_way_of_the_output_directory_is_refused(run, tmp_path):
+    (tmp_path / "build").write_text("")
+    result = run("expand", XACRO_SOURCE, "-o", tmp_path / "build" / "robot.urdf")
+    assert result.exit_code == 2, result.stdout
+    assert (tmp_path / "build").read_text() == ""
 
 
 def test_a_directory_is_not_an_output_file(run, tmp_path):
