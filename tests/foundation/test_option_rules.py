@@ -87,7 +87,7 @@ def test_the_same_xacro_argument_for_two_files_is_fine(run):
 @pytest.mark.parametrize(("args", "code"), [
     (["fk", "no_such_robot.urdf"], 2),
     (["ik", "--position", "5", "5", "5"], 1),
-    (["check", "tests/check/fixtures/SB203_lower_above_upper.urdf"], 1),
+    (["check", "tests/check/fixtures/SB107_kinematic_loop.urdf"], 1),
 ])
 def test_debug_adds_the_traceback_and_keeps_the_exit_code(run, args, code):
     plain = run(*args)
