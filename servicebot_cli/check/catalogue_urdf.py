@@ -175,6 +175,12 @@ URDF_RULES: tuple[Rule, ...] = (
          "Continuous joints have no position limits; lower and upper are read by nothing.",
          "Remove them, or make the joint revolute."),
     # -- inertia ---------------------------------------------------------------------------------
+    Rule("SB215", "wheel-without-velocity-limit", W, "A drive wheel without a velocity limit",
+         "A continuous joint that turns a wheel of a differential drive (its link carries a "
+         "cylinder turning about the joint axis, on the left or right) has no <limit "
+         "velocity>. `servicebot drive` refuses such a robot, since nothing bounds the wheel "
+         "speed it may command; urdfdom, Gazebo and diff_drive_controller accept it.",
+         "Add <limit effort=\"...\" velocity=\"...\"/> with the motor's top speed in rad/s."),
     Rule("SB301", "inertia-mismatch", W, "Inertia does not match the mass and collision geometry",
          "The principal moments of the inertia are compared, in any frame, with those of a "
          "solid of the link's mass filling its collision geometry (boxes, cylinders and "

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue
-from servicebot_cli.common.errors import NameNotFound
+from servicebot_cli.common.errors import DescriptionError, NameNotFound
 from servicebot_cli.description.elements import JOINT_TYPES, parse_float
 
 if TYPE_CHECKING:
@@ -39,6 +39,28 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
         yield from _axis(joint)
         yield from _safety(joint)
     yield from _mimics(robot)
+    yield from _wheel_speeds(robot)
+
+
+def _wheel_speeds(robot: RobotDescription) -> Iterator[Issue]:
+    """SB215: a drive wheel (continuous, carrying a cylinder) without a velocity limit."""
+    unlimited = [j for j in robot.joints if j.type == "continuous"
+                 and not (j.limits and j.limits.velocity and math.isfinite(j.limits.velocity))]
+    if not unlimited:
+        return
+    from servicebot_cli.kinematics.drive_geometry import drive_geometry
+
+    try:
+        wheels = {w.joint for w in drive_geometry(robot).wheels}
+    except (DescriptionError, ValueError, KeyError):
+        return  # not a differential drive
+    for joint in unlimited:
+        if joint.name in wheels:
+            yield Issue("SB215", f"wheel joint '{joint.name}' has no velocity limit: "
+                        "`servicebot drive` refuses the robot, since nothing bounds the "
+                        "speed it may command", joint.element,
+                        fix='add <limit effort="..." velocity="..."/> with the motor\'s top '
+                        "speed in rad/s")
 
 
 def _limits(joint: Joint) -> Iterator[Issue]:

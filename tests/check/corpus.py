@@ -52,3 +52,18 @@ def check_urdf_rejects(path: Path, timeout_s: float = 3.0) -> bool:
     except subprocess.TimeoutExpired:
         return True
     return result.returncode != 0
+
+
+def check_urdf_drops(path: Path, timeout_s: float = 3.0) -> bool:
+    """True when check_urdf fails on ``path`` or drops a part of it.
+
+    urdfdom logs "Could not parse visual/collision element" and carries on without the shape
+    (exit 0): the robot it returns is not the one in the file.
+    """
+    _, native, env = check_urdf_commands()
+    try:
+        result = subprocess.run([*native, str(path)], capture_output=True, text=True, env=env,
+                                timeout=timeout_s)
+    except subprocess.TimeoutExpired:
+        return True
+    return result.returncode != 0 or "Could not parse" in result.stdout + result.stderr

@@ -1,0 +1,123 @@
+"""What is an error and what is a warning, on the layouts real description packages use."""
+
+from __future__ import annotations
+
+import pytest
+
+from servicebot_cli.check.catalogue import RULES
+from servicebot_cli.check.findings import Severity
+from tests.check.helpers import findings, fixture
+from tests.conftest import REPO, SIM_URDF
+
+ARM = """<robot name="arm">
+  <link name="base"/>
+  <link name="arm"/>
+  <joint name="shoulder" type="revolute">
+    <parent link="base"/><child link="arm"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="10" velocity="1"/>
+  </joint>
+  {extra}
+</robot>
+"""
+GZ_CONTROL = """<ros2_control name="sim" type="system">
+    <hardware><plugin>{plugin}</plugin></hardware>
+    <joint name="shoulder"><command_interface name="position"/></joint>
+  </ros2_control>"""
+
+
+def _severities(run, path, code: str) -> list[str]:
+    result = run("check", path, "--format", "json", "--isolated")
+    return [f["severity"] for f in findings(result.stdout) if f["code"] == code]
+
+
+def test_every_error_rule_names_what_breaks(run):
+    for rule in RULES.values():
+        if rule.severity is Severity.ERROR:
+            assert rule.breaks, rule.code
+    explained = run("check", "--explain", "SB303").stdout
+    assert "What breaks:" in explained and "MuJoCo" in explained
+
+
+def test_a_kinematic_only_arm_without_masses_is_a_warning(run, tmp_path):
+    path = tmp_path / "arm.urdf"
+    path.write_text(ARM.format(extra=""))
+    assert _severities(run, path, "SB303") == ["warning"]
+    assert run("check", path, "--isolated").exit_code == 0
+
+
+@pytest.mark.parametrize("extra", [
+    '<gazebo reference="arm"><mu1>0.5</mu1></gazebo>',
+    GZ_CONTROL.format(plugin="gz_ros2_control/GazeboSimSystem"),
+    GZ_CONTROL.format(plugin="ign_ros2_control/IgnitionSystem"),
+    GZ_CONTROL.format(plugin="gazebo_ros2_control/GazeboSystem"),
+])
+def test_a_description_for_a_simulator_without_masses_is_an_error(run, tmp_path, extra):
+    path = tmp_path / "arm.urdf"
+    path.write_text(ARM.format(extra=extra))
+    assert _severities(run, path, "SB303") == ["error"]
+    assert run("check", path, "--isolated").exit_code == 1
+
+
+def test_a_severity_set_in_the_settings_wins_over_the_context(run, tmp_path):
+    path = tmp_path / "arm.urdf"
+    path.write_text(ARM.format(extra='<gazebo reference="arm"/>'))
+    (tmp_path / "pyproject.toml").write_text('[tool.servicebot.check]\n'
+                                             'severity = { SB303 = "info" }\n')
+    result = run("check", path, "--format", "json", "--config", tmp_path / "pyproject.toml")
+    assert [f["severity"] for f in findings(result.stdout) if f["code"] == "SB303"] == ["info"]
+
+
+def test_an_actuator_that_commands_and_a_sensor_that_reports_share_a_joint(run, tmp_path):
+    text = fixture("SB507").read_text()
+    first = text.index('<command_interface name="position"></command_interface>')
+    second = text.index('<command_interface name="position"></command_interface>', first + 1)
+    end = len('<command_interface name="position"></command_interface>')
+    state = text.index('<state_interface name="position"/>')
+    # the first component only commands, the second only reports
+    layout = (text[:state] + text[state + len('<state_interface name="position"/>'):second]
+              + text[second + end:])
+    assert layout.count("command_interface") == 2 and layout.count("state_interface") == 1
+    path = tmp_path / "modular.urdf"
+    path.write_text(layout)
+    assert _severities(run, path, "SB507") == []
+    assert _severities(run, fixture("SB507"), "SB507") == ["error"]
+
+
+def test_lower_above_upper_says_what_pybullet_makes_of_it(run):
+    result = run("check", fixture("SB203"), "--format", "json", "--isolated")
+    (found,) = [f for f in findings(result.stdout) if f["code"] == "SB203"]
+    assert found["severity"] == "warning" and "pybullet reads that as no limit" in found["message"]
+
+
+def test_chained_controllers_and_launch_substitutions_are_not_unknown_joints(run, tmp_path):
+    yaml_text = (REPO / "robots" / "controllers.yaml").read_text() + """
+pid_controller_left_wheel_joint:
+  ros__parameters:
+    dof_names: ["front_left_wheel_joint"]
+
+chained_controller:
+  ros__parameters:
+    joints: ["pid_controller_left_wheel_joint/front_left_wheel_joint", "$(var prefix)1"]
+
+broken_controller:
+  ros__parameters:
+    joints: ["no_such_controller/front_left_wheel_joint"]
+"""
+    path = tmp_path / "controllers.yaml"
+    path.write_text(yaml_text)
+    result = run("check", "controllers", path, "--urdf", SIM_URDF, "--format", "json",
+                 "--isolated")
+    unknown = [f["message"] for f in findings(result.stdout) if f["code"] == "SB602"]
+    assert len(unknown) == 1 and "no_such_controller/front_left_wheel_joint" in unknown[0]
+
+
+def test_a_wheel_without_a_velocity_limit_is_what_drive_refuses(run):
+    from servicebot_cli.common.errors import DescriptionError
+    from servicebot_cli.description.loader import RobotSource, read_description
+    from servicebot_cli.drive.motors import motor_map
+
+    path = fixture("SB215")
+    assert _severities(run, path, "SB215") == ["warning"]
+    with pytest.raises(DescriptionError, match="front_left_wheel_joint"):
+        motor_map(read_description(RobotSource.of(path)))
+    assert _severities(run, SIM_URDF, "SB215") == []
