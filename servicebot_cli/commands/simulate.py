@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
 
@@ -16,9 +17,32 @@ from servicebot_cli.commands.options import (
     given,
     robot_arguments,
 )
+from servicebot_cli.common.errors import AnswerIsNo
+
+if TYPE_CHECKING:
+    from servicebot_cli.simulate.expectations import Expectation
 
 PLOT_SUFFIXES = (".png", ".svg", ".pdf")
 """What the plot writer produces, chosen by the file's extension."""
+
+
+class ExpectationParam(click.ParamType["Expectation"]):
+    """``FIELD OP NUMBER`` over the summary, checked at parsing (fields named as in the JSON)."""
+
+    name = "EXPR"
+
+    def convert(self, value: str | Expectation, param: click.Parameter | None,
+                ctx: click.Context | None) -> Expectation:
+        """Parse the expectation; a bad one is a usage error naming it."""
+        from servicebot_cli.simulate.expectations import Expectation as Parsed
+        from servicebot_cli.simulate.expectations import ExpectationError, parse_expectation
+
+        if isinstance(value, Parsed):
+            return value
+        try:
+            return parse_expectation(str(value))
+        except ExpectationError as exc:
+            self.fail(str(exc), param, ctx)
 
 
 @click.command(cls=Command)
@@ -53,6 +77,9 @@ PLOT_SUFFIXES = (".png", ".svg", ".pdf")
               "controllers.yaml beside the robot].")
 @click.option("--speed", type=Number(positive=True), default=1.0,
               show_default=True, help="Playback speed of the live window (not with --headless).")
+@click.option("--expect", "expectations", type=ExpectationParam(), multiple=True,
+              metavar="EXPR", help="Fail (exit 1) unless the summary meets EXPR, e.g. "
+              "'collisions == 0' or 'odometry_drift.final_position_m < 0.05' (repeatable).")
 @click.option("--progress/--no-progress", default=None,
               help="Progress bar on stderr  [default: on a terminal, outside CI].")
 @format_option
@@ -61,7 +88,7 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
              duration_s: float | None, wheel_separation_multiplier: float | None,
              saturation: str | None, cmd_vel_timeout_s: float | None, max_linear: float | None,
              max_angular: float | None, controllers_file: str | None, speed: float,
-             progress: bool | None, fmt: str) -> None:
+             expectations: tuple[Expectation, ...], progress: bool | None, fmt: str) -> None:
     """Simulate the robot's base, arm and sensors, headless and fast.
 
     Drives the diff-drive base with the scenario's timed cmd_vel, moves the arm along its
@@ -88,13 +115,17 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
                           controllers_file=controllers_file)
     request = SimulateRequest(robot_args.source(), scenario_file, overrides, seed,
                               Outputs(out_dir, bag, plot), live_window=not headless,
-                              progress=progress)
+                              progress=progress, expectations=expectations)
     report = session.run(request, stderr=sys.stderr)
     show_simulation(report, fmt)
     if not headless:
         from servicebot_cli.simulate.files.live import show
 
         show(report.result, speed=speed)
+    if report.unmet:
+        from servicebot_cli.output.simulate_text import unmet_line
+
+        raise AnswerIsNo(unmet_line(report))
 
 
 def _refuse_without_effect(headless: bool, out_dir: str | None, bag: str | None) -> None:

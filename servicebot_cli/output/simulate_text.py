@@ -63,3 +63,10 @@ def show_simulation(report: SimulateReport, fmt: str) -> None:
         for line in summary_lines(report.summary):
             click.echo(line)
     click.echo(speed_line(report), err=True)
+
+
+def unmet_line(report: SimulateReport) -> str:
+    """One line naming each expectation the run did not meet, with the value it had."""
+    parts = [f"{expectation.text} (is {'no value' if value is None else format_number(value)})"
+             for expectation, value in report.unmet]
+    return f"{len(parts)} of the run's expectations not met: " + "; ".join(parts)

@@ -20,6 +20,7 @@ if TYPE_CHECKING:
     from servicebot_cli.description.loader import RobotSource
     from servicebot_cli.description.robot import RobotDescription
     from servicebot_cli.simulate.bag.ros_messages import Stream
+    from servicebot_cli.simulate.expectations import Expectation
     from servicebot_cli.simulate.simulator import SimResult
     from servicebot_cli.simulate.summary import Summary
 
@@ -58,6 +59,7 @@ class SimulateRequest:
         outputs: Files and directories to write.
         live_window: The run is played back in a window afterwards: a display must exist.
         progress: Draw a progress bar (None: on a terminal, outside CI).
+        expectations: What the summary must meet (``simulate --expect``).
     """
 
     robot: RobotSource
@@ -67,15 +69,21 @@ class SimulateRequest:
     outputs: Outputs = Outputs()
     live_window: bool = False
     progress: bool | None = None
+    expectations: tuple[Expectation, ...] = ()
 
 
 @dataclass(frozen=True)
 class SimulateReport:
-    """What the command shows: the summary, the wall time of the run [s] and the run itself."""
+    """What the command shows: the summary, the wall time of the run [s] and the run itself.
+
+    ``unmet`` holds each expectation the summary does not meet, with the value it has (None
+    when the field has none).
+    """
 
     summary: Summary
     wall_s: float
     result: SimResult
+    unmet: tuple[tuple[Expectation, float | None], ...] = ()
 
     @property
     def real_time_factor(self) -> float:
@@ -106,9 +114,12 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
     if problem:  # checked after the input, before any work
         raise ServicebotError(f"{problem}; use --headless (with --plot FILE.png for a picture)")
     scenario_dir = Path(request.scenario_file).parent if request.scenario_file else Path.cwd()
-    return run_and_write(robot, scenario, seed=request.seed, outputs=request.outputs,
-                         scenario_dir=scenario_dir, stderr=stderr, progress=request.progress,
-                         clock=clock, controllers=request.overrides.controllers_file)
+    report = run_and_write(robot, scenario, seed=request.seed, outputs=request.outputs,
+                           scenario_dir=scenario_dir, stderr=stderr, progress=request.progress,
+                           clock=clock, controllers=request.overrides.controllers_file)
+    unmet = tuple((e, e.value(report.summary)) for e in request.expectations
+                  if not e.holds(report.summary))
+    return dataclasses.replace(report, unmet=unmet)
 
 
 def with_overrides(scenario: Scenario, overrides: Overrides) -> Scenario:

@@ -23,9 +23,9 @@ from dataclasses import dataclass
 from pathlib import Path as FsPath
 
 from servicebot_cli.common.inputs import read_input_text
+from servicebot_cli.simulate.scenario.fields import FieldPathError, parse_field
 from servicebot_cli.simulate.scenario.located import Located, Path, ScenarioError, Value, parse
 from servicebot_cli.simulate.scenario.schema import Reader
-from servicebot_cli.sweep.fields import FieldPathError, parse_field
 
 MAX_SWEEP_BYTES = 1_000_000
 MAX_RUNS = 100_000

@@ -17,9 +17,9 @@ from pathlib import Path as FsPath
 
 from servicebot_cli import __version__
 from servicebot_cli.simulate.scenario.definition import Scenario, read_scenario
+from servicebot_cli.simulate.scenario.fields import FieldPathError, with_values
 from servicebot_cli.simulate.scenario.located import Located, Path, ScenarioError, Value
 from servicebot_cli.sweep.definition import Setting, SweepDefinition, SweepError
-from servicebot_cli.sweep.fields import FieldPathError, with_values
 
 Values = tuple[tuple[str, Value], ...]
 """Scenario fields, as written in the sweep file, and their values, in file order."""

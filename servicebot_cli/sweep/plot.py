@@ -30,7 +30,7 @@ _NO_METADATA: dict[str, dict[str, None]] = {
 
 def plotted_metrics(report: SweepReport) -> list[str]:
     """The headline metrics, then those the expectations name, without repeats."""
-    from servicebot_cli.sweep.expectations import parse_expectation
+    from servicebot_cli.simulate.expectations import parse_expectation
 
     named = [_dotted(parse_expectation(text).field) for text in report.expectations]
     present = {name for r in report.results for name in r.metrics}
@@ -86,7 +86,7 @@ def write_plot(report: SweepReport, path: str | Path) -> None:
 
 
 def _bounds(report: SweepReport) -> dict[str, list[float]]:
-    from servicebot_cli.sweep.expectations import parse_expectation
+    from servicebot_cli.simulate.expectations import parse_expectation
 
     bounds: dict[str, list[float]] = {}
     for text in report.expectations:

@@ -16,8 +16,8 @@ from typing import TYPE_CHECKING, TextIO
 if TYPE_CHECKING:
     from servicebot_cli.description.loader import RobotSource
     from servicebot_cli.description.robot import RobotDescription
+    from servicebot_cli.simulate.expectations import Expectation
     from servicebot_cli.sweep.definition import SweepDefinition
-    from servicebot_cli.sweep.expectations import Expectation
     from servicebot_cli.sweep.plan import Run
     from servicebot_cli.sweep.store import Record
 
@@ -189,7 +189,7 @@ def _run_all(request: SweepRequest, definition: SweepDefinition, todo: list[Run]
 
 
 def _expectations(definition: SweepDefinition) -> list[Expectation]:
-    from servicebot_cli.sweep.expectations import ExpectationError, parse_expectation
+    from servicebot_cli.simulate.expectations import ExpectationError, parse_expectation
 
     checks = []
     for item in definition.expectations:

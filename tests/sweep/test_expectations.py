@@ -7,7 +7,7 @@ import json
 
 import pytest
 
-from servicebot_cli.sweep.expectations import ExpectationError, parse_expectation
+from servicebot_cli.simulate.expectations import ExpectationError, parse_expectation
 
 SUMMARY = {"collisions": [{"time_s": 1.0}], "distance_m": 2.5,
            "odometry_drift": {"final_position_m": 0.3}, "odometry_final_pose": None,

@@ -9,6 +9,7 @@ plain dicts, lists, strings, numbers, booleans and None, and a map from each val
 from __future__ import annotations
 
 import datetime
+import functools
 import json
 import re
 from dataclasses import dataclass
@@ -77,11 +78,30 @@ def parse(text: str, display: str, *, json_syntax: bool) -> Located:
     return _parse_yaml(text, display)
 
 
+@functools.cache
+def _yaml_loader() -> type[SafeLoader]:
+    """PyYAML's safe loader, reading numbers as people write them (YAML 1.2).
+
+    PyYAML follows YAML 1.1, where ``1e2`` and ``5e-2`` (an exponent without a dot) are
+    strings; YAML 1.2, JSON and every person writing a scenario read them as numbers.
+    """
+    import yaml
+
+    class Loader(yaml.SafeLoader):  # type: ignore[misc]  # PyYAML ships no types
+        """SafeLoader with YAML 1.2's exponent floats."""
+
+    Loader.add_implicit_resolver(
+        "tag:yaml.org,2002:float",
+        re.compile(r"^[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)[eE][-+]?[0-9]+$"),
+        list("-+0123456789."))
+    return Loader
+
+
 def _parse_yaml(text: str, display: str) -> Located:
     import yaml  # PyYAML ships no types
 
     try:
-        node = yaml.compose(text, Loader=yaml.SafeLoader)
+        node = yaml.compose(text, Loader=_yaml_loader())
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark
         line = f":{mark.line + 1}" if mark is not None else ""
@@ -91,7 +111,7 @@ def _parse_yaml(text: str, display: str) -> Located:
     positions: Positions = {}
     if node is None:
         return Located({}, positions, display)
-    constructor = yaml.SafeLoader(text)
+    constructor = _yaml_loader()(text)
     return Located(_yaml_value(node, (), positions, constructor, display), positions, display)
 
 

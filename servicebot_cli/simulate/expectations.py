@@ -6,7 +6,7 @@ length, so ``collisions`` is the number of collisions); OP is one of ``< <= > >=
 NUMBER is a finite decimal number. Field names are checked against the summary's keys
 before any run. A field without a value in a run (``null``) fails the expectation.
 
-This is the sweep's own minimal parser, until ``simulate --expect`` has a shared one.
+One parser for ``simulate --expect`` and the ``expect:`` list of a sweep file.
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from servicebot_cli.sweep.fields import FieldPathError, parse_field
+from servicebot_cli.simulate.scenario.fields import FieldPathError, parse_field
 
 OPERATORS: dict[str, Callable[[float, float], bool]] = {
     "<=": operator.le, ">=": operator.ge, "==": operator.eq, "!=": operator.ne,
