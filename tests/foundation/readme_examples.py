@@ -39,7 +39,7 @@ VOLATILE = [
     (re.compile(r"\bin \d+(\.\d+)? s\b"), "in T s"),
     (re.compile(r"real-time factor \d+"), "real-time factor N"),
     (re.compile(r"serial ports here: [^(]*\("), "serial ports here: ... ("),
-    (re.compile(r"attempts, \d+(\.\d+)? ms"), "attempts, T ms"),
+    (re.compile(r"attempts?, \d+(\.\d+)? ms"), "attempts, T ms"),
     (re.compile(r'"solve_time_s": [0-9.e-]+'), '"solve_time_s": T'),
 ]
 
