@@ -77,6 +77,9 @@ class ExpectationParam(click.ParamType["Expectation"]):
               "controllers.yaml beside the robot].")
 @click.option("--speed", type=Number(positive=True), default=1.0,
               show_default=True, help="Playback speed of the live window (not with --headless).")
+@click.option("--print-scenario", is_flag=True, is_eager=True, expose_value=False,
+              callback=lambda ctx, param, value: _print_scenario(ctx) if value else None,
+              help="Print the built-in scenario (YAML, commented) as a starting point, and exit.")
 @click.option("--expect", "expectations", type=ExpectationParam(), multiple=True,
               metavar="EXPR", help="Fail (exit 1) unless the summary meets EXPR, e.g. "
               "'collisions == 0' or 'odometry_drift.final_position_m < 0.05' (repeatable).")
@@ -138,3 +141,11 @@ def _refuse_without_effect(headless: bool, out_dir: str | None, bag: str | None)
             and Path(out_dir).resolve() == Path(bag).resolve():
         raise click.BadParameter(f"'{bag}' is also the --out directory; give the bag its own "
                                  "path", ctx=ctx, param_hint="--bag")
+
+
+def _print_scenario(ctx: click.Context) -> None:
+    """Write the built-in scenario to stdout and end the command (``--print-scenario``)."""
+    from servicebot_cli.simulate.scenario.definition import DEFAULT_SCENARIO
+
+    click.echo(DEFAULT_SCENARIO.read_text(encoding="utf-8"), nl=False)
+    ctx.exit(0)

@@ -149,7 +149,8 @@ def build_scenario(definition: SweepDefinition, base: Scenario, values: Values) 
     try:
         return read_scenario(SweptDocument(document, base.source.positions, base.source.display,
                                            Located({}, positions, located.display)),
-                             name=base.name)
+                             name=base.name,
+                             cut_short=any(settings[n].path == ("duration_s",) for n, _ in values))
     except ScenarioError as exc:
         raise SweepError(f"{exc}{_context(values)}") from None
 

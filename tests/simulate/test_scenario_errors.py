@@ -86,3 +86,24 @@ def test_missing_mesh_file(run, tmp_path):
     path.write_text("duration_s: 1\nworld:\n  meshes:\n    - {file: room.stl}\n")
     error = assert_one_line_error(run("simulate", "--headless", "-s", path), 2, "room.stl")
     assert f"{path}:4:" in error
+
+
+@pytest.mark.parametrize(("text", "needle"), [
+    ("duration_s: 10\ncmd_vel:\n  - {start_s: 0, duration_s: 5}\n"
+     "  - {start_s: 12, duration_s: 5, linear_m_s: 0.1}\n",
+     ":4: cmd_vel[1].start_s: starts at 12 s, when the run has ended (duration_s: 10)"),
+    ("duration_s: 10\narm:\n  joint_names: [arm_base_to_link1]\n  start_s: 10\n"
+     "  points:\n    - {time_from_start_s: 1, positions: [0.1]}\n",
+     ":4: arm.start_s: the goal is sent at 10 s, when the run has ended"),
+    ("duration_s: 10\narm:\n  joint_names: [arm_base_to_link1]\n"
+     "  points:\n    - {time_from_start_s: 11, positions: [0.1]}\n",
+     ":5: arm.points[0].time_from_start_s: reached at 11 s, after the run ends"),
+    ("duration_s: 10\nrates: {joint_states_hz: 200}\n",
+     ":2: rates.joint_states_hz: 200 Hz is above the control rate"),
+    ("duration_s: 10\ncontroller: {update_rate_hz: 20, publish_rate_hz: 50}\n",
+     ":2: controller.publish_rate_hz: 50 Hz is above the control rate"),
+])
+def test_a_scenario_that_cannot_be_what_was_meant_is_refused(run, tmp_path, text, needle):
+    scenario = tmp_path / "s.yaml"
+    scenario.write_text(text)
+    assert_one_line_error(run("simulate", "--headless", "-s", scenario), 2, needle)

@@ -199,8 +199,15 @@ def load_scenario(path: str | FsPath | None) -> Scenario:
 _TOP = ("duration_s", "initial_pose", "controller", "slip", "cmd_vel", "arm", "world", "rates")
 
 
-def read_scenario(located: Located, name: str = "scenario") -> Scenario:
+def read_scenario(located: Located, name: str = "scenario", *,
+                  cut_short: bool = False) -> Scenario:
     """The scenario in a parsed document.
+
+    Args:
+        located: The document.
+        name: The scenario's name in messages and the summary.
+        cut_short: ``duration_s`` was set from outside (a sweep, as ``--duration-s``) to
+            stop the run early: commands after it are expected, not a mistake.
 
     Raises:
         ScenarioError: The first bad field, with its line.
@@ -208,7 +215,7 @@ def read_scenario(located: Located, name: str = "scenario") -> Scenario:
     r = Reader(located)
     r.mapping((), _TOP, required=("duration_s",))
     duration = r.number(("duration_s",), positive=True, maximum=MAX_DURATION_S)
-    return Scenario(
+    scenario = Scenario(
         duration_s=duration,
         initial_pose=_pose(r, ("initial_pose",)),
         controller=_controller(r, ("controller",)),
@@ -221,6 +228,39 @@ def read_scenario(located: Located, name: str = "scenario") -> Scenario:
         name=name,
         source=located,
     )
+    _refuse_what_cannot_be_meant(r, scenario, cut_short=cut_short)
+    return scenario
+
+
+def _refuse_what_cannot_be_meant(r: Reader, scenario: Scenario, *, cut_short: bool) -> None:
+    """Refuse commands that would never be sent and rates the control loop cannot keep.
+
+    A command that starts at or after ``duration_s`` is never sent (a typo in one of the two
+    numbers, most likely); a stream published faster than the control ticks would repeat
+    the same state.
+    """
+    end = math.inf if cut_short else scenario.duration_s
+    for i, segment in enumerate(scenario.cmd_vel):
+        if segment.start_s >= end:
+            raise r.error(("cmd_vel", i, "start_s"), f"starts at {segment.start_s:g} s, when "
+                          f"the run has ended (duration_s: {end:g}); it would never be sent")
+    arm = scenario.arm
+    if arm.points and arm.start_s >= end:
+        raise r.error(("arm", "start_s"), f"the goal is sent at {arm.start_s:g} s, when the "
+                      f"run has ended (duration_s: {end:g})")
+    for i, point in enumerate(arm.points):
+        if arm.start_s + point.time_from_start_s > end:
+            raise r.error(("arm", "points", i, "time_from_start_s"),
+                          f"reached at {arm.start_s + point.time_from_start_s:g} s, after the "
+                          f"run ends (duration_s: {end:g})")
+    control_hz = scenario.controller.update_rate_hz
+    rates = (((("controller", "publish_rate_hz"), scenario.controller.publish_rate_hz)),
+             (("rates", "joint_states_hz"), scenario.rates.joint_states_hz))
+    for path, rate_hz in rates:
+        if rate_hz > control_hz + 1e-9 and r.has(path):
+            raise r.error(path, f"{rate_hz:g} Hz is above the control rate "
+                          f"(controller.update_rate_hz: {control_hz:g} Hz); a stream cannot "
+                          "be published faster than the simulation steps")
 
 
 def _pose(r: Reader, path: Path) -> Pose2D:
