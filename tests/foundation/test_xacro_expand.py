@@ -172,9 +172,16 @@ def test_output_file_is_written_atomically(run, tmp_path):
     assert out.read_text().startswith("<?xml")
 
 
-def test_output_into_missing_directory(run, tmp_path):
-    assert_one_line_error(run("expand", XACRO_SOURCE, "-o", tmp_path / "no" / "x.urdf"), 2,
-                          "does not exist")
+def test_output_into_missing_directory_creates_it_as_xacro_does(run, tmp_path):
+    result = run("expand", XACRO_SOURCE, "-o", tmp_path / "no" / "x.urdf")
+    assert result.exit_code == 0, result.stderr
+    assert (tmp_path / "no" / "x.urdf").read_text().startswith("<?xml")
+
+
+def test_output_under_a_regular_file_is_refused(run, tmp_path):
+    (tmp_path / "file").write_text("x")
+    assert_one_line_error(run("expand", XACRO_SOURCE, "-o", tmp_path / "file" / "x.urdf"), 2,
+                          "is a file, not a directory")
 
 
 def test_package_option_must_name_a_directory(run, tmp_path):
