@@ -13,6 +13,7 @@ from pathlib import Path
 import numpy as np
 
 from servicebot_cli.check import mesh_readers
+from servicebot_cli.common.library_logs import captured
 
 LARGEST_COORDINATE = 1e9
 """Meshes with coordinates beyond this (in the file's units) get no mass properties."""
@@ -92,7 +93,8 @@ def _with_trimesh(path: Path) -> np.ndarray:
     except ImportError:  # pragma: no cover - trimesh is a dependency
         raise MeshError(f"no reader for '{path.suffix}' files (install trimesh)") from None
     try:
-        loaded = trimesh.load(path, force="mesh", process=False)
+        with captured():  # texture chatter: check reports geometry, with its own findings
+            loaded = trimesh.load(path, force="mesh", process=False)
     except Exception as exc:  # trimesh raises anything from its many loaders
         raise MeshError(f"trimesh cannot load it: {type(exc).__name__}: {exc}") from None
     if not hasattr(loaded, "triangles"):

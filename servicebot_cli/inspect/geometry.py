@@ -76,8 +76,12 @@ class MeshLibrary:
             return None
         import trimesh
 
+        from servicebot_cli.common.library_logs import captured
+
         try:
-            loaded = trimesh.load(str(path), force="mesh")
+            with captured() as said:
+                loaded = trimesh.load(str(path), force="mesh")
+            self.problems.extend(f"mesh {filename}: {line}" for line in dict.fromkeys(said))
             if not isinstance(loaded, trimesh.Trimesh):
                 raise TypeError(f"not a triangle mesh but a {type(loaded).__name__}")
             vertices = np.asarray(loaded.vertices, dtype=np.float64)

@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.common.library_logs import captured
 from servicebot_cli.kinematics.transforms import rpy_matrix
 from servicebot_cli.simulate.scenario.definition import Scenario
 from servicebot_cli.simulate.scenario.located import Located
@@ -40,7 +41,8 @@ def load_meshes(scenario: Scenario, base_dir: Path) -> list[Mesh]:
         if not path.is_file():
             raise located.error(where, f"'{spec.file}' is not a file (looked in {path})")
         try:
-            mesh = trimesh.load(path, force="mesh")
+            with captured():  # texture chatter: only the geometry matters here
+                mesh = trimesh.load(path, force="mesh")
         except Exception as exc:  # trimesh raises many types for unreadable files
             raise located.error(where, f"cannot load '{spec.file}' as a mesh: {exc}") from None
         if not isinstance(mesh, trimesh.Trimesh) or not len(mesh.faces):
