@@ -100,7 +100,7 @@ def _fail(ctx: click.Context, message: str, code: int, debug: bool) -> NoReturn:
 
 @click.group(cls=ServicebotGroup, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, "-V", "--version", prog_name="servicebot")
-@click.option("--debug", is_flag=True, help="Show the traceback of any error.")
+@click.option("--debug", is_flag=True, help="Add the traceback of any error (the exit code stays).")
 def main(debug: bool) -> None:
     """Check, inspect, move, simulate and drive a differential-drive service robot.
 
