@@ -15,12 +15,12 @@ from servicebot_cli.commands.options import (
     RobotArgs,
     SerialPort,
     format_option,
+    refuse_with,
     robot_arguments,
 )
 from servicebot_cli.commands.serial_options import (
     arduino_config,
     bad_options,
-    refuse_with,
     serial_options,
 )
 
@@ -121,7 +121,7 @@ def _refuse_port_options(dry_run: bool) -> None:
     """Refuse the options only a run on a port uses, next to ``--dry-run``."""
     ctx = click.get_current_context()
     for option, name, why in _PORT_ONLY:
-        refuse_with(ctx, option, "--dry-run", why, present=dry_run, name=name)
+        refuse_with(ctx, option, "--dry-run", why=why, present=dry_run, name=name)
 
 
 def _mode(script: str | None, linear: float | None, angular: float | None,

@@ -258,8 +258,8 @@ def refuse_with(ctx: click.Context, option: str, other: str, *, name: str | None
     """
     if given(ctx, name or option.lstrip("-").replace("-", "_")) and present:
         reason = f" ({why})" if why else ""
-        raise click.UsageError(f"{option} has no effect with {other}{reason}; drop one of them",
-                               ctx=ctx)
+        raise click.UsageError(f"{option} has no effect with {other}{reason}; drop {option} or "
+                               f"{other}", ctx=ctx)
 
 
 def refuse_without(ctx: click.Context, option: str, needs: str, *, name: str | None = None,

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
 
-from servicebot_cli.commands.options import Number, given, refuse_without
+from servicebot_cli.commands.options import Number, refuse_without
 
 if TYPE_CHECKING:
     from servicebot_cli.drive.protocols.arduino import ArduinoConfig
@@ -65,26 +65,6 @@ def arduino_config(protocol: str, ticks_per_rev: float | None,
     from servicebot_cli.drive.protocols.arduino import ArduinoConfig
 
     return ArduinoConfig(ticks_per_rev, pid_rate)
-
-
-def refuse_with(ctx: click.Context, option: str, other: str, why: str, *,
-                present: bool, name: str | None = None) -> None:
-    """Refuse ``option`` next to ``other`` (when ``present``): together it has no effect.
-
-    Args:
-        ctx: The command's context.
-        option: The flag as the user types it, e.g. ``"--log"``.
-        other: The option that makes it pointless, e.g. ``"--dry-run"``.
-        why: Why, in a few words.
-        present: Whether ``other`` was given.
-        name: The parameter's name in ``ctx.params`` (default: from ``option``).
-
-    Raises:
-        click.UsageError: ``option`` was given and ``other`` is present.
-    """
-    if given(ctx, name or option.lstrip("-").replace("-", "_")) and present:
-        raise click.UsageError(f"{option} has no effect with {other} ({why}); drop {option} "
-                               f"or {other}", ctx=ctx)
 
 
 @contextlib.contextmanager

@@ -14,7 +14,7 @@ from servicebot_cli.commands.options import (
     OutputPath,
     RobotArgs,
     format_option,
-    given,
+    refuse_with,
     robot_arguments,
 )
 from servicebot_cli.common.errors import AnswerIsNo
@@ -134,9 +134,8 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
 def _refuse_without_effect(headless: bool, out_dir: str | None, bag: str | None) -> None:
     """Refuse ``--speed`` with ``--headless``, and one directory for ``--out`` and ``--bag``."""
     ctx = click.get_current_context()
-    if headless and given(ctx, "speed"):
-        raise click.UsageError("--speed has no effect with --headless: it is the live "
-                               "window's playback speed; drop --speed or --headless", ctx=ctx)
+    refuse_with(ctx, "--speed", "--headless", present=headless,
+                why="it is the live window's playback speed")
     if out_dir is not None and bag is not None \
             and Path(out_dir).resolve() == Path(bag).resolve():
         raise click.BadParameter(f"'{bag}' is also the --out directory; give the bag its own "
