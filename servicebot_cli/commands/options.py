@@ -450,18 +450,16 @@ def robot_for_completion(ctx: click.Context) -> RobotDescription | None:
 
     # While completing, Click leaves the positional values it has not bound in ctx.args.
     values = tuple(ctx.params.get("robot_values") or ()) + tuple(ctx.args)
-    files = [v for v in values if not _XACRO_ARG_RE.match(v)]
-    xacro_args = tuple((m.group(1), m.group(2)) for v in values
-                       if (m := _XACRO_ARG_RE.match(v)))
     try:
+        files, xacro_args = split_robot_args(values)
         if files:
             source = RobotSource.of(files[0], xacro_args=xacro_args,
                                     packages=tuple(ctx.params.get("packages") or ()))
         else:
             source = RobotSource.bundled(ctx.params.get("bundled") or DEFAULT_ROBOT)
         return read_description(source)
-    except (ServicebotError, OSError, ValueError):
-        return None
+    except (ServicebotError, click.ClickException, OSError, ValueError):
+        return None  # a half-typed or bad line completes nothing
 
 
 def _joint_help(robot: RobotDescription | None, name: str) -> str | None:

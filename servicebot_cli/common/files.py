@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import IO, Any
 
 from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.common.signals import ENDING_SIGNALS
 
 
 class OutputError(ServicebotError):
@@ -101,7 +102,7 @@ def atomic_directory(path: str | os.PathLike[str]) -> Iterator[Path]:
         shutil.rmtree(temporary, ignore_errors=True)
 
 
-_DEFERRED = {signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT}
+_DEFERRED = {signal.SIGINT, *ENDING_SIGNALS}  # Ctrl-C and the signals cli.py turns into errors
 
 
 def _block_signals() -> set[int | signal.Signals] | None:
