@@ -11,7 +11,10 @@ so no iterate, and no result, ever leaves them; continuous joints turn freely an
 
 An answer is checked for collisions when the solver has a check (see
 :mod:`~servicebot_cli.kinematics.collisions`); a colliding one does not count, and the search
-goes on. An attempt that stops improving ends early, and the next starts from a random
+goes on. Attempts at a full pose or a position on a chain of single-axis joints run in a
+compiled loop (:mod:`~servicebot_cli.kinematics.lm_kernel`, when numba is installed), and
+Pinocchio's forward kinematics check each answer it finds. An attempt that stops improving
+ends early, and the next starts from a random
 configuration within the limits (drawn from the caller's generator, so a fixed seed gives
 the same answer). The first attempt starts from the seed; with a mobile base, the first
 keeps the base still and the second lets it move. Of the converged solutions, the one
@@ -27,6 +30,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.kinematics.compiled_search import CompiledSearch
 from servicebot_cli.kinematics.residuals import Residual, residual_for
 
 if TYPE_CHECKING:
@@ -34,6 +38,8 @@ if TYPE_CHECKING:
     from servicebot_cli.kinematics.collisions import CollisionCheck, Contact
 
 FloatArray = npt.NDArray[np.float64]
+Errors = tuple[float, float | None]
+"""Position error [m] and orientation error [rad] (None: position only)."""
 
 _DAMPING = 1e-2  # w: damping per squared error
 _DAMPING_FLOOR = 1e-9  # w-bar: keeps the system positive definite at singularities
@@ -107,12 +113,13 @@ class IkSolver:
     """Solves IK for one chain; reuse it for many targets (batch mode warm-starts)."""
 
     def __init__(self, chain: Chain, settings: IkSettings | None = None,
-                 collisions: CollisionCheck | None = None) -> None:
+                 collisions: CollisionCheck | None = None, *, compiled: bool = True) -> None:
         """Prepare the solver for ``chain`` with ``settings`` (defaults otherwise).
 
         With ``collisions``, an answer whose links touch each other or the floor is not
         one: the search goes on from other restarts. Its model is the one ``chain`` was
-        reduced from.
+        reduced from. With ``compiled`` (and numba installed), attempts at a full pose or a
+        position run in the compiled loop, and Pinocchio checks each converged answer.
         """
         import eigenpy
         import pinocchio as pin
@@ -125,6 +132,14 @@ class IkSolver:
         self._eye = {n: np.eye(n) for n in sizes}
         self._integrate = None if chain.vector_space else pin.integrate
         self._gate2 = 1.5 * (self.settings.tolerance_m ** 2 + self.settings.tolerance_rad ** 2)
+        self._compiled = CompiledSearch.build(chain, self.settings.tolerance_m,
+                                              self.settings.tolerance_rad,
+                                              self.settings.max_iterations) if compiled else None
+
+    @property
+    def compiled(self) -> bool:
+        """Whether attempts at a full pose or a position run in the compiled loop."""
+        return self._compiled is not None
 
     def solve(self, target: IkTarget, seed: FloatArray, rng: np.random.Generator) -> IkResult:
         """Joint values that put the chain's frame at ``target``.
@@ -135,50 +150,79 @@ class IkSolver:
             rng: Source of the random restarts.
         """
         chain, settings = self.chain, self.settings
-        residual = residual_for(chain, target.position_m, target.rotation, target.axes)
+        fast = self._compiled is not None and (target.rotation is None or not target.axes
+                                               or len(target.axes) == 3)
+        residual = None if fast else residual_for(chain, target.position_m, target.rotation,
+                                                  target.axes)
         start = chain.clamp(chain.to_chain(seed))  # a fresh array: results stay in limits
-        found: list[tuple[FloatArray, tuple[float, float | None]]] = []  # q, its errors
-        blocked: tuple[FloatArray, tuple[float, float | None], Contact] | None = None
+        found: list[tuple[FloatArray, Errors]] = []  # q, its errors
+        blocked: tuple[FloatArray, Errors, Contact] | None = None
         best_q, best_err2 = start, math.inf
         iterations = attempts = 0
         # beyond the reach sphere no restart can help: one attempt gives the best try
         limit = 1 if self.out_of_reach(target) else settings.max_attempts
         while attempts < limit and len(found) < settings.solutions:
-            hold_base = chain.base_nq > 0 and attempts == 0
-            q0 = start if attempts < (2 if chain.base_nq else 1) else chain.random_q(
-                rng, target.position_m)
-            q, err2, used, converged = self._descend(residual, q0.copy(), hold_base)
-            attempts, iterations = attempts + 1, iterations + used
-            if converged:  # the residual still holds this q's state (and free angles)
+            q, err2, made, used, errors = self._attempts(residual, start, attempts, limit,
+                                                         target, rng)
+            attempts, iterations = attempts + made, iterations + used
+            if errors is not None:
                 contact = self._contact(q, seed)
                 if contact is None:
-                    found.append((q, residual.errors()))
+                    found.append((q, errors))
                 elif blocked is None:
-                    blocked = (q, residual.errors(), contact)
+                    blocked = (q, errors, contact)
             elif err2 < best_err2:
                 best_q, best_err2 = q, err2
+        contact = None
         if not found and blocked is None:  # settle the best try into its local minimum
+            residual = residual or residual_for(chain, target.position_m, target.rotation,
+                                                target.axes)
             best_q, used, settled = self._settle(residual, best_q.copy())
             iterations += used
-            if settled:  # a slow descent, cut short as a stall, that does converge
-                contact = self._contact(best_q, seed)
-                if contact is None:
-                    found.append((best_q, residual.errors()))
-                else:
-                    blocked = (best_q, residual.errors(), contact)
-        contact = None
-        if found:
-            best_q, (position_error, orientation_error) = min(
-                found, key=lambda item: self._distance(start, item[0]))
-        elif blocked is not None:  # reached, but only through a collision: the best try
-            best_q, (position_error, orientation_error), contact = blocked
-        else:
             if residual.last_q is not best_q:
                 residual.reset(best_q)
                 residual.evaluate(best_q)
-            position_error, orientation_error = residual.errors()
+            errors = residual.errors()
+            if settled:  # a slow descent, cut short as a stall, that does converge
+                contact = self._contact(best_q, seed)
+                if contact is None:
+                    found.append((best_q, errors))
+            if not found:
+                return IkResult(chain.to_full(best_q, seed), False, *errors, iterations,
+                                attempts, 0, contact)
+        if found:
+            best_q, (position_error, orientation_error) = found[0] if len(found) == 1 else min(
+                found, key=lambda item: self._distance(start, item[0]))
+        elif blocked is not None:  # reached, but only through a collision: the best try
+            best_q, (position_error, orientation_error), contact = blocked
         return IkResult(chain.to_full(best_q, seed), bool(found), position_error,
                         orientation_error, iterations, attempts, len(found), contact)
+
+    def _attempts(self, residual: Residual | None, start: FloatArray, made: int, limit: int,
+                  target: IkTarget, rng: np.random.Generator
+                  ) -> tuple[FloatArray, float, int, int, Errors | None]:
+        """The next attempts after ``made``: a run in the compiled loop, or one in Pinocchio.
+
+        The compiled loop runs them when there is no ``residual``; an answer it finds counts
+        only once Pinocchio's forward kinematics agree.
+
+        Returns:
+            The attempt's best ``q``, its squared error, attempts and iterations used, and
+            the answer's errors when it converged (None otherwise).
+        """
+        chain = self.chain
+        if residual is None:
+            compiled = self._compiled
+            assert compiled is not None  # no residual: the compiled loop does the attempts
+            run = compiled.run(target, start if made == 0 else None, rng, limit - made)
+            errors = compiled.check(run.q, target) if run.converged else None
+            return run.q, run.err2, run.attempts, run.iterations, errors
+        hold_base = chain.base_nq > 0 and made == 0
+        q0 = start if made < (2 if chain.base_nq else 1) else chain.random_q(
+            rng, target.position_m)
+        q, err2, used, converged = self._descend(residual, q0.copy(), hold_base)
+        # the residual still holds this q's state (and free angles)
+        return q, err2, 1, used, residual.errors() if converged else None
 
     def out_of_reach(self, target: IkTarget) -> bool:
         """True when ``target`` lies beyond the chain's reach sphere (no base to move)."""

@@ -1,4 +1,5 @@
-"""Robots to test kinematics on: the bundled one, and UR5 and Panda from example-robot-data."""
+"""Robots to test kinematics on: the bundled one, and UR5, Panda and Kinova's 6-DoF Jaco 2
+from example-robot-data."""
 
 from __future__ import annotations
 
@@ -25,9 +26,11 @@ def example_robot(relative: str) -> Path:
 
 UR5 = example_robot("ur_description/urdf/ur5_robot.urdf")
 PANDA = example_robot("panda_description/urdf/panda.urdf")
+JACO2 = example_robot("kinova_description/robots/kinova.urdf")  # continuous joints among them
 # (URDF, tool frame) of each robot
 ARMS = {"service": (SIM_URDF, "arm_tool_link"), "ur5": (UR5, "tool0"),
-        "panda": (PANDA, "panda_hand_tcp")}
+        "panda": (PANDA, "panda_hand_tcp"), "jaco2": (JACO2, "j2s6s200_end_effector"),
+        "panda finger": (PANDA, "panda_leftfinger")}  # a prismatic joint last
 
 
 def robot_and_chain(name: str) -> tuple[RobotDescription, Chain]:

@@ -1,0 +1,128 @@
+"""IK attempts run by the compiled loop, and Pinocchio's check of every answer it finds.
+
+:class:`CompiledSearch` runs attempts (the seed, then random restarts) in
+:func:`~servicebot_cli.kinematics.lm_kernel.search` and hands back the first converged
+answer, or the best try, as the chain's ``q``. :meth:`CompiledSearch.check` measures an
+answer with Pinocchio's forward kinematics: the solver counts it only when those errors are
+within the tolerances. Built only when numba can be imported and the chain is a plain serial
+chain of revolute and prismatic joints
+(:func:`~servicebot_cli.kinematics.chain_arrays.chain_arrays`); otherwise the solver keeps
+to its Pinocchio loop. Pure.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+import numpy.typing as npt
+
+if TYPE_CHECKING:
+    from servicebot_cli.kinematics.chain import Chain
+    from servicebot_cli.kinematics.chain_arrays import ChainArrays
+    from servicebot_cli.kinematics.inverse import IkTarget
+
+FloatArray = npt.NDArray[np.float64]
+
+_FIRST_RUN = 8  # random restarts after the seed in the first run
+_RUN = 16  # restarts in each later run
+_NO_SEED = np.empty(0)
+
+
+@dataclass(frozen=True)
+class Attempts:
+    """A run of attempts.
+
+    Attributes:
+        q: The chain's ``q``: the converged answer, or the run's best try.
+        converged: The last attempt met the tolerances (by the loop's own arithmetic).
+        err2: Its squared error (mixed [m^2] and [rad^2]).
+        attempts: Attempts made.
+        iterations: Iterations over those attempts.
+    """
+
+    q: FloatArray
+    converged: bool
+    err2: float
+    attempts: int
+    iterations: int
+
+
+class CompiledSearch:
+    """Runs of attempts for one chain, with fixed tolerances and iterations per attempt."""
+
+    def __init__(self, chain: Chain, arrays: ChainArrays, tolerance_m: float,
+                 tolerance_rad: float, max_iterations: int) -> None:
+        import pinocchio as pin
+
+        from servicebot_cli.kinematics import lm_kernel
+
+        self._search = lm_kernel.search
+        self._pin = pin
+        self._chain = chain
+        self._arrays = arrays
+        self._tolerances = np.array([tolerance_m, tolerance_rad])
+        self._max_iterations = max_iterations
+        self._target = np.zeros((3, 4))
+        self._out = np.empty(arrays.size)
+        # no attempt: compiles the loop (or loads it from numba's cache) before any solve,
+        # so solve times measure solving
+        self._search(arrays.frames, arrays.axes, arrays.kinds, arrays.limits, self._target, 6,
+                     self._tolerances, 1, _NO_SEED, np.empty((0, arrays.size)), self._out)
+
+    @classmethod
+    def build(cls, chain: Chain, tolerance_m: float, tolerance_rad: float,
+              max_iterations: int) -> CompiledSearch | None:
+        """The search for ``chain``; None without numba, or for a chain the loop cannot do."""
+        try:
+            from servicebot_cli.kinematics.chain_arrays import chain_arrays
+        except ModuleNotFoundError as exc:
+            if exc.name != "numba":
+                raise
+            return None
+        arrays = chain_arrays(chain)
+        if arrays is None:
+            return None
+        return cls(chain, arrays, tolerance_m, tolerance_rad, max_iterations)
+
+    def run(self, target: IkTarget, start: FloatArray | None, rng: np.random.Generator,
+            most: int) -> Attempts:
+        """Up to ``most`` attempts at a full pose or a position (``target.rotation`` None).
+
+        The first from ``start`` (a chain ``q``) if given, the others from random
+        configurations within the limits; stops at the first attempt that converges.
+        """
+        arrays, goal = self._arrays, self._target
+        goal[:, 3] = target.position_m
+        rows = 3
+        if target.rotation is not None and target.axes:
+            goal[:, :3], rows = target.rotation, 6
+        seed = _NO_SEED if start is None else arrays.to_angles(start)
+        randoms = min(most, _RUN) if start is None else min(most - 1, _FIRST_RUN)
+        unit = rng.random((randoms, arrays.size))
+        made, converged, iterations, err2 = self._search(
+            arrays.frames, arrays.axes, arrays.kinds, arrays.limits, goal, rows,
+            self._tolerances, self._max_iterations, seed, unit, self._out)
+        return Attempts(arrays.to_q(self._out, self._chain.model.nq), bool(converged),
+                        float(err2), int(made), int(iterations))
+
+    def check(self, q: FloatArray, target: IkTarget) -> tuple[float, float | None] | None:
+        """Errors of chain ``q`` by Pinocchio's forward kinematics; None: not within tolerance.
+
+        Returns:
+            Position error [m] and orientation error [rad] (None for position only).
+        """
+        pin, chain = self._pin, self._chain
+        pin.forwardKinematics(chain.model, chain.data, q)
+        pose = pin.updateFramePlacement(chain.model, chain.data, chain.frame)
+        offset = target.position_m - pose.translation
+        position_m = math.sqrt(offset.dot(offset))
+        if position_m > self._tolerances[0]:
+            return None
+        if target.rotation is None or not target.axes:
+            return position_m, None
+        angle = pin.log3(pose.rotation.T.dot(target.rotation))
+        angle_rad = math.sqrt(angle.dot(angle))
+        return (position_m, angle_rad) if angle_rad <= self._tolerances[1] else None

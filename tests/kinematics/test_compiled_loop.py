@@ -1,0 +1,144 @@
+"""The compiled IK loop against Pinocchio: its FK, Jacobian and rotation error, and its answers.
+
+The loop computes kinematics its own way (flat arrays, world-aligned Jacobian); here every
+number it produces is held against Pinocchio's at random configurations of real arms, and
+every answer the solver gives through it is checked again by Pinocchio's FK on the full model.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pinocchio as pin
+import pytest
+
+from servicebot_cli.description.joint_space import JointSpace
+from servicebot_cli.description.loader import RobotSource, load
+from servicebot_cli.kinematics import lm_kernel
+from servicebot_cli.kinematics.chain import Chain
+from servicebot_cli.kinematics.chain_arrays import chain_arrays
+from servicebot_cli.kinematics.frames import link_names
+from servicebot_cli.kinematics.inverse import IkSettings, IkSolver, IkTarget
+from tests.conftest import SIM_URDF
+from tests.kinematics.robots import ARMS, robot_and_chain, tool_pose
+
+FULL = ("roll", "pitch", "yaw")
+
+
+def kernel_pose(arrays, theta):
+    pose, jacobian = np.empty((3, 4)), np.empty((6, arrays.size))
+    lm_kernel.tool_pose(arrays.frames, arrays.axes, arrays.kinds, theta, pose, jacobian,
+                        np.empty((3, 3)))
+    return pose, jacobian
+
+
+@pytest.mark.parametrize("arm", sorted(ARMS))
+def test_pose_and_jacobian_are_pinocchios(arm):
+    robot, chain = robot_and_chain(arm)
+    arrays = chain_arrays(chain)
+    assert arrays is not None
+    rng = np.random.default_rng(4)
+    for _ in range(50):
+        q = chain.random_q(rng)
+        theta = arrays.to_angles(q.copy())
+        np.testing.assert_allclose(arrays.to_q(theta, chain.model.nq), q, atol=1e-12)
+        pose, jacobian = kernel_pose(arrays, theta)
+        pin.computeJointJacobians(chain.model, chain.data, q)
+        placement = pin.updateFramePlacement(chain.model, chain.data, chain.frame)
+        expected = pin.getFrameJacobian(chain.model, chain.data, chain.frame,
+                                        pin.LOCAL_WORLD_ALIGNED).reshape(6, chain.model.nv)
+        np.testing.assert_allclose(pose, placement.homogeneous[:3], atol=1e-12)
+        np.testing.assert_allclose(jacobian, expected, atol=1e-12)
+
+
+def test_jacobian_matches_finite_differences():
+    _, chain = robot_and_chain("panda")
+    arrays = chain_arrays(chain)
+    theta = np.random.default_rng(5).uniform(-1, 1, arrays.size)
+    pose, jacobian = kernel_pose(arrays, theta)
+    step = 1e-7
+    for i in range(arrays.size):
+        moved = theta.copy()
+        moved[i] += step
+        after, _ = kernel_pose(arrays, moved)
+        velocity = (after[:, 3] - pose[:, 3]) / step
+        spin = pin.log3(after[:, :3] @ pose[:, :3].T) / step  # world-frame angular velocity
+        np.testing.assert_allclose(jacobian[:3, i], velocity, atol=1e-5)
+        np.testing.assert_allclose(jacobian[3:, i], spin, atol=1e-5)
+
+
+@pytest.mark.parametrize("angle", [0.0, 1e-9, 1e-5, 0.5, 2.9, 3.0, 3.1, np.pi - 1e-7, np.pi])
+def test_rotation_error_is_log3_at_every_angle(angle):
+    rng = np.random.default_rng(int(angle * 1e3))
+    for _ in range(20):
+        axis = rng.normal(size=3)
+        axis /= np.linalg.norm(axis)
+        start = pin.exp3(rng.normal(size=3))
+        target = np.hstack([pin.exp3(axis * angle) @ start, np.zeros((3, 1))])
+        out = np.zeros(6)
+        got = lm_kernel.rotation_error(target, np.hstack([start, np.zeros((3, 1))]), out,
+                                       np.empty((3, 3)))
+        assert got == pytest.approx(angle, abs=1e-12)
+        # at pi the axis' sign is a free choice: both turns are the same rotation
+        expected = axis * angle
+        if angle > 3.14 and out[3:] @ expected < 0:
+            expected = -expected
+        np.testing.assert_allclose(out[3:], expected, atol=1e-7)
+
+
+@pytest.mark.parametrize(("arm", "axes"), [
+    ("ur5", FULL), ("panda", FULL), ("jaco2", FULL), ("service", FULL), ("service", ()),
+    ("panda finger", ()),
+])
+def test_every_answer_of_the_compiled_loop_holds_under_pinocchios_fk(arm, axes):
+    """Each solve seeded with the previous answer, as a program following targets does."""
+    robot, chain = robot_and_chain(arm)
+    solver = IkSolver(chain, IkSettings())
+    assert solver.compiled
+    rng = np.random.default_rng(6)
+    neutral = pin.neutral(robot.model)
+    seed = neutral
+    for _ in range(150):
+        pose = tool_pose(robot, chain.frame_name, chain.to_full(chain.random_q(rng), neutral))
+        target = IkTarget(pose.translation, pose.rotation if axes else None, axes)
+        result = solver.solve(target, seed, rng)
+        assert result.success
+        reached = tool_pose(robot, chain.frame_name, result.q)
+        assert np.linalg.norm(reached.translation - pose.translation) <= 1e-6
+        if axes:
+            assert np.linalg.norm(pin.log3(reached.rotation.T @ pose.rotation)) <= 1e-6
+        q = chain.to_chain(result.q)
+        assert np.all(q >= chain.lower) and np.all(q <= chain.upper)
+        assert result.position_error_m == pytest.approx(
+            np.linalg.norm(reached.translation - pose.translation), abs=1e-12)
+        seed = result.q
+
+
+def test_compiled_and_pinocchio_loops_fail_alike_beyond_reach():
+    _, chain = robot_and_chain("ur5")
+    target = IkTarget(np.array([3.0, 0.0, 0.5]))
+    seed = pin.neutral(chain.model)
+    answers = [IkSolver(chain, IkSettings(), compiled=compiled).solve(
+        target, seed, np.random.default_rng(1)) for compiled in (True, False)]
+    assert [a.success for a in answers] == [False, False]
+    assert [a.attempts for a in answers] == [1, 1]  # the reach says no restart can help
+    assert answers[0].position_error_m == pytest.approx(answers[1].position_error_m, rel=1e-6)
+
+
+def test_same_seed_same_answer_through_the_compiled_loop():
+    robot, chain = robot_and_chain("panda")
+    pose = tool_pose(robot, chain.frame_name, chain.to_full(
+        chain.random_q(np.random.default_rng(8)), pin.neutral(robot.model)))
+    target = IkTarget(pose.translation, pose.rotation, FULL)
+    answers = [IkSolver(chain).solve(target, pin.neutral(robot.model),
+                                     np.random.default_rng(3)).q for _ in range(2)]
+    np.testing.assert_array_equal(answers[0], answers[1])
+
+
+def test_chains_the_loop_cannot_do_keep_to_pinocchio():
+    """A planar base (three velocities in one joint) is not a chain of single axes."""
+    robot = load(RobotSource.of(SIM_URDF))
+    model = robot.model_with_base("planar")
+    chain = Chain(model, JointSpace.of(model, robot.movable_joints), "arm_tool_link",
+                  link_names(robot))
+    assert chain_arrays(chain) is None
+    assert not IkSolver(chain).compiled
