@@ -2,10 +2,11 @@
 
 Most of a batch's time would go to Python work per line: a dict per row, a conversion per
 cell, a writer call per result. Here a chunk of :data:`CHUNK_LINES` lines is split at once,
-each joint column converted with one ``map(float, ...)``, the limits checked on the whole
+the joint columns converted by one ``np.array(cells, dtype=float)`` (which reads each
+cell as ``float()`` does), the limits checked on the whole
 chunk, the poses computed by Pinocchio into one array, and the CSV text of the chunk made by
-one ``repr`` of its rows. Numbers are written as before: ``repr`` of each float, so output
-is byte for byte the per-line path's.
+one ``repr`` of its rows (JSON Lines: one %-format of a per-line template). Numbers are
+written as before: ``repr`` of each float, so output is byte for byte the per-line path's.
 
 A chunk with a line the fast path cannot take (a quoted or empty cell, a wrong field count,
 not a number, a value outside its limits) goes through the per-line path instead, so every
@@ -16,6 +17,7 @@ the chunk size.
 from __future__ import annotations
 
 import itertools
+import json
 from collections.abc import Sequence
 from typing import IO
 
@@ -51,6 +53,7 @@ def stream_csv(batch: FkBatch, source: Source, handle: IO[str], sink: RowSink, *
     """
     batch.check_header(source.columns)
     parser = ChunkParser(batch, source.columns, source.delimiter)
+    template = jsonl_template(batch.frames, batch.unit)
     tally = Tally()
     number = source.header_line
     with sink.open(batch.columns()) as write:
@@ -69,8 +72,7 @@ def stream_csv(batch: FkBatch, source: Source, handle: IO[str], sink: RowSink, *
             if sink.kind == "csv":
                 write.text(csv_text(numbers, poses, write.delimiter))
             else:
-                for line, row in zip(numbers, poses, strict=True):
-                    write(batch.json_row(line, row))
+                write.text(jsonl_text(numbers, poses, template))
     return summarise(source.display, tally, warn)
 
 
@@ -92,9 +94,12 @@ class ChunkParser:
         if '"' in joined or len(cells) != self.width * len(texts) or \
                 set(map(str.count, texts, itertools.repeat(delimiter))) != {self.width - 1}:
             return None
-        try:
-            given = np.array([list(map(float, cells[k::self.width]))
-                              for k in self.joint_columns]).reshape(len(self.joints), -1).T
+        try:  # numpy reads a str as float() does, a little faster
+            if len(self.joint_columns) == self.width:
+                given = np.array(cells, dtype=np.float64).reshape(len(texts), self.width)
+            else:
+                given = np.array([cells[k::self.width] for k in self.joint_columns],
+                                 dtype=np.float64).reshape(len(self.joints), -1).T
         except ValueError:
             return None
         if not np.isfinite(given).all():
@@ -110,6 +115,29 @@ def _numbered(raw: list[str], before: int) -> list[tuple[int, str]]:
         return list(zip(range(before + 1, before + 1 + len(raw)), texts, strict=True))
     return [(before + k, line.rstrip("\r\n")) for k, line in enumerate(raw, start=1)
             if meaningful(line)]
+
+
+def jsonl_template(frames: Sequence[str], unit: str) -> str:
+    """A %-format of one JSON Lines result: the line (``%d``), then each number (``%r``).
+
+    The keys, their order and the separators are those of ``json.dumps`` of
+    :meth:`~servicebot_cli.batch.fk_rows.FkBatch.json_row`, which writes a float as its
+    ``repr``: so the text is the same, byte for byte.
+    """
+    poses = ", ".join(
+        '{"frame": %s, "position_m": [%%r, %%r, %%r], "rpy_%s": [%%r, %%r, %%r], '
+        '"quaternion_xyzw": [%%r, %%r, %%r, %%r]}' % (json.dumps(frame).replace("%", "%%"),
+                                                      unit)
+        for frame in frames)
+    return '{"line": %d, "poses": [' + poses + "]}\n"
+
+
+def jsonl_text(lines: Sequence[int], poses: FloatArray, template: str) -> str:
+    """JSON Lines results for a chunk, by one %-format of ``template`` repeated per line."""
+    table = poses.reshape(len(lines), -1).tolist()
+    flat = list(itertools.chain.from_iterable([line, *row] for line, row in zip(
+        lines, table, strict=True)))
+    return (template * len(lines)) % tuple(flat)
 
 
 def csv_text(lines: Sequence[int], poses: FloatArray, delimiter: str) -> str:

@@ -7,7 +7,7 @@ import json
 import numpy as np
 import pytest
 
-from servicebot_cli.batch.fk_chunks import CHUNK_LINES
+from servicebot_cli.batch.fk_chunks import CHUNK_LINES, jsonl_template, jsonl_text
 from tests.conftest import assert_one_line_error
 
 ARM = ("arm_base_to_link1", "arm_link1_to_link2", "arm_link2_to_link3", "arm_link3_to_link4")
@@ -92,3 +92,25 @@ def test_a_value_outside_its_limits_in_a_chunk_names_the_line_or_is_clamped(run,
     assert f"--clamp moved 1 joint value onto a limit, on 1 of {LINES} lines" in clamped.stderr
     row = clamped.stdout.splitlines()[4000]
     assert row.startswith("4001,") and row.split(",")[-1] != ""
+
+
+@pytest.mark.parametrize("options", [(), ("--deg", "-f", "arm_link2", "-f", "arm_tool_link")])
+def test_chunks_write_json_lines_byte_for_byte_as_json_dumps(run, tmp_path, options):
+    csv_path, jsonl_path = _configs(tmp_path, np.random.default_rng(5), deg="--deg" in options)
+    fast = run("fk", "--configs", csv_path, "--format", "json", *options).stdout.splitlines()
+    slow = run("fk", "--configs", jsonl_path, "--format", "json", *options).stdout.splitlines()
+    assert len(fast) == len(slow) == LINES
+    # the same text after the line number: the per-line path writes with json.dumps
+    assert [r.partition(",")[2] for r in fast] == [r.partition(",")[2] for r in slow]
+    assert [json.loads(r)["line"] for r in fast[:3]] == [2, 3, 4]
+
+
+def test_the_json_lines_template_escapes_frame_names_as_json_dumps_does():
+    frames = ['odd "frame" 100%', "tool"]
+    poses = np.random.default_rng(6).normal(size=(2, 2, 10))
+    text = jsonl_text([7, 8], poses, jsonl_template(frames, "deg"))
+    expected = "".join(json.dumps({"line": line, "poses": [
+        {"frame": frame, "position_m": p[0:3], "rpy_deg": p[3:6], "quaternion_xyzw": p[6:10]}
+        for frame, p in zip(frames, row.tolist(), strict=True)]}) + "\n"
+        for line, row in zip([7, 8], poses, strict=True))
+    assert text == expected
