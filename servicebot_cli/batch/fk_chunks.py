@@ -124,11 +124,10 @@ def jsonl_template(frames: Sequence[str], unit: str) -> str:
     :meth:`~servicebot_cli.batch.fk_rows.FkBatch.json_row`, which writes a float as its
     ``repr``: so the text is the same, byte for byte.
     """
+    names = [json.dumps(frame).replace("%", "%%") for frame in frames]
     poses = ", ".join(
-        '{"frame": %s, "position_m": [%%r, %%r, %%r], "rpy_%s": [%%r, %%r, %%r], '
-        '"quaternion_xyzw": [%%r, %%r, %%r, %%r]}' % (json.dumps(frame).replace("%", "%%"),
-                                                      unit)
-        for frame in frames)
+        f'{{"frame": {name}, "position_m": [%r, %r, %r], "rpy_{unit}": [%r, %r, %r], '
+        '"quaternion_xyzw": [%r, %r, %r, %r]}' for name in names)
     return '{"line": %d, "poses": [' + poses + "]}\n"
 
 
