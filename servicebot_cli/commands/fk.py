@@ -12,6 +12,7 @@ from servicebot_cli.commands.kinematics_options import (
     clamp_option,
     deg_option,
     echo_notes,
+    format_option,
     refuse_format_with_file,
     warn,
 )
@@ -19,7 +20,6 @@ from servicebot_cli.commands.options import (
     FrameName,
     JointValue,
     RobotArgs,
-    format_option,
     refuse_without,
     robot_arguments,
 )

@@ -14,6 +14,7 @@ from servicebot_cli.commands.kinematics_options import (
     clamp_option,
     deg_option,
     echo_notes,
+    format_option,
     refuse_format_with_file,
     warn,
 )
@@ -22,7 +23,6 @@ from servicebot_cli.commands.options import (
     JointValue,
     Number,
     RobotArgs,
-    format_option,
     refuse_with,
     refuse_without,
     robot_arguments,

@@ -30,6 +30,15 @@ clamp_option = click.option(
 )
 
 
+format_option = click.option(
+    "--format", "fmt", type=click.Choice(["text", "json", "csv"]), default="text",
+    show_default=True,
+    help="Output for people (text), for programs (json), or for spreadsheets (csv: a header "
+    "and a row per frame for fk, one row for ik). Batch results on stdout: CSV, or JSON Lines "
+    "with json.",
+)
+
+
 class InputFile(click.ParamType[str]):
     """A batch input: ``-`` for standard input, or a readable file. Checked before any work."""
 

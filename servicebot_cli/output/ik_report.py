@@ -43,9 +43,13 @@ def ik_json(answer: IkAnswer) -> JsonObject:
 
 
 def ik_output(answer: IkAnswer, fmt: str) -> str:
-    """What ``ik`` prints on stdout: JSON, or a headline, the joints and the errors."""
+    """What ``ik`` prints on stdout: JSON, CSV, or a headline, the joints and the errors."""
     if fmt == "json":
         return dumps(ik_json(answer))
+    if fmt == "csv":
+        from servicebot_cli.output.kinematics_csv import ik_csv
+
+        return ik_csv(answer)
     return "".join(f"{line}\n" for line in ik_text(answer))
 
 

@@ -1,4 +1,4 @@
-"""``fk`` results for people (text) and programs (JSON). Rendering only.
+"""``fk`` results for people (text) and programs (JSON; CSV in ``kinematics_csv``). Rendering only.
 
 JSON (documented in README.md, stable)::
 
@@ -59,9 +59,13 @@ def fk_json(result: FkResult) -> JsonObject:
 
 
 def fk_output(result: FkResult, fmt: str) -> str:
-    """What ``fk`` prints on stdout: JSON, or text blocks (a table for every frame)."""
+    """What ``fk`` prints on stdout: JSON, CSV, or text blocks (a table for every frame)."""
     if fmt == "json":
         return dumps(fk_json(result))
+    if fmt == "csv":
+        from servicebot_cli.output.kinematics_csv import fk_csv
+
+        return fk_csv(result)
     return "".join(f"{line}\n" for line in fk_text(result.poses, result.deg, result.as_table))
 
 
