@@ -43,7 +43,7 @@ def fk_csv(result: FkResult) -> str:
     unit = "deg" if result.deg else "rad"
     header = ["frame", "x_m", "y_m", "z_m", f"roll_{unit}", f"pitch_{unit}", f"yaw_{unit}",
               "qx", "qy", "qz", "qw"]
-    rows = [[pose.frame, *(float(v) + 0.0 for v in pose.position_m),
+    rows: list[list[JsonValue]] = [[pose.frame, *(float(v) + 0.0 for v in pose.position_m),
              *(v + 0.0 for v in rpy_of(pose, result.deg)),
              *(float(v) + 0.0 for v in pose.quaternion_xyzw)] for pose in result.poses]
     return csv_text(header, rows)
