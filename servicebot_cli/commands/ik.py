@@ -82,6 +82,9 @@ class IkCommand(Command):
 @click.option("--max-attempts", type=click.IntRange(min=1), default=100, show_default=True,
               metavar="N",
               help="Attempts: the start, then random restarts within the limits.")
+@click.option("--timeout-s", type=Number("S", positive=True), default=None, metavar="S",
+              help="Give up on a target after S seconds of search (each target of a batch), "
+              "printing the best try (exit 1). A target beyond the arm's reach ends at once.")
 @click.option("--solutions", type=click.IntRange(min=1), default=3, show_default=True,
               metavar="N",
               help="Converged solutions to compare before returning the one nearest the start.")
@@ -102,7 +105,8 @@ def ik(ctx: click.Context, robot_args: RobotArgs, frame: str | None,
        position: tuple[float, float, float] | None, rpy: tuple[float, float, float] | None,
        quat: tuple[float, float, float, float] | None, orientation_axes: str | None,
        start: tuple[tuple[str, float], ...], seed: int | None, with_base: bool, tol_m: float,
-       tol_rad: float, max_attempts: int, solutions: int, allow_collisions: bool,
+       tol_rad: float, max_attempts: int, timeout_s: float | None, solutions: int,
+       allow_collisions: bool,
        srdf: str | None, deg: bool, clamp: bool, targets: str | None, output: str | None,
        on_error: Literal["stop", "skip"], fmt: str) -> None:
     """Inverse kinematics: joint values that put a frame at a target.
@@ -139,7 +143,7 @@ def ik(ctx: click.Context, robot_args: RobotArgs, frame: str | None,
 
     problem = IkProblem(robot_args.source(), frame, start, seed, with_base,
                         IkSettings(tol_m, tol_rad, max_attempts, solutions=solutions), deg, clamp,
-                        CollisionOptions(not allow_collisions, srdf))
+                        CollisionOptions(not allow_collisions, srdf), timeout_s)
     if position is not None:
         from servicebot_cli.kinematics.ik import IkRequest, TargetSpec, run
 

@@ -51,3 +51,10 @@ def collision_hint(contact: Contact) -> str:
     """A hint for a target reached only with links in collision: which two."""
     return (f"reachable only through a collision: {contact} would intersect; "
             "--allow-collisions accepts it, or --srdf FILE can disable the pair")
+
+
+def timeout_hint(timeout_s: float, attempts: int) -> str:
+    """A hint for a search that ran out of time before it found an answer."""
+    return (f"stopped by --timeout-s {timeout_s:g} after {attempts} attempt"
+            f"{'s' if attempts != 1 else ''}; give it more time, or check the target can be "
+            "reached")

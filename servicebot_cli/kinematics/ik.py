@@ -23,7 +23,7 @@ from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.description.robot import RobotDescription
 from servicebot_cli.kinematics.chain import Chain
 from servicebot_cli.kinematics.collisions import CollisionCheck, build_check
-from servicebot_cli.kinematics.diagnosis import collision_hint, hint
+from servicebot_cli.kinematics.diagnosis import collision_hint, hint, timeout_hint
 from servicebot_cli.kinematics.drive_geometry import drive_geometry
 from servicebot_cli.kinematics.frames import link_names, pick_frame
 from servicebot_cli.kinematics.inverse import IkResult, IkSettings, IkSolver, IkTarget
@@ -68,6 +68,8 @@ class IkProblem:
         deg: Angles in degrees, in and out.
         clamp: Clamp start values outside their limits instead of refusing them.
         collisions: Which answers count as collisions.
+        timeout_s: Seconds a solve may search before it returns its best try; None: until
+            its attempts are made.
     """
 
     robot: RobotSource
@@ -79,6 +81,7 @@ class IkProblem:
     deg: bool = False
     clamp: bool = False
     collisions: CollisionOptions = field(default_factory=CollisionOptions)
+    timeout_s: float | None = None
 
 
 @dataclass(frozen=True)
@@ -165,6 +168,7 @@ class IkSession:
         self.notes = (*((note,) if note else ()), *(c.note() for c in clamped))
         self._rng = np.random.default_rng(problem.seed)
         self._clock = clock
+        self._timeout_s = problem.timeout_s
 
     @property
     def frame(self) -> str:
@@ -173,10 +177,13 @@ class IkSession:
 
     def solve(self, target: IkTarget, start: FloatArray) -> IkOutcome:
         """Solve from ``start``; with a hint when the target was not reached."""
-        begin = self._clock()
-        result = self.solver.solve(target, start, self._rng)
-        elapsed_s = self._clock() - begin
+        clock, timeout_s = self._clock, self._timeout_s
+        begin = clock()
+        stop = None if timeout_s is None else lambda: clock() - begin > timeout_s
+        result = self.solver.solve(target, start, self._rng, stop)
+        elapsed_s = clock() - begin
         why = None if result.success else collision_hint(result.contact) if result.contact \
+            else timeout_hint(timeout_s, result.attempts) if result.stopped and timeout_s \
             else hint(self.solver, target, start, self._rng)
         return IkOutcome(result, elapsed_s, why)
 

@@ -24,6 +24,7 @@ nearest the seed is returned. Pure: no clock, no global randomness.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -97,6 +98,7 @@ class IkResult:
         solutions: Converged solutions found (the nearest to the seed was returned).
         contact: When the target was reached only with links in collision: the first such
             pair (``q`` is that configuration); None otherwise.
+        stopped: The caller's ``stop`` ended the search before its attempts were made.
     """
 
     q: FloatArray = field(repr=False)
@@ -107,6 +109,7 @@ class IkResult:
     attempts: int
     solutions: int
     contact: Contact | None = None
+    stopped: bool = False
 
 
 class IkSolver:
@@ -141,13 +144,16 @@ class IkSolver:
         """Whether attempts at a full pose or a position run in the compiled loop."""
         return self._compiled is not None
 
-    def solve(self, target: IkTarget, seed: FloatArray, rng: np.random.Generator) -> IkResult:
+    def solve(self, target: IkTarget, seed: FloatArray, rng: np.random.Generator,
+              stop: Callable[[], bool] | None = None) -> IkResult:
         """Joint values that put the chain's frame at ``target``.
 
         Args:
             target: The target, in the root frame.
             seed: Full configuration to start from (within limits); shape (full nq,).
             rng: Source of the random restarts.
+            stop: Asked between attempts (after the first): True ends the search, which
+                then returns its best try (a deadline: see ``IkProblem.timeout_s``).
         """
         chain, settings = self.chain, self.settings
         fast = self._compiled is not None and (target.rotation is None or not target.axes
@@ -161,7 +167,11 @@ class IkSolver:
         iterations = attempts = 0
         # beyond the reach sphere no restart can help: one attempt gives the best try
         limit = 1 if self.out_of_reach(target) else settings.max_attempts
+        stopped = False
         while attempts < limit and len(found) < settings.solutions:
+            if attempts and stop is not None and stop():
+                stopped = True
+                break
             q, err2, made, used, errors = self._attempts(residual, start, attempts, limit,
                                                          target, rng)
             attempts, iterations = attempts + made, iterations + used
@@ -189,14 +199,15 @@ class IkSolver:
                     found.append((best_q, errors))
             if not found:
                 return IkResult(chain.to_full(best_q, seed), False, *errors, iterations,
-                                attempts, 0, contact)
+                                attempts, 0, contact, stopped)
         if found:
             best_q, (position_error, orientation_error) = found[0] if len(found) == 1 else min(
                 found, key=lambda item: self._distance(start, item[0]))
         elif blocked is not None:  # reached, but only through a collision: the best try
             best_q, (position_error, orientation_error), contact = blocked
         return IkResult(chain.to_full(best_q, seed), bool(found), position_error,
-                        orientation_error, iterations, attempts, len(found), contact)
+                        orientation_error, iterations, attempts, len(found), contact,
+                        stopped and not found)
 
     def _attempts(self, residual: Residual | None, start: FloatArray, made: int, limit: int,
                   target: IkTarget, rng: np.random.Generator
