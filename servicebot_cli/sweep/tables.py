@@ -72,8 +72,8 @@ def _csv_text(table: Sequence[dict[str, Any]]) -> str:
 
 def _write_parquet(table: Sequence[dict[str, Any]], path: Path) -> bool:
     try:
-        import pyarrow as pa  # type: ignore[import-not-found,unused-ignore]
-        import pyarrow.parquet as pq  # type: ignore[import-not-found,unused-ignore]
+        import pyarrow as pa
+        import pyarrow.parquet as pq
     except ImportError:
         return False
     with atomic_output(path, "wb") as handle:
