@@ -45,7 +45,8 @@ def run(request: FkBatchRequest, sink: RowSink, *, warn: Warn) -> BatchSummary:
     frames, reference, notes = resolve_frames(robot, query)
     for note in notes:
         warn(note)
-    rows = FkBatch(robot, frames, reference, deg=query.deg, clamp=query.clamp)
+    rows = FkBatch(robot, frames, reference, deg=query.deg, clamp=query.clamp,
+                   in_world=query.transform_root_to_world())
     source, handle = open_source(request.configs)
     with handle:
         if source.kind == "csv":

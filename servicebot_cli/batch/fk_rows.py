@@ -58,8 +58,12 @@ class FkBatch:
     """
 
     def __init__(self, robot: RobotDescription, frames: Sequence[str], relative_to: str, *,
-                 deg: bool, clamp: bool) -> None:
-        """Prepare for ``frames`` in ``relative_to``; angles in degrees with ``deg``."""
+                 deg: bool, clamp: bool, in_world: FloatArray | None = None) -> None:
+        """Prepare for ``frames`` in ``relative_to``; angles in degrees with ``deg``.
+
+        With ``in_world`` (``transform_root_to_world``, where the robot stands), poses are
+        in the world instead.
+        """
         known = link_names(robot)
         self.model = robot.model
         self.data = self.model.createData()
@@ -69,6 +73,7 @@ class FkBatch:
         self.ids = [frame_id(self.model, f, known) for f in frames]
         self.reference = frame_id(self.model, relative_to, known)
         self.deg, self.clamp = deg, clamp
+        self.in_world = in_world
         self.unit = "deg" if deg else "rad"
         self._columns = self._header()
         self.clamped_values = self.clamped_lines = 0
@@ -167,6 +172,8 @@ class FkBatch:
         """
         matrices = frame_transforms(self.model, self.data, configurations(self.space, values),
                                     self.ids, self.reference)
+        if self.in_world is not None:
+            matrices = np.matmul(self.in_world, matrices)
         poses = pose_table(matrices) + 0.0
         if self.deg:
             poses[..., 3:6] = np.degrees(poses[..., 3:6])

@@ -19,7 +19,9 @@ from servicebot_cli.commands.kinematics_options import (
 from servicebot_cli.commands.options import (
     FrameName,
     JointValue,
+    Number,
     RobotArgs,
+    refuse_with,
     refuse_without,
     robot_arguments,
 )
@@ -35,6 +37,9 @@ from servicebot_cli.commands.options import (
 @click.option("--relative-to", type=FrameName(), metavar="FRAME", default=None,
               help="Express poses in this frame (default: the root link).")
 @click.option("--all-frames", is_flag=True, help="Every link and fixed frame, as one table.")
+@click.option("--base", nargs=3, type=Number(), metavar="X Y YAW", default=None,
+              help="Where the mobile base stands in the world: x, y [m] and yaw [rad, or deg "
+              "with --deg]; poses are then in the world frame.")
 @deg_option
 @clamp_option
 @batch_options("--configs", help="Batch: one configuration per line (CSV with a header of "
@@ -43,7 +48,8 @@ from servicebot_cli.commands.options import (
 @format_option
 @click.pass_context
 def fk(ctx: click.Context, robot_args: RobotArgs, joints: tuple[tuple[str, float], ...],
-       frames: tuple[str, ...], relative_to: str | None, all_frames: bool, deg: bool,
+       frames: tuple[str, ...], relative_to: str | None, all_frames: bool,
+       base: tuple[float, float, float] | None, deg: bool,
        clamp: bool, configs: str | None, output: str | None,
        on_error: Literal["stop", "skip"], fmt: str) -> None:
     """Forward kinematics: the pose of frames for given joint values.
@@ -57,6 +63,7 @@ def fk(ctx: click.Context, robot_args: RobotArgs, joints: tuple[tuple[str, float
       servicebot fk -j arm_link1_to_link2=0.5 -j arm_link2_to_link3=-0.3
       servicebot fk --deg -j arm_base_to_link1=45 --frame arm_link4 --format json
       servicebot fk --all-frames --relative-to arm_base_link
+      servicebot fk --base 2.0 1.0 90 --deg -j arm_base_to_link1=30
       servicebot fk --configs configs.csv -o poses.jsonl
     """
     if all_frames and frames:
@@ -68,9 +75,11 @@ def fk(ctx: click.Context, robot_args: RobotArgs, joints: tuple[tuple[str, float
     refuse_without(ctx, "--clamp", "--joint NAME=VALUE or --configs FILE",
                    present=bool(joints) or configs is not None)
     refuse_format_with_file(ctx, output)
+    refuse_with(ctx, "--base", "--relative-to", present=relative_to is not None,
+                why="where the robot stands cancels out between two of its frames")
     from servicebot_cli.kinematics.fk import FrameQuery
 
-    query = FrameQuery(robot_args.source(), frames, all_frames, relative_to, deg, clamp)
+    query = FrameQuery(robot_args.source(), frames, all_frames, relative_to, deg, clamp, base)
     if configs is None:
         from servicebot_cli.kinematics.fk import FkRequest, run
         from servicebot_cli.output.poses import fk_output

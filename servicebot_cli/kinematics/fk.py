@@ -8,9 +8,13 @@ computes the poses; ``output.poses`` renders the :class:`FkResult`. Batch mode
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
+
+import numpy as np
+import numpy.typing as npt
 
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.kinematics.forward import FramePose, frame_poses
@@ -25,6 +29,10 @@ from servicebot_cli.kinematics.user_joints import (
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
+FloatArray = npt.NDArray[np.float64]
+WORLD = "world"
+"""The name poses are in when ``--base`` says where the robot stands."""
+
 
 @dataclass(frozen=True)
 class FrameQuery:
@@ -37,6 +45,8 @@ class FrameQuery:
         relative_to: The reference link; None: the root link.
         deg: Angles in degrees, in and out.
         clamp: Clamp joint values outside their limits instead of refusing them.
+        base: Where the root link stands in the world: ``x`` [m], ``y`` [m], ``yaw``
+            [rad, or deg with ``deg``]; poses are then in the world. None: in the reference.
     """
 
     robot: RobotSource
@@ -45,6 +55,17 @@ class FrameQuery:
     relative_to: str | None = None
     deg: bool = False
     clamp: bool = False
+    base: tuple[float, float, float] | None = None
+
+    def transform_root_to_world(self) -> FloatArray | None:
+        """The planar pose :attr:`base` as a 4 x 4 transform; None without a base."""
+        if self.base is None:
+            return None
+        x_m, y_m, yaw = self.base
+        yaw_rad = math.radians(yaw) if self.deg else yaw
+        c, s = math.cos(yaw_rad), math.sin(yaw_rad)
+        return np.array([[c, -s, 0.0, x_m], [s, c, 0.0, y_m], [0.0, 0.0, 1.0, 0.0],
+                         [0.0, 0.0, 0.0, 1.0]])
 
 
 @dataclass(frozen=True)
@@ -124,6 +145,10 @@ def run(request: FkRequest) -> FkResult:
                   f"(give {outside[0]}=VALUE for a reachable pose)",)
     poses = frame_poses(robot.model, robot.data, space.to_q(values), frames, reference,
                         link_names(robot))
+    in_world = query.transform_root_to_world()
+    if in_world is not None:
+        reference = WORLD
+        poses = [FramePose(p.frame, WORLD, in_world @ p.matrix) for p in poses]
     return FkResult(robot.name, reference, tuple(poses),
                     user_values(space, values, deg=query.deg), query.deg, query.all_frames,
                     notes + tuple(c.note() for c in clamped))
