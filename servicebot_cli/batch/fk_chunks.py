@@ -142,8 +142,10 @@ def jsonl_text(lines: Sequence[int], poses: FloatArray, template: str) -> str:
 def csv_text(lines: Sequence[int], poses: FloatArray, delimiter: str) -> str:
     """CSV rows ``line, pose...`` for a chunk: ``repr`` of every number, as csv.writer writes.
 
-    One ``repr`` of the whole table: a list's ``repr`` writes each float with ``repr``.
+    One %-format of a row template repeated per line (``%r`` of a float is its ``repr``).
     """
-    table = [[line, *row] for line, row in zip(lines, poses.reshape(len(lines), -1).tolist(),
-                                                strict=True)]
-    return repr(table)[2:-2].replace("], [", "\n").replace(", ", delimiter) + "\n"
+    table = poses.reshape(len(lines), -1).tolist()
+    row = "%d" + f"{delimiter}%r" * (len(table[0]) if table else 0) + "\n"
+    flat = list(itertools.chain.from_iterable([line, *values] for line, values in zip(
+        lines, table, strict=True)))
+    return (row * len(lines)) % tuple(flat)
