@@ -43,7 +43,7 @@ def run(request: IkBatchRequest, sink: RowSink, *, warn: Warn, clock: Clock) -> 
         BadLine: An unusable line under ``--on-error stop``.
     """
     axes = parse_axes(request.axes, True)
-    session = IkSession(request.problem, clock)
+    session = IkSession(request.problem, clock, compiled=True)
     for note in session.notes:
         warn(note)
     rows = IkBatch(session, axes=axes)

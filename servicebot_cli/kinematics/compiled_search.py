@@ -13,6 +13,7 @@ to its Pinocchio loop. Pure.
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -69,8 +70,11 @@ class CompiledSearch:
         self._out = np.empty(arrays.size)
         # no attempt: compiles the loop (or loads it from numba's cache) before any solve,
         # so solve times measure solving
+        begin = time.perf_counter()
         self._search(arrays.frames, arrays.axes, arrays.kinds, arrays.limits, self._target, 6,
                      self._tolerances, 1, _NO_SEED, np.empty((0, arrays.size)), self._out)
+        self.ready_s = time.perf_counter() - begin
+        """Seconds the loop took to be ready: to compile, the first time on a machine."""
 
     @classmethod
     def build(cls, chain: Chain, tolerance_m: float, tolerance_rad: float,

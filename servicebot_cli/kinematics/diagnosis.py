@@ -36,7 +36,8 @@ def hint(solver: IkSolver, target: IkTarget, seed: FloatArray, rng: np.random.Ge
         return (f"out of reach: the target is {beyond:.3g} m beyond the arm's reach "
                 f"({reach.radius_m:.3g} m from joint '{reach.around}')")
     if target.axes:
-        probe = IkSolver(chain, replace(settings, max_attempts=_PROBE_ATTEMPTS, solutions=1))
+        probe = IkSolver(chain, replace(settings, max_attempts=_PROBE_ATTEMPTS, solutions=1),
+                         compiled=solver.compiled)
         if probe.solve(replace(target, axes=()), seed, rng).success:
             fewer = "fewer --orientation-axes (e.g. pitch) or none" if len(target.axes) == 3 \
                 else "--orientation-axes none, or other angles"

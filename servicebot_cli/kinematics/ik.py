@@ -141,8 +141,12 @@ class IkSession:
         notes: Lines for stderr: the frame picked, start values clamped.
     """
 
-    def __init__(self, problem: IkProblem, clock: Clock) -> None:
+    def __init__(self, problem: IkProblem, clock: Clock, *, compiled: bool = False) -> None:
         """Load the robot and build everything a solve needs.
+
+        With ``compiled``, attempts run in the compiled loop where it can (see
+        :class:`~servicebot_cli.kinematics.inverse.IkSolver`): worth it for many targets,
+        since the first process on a machine compiles it (seconds) before it solves one.
 
         Raises:
             DescriptionError: The robot cannot be loaded.
@@ -162,10 +166,11 @@ class IkSession:
         self.robot: RobotDescription = robot
         self.space = space
         check = collision_check(robot, model, problem.robot, problem.collisions, chain.names)
-        self.solver = IkSolver(chain, problem.settings, check)
+        self.solver = IkSolver(chain, problem.settings, check, compiled=compiled)
         self.start: FloatArray = space.to_q(space.clamped(values))
         self.deg = problem.deg
-        self.notes = (*((note,) if note else ()), *(c.note() for c in clamped))
+        self.notes = (*((note,) if note else ()), *(c.note() for c in clamped),
+                      *compile_note(self.solver.ready_s))
         self._rng = np.random.default_rng(problem.seed)
         self._clock = clock
         self._timeout_s = problem.timeout_s
@@ -220,6 +225,16 @@ class IkAnswer:
     def success(self) -> bool:
         """The target was reached."""
         return self.outcome.success
+
+
+_COMPILED_S = 1.0  # the compiled loop takes longer than this to be ready only when compiled
+
+
+def compile_note(ready_s: float) -> tuple[str, ...]:
+    """A line for stderr when the compiled loop had to be compiled, which happens once."""
+    if ready_s < _COMPILED_S:
+        return ()
+    return (f"compiled the IK loop in {ready_s:.1f} s; later runs load it from numba's cache",)
 
 
 def collision_check(robot: RobotDescription, model: pin.Model, source: RobotSource,

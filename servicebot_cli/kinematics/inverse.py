@@ -144,6 +144,11 @@ class IkSolver:
         """Whether attempts at a full pose or a position run in the compiled loop."""
         return self._compiled is not None
 
+    @property
+    def ready_s(self) -> float:
+        """Seconds the compiled loop took to be ready (compiled, or loaded); 0 without it."""
+        return 0.0 if self._compiled is None else self._compiled.ready_s
+
     def solve(self, target: IkTarget, seed: FloatArray, rng: np.random.Generator,
               stop: Callable[[], bool] | None = None) -> IkResult:
         """Joint values that put the chain's frame at ``target``.

@@ -7,6 +7,9 @@ every answer the solver gives through it is checked again by Pinocchio's FK on t
 
 from __future__ import annotations
 
+import subprocess
+import sys
+
 import numpy as np
 import pinocchio as pin
 import pytest
@@ -17,8 +20,9 @@ from servicebot_cli.kinematics import lm_kernel
 from servicebot_cli.kinematics.chain import Chain
 from servicebot_cli.kinematics.chain_arrays import chain_arrays
 from servicebot_cli.kinematics.frames import link_names
+from servicebot_cli.kinematics.ik import compile_note
 from servicebot_cli.kinematics.inverse import IkSettings, IkSolver, IkTarget
-from tests.conftest import SIM_URDF
+from tests.conftest import REPO, SIM_URDF
 from tests.kinematics.robots import ARMS, robot_and_chain, tool_pose
 
 FULL = ("roll", "pitch", "yaw")
@@ -142,3 +146,32 @@ def test_chains_the_loop_cannot_do_keep_to_pinocchio():
                   link_names(robot))
     assert chain_arrays(chain) is None
     assert not IkSolver(chain).compiled
+
+
+def imported_after(command: str) -> set[str]:
+    """Top-level modules a fresh interpreter holds after running ``servicebot`` with ``command``."""
+    script = ("import sys\nfrom click.testing import CliRunner\n"
+              "from servicebot_cli.cli import main\n"
+              f"done = CliRunner().invoke(main, {command!r}.split())\n"
+              "assert done.exit_code == 0, done.output\n"
+              "print(' '.join(sorted({m.split('.')[0] for m in sys.modules})))")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                          check=True, cwd=REPO)
+    return set(done.stdout.split())
+
+
+def test_a_single_solve_keeps_to_pinocchio_and_never_waits_for_a_compiler():
+    """The first compile takes seconds; one target is solved in milliseconds without it."""
+    assert "numba" not in imported_after("ik --position 0.4 0.1 0.2 --seed 1")
+
+
+def test_a_batch_runs_in_the_compiled_loop(tmp_path):
+    targets = tmp_path / "t.csv"
+    targets.write_text("x,y,z\n0.4,0.1,0.2\n")
+    assert "numba" in imported_after(f"ik --targets {targets} --seed 1 -o {tmp_path / 'a.csv'}")
+
+
+def test_a_compile_is_said_once_it_took_seconds():
+    assert compile_note(0.02) == ()
+    (line,) = compile_note(7.24)
+    assert line.startswith("compiled the IK loop in 7.2 s")
