@@ -1,15 +1,21 @@
-"""IK and FK speed: servicebot against TRAC-IK (pytracik), ikpy and yourdfpy, in one process.
+"""IK and FK speed: servicebot against roboticstoolbox's ik_LM (C++), TRAC-IK, ikpy, yourdfpy.
 
     pip install -e '.[bench]'
     python bench/kinematics.py                 # 1000 targets per robot, 100 for ikpy
     python bench/kinematics.py --targets 300 --ikpy-targets 30 --fk-configs 5000
 
-For UR5 and Panda (from the example-robot-data package) and the service arm, the same
-random reachable targets (FK of random in-limit configurations) and the same random seeds
-go to every solver. Every answer is checked by the same FK (Pinocchio): a success is an
-answer within 2e-5 m and 2e-5 rad of the target (TRAC-IK's epsilon is 1e-5 per twist
-component; servicebot's tolerance is its default, 1e-6) and within the joint limits.
-servicebot returns its first solution (--solutions 1), as TRAC-IK's Speed mode does.
+For UR5, Panda and Kinova's 6-DoF Jaco 2 (j2s6s200), all from the example-robot-data
+package, and the service arm: the same random reachable targets (FK of random in-limit
+configurations) go to every solver, one after the other, each solve seeded with that solver's
+previous answer (the first with the neutral configuration), as a program that follows a path
+of targets does. Every answer is checked by the same FK (Pinocchio): a success is an answer
+within 2e-5 m and 2e-5 rad of the target and within the joint limits. servicebot's tolerance
+is its default (1e-6 m, 1e-6 rad) and it returns its first solution (--solutions 1);
+roboticstoolbox's ik_LM stops at 0.5 |e|^2 < 1e-10 (|e| < 1.4e-5), TRAC-IK's epsilon is 1e-5.
+servicebot runs twice: with its compiled loop (numba) and with its Pinocchio loop alone.
+Peers that are not installed are left out, with a note on stderr.
+
+Ratios are against the fastest solver on the same robot in the same run.
 
 FK throughput: servicebot's batch mode (`fk --configs`: CSV in, JSON Lines out, in-process)
 and its core (poses only), against yourdfpy's update_cfg + get_transform.
@@ -37,6 +43,7 @@ sys.path.insert(0, str(REPO))
 
 from servicebot_cli.description.loader import RobotSource, load  # noqa: E402
 from servicebot_cli.kinematics.chain import Chain  # noqa: E402
+from servicebot_cli.kinematics.chain_arrays import chain_arrays  # noqa: E402
 from servicebot_cli.kinematics.frames import frame_id, link_names  # noqa: E402
 from servicebot_cli.kinematics.inverse import IkSettings, IkSolver, IkTarget  # noqa: E402
 
@@ -67,13 +74,15 @@ def cases() -> list[Case]:
         Case("UR5", example_robot("ur_description/urdf/ur5_robot.urdf"), "base_link", "tool0"),
         Case("Panda", example_robot("panda_description/urdf/panda.urdf"), "panda_link0",
              "panda_hand_tcp"),
+        Case("Jaco 2 (6-DoF)", example_robot("kinova_description/robots/kinova.urdf"),
+             "j2s6s200_link_base", "j2s6s200_end_effector"),
         Case("service arm", REPO / "robots" / "service_robot.urdf.xml", "base_link",
              "arm_tool_link"),
     ]
 
 
 class Problem:
-    """A robot's chain, its random targets and seeds, and the shared checker."""
+    """A robot's chain, its random targets, and the shared checker."""
 
     def __init__(self, case: Case, count: int, rng: np.random.Generator) -> None:
         self.case = case
@@ -83,7 +92,10 @@ class Problem:
         self.tip = frame_id(self.model, case.tip, link_names(self.robot))
         self.base = frame_id(self.model, case.base, link_names(self.robot))
         neutral = pin.neutral(self.model)
-        self.seeds = [self.chain.to_full(self.chain.random_q(rng), neutral) for _ in range(count)]
+        self.neutral = neutral
+        arrays = chain_arrays(self.chain)
+        assert arrays is not None, f"{case.name}: not a chain of single-axis joints"
+        self.arrays = arrays
         self.targets = [self.pose(self.chain.to_full(self.chain.random_q(rng), neutral))
                         for _ in range(count)]
 
@@ -106,48 +118,95 @@ class Problem:
 
 
 def chain_values(problem: Problem, q: np.ndarray) -> np.ndarray:
-    return problem.chain.to_chain(q)
+    """The chain's joint values in a full ``q``, as plain angles (continuous joints too)."""
+    return problem.arrays.to_angles(problem.chain.to_chain(q))
 
 
-def servicebot_solver(problem: Problem, axes: tuple[str, ...] = ("roll", "pitch", "yaw")
-                      ) -> Callable[[int], np.ndarray | None]:
-    solver = IkSolver(problem.chain, IkSettings(solutions=1))
+def full_q(problem: Problem, theta: np.ndarray) -> np.ndarray:
+    """The full ``q`` from the chain's plain joint values (others neutral)."""
+    return problem.chain.to_full(problem.arrays.to_q(np.asarray(theta, dtype=float),
+                                                     problem.chain.model.nq), problem.neutral)
+
+
+Solve = Callable[[int, np.ndarray], "np.ndarray | None"]
+"""Target index and seed (a full q, the solver's previous answer) -> full q, or None."""
+
+
+def servicebot_solver(problem: Problem, axes: tuple[str, ...] = ("roll", "pitch", "yaw"),
+                      compiled: bool = True) -> Solve:
+    solver = IkSolver(problem.chain, IkSettings(solutions=1), compiled=compiled)
     rng = np.random.default_rng(7)
     pin.framesForwardKinematics(problem.model, problem.data, pin.neutral(problem.model))
     root_to_base = problem.data.oMf[problem.base].copy()
     targets = [root_to_base * t for t in problem.targets]
     ik_targets = [IkTarget(t.translation.copy(), t.rotation.copy(), axes) for t in targets]
 
-    def solve(i: int) -> np.ndarray | None:
-        result = solver.solve(ik_targets[i], problem.seeds[i], rng)
+    def solve(i: int, seed: np.ndarray) -> np.ndarray | None:
+        result = solver.solve(ik_targets[i], seed, rng)
         return result.q if result.success else None
 
     return solve
 
 
-def tracik_solver(problem: Problem) -> Callable[[int], np.ndarray | None]:
+def rtb_solver(problem: Problem) -> Solve:
+    """roboticstoolbox's ik_LM (C++) on the chain from base to tip, called as its ETS."""
+    import roboticstoolbox as rtb
+    import xacrodoc.packages
+    from roboticstoolbox.models.URDF.URDFRobot import URDF_file
+
+    share = next((p for p in problem.case.urdf.parents if p.name == "example-robot-data"), None)
+    if share is not None:  # its URDFs name their meshes by package://example-robot-data
+        xacrodoc.packages.update_package_cache({"example-robot-data": str(share)})
+    urdf = problem.case.urdf
+    if urdf.suffix != ".urdf":  # rtb takes any other name for one of robot_descriptions'
+        urdf = Path(tempfile.mkdtemp()) / f"{urdf.name.split('.')[0]}.urdf"
+        urdf.write_text(problem.case.urdf.read_text())
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        links, name, _ = URDF_file(str(urdf))
+    ets = rtb.Robot(links, name=name).ets(problem.case.base, problem.case.tip)
+    assert problem.arrays.size == ets.n, "rtb's chain is not servicebot's"
+
+    def pin_q(theta: np.ndarray) -> np.ndarray:
+        return full_q(problem, theta)
+
+    # rtb's ETS from a link starts at that link's parent: measure the constant offset once
+    # (at two configurations, to be sure it is one) and aim rtb's tip at the same target.
+    rng = np.random.default_rng(2)
+    offsets = [np.asarray(ets.fkine(theta)) @ np.linalg.inv(problem.pose(pin_q(theta)).homogeneous)
+               for theta in (rng.uniform(-1, 1, ets.n), rng.uniform(-1, 1, ets.n))]
+    assert np.allclose(offsets[0], offsets[1], atol=1e-9), "rtb's base offset is not constant"
+    targets = [offsets[0] @ t.homogeneous for t in problem.targets]
+
+    def solve(i: int, seed: np.ndarray) -> np.ndarray | None:
+        answer = ets.ik_LM(targets[i], q0=chain_values(problem, seed), tol=1e-10)
+        return pin_q(np.asarray(answer.q, dtype=float)) if answer.success else None
+
+    return solve
+
+
+def tracik_solver(problem: Problem) -> Solve:
     import pytracik
 
     urdf = problem.case.urdf.read_text()
     solver = pytracik.TRAC_IK(problem.case.base, problem.case.tip, urdf, 0.005, 1e-5,
                               pytracik.SolveType.Speed)
     # pytracik reads Panda's limits as zero (its safety_controller tags); give it the URDF's.
-    pytracik.set_joint_limits(solver, problem.chain.lower, problem.chain.upper)
+    # Continuous joints: +-inf, which KDL's joint limits take as none.
+    pytracik.set_joint_limits(solver, problem.arrays.limits[0], problem.arrays.limits[1])
     goals = []
     for t in problem.targets:
         quat = pin.Quaternion(t.rotation)
         goals.append((*t.translation, quat.x, quat.y, quat.z, quat.w))
-    seeds = [chain_values(problem, s) for s in problem.seeds]
-    neutral = pin.neutral(problem.model)
 
-    def solve(i: int) -> np.ndarray | None:
-        answer = pytracik.ik(solver, seeds[i], *goals[i])
-        return problem.chain.to_full(answer[1:], neutral) if answer[0] >= 0 else None
+    def solve(i: int, seed: np.ndarray) -> np.ndarray | None:
+        answer = pytracik.ik(solver, chain_values(problem, seed), *goals[i])
+        return full_q(problem, answer[1:]) if answer[0] >= 0 else None
 
     return solve
 
 
-def ikpy_solver(problem: Problem, mode: str | None = "all") -> Callable[[int], np.ndarray | None]:
+def ikpy_solver(problem: Problem, mode: str | None = "all") -> Solve:
     import ikpy.chain
 
     robot, elements = problem.robot, [problem.case.tip]
@@ -160,7 +219,6 @@ def ikpy_solver(problem: Problem, mode: str | None = "all") -> Callable[[int], n
         active = np.array([link.joint_type != "fixed" for link in chain.links])
         chain = ikpy.chain.Chain.from_urdf_file(str(problem.case.urdf), base_elements=elements,
                                                 active_links_mask=active)
-    neutral = pin.neutral(problem.model)
 
     def ikpy_q(q: np.ndarray) -> np.ndarray:
         values = np.zeros(len(chain.links))
@@ -170,16 +228,17 @@ def ikpy_solver(problem: Problem, mode: str | None = "all") -> Callable[[int], n
     # ikpy drops the rpy of some fixed joints (Panda's hand is off by 45 degrees about z):
     # measure that constant tip offset once and aim ikpy's own tip at the same target.
     offsets = [np.linalg.inv(problem.pose(q).homogeneous) @ chain.forward_kinematics(ikpy_q(q))
-               for q in problem.seeds[:2]]
+               for q in (problem.neutral, problem.chain.to_full(
+                   problem.chain.random_q(np.random.default_rng(1)), problem.neutral))]
     assert np.allclose(offsets[0], offsets[1], atol=1e-9), "ikpy's tip offset is not constant"
 
-    def solve(i: int) -> np.ndarray | None:
+    def solve(i: int, seed: np.ndarray) -> np.ndarray | None:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             answer = chain.inverse_kinematics_frame(
                 problem.targets[i].homogeneous @ offsets[0],
-                initial_position=ikpy_q(problem.seeds[i]), orientation_mode=mode)
-        return problem.chain.to_full(np.asarray(answer)[active], neutral)
+                initial_position=ikpy_q(seed), orientation_mode=mode)
+        return full_q(problem, np.asarray(answer)[active])
 
     return solve
 
@@ -212,16 +271,30 @@ class Row:
     p95_ms: float
 
 
-def run(problem: Problem, label: str, solve: Callable[[int], np.ndarray | None],
-        count: int, orientation: bool = True, robot: str = "") -> Row:
-    times, good = [], 0
+def run(problem: Problem, label: str, solve: Solve, count: int, orientation: bool = True,
+        robot: str = "") -> Row:
+    """Solve the first ``count`` targets in order, each from the previous answer."""
+    times, good, seed = [], 0, problem.neutral
     for i in range(count):
         start = time.perf_counter()
-        q = solve(i)
+        q = solve(i, seed)
         times.append(time.perf_counter() - start)
-        good += problem.ok(q, problem.targets[i], orientation)
+        if problem.ok(q, problem.targets[i], orientation):
+            good += 1
+            assert q is not None
+            seed = q
     return Row(robot or problem.case.name, label, count, good / count,
                float(np.median(times) * 1e3), float(np.percentile(times, 95) * 1e3))
+
+
+def installed(module: str) -> bool:
+    """Whether a peer can be imported; a note on stderr when not."""
+    try:
+        __import__(module)
+    except ImportError:
+        print(f"{module} is not installed: its rows are left out", file=sys.stderr)
+        return False
+    return True
 
 
 def fk_throughput(count: int) -> list[tuple[str, float]]:
@@ -267,13 +340,14 @@ def fk_throughput(count: int) -> list[tuple[str, float]]:
 
 
 def print_ik_table(rows: list[Row]) -> None:
-    ours = {r.robot: r for r in rows if r.solver == "servicebot"}
-    print("| robot | solver | targets | success | median [ms] | p95 [ms] | median / servicebot's |")
+    fastest: dict[str, float] = {}
+    for r in rows:
+        fastest[r.robot] = min(fastest.get(r.robot, np.inf), r.median_ms)
+    print("| robot | solver | targets | success | median [ms] | p95 [ms] | median / fastest |")
     print("|---|---|---:|---:|---:|---:|---:|")
     for r in rows:
-        ratio = r.median_ms / ours[r.robot].median_ms if r.robot in ours else float("nan")
         print(f"| {r.robot} | {r.solver} | {r.targets} | {r.success * 100:.1f}% | "
-              f"{r.median_ms:.3f} | {r.p95_ms:.3f} | {ratio:.2f}x |")
+              f"{r.median_ms:.3f} | {r.p95_ms:.3f} | {r.median_ms / fastest[r.robot]:.2f}x |")
 
 
 def main() -> None:
@@ -284,25 +358,34 @@ def main() -> None:
     parser.add_argument("--seed", type=int, default=0)
     args = parser.parse_args()
     rows = []
+    peers = {name: installed(name) for name in ("roboticstoolbox", "pytracik", "ikpy")}
     for case in cases():
         problem = Problem(case, args.targets, np.random.default_rng(args.seed))
         rows.append(run(problem, "servicebot", servicebot_solver(problem), args.targets))
-        with quiet():  # KDL warns about root links with inertia, on stdout
-            tracik = tracik_solver(problem)
-        rows.append(run(problem, "TRAC-IK (pytracik)", tracik, args.targets))
-        rows.append(run(problem, "ikpy", ikpy_solver(problem), min(args.ikpy_targets,
-                                                                    args.targets)))
+        rows.append(run(problem, "servicebot, Pinocchio loop only",
+                        servicebot_solver(problem, compiled=False), args.targets))
+        if peers["roboticstoolbox"]:
+            rows.append(run(problem, "roboticstoolbox ik_LM (C++)", rtb_solver(problem),
+                            args.targets))
+        if peers["pytracik"]:
+            with quiet():  # KDL warns about root links with inertia, on stdout
+                tracik = tracik_solver(problem)
+            rows.append(run(problem, "TRAC-IK (pytracik)", tracik, args.targets))
+        if peers["ikpy"]:
+            rows.append(run(problem, "ikpy", ikpy_solver(problem),
+                            min(args.ikpy_targets, args.targets)))
         if case.name == "service arm":  # its own problem too: four joints, position only
             label = "service arm, position only"  # pytracik cannot leave orientation free
             rows.append(run(problem, "servicebot", servicebot_solver(problem, ()), args.targets,
                             orientation=False, robot=label))
-            rows.append(run(problem, "ikpy", ikpy_solver(problem, None),
-                            min(args.ikpy_targets, args.targets), orientation=False,
-                            robot=label))
+            if peers["ikpy"]:
+                rows.append(run(problem, "ikpy", ikpy_solver(problem, None),
+                                min(args.ikpy_targets, args.targets), orientation=False,
+                                robot=label))
         print(f"{case.name}: done", file=sys.stderr)
     print(f"IK, full pose unless said, {args.targets} random reachable targets per robot (ikpy: "
-          f"the first {args.ikpy_targets}); success = FK within {CHECK_M:g} m and "
-          f"{CHECK_RAD:g} rad, limits kept\n")
+          f"the first {args.ikpy_targets}), each solve seeded with the previous answer; "
+          f"success = FK within {CHECK_M:g} m and {CHECK_RAD:g} rad, limits kept\n")
     print_ik_table(rows)
     print(f"\nFK throughput, service robot, {args.fk_configs} configurations\n")
     print("| implementation | configurations/s |")
