@@ -65,7 +65,8 @@ class IkBatch:
 
     def parse(self, row: Row) -> IkTarget:
         """The target of one line (raises BadTarget or BadNumber when unusable)."""
-        return row_target(row.values, self.frame, deg=self.session.deg, axes=self.axes)
+        return self.session.in_root(row_target(row.values, self.frame, deg=self.session.deg,
+                                               axes=self.axes))
 
     def results(self, items: Iterable[tuple[Row, IkTarget]],
                 kind: RowKind) -> Iterator[JsonObject]:

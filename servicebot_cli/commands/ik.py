@@ -57,8 +57,11 @@ class IkCommand(Command):
 @click.option("-f", "--frame", type=FrameName(), metavar="FRAME", default=None,
               help="The frame to move (default: the arm's tool frame).")
 @click.option("--position", nargs=3, type=Number("M"), metavar="X Y Z", default=None,
-              help="Target position [m] in the root link's frame (with --with-base: the "
-              "frame where the root link stands now).")
+              help="Target position [m] in the root link's frame, or --relative-to's (with "
+              "--with-base: the frame where the root link stands now).")
+@click.option("--relative-to", type=FrameName(), metavar="FRAME", default=None,
+              help="Targets are given in this link's frame (a camera's, the arm base's), "
+              "where it stands at the start configuration (default: the root link).")
 @click.option("--rpy", nargs=3, type=Number("ANGLE"), metavar="R P Y", default=None,
               help="Target roll, pitch, yaw [rad, or deg with --deg] (URDF convention).")
 @click.option("--quat", nargs=3 + 1, type=Number(), metavar="X Y Z W", default=None,
@@ -102,7 +105,8 @@ class IkCommand(Command):
 @format_option
 @click.pass_context
 def ik(ctx: click.Context, robot_args: RobotArgs, frame: str | None,
-       position: tuple[float, float, float] | None, rpy: tuple[float, float, float] | None,
+       position: tuple[float, float, float] | None, relative_to: str | None,
+       rpy: tuple[float, float, float] | None,
        quat: tuple[float, float, float, float] | None, orientation_axes: str | None,
        start: tuple[tuple[str, float], ...], seed: int | None, with_base: bool, tol_m: float,
        tol_rad: float, max_attempts: int, timeout_s: float | None, solutions: int,
@@ -122,6 +126,7 @@ def ik(ctx: click.Context, robot_args: RobotArgs, frame: str | None,
       servicebot ik --position 0.5 0.2 0.4
       servicebot ik --position 0.4 0.1 0.2 --rpy 0 90 0 --deg --orientation-axes pitch
       servicebot ik --position 2.0 1.0 0.5 --with-base --format json
+      servicebot ik --relative-to arm_base_link --position 0.4 0 0.2
       servicebot ik --targets path.csv -o joints.jsonl --seed 1
     """
     if rpy is not None and quat is not None:
@@ -143,7 +148,7 @@ def ik(ctx: click.Context, robot_args: RobotArgs, frame: str | None,
 
     problem = IkProblem(robot_args.source(), frame, start, seed, with_base,
                         IkSettings(tol_m, tol_rad, max_attempts, solutions=solutions), deg, clamp,
-                        CollisionOptions(not allow_collisions, srdf), timeout_s)
+                        CollisionOptions(not allow_collisions, srdf), timeout_s, relative_to)
     if position is not None:
         from servicebot_cli.kinematics.ik import IkRequest, TargetSpec, run
 

@@ -29,6 +29,7 @@ from servicebot_cli.kinematics.frames import link_names, pick_frame
 from servicebot_cli.kinematics.inverse import IkResult, IkSettings, IkSolver, IkTarget
 from servicebot_cli.kinematics.json_types import JsonObject
 from servicebot_cli.kinematics.srdf import disabled_pairs
+from servicebot_cli.kinematics.target_frame import TargetFrame
 from servicebot_cli.kinematics.targets import make_target, parse_axes
 from servicebot_cli.kinematics.user_joints import clamped_user_vector, user_values
 
@@ -70,6 +71,8 @@ class IkProblem:
         collisions: Which answers count as collisions.
         timeout_s: Seconds a solve may search before it returns its best try; None: until
             its attempts are made.
+        relative_to: The link targets are given in, where it stands at the start
+            configuration; None: the root link.
     """
 
     robot: RobotSource
@@ -82,6 +85,7 @@ class IkProblem:
     clamp: bool = False
     collisions: CollisionOptions = field(default_factory=CollisionOptions)
     timeout_s: float | None = None
+    relative_to: str | None = None
 
 
 @dataclass(frozen=True)
@@ -171,6 +175,8 @@ class IkSession:
         self.deg = problem.deg
         self.notes = (*((note,) if note else ()), *(c.note() for c in clamped),
                       *compile_note(self.solver.ready_s))
+        self.target_frame = None if problem.relative_to is None else TargetFrame.at(
+            model, self.start, problem.relative_to, link_names(robot))
         self._rng = np.random.default_rng(problem.seed)
         self._clock = clock
         self._timeout_s = problem.timeout_s
@@ -180,8 +186,25 @@ class IkSession:
         """The frame solved for."""
         return self.solver.chain.frame_name
 
+    @property
+    def relative_to(self) -> str:
+        """The frame targets are given in."""
+        return self.robot.root_link or "" if self.target_frame is None else \
+            self.target_frame.name
+
+    def in_root(self, target: IkTarget) -> IkTarget:
+        """``target``, given in :attr:`relative_to`, in the frame :meth:`solve` takes.
+
+        Raises:
+            BadTarget: Orientation angles left free in a turned ``relative_to`` frame.
+        """
+        return target if self.target_frame is None else self.target_frame.to_root(target)
+
     def solve(self, target: IkTarget, start: FloatArray) -> IkOutcome:
-        """Solve from ``start``; with a hint when the target was not reached."""
+        """Solve for ``target`` from ``start``; with a hint when it was not reached.
+
+        ``target`` is in the root link's frame (see :meth:`in_root`).
+        """
         clock, timeout_s = self._clock, self._timeout_s
         begin = clock()
         stop = None if timeout_s is None else lambda: clock() - begin > timeout_s
@@ -204,7 +227,7 @@ class IkAnswer:
     Attributes:
         robot: The robot's name.
         frame: The frame moved.
-        relative_to: The frame the target is in (the root link).
+        relative_to: The frame the target is in (the root link, or ``--relative-to``).
         target: The target.
         space: The joint space solved on (names, units and limits for the report).
         outcome: The solve.
@@ -280,8 +303,9 @@ def run(request: IkRequest, *, clock: Clock) -> IkAnswer:
     session = IkSession(problem, clock)
     target = make_target(spec.position_m, rpy=spec.rpy, quat=spec.quat, deg=problem.deg,
                          axes=axes)
-    return IkAnswer(session.robot.name, session.frame, session.robot.root_link or "", target,
-                    session.space, session.solve(target, session.start), problem.deg,
+    return IkAnswer(session.robot.name, session.frame, session.relative_to, target,
+                    session.space, session.solve(session.in_root(target), session.start),
+                    problem.deg,
                     session.notes)
 
 
