@@ -25,7 +25,9 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import csv
 import os
+import subprocess
 import sys
 import tempfile
 import time
@@ -339,6 +341,98 @@ def fk_throughput(count: int) -> list[tuple[str, float]]:
             ("yourdfpy update_cfg + get_transform", count / yourdfpy_s)]
 
 
+def servicebot_command(*args: str) -> float:
+    """Seconds ``servicebot ARGS`` takes as a new process (exit 0 or 1: not every target)."""
+    start = time.perf_counter()
+    done = subprocess.run([sys.executable, "-m", "servicebot_cli", *args], cwd=REPO,
+                          capture_output=True, text=True)
+    elapsed = time.perf_counter() - start
+    assert done.returncode in (0, 1), done.stderr
+    return elapsed
+
+
+BatchRow = tuple[str, int, float, float]
+"""Label, items, seconds, success rate."""
+
+
+def batch_ik(count: int) -> list[BatchRow]:
+    """UR5, ``count`` full-pose targets: ``ik --targets`` as a process against rtb's loop.
+
+    servicebot runs end to end: process start, model
+    and collision set-up, CSV in, CSV out (its compiled loop already in numba's cache).
+    """
+    case = next(c for c in cases() if c.name == "UR5")
+    problem = Problem(case, count, np.random.default_rng(5))
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        targets, answers = Path(tmp) / "targets.csv", Path(tmp) / "joints.csv"
+        lines = ["x_m,y_m,z_m,qx,qy,qz,qw"]
+        pin.framesForwardKinematics(problem.model, problem.data, problem.neutral)
+        root_to_base = problem.data.oMf[problem.base].copy()  # the command takes root frame
+        for target in (root_to_base * t for t in problem.targets):
+            quat = pin.Quaternion(target.rotation)
+            lines.append(",".join(repr(float(v)) for v in (*target.translation, quat.x,
+                                                            quat.y, quat.z, quat.w)))
+        targets.write_text("\n".join(lines) + "\n")
+        args = (str(case.urdf), "--frame", case.tip, "--seed", "1", "-o", str(answers))
+        servicebot_command("ik", *args[:-2], "--position", "0.4", "0.2", "0.3")  # warm caches
+        for label, options in (("--solutions 1 --allow-collisions", ("--solutions", "1",
+                                                                       "--allow-collisions")),
+                               ("defaults", ())):
+            elapsed = servicebot_command("ik", *args, *options, "--targets", str(targets))
+            with answers.open() as handle:
+                reached = sum(row["success"] == "true" for row in csv.DictReader(handle))
+            rows.append((f"servicebot ik --targets, {label} (a process)", count, elapsed,
+                         reached / count))
+    if installed("roboticstoolbox"):
+        solve = rtb_solver(problem)
+        start = time.perf_counter()
+        row = run(problem, "rtb", solve, count)
+        rows.append(("roboticstoolbox ik_LM loop (in-process)", count,
+                     time.perf_counter() - start, row.success))
+    return rows
+
+
+def batch_fk(count: int) -> list[BatchRow]:
+    """The service arm, ``count`` configurations: ``fk --configs`` as a process against a
+    plain in-process loop over Pinocchio."""
+    robot = load(RobotSource.bundled("sim"))
+    names = [n for n in robot.joint_space.names if n.startswith("arm_")]
+    values = np.random.default_rng(4).uniform(-1.5, 1.5, size=(count, len(names)))
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        configs = Path(tmp) / "configs.csv"
+        with configs.open("w") as handle:
+            handle.write(",".join(names) + "\n")
+            np.savetxt(handle, values, delimiter=",", fmt="%.17g")
+        elapsed = servicebot_command("fk", "--configs", str(configs), "-o",
+                                     str(Path(tmp) / "poses.csv"))
+        rows.append(("servicebot fk --configs (a process: start, CSV in, CSV out)", count,
+                     elapsed, 1.0))
+    model, data = robot.model, robot.model.createData()
+    tip = model.getFrameId("arm_tool_link")
+    q = pin.neutral(model)
+    index = [model.joints[model.getJointId(n)].idx_q for n in names]
+    start = time.perf_counter()
+    for row in values:
+        q[index] = row
+        pin.framesForwardKinematics(model, data, q)
+        data.oMf[tip].homogeneous  # noqa: B018 (the pose, as a user would read it)
+    rows.append(("Pinocchio framesForwardKinematics loop (in-process)", count,
+                 time.perf_counter() - start, 1.0))
+    return rows
+
+
+def print_batch_table(title: str, rows: list[BatchRow]) -> None:
+    fastest = min(seconds for _, _, seconds, _ in rows)
+    print(f"\n{title}\n")
+    print("| run | seconds | per second | success | time / fastest |")
+    print("|---|---:|---:|---:|---:|")
+    for label, count, seconds, success in rows:
+        print(f"| {label} | {seconds:.2f} | {count / seconds:,.0f} | {success * 100:.1f}% | "
+              f"{seconds / fastest:.2f}x |")
+
+
 def print_ik_table(rows: list[Row]) -> None:
     fastest: dict[str, float] = {}
     for r in rows:
@@ -356,6 +450,10 @@ def main() -> None:
     parser.add_argument("--ikpy-targets", type=int, default=100)
     parser.add_argument("--fk-configs", type=int, default=20000)
     parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--batch-targets", type=int, default=10000,
+                        help="ik --targets end to end, against rtb's loop (0: skip)")
+    parser.add_argument("--batch-configs", type=int, default=200000,
+                        help="fk --configs end to end, against Pinocchio's loop (0: skip)")
     args = parser.parse_args()
     rows = []
     peers = {name: installed(name) for name in ("roboticstoolbox", "pytracik", "ikpy")}
@@ -392,6 +490,12 @@ def main() -> None:
     print("|---|---:|")
     for label, rate in fk_throughput(args.fk_configs):
         print(f"| {label} | {rate:,.0f} |")
+    if args.batch_targets:
+        print_batch_table(f"Batch IK, UR5, {args.batch_targets} full-pose targets",
+                          batch_ik(args.batch_targets))
+    if args.batch_configs:
+        print_batch_table(f"Batch FK, service arm, {args.batch_configs} configurations",
+                          batch_fk(args.batch_configs))
 
 
 if __name__ == "__main__":
