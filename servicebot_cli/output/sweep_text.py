@@ -30,7 +30,8 @@ def _values(result: RunResult) -> str:
 def sweep_lines(report: SweepReport) -> Iterator[str]:
     """Lines of text for ``report``: what ran, what held, and the runs that failed."""
     points, draws, seeds = report.shape
-    yield (f"{report.robot}, scenario {report.scenario}, {report.planned} runs "
+    yield (f"{report.robot}, scenario {report.scenario}, {report.planned} "
+           f"run{'s' * (report.planned != 1)} "
            f"({points} grid point{'s' * (points != 1)} x {draws} draw{'s' * (draws != 1)} "
            f"x {seeds} seed{'s' * (seeds != 1)})")
     resumed = f" ({report.resumed} found done)" if report.resumed else ""

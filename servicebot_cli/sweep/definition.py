@@ -130,6 +130,7 @@ def read_sweep(located: Located, base_dir: FsPath) -> SweepDefinition:
     Raises:
         ScenarioError: The first bad field, with its line.
     """
+    _refuse_empty(located)
     r = Reader(located)
     r.mapping((), _TOP)
     scenario = r.string(("scenario",), "default")
@@ -140,9 +141,21 @@ def read_sweep(located: Located, base_dir: FsPath) -> SweepDefinition:
         sample_seed=sample_seed, expectations=_expectations(r), located=located)
     _refuse_overlaps(r, (*definition.fixed, *definition.grid, *definition.draws))
     if definition.run_count > MAX_RUNS:
-        raise r.error((), f"{definition.run_count} runs is over the limit of {MAX_RUNS}; "
-                      "use fewer seeds, grid values or draws")
+        raise SweepError(f"{located.where(())}: {definition.run_count} runs is over the limit "
+                         f"of {MAX_RUNS}; use fewer seeds, grid values or draws")
     return definition
+
+
+def _refuse_empty(located: Located) -> None:
+    """A sweep file must be a mapping, and one that says something (not the default run)."""
+    value = located.value
+    if isinstance(value, dict) and value:
+        return
+    got = "nothing" if value in ({}, None) else "a list" if isinstance(value, list) \
+        else repr(value)
+    raise SweepError(f"{located.where(())}: expected a sweep, a mapping of "
+                     f"{', '.join(_TOP)}, got {got}; e.g. 'seeds: 10' runs the default "
+                     "scenario with seeds 0 to 9")
 
 
 def _seeds(r: Reader) -> tuple[int, ...]:

@@ -83,3 +83,12 @@ def test_no_scheduler_at_the_address_is_one_line(run, write_sweep):
     pytest.importorskip("distributed")
     result = run("sweep", write_sweep(SWEEP), "--scheduler", "tcp://127.0.0.1:9")
     assert_one_line_error(result, 2, "no Dask scheduler answers at tcp://127.0.0.1:9")
+
+
+@pytest.mark.parametrize(("text", "got"), [("", "got nothing"), ("# all commented out\n",
+                                                                  "got nothing"),
+                                           ("{}", "got nothing"), ("- seeds: 2\n", "a list")])
+def test_an_empty_sweep_file_is_refused_not_run_as_the_default(run, write_sweep, text, got):
+    result = run("sweep", write_sweep(text))
+    assert_one_line_error(result, 2, "sweep.yaml", "expected a sweep, a mapping of scenario",
+                          got, "e.g. 'seeds: 10'")
