@@ -2,8 +2,9 @@
 
 Every number of ``simulate``'s summary becomes one column, named by its dotted path as
 ``--expect`` names it (``odometry_drift.final_position_m``); ``collisions`` is their count
-and ``end_effector.position_m`` gives ``end_effector.position_m[0]`` to ``[2]``. The fixed
-fields (robot, scenario, seed, duration, message counts) are not metrics.
+and ``end_effector.position_m`` gives ``end_effector.position_m[0]`` to ``[2]``. A metric
+keeps its type: counts are ``int``, measures ``float``. The fixed fields (robot, scenario,
+seed, duration, message counts) are not metrics.
 """
 
 from __future__ import annotations
@@ -20,7 +21,7 @@ STATISTICS = ("mean", "std", "min", "median", "p95", "max")
 
 
 def flat_metrics(summary: Mapping[str, Any]) -> dict[str, float]:
-    """The summary's numbers by dotted path, in the summary's order."""
+    """The summary's numbers by dotted path, in the summary's order (ints and bools kept)."""
     metrics: dict[str, float] = {}
     for key, value in summary.items():
         if key not in NOT_METRICS:
@@ -30,11 +31,9 @@ def flat_metrics(summary: Mapping[str, Any]) -> dict[str, float]:
 
 def _flatten(name: str, value: Any, out: dict[str, float]) -> None:
     if name in COUNTED and isinstance(value, list):
-        out[name] = float(len(value))
-    elif isinstance(value, bool):
-        out[name] = float(value)
-    elif isinstance(value, int | float):
-        out[name] = float(value)
+        out[name] = len(value)
+    elif isinstance(value, int | float):  # bool is an int
+        out[name] = value
     elif isinstance(value, Mapping):
         for key, item in value.items():
             _flatten(f"{name}.{key}", item, out)

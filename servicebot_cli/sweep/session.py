@@ -122,7 +122,7 @@ def run(request: SweepRequest, *, stderr: TextIO | None = None,
     _check_against_robot(definition, runs, robot)
     out_dir = Path(request.out_dir) if request.out_dir else None
     if out_dir is not None:
-        out_dir.mkdir(exist_ok=True)
+        _make_dir(out_dir)
     results: dict[int, RunResult] = {}
     for r in runs:
         record = store.load_record(out_dir, r.key, request.keep) if out_dir else None
@@ -136,13 +136,13 @@ def run(request: SweepRequest, *, stderr: TextIO | None = None,
                            tuple(results[i] for i in sorted(results)),
                            _workers(request), wall_s, tuple(files))
 
-    files: list[Path] = []
+    files: tuple[Path, ...] = ()
     start = clock()
     try:
         _run_all(request, definition, todo, checks, results, out_dir, stderr)
     finally:  # Ctrl-C, SIGTERM or a failed run: the tables of what finished
         if out_dir is not None and results:
-            files = _write(report(clock() - start), out_dir)
+            files = _write(report(clock() - start), out_dir, stderr)
     finished = report(clock() - start, files)
     if request.plot is not None:
         from servicebot_cli.sweep.plot import write_plot
@@ -224,10 +224,23 @@ def _result(r: Run, record: Record, checks: Sequence[Expectation], *,
     return RunResult(r, record, flat_metrics(record.summary), failed, resumed)
 
 
-def _write(report: SweepReport, out_dir: Path) -> list[Path]:
+def _make_dir(out_dir: Path) -> None:
+    from servicebot_cli.common.files import OutputError
+
+    try:
+        out_dir.mkdir(exist_ok=True)
+    except OSError as exc:
+        raise OutputError(f"{out_dir}: cannot create the directory: "
+                          f"{exc.strerror or exc}") from None
+
+
+def _write(report: SweepReport, out_dir: Path, stderr: TextIO | None) -> tuple[Path, ...]:
     from servicebot_cli.sweep.tables import write_tables
 
-    return write_tables(report, out_dir)
+    written = write_tables(report, out_dir)
+    for note in written.notes if stderr is not None else ():
+        print(note, file=stderr)
+    return written.files
 
 
 def _shape(definition: SweepDefinition) -> tuple[int, int, int]:

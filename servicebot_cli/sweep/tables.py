@@ -1,83 +1,80 @@
 """The sweep's tables: ``runs.csv`` (and ``runs.parquet``) and ``summary.json``.
 
 One row per finished run, in the sweep's order: its index, key, grid point, draw, seed, the
-values it ran with, every metric of its summary, and the expectations it failed. The summary
-counts runs, lists the failed expectations and runs, and gives per grid point the statistics
-of every metric over its draws and seeds. Every file is written atomically.
+values it ran with, every metric of its summary, and the expectations it failed (typed
+columns: :mod:`servicebot_cli.sweep.columns`). The summary counts runs, lists the failed
+expectations and runs, and gives per grid point the statistics of every metric over its
+draws and seeds. Every file is written atomically.
+
+``runs.parquet`` is written when pyarrow is installed (the ``parquet`` extra). Without it, a
+``runs.parquet`` left by an earlier sweep in the directory is removed, with a note, rather
+than left to disagree with ``runs.csv``.
 """
 
 from __future__ import annotations
 
-import csv
-import io
-import json
-from collections.abc import Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from servicebot_cli.common.files import atomic_output, write_atomic
+from servicebot_cli.common.files import OutputError, atomic_output, write_atomic
 from servicebot_cli.common.jsonable import dumps
+from servicebot_cli.sweep.columns import Column, arrow_table, csv_text, run_columns
 from servicebot_cli.sweep.metrics import describe
 
 if TYPE_CHECKING:
     from servicebot_cli.sweep.session import RunResult, SweepReport
 
-FIXED_COLUMNS = ("run", "key", "point", "draw", "seed")
+PARQUET_EXTRA = "pip install 'servicebot[parquet]' (pyarrow)"
 
 
-def rows(report: SweepReport) -> list[dict[str, Any]]:
-    """One dict per finished run: fixed columns, values, metrics, then the verdict."""
-    return [{"run": r.run.index, "key": r.run.key, "point": r.run.point, "draw": r.run.draw,
-             "seed": r.run.seed, **{name: _cell(v) for name, v in r.run.values},
-             **r.metrics, "passed": not r.failed, "failed_expectations": "; ".join(r.failed)}
-            for r in report.results]
+@dataclass(frozen=True)
+class Written:
+    """The tables written, and anything the user should know about them.
+
+    Attributes:
+        files: The files written, ``runs.csv`` first.
+        notes: Lines for stderr (``note: ...``), e.g. an old ``runs.parquet`` removed.
+    """
+
+    files: tuple[Path, ...]
+    notes: tuple[str, ...] = ()
 
 
-def _cell(value: Any) -> Any:
-    """A value as one cell: numbers and text as they are, anything else as JSON."""
-    if isinstance(value, str | int | float | bool) or value is None:
-        return value
-    return json.dumps(value, default=str)
-
-
-def write_tables(report: SweepReport, out_dir: Path) -> list[Path]:
+def write_tables(report: SweepReport, out_dir: Path) -> Written:
     """Write ``runs.csv``, ``runs.parquet`` (when pyarrow is installed) and ``summary.json``.
 
-    Returns:
-        The files written.
-
     Raises:
-        OutputError: A file cannot be written.
+        OutputError: A file cannot be written (or an old ``runs.parquet`` removed).
     """
-    table = rows(report)
-    written = [out_dir / "runs.csv", out_dir / "summary.json"]
-    write_atomic(written[0], _csv_text(table))
-    write_atomic(written[1], dumps(summary(report)))
-    if _write_parquet(table, out_dir / "runs.parquet"):
-        written.insert(1, out_dir / "runs.parquet")
-    return written
-
-
-def _csv_text(table: Sequence[dict[str, Any]]) -> str:
-    columns: dict[str, None] = {}
-    for row in table:
-        columns.update(dict.fromkeys(row))
-    buffer = io.StringIO()
-    writer = csv.DictWriter(buffer, fieldnames=list(columns), lineterminator="\n")
-    writer.writeheader()
-    for row in table:
-        writer.writerow({k: repr(v) if isinstance(v, float) else v for k, v in row.items()})
-    return buffer.getvalue()
-
-
-def _write_parquet(table: Sequence[dict[str, Any]], path: Path) -> bool:
+    columns = run_columns(report.results)
+    files = [out_dir / "runs.csv", out_dir / "summary.json"]
+    write_atomic(files[0], csv_text(columns))
+    write_atomic(files[1], dumps(summary(report)))
+    parquet = out_dir / "runs.parquet"
+    if _write_parquet(columns, parquet):
+        return Written((files[0], parquet, files[1]))
+    if not parquet.exists():
+        return Written(tuple(files))
     try:
-        import pyarrow as pa
+        parquet.unlink()
+    except OSError as exc:
+        raise OutputError(f"{parquet}: an earlier sweep's table, out of date, cannot be "
+                          f"removed: {exc.strerror or exc}") from None
+    return Written(tuple(files), (f"note: removed {parquet}, an earlier sweep's table: "
+                                  f"pyarrow is not installed to rewrite it; {PARQUET_EXTRA}",))
+
+
+def _write_parquet(columns: list[Column], path: Path) -> bool:
+    """Write ``path``; False when pyarrow is missing."""
+    try:
         import pyarrow.parquet as pq
+
+        table = arrow_table(columns)
     except ImportError:
         return False
     with atomic_output(path, "wb") as handle:
-        pq.write_table(pa.Table.from_pylist(list(table)), handle)
+        pq.write_table(table, handle)
     return True
 
 
