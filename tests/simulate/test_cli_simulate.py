@@ -99,7 +99,8 @@ def test_bag_reads_back_with_another_library(run, tmp_path, scenario):
         "/pi_camera/camera_info": "sensor_msgs/msg/CameraInfo",
         "/joint_states": "sensor_msgs/msg/JointState", "/diff_controller/odom":
         "nav_msgs/msg/Odometry", "/tf": "tf2_msgs/msg/TFMessage",
-        "/tf_static": "tf2_msgs/msg/TFMessage"}
+        "/tf_static": "tf2_msgs/msg/TFMessage", "/clock": "rosgraph_msgs/msg/Clock",
+        "/robot_description": "std_msgs/msg/String"}
     scan_stamp, scan = seen["/scan"][0]
     assert scan_stamp == 100_000_000 and scan.header.frame_id == "lidar_link"
     assert len(scan.ranges) == 360 and scan.range_min == pytest.approx(0.12)

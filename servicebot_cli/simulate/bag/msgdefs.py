@@ -118,6 +118,12 @@ _FIELDS: dict[str, str] = {
         'geometry_msgs/Vector3 translation\n'
         'geometry_msgs/Quaternion rotation\n'
     ),
+    "rosgraph_msgs/msg/Clock": (
+        'builtin_interfaces/Time clock\n'
+    ),
+    "std_msgs/msg/String": (
+        'string data\n'
+    ),
 }
 
 # The types each published type uses, in the order rosbag2 lists them.
@@ -160,6 +166,10 @@ _USES: dict[str, tuple[str, ...]] = {
         "geometry_msgs/Vector3",
         "geometry_msgs/Quaternion",
     ),
+    "rosgraph_msgs/msg/Clock": (
+        "builtin_interfaces/Time",
+    ),
+    "std_msgs/msg/String": (),
 }
 
 

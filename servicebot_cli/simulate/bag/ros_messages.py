@@ -3,8 +3,10 @@
 Topics follow the robot's documentation: the sensors' topics as their Gazebo plugins resolve
 them (``scan``, ``imu/data``, ``pi_camera/camera_info``), ``/diff_controller/odom`` and
 ``/tf`` (odom -> base) as diff_drive_controller publishes them, ``/joint_states`` as
-joint_state_broadcaster, ``/tf`` for movable joints and ``/tf_static`` for fixed ones as
-robot_state_publisher. Header stamps are simulated time.
+joint_state_broadcaster, ``/tf`` for movable joints, ``/tf_static`` for fixed ones and
+``/robot_description`` (the URDF, once) as robot_state_publisher, and ``/clock`` at every
+control tick as gazebo_ros publishes simulated time. Header stamps are simulated time; each
+stream carries the QoS its publishers offer.
 """
 
 from __future__ import annotations
@@ -17,24 +19,28 @@ import numpy.typing as npt
 
 from servicebot_cli.kinematics.rotations import quaternion_from_matrix
 from servicebot_cli.kinematics.transforms import rpy_matrix
-from servicebot_cli.simulate.bag import cdr
+from servicebot_cli.simulate.bag import cdr, qos
 from servicebot_cli.simulate.bag import quaternions as rotations
 from servicebot_cli.simulate.simulator import SimResult
 
 FloatArray = npt.NDArray[np.float64]
 ODOM_TOPIC, TF_TOPIC, TF_STATIC_TOPIC = "/diff_controller/odom", "/tf", "/tf_static"
 JOINT_STATES_TOPIC, ODOM_FRAME = "/joint_states", "odom"
+CLOCK_TOPIC, DESCRIPTION_TOPIC = "/clock", "/robot_description"
 
 
 @dataclass(frozen=True)
 class Stream:
-    """Messages of one topic: ROS type, stamps [ns] and CDR payloads, in time order."""
+    """Messages of one topic: ROS type, stamps [ns], CDR payloads in time order, and QoS.
+
+    ``offered_qos`` holds the profile each of the topic's publishers offers.
+    """
 
     topic: str
     type: str
     stamps_ns: npt.NDArray[np.int64]
     payloads: list[bytes]
-    latched: bool = False
+    offered_qos: tuple[qos.Qos, ...] = (qos.SYSTEM_DEFAULTS,)
 
 
 def absolute(topic: str | None, fallback: str) -> str:
@@ -44,8 +50,9 @@ def absolute(topic: str | None, fallback: str) -> str:
 
 
 def streams(result: SimResult) -> list[Stream]:
-    """Every stream of ``result``, in a fixed order."""
-    out = [_odometry(result), *_tf(result), _joint_states(result)]
+    """Every stream of ``result``, in a fixed order: latched topics and the clock first."""
+    out = [_robot_description(result), _tf_static(result), _clock(result), _odometry(result),
+           _tf(result), _joint_states(result)]
     if result.scans is not None:
         out.append(_scan(result))
     if result.imu is not None:
@@ -56,12 +63,30 @@ def streams(result: SimResult) -> list[Stream]:
 
 
 def _stream(topic: str, kind: str, layout: cdr.Layout, times: FloatArray,
-            fill: Mapping[str, FloatArray | float], latched: bool = False) -> Stream:
+            fill: Mapping[str, FloatArray | float],
+            offered: tuple[qos.Qos, ...] = (qos.SYSTEM_DEFAULTS,)) -> Stream:
     records = layout.records(len(times))
     cdr.set_stamps(records, times)
     for name, values in fill.items():
         records[name] = values
-    return Stream(topic, kind, cdr.stamps_ns(times), cdr.split(records), latched)
+    return Stream(topic, kind, cdr.stamps_ns(times), cdr.split(records), offered)
+
+
+def _clock(result: SimResult) -> Stream:
+    """Simulated time at every control tick, from 0 to the end of the run."""
+    layout = cdr.Layout()
+    layout.field("sec", "<i4")
+    layout.field("nanosec", "<u4")
+    times = np.arange(len(result.truth.x_m), dtype=np.float64) * result.truth.dt_s
+    return _stream(CLOCK_TOPIC, "rosgraph_msgs/msg/Clock", layout, times, {}, (qos.CLOCK,))
+
+
+def _robot_description(result: SimResult) -> Stream:
+    """The URDF the run used, once at time 0 (transient local: late subscribers get it)."""
+    layout = cdr.Layout()
+    layout.string(result.body.robot.xml_text)
+    return Stream(DESCRIPTION_TOPIC, "std_msgs/msg/String", np.zeros(1, dtype=np.int64),
+                  cdr.split(layout.records(1)), (qos.ROBOT_DESCRIPTION,))
 
 
 def _scan(result: SimResult) -> Stream:
@@ -83,7 +108,7 @@ def _scan(result: SimResult) -> Stream:
                        "angle_increment": step, "time_increment": 0.0, "scan_time": period,
                        "range_min": spec.min_range_m or 0.0,
                        "range_max": spec.max_range_m or np.inf,
-                       "ranges": scans.ranges_m.astype(np.float32)})
+                       "ranges": scans.ranges_m.astype(np.float32)}, (qos.SENSOR_DATA,))
 
 
 def _imu(result: SimResult) -> Stream:
@@ -100,7 +125,8 @@ def _imu(result: SimResult) -> Stream:
         "angular_velocity": imu.angular_velocity_rad_s,
         "angular_velocity_covariance": np.diag(imu.angular_velocity_variance).ravel(),
         "linear_acceleration": imu.linear_acceleration_m_s2,
-        "linear_acceleration_covariance": np.diag(imu.linear_acceleration_variance).ravel()})
+        "linear_acceleration_covariance": np.diag(imu.linear_acceleration_variance).ravel()},
+        (qos.SENSOR_DATA,))
 
 
 def _odometry(result: SimResult) -> Stream:
@@ -151,7 +177,7 @@ def _camera_info(result: SimResult) -> Stream:
     topic = absolute(spec.spec.info_topic, "camera_info")
     return _stream(topic, "sensor_msgs/msg/CameraInfo", layout, result.camera_times_s, {
         "d": np.array(camera.d), "k": np.array(camera.k),
-        "r": np.eye(3).ravel(), "p": np.array(camera.p)})
+        "r": np.eye(3).ravel(), "p": np.array(camera.p)}, (qos.SENSOR_DATA,))
 
 
 def _transforms(frames: list[tuple[str, str]]) -> cdr.Layout:
@@ -169,7 +195,7 @@ def _transforms(frames: list[tuple[str, str]]) -> cdr.Layout:
 
 def _tf_stream(topic: str, frames: list[tuple[str, str]], times: FloatArray,
                translations: list[FloatArray], quaternions: list[FloatArray],
-               latched: bool = False) -> Stream:
+               offered: tuple[qos.Qos, ...]) -> Stream:
     layout = _transforms(frames)
     records = layout.records(len(times))
     stamps = cdr.stamps_ns(times)
@@ -178,14 +204,16 @@ def _tf_stream(topic: str, frames: list[tuple[str, str]], times: FloatArray,
         records[f"nanosec{i}"] = stamps % 1_000_000_000
         records[f"translation{i}"] = translations[i]
         records[f"rotation{i}"] = quaternions[i]
-    return Stream(topic, "tf2_msgs/msg/TFMessage", stamps, cdr.split(records), latched)
+    return Stream(topic, "tf2_msgs/msg/TFMessage", stamps, cdr.split(records), offered)
 
 
-def _tf(result: SimResult) -> list[Stream]:
+def _tf(result: SimResult) -> Stream:
+    """The base in ``odom`` (drive controller) and movable joints (robot_state_publisher)."""
     odom, robot = result.odometry, result.body.robot
     zeros = np.zeros_like(odom.x_m)
     base = _tf_stream(TF_TOPIC, [(ODOM_FRAME, result.body.root_link)], odom.times_s,
-                      [np.column_stack((odom.x_m, odom.y_m, zeros))], [rotations.yaw(odom.yaw_rad)])
+                      [np.column_stack((odom.x_m, odom.y_m, zeros))], [rotations.yaw(odom.yaw_rad)],
+                      (qos.SYSTEM_DEFAULTS,))
     joints = result.joints
     frames, translations, quaternions = [], [], []
     for i, name in enumerate(joints.names):
@@ -200,15 +228,20 @@ def _tf(result: SimResult) -> list[Stream]:
         frames.append((joint.parent or "", joint.child or ""))
         translations.append(offset + slide)
         quaternions.append(rotations.multiply(fixed, turn))
-    moving = _tf_stream(TF_TOPIC, frames, joints.times_s, translations, quaternions)
+    moving = _tf_stream(TF_TOPIC, frames, joints.times_s, translations, quaternions,
+                        (qos.DYNAMIC_TF,))
     # Two publishers (the drive controller and robot_state_publisher), one topic.
     order = np.argsort(np.concatenate((base.stamps_ns, moving.stamps_ns)), kind="stable")
     payloads = base.payloads + moving.payloads
-    tf = Stream(TF_TOPIC, base.type, np.concatenate((base.stamps_ns, moving.stamps_ns))[order],
-                [payloads[i] for i in order.tolist()])
-    static = [(f.parent, f.name, f.origin) for f in robot.fixed_frames]
-    latched = _tf_stream(TF_STATIC_TOPIC, [(p, c) for p, c, _ in static], np.zeros(1),
-                         [np.array(o.xyz)[None] for _, _, o in static],
-                         [quaternion_from_matrix(rpy_matrix(*o.rpy))[None] for _, _, o in static],
-                         latched=True)
-    return [tf, latched]
+    return Stream(TF_TOPIC, base.type,
+                  np.concatenate((base.stamps_ns, moving.stamps_ns))[order],
+                  [payloads[i] for i in order.tolist()], base.offered_qos + moving.offered_qos)
+
+
+def _tf_static(result: SimResult) -> Stream:
+    """Fixed joints, once at time 0, latched (robot_state_publisher)."""
+    static = [(f.parent, f.name, f.origin) for f in result.body.robot.fixed_frames]
+    return _tf_stream(TF_STATIC_TOPIC, [(p, c) for p, c, _ in static], np.zeros(1),
+                      [np.array(o.xyz)[None] for _, _, o in static],
+                      [quaternion_from_matrix(rpy_matrix(*o.rpy))[None] for _, _, o in static],
+                      (qos.STATIC_TF,))

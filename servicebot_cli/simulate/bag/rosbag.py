@@ -2,8 +2,10 @@
 
 ``PATH/PATH_0.mcap`` holds the messages (profile ``ros2``, ``ros2msg`` schemas, CDR payloads,
 zstd chunks) and ``PATH/metadata.yaml`` describes them for ``ros2 bag play`` and ``ros2 bag
-info``. Foxglove opens the ``.mcap`` file directly. The directory is built under a temporary
-name beside ``PATH`` and renamed into place at the end, so an interrupted run leaves no bag.
+info``. Foxglove opens the ``.mcap`` file directly. Each topic's ``offered_qos_profiles``
+(:mod:`~servicebot_cli.simulate.bag.qos`) is in both, as rosbag2's MCAP storage keeps it in
+the channel's metadata. The directory is built under a temporary name beside ``PATH`` and
+renamed into place at the end, so an interrupted run leaves no bag.
 """
 
 from __future__ import annotations
@@ -18,16 +20,8 @@ from servicebot_cli import __version__
 from servicebot_cli.common.files import OutputError, atomic_directory
 from servicebot_cli.simulate.bag.mcap_file import Channel, write_mcap
 from servicebot_cli.simulate.bag.msgdefs import MESSAGE_DEFINITIONS
+from servicebot_cli.simulate.bag.qos import offered_qos_profiles
 from servicebot_cli.simulate.bag.ros_messages import Stream
-
-# rosbag2's QoS for a latched topic (transient local), as its metadata spells it.
-_LATCHED_QOS = (
-    "- history: 3\n  depth: 0\n  reliability: 1\n  durability: 1\n"
-    "  deadline:\n    sec: 2147483647\n    nsec: 4294967295\n"
-    "  lifespan:\n    sec: 2147483647\n    nsec: 4294967295\n  liveliness: 1\n"
-    "  liveliness_lease_duration:\n    sec: 2147483647\n    nsec: 4294967295\n"
-    "  avoid_ros_namespace_conventions: false\n"
-)
 
 
 def write_bag(path: str | os.PathLike[str], streams: Sequence[Stream]) -> None:
@@ -49,7 +43,7 @@ def write_bag(path: str | os.PathLike[str], streams: Sequence[Stream]) -> None:
 def _write_mcap(file: Path, streams: Sequence[Stream]) -> None:
     channels = [Channel(topic=s.topic, message_encoding="cdr", schema_name=s.type,
                         schema_encoding="ros2msg", schema_data=MESSAGE_DEFINITIONS[s.type].encode(),
-                        metadata={"offered_qos_profiles": _LATCHED_QOS if s.latched else ""})
+                        metadata={"offered_qos_profiles": offered_qos_profiles(s.offered_qos)})
                 for s in streams]
     stamps = np.concatenate([s.stamps_ns for s in streams])
     which = np.concatenate([np.full(len(s.payloads), i) for i, s in enumerate(streams)])
@@ -72,10 +66,9 @@ def _metadata(file_name: str, streams: Sequence[Stream]) -> str:
              f"    nanoseconds_since_epoch: {start}", f"  message_count: {total}",
              "  topics_with_message_count:"]
     for s in streams:
-        qos = _LATCHED_QOS if s.latched else ""
         lines += ["    - topic_metadata:", f"        name: {s.topic}", f"        type: {s.type}",
                   "        serialization_format: cdr",
-                  f"        offered_qos_profiles: {_quoted(qos)}",
+                  f"        offered_qos_profiles: {_quoted(offered_qos_profiles(s.offered_qos))}",
                   f"      message_count: {len(s.payloads)}"]
     lines += ['  compression_format: ""', '  compression_mode: ""', "  relative_file_paths:",
               f"    - {file_name}", "  files:", f"    - path: {file_name}",
