@@ -16,6 +16,7 @@ import numpy as np
 import numpy.typing as npt
 
 FloatArray = npt.NDArray[np.float64]
+IntArray = npt.NDArray[np.int64]
 
 
 class MeshFormatError(ValueError):
@@ -42,8 +43,69 @@ def read_stl(data: bytes) -> FloatArray:
     return vertices.reshape(-1, 3, 3)
 
 
+# an OBJ's vertex and face lines, after the newline before them (the file gets one first)
+_OBJ_VERTEX = re.compile(rb"\n[ \t]*v[ \t]([^\r\n]*)")
+_OBJ_FACE = re.compile(rb"\n[ \t]*f[ \t]([^\r\n]*)")
+_OBJ_AFTER_INDEX = re.compile(rb"/\S*")  # a corner's texture and normal indices: "7/2/5"
+
+
 def read_obj(data: bytes) -> FloatArray:
-    """Triangles of a Wavefront OBJ (polygons fan-triangulated; negative indices allowed)."""
+    """Triangles of a Wavefront OBJ (polygons fan-triangulated; negative indices allowed).
+
+    Vertices and faces are found by regular expression and parsed by numpy; a file this
+    cannot read in one pass (negative indices, continued lines, a corner that is not an
+    index) is read line by line, which also says what is wrong with it.
+    """
+    if b"\\\n" in data or b"\\\r" in data:
+        return _read_obj_lines(data)
+    lines = b"\n" + data
+    faces = _obj_faces(_OBJ_FACE.findall(lines))
+    if faces is None:
+        return _read_obj_lines(data)
+    indices, counts = faces
+    table = _obj_vertices(_OBJ_VERTEX.findall(lines))
+    polygons = counts >= 3  # a face of one or two corners has no area: left out
+    return _fan_counts(table, indices[np.repeat(polygons, counts)] - 1, counts[polygons])
+
+
+def _obj_faces(faces: list[bytes]) -> tuple[IntArray, IntArray] | None:
+    """Every corner's vertex index (from 1) and each face's corner count.
+
+    None when a corner is not a positive index (a negative one counts from the vertices
+    read so far, which only the line-by-line reader knows).
+    """
+    text = b"\n".join(faces)
+    if b"/" in text:
+        text = _OBJ_AFTER_INDEX.sub(b"", text)
+    chars = np.frombuffer(text, np.uint8)
+    blank = (chars == ord(" ")) | (chars == ord("\t")) | (chars == ord("\n"))
+    starts = ~blank & np.concatenate(([True], blank[:-1]))
+    counts = np.bincount(np.cumsum(chars == ord("\n"))[starts], minlength=len(faces))
+    try:
+        indices = _numbers(text.decode("ascii"), np.int64)
+    except (MeshFormatError, UnicodeDecodeError):
+        return None
+    if len(indices) != int(counts.sum()) or (len(indices) and indices.min() < 1):
+        return None
+    return indices, counts.astype(np.int64)
+
+
+def _obj_vertices(lines: list[bytes]) -> FloatArray:
+    """``x y z`` of each ``v`` line (a fourth weight or vertex colours after them ignored)."""
+    values = _numbers(b" ".join(lines).decode("ascii", "replace"))
+    if len(values) == 3 * len(lines):
+        table: FloatArray = values.reshape(-1, 3)
+        return table
+    counts = np.array([len(line.split()) for line in lines], dtype=np.int64)
+    if np.any(counts < 3) or len(values) != int(counts.sum()):
+        raise MeshFormatError("a vertex ('v' line) without three numbers")
+    first = np.cumsum(counts) - counts
+    table = values[first[:, None] + np.arange(3)]
+    return table
+
+
+def _read_obj_lines(data: bytes) -> FloatArray:
+    """:func:`read_obj`, one line at a time."""
     vertices: list[list[float]] = []
     faces: list[list[int]] = []
     for raw in data.splitlines():

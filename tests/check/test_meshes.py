@@ -82,3 +82,54 @@ def test_collada_bounds_only_path_agrees_with_the_full_read(path):
     assert np.all(np.array(fast.upper) >= np.array(full.upper) - 1e-9)
     extent = max(np.subtract(fast.upper, fast.lower)) / max(np.subtract(full.upper, full.lower))
     assert extent < 3
+
+
+OBJ_SHAPES = {
+    "triangles": b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n",
+    "quads, CRLF, comments": b"# a unit square\r\nv 0 0 0\r\nv 1 0 0\r\nv 1 1 0\r\nv 0 1 0\r\n"
+                             b"vn 0 0 1\r\nf 1//1 2//1 3//1 4//1\r\n",
+    "vertex colours, texture indices": b"v 0 0 0 1 0 0\nv 2 0 0 0 1 0\nv 0 3 0 0 0 1\n"
+                                       b"vt 0 0\nf 1/1 2/1 3/1\n",
+    "a pentagon": b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0.5 2 0\nv 0 1 0\nf 1 2 3 4 5\n",
+}
+
+
+@pytest.mark.parametrize("text", OBJ_SHAPES.values(), ids=OBJ_SHAPES.keys())
+def test_obj_corners_and_vertices_are_trimeshs(tmp_path, text):
+    """The one-pass OBJ reader, held against trimesh on the forms OBJ files take."""
+    from servicebot_cli.check.mesh_readers import read_obj
+
+    path = tmp_path / "shape.obj"
+    path.write_bytes(text)
+    ours = read_obj(text)
+    reference = trimesh.load(path, force="mesh", process=False)
+    assert len(ours) == len(reference.faces)
+    assert sorted(map(tuple, ours.reshape(-1, 3).round(9).tolist())) == \
+        sorted(map(tuple, np.asarray(reference.triangles).reshape(-1, 3).round(9).tolist()))
+
+
+def test_obj_negative_indices_count_back_from_the_vertices_read_so_far():
+    """As the OBJ format says (trimesh counts back from the last vertex of the file)."""
+    from servicebot_cli.check.mesh_readers import read_obj
+
+    text = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nv 0 0 5\nf -4 -3 -1\n"
+    assert read_obj(text).tolist() == [[[0, 0, 0], [1, 0, 0], [0, 1, 0]],
+                                       [[0, 0, 0], [1, 0, 0], [0, 0, 5]]]
+
+
+def test_indented_obj_lines_count():
+    from servicebot_cli.check.mesh_readers import read_obj
+
+    flat = OBJ_SHAPES["a pentagon"]
+    indented = b"".join(b"  " + line if k % 2 else b"\t" + line
+                        for k, line in enumerate(flat.splitlines(keepends=True)))
+    assert np.array_equal(read_obj(indented), read_obj(flat))
+
+
+@pytest.mark.parametrize("text", [b"v 1 2\nf 1 1 1\n", b"v 1 2 3\nf 1 1 x\n",
+                                  b"v 1 2 3\nf 0 1 1\n", b"v a b c\nf 1 1 1\n"])
+def test_broken_obj_files_are_mesh_errors(tmp_path, text):
+    path = tmp_path / "broken.obj"
+    path.write_bytes(text)
+    with pytest.raises(MeshError):
+        load_mesh(path)
