@@ -34,7 +34,12 @@ from servicebot_cli.commands.serial_options import arduino_config, serial_option
 @click.option("--die-after-s", type=Number("S", positive=True), default=None,
               help="Exit after this long: the port disappears mid-run [s].")
 @click.option("--mute-after-s", type=Number("S", positive=True), default=None,
-              help="Stop answering after this long, port still open [s].")
+              help="Stop answering after this long, port still open (a hung firmware; with "
+              "--boot-s, the next open of the port resets it and it answers again) [s].")
+@click.option("--boot-s", type=Number("S", non_negative=True), default=None,
+              help="Be a board that resets whenever a host opens the port (an Arduino Uno, "
+              "whose DTR line resets it): it forgets its state (speeds, encoder counts), "
+              "loses what it receives for S seconds while it boots, then answers [s].")
 @click.option("--seed", type=int, default=0, show_default=True,
               help="Seed of the fault injection's random numbers (with --drop or --corrupt).")
 @click.option("--state-file", type=OutputPath(suffixes=(".json",)), metavar="FILE.json",
@@ -44,8 +49,9 @@ from servicebot_cli.commands.serial_options import arduino_config, serial_option
               "an existing file is never replaced.")
 def emulate(robot_args: RobotArgs, protocol: str, baud: int | None, ticks_per_rev: float | None,
             pid_rate: float, pace: bool, watchdog_ms: int | None, drop: float, corrupt: float,
-            latency_s: float, die_after_s: float | None, mute_after_s: float | None, seed: int,
-            state_file: str | None, link_path: str | None) -> None:
+            latency_s: float, die_after_s: float | None, mute_after_s: float | None,
+            boot_s: float | None, seed: int, state_file: str | None,
+            link_path: str | None) -> None:
     """Act as the robot's motor controller on a pseudo-terminal.
 
     Prints the device to open (e.g. /dev/pts/3) on stdout, then answers in the chosen
@@ -57,6 +63,8 @@ def emulate(robot_args: RobotArgs, protocol: str, baud: int | None, ticks_per_re
     \b
     servicebot emulate --state-file state.json &
     servicebot drive --port /dev/pts/3 --linear 0.03 --duration-s 2
+    servicebot emulate --boot-s 1.2 &     # resets on every open, like an Uno
+    servicebot drive --port /dev/pts/4 --boot-time-s 1.5 --reconnect ...
     """
     from servicebot_cli.drive.emulator.session import EmulateRequest
     from servicebot_cli.drive.emulator.session import emulate as serve
@@ -67,7 +75,8 @@ def emulate(robot_args: RobotArgs, protocol: str, baud: int | None, ticks_per_re
     request = EmulateRequest(
         robot_args.source(), protocol, arduino_config(protocol, ticks_per_rev, pid_rate), baud,
         watchdog_ms, Faults(drop, corrupt, latency_s, die_after_s, mute_after_s), seed, pace,
-        Path(state_file) if state_file else None, Path(link_path) if link_path else None)
+        Path(state_file) if state_file else None, Path(link_path) if link_path else None,
+        boot_s)
     log = emulate_log()
     result = serve(request, log=log, announce=announce_device)
     log(emulate_end_line(result))

@@ -2,7 +2,9 @@
 
 The emulator owns the master side of a pty; a host opens the slave (``/dev/pts/N``) exactly
 as it opens ``/dev/ttyUSB0``. The emulator keeps its own handle on the slave, so a host may
-close the port and open it again (a reconnect) without the pty going away.
+close the port and open it again (a reconnect) without the pty going away. A board that
+resets on open (``--boot-s``) is told of every open the moment it is seen, before the bytes
+that follow it are handed on (:mod:`~servicebot_cli.drive.emulator.port_opens`).
 """
 
 from __future__ import annotations
@@ -16,10 +18,11 @@ import tty
 from collections.abc import Callable
 from dataclasses import asdict
 from pathlib import Path
-from typing import Protocol
 
 from servicebot_cli.common.errors import ServicebotError
-from servicebot_cli.drive.emulator.firmware import MotorModel, State
+from servicebot_cli.drive.emulator.board import Board
+from servicebot_cli.drive.emulator.firmware import State
+from servicebot_cli.drive.emulator.port_opens import PortOpens
 from servicebot_cli.drive.emulator.wire import FaultInjector, PacedQueue, byte_time_s
 
 PTS_DIR = "/dev/pts/"
@@ -32,24 +35,11 @@ class EmulatorError(ServicebotError):
     """The emulator cannot be set up as asked (exit 2)."""
 
 
-class Firmware(Protocol):
-    """What the server needs of a firmware (binary or ROSArduinoBridge)."""
-
-    protocol: str
-    model: MotorModel
-
-    def receive(self, data: bytes, now_s: float) -> bytes:
-        """Handle received bytes; return the reply bytes."""
-
-    def state(self) -> State:
-        """Protocol-specific state for the state file."""
-
-
 class PtyEmulator:
-    """A firmware on a pty, with baud-rate pacing and injected faults.
+    """A board on a pty, with baud-rate pacing and injected faults.
 
     Args:
-        firmware: What answers.
+        board: What answers, and whether a host opening the port resets it.
         injector: Drops and corrupts bytes both ways.
         baud: The wire speed paced when ``pace`` is set.
         pace: Release bytes no faster than ``baud`` allows, each way.
@@ -57,9 +47,9 @@ class PtyEmulator:
         clock: Monotonic time [s]; the state's times are on this clock.
     """
 
-    def __init__(self, firmware: Firmware, injector: FaultInjector, *, baud: int, pace: bool,
+    def __init__(self, board: Board, injector: FaultInjector, *, baud: int, pace: bool,
                  log: Callable[[str], None], clock: Callable[[], float] = time.monotonic) -> None:
-        self.firmware = firmware
+        self.board = board
         self.injector = injector
         self.faults = injector.faults
         self.baud, self.pace = baud, pace
@@ -69,10 +59,11 @@ class PtyEmulator:
         self.master = self.slave = -1
         self.path = ""
         self.link: Path | None = None
-        self.muted = False
+        self.muted = self._mute_done = self._booting = False
         self.tx_overflow = 0
+        self._opens: PortOpens | None = None
         self._start_s = clock()
-        self._seen = asdict(firmware.model.counters)
+        self._seen = asdict(board.model.counters)
         self._next_report_s = self._start_s + _REPORT_PERIOD_S
         self._report_frames = 0
 
@@ -81,7 +72,8 @@ class PtyEmulator:
 
         Raises:
             EmulatorError: ``link`` is a path that is not ours to replace (checked before the
-                pty is made), or the link cannot be made.
+                pty is made), the link cannot be made, or the opens of a board that resets
+                on open cannot be watched.
         """
         if link is not None:
             problem = link_problem(link)
@@ -91,6 +83,12 @@ class PtyEmulator:
         tty.setraw(self.slave)  # no echo, no line editing until a host configures it
         os.set_blocking(self.master, False)
         self.path = os.ttyname(self.slave)
+        if self.board.resets_on_open:
+            try:
+                self._opens = PortOpens(self.path)
+            except OSError as exc:
+                raise EmulatorError(f"--boot-s: cannot see the port open ({exc}); a board "
+                                    "that resets on open needs Linux") from None
         if link is not None:
             self._symlink(link)
         return str(link) if link is not None else self.path
@@ -115,6 +113,8 @@ class PtyEmulator:
                 with contextlib.suppress(OSError):
                     os.close(fd)
         self.master = self.slave = -1
+        if self._opens is not None:
+            self._opens.close()
         if self.link is not None:
             with contextlib.suppress(OSError):
                 if os.readlink(self.link) == self.path:
@@ -130,38 +130,55 @@ class PtyEmulator:
             if self.faults.die_after_s is not None and uptime >= self.faults.die_after_s:
                 self.log(f"dying now, {uptime:.1f} s after start (--die-after-s)")
                 return "died"
-            if (not self.muted and self.faults.mute_after_s is not None
+            if (not self._mute_done and self.faults.mute_after_s is not None
                     and uptime >= self.faults.mute_after_s):
-                self.muted = True
+                self.muted = self._mute_done = True
                 self.log(f"muted: no more answers, {uptime:.1f} s after start (--mute-after-s)")
             self._pump(now)
             self._report(now)
             if on_state is not None and now >= next_state_s:
                 on_state(self.state())
                 next_state_s = now + _STATE_PERIOD_S
-            ready, _, _ = select.select([self.master], [], [], self._timeout(now))
-            if ready:
-                self._read(self.clock())
+            watched = [self._opens.fileno()] if self._opens is not None else []
+            select.select([self.master, *watched], [], [], self._timeout(now))
+            data = self._read()
+            self._watch_opens(self.clock())  # an open comes before the bytes sent after it
+            if data and not self.muted:
+                self._rx.push(self.injector.apply(data), self.clock())
         return "stopped"
 
-    def _read(self, now: float) -> None:
+    def _read(self) -> bytes:
         try:
-            data = os.read(self.master, 4096)
+            return os.read(self.master, 4096)
         except (BlockingIOError, InterruptedError):
-            return
+            return b""
         except OSError:  # EIO: no host has the slave open
             time.sleep(_IDLE_S)
+            return b""
+
+    def _watch_opens(self, now: float) -> None:
+        """A host opened the port: the board resets, forgets, and boots (deaf meanwhile)."""
+        opens = self._opens.take() if self._opens is not None else 0
+        if not opens:
             return
-        if not self.muted:
-            self._rx.push(self.injector.apply(data), now)
+        for _ in range(opens):  # opens this close together are resets in a row
+            self.board.reset(now)
+        pacing = byte_time_s(self.baud) if self.pace else 0.0
+        self._rx, self._tx = PacedQueue(pacing), PacedQueue(pacing)  # a reset empties the UART
+        self.muted = False  # a hung firmware runs again after a reset
+        self._seen = asdict(self.board.model.counters)
+        self._report_frames = 0
+        self._booting = True
+        self.log(f"port opened: the board resets and boots for {self.board.boot_s:g} s "
+                 f"(reset {self.board.resets}; what it receives meanwhile is lost)")
 
     def _pump(self, now: float) -> None:
         received = self._rx.pop(now)
         if received:
-            replies = self.firmware.receive(received, now)
+            replies = self.board.receive(received, now)
             if not self.muted:
                 self._tx.push(self.injector.apply(replies), now + self.faults.latency_s)
-        self.firmware.model.advance(now)
+        self.board.model.advance(now)
         outgoing = self._tx.pop(now)
         if outgoing:
             try:
@@ -174,34 +191,39 @@ class PtyEmulator:
         return max(0.0, min([now + _IDLE_S, *due]) - now)
 
     def _report(self, now: float) -> None:
-        counters = asdict(self.firmware.model.counters)
+        if self._booting and not self.board.booting(now):
+            self._booting = False
+            self.log("booted: the firmware answers")
+        counters = asdict(self.board.model.counters)
         if counters["watchdog_trips"] > self._seen["watchdog_trips"]:
-            timeout_ms = round(self.firmware.model.watchdog_s * 1000)
+            timeout_ms = round(self.board.model.watchdog_s * 1000)
             self.log(f"watchdog: no motion command for {timeout_ms} ms; motors stopped")
         if counters["stops"] > self._seen["stops"]:
             self.log("STOP received; motors stopped")
         if now >= self._next_report_s:
             frames = counters["frames"] - self._report_frames
             if frames:
-                wheels = " ".join(f"{v:+.3f}" for v in self.firmware.model.wheel_velocity_rad_s)
+                wheels = " ".join(f"{v:+.3f}" for v in self.board.model.wheel_velocity_rad_s)
                 self.log(f"{frames} frames in the last second; wheels [{wheels}] rad/s; "
-                         f"{_counts(self.firmware.state())}")
+                         f"{_counts(self.board.state())}")
             self._report_frames = counters["frames"]
             self._next_report_s = now + _REPORT_PERIOD_S
         self._seen = counters
 
     def state(self) -> State:
         """Everything a test or a user may want to know, JSON-ready."""
-        model = self.firmware.model
+        model = self.board.model
         motors = model.motors
         return {
-            "protocol": self.firmware.protocol,
+            "protocol": self.board.protocol,
             "port": self.path,
             "clock_s": model.now_s,
             "uptime_s": model.now_s - self._start_s,
             "watchdog_s": model.watchdog_s,
             "moving": model.moving,
             "muted": self.muted,
+            **({"board": self.board.boot_state(model.now_s)} if self.board.resets_on_open
+               else {}),
             "wheels": [
                 {"joint": name, "position_rad": p, "velocity_rad_s": v}
                 for name, p, v in zip(motors.wheel_joints, model.wheel_position_rad,
@@ -212,7 +234,7 @@ class PtyEmulator:
                 for name, p, t in zip(motors.arm_joints, model.arm_position_rad,
                                       model.arm_target_rad, strict=True)
             ],
-            "counters": {**asdict(model.counters), **self.firmware.state()},
+            "counters": {**asdict(model.counters), **self.board.state()},
             "wire": {"dropped": self.injector.dropped, "corrupted": self.injector.corrupted,
                      "tx_overflow": self.tx_overflow,
                      "paced_baud": self.baud if self.pace else None},

@@ -16,13 +16,15 @@ from pathlib import Path
 from types import FrameType, TracebackType
 from typing import TYPE_CHECKING
 
+from servicebot_cli.drive.emulator.board import Board, Firmware
 from servicebot_cli.drive.emulator.firmware import State
-from servicebot_cli.drive.emulator.pty import Firmware, PtyEmulator
+from servicebot_cli.drive.emulator.pty import PtyEmulator
 from servicebot_cli.drive.emulator.wire import FaultInjector, Faults
 from servicebot_cli.drive.session.signals import SignalHandler
 
 if TYPE_CHECKING:
     from servicebot_cli.description.loader import RobotSource
+    from servicebot_cli.drive.motors import MotorMap
     from servicebot_cli.drive.protocols.arduino import ArduinoConfig
 
 STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
@@ -44,6 +46,8 @@ class EmulateRequest:
         pace: Pace bytes at the baud rate, each way.
         state_file: Where to keep the state (JSON), or None.
         link: A symlink to make to the device, or None.
+        boot_s: Reset whenever a host opens the port and boot for this long, or None for
+            a board that runs on regardless [s].
     """
 
     robot: RobotSource
@@ -56,6 +60,7 @@ class EmulateRequest:
     pace: bool
     state_file: Path | None = None
     link: Path | None = None
+    boot_s: float | None = None
 
 
 @dataclass(frozen=True)
@@ -126,41 +131,54 @@ def emulate(request: EmulateRequest, *, log: Callable[[str], None],
 def build_emulator(request: EmulateRequest, log: Callable[[str], None]) -> PtyEmulator:
     """A PtyEmulator (not yet opened) for the robot of ``request``."""
     from servicebot_cli.description.loader import load
-    from servicebot_cli.drive.emulator.arduino_firmware import STOCK_AUTO_STOP_MS, ArduinoFirmware
-    from servicebot_cli.drive.emulator.firmware import BinaryFirmware, MotorModel
     from servicebot_cli.drive.link_setup import serial_defaults
     from servicebot_cli.drive.motors import motor_map
 
     robot = load(request.robot)
     motors = motor_map(robot)
     baud = request.baud or serial_defaults(robot)[1] or 9600
+    board = Board(firmware_builder(request, motors, baud), time.monotonic(), request.boot_s)
+    injector = FaultInjector(request.faults, random.Random(request.seed))
+    return PtyEmulator(board, injector, baud=baud, pace=request.pace, log=log)
+
+
+def firmware_builder(request: EmulateRequest, motors: MotorMap,
+                     baud: int) -> Callable[[float], Firmware]:
+    """What builds the firmware as it is when the board is powered or reset, at a time [s].
+
+    Raises:
+        DescriptionError: The robot cannot be carried by the binary protocol.
+    """
+    from servicebot_cli.drive.emulator.arduino_firmware import STOCK_AUTO_STOP_MS, ArduinoFirmware
+    from servicebot_cli.drive.emulator.firmware import BinaryFirmware, MotorModel
+
+    arduino = request.protocol == "arduino"
     watchdog_ms = request.watchdog_ms
     if watchdog_ms is None:
-        watchdog_ms = STOCK_AUTO_STOP_MS if request.protocol == "arduino" else BINARY_WATCHDOG_MS
-    model = MotorModel(motors, watchdog_ms / 1000.0, now_s=time.monotonic())
-    firmware: Firmware
-    if request.protocol == "arduino":
-        if request.arduino is None:
+        watchdog_ms = STOCK_AUTO_STOP_MS if arduino else BINARY_WATCHDOG_MS
+    if arduino:
+        config = request.arduino
+        if config is None:
             raise ValueError("the arduino protocol needs an ArduinoConfig")
-        firmware = ArduinoFirmware(model, request.arduino, baud)
-    else:
-        from servicebot_cli.drive.protocols.binary import BinaryLink
+        return lambda now_s: ArduinoFirmware(
+            MotorModel(motors, watchdog_ms / 1000.0, now_s=now_s), config, baud)
+    from servicebot_cli.drive.protocols.binary import BinaryLink
 
-        BinaryLink(motors)  # refuses a robot the binary protocol cannot carry
-        firmware = BinaryFirmware(model)
-    injector = FaultInjector(request.faults, random.Random(request.seed))
-    return PtyEmulator(firmware, injector, baud=baud, pace=request.pace, log=log)
+    BinaryLink(motors)  # refuses a robot the binary protocol cannot carry
+    return lambda now_s: BinaryFirmware(MotorModel(motors, watchdog_ms / 1000.0, now_s=now_s))
 
 
 def banner(emulator: PtyEmulator, device: str, seed: int) -> str:
     """The first status line: whose controller, which protocol, watchdog, pacing and faults."""
-    firmware = emulator.firmware
+    board = emulator.board
     pacing = f"paced at {emulator.baud} baud" if emulator.pace else "unpaced"
+    if board.boot_s is not None:
+        pacing += f", resets when the port opens and boots for {board.boot_s:g} s"
     faults = emulator.faults
     injected = ", ".join(f"{k} {v:g}" for k, v in (
         ("drop", faults.drop), ("corrupt", faults.corrupt), ("latency_s", faults.latency_s)) if v)
-    return (f"{firmware.model.motors.robot}'s motor controller ({firmware.protocol} protocol, "
-            f"watchdog {firmware.model.watchdog_s * 1000:.0f} ms, {pacing}"
+    return (f"{board.model.motors.robot}'s motor controller ({board.protocol} protocol, "
+            f"watchdog {board.model.watchdog_s * 1000:.0f} ms, {pacing}"
             + (f", faults: {injected}, seed {seed}" if injected else "") + f") on {device}")
 
 
