@@ -16,6 +16,7 @@ from servicebot_cli.commands.options import (
     SerialPort,
     format_option,
     refuse_with,
+    refuse_without,
     robot_arguments,
 )
 from servicebot_cli.commands.serial_options import (
@@ -33,7 +34,8 @@ _PORT_ONLY = (("--port", "port", "no port is opened"),
               ("--reconnect", "reconnect", "no link to lose"),
               ("--connect-timeout-s", "connect_timeout_s", "no firmware to wait for"),
               ("--link-timeout-s", "link_timeout_s", "no link to lose"),
-              ("--boot-time-s", "boot_time_s", "no board to boot"))
+              ("--boot-time-s", "boot_time_s", "no board to boot"),
+              ("--reconnect-attempts", "reconnect_attempts", "no link to lose"))
 
 
 @click.command(cls=Command)
@@ -65,10 +67,15 @@ _PORT_ONLY = (("--port", "port", "no port is opened"),
               show_default=True, help="How long the firmware may take to answer at first [s].")
 @click.option("--boot-time-s", type=Number("S", non_negative=True), default=0.0,
               show_default=True,
-              help="Wait this long after opening the port before the handshake: a board "
-              "that resets when the port opens (Arduino Uno) needs ~1.5 s [s].")
+              help="Wait this long after opening the port before the handshake, at the "
+              "start and on every reconnect: a board that resets when the port opens "
+              "(Arduino Uno) needs ~1.5 s [s].")
 @click.option("--reconnect", is_flag=True,
-              help="After a lost link, reopen the port and go on (motors at zero meanwhile).")
+              help="After a lost link, reopen the port and go on (motors at zero meanwhile); "
+              "pauses between attempts back off from 0.5 s to 4 s.")
+@click.option("--reconnect-attempts", type=click.IntRange(min=1), default=8, show_default=True,
+              metavar="N", help="With --reconnect: attempts before a lost link ends the run "
+              "(exit 5).")
 @click.option("--log", "log_path", type=OutputPath(suffixes=(".csv",)), metavar="FILE.csv",
               help="Write every telemetry reply to a CSV file (kept on every exit).")
 @click.option("--dry-run", is_flag=True, help="Print the frames a run would send; no port.")
@@ -79,7 +86,7 @@ def drive(robot_args: RobotArgs, port: str | None, baud: int | None, protocol: s
           arm: tuple[tuple[str, float], ...], max_speed: float | None,
           deadman_ms: int | None, rate: float, max_accel: float, link_timeout_s: float,
           connect_timeout_s: float, boot_time_s: float, reconnect: bool,
-          log_path: str | None, dry_run: bool, fmt: str) -> None:
+          reconnect_attempts: int, log_path: str | None, dry_run: bool, fmt: str) -> None:
     """Stream commands to the motors over serial, safely; stop them on every exit.
 
     Kinematics and limits come from the robot description (the bundled real robot by
@@ -96,20 +103,21 @@ def drive(robot_args: RobotArgs, port: str | None, baud: int | None, protocol: s
     \b
     Exit codes: 0 done, motors stopped; 2 bad input; 3 internal error (motors stopped);
     4 link error (port missing, permission, busy, no answer, wrong protocol);
-    5 link lost mid-run; 129 SIGHUP; 130 Ctrl-C; 131 SIGQUIT; 143 SIGTERM (each after
-    stopping the motors).
+    5 link lost mid-run (with --reconnect: every attempt failed); 129 SIGHUP;
+    130 Ctrl-C; 131 SIGQUIT; 143 SIGTERM (each after stopping the motors).
     """
     from servicebot_cli.drive.driving import Driven
     from servicebot_cli.drive.request import DriveRequest
     from servicebot_cli.drive.run import drive as run_drive
     from servicebot_cli.output.drive_text import drive_log, show_drive
 
-    _refuse_port_options(dry_run)
+    _refuse_without_effect(dry_run, reconnect)
     mode = _mode(script, linear, angular, duration_s, arm, dry_run, deadman_ms)
     request = DriveRequest(
         robot_args.source(), mode, protocol, arduino_config(protocol, ticks_per_rev, pid_rate),
         port, baud, rate, max_accel, link_timeout_s, connect_timeout_s, reconnect,
-        Path(log_path) if log_path else None, dry_run, boot_time_s, max_speed)
+        Path(log_path) if log_path else None, dry_run, boot_time_s, max_speed,
+        reconnect_attempts)
     with bad_options():
         result = run_drive(request, log=drive_log)
     show_drive(result, fmt)
@@ -117,11 +125,12 @@ def drive(robot_args: RobotArgs, port: str | None, baud: int | None, protocol: s
         raise result.failure
 
 
-def _refuse_port_options(dry_run: bool) -> None:
-    """Refuse the options only a run on a port uses, next to ``--dry-run``."""
+def _refuse_without_effect(dry_run: bool, reconnect: bool) -> None:
+    """Refuse a port's options with ``--dry-run``, ``--reconnect-attempts`` without a reconnect."""
     ctx = click.get_current_context()
     for option, name, why in _PORT_ONLY:
         refuse_with(ctx, option, "--dry-run", why=why, present=dry_run, name=name)
+    refuse_without(ctx, "--reconnect-attempts", "--reconnect", present=reconnect)
 
 
 def _mode(script: str | None, linear: float | None, angular: float | None,

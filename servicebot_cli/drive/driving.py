@@ -19,6 +19,7 @@ from servicebot_cli.drive.motors import MotorMap
 from servicebot_cli.drive.session.commander import Commander, HostLink
 from servicebot_cli.drive.session.contracts import LinkStatus, Source, Suspender
 from servicebot_cli.drive.session.loop import DriveLoop
+from servicebot_cli.drive.session.reconnect import DEFAULT_ATTEMPTS, ReconnectPolicy
 from servicebot_cli.drive.session.signals import OUTCOMES, StopSignals
 from servicebot_cli.drive.shaping import WheelShaper
 
@@ -39,7 +40,9 @@ class StreamSettings:
         connect_timeout_s: How long the handshake may take [s].
         reconnect: Reopen the port after a lost link instead of giving up.
         log: CSV telemetry log, or None.
-        boot_s: Time the board needs to boot after the port opens [s].
+        boot_s: Time the board needs to boot after the port opens [s]; waited after every
+            open, the first and each reconnect's.
+        reconnect_attempts: Reconnect attempts before a lost link ends the run.
     """
 
     port: str
@@ -51,6 +54,7 @@ class StreamSettings:
     reconnect: bool = False
     log: Path | None = None
     boot_s: float = 0.0
+    reconnect_attempts: int = DEFAULT_ATTEMPTS
 
 
 class StopUnconfirmed(LinkError):
@@ -149,7 +153,8 @@ def run_drive(settings: StreamSettings, link: HostLink, motors: MotorMap,
             else None
         loop = DriveLoop(port, link, commander, rate_hz=settings.rate_hz,
                          where=f"{settings.port} at {settings.baud} baud",
-                         link_timeout_s=settings.link_timeout_s, reopen=reopen, log=log,
+                         link_timeout_s=settings.link_timeout_s, reopen=reopen,
+                         policy=ReconnectPolicy(settings.reconnect_attempts), log=log,
                          on_tick=on_tick, on_reading=csv_log.row if csv_log else None,
                          boot_s=settings.boot_s, connect_timeout_s=settings.connect_timeout_s,
                          suspender=suspender)
@@ -157,7 +162,7 @@ def run_drive(settings: StreamSettings, link: HostLink, motors: MotorMap,
     summary = _summary(loop, settings, link, motors, failure, confirmed)
     if failure is not None:
         failure = _with_stop_note(failure, loop, confirmed)
-    return Driven(summary if loop.hello is not None else None, failure)
+    return Driven(summary if loop.inbox.hello is not None else None, failure)
 
 
 def _drive_then_stop(loop: DriveLoop, settings: StreamSettings, source: Source,
@@ -176,7 +181,7 @@ def _drive_then_stop(loop: DriveLoop, settings: StreamSettings, source: Source,
         confirmed = loop.stop_motors()
         if loop.port is not None:
             loop.port.close()
-    if failure is None and not confirmed and loop.hello is not None:
+    if failure is None and not confirmed and loop.inbox.hello is not None:
         failure = StopUnconfirmed(
             f"stop not confirmed: the firmware on {loop.where} did not report the wheels "
             f"stopped within {loop.link.stop_timeout_s:g} s of the first of "
@@ -203,9 +208,9 @@ def _telemetry_log(path: Path | None, motors: MotorMap,
 
 
 def _with_stop_note(failure: ServicebotError, loop: DriveLoop, confirmed: bool) -> ServicebotError:
-    if loop.hello is None:
+    if loop.inbox.hello is None:
         return failure
-    auto_stop = loop.link.auto_stop_note(loop.hello)
+    auto_stop = loop.link.auto_stop_note(loop.inbox.hello)
     note = ("motors stopped (the firmware confirmed)" if confirmed else
             f"stop sent but not confirmed; {auto_stop}")
     if isinstance(failure, StopUnconfirmed):
@@ -226,11 +231,11 @@ def _outcome(failure: ServicebotError | None) -> str:
 
 def _summary(loop: DriveLoop, settings: StreamSettings, link: HostLink,
              motors: MotorMap, failure: ServicebotError | None, confirmed: bool) -> Summary:
-    reading = loop.reading
+    reading, rtts_s = loop.inbox.reading, loop.inbox.rtts_s
     wheels = tuple(
         WheelTravel(name, round(commanded, 4), round(measured, 4) if reading else None)
         for name, commanded, measured in zip(motors.wheel_joints, loop.commander.travel_rad,
-                                             loop.measured_travel_rad, strict=True)
+                                             loop.inbox.measured_travel_rad, strict=True)
     )
     arm_sent = loop.commander.arm_sent
     measured_arm = reading.arm_position_rad if reading is not None else None
@@ -241,10 +246,11 @@ def _summary(loop: DriveLoop, settings: StreamSettings, link: HostLink,
     ) if link.has_arm else ()
     return Summary(
         protocol=link.name, port=settings.port, baud=settings.baud,
-        firmware=loop.hello.description if loop.hello else "", outcome=_outcome(failure),
+        firmware=loop.inbox.hello.description if loop.inbox.hello else "",
+        outcome=_outcome(failure),
         duration_s=round(max(0.0, loop.end_s - loop.t0_s), 3), rate_hz=settings.rate_hz,
-        commands=loop.commands, replies=loop.replies,
-        median_rtt_s=round(statistics.median(loop.rtts_s), 4) if loop.rtts_s else None,
+        commands=loop.commands, replies=loop.inbox.replies,
+        median_rtt_s=round(statistics.median(rtts_s), 4) if rtts_s else None,
         errors=link.errors, reconnects=loop.reconnects, stop_confirmed=confirmed,
         wheels=wheels, arm=arm,
     )

@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, TypeAlias
 
 from servicebot_cli.common.errors import ExitCode, ServicebotError
+from servicebot_cli.drive.session.reconnect import DEFAULT_ATTEMPTS
 
 if TYPE_CHECKING:
     from servicebot_cli.description.loader import RobotSource
@@ -91,6 +92,7 @@ class DriveRequest:
         dry_run: Plan the frames only; no port.
         boot_s: Time the board needs to boot after the port opens [s].
         max_wheel_rad_s: A wheel speed cap below the URDF's limit (``--max-speed``) [rad/s].
+        reconnect_attempts: Reconnect attempts before a lost link ends the run.
     """
 
     robot: RobotSource
@@ -108,3 +110,4 @@ class DriveRequest:
     dry_run: bool = False
     boot_s: float = 0.0
     max_wheel_rad_s: float | None = None
+    reconnect_attempts: int = DEFAULT_ATTEMPTS

@@ -54,7 +54,8 @@ def drive(request: DriveRequest, *, log: Callable[[str], None],
                log)
     settings = StreamSettings(port, baud, request.rate_hz, request.max_accel_rad_s2,
                               request.link_timeout_s, request.connect_timeout_s,
-                              request.reconnect, request.log, request.boot_s)
+                              request.reconnect, request.log, request.boot_s,
+                              request.reconnect_attempts)
     if isinstance(request.mode, Keyboard):
         if request.dry_run:
             raise BadOption("--dry-run", "teleop has no frames to plan; give --script FILE or "

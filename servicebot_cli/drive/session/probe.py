@@ -20,6 +20,18 @@ PROBE_WAIT_S = 0.3  # the other handshake's answer is a few bytes: at 9600 baud,
 _ARDUINO_ANSWER = re.compile(rb"(^|[\r\n]) ?[0-9]{3,7}\r?\n|Invalid Command")
 
 
+class NoAnswer(LinkError):
+    """Nothing at all came back to the handshake (exit 4): no board, or one still booting.
+
+    Attributes:
+        timeout_s: How long drive waited for the answer [s], when known.
+    """
+
+    def __init__(self, message: str, timeout_s: float | None = None) -> None:
+        super().__init__(message)
+        self.timeout_s = timeout_s
+
+
 def probe_other(port: Port, protocol: str) -> str | None:
     """Ask once in the protocol that is not ``protocol``; its name if the device answered.
 
@@ -67,10 +79,10 @@ def silence_error(where: str, protocol: str, timeout_s: float, received: int, er
             f"give --protocol {other}" + (" --ticks-per-rev N" if other == "arduino" else "")
         )
     if received == 0:
-        return LinkError(
+        return NoAnswer(
             f"no answer from the firmware on {where} within {timeout_s:g} s: is the board "
             f"powered and running {protocol}-protocol firmware, and is the baud rate right "
-            "(--baud)?"
+            "(--baud)?", timeout_s
         )
     return LinkError(
         f"{where} answers, but not in the {protocol} protocol ({received} bytes, {errors} "
