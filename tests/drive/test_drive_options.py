@@ -28,7 +28,8 @@ def test_durations_carry_their_unit(run, command, old, new):
 
 @pytest.mark.parametrize(("option", "value"), [
     ("--log", "run.csv"), ("--reconnect", None), ("--connect-timeout-s", "3"),
-    ("--link-timeout-s", "3"), ("--port", "/dev/ttyUSB1"),
+    ("--link-timeout-s", "3"), ("--port", "/dev/ttyUSB1"), ("--boot-time-s", "1.5"),
+    ("--reconnect-attempts", "3"),
 ])
 def test_dry_run_refuses_what_only_a_port_uses(run, option, value):
     args = (option,) if value is None else (option, value)

@@ -10,7 +10,8 @@ DRIVE = REPO / "servicebot_cli" / "drive"
 PURE = ["protocols/framing", "protocols/messages", "motors", "protocols/events",
         "protocols/binary", "protocols/arduino", "emulator/arduino_firmware", "emulator/firmware",
         "emulator/wire", "plan", "script", "shaping", "session/commander", "dry_run",
-        "request", "link_setup", "plans"]
+        "request", "link_setup", "plans", "emulator/board", "session/inbox",
+        "session/reconnect"]
 IO = {"os", "sys", "select", "serial", "time", "pty", "tty", "termios", "subprocess", "socket",
       "click", "signal"}
 
