@@ -1,7 +1,9 @@
 """Benchmark: `servicebot check urdf` over the real URDF corpus against check_urdf.
 
 Corpus: every URDF of example-robot-data and pybullet_data (pip install '.[test]').
-servicebot checks the whole corpus in one call; check_urdf (urdfdom) runs once per file,
+servicebot checks the whole corpus in one call (worker processes: one per core; and with
+--jobs 1; and with --mesh-cache, once the cache holds every mesh); check_urdf (urdfdom) runs
+once per file,
 both as the pip-installed command (a Python wrapper from cmeel-urdfdom) and as the native
 binary it wraps. servicebot is timed with every rule, and with the URDF rules only (no mesh
 files read: --ignore SB4,SB301), which is closer to what check_urdf looks at. Last, a single
@@ -13,9 +15,11 @@ servicebot's (above 1: servicebot is faster).
 
 from __future__ import annotations
 
+import os
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -51,10 +55,17 @@ def main(repeats: int = 3) -> None:
     wrapper, native, env = check_urdf_commands()
     print(f"corpus: {len(files)} URDF files (example-robot-data + pybullet_data); "
           f"median of {repeats} runs", file=sys.stderr)
+    with tempfile.TemporaryDirectory() as cache:
+        cached = {**os.environ, "XDG_CACHE_HOME": cache}
+        _timed([SERVICEBOT + ["--mesh-cache"] + files], cached)  # fills the mesh cache
+        warm = _median(repeats, [SERVICEBOT + ["--mesh-cache"] + files], cached)
     corpus = {
         "servicebot check urdf, every rule, one call": _median(repeats, [SERVICEBOT + files]),
         "servicebot check urdf, URDF rules only, one call":
             _median(repeats, [SERVICEBOT + ["--ignore", "SB4,SB301"] + files]),
+        "servicebot check urdf, every rule, --jobs 1": _median(repeats, [SERVICEBOT + [
+            "--jobs", "1"] + files]),
+        "servicebot check urdf, every rule, --mesh-cache (warm)": warm,
         "check_urdf (pip-installed wrapper), once per file":
             _median(repeats, [wrapper + [f] for f in files]),
         "check_urdf (native binary), once per file":

@@ -9,11 +9,15 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from servicebot_cli.check import mesh_readers
 from servicebot_cli.common.library_logs import captured
+
+if TYPE_CHECKING:
+    from servicebot_cli.check.mesh_store import MeshStore
 
 LARGEST_COORDINATE = 1e9
 """Meshes with coordinates beyond this (in the file's units) get no mass properties."""
@@ -161,20 +165,33 @@ def _closed(triangles: np.ndarray, size: float) -> bool:
 
 
 class MeshCache:
-    """Loads each mesh file once per run (and again only to add mass properties)."""
+    """Loads each mesh file once per run (and again only to add mass properties).
 
-    def __init__(self) -> None:
+    With a ``store`` (``--mesh-cache``), summaries also come from, and go to, the disk.
+    """
+
+    def __init__(self, store: MeshStore | None = None) -> None:
         self._seen: dict[Path, MeshInfo | MeshError] = {}
+        self._store = store
 
     def get(self, path: Path, with_mass: bool = False) -> MeshInfo:
         """The summary of ``path``; raises the same MeshError every time for a bad file."""
         found = self._seen.get(path)
         if found is None or (with_mass and isinstance(found, MeshInfo) and found.closed is None):
+            found = self._load(path, with_mass)
+            self._seen[path] = found
+        if isinstance(found, MeshError):
+            raise found
+        return found
+
+    def _load(self, path: Path, with_mass: bool) -> MeshInfo | MeshError:
+        store = self._store
+        found = None if store is None else store.get(path, with_mass)
+        if found is None:
             try:
                 found = load_mesh(path, with_mass)
             except MeshError as exc:
                 found = exc
-            self._seen[path] = found
-        if isinstance(found, MeshError):
-            raise found
+            if store is not None:
+                store.put(path, with_mass, found)
         return found

@@ -8,18 +8,16 @@ refused by the command before a request is made.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
-from servicebot_cli.check import files
-from servicebot_cli.check.env import CheckEnv
-from servicebot_cli.check.findings import Issue
+from servicebot_cli.check import files, workers
 from servicebot_cli.check.result import CheckResult
-from servicebot_cli.check.runner import FileReport, check_source, place_issues
+from servicebot_cli.check.runner import FileReport, place_issues
 from servicebot_cli.check.settings import Settings, find_pyproject, load_settings
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.description.loader import RobotSource, read_description
-from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.resources import BUNDLED_ROBOTS, CONTROLLERS_YAML, bundled_file
 
 
@@ -53,12 +51,16 @@ class UrdfTargets:
         xacro_args: ``name:=value`` pairs for every xacro file.
         packages: ``--package NAME=DIR`` pairs.
         default: The description checked when no path is given.
+        jobs: Worker processes for several files; None: one per available core.
+        mesh_cache: Where mesh summaries are kept between runs; None: not kept.
     """
 
     paths: tuple[str, ...] = ()
     xacro_args: tuple[tuple[str, str], ...] = ()
     packages: tuple[tuple[str, str], ...] = ()
     default: RobotSource | None = None
+    jobs: int | None = None
+    mesh_cache: Path | None = None
 
 
 @dataclass(frozen=True)
@@ -131,19 +133,15 @@ def _sources(targets: UrdfTargets) -> list[tuple[RobotSource, bool]]:
 
 def _check_urdfs(targets: UrdfTargets, settings: Settings) -> list[FileReport]:
     """A report per description; a file found in a directory that cannot be read is SB001."""
-    resolver = PackageResolver.from_environment({k: Path(v) for k, v in targets.packages})
-    env = CheckEnv(resolver=resolver, inertia_factor=settings.inertia_factor)
-    reports = []
-    for source, named in _sources(targets):
-        try:
-            reports.append(check_source(source, settings, env))
-        except DescriptionError as exc:
-            if named:
-                raise
-            issue = Issue("SB001", str(exc).split(": ", 1)[-1], where=(source.display, 0, 0))
-            reports.append(FileReport(source.display,
-                                      tuple(place_issues(None, [issue], settings))))
-    return reports
+    sources = _sources(targets)
+    jobs = min(targets.jobs or workers.available_cores(), len(sources))
+    if jobs > 1:
+        outcomes: Iterable[workers.Outcome] = workers.check_in_workers(
+            sources, settings, targets.packages, jobs, targets.mesh_cache)
+    else:
+        env = workers.env_for(targets.packages, settings, targets.mesh_cache)
+        outcomes = (workers.check_one(source, named, settings, env) for source, named in sources)
+    return [workers.report_of(outcome, settings) for outcome in outcomes]
 
 
 def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[FileReport]:

@@ -86,9 +86,17 @@ def check() -> None:
 
 @check.command("urdf", cls=CheckCommand)
 @robot_arguments(multiple=True)
+@click.option("-j", "--jobs", type=click.IntRange(min=1), default=None, metavar="N",
+              help="Worker processes when several files are checked (default: one per "
+              "available core; 1: none).")
+@click.option("--mesh-cache", is_flag=True,
+              help="Keep what was read of each mesh in the user's cache directory "
+              "($XDG_CACHE_HOME/servicebot/meshes), keyed on path, size and time: later runs "
+              "skip reading meshes that did not change.")
 @report_options
 @catalogue_options
-def urdf(robot_args: RobotArgs, report: ReportOptions) -> None:
+def urdf(robot_args: RobotArgs, jobs: int | None, mesh_cache: bool,
+         report: ReportOptions) -> None:
     """Check URDF and xacro files and directories (default: the bundled robot).
 
     \b
@@ -102,7 +110,10 @@ def urdf(robot_args: RobotArgs, report: ReportOptions) -> None:
     if robot_args.files and robot_args.bundled:
         raise click.UsageError(f"give FILEs or --robot {robot_args.bundled}, not both")
     default = None if robot_args.files else robot_args.source()
-    targets = UrdfTargets(robot_args.files, robot_args.xacro_args, robot_args.packages, default)
+    from servicebot_cli.check.mesh_store import default_directory
+
+    targets = UrdfTargets(robot_args.files, robot_args.xacro_args, robot_args.packages, default,
+                          jobs, default_directory() if mesh_cache else None)
     _run(CheckRequest(targets, _settings(report)), report)
 
 

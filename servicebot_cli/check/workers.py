@@ -1,0 +1,129 @@
+"""``check urdf --jobs N``: files checked by worker processes, reports in the files' order.
+
+The files are cut into contiguous runs (neighbours in a directory share meshes, and each
+worker reads a mesh once, through its own :class:`~servicebot_cli.check.meshes.MeshCache`),
+several per worker so that a slow file does not leave the others idle. Workers ignore
+SIGINT: the parent alone answers Ctrl-C, and stops them. Nothing is written by a worker; the
+reports come back to the parent, which renders them as a serial run does.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import signal
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from servicebot_cli.check.env import CheckEnv
+from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.mesh_store import MeshStore
+from servicebot_cli.check.meshes import MeshCache
+from servicebot_cli.check.runner import FileReport, check_source, place_issues
+from servicebot_cli.check.settings import Settings
+from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.description.loader import RobotSource
+from servicebot_cli.description.packages import PackageResolver
+
+_RUNS_PER_WORKER = 4
+
+
+def available_cores() -> int:
+    """Cores this process may run on (its CPU affinity), at least 1."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # pragma: no cover - not on Linux
+        return max(1, os.cpu_count() or 1)
+
+
+@dataclass(frozen=True)
+class Refused:
+    """A file the loader refused outright (missing, a directory, unreadable).
+
+    Attributes:
+        display: The file as the user named it.
+        message: The loader's message.
+        named: The user named it (an error of the run), else it was found in a directory.
+    """
+
+    display: str
+    message: str
+    named: bool
+
+
+Outcome = FileReport | Refused
+
+
+class _Worker:
+    """What a worker process keeps between its runs of files: settings and the mesh cache."""
+
+    env: CheckEnv
+    settings: Settings
+
+
+def _start(settings: Settings, packages: tuple[tuple[str, str], ...],
+           mesh_cache: Path | None) -> None:
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    for ending in (signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT):  # not the parent's handlers:
+        signal.signal(ending, signal.SIG_DFL)  # the parent stops its workers with SIGTERM
+    _Worker.settings = settings
+    _Worker.env = env_for(packages, settings, mesh_cache)
+
+
+def env_for(packages: tuple[tuple[str, str], ...], settings: Settings,
+            mesh_cache: Path | None = None) -> CheckEnv:
+    """The shared part of a run: package search and mesh cache (kept in ``mesh_cache``)."""
+    resolver = PackageResolver.from_environment({k: Path(v) for k, v in packages})
+    store = None if mesh_cache is None else MeshStore(mesh_cache)
+    return CheckEnv(resolver=resolver, meshes=MeshCache(store),
+                    inertia_factor=settings.inertia_factor)
+
+
+def check_one(source: RobotSource, named: bool, settings: Settings, env: CheckEnv) -> Outcome:
+    """The report of one file, or why the loader refused it."""
+    try:
+        return check_source(source, settings, env)
+    except DescriptionError as exc:
+        return Refused(source.display, str(exc), named)
+
+
+def _check_run(run: Sequence[tuple[RobotSource, bool]]) -> list[Outcome]:
+    return [check_one(source, named, _Worker.settings, _Worker.env) for source, named in run]
+
+
+def _runs(sources: Sequence[tuple[RobotSource, bool]],
+          jobs: int) -> Iterator[Sequence[tuple[RobotSource, bool]]]:
+    size = max(1, -(-len(sources) // (jobs * _RUNS_PER_WORKER)))
+    for start in range(0, len(sources), size):
+        yield sources[start:start + size]
+
+
+def check_in_workers(sources: Sequence[tuple[RobotSource, bool]], settings: Settings,
+                     packages: tuple[tuple[str, str], ...], jobs: int,
+                     mesh_cache: Path | None = None) -> Iterator[Outcome]:
+    """Each source's outcome, in order, checked by ``jobs`` worker processes."""
+    methods = multiprocessing.get_all_start_methods()
+    context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
+    pool = context.Pool(jobs, initializer=_start, initargs=(settings, packages, mesh_cache))
+    try:
+        for outcomes in pool.imap(_check_run, _runs(sources, jobs)):
+            yield from outcomes
+        pool.close()
+    finally:
+        pool.terminate()  # at once on an error, a signal or a refused file; else they are done
+        pool.join()
+
+
+def report_of(outcome: Outcome, settings: Settings) -> FileReport:
+    """The report of ``outcome``: a refused file found in a directory is SB001.
+
+    Raises:
+        DescriptionError: A file the user named was refused (the run's error, exit 2).
+    """
+    if isinstance(outcome, FileReport):
+        return outcome
+    if outcome.named:
+        raise DescriptionError(outcome.message)
+    issue = Issue("SB001", outcome.message.split(": ", 1)[-1], where=(outcome.display, 0, 0))
+    return FileReport(outcome.display, tuple(place_issues(None, [issue], settings)))
