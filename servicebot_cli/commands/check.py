@@ -93,9 +93,12 @@ def check() -> None:
               help="Keep what was read of each mesh in the user's cache directory "
               "($XDG_CACHE_HOME/servicebot/meshes), keyed on path, size and time: later runs "
               "skip reading meshes that did not change.")
+@click.option("--show-packages", is_flag=True,
+              help="Text: list the packages each file uses, where and how each was found "
+              "(--package, the package holding the file, the workspace, ROS_PACKAGE_PATH...).")
 @report_options
 @catalogue_options
-def urdf(robot_args: RobotArgs, jobs: int | None, mesh_cache: bool,
+def urdf(robot_args: RobotArgs, jobs: int | None, mesh_cache: bool, show_packages: bool,
          report: ReportOptions) -> None:
     """Check URDF and xacro files and directories (default: the bundled robot).
 
@@ -114,7 +117,7 @@ def urdf(robot_args: RobotArgs, jobs: int | None, mesh_cache: bool,
 
     targets = UrdfTargets(robot_args.files, robot_args.xacro_args, robot_args.packages, default,
                           jobs, default_directory() if mesh_cache else None)
-    _run(CheckRequest(targets, _settings(report)), report)
+    _run(CheckRequest(targets, _settings(report)), report, show_packages)
 
 
 @check.command("controllers", cls=CheckCommand)
@@ -170,13 +173,16 @@ def _settings(report: ReportOptions) -> SettingsChoice:
                           report.isolated)
 
 
-def _run(request: CheckRequest, report: ReportOptions) -> None:
-    """Run the check, show the report; the answer is no (exit 1) when the run fails."""
+def _run(request: CheckRequest, report: ReportOptions, packages: bool = False) -> None:
+    """Run the check, show the report; the answer is no (exit 1) when the run fails.
+
+    ``packages``: the text report lists the packages each file uses.
+    """
     from servicebot_cli.check.run import run
     from servicebot_cli.common.errors import AnswerIsNo
     from servicebot_cli.output.findings import show
 
     result = run(request)
-    show(result, report.fmt, report.output)
+    show(result, report.fmt, report.output, packages)
     if result.failed:
         raise AnswerIsNo("")  # the summary line already says so

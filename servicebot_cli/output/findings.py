@@ -26,8 +26,24 @@ JSON_FORMAT_VERSION = 1
 _COLOURS = {Severity.ERROR: "red", Severity.WARNING: "yellow", Severity.INFO: "blue"}
 
 
-def text_lines(result: CheckResult, colour: bool = False) -> Iterator[str]:
-    """Compiler-style lines, ``file:line:col: severity CODE message``, then a summary."""
+def package_lines(result: CheckResult) -> Iterator[str]:
+    """``FILE: package NAME at DIR, found as HOW`` for every package each file uses."""
+    for report in result.reports:
+        for name, location in sorted(report.packages.items()):
+            if location is None:
+                yield f"{report.file}: package {name}: not found"
+                continue
+            caveat = "" if location.ros_finds_it else "; ROS would not find it this way"
+            yield (f"{report.file}: package {name} at {location.path}, "
+                   f"found as {location.how}{caveat}")
+
+
+def text_lines(result: CheckResult, colour: bool = False,
+               packages: bool = False) -> Iterator[str]:
+    """Compiler-style lines, ``file:line:col: severity CODE message``, then a summary.
+
+    With ``packages``, the packages each file uses come before the summary.
+    """
     for finding in result.findings:
         level = finding.severity.value
         code = f"{finding.code} [{RULES[finding.code].name}]"
@@ -39,6 +55,8 @@ def text_lines(result: CheckResult, colour: bool = False) -> Iterator[str]:
             yield f"    from the macro call at {finding.via}"
         if finding.fix:
             yield f"    fix: {finding.fix}"
+    if packages:
+        yield from package_lines(result)
     summary = result.summary()
     if colour:
         summary = click.style(summary, fg="red" if result.failed else "green", bold=True)
@@ -117,27 +135,31 @@ def github_lines(result: CheckResult) -> Iterator[str]:
     yield result.summary()
 
 
-def report_text(result: CheckResult, fmt: str, colour: bool = False) -> str:
-    """The whole report in ``fmt`` (text, github, json, sarif or junit), ending in a newline."""
+def report_text(result: CheckResult, fmt: str, colour: bool = False,
+                packages: bool = False) -> str:
+    """The whole report in ``fmt`` (text, github, json, sarif or junit), ending in a newline.
+
+    ``packages``: the text report lists the packages each file uses (JSON always does).
+    """
     from servicebot_cli.output import junit, sarif
 
     if fmt == "text":
-        return "\n".join(text_lines(result, colour=colour)) + "\n"
+        return "\n".join(text_lines(result, colour=colour, packages=packages)) + "\n"
     if fmt == "github":
         return "\n".join(github_lines(result)) + "\n"
     renderers = {"json": json_text, "sarif": sarif.sarif_text, "junit": junit.junit_text}
     return renderers[fmt](result)
 
 
-def show(result: CheckResult, fmt: str, output: str) -> None:
+def show(result: CheckResult, fmt: str, output: str, packages: bool = False) -> None:
     """Print the report (``output`` is ``-``) or write it atomically, the summary on stderr.
 
     Raises:
         OutputError: The file cannot be written.
     """
     if output == "-":
-        click.echo(report_text(result, fmt, colour=True), nl=False)
+        click.echo(report_text(result, fmt, colour=True, packages=packages), nl=False)
         return
     with atomic_output(output) as handle:
-        handle.write(report_text(result, fmt))
+        handle.write(report_text(result, fmt, packages=packages))
     click.echo(result.summary(), err=True)

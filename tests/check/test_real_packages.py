@@ -92,3 +92,18 @@ def test_pybullet_meshes_beside_the_file_are_found_with_one_warning_per_package(
         assert len(warned) == 1, file["file"]
         assert file["packages"]["meshes"]["ros_finds_it"] is False
     assert "SB408" not in {f["code"] for f in findings(result.stdout)}
+
+
+def test_the_text_report_says_where_and_how_each_package_was_found(run, workspace,
+                                                                   monkeypatch):
+    monkeypatch.chdir(workspace / "src" / "kuka_kr10_support")
+    result = run("check", "urdf", "urdf/kr10r1100sixx.xacro", "--isolated", "--show-packages",
+                 env=NO_ROS)
+    lines = [line for line in result.stdout.splitlines() if ": package " in line]
+    assert any(line.startswith("urdf/kr10r1100sixx.xacro: package kuka_resources at ")
+               and str(workspace / "src" / "kuka_resources") in line
+               and "found as workspace" in line for line in lines), result.stdout
+    assert any(f"package kuka_kr10_support at {workspace / 'src' / 'kuka_kr10_support'}, found "
+               "as the package holding the file" in line for line in lines), result.stdout
+    plain = run("check", "urdf", "urdf/kr10r1100sixx.xacro", "--isolated", env=NO_ROS)
+    assert ": package " not in plain.stdout
