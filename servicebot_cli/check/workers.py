@@ -27,6 +27,7 @@ from servicebot_cli.description.loader import RobotSource
 from servicebot_cli.description.packages import PackageResolver
 
 _RUNS_PER_WORKER = 4
+_LONGEST_RUN = 8  # files: a directory's heavy robots spread over the workers
 
 
 def available_cores() -> int:
@@ -94,7 +95,7 @@ def _check_run(run: Sequence[tuple[RobotSource, bool]]) -> list[Outcome]:
 
 def _runs(sources: Sequence[tuple[RobotSource, bool]],
           jobs: int) -> Iterator[Sequence[tuple[RobotSource, bool]]]:
-    size = max(1, -(-len(sources) // (jobs * _RUNS_PER_WORKER)))
+    size = min(_LONGEST_RUN, max(1, -(-len(sources) // (jobs * _RUNS_PER_WORKER))))
     for start in range(0, len(sources), size):
         yield sources[start:start + size]
 
