@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import os
 import sys
 
 import click
@@ -73,7 +72,6 @@ def sweep(sweep_file: str, robot_args: RobotArgs, jobs: int | None, scheduler: s
       servicebot sweep sweep.yaml --out results --keep csv --plot sweep.png
       servicebot sweep sweep.yaml --scheduler tcp://cluster:8786 --out results
     """
-    _one_blas_thread_per_worker()
     from servicebot_cli.common.errors import AnswerIsNo
     from servicebot_cli.output.sweep_text import failure_line, show_sweep
     from servicebot_cli.sweep import session
@@ -92,12 +90,3 @@ def sweep(sweep_file: str, robot_args: RobotArgs, jobs: int | None, scheduler: s
     if report.failed:
         raise AnswerIsNo(failure_line(report))
 
-
-def _one_blas_thread_per_worker() -> None:
-    """One run per core: numpy's BLAS threads would fight the worker processes.
-
-    Set before numpy loads (workers inherit it). On 2 busy cores a default-scenario run took
-    0.19 s with OpenBLAS's threads and 0.09 s without. A value the user set is kept.
-    """
-    for name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-        os.environ.setdefault(name, "1")

@@ -3,25 +3,45 @@
 Both are :class:`concurrent.futures.Executor`: a :class:`~concurrent.futures.ProcessPoolExecutor`
 here, ``distributed.Client.get_executor()`` on a cluster. :func:`execute` submits every task
 and hands each outcome over as it finishes, in whatever order they finish.
+
+Local workers are started fresh (``spawn``), not forked: numpy is not loaded in them yet, so
+the BLAS thread counts set in each worker's own environment take effect there, and the
+caller's environment is left as it was.
 """
 
 from __future__ import annotations
 
 import contextlib
 import importlib
+import multiprocessing
 import os
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from concurrent.futures import Executor, Future, ProcessPoolExecutor, as_completed, wait
+from concurrent.futures.process import BrokenProcessPool
 from typing import Any
 
-from servicebot_cli.common.errors import ServicebotError
-from servicebot_cli.sweep.worker import Outcome, Task, prepare_worker, simulate_task
+from servicebot_cli.common.errors import ExitCode, ServicebotError
+from servicebot_cli.sweep.worker import (
+    Outcome,
+    Task,
+    prepare_worker,
+    signals_held,
+    simulate_task,
+)
 
 CLUSTER_EXTRA = "pip install 'servicebot[cluster]' (dask and distributed)"
+BLAS_THREADS = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
+"""Thread counts of numpy's BLAS (OpenBLAS, OpenMP, MKL), read when numpy loads."""
 
 
 class SchedulerError(ServicebotError):
     """The Dask scheduler cannot be reached, or Dask is not installed."""
+
+
+class WorkerLost(ServicebotError):
+    """A local worker process died: killed, out of memory, a crash, or an unguarded script."""
+
+    exit_code = ExitCode.INTERNAL
 
 
 def available_cores() -> int:
@@ -32,10 +52,21 @@ def available_cores() -> int:
         return os.cpu_count() or 1
 
 
+def worker_environment(environ: Mapping[str, str]) -> dict[str, str]:
+    """What a local worker adds to its environment: one BLAS thread, unless the user chose.
+
+    One run per core: BLAS threads in each worker would compete with the other workers for
+    the cores. A count set in ``environ`` is the user's and is left alone.
+    """
+    return {name: "1" for name in BLAS_THREADS if name not in environ}
+
+
 @contextlib.contextmanager
 def local_executor(jobs: int) -> Iterator[Executor]:
-    """``jobs`` worker processes; on the way out, runs not started are cancelled."""
-    pool = ProcessPoolExecutor(max_workers=jobs, initializer=prepare_worker)
+    """``jobs`` fresh worker processes; on the way out, runs not started are cancelled."""
+    pool = ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("spawn"),
+                               initializer=prepare_worker,
+                               initargs=(worker_environment(os.environ),))
     try:
         yield pool
     finally:
@@ -79,14 +110,17 @@ def execute(executor: Executor, tasks: Sequence[Task],
 
     Raises:
         ServicebotError: A run failed; the others were stopped.
+        WorkerLost: A local worker process died.
     """
-    futures: dict[Future[Outcome], int] = {
-        executor.submit(simulate_task, task): index for index, task in enumerate(tasks)}
+    futures: dict[Future[Outcome], int] = {}
     handed: set[Future[Outcome]] = set()
     try:
+        with signals_held():  # workers start here
+            for index, task in enumerate(tasks):
+                futures[executor.submit(simulate_task, task)] = index
         for future in as_completed(futures):
             handed.add(future)
-            finished(futures[future], future.result())
+            finished(futures[future], _result(future))
     except BaseException:
         for future in futures:
             future.cancel()
@@ -95,3 +129,13 @@ def execute(executor: Executor, tasks: Sequence[Task],
             if not future.cancelled() and future.exception() is None:
                 finished(futures[future], future.result())
         raise
+
+
+def _result(future: Future[Outcome]) -> Outcome:
+    try:
+        return future.result()
+    except BrokenProcessPool:
+        raise WorkerLost("a worker process ended abruptly (killed, out of memory, or a "
+                         "crash); the runs finished so far are kept, a re-run with the same "
+                         "--out goes on from there. A script that starts a sweep needs "
+                         "`if __name__ == '__main__':` (workers are fresh processes)") from None

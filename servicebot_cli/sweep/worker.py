@@ -8,7 +8,11 @@ and calls :func:`~servicebot_cli.simulate.session.run_and_write`, the function b
 
 from __future__ import annotations
 
+import contextlib
+import os
 import signal
+import threading
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from types import FrameType
@@ -67,16 +71,44 @@ def simulate_task(task: Task) -> Outcome:
     return Outcome(report.summary, report.wall_s)
 
 
-def prepare_worker() -> None:
-    """Set up a local worker process: Ctrl-C is for the sweep, which stops the workers.
+HELD_SIGNALS = (signal.SIGINT, *ENDING_SIGNALS)
 
-    A terminal's Ctrl-C reaches every process of its group; workers ignore it and the sweep
-    lets the runs under way finish. SIGTERM and SIGHUP unwind a worker as they unwind
-    ``simulate`` (so its atomic writers clean up).
+
+@contextlib.contextmanager
+def signals_held() -> Iterator[None]:
+    """Hold back Ctrl-C and the ending signals while workers start (main thread, POSIX).
+
+    A signal inside ``ProcessPoolExecutor.submit`` could leave the pool half started, and a
+    worker that gets Ctrl-C before :func:`prepare_worker` dies with a traceback. Held back
+    here, workers start with these signals blocked and unblock them once their handlers are
+    set; the sweep gets any signal that came meanwhile when the block ends.
     """
+    if threading.current_thread() is not threading.main_thread() \
+            or not hasattr(signal, "pthread_sigmask"):
+        yield
+        return
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, HELD_SIGNALS)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+
+
+def prepare_worker(environment: Mapping[str, str]) -> None:
+    """Set up a local worker process before its first run: environment and signals.
+
+    ``environment`` goes into this process's own environment (BLAS thread counts: numpy,
+    loaded by the first run, reads them). A terminal's Ctrl-C reaches every process of its
+    group; workers ignore it and the sweep lets the runs under way finish. SIGTERM and
+    SIGHUP unwind a worker as they unwind ``simulate`` (so its atomic writers clean up).
+    Signals held back by :func:`signals_held` are let through once these are set.
+    """
+    os.environ.update(environment)
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     for signum in ENDING_SIGNALS:
         signal.signal(signum, _raise)
+    if hasattr(signal, "pthread_sigmask"):
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, HELD_SIGNALS)
 
 
 def _raise(signum: int, frame: FrameType | None) -> None:
