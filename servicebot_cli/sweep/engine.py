@@ -15,6 +15,7 @@ import contextlib
 import importlib
 import multiprocessing
 import os
+import socket
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from concurrent.futures import Executor, Future, ProcessPoolExecutor, as_completed, wait
 from concurrent.futures.process import BrokenProcessPool
@@ -84,9 +85,12 @@ def dask_executor(address: str, timeout_s: float = 10.0) -> Iterator[Executor]:
         distributed: Any = importlib.import_module("distributed")
     except ImportError:
         raise SchedulerError(f"--scheduler needs Dask: {CLUSTER_EXTRA}") from None
+    refused = _refused(address, timeout_s)
     try:
+        if refused is not None:
+            raise refused
         client = distributed.Client(address, timeout=timeout_s)
-    except (OSError, TimeoutError, ValueError) as exc:
+    except (OSError, TimeoutError, ValueError, TypeError) as exc:  # TypeError: TLS unset
         raise SchedulerError(f"no Dask scheduler answers at {address} ({exc}); start one "
                              "with 'dask scheduler' or check the address") from None
     try:
@@ -94,6 +98,24 @@ def dask_executor(address: str, timeout_s: float = 10.0) -> Iterator[Executor]:
         yield executor
     finally:
         client.close()
+
+
+def _refused(address: str, timeout_s: float) -> OSError | None:
+    """Why a ``tcp://HOST:PORT`` cannot be connected to, or None (also for other schemes).
+
+    Dask's client retries a refused connection until its timeout; a plain connection
+    attempt says at once that nothing listens there.
+    """
+    scheme, _, rest = address.rpartition("://")
+    host, _, port = rest.rpartition(":")
+    if scheme not in ("", "tcp") or not port.isdigit():
+        return None
+    try:
+        socket.create_connection((host.strip("[]") or "localhost", int(port)),
+                                 timeout=timeout_s).close()
+    except OSError as exc:
+        return exc
+    return None
 
 
 def executor_for(jobs: int, scheduler: str | None) -> contextlib.AbstractContextManager[Executor]:

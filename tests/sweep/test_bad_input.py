@@ -79,10 +79,11 @@ def test_keep_names_known_outputs(run, write_sweep, tmp_path):
     assert_one_line_error(result, 2, "keep any of csv, bag, plot")
 
 
-def test_no_scheduler_at_the_address_is_one_line(run, write_sweep):
+@pytest.mark.parametrize("address", ["tcp://127.0.0.1:9", "127.0.0.1:9", "tls://127.0.0.1:9"])
+def test_no_scheduler_at_the_address_is_one_line(run, write_sweep, address):
     pytest.importorskip("distributed")
-    result = run("sweep", write_sweep(SWEEP), "--scheduler", "tcp://127.0.0.1:9")
-    assert_one_line_error(result, 2, "no Dask scheduler answers at tcp://127.0.0.1:9")
+    result = run("sweep", write_sweep(SWEEP), "--scheduler", address)
+    assert_one_line_error(result, 2, f"no Dask scheduler answers at {address}")
 
 
 @pytest.mark.parametrize(("text", "got"), [("", "got nothing"), ("# all commented out\n",
