@@ -85,6 +85,10 @@ def test_an_interrupted_sweep_keeps_finished_runs(write_sweep, tmp_path, signum,
     assert [p for p in out.rglob("*") if ".tmp" in p.name] == []
     assert all((out / "runs" / key / "csv" / "summary.json").exists() for key in finished)
 
-    result = subprocess.run(args, capture_output=True, text=True, timeout=300)
+    # The first 4 seeds of each grid value again: those that finished are found done.
+    args[args.index(path)] = write_sweep({**long, "seeds": 4}, name="first4.yaml")
+    done = sum(int(r["seed"]) < 4 for r in _rows(out))
+    result = subprocess.run(args, capture_output=True, text=True, timeout=120)
     assert result.returncode == 0, result.stderr
-    assert f"finished 80 ({len(finished)} found done)" in result.stdout
+    assert f"finished 8 ({done} found done)" in result.stdout
+    assert f"ran {8 - done} run" in result.stderr
