@@ -21,20 +21,28 @@ class SweepProgress:
                  ) -> None:
         self.total, self.stream, self.clock = max(total, 1), stream, clock
         self.done, self.skipped = done, done
-        self.start, self.last_draw, self.drawn = clock(), float("-inf"), False
+        self.start, self.last_draw, self.width = clock(), float("-inf"), 0
         if enabled is None:
             enabled = _is_terminal(stream) and not os.environ.get("CI")
         self.enabled = enabled
+        self._draw(self.start)  # at once: the first run may take a while
 
     def advance(self) -> None:
         """One more run finished; redraw when due."""
         self.done = min(self.total, self.done + 1)
         now = self.clock()
-        if self.enabled and (now - self.last_draw >= 0.1 or self.done == self.total):
-            self.last_draw = now
-            self.stream.write("\r" + self.line(now))
-            self.stream.flush()
-            self.drawn = True
+        if now - self.last_draw >= 0.1 or self.done == self.total:
+            self._draw(now)
+
+    def _draw(self, now: float) -> None:
+        """Write the bar over the last one (padded, so a shorter line leaves nothing behind)."""
+        if not self.enabled:
+            return
+        self.last_draw = now
+        line = self.line(now)
+        self.stream.write("\r" + line.ljust(self.width))
+        self.stream.flush()
+        self.width = max(self.width, len(line))
 
     def line(self, now: float) -> str:
         """The bar as text at time ``now``."""
@@ -48,8 +56,8 @@ class SweepProgress:
 
     def close(self) -> None:
         """Erase the bar, if one was drawn."""
-        if self.drawn:
-            self.stream.write("\r" + " " * 70 + "\r")
+        if self.width:
+            self.stream.write("\r" + " " * self.width + "\r")
             self.stream.flush()
 
 

@@ -5,7 +5,11 @@ from __future__ import annotations
 import csv
 import io
 import json
+import os
+import pty
 import statistics
+import subprocess
+import sys
 
 from servicebot_cli.sweep.progress import SweepProgress
 from tests.foundation.test_cli_shape import HEAVY, _imported
@@ -62,6 +66,40 @@ def test_progress_shows_count_and_time_left(monkeypatch):
     assert stream.getvalue().endswith("\r")
 
 
+def _screen(text: str) -> list[str]:
+    """What a terminal shows for ``text``: each carriage return writes over its line."""
+    lines = []
+    for line in text.split("\n"):
+        shown = ""
+        for part in line.split("\r"):
+            shown = part + shown[len(part):]
+        lines.append(shown)
+    return lines
+
+
+def test_progress_is_drawn_at_once_and_a_shorter_line_leaves_nothing_behind(monkeypatch):
+    monkeypatch.delenv("CI", raising=False)
+    now = [0.0]
+    stream = _Terminal()
+    bar = SweepProgress(100, stream, clock=lambda: now[0])
+    assert _screen(stream.getvalue()) == ["sweep   0/100 [------------------------]"]
+    now[0] = 65 / 99
+    bar.advance()  # 65/99 s per run, 99 to go: 1m05s
+    assert _screen(stream.getvalue())[-1].endswith("] 1m05s left")
+    now[0] = 100.0
+    bar.advance()  # 50 s per run, 98 to go: over an hour; then 2 s per run: 2m36s
+    now[0] = 200.0
+    bar.advance()
+    now[0] = 201.0
+    for _ in range(96):
+        now[0] += 0.2
+        bar.advance()
+    assert _screen(stream.getvalue())[-1].rstrip() == \
+        "sweep  99/100 [#######################-] 2s left"  # not "2s leftleft"
+    bar.close()
+    assert _screen(stream.getvalue())[-1].strip() == ""
+
+
 def test_progress_is_silent_in_pipes_and_ci(monkeypatch):
     stream = io.StringIO()
     bar = SweepProgress(3, stream)
@@ -70,3 +108,29 @@ def test_progress_is_silent_in_pipes_and_ci(monkeypatch):
     monkeypatch.setenv("CI", "true")
     assert not SweepProgress(3, _Terminal()).enabled
     assert stream.getvalue() == ""
+
+
+def test_the_command_draws_the_bar_on_a_terminal_and_keeps_stdout_clean(write_sweep):
+    sweep = write_sweep({"seeds": 6, "set": {"duration_s": 2}})
+    master, slave = pty.openpty()
+    env = {k: v for k, v in os.environ.items() if k != "CI"}
+    process = subprocess.Popen([sys.executable, "-m", "servicebot_cli", "sweep", sweep,
+                                "--jobs", "2"], stdout=subprocess.PIPE, stderr=slave, env=env)
+    os.close(slave)
+    terminal = b""
+    while True:
+        try:
+            chunk = os.read(master, 4096)
+        except OSError:  # EIO: the command closed the terminal
+            break
+        if not chunk:
+            break
+        terminal += chunk
+    os.close(master)
+    stdout = process.stdout.read().decode()
+    assert process.wait(timeout=60) == 0, terminal
+    text = terminal.decode().replace("\r\n", "\n")
+    assert text.startswith("\rsweep 0/6 [------------------------]")
+    assert "\rsweep 6/6 [########################] " in text
+    assert _screen(text)[0].startswith("ran 6 runs in ")  # the bar was erased, then this
+    assert "\r" not in stdout and "finished 6, 6 passed, 0 failed" in stdout
