@@ -46,13 +46,15 @@ def describe(values: Sequence[float]) -> dict[str, float | None]:
     """Mean, standard deviation (n - 1; 0 for one value), min, median, 95th percentile, max.
 
     Missing values (NaN, e.g. no odometry) are left out; none left gives ``None`` for each.
+    An infinite value (no obstacle in the world: ``min_obstacle_distance_m``) makes the
+    mean infinite and the standard deviation NaN (``null`` in JSON).
     """
     present = sorted(v for v in values if not math.isnan(v))
     if not present:
         return dict.fromkeys(STATISTICS)
     return {
         "mean": statistics.fmean(present),
-        "std": statistics.stdev(present) if len(present) > 1 else 0.0,
+        "std": _std(present),
         "min": present[0],
         "median": statistics.median(present),
         "p95": _percentile(present, 0.95),
@@ -60,9 +62,20 @@ def describe(values: Sequence[float]) -> dict[str, float | None]:
     }
 
 
+def _std(values: Sequence[float]) -> float:
+    """Sample standard deviation (n - 1); 0 for one value, NaN with an infinite one."""
+    if len(values) == 1:
+        return 0.0
+    if not all(math.isfinite(v) for v in values):
+        return math.nan
+    return statistics.stdev(values)
+
+
 def _percentile(ordered: Sequence[float], q: float) -> float:
     """Linear interpolation between closest ranks (numpy's default)."""
     position = q * (len(ordered) - 1)
     low = math.floor(position)
     high = min(low + 1, len(ordered) - 1)
+    if position == low or ordered[high] == ordered[low]:  # also inf == inf: no inf - inf
+        return ordered[low]
     return ordered[low] + (ordered[high] - ordered[low]) * (position - low)

@@ -8,6 +8,7 @@ expectation's bound is drawn as a dashed line. Drawn on a bare Figure, saved ato
 
 from __future__ import annotations
 
+import json
 import statistics
 from collections.abc import Sequence
 from pathlib import Path
@@ -99,15 +100,25 @@ def _x(result: RunResult, name: str) -> Any:
     return result.run.seed if name == "seed" else dict(result.run.values).get(name)
 
 
+def _label(value: Any) -> str:
+    """A category as text: strings as they are, anything else as compact JSON."""
+    return value if isinstance(value, str) else json.dumps(value, separators=(",", ":"))
+
+
+def _short(label: str, width: int = 18) -> str:
+    """At most ``width`` characters, so long values (a world, a list) do not overlap."""
+    return label if len(label) <= width else label[:width - 1] + "\u2026"
+
+
 def _panel(ax: Axes, results: Sequence[RunResult], name: str, metric: str,
            bounds: Sequence[float]) -> None:
     xs = [_x(r, name) for r in results]
     ys = [r.metrics.get(metric, float("nan")) for r in results]
     numeric = all(isinstance(x, int | float) and not isinstance(x, bool) for x in xs)
     if not numeric:  # categories (a saturation mode, a list) at 0, 1, 2, ...
-        labels = list(dict.fromkeys(str(x) for x in xs))
-        xs = [labels.index(str(x)) for x in xs]
-        ax.set_xticks(range(len(labels)), labels, fontsize=7)
+        labels = list(dict.fromkeys(_label(x) for x in xs))
+        xs = [labels.index(_label(x)) for x in xs]
+        ax.set_xticks(range(len(labels)), [_short(label) for label in labels], fontsize=7)
     colors = ["#c0392b" if r.failed else "#2c7fb8" for r in results]
     ax.scatter(xs, ys, s=10, c=colors, alpha=0.6, linewidths=0)
     groups: dict[float, list[float]] = {}

@@ -4,11 +4,14 @@ sweep still works and leaves no stale runs.parquet behind."""
 from __future__ import annotations
 
 import csv
+import json
 import math
 import subprocess
 import sys
 
 import pytest
+
+from servicebot_cli.sweep.metrics import describe
 
 pa = pytest.importorskip("pyarrow")
 pq = pytest.importorskip("pyarrow.parquet")
@@ -117,3 +120,28 @@ def test_without_pyarrow_runs_csv_is_written_and_no_stale_parquet_stays(
     assert again.returncode == 0, again.stderr
     assert "(2 found done)" in again.stdout
     assert "note:" not in again.stderr and "Traceback" not in again.stderr
+
+
+def test_a_room_without_obstacles_gives_infinite_clearance_not_a_crash(run, write_sweep,
+                                                                       tmp_path):
+    sweep = write_sweep({"seeds": 2, "set": {"duration_s": 2, "world": {}},
+                         "expect": ["min_obstacle_distance_m > 0.3"]})
+    out = tmp_path / "out"
+    result = run("sweep", sweep, "--out", out, "--format", "json", "--plot", tmp_path / "p.png")
+    assert result.exit_code == 0, result.stderr
+    stats = json.loads(result.stdout)["points"][0]["metrics"]["min_obstacle_distance_m"]
+    assert stats == dict.fromkeys(("mean", "std", "min", "median", "p95", "max"))  # inf: null
+    with open(out / "runs.csv", newline="") as f:
+        assert {r["min_obstacle_distance_m"] for r in csv.DictReader(f)} == {"inf"}
+    assert pq.read_table(out / "runs.parquet").column("min_obstacle_distance_m").to_pylist() \
+        == [math.inf, math.inf]
+
+
+def test_statistics_of_infinite_and_missing_values():
+    inf, nan = math.inf, math.nan
+    assert describe([1.0, inf]) == {"mean": inf, "std": pytest.approx(nan, nan_ok=True),
+                                    "min": 1.0, "median": inf, "p95": inf, "max": inf}
+    assert describe([inf, inf])["p95"] == inf
+    assert describe([nan, 2.0]) == {"mean": 2.0, "std": 0.0, "min": 2.0, "median": 2.0,
+                                    "p95": 2.0, "max": 2.0}
+    assert describe([1.0, 2.0, 3.0, 10.0])["p95"] == pytest.approx(8.95)  # numpy's linear
