@@ -1,0 +1,96 @@
+"""Files a package holds only once installed: ``$(find PKG)/ros2_control/x.xacro`` in a source tree.
+
+``$(find PKG)`` is the package's install directory (``install/PKG/share/PKG``). A CMake
+package lays its files out there as its ``install(DIRECTORY ...)`` rules say, which may differ
+from the source tree: ros2_control_demos' examples install ``description/ros2_control`` as
+``share/PKG/ros2_control`` and include ``$(find PKG)/ros2_control/...``. Checked from sources
+(no build, no ROS), such an include names no file, yet the description is fine once built.
+This module finds the source file an install-space path comes from.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path, PurePosixPath
+
+from servicebot_cli.description.packages import holding_package
+
+_COMMENT = re.compile(r"#[^\n]*")
+_INSTALL = re.compile(r"\binstall\s*\(([^)]*)\)", re.IGNORECASE)
+_SHARE = re.compile(r"^share/(?:\$\{PROJECT_NAME\}|(?P<name>[\w.-]+))(?:/(?P<sub>.*?))?/*$")
+_KEYWORDS = {"DESTINATION", "FILES_MATCHING", "PATTERN", "REGEX", "EXCLUDE", "PERMISSIONS",
+             "USE_SOURCE_PERMISSIONS", "CONFIGURATIONS", "COMPONENT", "OPTIONAL",
+             "MESSAGE_NEVER", "FILE_PERMISSIONS", "DIRECTORY_PERMISSIONS", "EXCLUDE_FROM_ALL"}
+
+
+@dataclass(frozen=True)
+class InstalledFrom:
+    """Where an install-space path of a package comes from in its source tree.
+
+    Attributes:
+        package: The package name.
+        package_dir: The package's source directory (holding package.xml).
+        source: The source file the path is installed from.
+        source_dir: The rule's source directory, relative to the package (``description/urdf``).
+        installed_dir: Where the rule installs it, relative to ``share/PKG`` (``urdf``).
+    """
+
+    package: str
+    package_dir: Path
+    source: Path
+    source_dir: str
+    installed_dir: str
+
+
+def installed_from(missing: Path) -> InstalledFrom | None:
+    """The source file that ``missing``, a path inside a source package, is installed from.
+
+    None when ``missing`` is in no package, or no ``install(DIRECTORY ...)`` rule of the
+    package's CMakeLists.txt installs an existing source file at that place.
+    """
+    existing = next((p for p in missing.parents if p.is_dir()), None)
+    holder = holding_package(existing) if existing is not None else None
+    if holder is None:
+        return None
+    name, package_dir = holder
+    try:
+        relative = PurePosixPath(missing.relative_to(package_dir).as_posix())
+        cmake = (package_dir / "CMakeLists.txt").read_text(encoding="utf-8", errors="replace")
+    except (ValueError, OSError):
+        return None
+    for source_dir, installed_dir in directory_rules(cmake, name):
+        try:
+            rest = relative.relative_to(installed_dir) if installed_dir else relative
+        except ValueError:
+            continue
+        source = package_dir / source_dir / rest
+        if source.is_file():
+            return InstalledFrom(name, package_dir, source, source_dir, installed_dir)
+    return None
+
+
+def directory_rules(cmake: str, package: str) -> list[tuple[str, str]]:
+    """``(source directory, directory under share/PKG)`` for each installed directory.
+
+    ``install(DIRECTORY a/b c/ DESTINATION share/${PROJECT_NAME}/x)`` gives ``("a/b", "x/b")``
+    and ``("c", "x")``: without a trailing slash the directory itself is installed, with
+    one its contents. Rules to other destinations, or to another package's share, are left out.
+    """
+    rules = []
+    for body in _INSTALL.findall(_COMMENT.sub("", cmake)):
+        words = body.replace('"', " ").split()
+        if not words or words[0].upper() != "DIRECTORY" or "DESTINATION" not in words:
+            continue
+        at = words.index("DESTINATION")
+        share = _SHARE.match(words[at + 1]) if at + 1 < len(words) else None
+        if share is None or share["name"] not in (None, package):
+            continue
+        destination = PurePosixPath(share["sub"] or "")
+        for source in words[1:at]:
+            if source.upper() in _KEYWORDS or "$" in source:
+                break
+            stripped = source.rstrip("/")
+            installed = destination if source.endswith("/") else destination / Path(stripped).name
+            rules.append((stripped, "" if str(installed) == "." else str(installed)))
+    return rules
