@@ -127,6 +127,18 @@ class _Checker:
         """
         return "$(" in name or name.partition("/")[0] in self.controllers
 
+    def joint_of(self, name: str) -> str:
+        """The joint a chain of controller references ends at, or ``name`` itself.
+
+        ``position_controller/joint1_position_controller/joint1`` ends at ``joint1``; a
+        reference ``joint1/position`` (an interface) at ``joint1``, when that is a joint.
+        """
+        head, slash, rest = name.partition("/")
+        while slash and head in self.controllers:
+            name = rest
+            head, slash, rest = name.partition("/")
+        return head if slash and head in self.joints and name not in self.joints else name
+
     def wheels(self, section: str, params: yaml.MappingNode) -> Iterator[Issue]:
         geometry = self.geometry()
         if isinstance(geometry, str):
@@ -137,9 +149,11 @@ class _Checker:
             node = _get(params, key)
             items = node.value if isinstance(node, yaml.SequenceNode) else []
             for item in items:
-                wheel = next((w for w in geometry.wheels if w.joint == item.value), None)
+                joint = self.joint_of(str(item.value))
+                wheel = next((w for w in geometry.wheels if w.joint == joint), None)
                 if wheel is not None and wheel.side != side:
-                    yield Issue("SB605", f"{section}.{key}: '{item.value}' is on the "
+                    via = f" (joint '{joint}')" if joint != item.value else ""
+                    yield Issue("SB605", f"{section}.{key}: '{item.value}'{via} is on the "
                                 f"{wheel.side} (y = {wheel.position_m[1]:g} m in the URDF)",
                                 where=self.where(item))
         yield from self.value(section, params, "wheel_radius", geometry.wheel_radius_m, "SB603",
@@ -156,8 +170,13 @@ class _Checker:
                         f"{expected:.6g} m", where=self.where(node or params),
                         fix=f"{key}: {expected:.6g}")
             return
+        effective = given
         for multiplier in multipliers:
-            given *= _number(_get(params, multiplier)) or 1.0
-        if abs(given - expected) > TOLERANCE * abs(expected):
-            yield Issue(code, f"{section}: {key} {given:g} m disagrees with the URDF's "
-                        f"{expected:.6g} m", where=self.where(node), fix=f"{key}: {expected:.6g}")
+            effective *= _number(_get(params, multiplier)) or 1.0
+        # A multiplier calibrates the geometric value to the floor (a skid-steer robot turns
+        # as if its wheels were further apart): either may match the URDF's geometry.
+        if all(abs(value - expected) > TOLERANCE * abs(expected) for value in (given, effective)):
+            times = f" ({given:g} m times the multipliers)" if effective != given else ""
+            yield Issue(code, f"{section}: {key} {effective:g} m{times} disagrees with the "
+                        f"URDF's {expected:.6g} m", where=self.where(node),
+                        fix=f"{key}: {expected:.6g}")
