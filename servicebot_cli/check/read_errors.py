@@ -11,7 +11,6 @@ import re
 from pathlib import Path
 
 from servicebot_cli.check.findings import Issue
-from servicebot_cli.check.install_layout import installed_from
 from servicebot_cli.common.errors import (
     DescriptionError,
     PackageNotFound,
@@ -19,6 +18,7 @@ from servicebot_cli.common.errors import (
     XacroError,
     XmlError,
 )
+from servicebot_cli.description.install_layout import installed_from
 
 _WHERE = re.compile(r"^(?P<file>.+?):(?P<line>\d+)(?::(?P<column>\d+))?: (?P<rest>.*)$", re.DOTALL)
 _LIMITS = ("limit for a robot description", "elements; refused", "deep; refused")

@@ -158,7 +158,9 @@ class PackageResolver:
                 raise PackageNotFound(f"package '{name}' not found; looked in "
                                       f"{self._searched(base_dir)}")
             self.found.setdefault(name, location)
-            return location.path / rel
+            from servicebot_cli.description.install_layout import installed_source
+
+            return Path(installed_source(str(location.path / rel)))
         if uri.startswith("file://"):
             return Path(unquote(urlparse(uri).path))
         path = Path(uri).expanduser()

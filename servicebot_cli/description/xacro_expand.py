@@ -27,6 +27,7 @@ from xml.dom import expatbuilder
 from xml.parsers import expat
 
 from servicebot_cli.common.errors import DescriptionError, PackageNotFound, XacroError, XmlError
+from servicebot_cli.description.install_layout import installed_source
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.safe_xml import parse_xml
 from servicebot_cli.description.sources import SourceRef
@@ -158,7 +159,11 @@ class _Tracer:
                  "process_include")
         saved = {name: getattr(xacro, name) for name in names}
         saved_find = subst._eval_find
+        saved_spec = xacro.abs_filename_spec
         xacro.parse = self._parse
+        # load_yaml opens what abs_filename_spec names: a file of a source package found
+        # where the package's install rules put it
+        xacro.abs_filename_spec = lambda spec: installed_source(saved_spec(spec))
         for name in names[1:]:
             setattr(xacro, name, self._tracking(saved[name]))
         xacro.handle_macro_call = self._tracking(self._macro_call(saved["handle_macro_call"]))
@@ -171,6 +176,7 @@ class _Tracer:
             for name, fn in saved.items():
                 setattr(xacro, name, fn)
             subst._eval_find = saved_find
+            xacro.abs_filename_spec = saved_spec
 
     def _parse(self, inp: str | xml.dom.minidom.Document | None,
                filename: str | None = None) -> xml.dom.minidom.Document:
@@ -178,7 +184,7 @@ class _Tracer:
 
         if inp is not None:
             return xml.dom.minidom.parseString(inp) if isinstance(inp, str) else inp
-        path = os.path.join(xacro.root_dir, filename or "")
+        path = installed_source(os.path.join(xacro.root_dir, filename or ""))
         try:
             data = Path(path).read_bytes()
         except OSError as exc:

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from servicebot_cli.check.install_layout import directory_rules
+from servicebot_cli.description.install_layout import directory_rules
 from servicebot_cli.description.packages import package_name
 from tests.check.corpus import check_urdf_commands
 from tests.check.helpers import findings
@@ -117,13 +117,14 @@ def test_the_workspace_walked_from_its_root_skips_includes_and_finds_every_packa
         (error,) = by_file[ur]["findings"]
         assert error["code"] == "SB006" and "Undefined substitution argument name" in error[
             "message"]
-    # ros2_control_demos include what their CMakeLists.txt installs: found once built, so
-    # from the sources a warning naming the install rule, not an error.
-    example = by_file["rrbot_system_with_sensor.urdf.xacro"]["findings"]
-    assert [(f["code"], f["severity"]) for f in example] == [("SB007", "warning")]
-    assert ("the include 'ros2_control/rrbot_system_with_sensor.ros2_control.xacro' exists "
-            "once built (CMakeLists.txt installs description/ros2_control as "
-            "share/ros2_control_demo_example_4/ros2_control)") in example[0]["message"]
+    # ros2_control_demos include what their CMakeLists.txt installs: read from the source
+    # directory the install rule names, so the whole robot is checked from the sources.
+    assert by_file["rrbot_system_with_sensor.urdf.xacro"]["findings"] == []
+    expanded = run("expand", "src/example_4/description/urdf/rrbot_system_with_sensor.urdf.xacro",
+                   env=NO_ROS)
+    assert expanded.exit_code == 0, expanded.output
+    assert '<ros2_control name="RRBotSystemWithSensor" type="system">' in expanded.stdout
+    assert '<sensor name="tcp_fts_sensor">' in expanded.stdout
     others = [f for name, f in by_file.items() if name not in ("ur.urdf.xacro",
                                                                 "ur_mocked.urdf.xacro")]
     assert not [f for file in others for f in file["findings"] if f["severity"] == "error"]

@@ -10,6 +10,7 @@ This module finds the source file an install-space path comes from.
 
 from __future__ import annotations
 
+import os
 import re
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
@@ -94,3 +95,16 @@ def directory_rules(cmake: str, package: str) -> list[tuple[str, str]]:
             installed = destination if source.endswith("/") else destination / Path(stripped).name
             rules.append((stripped, "" if str(installed) == "." else str(installed)))
     return rules
+
+
+def installed_source(path: str) -> str:
+    """``path`` if it exists; else the source file it is installed from, when there is one.
+
+    ``$(find PKG)`` of a package found as sources names its source directory, while the
+    description means the install directory: ``$(find PKG)/ros2_control/x.xacro`` is
+    ``description/ros2_control/x.xacro`` in the sources of ros2_control_demos' examples.
+    """
+    if os.path.exists(path):
+        return path
+    found = installed_from(Path(path))
+    return path if found is None else str(found.source)
