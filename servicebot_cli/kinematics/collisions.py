@@ -92,6 +92,11 @@ class CollisionCheck:
         self.pairs = tuple((self._links[p.first], self._links[p.second])
                            for p in geometry.collisionPairs)
 
+    @property
+    def geometry(self) -> pin.GeometryModel:
+        """The objects checked: the collision geometry, mesh hulls and the floor (read only)."""
+        return self._geometry
+
     def contact(self, q: FloatArray) -> Contact | None:
         """The first pair that intersects at ``q`` (full configuration); None: none does."""
         pin = self._pin
