@@ -51,6 +51,12 @@ _PORT_ONLY = (("--port", "port", "no port is opened"),
 @click.option("--duration-s", type=Number("S", positive=True), help="One-shot duration [s].")
 @click.option("--arm", "arm", type=JointValue(), multiple=True,
               help="One-shot arm target NAME=VALUE [rad] (repeatable).")
+@click.option("--allow-collisions", is_flag=True,
+              help="Send arm targets even when they, or the arm's way to them, put links of "
+              "the robot into each other or the floor (refused by default, as ik does).")
+@click.option("--srdf", type=click.Path(exists=True, dir_okay=False), default=None,
+              metavar="FILE",
+              help="An SRDF whose <disable_collisions link1= link2=> pairs are not checked.")
 @click.option("--max-speed", type=Number("RAD_S", positive=True), default=None,
               help="Cap every wheel at this speed [rad/s], below the URDF's limit (first "
               "tests on a real robot).")
@@ -83,7 +89,8 @@ _PORT_ONLY = (("--port", "port", "no port is opened"),
 def drive(robot_args: RobotArgs, port: str | None, baud: int | None, protocol: str,
           ticks_per_rev: float | None, pid_rate: float, script: str | None,
           linear: float | None, angular: float | None, duration_s: float | None,
-          arm: tuple[tuple[str, float], ...], max_speed: float | None,
+          arm: tuple[tuple[str, float], ...], allow_collisions: bool, srdf: str | None,
+          max_speed: float | None,
           deadman_ms: int | None, rate: float, max_accel: float, link_timeout_s: float,
           connect_timeout_s: float, boot_time_s: float, reconnect: bool,
           reconnect_attempts: int, log_path: str | None, dry_run: bool, fmt: str) -> None:
@@ -92,7 +99,8 @@ def drive(robot_args: RobotArgs, port: str | None, baud: int | None, protocol: s
     Kinematics and limits come from the robot description (the bundled real robot by
     default): twists become wheel speeds with its radius and track, within its wheel
     velocity limits (curvature kept), acceleration-limited; arm targets stay within its
-    joint limits.
+    joint limits, and one that puts links of the robot into each other or the floor, there
+    or on the arm's way there, is refused before it is sent (ik's collision check).
 
     \b
     Modes:
@@ -111,13 +119,14 @@ def drive(robot_args: RobotArgs, port: str | None, baud: int | None, protocol: s
     from servicebot_cli.drive.run import drive as run_drive
     from servicebot_cli.output.drive_text import drive_log, show_drive
 
-    _refuse_without_effect(dry_run, reconnect)
+    _refuse_without_effect(dry_run, reconnect, arm_targets=bool(arm) or script is not None,
+                           allow_collisions=allow_collisions)
     mode = _mode(script, linear, angular, duration_s, arm, dry_run, deadman_ms)
     request = DriveRequest(
         robot_args.source(), mode, protocol, arduino_config(protocol, ticks_per_rev, pid_rate),
         port, baud, rate, max_accel, link_timeout_s, connect_timeout_s, reconnect,
         Path(log_path) if log_path else None, dry_run, boot_time_s, max_speed,
-        reconnect_attempts)
+        reconnect_attempts, not allow_collisions, srdf)
     with bad_options():
         result = run_drive(request, log=drive_log)
     show_drive(result, fmt)
@@ -125,12 +134,23 @@ def drive(robot_args: RobotArgs, port: str | None, baud: int | None, protocol: s
         raise result.failure
 
 
-def _refuse_without_effect(dry_run: bool, reconnect: bool) -> None:
-    """Refuse a port's options with ``--dry-run``, ``--reconnect-attempts`` without a reconnect."""
+def _refuse_without_effect(dry_run: bool, reconnect: bool, *, arm_targets: bool,
+                           allow_collisions: bool) -> None:
+    """Refuse options that would change nothing.
+
+    A port's options with ``--dry-run``, ``--reconnect-attempts`` without a reconnect, the
+    collision options without arm targets (teleop, or a one-shot without ``--arm``), and
+    ``--srdf`` with ``--allow-collisions``.
+    """
     ctx = click.get_current_context()
     for option, name, why in _PORT_ONLY:
         refuse_with(ctx, option, "--dry-run", why=why, present=dry_run, name=name)
     refuse_without(ctx, "--reconnect-attempts", "--reconnect", present=reconnect)
+    for option in ("--allow-collisions", "--srdf"):
+        refuse_without(ctx, option, "arm targets (--arm NAME=VALUE or a --script)",
+                       present=arm_targets)
+    refuse_with(ctx, "--srdf", "--allow-collisions", present=allow_collisions,
+                why="which checks no pair")
 
 
 def _mode(script: str | None, linear: float | None, angular: float | None,

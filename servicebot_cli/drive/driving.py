@@ -133,10 +133,12 @@ class Driven:
 def run_drive(settings: StreamSettings, link: HostLink, motors: MotorMap,
               source: Source, *, log: Callable[[str], None],
               on_tick: Callable[[LinkStatus], None] | None = None,
-              suspender: Suspender | None = None) -> Driven:
+              suspender: Suspender | None = None,
+              arm_guard: Callable[[tuple[float, ...]], None] | None = None) -> Driven:
     """Drive until ``source`` is done; stop the motors on every way out.
 
-    Whatever ends the run once the port is open (Ctrl-C, a signal, a lost link) is in the
+    Whatever ends the run once the port is open (Ctrl-C, a signal, a lost link, the
+    ``arm_guard`` refusing the arm's motion from where the firmware reports it) is in the
     result, after the stop was sent. Any other exception (a bug) propagates, after the stop.
 
     Raises:
@@ -145,7 +147,8 @@ def run_drive(settings: StreamSettings, link: HostLink, motors: MotorMap,
     """
     from servicebot_cli.drive.transport import open_port
 
-    commander = Commander(link, WheelShaper(motors, settings.max_accel_rad_s2), motors)
+    commander = Commander(link, WheelShaper(motors, settings.max_accel_rad_s2), motors,
+                          arm_guard)
     with StopSignals() as signals, _telemetry_log(settings.log, motors,
                                                   link.has_arm) as csv_log:
         port = open_port(settings.port, settings.baud)

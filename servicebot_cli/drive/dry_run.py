@@ -34,7 +34,7 @@ def planned_frames(plan: Plan, link: HostLink, motors: MotorMap, max_accel_rad_s
                    rate_hz: float) -> Iterator[PlannedFrame]:
     """The handshake, every tick of ``plan`` at ``rate_hz`` and the stop, in order."""
     commander = Commander(link, WheelShaper(motors, max_accel_rad_s2), motors)
-    commander.observe_arm(motors.clamp_arm([0.0] * len(motors.arm_joints)))
+    commander.observe_arm(assumed_arm(motors))
     yield _frame(0.0, link.hello(), link)
     period = 1.0 / rate_hz
     tick = 0
@@ -44,6 +44,11 @@ def planned_frames(plan: Plan, link: HostLink, motors: MotorMap, max_accel_rad_s
         tick += 1
     data, _ = commander.stop(tick * period)
     yield _frame(tick * period, data, link)
+
+
+def assumed_arm(motors: MotorMap) -> tuple[float, ...]:
+    """Where a dry run takes the arm to start: 0 rad, or the nearest limit [rad]."""
+    return motors.clamp_arm([0.0] * len(motors.arm_joints))
 
 
 @dataclass(frozen=True)

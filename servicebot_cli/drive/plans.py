@@ -29,7 +29,7 @@ def script_plan(script: ScriptFile, motors: MotorMap, link: HostLink,
     Raises:
         ScriptError: Unreadable, or a line that is wrong (named by number).
     """
-    name = "<stdin>" if script.path == "-" else script.path
+    name = script_name(script)
     text = read_input_text(script.path, kind="a drive script, or '-' for stdin",
                            error=ScriptError)
     steps = parse_script(text, name, motors)
@@ -38,6 +38,19 @@ def script_plan(script: ScriptFile, motors: MotorMap, link: HostLink,
             raise ScriptError(f"{name}:{step.arm_line}: {NO_ARM}")
         warn_if_scaled(step, motors, f"{name}:{step.line}", warn)
     return Plan(steps)
+
+
+def script_name(script: ScriptFile) -> str:
+    """How messages name a script: its path, or ``<stdin>``."""
+    return "<stdin>" if script.path == "-" else script.path
+
+
+def arm_origin(mode: OneShot | ScriptFile) -> Callable[[Step], str]:
+    """Names where a step's arm targets came from: ``tour.txt:3``, or ``--arm``."""
+    if isinstance(mode, OneShot):
+        return lambda step: "--arm"
+    name = script_name(mode)
+    return lambda step: f"{name}:{step.arm_line}"
 
 
 def one_shot_plan(one_shot: OneShot, motors: MotorMap, link: HostLink,

@@ -93,6 +93,9 @@ class DriveRequest:
         boot_s: Time the board needs to boot after the port opens [s].
         max_wheel_rad_s: A wheel speed cap below the URDF's limit (``--max-speed``) [rad/s].
         reconnect_attempts: Reconnect attempts before a lost link ends the run.
+        check_collisions: Refuse arm targets, and ways to them, that put links of the robot
+            into each other or the floor (``ik``'s check); False: ``--allow-collisions``.
+        srdf: An SRDF whose ``<disable_collisions>`` pairs are not checked, or None.
     """
 
     robot: RobotSource
@@ -111,3 +114,5 @@ class DriveRequest:
     boot_s: float = 0.0
     max_wheel_rad_s: float | None = None
     reconnect_attempts: int = DEFAULT_ATTEMPTS
+    check_collisions: bool = True
+    srdf: str | None = None

@@ -11,7 +11,7 @@ PURE = ["protocols/framing", "protocols/messages", "motors", "protocols/events",
         "protocols/binary", "protocols/arduino", "emulator/arduino_firmware", "emulator/firmware",
         "emulator/wire", "plan", "script", "shaping", "session/commander", "dry_run",
         "request", "link_setup", "plans", "emulator/board", "session/inbox",
-        "session/reconnect"]
+        "session/reconnect", "arm_motion", "arm_guard"]
 IO = {"os", "sys", "select", "serial", "time", "pty", "tty", "termios", "subprocess", "socket",
       "click", "signal"}
 

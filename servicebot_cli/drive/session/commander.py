@@ -7,7 +7,7 @@ also integrates the commanded wheel speeds over time: the travel the encoders sh
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Protocol
 
 from servicebot_cli.drive.motors import MotorMap
@@ -71,10 +71,14 @@ class Commander:
         link: The protocol adapter.
         shaper: Twist to limited wheel speeds.
         motors: The robot's motors.
+        arm_guard: Called once with where the firmware first reports the arm, before any
+            arm target is sent; it raises to refuse the plan's arm motion from there.
     """
 
-    def __init__(self, link: HostLink, shaper: WheelShaper, motors: MotorMap) -> None:
+    def __init__(self, link: HostLink, shaper: WheelShaper, motors: MotorMap,
+                 arm_guard: Callable[[tuple[float, ...]], None] | None = None) -> None:
         self.link, self.shaper, self.motors = link, shaper, motors
+        self._arm_guard = arm_guard
         self.commanded_rad_s: tuple[float, ...] = (0.0,) * len(motors.wheel_joints)
         self.travel_rad = [0.0] * len(motors.wheel_joints)
         self.arm_base: tuple[float, ...] | None = None
@@ -95,7 +99,14 @@ class Commander:
         return self.motors.arm_targets(dict(setpoint.arm), base)
 
     def command(self, setpoint: Setpoint, now_s: float, dt_s: float) -> tuple[bytes, int, str]:
-        """``(bytes, token, kind)`` for this tick; kind is ``"wheels"`` or ``"arm"``."""
+        """``(bytes, token, kind)`` for this tick; kind is ``"wheels"`` or ``"arm"``.
+
+        Raises:
+            ServicebotError: What the arm guard raises, the first tick the arm is known.
+        """
+        if self._arm_guard is not None and self.arm_base is not None:
+            guard, self._arm_guard = self._arm_guard, None
+            guard(self.arm_base)
         arm = self.arm_targets(setpoint)
         if arm is not None and arm != self.arm_sent and not self._last_was_arm:
             self._last_was_arm = True
