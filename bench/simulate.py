@@ -7,6 +7,11 @@ The same scenario (the built-in default: a loop in a room, arm moving, every sen
   - in ir-sim (diff-drive rectangle robot, lidar2d with 360 rays, 0.1 s steps, no display).
 Peers come from the `bench` extra: pip install '.[bench]'. A missing peer is reported, not
 faked. Run: python bench/simulate.py [--repeat N]
+
+With --memory it measures instead how peak memory (maximum resident set size) and the
+real-time factor go with the simulated duration: `servicebot simulate --headless
+--duration-s D --out --bag --plot` as a process, for D = 600 s and 7,200 s (the issue's
+bound: the longer run within 1.3 times the shorter's memory).
 """
 
 from __future__ import annotations
@@ -14,7 +19,9 @@ from __future__ import annotations
 import argparse
 import math
 import os
+import re
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
@@ -138,10 +145,45 @@ def _try(name, fn, repeat):
     return statistics.median(walls)
 
 
+def process_run(duration_s: float) -> tuple[float, float]:
+    """Peak RSS [MB] and printed real-time factor of one `servicebot simulate` process."""
+    with tempfile.TemporaryDirectory() as tmp:
+        process = subprocess.Popen(
+            [sys.executable, "-m", "servicebot_cli", "simulate", "--headless", "--duration-s",
+             str(duration_s), "--out", f"{tmp}/out", "--bag", f"{tmp}/bag", "--plot",
+             f"{tmp}/run.png"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        assert process.stderr is not None
+        stderr = process.stderr.read()
+        _, status, usage = os.wait4(process.pid, 0)
+        process.returncode = os.waitstatus_to_exitcode(status)
+        if process.returncode:
+            raise SystemExit(f"servicebot simulate failed: {stderr}")
+    factor = re.search(r"real-time factor (\d+)", stderr)
+    return usage.ru_maxrss / 1024, float(factor.group(1)) if factor else math.nan
+
+
+def memory(repeat: int) -> None:
+    """Peak memory and real-time factor against the simulated duration (medians)."""
+    print(f"servicebot simulate --headless --out --bag --plot, median of {repeat}")
+    print(f"{'simulated [s]':>13} {'peak RSS [MB]':>14} {'RTF':>6}")
+    peaks = {}
+    for duration in (600.0, 7200.0):
+        runs = [process_run(duration) for _ in range(repeat)]
+        peaks[duration] = statistics.median(r[0] for r in runs)
+        print(f"{duration:13.0f} {peaks[duration]:14.0f} "
+              f"{statistics.median(r[1] for r in runs):6.0f}")
+    print(f"7200 s / 600 s peak memory: {peaks[7200.0] / peaks[600.0]:.2f} (bound 1.3)")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=5, help="runs of servicebot (median)")
+    parser.add_argument("--memory", action="store_true",
+                        help="peak memory and RTF of 600 s and 7200 s runs instead")
     args = parser.parse_args()
+    if args.memory:
+        memory(args.repeat)
+        return
     scenario, robot = load_scenario(None), load(RobotSource.bundled("sim"))
     servicebot_run(scenario, robot)  # warm caches (imports, model) once
     rows = [("servicebot simulate (bag written)", _try("servicebot",

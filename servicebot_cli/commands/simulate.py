@@ -121,7 +121,7 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
                               progress=progress, expectations=expectations)
     report = session.run(request, stderr=sys.stderr)
     show_simulation(report, fmt)
-    if not headless:
+    if report.result is not None:  # kept for the live window (not --headless)
         from servicebot_cli.simulate.files.live import show
 
         show(report.result, speed=speed)

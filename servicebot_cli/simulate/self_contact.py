@@ -32,42 +32,63 @@ class SelfContact:
     second: str
 
 
-def self_contacts(robot: RobotDescription, shape: RobotShape, base_height_m: float,
-                  arm_q: FloatArray, dt_s: float) -> list[SelfContact]:
-    """Where the arm's motion puts links into each other or into the floor.
+class SelfContactWatch:
+    """Where the arm's motion puts links into each other or into the floor, a stretch at a time.
 
     Args:
         robot: The description.
-        shape: The robot's parts; its joints are ``arm_q``'s columns.
+        shape: The robot's parts; its joints are the arm positions' columns.
         base_height_m: Height of the base frame above the floor [m].
-        arm_q: Arm positions at tick boundaries, shape (n+1, J).
         dt_s: Control period [s].
     """
-    import pinocchio as pin
 
-    from servicebot_cli.description.packages import PackageResolver
-    from servicebot_cli.kinematics.collisions import build_check
+    def __init__(self, robot: RobotDescription, shape: RobotShape, base_height_m: float,
+                 dt_s: float) -> None:
+        import pinocchio as pin
 
-    model = robot.model
-    check = build_check(robot, model, PackageResolver(context=robot.path.parent))
-    if not check.pairs or not len(arm_q):
-        return []
-    q = np.array(pin.neutral(model))
-    columns = [model.joints[model.getJointId(name)].idx_q for name in shape.joints]
-    changes = np.concatenate(([0], np.flatnonzero(np.any(np.diff(arm_q, axis=0), axis=1)) + 1))
-    changes = changes[_could_touch(robot, shape, base_height_m, arm_q[changes])]
-    events: list[SelfContact] = []
-    touching: set[tuple[str, str]] = set()
-    previous = -2
-    for k in changes:
-        if k != previous + 1:
-            touching = set()  # the ticks in between could not touch
-        q[columns] = arm_q[k]
-        contact = check.contact(q)
-        now = {(contact.first, contact.second)} if contact is not None else set()
-        events += [SelfContact(float(k * dt_s), *pair) for pair in sorted(now - touching)]
-        touching, previous = now, int(k)
-    return events
+        from servicebot_cli.description.packages import PackageResolver
+        from servicebot_cli.kinematics.collisions import build_check
+
+        self.robot, self.shape, self.base_height_m, self.dt_s = robot, shape, base_height_m, dt_s
+        model = robot.model
+        self.check = build_check(robot, model, PackageResolver(context=robot.path.parent))
+        self.q = np.array(pin.neutral(model))
+        self.columns = [model.joints[model.getJointId(name)].idx_q for name in shape.joints]
+        self.touching: set[tuple[str, str]] = set()
+        self.previous = -2  # the last tick checked
+        self.last_q: FloatArray | None = None  # the arm at the last tick seen
+
+    def advance(self, first_tick: int, arm_q: FloatArray) -> list[SelfContact]:
+        """Events among the arm positions (n+1, J) at the boundaries from ``first_tick``."""
+        if not self.check.pairs or not len(arm_q):
+            return []
+        before = arm_q[:1] if self.last_q is None else self.last_q[None]
+        start = 0 if self.last_q is None else 1  # the first boundary was the last one seen
+        changed = np.any(np.diff(np.vstack((before, arm_q[start:])), axis=0), axis=1)
+        changes = np.flatnonzero(changed) + start
+        if self.last_q is None:
+            changes = np.concatenate(([0], changes))
+        self.last_q = arm_q[-1].copy()
+        if len(changes):
+            changes = changes[_could_touch(self.robot, self.shape, self.base_height_m,
+                                           arm_q[changes])]
+        events: list[SelfContact] = []
+        for k in (changes + first_tick).tolist():
+            if k != self.previous + 1:
+                self.touching = set()  # the ticks in between could not touch
+            self.q[self.columns] = arm_q[k - first_tick]
+            contact = self.check.contact(self.q)
+            now = {(contact.first, contact.second)} if contact is not None else set()
+            events += [SelfContact(float(k * self.dt_s), *pair)
+                       for pair in sorted(now - self.touching)]
+            self.touching, self.previous = now, k
+        return events
+
+
+def self_contacts(robot: RobotDescription, shape: RobotShape, base_height_m: float,
+                  arm_q: FloatArray, dt_s: float) -> list[SelfContact]:
+    """Self-contact events of a whole run's arm positions (n+1, J) at tick boundaries."""
+    return SelfContactWatch(robot, shape, base_height_m, dt_s).advance(0, arm_q)
 
 
 def _could_touch(robot: RobotDescription, shape: RobotShape, base_height_m: float,

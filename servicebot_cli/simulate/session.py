@@ -1,17 +1,21 @@
 """One ``simulate`` invocation: a request in, the run's report out, every output written.
 
 Click-free, so the command only builds a :class:`SimulateRequest` and bench/simulate.py can
-drive and time the same function. The progress stream and the clock are injected.
+drive and time the same function. The progress stream and the clock are injected. The run is
+simulated a piece at a time and each piece goes to every output as it comes, so memory does
+not grow with the simulated duration; the live window alone needs the whole run kept.
 """
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
+import math
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, TextIO
+from typing import TYPE_CHECKING, Protocol, TextIO
 
 from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.simulate.scenario.definition import Scenario
@@ -19,7 +23,7 @@ from servicebot_cli.simulate.scenario.definition import Scenario
 if TYPE_CHECKING:
     from servicebot_cli.description.loader import RobotSource
     from servicebot_cli.description.robot import RobotDescription
-    from servicebot_cli.simulate.bag.ros_messages import Stream
+    from servicebot_cli.simulate.bag.ros_messages import Publisher
     from servicebot_cli.simulate.expectations import Expectation
     from servicebot_cli.simulate.simulator import SimResult
     from servicebot_cli.simulate.summary import Summary
@@ -74,15 +78,16 @@ class SimulateRequest:
 
 @dataclass(frozen=True)
 class SimulateReport:
-    """What the command shows: the summary, the wall time of the run [s] and the run itself.
+    """What the command shows: the summary and the wall time of the run [s].
 
-    ``unmet`` holds each expectation the summary does not meet, with the value it has (None
-    when the field has none).
+    ``result`` is the whole run when it was asked to be kept (for the live window), else
+    None. ``unmet`` holds each expectation the summary does not meet, with the value it has
+    (None when the field has none).
     """
 
     summary: Summary
     wall_s: float
-    result: SimResult
+    result: SimResult | None = None
     unmet: tuple[tuple[Expectation, float | None], ...] = ()
 
     @property
@@ -116,7 +121,8 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
     scenario_dir = Path(request.scenario_file).parent if request.scenario_file else Path.cwd()
     report = run_and_write(robot, scenario, seed=request.seed, outputs=request.outputs,
                            scenario_dir=scenario_dir, stderr=stderr, progress=request.progress,
-                           clock=clock, controllers=request.overrides.controllers_file)
+                           clock=clock, controllers=request.overrides.controllers_file,
+                           keep_run=request.live_window)
     unmet = tuple((e, e.value(report.summary)) for e in request.expectations
                   if not e.holds(report.summary))
     return dataclasses.replace(report, unmet=unmet)
@@ -137,11 +143,14 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
                   outputs: Outputs, scenario_dir: Path, stderr: TextIO | None = None,
                   progress: bool | None = None,
                   clock: Callable[[], float] = time.perf_counter,
-                  controllers: str | None = None) -> SimulateReport:
+                  controllers: str | None = None, piece_s: float | None = None,
+                  keep_run: bool = False) -> SimulateReport:
     """Run ``scenario`` on a loaded robot and write ``outputs``; the wall time excludes loading.
 
     The controller's parameters come from the controllers file (``controllers``, else the
-    one the robot names or has beside it) where the scenario does not set them.
+    one the robot names or has beside it) where the scenario does not set them. The run is
+    simulated ``piece_s`` simulated seconds at a time (None: the simulator's default), or in
+    one piece kept in the report with ``keep_run``; the outputs are the same bytes either way.
 
     Raises:
         ServicebotError: Bad scenario for this robot, an unreadable controllers file, or an
@@ -156,52 +165,76 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
     scenario = resolve(scenario, read_controllers_file(find_controllers_file(robot,
                                                                              controllers)))
     from servicebot_cli.simulate import simulator
-    from servicebot_cli.simulate.bag import ros_messages
+    from servicebot_cli.simulate.bag.ros_messages import publishers
     from servicebot_cli.simulate.body import sim_robot
+    from servicebot_cli.simulate.controllers.diff_drive import tick_count
     from servicebot_cli.simulate.files.progress import Progress
-    from servicebot_cli.simulate.summary import summarize
     from servicebot_cli.simulate.world.meshes import load_meshes
     from servicebot_cli.simulate.world.solids import world_solids
 
     start = clock()
     body = sim_robot(robot)
     meshes = load_meshes(scenario, scenario_dir)
-    writers = _writers(outputs)
-    bar = Progress(simulator.scan_count(body, scenario) + len(writers), stderr,
-                   enabled=progress) if stderr is not None else None
-    try:
-        result = simulator.run(body, scenario, seed=seed, solids=world_solids(scenario.world),
-                               meshes=meshes, progress=bar.advance if bar else None)
-        streams = ros_messages.streams(result)
-        summary = summarize(result, streams)
-        for stage, write in writers:
-            if bar:
-                bar.stage(stage)
-            write(result, streams, summary)
-            if bar:
-                bar.advance()
-    finally:  # an error line, or Ctrl-C's, starts on a clean line
-        if bar:
-            bar.close()
-    return SimulateReport(summary, clock() - start, result)
+    piece_s = math.inf if keep_run else simulator.PIECE_S if piece_s is None else piece_s
+    with contextlib.ExitStack() as stack:  # outputs go in place when it closes, unless on error
+        bar = Progress(tick_count(scenario.controller, scenario.duration_s), stderr,
+                       enabled=progress) if stderr is not None else None
+        if bar:  # an error line, or Ctrl-C's, starts on a clean line
+            stack.callback(bar.close)
+        summary, last = _write_pieces(
+            simulator.pieces(body, scenario, seed=seed, solids=world_solids(scenario.world),
+                             meshes=meshes, piece_s=piece_s),
+            outputs, publishers(body), stack, bar.advance if bar else None)
+    return SimulateReport(summary, clock() - start, last if keep_run else None)
 
 
-Writer = Callable[["SimResult", "Sequence[Stream]", "Summary"], None]
-"""Writes one output from the run, its message streams and its summary."""
+def _write_pieces(pieces: Iterator[SimResult], outputs: Outputs, sources: list[Publisher],
+                  stack: contextlib.ExitStack,
+                  advance: Callable[[int], None] | None) -> tuple[Summary, SimResult]:
+    """Give each piece to the summary and to every writer; the summary and the last piece.
+
+    The writers begin with the first piece, which comes once the scenario is checked.
+    """
+    from servicebot_cli.simulate.summary import Summarizer
+
+    summarizer = Summarizer(sources)
+    writers: list[Writer] | None = None
+    for piece in pieces:
+        if writers is None:
+            writers = _writers(outputs, piece, sources, stack)
+        summarizer.add(piece)
+        for writer in writers:
+            writer.add(piece)
+        if advance:
+            advance(piece.plan.ticks)
+    summary = summarizer.summary()
+    for writer in writers or []:
+        writer.finish(summary)
+    return summary, piece
 
 
-def _writers(outputs: Outputs) -> list[tuple[str, Writer]]:
-    """The writers ``outputs`` asks for, in order, each with its progress-bar label."""
-    from servicebot_cli.simulate.bag.rosbag import write_bag
-    from servicebot_cli.simulate.files.csv_out import write_directory
-    from servicebot_cli.simulate.files.plot import write_plot
+class Writer(Protocol):
+    """An output written as the run's pieces come."""
 
-    writers: list[tuple[str, Writer]] = []
-    if (bag := outputs.bag) is not None:
-        writers.append(("writing bag", lambda result, streams, summary: write_bag(bag, streams)))
-    if (out_dir := outputs.out_dir) is not None:
-        writers.append(("writing CSV", lambda result, streams, summary:
-                        write_directory(out_dir, result, summary)))
-    if (plot := outputs.plot) is not None:
-        writers.append(("plotting", lambda result, streams, summary: write_plot(plot, result)))
+    def add(self, piece: SimResult) -> None:
+        """Write what comes from the next piece of the run."""
+
+    def finish(self, summary: Summary) -> None:
+        """Write what needs the whole run (its files go in place when the stack closes)."""
+
+
+def _writers(outputs: Outputs, first: SimResult, sources: list[Publisher],
+             stack: contextlib.ExitStack) -> list[Writer]:
+    """The writers ``outputs`` asks for, begun on ``stack``, for a run starting with ``first``."""
+    from servicebot_cli.simulate.bag.rosbag import BagWriter
+    from servicebot_cli.simulate.files.csv_out import CsvWriter
+    from servicebot_cli.simulate.files.plot import PlotWriter
+
+    writers: list[Writer] = []
+    if outputs.bag is not None:
+        writers.append(BagWriter(outputs.bag, sources, stack))
+    if outputs.out_dir is not None:
+        writers.append(CsvWriter(outputs.out_dir, stack))
+    if outputs.plot is not None:
+        writers.append(PlotWriter(outputs.plot, first))
     return writers

@@ -1,14 +1,19 @@
 """One simulation run: the scenario's commands through the robot's controllers and sensors.
 
-The base's wheel speeds are planned for every control tick first (commands are known ahead),
-the ground truth follows them along exact arcs until an obstacle stops it, and every sensor is
-then sampled from that motion in whole batches. Pure: the robot, the scenario and the seed
-in, a :class:`SimResult` out; progress is reported through an optional callback.
+A run is simulated a stretch of control ticks at a time (a piece, :data:`PIECE_S` simulated
+seconds by default). For each piece the base's wheel speeds are planned (commands are known
+ahead), the ground truth follows them along exact arcs until an obstacle stops it, and every
+sensor is sampled from that motion in whole batches. Every stage carries its state to the
+next piece (the limiter's last commands, the integrators' running sums, each noise
+generator, the contact and clearance records), so the pieces hold the same bits as the run
+computed in one piece, and memory stays flat however long the run is. Pure: the robot, the
+scenario and the seed in, :class:`SimResult` pieces out.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+import math
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -17,25 +22,34 @@ import numpy.typing as npt
 from servicebot_cli.description.sensors import CameraSpec, ImuSpec, LidarSpec
 from servicebot_cli.kinematics import diff_drive
 from servicebot_cli.simulate.body import SimRobot
-from servicebot_cli.simulate.controllers import arm_trajectory as arm
-from servicebot_cli.simulate.controllers.diff_drive import WheelPlan, plan_wheels
+from servicebot_cli.simulate.controllers.arm_trajectory import ArmLimits, ArmMotion
+from servicebot_cli.simulate.controllers.diff_drive import WheelPlan, WheelPlanner
 from servicebot_cli.simulate.scenario.definition import Scenario
 from servicebot_cli.simulate.scenario.world_check import check_scenario
-from servicebot_cli.simulate.self_contact import SelfContact, self_contacts
+from servicebot_cli.simulate.self_contact import SelfContact, SelfContactWatch
 from servicebot_cli.simulate.sensors import camera_info, imu, joint_states, lidar, odometry
-from servicebot_cli.simulate.sensors.noise import stream_rng
-from servicebot_cli.simulate.sensors.sample import sample_times
+from servicebot_cli.simulate.sensors.noise import Noise, stream_rng
+from servicebot_cli.simulate.sensors.sample import SampleClock, sample_count
 from servicebot_cli.simulate.world import motion
 from servicebot_cli.simulate.world.contacts import Closest, Tester, closest, obstacles, posed_parts
 from servicebot_cli.simulate.world.raycast import Mesh
 from servicebot_cli.simulate.world.solids import Solid
 
 FloatArray = npt.NDArray[np.float64]
+IntArray = npt.NDArray[np.int64]
+PIECE_S = 30.0
+"""Simulated seconds per piece: long enough for numpy to work in bulk, short for memory."""
 
 
 @dataclass(frozen=True, eq=False)
 class SimResult:
-    """Everything a run produced; writers and the summary read from here."""
+    """What a run produced over ticks ``first_tick`` .. ``first_tick + plan.ticks - 1``.
+
+    A piece of the run, or all of it (``first_tick`` 0 and ``run_ticks`` ticks). Arrays at
+    tick boundaries hold the piece's ticks and the boundary after its last; samples are
+    those the piece's ticks hold. ``contacts`` and ``self_contacts`` began in the piece;
+    ``closest`` is the record so far, over this piece and the ones before it.
+    """
 
     body: SimRobot
     scenario: Scenario
@@ -50,87 +64,192 @@ class SimResult:
     odometry: odometry.Odometry
     joints: joint_states.JointStates
     arm_positions_rad: FloatArray  # (n+1, arm joints) at tick boundaries
-    closest: Closest  # over tick boundaries; its part indexes body.shape.parts
+    closest: Closest  # its index is a tick, its part indexes body.shape.parts
     scans: lidar.Scans | None
     imu: imu.ImuSamples | None
     camera: camera_info.Intrinsics | None
     camera_times_s: FloatArray
+    first_tick: int = 0
+    run_ticks: int = 0
+
+    @property
+    def first(self) -> bool:
+        """This piece starts the run."""
+        return self.first_tick == 0
+
+    @property
+    def last(self) -> bool:
+        """This piece ends the run."""
+        return self.first_tick + self.plan.ticks >= self.run_ticks
+
+
+def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[Solid],
+           meshes: Sequence[Mesh] = (), piece_s: float = PIECE_S) -> Iterator[SimResult]:
+    """Simulate ``scenario`` a piece of ``piece_s`` simulated seconds at a time.
+
+    The scenario is checked against the robot and the world before the first piece.
+
+    Raises:
+        ScenarioError: The arm's goal or the start pose does not fit the robot or the world.
+    """
+    run = _Run(body, scenario, seed, list(solids), meshes)
+    step = max(1, round(piece_s / run.dt_s)) if math.isfinite(piece_s) else run.ticks
+    for first in range(0, run.ticks, step):
+        yield run.piece(range(first, min(first + step, run.ticks)))
 
 
 def run(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[Solid],
-        meshes: Sequence[Mesh] = (), progress: Callable[[int], None] | None = None) -> SimResult:
-    """Simulate ``scenario``; ``progress`` is told how many LIDAR scans were cast."""
-    solids = list(solids)
-    tester = Tester(body.shape, obstacles(solids, meshes))
-    arm_q0 = check_scenario(body, scenario, solids, meshes, tester)
-    geometry, ctrl = body.geometry, scenario.controller
-    plan = plan_wheels(scenario.cmd_vel, ctrl, geometry, scenario.duration_s)
-    dt, n = plan.dt_s, plan.ticks
-    ticks = np.arange(n + 1, dtype=np.float64) * dt
-    arm_q = _arm_positions(body, scenario, arm_q0, ticks, dt)
-    truth, contacts = _ground_truth(body, scenario, plan, tester, arm_q)
-    sides = np.vstack((np.zeros((1, 2)), np.cumsum(np.column_stack((plan.left_rad_s,
-                                                                     plan.right_rad_s)) * dt, 0)))
-    odom_path = odometry.dead_reckoning(
-        plan.left_rad_s, plan.right_rad_s, dt, wheel_radius_m=geometry.wheel_radius_m,
-        track_m=geometry.track_m * ctrl.wheel_separation_multiplier)
-    names, positions = _joint_positions(body, sides, arm_q)
-    publish = sample_times(ctrl.publish_rate_hz, scenario.duration_s)
-    nearest = closest(tester, posed_parts(body.shape, truth.x_m, truth.y_m, truth.yaw_rad,
-                                          body.base_height_m, arm_q))
-    return SimResult(
-        body, scenario, seed, solids, [o.name for o in tester.world], plan, truth, contacts,
-        self_contacts(body.robot, body.shape, body.base_height_m, arm_q, dt)
-        if body.arm_joints else [],
-        sides,
-        odometry.published(odom_path, publish),
-        joint_states.at_times(names, positions, dt,
-                              sample_times(scenario.rates.joint_states_hz, scenario.duration_s)),
-        arm_q, nearest,
-        _scans(body, scenario, truth, arm_q, solids, meshes, seed, progress),
-        _imu(body, scenario, truth, seed),
-        camera_info.intrinsics(body.camera.spec) if body.camera else None,
-        sample_times(_rate(body.camera.spec, scenario), scenario.duration_s)
-        if body.camera else np.zeros(0),
-    )
+        meshes: Sequence[Mesh] = ()) -> SimResult:
+    """Simulate ``scenario`` in one piece: every tick of the run in memory at once."""
+    [whole] = pieces(body, scenario, seed=seed, solids=solids, meshes=meshes,
+                     piece_s=math.inf)
+    return whole
 
 
-def _ground_truth(body: SimRobot, scenario: Scenario, plan: WheelPlan, tester: Tester,
-                  arm_q: FloatArray) -> tuple[motion.Path2D, list[motion.Contact]]:
-    """The base's real motion: wheel speeds through the floor's slip, stopped by obstacles.
+class _Run:
+    """The state of a run between pieces."""
 
-    Any link touching an obstacle (with the arm where it is at that tick) stops the base.
-    """
-    geometry, slip = body.geometry, scenario.slip
-    linear, angular = diff_drive.body_twist(
-        plan.left_rad_s, plan.right_rad_s,  # type: ignore[arg-type]  # body_twist is typed for floats
-        wheel_radius_m=geometry.wheel_radius_m, track_m=geometry.track_m * slip.track_factor)
-    keep = 1.0 - slip.longitudinal
-    start = scenario.initial_pose
+    def __init__(self, body: SimRobot, scenario: Scenario, seed: int, solids: list[Solid],
+                 meshes: Sequence[Mesh]) -> None:
+        self.body, self.scenario, self.seed, self.solids = body, scenario, seed, solids
+        self.meshes = meshes
+        self.tester = Tester(body.shape, obstacles(solids, meshes))
+        arm_q0 = check_scenario(body, scenario, solids, meshes, self.tester)
+        geometry, ctrl, start = body.geometry, scenario.controller, scenario.initial_pose
+        self.planner = WheelPlanner(scenario.cmd_vel, ctrl, geometry, scenario.duration_s)
+        self.dt_s, self.ticks = self.planner.dt_s, self.planner.ticks
+        self.arm = _arm_motion(body, scenario, arm_q0, self.dt_s)
+        self.motion = motion.BlockedMotion((start.x_m, start.y_m, start.yaw_rad), self.dt_s,
+                                           [o.name for o in self.tester.world],
+                                           body.shape.links)
+        self.odometer = odometry.Odometer(
+            self.dt_s, wheel_radius_m=geometry.wheel_radius_m,
+            track_m=geometry.track_m * ctrl.wheel_separation_multiplier)
+        self.wheel_angles = np.zeros(2)  # left, right at the piece's first boundary [rad]
+        self.wheel_sums = np.array([-0.0, -0.0])  # -0.0 + v == v: an empty running sum
+        self.self_contacts = (SelfContactWatch(body.robot, body.shape, body.base_height_m,
+                                               self.dt_s) if body.arm_joints else None)
+        self.record = Closest(float("inf"), -1, -1, -1)
+        self.twist_before = (0.0, 0.0)  # the followed twist of the tick before the piece
+        duration = scenario.duration_s
+        self.clocks = {
+            "odometry": SampleClock(ctrl.publish_rate_hz, duration, self.dt_s),
+            "joints": SampleClock(scenario.rates.joint_states_hz, duration, self.dt_s)}
+        self.scan_noise: Noise | None = None
+        if body.lidar is not None:
+            self.clocks["scan"] = SampleClock(_rate(body.lidar.spec, scenario), duration,
+                                              self.dt_s)
+            self.scan_noise = Noise(body.lidar.spec.noise, stream_rng(seed, "scan"))
+            self.rays = lidar.ray_directions(body.lidar.spec,
+                                             body.lidar.transform_sensor_to_base)
+        self.imu_noise: list[Noise] = []
+        if body.imu is not None:
+            rate = _rate(body.imu.spec, scenario)
+            self.clocks["imu"] = SampleClock(rate, duration, self.dt_s)
+            self.imu_noise = imu.axis_noises(body.imu.spec, stream_rng(seed, "imu"),
+                                             sample_count(rate, duration))
+        self.camera = camera_info.intrinsics(body.camera.spec) if body.camera else None
+        if body.camera is not None:
+            self.clocks["camera"] = SampleClock(_rate(body.camera.spec, scenario), duration,
+                                                self.dt_s)
 
-    def collides(ticks: npt.NDArray[np.int64], x: FloatArray, y: FloatArray,
-                 yaw: FloatArray) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]:
-        return tester.first_hits(posed_parts(body.shape, x, y, yaw, body.base_height_m,
-                                             arm_q[ticks]))
+    def piece(self, ticks: range) -> SimResult:
+        """Simulate ``ticks``, the ticks after those of the pieces before."""
+        body, first = self.body, ticks.start
+        stop = None if ticks.stop >= self.ticks else ticks.stop  # None: every sample left
+        plan = self.planner.plan(ticks)
+        arm_q = self.arm.advance(np.arange(first, ticks.stop + 1, dtype=np.float64) * self.dt_s)
+        truth, contacts = self._ground_truth(first, plan, arm_q)
+        sides = self._wheel_angles(plan)
+        odom_path, odom_before = self.odometer.advance(first, plan.left_rad_s, plan.right_rad_s)
+        names, positions = _joint_positions(body, sides, arm_q)
+        piece = SimResult(
+            body, self.scenario, self.seed, self.solids, [o.name for o in self.tester.world],
+            plan, truth, contacts,
+            self.self_contacts.advance(first, arm_q) if self.self_contacts else [],
+            sides, odometry.published(odom_path, self.clocks["odometry"].take(stop), odom_before),
+            joint_states.at_times(names, positions, self.dt_s,
+                                  self.clocks["joints"].take(stop), first),
+            arm_q, self._closest(first, truth, arm_q), self._scans(truth, arm_q, stop),
+            self._imu(truth, stop), self.camera,
+            self.clocks["camera"].take(stop) if "camera" in self.clocks else np.zeros(0),
+            first, self.ticks)
+        self.twist_before = (float(truth.linear_m_s[-1]), float(truth.angular_rad_s[-1]))
+        return piece
 
-    return motion.integrate_blocked((start.x_m, start.y_m, start.yaw_rad),
-                                    np.asarray(linear) * keep, np.asarray(angular) * keep,
-                                    plan.dt_s, collides, [o.name for o in tester.world],
-                                    body.shape.links)
+    def _ground_truth(self, first: int, plan: WheelPlan,
+                      arm_q: FloatArray) -> tuple[motion.Path2D, list[motion.Contact]]:
+        """The base's real motion: wheel speeds through the floor's slip, stopped by obstacles.
+
+        Any link touching an obstacle (with the arm where it is at that tick) stops the base.
+        """
+        body, slip = self.body, self.scenario.slip
+        linear, angular = diff_drive.body_twist(
+            plan.left_rad_s, plan.right_rad_s,  # type: ignore[arg-type]  # body_twist is typed for floats
+            wheel_radius_m=body.geometry.wheel_radius_m,
+            track_m=body.geometry.track_m * slip.track_factor)
+        keep = 1.0 - slip.longitudinal
+
+        def collides(ticks: IntArray, x: FloatArray, y: FloatArray,
+                     yaw: FloatArray) -> tuple[IntArray, IntArray]:
+            return self.tester.first_hits(posed_parts(body.shape, x, y, yaw, body.base_height_m,
+                                                      arm_q[ticks - first]))
+
+        return self.motion.advance(first, np.asarray(linear) * keep, np.asarray(angular) * keep,
+                                   collides)
+
+    def _wheel_angles(self, plan: WheelPlan) -> FloatArray:
+        """Left and right side angles at the piece's tick boundaries, shape (n+1, 2)."""
+        turned = np.column_stack((plan.left_rad_s, plan.right_rad_s)) * plan.dt_s
+        sums = np.cumsum(np.vstack((self.wheel_sums, turned)), axis=0)
+        angles = np.vstack((self.wheel_angles, sums[1:]))
+        self.wheel_sums = self.wheel_angles = sums[-1]
+        return angles
+
+    def _closest(self, first: int, truth: motion.Path2D, arm_q: FloatArray) -> Closest:
+        """The clearance record, with the piece's poses (each distinct one measured once)."""
+        lo = 0 if first == 0 else 1  # the piece's first boundary ended the piece before
+        rows = np.column_stack((truth.x_m[lo:], truth.y_m[lo:], truth.yaw_rad[lo:], arm_q[lo:]))
+        _, index = np.unique(rows, axis=0, return_index=True)
+        index = np.sort(index) + lo  # the first tick of each distinct pose, in time order
+        body = self.body
+        found = closest(self.tester, posed_parts(body.shape, truth.x_m[index], truth.y_m[index],
+                                                 truth.yaw_rad[index], body.base_height_m,
+                                                 arm_q[index]), below=self.record.distance_m)
+        if found.index >= 0:
+            self.record = Closest(found.distance_m, first + int(index[found.index]),
+                                  found.obstacle, found.part)
+        return self.record
+
+    def _scans(self, truth: motion.Path2D, arm_q: FloatArray,
+               stop: int | None) -> lidar.Scans | None:
+        """The LIDAR's scans: the world and the robot's own links (the arm where it is)."""
+        mounted = self.body.lidar
+        if mounted is None or self.scan_noise is None:
+            return None
+        times = self.clocks["scan"].take(stop)
+        spec, mount = mounted.spec, mounted.transform_sensor_to_base
+        boundary = truth.tick_index(times, boundaries=True)  # the arm at the tick's start
+        own = lidar.own_ranges(self.body.shape, mounted.link, mount, self.rays, arm_q[boundary])
+        return lidar.scan(spec, mount, self.body.base_height_m, truth, times, self.solids,
+                          self.meshes, self.scan_noise, own_m=own,
+                          period_s=self.clocks["scan"].period_s)
+
+    def _imu(self, truth: motion.Path2D, stop: int | None) -> imu.ImuSamples | None:
+        mounted = self.body.imu
+        if mounted is None:
+            return None
+        return imu.measure(mounted.spec, mounted.transform_sensor_to_base, truth,
+                           self.clocks["imu"].take(stop), self.imu_noise, self.twist_before)
 
 
-def _arm_positions(body: SimRobot, scenario: Scenario, q0: FloatArray, ticks: FloatArray,
-                   dt: float) -> FloatArray:
+def _arm_motion(body: SimRobot, scenario: Scenario, q0: FloatArray, dt_s: float) -> ArmMotion:
+    """The arm's joints (URDF order) following the scenario's trajectory within their limits."""
     space = body.joint_space
     index = [space.index(name) for name in body.arm_joints]
-    limits = arm.ArmLimits(space.lower[index], space.upper[index], space.velocity[index])
-    trajectory = scenario.arm
-    if not trajectory.points:
-        return np.broadcast_to(q0, (len(ticks), len(q0))).copy()
-    order = [body.arm_joints.index(name) for name in trajectory.joint_names]
-    ref = np.broadcast_to(q0, (len(ticks), len(q0))).copy()
-    ref[:, order] = arm.reference(trajectory, q0[order], ticks)
-    return arm.follow(ref, q0, limits, dt)
+    limits = ArmLimits(space.lower[index], space.upper[index], space.velocity[index])
+    order = [body.arm_joints.index(name) for name in scenario.arm.joint_names]
+    return ArmMotion(scenario.arm, order, q0, limits, dt_s)
 
 
 def _joint_positions(body: SimRobot, sides: FloatArray,
@@ -148,38 +267,6 @@ def _joint_positions(body: SimRobot, sides: FloatArray,
         else:
             columns.append(np.zeros(len(sides)))
     return names, np.column_stack(columns)
-
-
-def _scans(body: SimRobot, scenario: Scenario, truth: motion.Path2D, arm_q: FloatArray,
-           solids: list[Solid], meshes: Sequence[Mesh], seed: int,
-           progress: Callable[[int], None] | None) -> lidar.Scans | None:
-    """The LIDAR's scans: the world and the robot's own links (the arm where it is)."""
-    if body.lidar is None:
-        return None
-    spec, mount = body.lidar.spec, body.lidar.transform_sensor_to_base
-    times = sample_times(_rate(spec, scenario), scenario.duration_s)
-    ticks = np.clip(np.floor(times / truth.dt_s + 1e-9).astype(np.int64), 0, len(arm_q) - 1)
-    own = lidar.own_ranges(body.shape, body.lidar.link, mount,
-                           lidar.ray_directions(spec, mount), arm_q[ticks])
-    return lidar.scan(spec, mount, body.base_height_m, truth, times, solids, meshes,
-                      stream_rng(seed, "scan"), progress, own)
-
-
-def _imu(body: SimRobot, scenario: Scenario, truth: motion.Path2D,
-         seed: int) -> imu.ImuSamples | None:
-    if body.imu is None:
-        return None
-    spec = body.imu.spec
-    times = sample_times(_rate(spec, scenario), scenario.duration_s)
-    return imu.measure(spec, body.imu.transform_sensor_to_base, truth, times,
-                       stream_rng(seed, "imu"))
-
-
-def scan_count(body: SimRobot, scenario: Scenario) -> int:
-    """How many scans a run will cast (the progress bar's length)."""
-    if body.lidar is None:
-        return 0
-    return len(sample_times(_rate(body.lidar.spec, scenario), scenario.duration_s))
 
 
 def _rate(spec: LidarSpec | ImuSpec | CameraSpec, scenario: Scenario) -> float:

@@ -1,22 +1,23 @@
 """What a run comes to: distance, final poses, odometry drift, contacts, clearance, counts.
 
 The summary is what ``summary.json`` holds and ``--format json`` prints (keys documented in
-README.md). It carries no wall-clock time, so the same seed gives the same bytes.
+README.md). It carries no wall-clock time, so the same seed gives the same bytes. It is
+gathered a piece of the run at a time (:class:`Summarizer`); the distance is summed in tick
+order, so it does not depend on where the pieces split the run.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from typing import TypedDict
 
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.simulate.bag.ros_messages import Stream
+from servicebot_cli.simulate.bag.ros_messages import Publisher
 from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.simulator import SimResult
-from servicebot_cli.simulate.world.motion import Contact
+from servicebot_cli.simulate.world.motion import Contact, pose_at
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -105,44 +106,80 @@ def odometry_in_world(result: SimResult) -> tuple[FloatArray, FloatArray, FloatA
             start.yaw_rad + odom.yaw_rad)
 
 
-def summarize(result: SimResult, streams: Sequence[Stream]) -> Summary:
-    """The run's summary as plain JSON-ready values."""
-    truth = result.truth
-    distance = float(np.sum(np.hypot(np.diff(truth.x_m), np.diff(truth.y_m))))
+def odometry_drift(result: SimResult) -> tuple[FloatArray, FloatArray]:
+    """Position error [m] and yaw error [rad] of each odometry sample against the truth."""
     ox, oy, oyaw = odometry_in_world(result)
-    from servicebot_cli.simulate.world.motion import pose_at
+    tx, ty, tyaw = pose_at(result.truth, result.odometry.times_s)
+    return np.hypot(ox - tx, oy - ty), oyaw - tyaw
 
-    tx, ty, tyaw = pose_at(truth, result.odometry.times_s)
-    drift = np.hypot(ox - tx, oy - ty)
-    closest = result.closest
-    return {
-        "robot": result.body.robot.name,
-        "scenario": result.scenario.name,
-        "seed": result.seed,
-        "duration_s": result.scenario.duration_s,
-        "distance_m": distance,
-        "final_pose": _pose(truth.x_m[-1], truth.y_m[-1], truth.yaw_rad[-1]),
-        "odometry_final_pose": _pose(ox[-1], oy[-1], oyaw[-1]) if len(ox) else None,
-        "odometry_drift": {
-            "final_position_m": float(drift[-1]) if len(drift) else 0.0,
-            "max_position_m": float(drift.max()) if len(drift) else 0.0,
-            "final_yaw_rad": float(abs(math.remainder(oyaw[-1] - tyaw[-1], math.tau)))
-            if len(drift) else 0.0,
-        },
-        "collisions": [_collision(c) for c in result.contacts],
-        "self_collisions": [{"time_s": c.time_s, "first": c.first, "second": c.second}
-                            for c in result.self_contacts],
-        "min_obstacle_distance_m": 0.0 if result.contacts else closest.distance_m,
-        "closest_obstacle": result.obstacle_names[closest.obstacle]
-        if closest.obstacle >= 0 else None,
-        "closest_link": result.body.shape.parts[closest.part].link if closest.part >= 0 else None,
-        "closest_time_s": closest.index * truth.dt_s if closest.index >= 0 else None,
-        "arm_final_positions_rad": dict(zip(result.body.arm_joints,
-                                            result.arm_positions_rad[-1].tolist(), strict=True)),
-        "end_effector": end_effector(result),
-        "messages": {s.topic: len(s.payloads) for s in streams},
-        "controller": _controller(result),
-    }
+
+class Summarizer:
+    """The summary of a run, gathered from its pieces in order."""
+
+    def __init__(self, publishers: list[Publisher]) -> None:
+        self.publishers = publishers
+        self.messages = dict.fromkeys((p.topic for p in publishers), 0)
+        self.distance_sum = -0.0  # -0.0 + v == v: an empty running sum
+        self.max_drift, self.final_drift = 0.0, (0.0, 0.0)
+        self.odometry_pose: Pose | None = None
+        self.joint_positions: FloatArray | None = None
+        self.contacts: list[Contact] = []
+        self.self_collisions: list[SelfCollision] = []
+        self.last: SimResult | None = None
+
+    def add(self, piece: SimResult) -> None:
+        """Count in the next piece of the run."""
+        truth = piece.truth
+        steps = np.hypot(np.diff(truth.x_m), np.diff(truth.y_m))
+        self.distance_sum = float(np.cumsum(np.concatenate(([self.distance_sum], steps)))[-1])
+        if len(piece.odometry.times_s):
+            drift, yaw = odometry_drift(piece)
+            ox, oy, oyaw = odometry_in_world(piece)
+            self.max_drift = max(self.max_drift, float(drift.max()))
+            self.final_drift = (float(drift[-1]), float(yaw[-1]))
+            self.odometry_pose = _pose(ox[-1], oy[-1], oyaw[-1])
+        if len(piece.joints.times_s):
+            self.joint_positions = piece.joints.positions[-1]
+        self.contacts += piece.contacts
+        self.self_collisions += [{"time_s": c.time_s, "first": c.first, "second": c.second}
+                                 for c in piece.self_contacts]
+        for publisher in self.publishers:
+            self.messages[publisher.topic] += len(publisher.times(piece))
+        self.last = piece
+
+    def summary(self) -> Summary:
+        """The summary of the pieces added; the last one must end the run."""
+        last = self.last
+        assert last is not None and last.last, "a summary needs the whole run"
+        truth, closest = last.truth, last.closest
+        return {
+            "robot": last.body.robot.name,
+            "scenario": last.scenario.name,
+            "seed": last.seed,
+            "duration_s": last.scenario.duration_s,
+            "distance_m": self.distance_sum + 0.0,
+            "final_pose": _pose(truth.x_m[-1], truth.y_m[-1], truth.yaw_rad[-1]),
+            "odometry_final_pose": self.odometry_pose,
+            "odometry_drift": {
+                "final_position_m": self.final_drift[0],
+                "max_position_m": self.max_drift,
+                "final_yaw_rad": float(abs(math.remainder(self.final_drift[1], math.tau))),
+            },
+            "collisions": [_collision(c) for c in self.contacts],
+            "self_collisions": self.self_collisions,
+            "min_obstacle_distance_m": 0.0 if self.contacts else closest.distance_m,
+            "closest_obstacle": last.obstacle_names[closest.obstacle]
+            if closest.obstacle >= 0 else None,
+            "closest_link": last.body.shape.parts[closest.part].link
+            if closest.part >= 0 else None,
+            "closest_time_s": closest.index * truth.dt_s if closest.index >= 0 else None,
+            "arm_final_positions_rad": dict(zip(last.body.arm_joints,
+                                                last.arm_positions_rad[-1].tolist(),
+                                                strict=True)),
+            "end_effector": end_effector(last, self.joint_positions),
+            "messages": dict(self.messages),
+            "controller": _controller(last),
+        }
 
 
 def _controller(result: SimResult) -> dict[str, ControllerValue]:
@@ -164,11 +201,12 @@ def _collision(contact: Contact) -> Collision:
             "y_m": pose["y_m"], "yaw_rad": pose["yaw_rad"]}
 
 
-def end_effector(result: SimResult) -> EndEffector | None:
+def end_effector(result: SimResult, joint_positions: FloatArray | None) -> EndEffector | None:
     """World position of the arm's last frame in the final configuration of the whole robot.
 
-    One Pinocchio configuration holds the planar base (x, y, cos, sin of yaw), every wheel
-    and every arm joint.
+    One Pinocchio configuration holds the planar base (x, y, cos, sin of yaw, from the last
+    piece ``result``), every wheel and every arm joint (the last joint state published, in
+    URDF order; all zero when none was).
     """
     import pinocchio as pin
 
@@ -177,7 +215,7 @@ def end_effector(result: SimResult) -> EndEffector | None:
     if tip is None:
         return None
     model, space = body.model, body.joint_space
-    q = space.to_q(result.joints.positions[-1] if len(result.joints.times_s)
+    q = space.to_q(joint_positions if joint_positions is not None
                    else np.zeros(len(space.names)))
     yaw = result.truth.yaw_rad[-1]
     q[:4] = (result.truth.x_m[-1], result.truth.y_m[-1], math.cos(yaw), math.sin(yaw))

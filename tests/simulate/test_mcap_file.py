@@ -78,3 +78,28 @@ def test_no_messages_is_a_valid_file():
     data = _write([], [], [])
     summary = make_reader(io.BytesIO(data)).get_summary()
     assert summary.statistics.message_count == 0 and len(summary.channels) == 4
+
+
+def test_messages_added_in_batches_give_the_same_file():
+    from servicebot_cli.simulate.bag.mcap_file import McapWriter
+
+    rng = np.random.default_rng(9)
+    n = 400
+    channel_ids = rng.integers(0, 3, n)
+    times = np.cumsum(rng.integers(0, 3, n)).astype(np.uint64)
+    payloads = [bytes(rng.integers(0, 256, rng.integers(0, 60), dtype=np.uint8))
+                for _ in range(n)]
+    whole = _write(channel_ids.tolist(), times.tolist(), payloads, chunk_size=500)
+    sequences = np.zeros(n, dtype=np.uint32)
+    for channel in range(3):
+        mine = np.flatnonzero(channel_ids == channel)
+        sequences[mine] = np.arange(len(mine))
+    buffer = io.BytesIO()
+    writer = McapWriter(buffer, CHANNELS, profile="ros2", library="test", chunk_size=500)
+    cuts = [0, 0, 1, 17, 17, 150, 151, 399, n]  # empty batches, single messages, long ones
+    for a, b in zip(cuts, cuts[1:], strict=False):
+        writer.add(channel_ids[a:b].astype(np.uint16), sequences[a:b], times[a:b],
+                   payloads[a:b])
+    writer.finish()
+    assert buffer.getvalue() == whole
+    assert len(make_reader(io.BytesIO(whole)).get_summary().chunk_indexes) > 3

@@ -10,6 +10,7 @@ import pytest
 from servicebot_cli.description.sensors import LidarSpec, NoiseSpec
 from servicebot_cli.simulate.bag.msgdefs import MESSAGE_DEFINITIONS
 from servicebot_cli.simulate.sensors.lidar import readings
+from servicebot_cli.simulate.sensors.noise import Noise
 from tests.simulate.helpers import body, run
 
 BODY = body()
@@ -56,7 +57,8 @@ def test_lidar_does_not_see_a_box_below_its_scan_plane():
 def test_lidar_readings_follow_rep_117():
     spec = LidarSpec(4, 1.0, 0.0, 1.0, 0.12, 12.0, 0.015, 10.0,
                      NoiseSpec("gaussian", 0.0, 0.0), "lidar_link", "scan")
-    values = readings(np.array([[0.05, 1.0071, 11.999, 30.0]]), spec, np.random.default_rng(0))
+    values = readings(np.array([[0.05, 1.0071, 11.999, 30.0]]), spec,
+                      Noise(spec.noise, np.random.default_rng(0)))
     assert values[0, 0] == -np.inf  # closer than min
     assert values[0, 1] == pytest.approx(1.005)  # rounded to the resolution
     assert values[0, 2] == 12.0  # clipped to max

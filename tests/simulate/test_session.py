@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -29,7 +30,7 @@ def test_run_returns_the_summary_and_the_wall_time_of_the_run(tmp_path):
     assert isinstance(report, SimulateReport)
     assert report.wall_s == 0.5 and report.real_time_factor == pytest.approx(10.0)
     assert report.summary["duration_s"] == 5.0 and report.summary["seed"] == 3
-    assert report.result.scenario.duration_s == 5.0
+    assert report.result is None  # streamed to the outputs, not kept
     assert json.loads((tmp_path / "out" / "summary.json").read_text()) == json.loads(
         dumps(report.summary))
     assert speed_line(report) == "simulated 5 s in 0.50 s (real-time factor 10)"
@@ -43,13 +44,15 @@ def test_overrides_replace_only_what_they_name(tmp_path):
                         "saturation: per-wheel}\n")
     request = SimulateRequest(RobotSource.bundled("sim"), str(scenario),
                               Overrides(wheel_separation_multiplier=1.2))
-    controller = session.run(request).result.scenario.controller
-    assert (controller.wheel_separation_multiplier, controller.cmd_vel_timeout_s,
-            controller.saturation) == (1.2, 0.25, "per-wheel")
+    controller = session.run(request).summary["controller"]
+    assert (controller["wheel_separation_multiplier"], controller["cmd_vel_timeout_s"],
+            controller["saturation"]) == ({"value": 1.2, "source": "command line"},
+                                          {"value": 0.25, "source": "scenario"},
+                                          {"value": "per-wheel", "source": "scenario"})
     changed = session.run(dataclasses.replace(
         request, overrides=Overrides(duration_s=1.0, saturation="keep-curvature")))
-    assert changed.result.scenario.duration_s == 1.0
-    assert changed.result.scenario.controller.saturation == "keep-curvature"
+    assert changed.summary["duration_s"] == 1.0
+    assert changed.summary["controller"]["saturation"]["value"] == "keep-curvature"
 
 
 def test_live_window_without_a_display_is_refused_before_any_work(tmp_path, monkeypatch):
@@ -65,11 +68,16 @@ def test_live_window_without_a_display_is_refused_before_any_work(tmp_path, monk
 def test_live_window_frame_draws_the_path_up_to_its_time():
     from matplotlib.figure import Figure
 
+    from servicebot_cli.description.loader import load
     from servicebot_cli.simulate.files import live
+    from servicebot_cli.simulate.scenario.definition import load_scenario
     from servicebot_cli.simulate.summary import odometry_in_world
 
-    result = session.run(SimulateRequest(RobotSource.bundled("sim"),
-                                         overrides=Overrides(duration_s=4.0))).result
+    scenario = dataclasses.replace(load_scenario(None), duration_s=4.0)
+    result = session.run_and_write(load(RobotSource.bundled("sim")), scenario, seed=0,
+                                   outputs=Outputs(), scenario_dir=Path.cwd(),
+                                   keep_run=True).result  # as for the live window
+    assert result is not None and result.first and result.last
     ax = Figure().add_subplot()
     artists = live._artists(ax)
     ox, oy, _ = odometry_in_world(result)

@@ -77,7 +77,7 @@ def test_sigterm_while_files_are_written_into_an_existing_out_directory(tmp_path
 
 
 def test_sigterm_while_simulating_writes_nothing(tmp_path):
-    """Signalled mid-run (the progress bar is drawing): no output is begun."""
+    """Signalled mid-run (the progress bar is drawing): every output begun is removed."""
     process = _start(tmp_path, "--duration-s", "1800", "--bag", "B", "--out", "O",
                      "--plot", "p.png", "--progress")
     drawn = threading.Event()

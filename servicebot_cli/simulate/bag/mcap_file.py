@@ -1,14 +1,15 @@
-"""An MCAP file written in bulk: every message is known before the first byte is written.
+"""An MCAP file written in batches of messages, each batch's record headers built at once.
 
 The format is https://mcap.dev/spec, laid out as the reference writer does it: magic, header,
 schemas and channels, zstd chunks of about ``chunk_size`` bytes each followed by their message
 indexes, data end, then a summary (schemas, channels, statistics, chunk indexes), summary
 offsets, footer and magic. Readers (Foxglove, ``ros2 bag``, the ``mcap`` and ``rosbags``
-libraries) seek through the indexes.
+libraries) seek through the indexes. Only the chunk being filled is held in memory; the
+file's bytes do not depend on how the messages are split into batches.
 
 Why not the ``mcap`` package's writer: it builds each message record in Python, about 4 us a
 message; a three-minute run has 60 000 of them, half the simulator's time. Here the record
-headers of all messages are one numpy array and a chunk is one ``bytes.join``.
+headers of a batch are one numpy array and a chunk is one ``bytes.join``.
 """
 
 from __future__ import annotations
@@ -82,53 +83,107 @@ class _Output:
         return start
 
 
+class McapWriter:
+    """Writes one MCAP file; messages are added in batches, in log time order.
+
+    Args:
+        handle: A binary file open for writing, at its start.
+        channels: The channels; a message's channel id is its index here.
+        profile: The MCAP profile (``ros2``).
+        library: What wrote the file.
+        chunk_size: Uncompressed bytes per chunk, roughly: a chunk ends before the message
+            whose record starts past the next multiple of ``chunk_size`` (counted from the
+            first record).
+    """
+
+    def __init__(self, handle: BinaryIO, channels: Sequence[Channel], *, profile: str,
+                 library: str, chunk_size: int = 1 << 20) -> None:
+        import zstandard
+
+        self.out, self.chunk_size, self.channels = _Output(handle), chunk_size, channels
+        self.compressor = zstandard.ZstdCompressor()
+        self.out.write(MAGIC)
+        self.out.write(_record(_HEADER, _string(profile) + _string(library)))
+        self.schemas, self.channel_records = _schemas_and_channels(channels)
+        self.out.write(b"".join(self.schemas) + b"".join(self.channel_records))
+        self.written = 0  # record bytes added so far
+        self.open_chunk = -1  # written // chunk_size of the chunk being filled
+        self.heads: list[np.ndarray] = []  # the chunk being filled: record headers,
+        self.payloads: list[bytes] = []  # payloads and offsets in it
+        self.offsets: list[npt.NDArray[np.int64]] = []
+        self.chunk_indexes: list[bytes] = []
+        self.counts = np.zeros(len(channels), dtype=np.int64)
+        self.first_time = self.last_time = 0
+
+    def add(self, channel_ids: npt.NDArray[np.integer], sequences: npt.NDArray[np.integer],
+            log_times_ns: npt.NDArray[np.integer], payloads: Sequence[bytes]) -> None:
+        """Add messages after those added before (``log_times_ns`` non-decreasing).
+
+        Args:
+            channel_ids: Channel of each message (its index in ``channels``).
+            sequences: Sequence number of each message within its channel.
+            log_times_ns: Time of each message [ns]; also its publish time.
+            payloads: Serialized messages.
+        """
+        if not len(payloads):
+            return
+        heads = np.zeros(len(payloads), dtype=_MESSAGE_HEAD)
+        sizes = np.fromiter(map(len, payloads), dtype=np.int64, count=len(payloads))
+        heads["opcode"], heads["length"] = _MESSAGE, 22 + sizes
+        heads["channel"], heads["sequence"] = channel_ids, sequences
+        heads["log_time"] = heads["publish_time"] = log_times_ns
+        starts = self.written + np.concatenate(([0], np.cumsum(_MESSAGE_HEAD.itemsize + sizes)))
+        self.written = int(starts[-1])
+        groups = starts[:-1] // self.chunk_size
+        bounds = [0, *(np.flatnonzero(np.diff(groups)) + 1).tolist(), len(payloads)]
+        for a, b in itertools.pairwise(bounds):
+            if groups[a] != self.open_chunk:
+                self._write_open_chunk()
+                self.open_chunk = int(groups[a])
+            self.heads.append(heads[a:b])
+            self.payloads.extend(payloads[a:b])
+            self.offsets.append(starts[a:b])
+        if not self.counts.any():
+            self.first_time = int(log_times_ns[0])
+        self.last_time = int(log_times_ns[-1])
+        self.counts += np.bincount(np.asarray(channel_ids, dtype=np.int64),
+                                   minlength=len(self.channels))
+
+    def _write_open_chunk(self) -> None:
+        if not self.payloads:
+            return
+        offsets = np.concatenate(self.offsets)
+        self.chunk_indexes.append(_write_chunk(self.out, np.concatenate(self.heads),
+                                               self.payloads, offsets - offsets[0],
+                                               self.compressor))
+        self.heads, self.payloads, self.offsets = [], [], []
+
+    def finish(self) -> None:
+        """Write the last chunk, the data end, the summary and the footer."""
+        self._write_open_chunk()
+        out, total = self.out, int(self.counts.sum())
+        out.write(_record(_DATA_END, struct.pack("<I", out.crc)))
+        statistics = _record(_STATISTICS, struct.pack(
+            "<QHIIII", total, len(self.schemas), len(self.channels), 0, 0,
+            len(self.chunk_indexes))
+            + struct.pack("<QQ", self.first_time, self.last_time)
+            + _id_map({i: int(n) for i, n in enumerate(self.counts)}))
+        _write_summary(out, [(_SCHEMA, self.schemas), (_CHANNEL, self.channel_records),
+                             (_STATISTICS, [statistics]), (_CHUNK_INDEX, self.chunk_indexes)])
+
+
 def write_mcap(handle: BinaryIO, channels: Sequence[Channel],
                channel_ids: npt.NDArray[np.integer], sequences: npt.NDArray[np.integer],
                log_times_ns: npt.NDArray[np.integer], payloads: Sequence[bytes], *,
                profile: str, library: str, chunk_size: int = 1 << 20) -> None:
     """Write one MCAP file of ``payloads``, which must be in ``log_times_ns`` order.
 
-    Args:
-        handle: A binary file open for writing, at its start.
-        channels: The channels; message ``i`` is on ``channels[channel_ids[i]]``.
-        channel_ids: Channel of each message (its index in ``channels``).
-        sequences: Sequence number of each message within its channel.
-        log_times_ns: Time of each message [ns], non-decreasing; also its publish time.
-        payloads: Serialized messages.
-        profile: The MCAP profile (``ros2``).
-        library: What wrote the file.
-        chunk_size: Uncompressed bytes per chunk, roughly.
+    The arguments are those of :class:`McapWriter` and :meth:`McapWriter.add`.
     """
-    import zstandard
-
-    out = _Output(handle)
-    out.write(MAGIC)
-    out.write(_record(_HEADER, _string(profile) + _string(library)))
-    schemas, channel_records = _schemas_and_channels(channels)
-    out.write(b"".join(schemas) + b"".join(channel_records))
-    heads = np.zeros(len(payloads), dtype=_MESSAGE_HEAD)
-    sizes = np.fromiter(map(len, payloads), dtype=np.int64, count=len(payloads))
-    heads["opcode"], heads["length"] = _MESSAGE, 22 + sizes
-    heads["channel"], heads["sequence"] = channel_ids, sequences
-    heads["log_time"] = heads["publish_time"] = log_times_ns
-    record_sizes = _MESSAGE_HEAD.itemsize + sizes
-    starts = np.concatenate(([0], np.cumsum(record_sizes)[:-1]))
-    splits = np.flatnonzero(np.diff(starts // chunk_size)) + 1
-    compressor = zstandard.ZstdCompressor()
-    chunk_indexes = []
-    bounds = [0, *splits.tolist(), len(payloads)] if len(payloads) else []
-    for a, b in itertools.pairwise(bounds):
-        chunk_indexes.append(_write_chunk(out, heads[a:b], payloads[a:b],
-                                          starts[a:b] - starts[a], compressor))
-    out.write(_record(_DATA_END, struct.pack("<I", out.crc)))
-    counts = np.bincount(np.asarray(channel_ids, dtype=np.int64), minlength=len(channels))
-    statistics = _record(_STATISTICS, struct.pack(
-        "<QHIIII", len(payloads), len(schemas), len(channels), 0, 0, len(chunk_indexes))
-        + struct.pack("<QQ", int(log_times_ns[0]) if len(payloads) else 0,
-                      int(log_times_ns[-1]) if len(payloads) else 0)
-        + _id_map({i: int(n) for i, n in enumerate(counts)}))
-    _write_summary(out, [(_SCHEMA, schemas), (_CHANNEL, channel_records),
-                         (_STATISTICS, [statistics]), (_CHUNK_INDEX, chunk_indexes)])
+    writer = McapWriter(handle, channels, profile=profile, library=library,
+                        chunk_size=chunk_size)
+    writer.add(channel_ids, sequences, log_times_ns, payloads)
+    writer.finish()
 
 
 def _schemas_and_channels(channels: Sequence[Channel]) -> tuple[list[bytes], list[bytes]]:

@@ -1,4 +1,4 @@
-"""A run's streams as serialized ROS 2 messages on the robot's topics.
+"""A run's messages as serialized ROS 2 messages on the robot's topics, a piece at a time.
 
 Topics follow the robot's documentation: the sensors' topics as their Gazebo plugins resolve
 them (``scan``, ``imu/data``, ``pi_camera/camera_info``), ``/diff_controller/odom`` and
@@ -6,12 +6,12 @@ them (``scan``, ``imu/data``, ``pi_camera/camera_info``), ``/diff_controller/odo
 joint_state_broadcaster, ``/tf`` for movable joints, ``/tf_static`` for fixed ones and
 ``/robot_description`` (the URDF, once) as robot_state_publisher, and ``/clock`` at every
 control tick as gazebo_ros publishes simulated time. Header stamps are simulated time; each
-stream carries the QoS its publishers offer.
+publisher offers the QoS its ROS node does. ``/tf`` has two publishers.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -21,26 +21,37 @@ from servicebot_cli.kinematics.rotations import quaternion_from_matrix
 from servicebot_cli.kinematics.transforms import rpy_matrix
 from servicebot_cli.simulate.bag import cdr, qos
 from servicebot_cli.simulate.bag import quaternions as rotations
+from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.simulator import SimResult
 
 FloatArray = npt.NDArray[np.float64]
 ODOM_TOPIC, TF_TOPIC, TF_STATIC_TOPIC = "/diff_controller/odom", "/tf", "/tf_static"
 JOINT_STATES_TOPIC, ODOM_FRAME = "/joint_states", "odom"
 CLOCK_TOPIC, DESCRIPTION_TOPIC = "/clock", "/robot_description"
+TF_TYPE = "tf2_msgs/msg/TFMessage"
 
 
 @dataclass(frozen=True)
-class Stream:
-    """Messages of one topic: ROS type, stamps [ns], CDR payloads in time order, and QoS.
+class Publisher:
+    """One ROS node's messages on one topic, and the QoS the node offers.
 
-    ``offered_qos`` holds the profile each of the topic's publishers offers.
+    ``times`` gives a piece's message stamps [s] and ``serialize`` their CDR payloads.
     """
 
     topic: str
     type: str
-    stamps_ns: npt.NDArray[np.int64]
-    payloads: list[bytes]
-    offered_qos: tuple[qos.Qos, ...] = (qos.SYSTEM_DEFAULTS,)
+    qos: qos.Qos
+    times: Callable[[SimResult], FloatArray]
+    serialize: Callable[[SimResult], list[bytes]]
+
+
+@dataclass(frozen=True)
+class Topic:
+    """A topic of the run: its type and the profile each of its publishers offers."""
+
+    name: str
+    type: str
+    offered_qos: tuple[qos.Qos, ...]
 
 
 def absolute(topic: str | None, fallback: str) -> str:
@@ -49,47 +60,81 @@ def absolute(topic: str | None, fallback: str) -> str:
     return name if name.startswith("/") else f"/{name}"
 
 
-def streams(result: SimResult) -> list[Stream]:
-    """Every stream of ``result``, in a fixed order: latched topics and the clock first."""
-    out = [_robot_description(result), _tf_static(result), _clock(result), _odometry(result),
-           _tf(result), _joint_states(result)]
-    if result.scans is not None:
-        out.append(_scan(result))
-    if result.imu is not None:
-        out.append(_imu(result))
-    if result.camera is not None:
-        out.append(_camera_info(result))
+def publishers(body: SimRobot) -> list[Publisher]:
+    """Every publisher of a run of ``body``: latched topics and the clock first.
+
+    Messages with equal stamps are in this order in a bag.
+    """
+    out = [Publisher(DESCRIPTION_TOPIC, "std_msgs/msg/String", qos.ROBOT_DESCRIPTION, _once,
+                     _robot_description),
+           Publisher(TF_STATIC_TOPIC, TF_TYPE, qos.STATIC_TF, _once, _tf_static),
+           Publisher(CLOCK_TOPIC, "rosgraph_msgs/msg/Clock", qos.CLOCK, _tick_times, _clock),
+           Publisher(ODOM_TOPIC, "nav_msgs/msg/Odometry", qos.SYSTEM_DEFAULTS,
+                     lambda r: r.odometry.times_s, _odometry),
+           Publisher(TF_TOPIC, TF_TYPE, qos.SYSTEM_DEFAULTS, lambda r: r.odometry.times_s,
+                     _tf_base),
+           Publisher(TF_TOPIC, TF_TYPE, qos.DYNAMIC_TF, lambda r: r.joints.times_s, _tf_joints),
+           Publisher(JOINT_STATES_TOPIC, "sensor_msgs/msg/JointState", qos.SYSTEM_DEFAULTS,
+                     lambda r: r.joints.times_s, _joint_states)]
+    if body.lidar is not None:
+        out.append(Publisher(absolute(body.lidar.spec.topic, "scan"),
+                             "sensor_msgs/msg/LaserScan", qos.SENSOR_DATA,
+                             lambda r: r.scans.times_s if r.scans else np.zeros(0), _scan))
+    if body.imu is not None:
+        out.append(Publisher(absolute(body.imu.spec.topic, "imu"), "sensor_msgs/msg/Imu",
+                             qos.SENSOR_DATA,
+                             lambda r: r.imu.times_s if r.imu else np.zeros(0), _imu))
+    if body.camera is not None:
+        out.append(Publisher(absolute(body.camera.spec.info_topic, "camera_info"),
+                             "sensor_msgs/msg/CameraInfo", qos.SENSOR_DATA,
+                             lambda r: r.camera_times_s, _camera_info))
     return out
 
 
-def _stream(topic: str, kind: str, layout: cdr.Layout, times: FloatArray,
-            fill: Mapping[str, FloatArray | float],
-            offered: tuple[qos.Qos, ...] = (qos.SYSTEM_DEFAULTS,)) -> Stream:
+def topics(publishers: Sequence[Publisher]) -> list[Topic]:
+    """The publishers' topics, in the order each first appears."""
+    names = list(dict.fromkeys(p.topic for p in publishers))
+    return [Topic(name, next(p.type for p in publishers if p.topic == name),
+                  tuple(p.qos for p in publishers if p.topic == name)) for name in names]
+
+
+def _once(result: SimResult) -> FloatArray:
+    """Time 0 in the first piece, nothing after: a message published once."""
+    return np.zeros(1 if result.first else 0)
+
+
+def _tick_times(result: SimResult) -> FloatArray:
+    """Each tick's start [s], and the run's end in its last piece."""
+    count = result.plan.ticks + (1 if result.last else 0)
+    return np.arange(result.first_tick, result.first_tick + count,
+                     dtype=np.float64) * result.plan.dt_s
+
+
+def _serialize(layout: cdr.Layout, times: FloatArray,
+               fill: Mapping[str, FloatArray | float]) -> list[bytes]:
     records = layout.records(len(times))
     cdr.set_stamps(records, times)
     for name, values in fill.items():
         records[name] = values
-    return Stream(topic, kind, cdr.stamps_ns(times), cdr.split(records), offered)
+    return cdr.split(records)
 
 
-def _clock(result: SimResult) -> Stream:
+def _clock(result: SimResult) -> list[bytes]:
     """Simulated time at every control tick, from 0 to the end of the run."""
     layout = cdr.Layout()
     layout.field("sec", "<i4")
     layout.field("nanosec", "<u4")
-    times = np.arange(len(result.truth.x_m), dtype=np.float64) * result.truth.dt_s
-    return _stream(CLOCK_TOPIC, "rosgraph_msgs/msg/Clock", layout, times, {}, (qos.CLOCK,))
+    return _serialize(layout, _tick_times(result), {})
 
 
-def _robot_description(result: SimResult) -> Stream:
+def _robot_description(result: SimResult) -> list[bytes]:
     """The URDF the run used, once at time 0 (transient local: late subscribers get it)."""
     layout = cdr.Layout()
     layout.string(result.body.robot.xml_text)
-    return Stream(DESCRIPTION_TOPIC, "std_msgs/msg/String", np.zeros(1, dtype=np.int64),
-                  cdr.split(layout.records(1)), (qos.ROBOT_DESCRIPTION,))
+    return cdr.split(layout.records(len(_once(result))))
 
 
-def _scan(result: SimResult) -> Stream:
+def _scan(result: SimResult) -> list[bytes]:
     scans = result.scans
     assert scans is not None
     spec, rays = scans.spec, len(scans.angles_rad)
@@ -101,17 +146,14 @@ def _scan(result: SimResult) -> Stream:
     layout.sequence("ranges", "<f4", rays)
     layout.sequence("intensities", "<f4", 0)
     step = (scans.angles_rad[-1] - scans.angles_rad[0]) / max(rays - 1, 1)
-    period = float(np.diff(scans.times_s[:2])[0]) if len(scans.times_s) > 1 else 0.0
-    return _stream(absolute(spec.topic, "scan"), "sensor_msgs/msg/LaserScan", layout,
-                   scans.times_s, {
-                       "angle_min": scans.angles_rad[0], "angle_max": scans.angles_rad[-1],
-                       "angle_increment": step, "time_increment": 0.0, "scan_time": period,
-                       "range_min": spec.min_range_m or 0.0,
-                       "range_max": spec.max_range_m or np.inf,
-                       "ranges": scans.ranges_m.astype(np.float32)}, (qos.SENSOR_DATA,))
+    return _serialize(layout, scans.times_s, {
+        "angle_min": scans.angles_rad[0], "angle_max": scans.angles_rad[-1],
+        "angle_increment": step, "time_increment": 0.0, "scan_time": scans.period_s,
+        "range_min": spec.min_range_m or 0.0, "range_max": spec.max_range_m or np.inf,
+        "ranges": scans.ranges_m.astype(np.float32)})
 
 
-def _imu(result: SimResult) -> Stream:
+def _imu(result: SimResult) -> list[bytes]:
     imu = result.imu
     assert imu is not None
     layout = cdr.Layout()
@@ -120,16 +162,15 @@ def _imu(result: SimResult) -> Stream:
                         ("angular_velocity", 3), ("angular_velocity_covariance", 9),
                         ("linear_acceleration", 3), ("linear_acceleration_covariance", 9)):
         layout.field(name, "<f8", count)
-    return _stream(absolute(imu.spec.topic, "imu"), "sensor_msgs/msg/Imu", layout, imu.times_s, {
+    return _serialize(layout, imu.times_s, {
         "orientation": imu.orientation_xyzw,
         "angular_velocity": imu.angular_velocity_rad_s,
         "angular_velocity_covariance": np.diag(imu.angular_velocity_variance).ravel(),
         "linear_acceleration": imu.linear_acceleration_m_s2,
-        "linear_acceleration_covariance": np.diag(imu.linear_acceleration_variance).ravel()},
-        (qos.SENSOR_DATA,))
+        "linear_acceleration_covariance": np.diag(imu.linear_acceleration_variance).ravel()})
 
 
-def _odometry(result: SimResult) -> Stream:
+def _odometry(result: SimResult) -> list[bytes]:
     odom = result.odometry
     layout = cdr.Layout()
     layout.header(ODOM_FRAME)
@@ -139,7 +180,7 @@ def _odometry(result: SimResult) -> Stream:
         layout.field(name, "<f8", count)
     zeros = np.zeros_like(odom.x_m)
     controller = result.scenario.controller  # the diagonals diff_drive_controller publishes
-    return _stream(ODOM_TOPIC, "nav_msgs/msg/Odometry", layout, odom.times_s, {
+    return _serialize(layout, odom.times_s, {
         "pose_covariance": np.diag(controller.pose_covariance_diagonal).ravel(),
         "twist_covariance": np.diag(controller.twist_covariance_diagonal).ravel(),
         "position": np.column_stack((odom.x_m, odom.y_m, zeros)),
@@ -148,7 +189,7 @@ def _odometry(result: SimResult) -> Stream:
         "angular": np.column_stack((zeros, zeros, odom.angular_rad_s))})
 
 
-def _joint_states(result: SimResult) -> Stream:
+def _joint_states(result: SimResult) -> list[bytes]:
     joints = result.joints
     layout = cdr.Layout()
     layout.header("")
@@ -156,11 +197,11 @@ def _joint_states(result: SimResult) -> Stream:
     layout.sequence("position", "<f8", len(joints.names))
     layout.sequence("velocity", "<f8", len(joints.names))
     layout.sequence("effort", "<f8", 0)
-    return _stream(JOINT_STATES_TOPIC, "sensor_msgs/msg/JointState", layout, joints.times_s,
-                   {"position": joints.positions, "velocity": joints.velocities})
+    return _serialize(layout, joints.times_s,
+                      {"position": joints.positions, "velocity": joints.velocities})
 
 
-def _camera_info(result: SimResult) -> Stream:
+def _camera_info(result: SimResult) -> list[bytes]:
     camera, spec = result.camera, result.body.camera
     assert camera is not None and spec is not None
     layout = cdr.Layout()
@@ -174,10 +215,9 @@ def _camera_info(result: SimResult) -> Stream:
     for _ in range(6):  # binning_x, binning_y, roi x_offset, y_offset, height, width
         layout.constant("<I", 0)
     layout.constant("<B", 0)  # roi.do_rectify
-    topic = absolute(spec.spec.info_topic, "camera_info")
-    return _stream(topic, "sensor_msgs/msg/CameraInfo", layout, result.camera_times_s, {
+    return _serialize(layout, result.camera_times_s, {
         "d": np.array(camera.d), "k": np.array(camera.k),
-        "r": np.eye(3).ravel(), "p": np.array(camera.p)}, (qos.SENSOR_DATA,))
+        "r": np.eye(3).ravel(), "p": np.array(camera.p)})
 
 
 def _transforms(frames: list[tuple[str, str]]) -> cdr.Layout:
@@ -193,9 +233,8 @@ def _transforms(frames: list[tuple[str, str]]) -> cdr.Layout:
     return layout
 
 
-def _tf_stream(topic: str, frames: list[tuple[str, str]], times: FloatArray,
-               translations: list[FloatArray], quaternions: list[FloatArray],
-               offered: tuple[qos.Qos, ...]) -> Stream:
+def _tf_messages(frames: list[tuple[str, str]], times: FloatArray,
+                 translations: list[FloatArray], quaternions: list[FloatArray]) -> list[bytes]:
     layout = _transforms(frames)
     records = layout.records(len(times))
     stamps = cdr.stamps_ns(times)
@@ -204,17 +243,21 @@ def _tf_stream(topic: str, frames: list[tuple[str, str]], times: FloatArray,
         records[f"nanosec{i}"] = stamps % 1_000_000_000
         records[f"translation{i}"] = translations[i]
         records[f"rotation{i}"] = quaternions[i]
-    return Stream(topic, "tf2_msgs/msg/TFMessage", stamps, cdr.split(records), offered)
+    return cdr.split(records)
 
 
-def _tf(result: SimResult) -> Stream:
-    """The base in ``odom`` (drive controller) and movable joints (robot_state_publisher)."""
-    odom, robot = result.odometry, result.body.robot
+def _tf_base(result: SimResult) -> list[bytes]:
+    """The base in ``odom``, as the drive controller publishes it with its odometry."""
+    odom = result.odometry
     zeros = np.zeros_like(odom.x_m)
-    base = _tf_stream(TF_TOPIC, [(ODOM_FRAME, result.body.root_link)], odom.times_s,
-                      [np.column_stack((odom.x_m, odom.y_m, zeros))], [rotations.yaw(odom.yaw_rad)],
-                      (qos.SYSTEM_DEFAULTS,))
-    joints = result.joints
+    return _tf_messages([(ODOM_FRAME, result.body.root_link)], odom.times_s,
+                        [np.column_stack((odom.x_m, odom.y_m, zeros))],
+                        [rotations.yaw(odom.yaw_rad)])
+
+
+def _tf_joints(result: SimResult) -> list[bytes]:
+    """Every movable joint's transform, as robot_state_publisher sends them."""
+    joints, robot = result.joints, result.body.robot
     frames, translations, quaternions = [], [], []
     for i, name in enumerate(joints.names):
         joint = robot.joint(name)
@@ -228,20 +271,12 @@ def _tf(result: SimResult) -> Stream:
         frames.append((joint.parent or "", joint.child or ""))
         translations.append(offset + slide)
         quaternions.append(rotations.multiply(fixed, turn))
-    moving = _tf_stream(TF_TOPIC, frames, joints.times_s, translations, quaternions,
-                        (qos.DYNAMIC_TF,))
-    # Two publishers (the drive controller and robot_state_publisher), one topic.
-    order = np.argsort(np.concatenate((base.stamps_ns, moving.stamps_ns)), kind="stable")
-    payloads = base.payloads + moving.payloads
-    return Stream(TF_TOPIC, base.type,
-                  np.concatenate((base.stamps_ns, moving.stamps_ns))[order],
-                  [payloads[i] for i in order.tolist()], base.offered_qos + moving.offered_qos)
+    return _tf_messages(frames, joints.times_s, translations, quaternions)
 
 
-def _tf_static(result: SimResult) -> Stream:
+def _tf_static(result: SimResult) -> list[bytes]:
     """Fixed joints, once at time 0, latched (robot_state_publisher)."""
     static = [(f.parent, f.name, f.origin) for f in result.body.robot.fixed_frames]
-    return _tf_stream(TF_STATIC_TOPIC, [(p, c) for p, c, _ in static], np.zeros(1),
-                      [np.array(o.xyz)[None] for _, _, o in static],
-                      [quaternion_from_matrix(rpy_matrix(*o.rpy))[None] for _, _, o in static],
-                      (qos.STATIC_TF,))
+    return _tf_messages([(p, c) for p, c, _ in static], _once(result),
+                        [np.array(o.xyz)[None] for _, _, o in static],
+                        [quaternion_from_matrix(rpy_matrix(*o.rpy))[None] for _, _, o in static])

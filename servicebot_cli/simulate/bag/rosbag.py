@@ -6,70 +6,132 @@ info``. Foxglove opens the ``.mcap`` file directly. Each topic's ``offered_qos_p
 (:mod:`~servicebot_cli.simulate.bag.qos`) is in both, as rosbag2's MCAP storage keeps it in
 the channel's metadata. The directory is built under a temporary name beside ``PATH`` and
 renamed into place at the end, so an interrupted run leaves no bag.
+
+Messages are written as the run's pieces come: each piece's messages wait until no later
+piece can bring one stamped before them, then go to the file in time order (equal stamps in
+the order of :func:`~servicebot_cli.simulate.bag.ros_messages.publishers`).
 """
 
 from __future__ import annotations
 
+import contextlib
 import os
-from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
+import numpy.typing as npt
 
 from servicebot_cli import __version__
 from servicebot_cli.common.files import OutputError, atomic_directory
-from servicebot_cli.simulate.bag.mcap_file import Channel, write_mcap
+from servicebot_cli.simulate.bag.cdr import stamps_ns
+from servicebot_cli.simulate.bag.mcap_file import Channel, McapWriter
 from servicebot_cli.simulate.bag.msgdefs import MESSAGE_DEFINITIONS
 from servicebot_cli.simulate.bag.qos import offered_qos_profiles
-from servicebot_cli.simulate.bag.ros_messages import Stream
+from servicebot_cli.simulate.bag.ros_messages import Publisher, Topic, topics
+from servicebot_cli.simulate.simulator import SimResult
+
+IntArray = npt.NDArray[np.int64]
 
 
-def write_bag(path: str | os.PathLike[str], streams: Sequence[Stream]) -> None:
-    """Write ``streams`` as a rosbag2 MCAP directory at ``path``.
+class BagWriter:
+    """Writes a run's messages, piece by piece, as a rosbag2 MCAP directory at ``path``.
+
+    The directory is begun on the stack ``stack``; it is renamed into place when the stack
+    closes after :meth:`finish`, and removed if it closes on an error.
 
     Raises:
-        OutputError: ``path`` exists, its parent is missing, or writing failed.
+        OutputError: ``path`` exists, or its parent is missing or not writable.
     """
-    target = Path(path)
-    if target.exists():
-        raise OutputError(f"{target}: already exists; remove it or give another --bag path "
-                          "(ros2 bag record refuses too)")
-    with atomic_directory(target) as temporary:
-        file_name = f"{target.name}_0.mcap"
-        _write_mcap(temporary / file_name, streams)
-        (temporary / "metadata.yaml").write_text(_metadata(file_name, streams), encoding="utf-8")
+
+    def __init__(self, path: str | os.PathLike[str], publishers: list[Publisher],
+                 stack: contextlib.ExitStack) -> None:
+        target = Path(path)
+        if target.exists():
+            raise OutputError(f"{target}: already exists; remove it or give another --bag "
+                              "path (ros2 bag record refuses too)")
+        self.publishers, self.topics = publishers, topics(publishers)
+        self.directory = stack.enter_context(atomic_directory(target))
+        self.file_name = f"{target.name}_0.mcap"
+        handle = stack.enter_context((self.directory / self.file_name).open("wb"))
+        self.channel = np.array([[t.name for t in self.topics].index(p.topic)
+                                 for p in publishers])
+        self.mcap = McapWriter(handle, [_channel(t) for t in self.topics], profile="ros2",
+                               library=f"servicebot {__version__}")
+        self.sequences = np.zeros(len(self.topics), dtype=np.int64)
+        self.start_ns: int | None = None
+        self.end_ns = 0
+        # messages waiting for their turn, in time order: stamp, publisher, payload
+        self.stamps: IntArray = np.zeros(0, dtype=np.int64)
+        self.sources: IntArray = np.zeros(0, dtype=np.int64)
+        self.payloads: list[bytes] = []
+
+    def add(self, piece: SimResult) -> None:
+        """Take a piece's messages; write those no later piece can precede."""
+        stamps, sources, payloads = [self.stamps], [self.sources], list(self.payloads)
+        for index, publisher in enumerate(self.publishers):
+            times = publisher.times(piece)
+            if len(times):
+                stamps.append(stamps_ns(times))
+                sources.append(np.full(len(times), index))
+                payloads += publisher.serialize(piece)
+        stamp, source = np.concatenate(stamps), np.concatenate(sources)
+        order = np.lexsort((np.arange(len(stamp)), source, stamp))
+        self.stamps, self.sources = stamp[order], source[order]
+        self.payloads = [payloads[k] for k in order.tolist()]
+        # A later piece's messages are stamped at or after its first tick's start, less
+        # a nanosecond's rounding and odometry's one tick of lag: a tick more is safe.
+        ready = len(self.stamps) if piece.last else int(np.searchsorted(
+            self.stamps, stamps_ns(np.array([(piece.first_tick + piece.plan.ticks - 1)
+                                             * piece.plan.dt_s]))[0]))
+        self._write(ready)
+
+    def _write(self, count: int) -> None:
+        """Write the first ``count`` waiting messages."""
+        if not count:
+            return
+        channels = self.channel[self.sources[:count]]
+        sequences = np.empty(count, dtype=np.int64)
+        for channel in np.unique(channels).tolist():
+            mine = np.flatnonzero(channels == channel)
+            sequences[mine] = self.sequences[channel] + np.arange(len(mine))
+            self.sequences[channel] += len(mine)
+        stamps = self.stamps[:count]
+        self.mcap.add(channels, sequences, stamps, self.payloads[:count])
+        self.start_ns = int(stamps[0]) if self.start_ns is None else self.start_ns
+        self.end_ns = max(self.end_ns, int(stamps.max()))
+        self.stamps, self.sources = self.stamps[count:], self.sources[count:]
+        self.payloads = self.payloads[count:]
+
+    def finish(self, summary: object = None) -> None:
+        """Write what waits, the file's summary and ``metadata.yaml`` (``summary`` unused)."""
+        self._write(len(self.stamps))
+        self.mcap.finish()
+        counts = [int(n) for n in self.sequences]
+        (self.directory / "metadata.yaml").write_text(
+            _metadata(self.file_name, self.topics, counts, self.start_ns or 0, self.end_ns),
+            encoding="utf-8")
 
 
-def _write_mcap(file: Path, streams: Sequence[Stream]) -> None:
-    channels = [Channel(topic=s.topic, message_encoding="cdr", schema_name=s.type,
-                        schema_encoding="ros2msg", schema_data=MESSAGE_DEFINITIONS[s.type].encode(),
-                        metadata={"offered_qos_profiles": offered_qos_profiles(s.offered_qos)})
-                for s in streams]
-    stamps = np.concatenate([s.stamps_ns for s in streams])
-    which = np.concatenate([np.full(len(s.payloads), i) for i, s in enumerate(streams)])
-    index = np.concatenate([np.arange(len(s.payloads)) for s in streams])
-    order = np.argsort(stamps, kind="stable")  # one stream's messages stay in their order
-    payloads = [p for s in streams for p in s.payloads]
-    with file.open("wb") as handle:
-        write_mcap(handle, channels, which[order], index[order], stamps[order],
-                   [payloads[k] for k in order.tolist()], profile="ros2",
-                   library=f"servicebot {__version__}")
+def _channel(topic: Topic) -> Channel:
+    return Channel(topic=topic.name, message_encoding="cdr", schema_name=topic.type,
+                   schema_encoding="ros2msg",
+                   schema_data=MESSAGE_DEFINITIONS[topic.type].encode(),
+                   metadata={"offered_qos_profiles": offered_qos_profiles(topic.offered_qos)})
 
 
-def _metadata(file_name: str, streams: Sequence[Stream]) -> str:
-    stamps = [s.stamps_ns for s in streams if len(s.stamps_ns)]
-    start = int(min(s.min() for s in stamps)) if stamps else 0
-    end = int(max(s.max() for s in stamps)) if stamps else 0
-    total = sum(len(s.payloads) for s in streams)
+def _metadata(file_name: str, topics: list[Topic], counts: list[int], start: int,
+              end: int) -> str:
+    total = sum(counts)
     lines = ["rosbag2_bagfile_information:", "  version: 5", "  storage_identifier: mcap",
              "  duration:", f"    nanoseconds: {end - start}", "  starting_time:",
              f"    nanoseconds_since_epoch: {start}", f"  message_count: {total}",
              "  topics_with_message_count:"]
-    for s in streams:
-        lines += ["    - topic_metadata:", f"        name: {s.topic}", f"        type: {s.type}",
-                  "        serialization_format: cdr",
-                  f"        offered_qos_profiles: {_quoted(offered_qos_profiles(s.offered_qos))}",
-                  f"      message_count: {len(s.payloads)}"]
+    for topic, count in zip(topics, counts, strict=True):
+        lines += ["    - topic_metadata:", f"        name: {topic.name}",
+                  f"        type: {topic.type}", "        serialization_format: cdr",
+                  "        offered_qos_profiles: "
+                  + _quoted(offered_qos_profiles(topic.offered_qos)),
+                  f"      message_count: {count}"]
     lines += ['  compression_format: ""', '  compression_mode: ""', "  relative_file_paths:",
               f"    - {file_name}", "  files:", f"    - path: {file_name}",
               "      starting_time:", f"        nanoseconds_since_epoch: {start}",

@@ -5,6 +5,7 @@ arm's state when the goal arrives to each point in turn, then holds the last one
 follow that reference at most at their URDF velocity limit and never leave their position
 limits, so a point asked for too soon is reached late, as on the real arm. While the arm tracks
 exactly, whole stretches are filled at once; ticks are stepped one by one only while it lags.
+:class:`ArmMotion` follows a run a stretch of ticks at a time.
 """
 
 from __future__ import annotations
@@ -43,10 +44,13 @@ def reference(trajectory: ArmTrajectory, q0: FloatArray, times_s: FloatArray) ->
                             for j in range(len(q0))])
 
 
-def follow(ref: FloatArray, q0: FloatArray, limits: ArmLimits, dt_s: float) -> FloatArray:
+def follow(ref: FloatArray, q0: FloatArray, limits: ArmLimits, dt_s: float, *,
+           clip_start: bool = True) -> FloatArray:
     """Joint positions at each tick boundary following ``ref`` (shape (n+1, joints)).
 
-    Each tick moves every joint toward the reference by at most ``velocity * dt_s``.
+    Each tick moves every joint toward the reference by at most ``velocity * dt_s``. The
+    positions start at ``q0``, moved into the limits unless ``clip_start`` is False (a run
+    followed on from where an earlier stretch ended).
     """
     speed = np.where(np.isnan(limits.velocity), np.inf, limits.velocity) * dt_s
     lower = np.where(np.isnan(limits.lower), -np.inf, limits.lower)
@@ -54,7 +58,7 @@ def follow(ref: FloatArray, q0: FloatArray, limits: ArmLimits, dt_s: float) -> F
     ref = np.clip(ref, lower, upper)
     n = len(ref) - 1
     q = np.empty_like(ref)
-    q[0] = np.clip(q0, lower, upper)
+    q[0] = np.clip(q0, lower, upper) if clip_start else q0
     too_fast = np.flatnonzero(np.any(np.abs(np.diff(ref, axis=0)) > speed * (1 + 1e-9), axis=1))
     k = 0
     while k < n:
@@ -68,3 +72,36 @@ def follow(ref: FloatArray, q0: FloatArray, limits: ArmLimits, dt_s: float) -> F
         q[k + 1] = q[k] + np.clip(ref[k + 1] - q[k], -speed, speed)
         k += 1
     return q
+
+
+class ArmMotion:
+    """The arm's positions over a run, a stretch of tick boundaries at a time.
+
+    Args:
+        trajectory: The scenario's goal.
+        order: For each of the trajectory's joints, its column among the arm's joints.
+        q0: The arm's positions when the run starts (every arm joint) [rad].
+        limits: Every arm joint's limits, in the columns' order.
+        dt_s: Control period [s].
+    """
+
+    def __init__(self, trajectory: ArmTrajectory, order: list[int], q0: FloatArray,
+                 limits: ArmLimits, dt_s: float) -> None:
+        self.trajectory, self.order, self.q0, self.limits = trajectory, order, q0, limits
+        self.dt_s = dt_s
+        self.q: FloatArray | None = None  # where the last stretch ended
+
+    def advance(self, times_s: FloatArray) -> FloatArray:
+        """Positions at the tick boundaries ``times_s``, shape (len(times_s), joints).
+
+        The first boundary is the one the last stretch ended at.
+        """
+        q0 = self.q0
+        if not self.trajectory.points:
+            return np.broadcast_to(q0, (len(times_s), len(q0))).copy()
+        ref = np.broadcast_to(q0, (len(times_s), len(q0))).copy()
+        ref[:, self.order] = reference(self.trajectory, q0[self.order], times_s)
+        q = follow(ref, q0 if self.q is None else self.q, self.limits, self.dt_s,
+                   clip_start=self.q is None)
+        self.q = q[-1].copy()
+        return q

@@ -8,7 +8,8 @@ and the wheel speeds are saturated at the URDF's velocity limit: both sides scal
 (curvature kept) or each wheel clipped alone (``per-wheel``, what Gazebo does).
 
 Commands are piecewise constant, so the sequential part (rate limiting) only steps tick by
-tick while a value is ramping; constant stretches are filled in one numpy operation.
+tick while a value is ramping; constant stretches are filled in one numpy operation. A run is
+planned a stretch of ticks at a time (:class:`WheelPlanner`); the limiter's state carries over.
 """
 
 from __future__ import annotations
@@ -21,7 +22,7 @@ import numpy.typing as npt
 
 from servicebot_cli.kinematics import diff_drive
 from servicebot_cli.kinematics.drive_geometry import DriveGeometry
-from servicebot_cli.simulate.controllers.limiter import AxisLimits, limited
+from servicebot_cli.simulate.controllers.limiter import AxisLimits, Limiter
 from servicebot_cli.simulate.scenario.definition import CmdVel, Controller
 
 FloatArray = npt.NDArray[np.float64]
@@ -52,15 +53,15 @@ class WheelPlan:
         return len(self.left_rad_s)
 
 
-def command_targets(segments: Sequence[CmdVel], ticks: int, dt_s: float,
+def command_targets(segments: Sequence[CmdVel], ticks: range, dt_s: float,
                     timeout_s: float) -> tuple[FloatArray, FloatArray]:
-    """The twist in force at each tick: the current segment's, or the last one until timeout.
+    """The twist in force at each of ``ticks``: the current segment's, or the last one's.
 
     A segment publishes from ``start_s`` until ``end_s``; at ``end_s + timeout_s`` its
     command is stale and the target becomes zero.
     """
-    times = np.arange(ticks) * dt_s
-    linear, angular = np.zeros(ticks), np.zeros(ticks)
+    times = np.arange(ticks.start, ticks.stop) * dt_s
+    linear, angular = np.zeros(len(ticks)), np.zeros(len(ticks))
     for segment in segments:
         # A command sent at end_s is still fresh just before end_s + timeout_s.
         live = (times >= segment.start_s - 1e-9) & (times < segment.end_s + timeout_s - 1e-9)
@@ -68,22 +69,43 @@ def command_targets(segments: Sequence[CmdVel], ticks: int, dt_s: float,
     return linear, angular
 
 
+def tick_count(controller: Controller, duration_s: float) -> int:
+    """Control ticks in a run of ``duration_s`` (at least one)."""
+    return max(1, int(np.ceil(duration_s / (1.0 / controller.update_rate_hz) - 1e-9)))
+
+
+class WheelPlanner:
+    """Wheel speeds of a run of ``duration_s``, planned a stretch of ticks at a time."""
+
+    def __init__(self, segments: Sequence[CmdVel], controller: Controller,
+                 geometry: DriveGeometry, duration_s: float) -> None:
+        c = controller
+        self.segments, self.controller, self.geometry = segments, controller, geometry
+        self.dt_s = 1.0 / c.update_rate_hz
+        self.ticks = tick_count(controller, duration_s)
+        self.linear = Limiter(AxisLimits.mirrored(
+            c.min_linear_velocity_m_s, c.max_linear_velocity_m_s,
+            c.min_linear_acceleration_m_s2, c.max_linear_acceleration_m_s2,
+            c.min_linear_jerk_m_s3, c.max_linear_jerk_m_s3), self.dt_s)
+        self.angular = Limiter(AxisLimits.mirrored(
+            c.min_angular_velocity_rad_s, c.max_angular_velocity_rad_s,
+            c.min_angular_acceleration_rad_s2, c.max_angular_acceleration_rad_s2,
+            c.min_angular_jerk_rad_s3, c.max_angular_jerk_rad_s3), self.dt_s)
+
+    def plan(self, ticks: range) -> WheelPlan:
+        """The plan of ``ticks``, which must follow the ticks planned before."""
+        target_v, target_w = command_targets(self.segments, ticks, self.dt_s,
+                                             self.controller.cmd_vel_timeout_s)
+        linear, angular = self.linear.run(target_v), self.angular.run(target_w)
+        left, right = _saturated_wheels(linear, angular, self.controller, self.geometry)
+        return WheelPlan(self.dt_s, target_v, target_w, linear, angular, left, right)
+
+
 def plan_wheels(segments: Sequence[CmdVel], controller: Controller, geometry: DriveGeometry,
                 duration_s: float) -> WheelPlan:
     """Wheel speeds for every control tick of a run of ``duration_s``."""
-    dt = 1.0 / controller.update_rate_hz
-    ticks = max(1, int(np.ceil(duration_s / dt - 1e-9)))
-    target_v, target_w = command_targets(segments, ticks, dt, controller.cmd_vel_timeout_s)
-    c = controller
-    linear = limited(target_v, AxisLimits.mirrored(
-        c.min_linear_velocity_m_s, c.max_linear_velocity_m_s, c.min_linear_acceleration_m_s2,
-        c.max_linear_acceleration_m_s2, c.min_linear_jerk_m_s3, c.max_linear_jerk_m_s3), dt)
-    angular = limited(target_w, AxisLimits.mirrored(
-        c.min_angular_velocity_rad_s, c.max_angular_velocity_rad_s,
-        c.min_angular_acceleration_rad_s2, c.max_angular_acceleration_rad_s2,
-        c.min_angular_jerk_rad_s3, c.max_angular_jerk_rad_s3), dt)
-    left, right = _saturated_wheels(linear, angular, controller, geometry)
-    return WheelPlan(dt, target_v, target_w, linear, angular, left, right)
+    planner = WheelPlanner(segments, controller, geometry, duration_s)
+    return planner.plan(range(planner.ticks))
 
 
 def _saturated_wheels(linear: FloatArray, angular: FloatArray, controller: Controller,

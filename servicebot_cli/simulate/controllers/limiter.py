@@ -60,24 +60,38 @@ class AxisLimits:
         return min(max(v, self.min_velocity), self.max_velocity)
 
 
+class Limiter:
+    """One axis of the limiter, run a stretch of ticks at a time (it remembers ``v0``, ``v1``)."""
+
+    def __init__(self, limits: AxisLimits, dt_s: float) -> None:
+        self.limits, self.dt_s = limits, dt_s
+        self.v0 = self.v1 = 0.0  # the robot starts at rest
+
+    def run(self, target: FloatArray) -> FloatArray:
+        """The commands sent at the next ``len(target)`` ticks for the targets ``target``."""
+        limits, dt_s = self.limits, self.dt_s
+        out = np.empty_like(target)
+        changes = np.flatnonzero(np.diff(target)) + 1
+        v0, v1 = self.v0, self.v1
+        k, n = 0, len(target)
+        while k < n:
+            goal = float(target[k])
+            v = limits.step(goal, v0, v1, dt_s)
+            out[k] = v
+            if v == v0 and limits.step(goal, v, v, dt_s) == v:
+                # settled: from here the same output until the target changes
+                i = bisect.bisect_right(changes, k)
+                stop = int(changes[i]) if i < len(changes) else n
+                out[k:stop] = v
+                v0 = v1 = v
+                k = stop
+                continue
+            v1, v0 = v0, v
+            k += 1
+        self.v0, self.v1 = v0, v1
+        return out
+
+
 def limited(target: FloatArray, limits: AxisLimits, dt_s: float) -> FloatArray:
     """The commands sent at each tick for the targets ``target``, starting from rest."""
-    out = np.empty_like(target)
-    changes = np.flatnonzero(np.diff(target)) + 1
-    v0 = v1 = 0.0
-    k, n = 0, len(target)
-    while k < n:
-        goal = float(target[k])
-        v = limits.step(goal, v0, v1, dt_s)
-        out[k] = v
-        if v == v0 and limits.step(goal, v, v, dt_s) == v:
-            # settled: from here the same output until the target changes
-            i = bisect.bisect_right(changes, k)
-            stop = int(changes[i]) if i < len(changes) else n
-            out[k:stop] = v
-            v0 = v1 = v
-            k = stop
-            continue
-        v1, v0 = v0, v
-        k += 1
-    return out
+    return Limiter(limits, dt_s).run(target)

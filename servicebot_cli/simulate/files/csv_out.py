@@ -1,9 +1,9 @@
-"""One CSV file per stream, plus summary.json, in an output directory.
+"""One CSV file per stream, plus summary.json, in an output directory, written as the run goes.
 
 Every file is written to a temporary first and renamed into place only once all are written,
-so an error or a signal leaves no temporary file and no partial set of new files. Numbers are
-written in the shortest form that reads back to the same float, so files are exact and the
-same seed gives the same bytes.
+so an error or a signal leaves no temporary file and no partial set of new files. Rows are
+appended a piece of the run at a time. Numbers are written in the shortest form that reads
+back to the same float, so files are exact and the same seed gives the same bytes.
 """
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ from __future__ import annotations
 import contextlib
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import IO, TYPE_CHECKING, Any
 
 import numpy as np
 import numpy.typing as npt
@@ -23,27 +23,40 @@ from servicebot_cli.simulate.simulator import SimResult
 if TYPE_CHECKING:
     from servicebot_cli.simulate.summary import Summary
 
+Table = tuple[tuple[str, ...], str]
+"""A CSV file's header fields and rows (text, one line each)."""
 
-def _table(header: Sequence[str], columns: Sequence[npt.ArrayLike]) -> str:
+
+def _rows(columns: Sequence[npt.ArrayLike]) -> str:
     if not columns:
-        return ",".join(header) + "\n"
+        return ""
     matrix = np.column_stack([np.asarray(c, dtype=float) for c in columns])
     text = matrix.astype(str)  # numpy's shortest round-trip repr, in C
     body = "\n".join(",".join(row) for row in text.tolist())
-    return ",".join(header) + "\n" + (body + "\n" if body else "")
+    return body + "\n" if body else ""
 
 
-def tables(result: SimResult) -> dict[str, str]:
-    """File name to CSV text for every stream of ``result``."""
+def _table(header: Sequence[str], columns: Sequence[npt.ArrayLike]) -> Table:
+    return tuple(header), _rows(columns)
+
+
+def tables(result: SimResult) -> dict[str, Table]:
+    """File name to the header and the rows of every stream for a piece of a run.
+
+    Boundary rows (ground truth) are the piece's tick starts, and the run's end in its last
+    piece.
+    """
     truth, plan, odom, joints = result.truth, result.plan, result.odometry, result.joints
-    ticks = np.arange(len(truth.x_m)) * truth.dt_s
-    lin = np.append(truth.linear_m_s, 0.0)
-    ang = np.append(truth.angular_rad_s, 0.0)
-    starts = np.arange(plan.ticks) * plan.dt_s
+    end = len(truth.x_m) if result.last else len(truth.x_m) - 1
+    ticks = np.arange(result.first_tick, result.first_tick + end) * truth.dt_s
+    lin = np.append(truth.linear_m_s, 0.0)[:end]
+    ang = np.append(truth.angular_rad_s, 0.0)[:end]
+    starts = np.arange(result.first_tick, result.first_tick + plan.ticks) * plan.dt_s
     out = {
         "ground_truth.csv": _table(("time_s", "x_m", "y_m", "yaw_rad", "linear_m_s",
                                     "angular_rad_s"),
-                                   (ticks, truth.x_m, truth.y_m, truth.yaw_rad, lin, ang)),
+                                   (ticks, truth.x_m[:end], truth.y_m[:end],
+                                    truth.yaw_rad[:end], lin, ang)),
         "cmd_vel.csv": _table(("time_s", "target_linear_m_s", "target_angular_rad_s",
                                "linear_m_s", "angular_rad_s", "left_wheel_rad_s",
                                "right_wheel_rad_s"),
@@ -57,9 +70,9 @@ def tables(result: SimResult) -> dict[str, str]:
         "joint_states.csv": _table(
             ("time_s", *(f"{n}_rad" for n in joints.names), *(f"{n}_rad_s" for n in joints.names)),
             (joints.times_s, *joints.positions.T, *joints.velocities.T)),
-        "collisions.csv": "time_s,obstacle,link,x_m,y_m,yaw_rad\n" + "".join(
+        "collisions.csv": (("time_s", "obstacle", "link", "x_m", "y_m", "yaw_rad"), "".join(
             f"{c.time_s!r},{c.obstacle},{c.link},{c.x_m!r},{c.y_m!r},{c.yaw_rad!r}\n"
-            for c in result.contacts),
+            for c in result.contacts)),
     }
     if result.scans is not None:
         scans = result.scans
@@ -82,25 +95,44 @@ def tables(result: SimResult) -> dict[str, str]:
     return out
 
 
-def write_directory(directory: str | Path, result: SimResult, summary: Summary) -> None:
-    """Write every CSV and ``summary.json`` into ``directory``.
+class CsvWriter:
+    """Writes a run's CSV files and ``summary.json`` into ``directory``, piece by piece.
 
     A missing directory is built under a temporary name beside it and renamed into place;
-    in an existing one, every file is written to a temporary first and all are renamed at
-    the end. Either way an interrupted run leaves no temporary and no partial set of files.
+    in an existing one, every file is written to a temporary first. Either way the files
+    are put in place when ``stack`` closes after :meth:`finish`, and an interrupted run
+    leaves no temporary and no partial set of files.
 
     Raises:
         OutputError: The directory cannot be created or written.
     """
-    path = Path(directory)
-    files = {**tables(result), "summary.json": dumps(summary)}
-    if path.exists() and not path.is_dir():
-        raise OutputError(f"{path}: exists and is not a directory; give a directory for --out")
-    if not path.exists():
-        with atomic_directory(path) as temporary:
-            for name, text in files.items():
-                (temporary / name).write_text(text, encoding="utf-8", newline="\n")
-        return
-    with contextlib.ExitStack() as stack:  # each file is renamed into place on exit
-        for name, text in files.items():
-            stack.enter_context(atomic_output(path / name)).write(text)
+
+    def __init__(self, directory: str | Path, stack: contextlib.ExitStack) -> None:
+        path = Path(directory)
+        if path.exists() and not path.is_dir():
+            raise OutputError(f"{path}: exists and is not a directory; give a directory for "
+                              "--out")
+        self.stack = stack
+        if path.exists():
+            self.folder, self.in_place = path, False
+        else:
+            self.folder, self.in_place = stack.enter_context(atomic_directory(path)), True
+        self.files: dict[str, IO[Any]] = {}
+
+    def _open(self, name: str) -> IO[Any]:
+        if self.in_place:  # inside the directory being built
+            return self.stack.enter_context((self.folder / name).open(
+                "w", encoding="utf-8", newline="\n"))
+        return self.stack.enter_context(atomic_output(self.folder / name))
+
+    def add(self, piece: SimResult) -> None:
+        """Append the rows of a piece of the run (the first opens the files)."""
+        for name, (header, rows) in tables(piece).items():
+            if name not in self.files:
+                self.files[name] = self._open(name)
+                self.files[name].write(",".join(header) + "\n")
+            self.files[name].write(rows)
+
+    def finish(self, summary: Summary) -> None:
+        """Write ``summary.json``; the files go in place when the stack closes."""
+        self._open("summary.json").write(dumps(summary))

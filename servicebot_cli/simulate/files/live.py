@@ -1,7 +1,8 @@
 """The live window: the run played back in a matplotlib window, at real time or faster.
 
 Needs a display. :func:`display_problem` says in one line why there is none (so the command
-can ask for ``--headless``) before any work is done.
+can ask for ``--headless``) before any work is done. The window plays a run simulated in one
+piece (:func:`~servicebot_cli.simulate.simulator.run`): every tick is kept for it.
 """
 
 from __future__ import annotations
@@ -51,7 +52,9 @@ def show(result: SimResult, *, speed: float = 1.0, frame_rate_hz: float = 20.0) 
         raise ServicebotError(f"cannot open the live window ({exc}); install python3-tk, or "
                               "use --headless with --plot FILE.png") from None
     fig, ax = plt.subplots(figsize=(8, 8))
-    draw_world(ax, result)
+    scans = result.scans
+    draw_world(ax, result.solids,
+               float(scans.origin_m[0, 2]) if scans is not None and len(scans.times_s) else None)
     truth = result.truth
     ox, oy, _ = odometry_in_world(result)
     margin = 0.5
@@ -99,11 +102,12 @@ def _update(artists: _Artists, result: SimResult, t: float, ox: FloatArray,
     j = int(np.searchsorted(result.odometry.times_s, t))
     artists.odom.set_data(ox[:j], oy[:j])
     # the parts' outlines as one line, separated by NaN breaks
-    parts = robot_outlines(result, k)
+    parts = robot_outlines(result.body, (truth.x_m[k], truth.y_m[k], truth.yaw_rad[k]),
+                           result.arm_positions_rad[k])
     outline = np.vstack([np.vstack((p, [[np.nan, np.nan]])) for p in parts])
     artists.body.set_data(outline[:, 0], outline[:, 1])
     if result.scans is not None and len(result.scans.times_s):
         s = max(int(np.searchsorted(result.scans.times_s, t, side="right")) - 1, 0)
-        points = scan_points(result, s)
+        points = scan_points(result.scans, s)
         artists.scan.set_data(points[:, 0], points[:, 1])
     artists.clock.set_text(f"{result.scenario.name}  t = {t:6.1f} s")

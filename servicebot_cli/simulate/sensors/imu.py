@@ -46,14 +46,28 @@ class ImuSamples:
     linear_acceleration_variance: tuple[float, float, float]
 
 
+def axis_noises(spec: ImuSpec, rng: np.random.Generator, count: int) -> list[noise.Noise]:
+    """The noise of each axis for a run of ``count`` samples, in the order of ``measure``.
+
+    Angular velocity then linear acceleration, axis by axis, each drawn for the whole run
+    before the next (so a run gives the same numbers in pieces).
+    """
+    specs = [axis_spec for axis in range(3) for axis_spec in (
+        spec.angular_velocity_noise[axis], spec.linear_acceleration_noise[axis])]
+    return noise.one_after_another(specs, rng, count)
+
+
 def measure(spec: ImuSpec, transform_sensor_to_base: FloatArray, path: Path2D,
-            times_s: FloatArray, rng: np.random.Generator) -> ImuSamples:
-    """IMU samples at ``times_s`` along ``path``."""
-    n = len(path.linear_m_s)
-    k = np.clip(np.floor(times_s / path.dt_s + 1e-9).astype(np.int64), 0, n - 1)
+            times_s: FloatArray, noises: list[noise.Noise],
+            before: tuple[float, float] = (0.0, 0.0)) -> ImuSamples:
+    """IMU samples at ``times_s`` along ``path``, with ``noises`` (from :func:`axis_noises`).
+
+    ``before`` is the twist (v [m/s], omega [rad/s]) of the tick before ``path``'s first.
+    """
+    k = path.tick_index(times_s)
     v, w = path.linear_m_s[k], path.angular_rad_s[k]
-    previous_v = np.concatenate(([0.0], path.linear_m_s[:-1]))[k]
-    previous_w = np.concatenate(([0.0], path.angular_rad_s[:-1]))[k]
+    previous_v = np.concatenate(([before[0]], path.linear_m_s[:-1]))[k]
+    previous_w = np.concatenate(([before[1]], path.angular_rad_s[:-1]))[k]
     dv, dw = (v - previous_v) / path.dt_s, (w - previous_w) / path.dt_s
     rx, ry = transform_sensor_to_base[0, 3], transform_sensor_to_base[1, 3]
     accel_base = np.column_stack((dv - w * w * rx - dw * ry, v * w + dw * rx - w * w * ry,
@@ -63,8 +77,8 @@ def measure(spec: ImuSpec, transform_sensor_to_base: FloatArray, path: Path2D,
     accel = accel_base @ to_sensor
     rate = rate_base @ to_sensor
     for axis in range(3):
-        rate[:, axis] = noise.apply(rate[:, axis], spec.angular_velocity_noise[axis], rng)
-        accel[:, axis] = noise.apply(accel[:, axis], spec.linear_acceleration_noise[axis], rng)
+        rate[:, axis] = noises[2 * axis].add(rate[:, axis])
+        accel[:, axis] = noises[2 * axis + 1].add(accel[:, axis])
     _, _, yaw = pose_at(path, times_s)
     orientation = rotations.multiply(rotations.yaw(yaw), quaternion_from_matrix(to_sensor))
     return ImuSamples(

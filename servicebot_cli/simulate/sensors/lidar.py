@@ -9,7 +9,7 @@ REP 117 and ``sensor_msgs/LaserScan`` say; the others get the gaussian noise, ar
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -38,6 +38,7 @@ class Scans:
     ranges_m: FloatArray
     origin_m: FloatArray  # sensor position in the world per scan, (scans, 3)
     yaw_rad: FloatArray  # sensor heading in the world per scan
+    period_s: float = 0.0  # between scans (0 for a run of one scan)
 
 
 def scan_angles(spec: LidarSpec) -> FloatArray:
@@ -52,9 +53,11 @@ def scan_angles(spec: LidarSpec) -> FloatArray:
 
 def scan(spec: LidarSpec, transform_sensor_to_base: FloatArray, base_height_m: float,
          path: Path2D, times_s: FloatArray, solids: Sequence[Solid], meshes: Sequence[raycast.Mesh],
-         rng: np.random.Generator, progress: Callable[[int], None] | None = None,
-         own_m: FloatArray | None = None) -> Scans:
-    """Every scan of a run at ``times_s``; ``own_m`` (scans, rays) are ranges to the robot."""
+         noise_m: noise.Noise, own_m: FloatArray | None = None, period_s: float = 0.0) -> Scans:
+    """The scans at ``times_s`` along ``path``; ``own_m`` (scans, rays) are ranges to the robot.
+
+    ``noise_m`` is the range noise of the run (its bias drawn once).
+    """
     angles = scan_angles(spec)
     x, y, yaw = pose_at(path, times_s)
     local_dirs = transform_sensor_to_base[:3, :3] @ np.vstack(
@@ -77,10 +80,9 @@ def scan(spec: LidarSpec, transform_sensor_to_base: FloatArray, base_height_m: f
         true[start:stop] = raycast.cast(o, dirs, solids, meshes=meshes).reshape(stop - start, -1)
         if own_m is not None:
             np.minimum(true[start:stop], own_m[start:stop], out=true[start:stop])
-        if progress is not None:
-            progress(stop - start)
     sensor_yaw = yaw + np.arctan2(transform_sensor_to_base[1, 0], transform_sensor_to_base[0, 0])
-    return Scans(spec, times_s, angles, readings(true, spec, rng), origins, sensor_yaw)
+    return Scans(spec, times_s, angles, readings(true, spec, noise_m), origins, sensor_yaw,
+                 period_s)
 
 
 def ray_directions(spec: LidarSpec, transform_sensor_to_base: FloatArray) -> FloatArray:
@@ -131,11 +133,11 @@ def raycast_batch() -> int:
     return RAYS_PER_BATCH
 
 
-def readings(true_m: FloatArray, spec: LidarSpec, rng: np.random.Generator) -> FloatArray:
+def readings(true_m: FloatArray, spec: LidarSpec, noise_m: noise.Noise) -> FloatArray:
     """What the sensor reports for true ranges: noise, clipping, resolution, +-inf."""
     low = spec.min_range_m if spec.min_range_m is not None else 0.0
     high = spec.max_range_m if spec.max_range_m is not None else np.inf
-    noisy = noise.apply(true_m, spec.noise, rng)
+    noisy = noise_m.add(true_m)
     with np.errstate(invalid="ignore"):
         values = np.clip(noisy, low, high)
         if spec.range_resolution_m:

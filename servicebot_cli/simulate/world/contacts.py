@@ -198,7 +198,10 @@ def closest(tester: Tester, posed: FloatArray, below: float = np.inf) -> Closest
     """The smallest part-obstacle distance over all poses, measured only where it can be.
 
     Pairs are measured in order of their lower bound; the search stops when the next bound
-    is above the best distance found (or above ``below``, a clearance already known).
+    is above the best distance found. Of equal distances the first pose wins (then the first
+    part, then the first obstacle), so the answer does not depend on the order of measuring.
+    Only a distance below ``below`` (a clearance already known) counts: none is found
+    otherwise.
     """
     none = Closest(float("inf"), -1, -1, -1)
     if not tester.world or not len(posed):
@@ -209,13 +212,14 @@ def closest(tester: Tester, posed: FloatArray, below: float = np.inf) -> Closest
     while len(open_):
         take = open_ if len(open_) <= _CHUNK else \
             open_[np.argpartition(bounds[open_], _CHUNK)[:_CHUNK]]
-        for flat in take:
+        for flat in np.sort(take).tolist():
             p, s, o = np.unravel_index(flat, posed.shape[:2] + (len(tester.world),))
             d = tester.distance(posed, int(p), int(s), int(o))
-            if d < best:
-                best, best_flat = d, int(flat)
+            if d < best or (d == best and best_flat >= 0 and flat < best_flat):
+                best, best_flat = d, flat
         bounds[take] = np.inf
-        open_ = open_[bounds[open_] < best]
+        # a pair bounded by the best distance may still equal it, at an earlier pose
+        open_ = open_[bounds[open_] <= best] if best_flat >= 0 else open_[bounds[open_] < best]
     if best_flat < 0:
         return none
     p, s, o = np.unravel_index(best_flat, posed.shape[:2] + (len(tester.world),))

@@ -8,7 +8,10 @@ A body moving at constant forward speed :math:`v` and yaw rate :math:`\omega` fo
           \Delta\theta = \omega\Delta t
 
 (the straight line :math:`\Delta x = v\Delta t` when :math:`\omega = 0`). Steps are composed
-for all ticks at once with cumulative sums, so a whole run is a handful of numpy calls.
+for many ticks at once with cumulative sums, so a stretch of a run is a handful of numpy calls.
+A run is integrated a stretch at a time (:class:`Integrator`, :class:`BlockedMotion`): the
+sums run on from one stretch to the next, so the poses have the same bits as one sum over
+the whole run.
 """
 
 from __future__ import annotations
@@ -26,9 +29,10 @@ _STRAIGHT = 1e-9  # |omega dt| below this is a straight step (sin x / x = 1 to 1
 
 @dataclass(frozen=True)
 class Path2D:
-    """Poses at tick boundaries: ``x_m[k], y_m[k], yaw_rad[k]`` at time ``k dt``, k = 0..n.
+    """Poses at tick boundaries: ``x_m[i], y_m[i], yaw_rad[i]`` at time ``(first_tick + i) dt``.
 
-    ``linear_m_s`` and ``angular_rad_s`` (length n) are the twists actually followed.
+    ``linear_m_s`` and ``angular_rad_s`` (length n, for n + 1 poses) are the twists actually
+    followed. A whole run starts at tick 0; a stretch of it at ``first_tick``.
     """
 
     dt_s: float
@@ -37,6 +41,16 @@ class Path2D:
     yaw_rad: FloatArray
     linear_m_s: FloatArray
     angular_rad_s: FloatArray
+    first_tick: int = 0
+
+    def tick_index(self, times_s: FloatArray, *, boundaries: bool = False) -> IntArray:
+        """Index into this stretch of the tick holding each time (clamped to the stretch).
+
+        With ``boundaries``, of the tick boundary at or before each time.
+        """
+        last = len(self.linear_m_s) - (0 if boundaries else 1)
+        k = np.floor(np.asarray(times_s) / self.dt_s + 1e-9).astype(np.int64) - self.first_tick
+        return np.clip(k, 0, last)
 
 
 @dataclass(frozen=True)
@@ -64,15 +78,41 @@ def arc_step(linear_m_s: FloatArray, angular_rad_s: FloatArray,
     return dx, dy, dyaw
 
 
-def integrate(start: tuple[float, float, float], linear_m_s: FloatArray,
-              angular_rad_s: FloatArray, dt_s: float) -> Path2D:
-    """Compose arc steps from ``start = (x [m], y [m], yaw [rad])``, all ticks at once."""
-    dx, dy, dyaw = arc_step(linear_m_s, angular_rad_s, dt_s)
-    yaw = start[2] + np.concatenate(([0.0], np.cumsum(dyaw)))
-    cos, sin = np.cos(yaw[:-1]), np.sin(yaw[:-1])
-    x = start[0] + np.concatenate(([0.0], np.cumsum(cos * dx - sin * dy)))
-    y = start[1] + np.concatenate(([0.0], np.cumsum(sin * dx + cos * dy)))
-    return Path2D(dt_s, x, y, yaw, np.asarray(linear_m_s, float), np.asarray(angular_rad_s, float))
+class Integrator:
+    """Arc steps composed from an origin, a stretch of ticks at a time.
+
+    The three cumulative sums (x, y, yaw) run on from one stretch to the next, so the poses
+    have the same bits as one cumulative sum from the origin. A sum starts at -0.0: the one
+    float z with ``z + v == v`` for every v.
+    """
+
+    def __init__(self, origin: tuple[float, float, float]) -> None:
+        self.restart(origin)
+
+    def restart(self, origin: tuple[float, float, float]) -> None:
+        """Compose the next steps from ``origin`` (x [m], y [m], yaw [rad])."""
+        self.origin = origin
+        self.sums = (-0.0, -0.0, -0.0)
+
+    def trial(self, linear_m_s: FloatArray, angular_rad_s: FloatArray,
+              dt_s: float) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+        """Poses after each step, shape (n,) each, and the running sums, shape (n + 1, 3).
+
+        The sums are those before the first step and after each; nothing is kept until
+        :meth:`keep`.
+        """
+        dx, dy, dyaw = arc_step(linear_m_s, angular_rad_s, dt_s)
+        sum_yaw = np.cumsum(np.concatenate(([self.sums[2]], dyaw)))
+        yaw = self.origin[2] + sum_yaw
+        cos, sin = np.cos(yaw[:-1]), np.sin(yaw[:-1])
+        sum_x = np.cumsum(np.concatenate(([self.sums[0]], cos * dx - sin * dy)))
+        sum_y = np.cumsum(np.concatenate(([self.sums[1]], sin * dx + cos * dy)))
+        return (self.origin[0] + sum_x[1:], self.origin[1] + sum_y[1:], yaw[1:],
+                np.column_stack((sum_x, sum_y, sum_yaw)))
+
+    def keep(self, sums: FloatArray, steps: int) -> None:
+        """Keep the first ``steps`` steps of a trial whose sums are ``sums``."""
+        self.sums = (float(sums[steps, 0]), float(sums[steps, 1]), float(sums[steps, 2]))
 
 
 Collides = Callable[[IntArray, FloatArray, FloatArray, FloatArray], tuple[IntArray, IntArray]]
@@ -80,56 +120,83 @@ Collides = Callable[[IntArray, FloatArray, FloatArray, FloatArray], tuple[IntArr
 it (indices into the names), -1 where free. The tick says where the arm is."""
 
 
-def integrate_blocked(start: tuple[float, float, float], linear_m_s: FloatArray,
-                      angular_rad_s: FloatArray, dt_s: float, collides: Collides,
-                      names: list[str], links: Sequence[str]) -> tuple[Path2D, list[Contact]]:
-    """Like :func:`integrate`, but steps into obstacles are refused.
+class BlockedMotion:
+    """The base's motion with steps into obstacles refused, a stretch of ticks at a time.
 
     A step that would put any link into an obstacle leaves the base where it was (its
-    wheels still turn) and logs a contact naming the obstacle and the link.
-
-    While blocked, each later step is tried from the resting pose; the first one that is free
-    (turning or backing away) resumes the motion.
+    wheels still turn) and logs a contact naming the obstacle and the link. While blocked,
+    each later step is tried from the resting pose; the first one that is free (turning or
+    backing away) resumes the motion.
     """
-    n = len(linear_m_s)
-    lin, ang = np.array(linear_m_s, float), np.array(angular_rad_s, float)
-    x, y, yaw = np.empty(n + 1), np.empty(n + 1), np.empty(n + 1)
-    x[0], y[0], yaw[0] = start
-    contacts: list[Contact] = []
-    k = 0
-    while k < n:
-        path = integrate((x[k], y[k], yaw[k]), lin[k:], ang[k:], dt_s)
-        ticks = np.arange(k + 1, n + 1)
-        hit, link = collides(ticks, path.x_m[1:], path.y_m[1:], path.yaw_rad[1:])
-        blocked = np.flatnonzero(hit >= 0)
-        stop = n if not len(blocked) else k + int(blocked[0])
-        x[k + 1:stop + 1] = path.x_m[1:stop - k + 1]
-        y[k + 1:stop + 1] = path.y_m[1:stop - k + 1]
-        yaw[k + 1:stop + 1] = path.yaw_rad[1:stop - k + 1]
-        if stop == n:
-            break
-        contacts.append(Contact(stop * dt_s, names[int(hit[blocked[0]])],
-                                links[int(link[blocked[0]])],
-                                float(x[stop]), float(y[stop]), float(yaw[stop])))
-        k = _wait_until_free(stop, x, y, yaw, lin, ang, dt_s, collides)
-    moved_lin, moved_ang = _followed_twist(x, y, yaw, lin, ang)
-    return Path2D(dt_s, x, y, yaw, moved_lin, moved_ang), contacts
+
+    def __init__(self, start: tuple[float, float, float], dt_s: float, names: list[str],
+                 links: Sequence[str]) -> None:
+        self.dt_s, self.names, self.links = dt_s, names, links
+        self.pose = start
+        self.integrator = Integrator(start)
+        self.waiting = False  # resting against an obstacle
+
+    def advance(self, first_tick: int, linear_m_s: FloatArray, angular_rad_s: FloatArray,
+                collides: Collides) -> tuple[Path2D, list[Contact]]:
+        """The next ticks, from ``first_tick``: the path and the contacts that began.
+
+        ``collides`` names the obstacle and link (indices into ``names`` and ``links``)
+        each pose at those ticks would touch.
+        """
+        n = len(linear_m_s)
+        lin, ang = np.array(linear_m_s, float), np.array(angular_rad_s, float)
+        x, y, yaw = np.empty(n + 1), np.empty(n + 1), np.empty(n + 1)
+        x[0], y[0], yaw[0] = self.pose
+        contacts: list[Contact] = []
+        k = 0
+        while k < n:
+            if self.waiting:
+                k = self._wait_until_free(first_tick, k, (x, y, yaw), lin, ang, collides)
+                continue
+            px, py, pyaw, sums = self.integrator.trial(lin[k:], ang[k:], self.dt_s)
+            hit, link = collides(np.arange(first_tick + k + 1, first_tick + n + 1),
+                                      px, py, pyaw)
+            blocked = np.flatnonzero(hit >= 0)
+            stop = n if not len(blocked) else k + int(blocked[0])
+            x[k + 1:stop + 1], y[k + 1:stop + 1] = px[:stop - k], py[:stop - k]
+            yaw[k + 1:stop + 1] = pyaw[:stop - k]
+            if stop == n:
+                self.integrator.keep(sums, n - k)
+                break
+            tick = first_tick + stop
+            contacts.append(Contact(tick * self.dt_s, self.names[int(hit[blocked[0]])],
+                                    self.links[int(link[blocked[0]])],
+                                    float(x[stop]), float(y[stop]), float(yaw[stop])))
+            self.waiting, k = True, stop
+        self.pose = (float(x[n]), float(y[n]), float(yaw[n]))
+        moved_lin, moved_ang = _followed_twist(x, y, yaw, lin, ang)
+        return Path2D(self.dt_s, x, y, yaw, moved_lin, moved_ang, first_tick), contacts
+
+    def _wait_until_free(self, first_tick: int, k: int,
+                         poses: tuple[FloatArray, FloatArray, FloatArray], lin: FloatArray,
+                         ang: FloatArray, collides: Collides) -> int:
+        """Hold the pose at ``k`` until a step from it is free; return that step's index."""
+        n, (x, y, yaw) = len(lin), poses
+        dx, dy, dyaw = arc_step(lin[k:], ang[k:], self.dt_s)
+        c, s = np.cos(yaw[k]), np.sin(yaw[k])
+        hit, _ = collides(np.arange(first_tick + k + 1, first_tick + n + 1),
+                               x[k] + c * dx - s * dy, y[k] + s * dx + c * dy, yaw[k] + dyaw)
+        ok = np.flatnonzero((hit < 0) & ((lin[k:] != 0) | (ang[k:] != 0)))
+        resume = n if not len(ok) else k + int(ok[0])
+        x[k + 1:resume + 1], y[k + 1:resume + 1], yaw[k + 1:resume + 1] = x[k], y[k], yaw[k]
+        if resume < n:
+            self.waiting = False
+            self.integrator.restart((float(x[k]), float(y[k]), float(yaw[k])))
+        return resume
 
 
-def _wait_until_free(k: int, x: FloatArray, y: FloatArray, yaw: FloatArray, lin: FloatArray,
-                     ang: FloatArray, dt_s: float, collides: Collides) -> int:
-    """Hold the pose at tick ``k`` until a step from it is free; return that step's tick."""
-    n = len(lin)
-    dx, dy, dyaw = arc_step(lin[k:], ang[k:], dt_s)
-    c, s = np.cos(yaw[k]), np.sin(yaw[k])
-    hit, _ = collides(np.arange(k + 1, n + 1), x[k] + c * dx - s * dy, y[k] + s * dx + c * dy,
-                      yaw[k] + dyaw)
-    free = hit < 0
-    moving = (lin[k:] != 0) | (ang[k:] != 0)
-    ok = np.flatnonzero(free & moving)
-    resume = n if not len(ok) else k + int(ok[0])
-    x[k + 1:resume + 1], y[k + 1:resume + 1], yaw[k + 1:resume + 1] = x[k], y[k], yaw[k]
-    return resume
+def pose_at(path: Path2D, times_s: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Poses at arbitrary times, exact along each tick's arc (clamped to the path)."""
+    k = path.tick_index(times_s)
+    tau = np.clip(times_s - (k + path.first_tick) * path.dt_s, 0.0, path.dt_s)
+    dx, dy, dyaw = arc_step(path.linear_m_s[k], path.angular_rad_s[k], tau)
+    c, s = np.cos(path.yaw_rad[k]), np.sin(path.yaw_rad[k])
+    return path.x_m[k] + c * dx - s * dy, path.y_m[k] + s * dx + c * dy, path.yaw_rad[k] + dyaw
 
 
 def _followed_twist(x: FloatArray, y: FloatArray, yaw: FloatArray, lin: FloatArray,
@@ -137,13 +204,3 @@ def _followed_twist(x: FloatArray, y: FloatArray, yaw: FloatArray, lin: FloatArr
     """The commanded twist where the base moved, zero where it was held."""
     held = (np.diff(x) == 0) & (np.diff(y) == 0) & (np.diff(yaw) == 0)
     return np.where(held, 0.0, lin), np.where(held, 0.0, ang)
-
-
-def pose_at(path: Path2D, times_s: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
-    """Poses at arbitrary times, exact along each tick's arc (clamped to the run)."""
-    n = len(path.linear_m_s)
-    k = np.clip(np.floor(times_s / path.dt_s + 1e-9).astype(np.int64), 0, n - 1)
-    tau = np.clip(times_s - k * path.dt_s, 0.0, path.dt_s)
-    dx, dy, dyaw = arc_step(path.linear_m_s[k], path.angular_rad_s[k], tau)
-    c, s = np.cos(path.yaw_rad[k]), np.sin(path.yaw_rad[k])
-    return path.x_m[k] + c * dx - s * dy, path.y_m[k] + s * dx + c * dy, path.yaw_rad[k] + dyaw
