@@ -140,18 +140,25 @@ def test_reconnect_keeps_the_motors_at_zero_until_the_link_is_back(emulator, tmp
     assert not state["moving"]
 
 
-def test_the_arduino_protocol_end_to_end(emulator):
+def test_the_arduino_protocol_end_to_end(emulator, tmp_path):
     emu = emulator("--protocol", "arduino", "--ticks-per-rev", "3436", "--watchdog-ms", "500")
+    log = tmp_path / "run.csv"
     code, stdout, stderr = finish(servicebot(
         "drive", "--port", emu.path, "--protocol", "arduino", "--ticks-per-rev", "3436",
-        "--linear", "0.02", "--angular", "0.05", "--duration-s", "1.5", "--format", "json"))
+        "--linear", "0.02", "--angular", "0.05", "--duration-s", "1.5", "--format", "json",
+        "--log", log))
     assert code == 0, stderr
     summary = json.loads(stdout)
     assert summary["stop_confirmed"] and summary["firmware"].startswith("ROSArduinoBridge")
+    # every command's encoder counts come back (after its OK) and are read
+    assert summary["replies"] >= summary["commands"] - 1
+    assert len(list(csv.DictReader(log.open()))) == summary["replies"]
     state = state_when(emu, lambda s: s["counters"]["stops"] >= 1 and not s["moving"], "stop")
     for wheel, reported in zip(state["wheels"], summary["wheels"], strict=True):
         assert wheel["position_rad"] == pytest.approx(reported["commanded_travel_rad"],
                                                       rel=0.05, abs=0.02)
+        assert reported["measured_travel_rad"] == pytest.approx(wheel["position_rad"],
+                                                                abs=0.01)
     assert state["wheels"][1]["position_rad"] > state["wheels"][0]["position_rad"] > 0
 
 

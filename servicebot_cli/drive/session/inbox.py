@@ -44,7 +44,7 @@ class Inbox:
         self.rtt_s: float | None = None
         self.rtts_s: deque[float] = deque(maxlen=4096)
         self.measured_travel_rad = [0.0] * wheel_count
-        self._sent: dict[int, float] = {}
+        self._sent: dict[int, float | None] = {}  # token -> sent at; None once timed
         self._reply_times: deque[float] = deque(maxlen=256)
         self._faults: tuple[str, ...] = ()
         self._last_positions: tuple[float, ...] | None = None
@@ -102,8 +102,15 @@ class Inbox:
             raise FirmwareRefuses(self.link.refusal_advice(self.where))
 
     def _acknowledged(self, token: int, now_s: float) -> None:
-        if token in self._sent:
-            self.rtt_s = now_s - self._sent.pop(token)
+        """Time the first reply to ``token``; it stays known, for the replies after it.
+
+        ROSArduinoBridge answers one command twice (``OK`` to ``m``, then the counts to
+        ``e``): forgetting the token at the first would make the counts a stale reply.
+        """
+        sent_s = self._sent.get(token)
+        if sent_s is not None:
+            self._sent[token] = None
+            self.rtt_s = now_s - sent_s
             self.rtts_s.append(self.rtt_s)
 
     def _on_reading(self, reading: Reading, now_s: float) -> None:
