@@ -20,6 +20,7 @@ from servicebot_cli.drive.protocols.framing import Decoder, Frame, encode_frame
 
 FIRMWARE_VERSION = (1, 0)
 _DISTINCT_COMMANDS_KEPT = 32
+_STOPS_KEPT = 16
 
 JsonValue: TypeAlias = "str | int | float | bool | None | list[JsonValue] | dict[str, JsonValue]"
 State: TypeAlias = dict[str, JsonValue]  # state for the emulator's state file, JSON-ready
@@ -37,6 +38,7 @@ class Counters:
     watchdog_trips: int = 0
     first_command: str | None = None
     last_stop_s: float | None = None
+    recent_stops_s: list[float] = field(default_factory=list)  # the last 16, oldest first
     max_abs_wheel_command_rad_s: float = 0.0
     wheel_commands: list[list[float]] = field(default_factory=list)  # distinct, first 32
 
@@ -132,6 +134,7 @@ class MotorModel:
         self._motion_command("STOP", now_s)
         self.counters.stops += 1
         self.counters.last_stop_s = now_s
+        self.counters.recent_stops_s = [*self.counters.recent_stops_s[-(_STOPS_KEPT - 1):], now_s]
 
     def _motion_command(self, name: str, now_s: float) -> None:
         self.last_motion_command_s = now_s
