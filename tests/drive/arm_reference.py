@@ -76,10 +76,13 @@ class ArmReference:
     def arm_joint_ids(self) -> set[int]:
         return {self.model.getJointId(n) for n in ARM}
 
+    def below_floor_m(self, arm_rad: tuple[float, ...]) -> float:
+        """How far the arm's lowest corner is below the floor at ``arm_rad`` [m] (< 0: above)."""
+        return self.floor_z_m - self._lowest_m(self._placed(arm_rad), moving=True)
+
     def clear(self, arm_rad: tuple[float, ...]) -> bool:
         """No pair intersects, and the arm is above the floor, at ``arm_rad``."""
-        return not self.intersecting(arm_rad) and self._lowest_m(
-            self._placed(arm_rad), moving=True) > self.floor_z_m
+        return not self.intersecting(arm_rad) and self.below_floor_m(arm_rad) < 0.0
 
     def firmware_path(self, start: tuple[float, ...], target: tuple[float, ...],
                       dt_s: float = 0.001) -> list[tuple[float, ...]]:

@@ -50,14 +50,30 @@ def arm_args(values):
 
 
 def test_a_colliding_target_is_refused_before_any_frame(run, colliding):
+    from servicebot_cli.kinematics.collisions import Contact
+    from servicebot_cli.kinematics.diagnosis import collision_hint
+
     value, found = colliding
     result = run("drive", "--dry-run", "--duration-s", "1", "--arm",
                  f"arm_link1_to_link2={value}")
     line = assert_one_line_error(result, 2, "Invalid value for",
                                  f"arm target arm_link1_to_link2={value:g} is reachable only "
-                                 "through a collision", "--allow-collisions", "--srdf FILE")
+                                 "through a collision")
+    pair = PAIR.search(line)
     assert named_pair(line) in found
+    assert line.endswith(f"is {collision_hint(Contact(pair[1], pair[3]))} "
+                         "(see 'servicebot drive --help')")  # ik's words
     assert result.stdout == ""  # no frame printed
+
+
+def test_the_floor_is_a_collision_no_srdf_can_disable(run, reference):
+    pitch = next(p for p in np.arange(0.3, 1.57, 0.05)
+                 if reference.below_floor_m((1.57, p, 0.0, 0.0)) > 0.02)  # arm out to the side
+    assert not reference.intersecting((1.57, pitch, 0.0, 0.0))  # nothing but the floor
+    line = assert_one_line_error(run("drive", "--dry-run", "--duration-s", "1",
+                                     *arm_args((1.57, pitch, 0.0, 0.0))), 2)
+    assert line.endswith(" and the floor would intersect; --allow-collisions accepts it "
+                         "(see 'servicebot drive --help')")
 
 
 def test_allow_collisions_lets_it_through(run, colliding):
