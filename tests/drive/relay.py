@@ -3,7 +3,8 @@
 One side opens a device (the emulator's pty, or the C++ firmware's) as a host would; the
 other side is a new pty that ``servicebot drive`` opens. Two threads copy bytes across,
 each byte independently dropped, bit-flipped or followed by a random byte with the given
-probabilities (seeded), both ways.
+probabilities (seeded), both ways. With no noise it is a clean line that can tap what the
+host sends (``on_host``: the bytes, as they cross).
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ import select
 import termios
 import threading
 import tty
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 
@@ -50,8 +52,9 @@ class Noise:
 class Relay:
     """Copies bytes between ``device`` and a new pty (:attr:`path`), through ``noise``."""
 
-    def __init__(self, device: str, noise: Noise) -> None:
-        self.noise = noise
+    def __init__(self, device: str, noise: Noise,
+                 on_host: Callable[[bytes], None] | None = None) -> None:
+        self.noise, self.on_host = noise, on_host
         self.device = os.open(device, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
         tty.setraw(self.device)
         termios.tcflush(self.device, termios.TCIOFLUSH)
@@ -72,6 +75,8 @@ class Relay:
                     data = os.read(fd, 1024)
                 except (BlockingIOError, OSError):
                     continue
+                if fd == self.master and self.on_host is not None:
+                    self.on_host(data)
                 try:
                     os.write(other, self.noise.apply(data))
                 except (BlockingIOError, OSError):

@@ -208,3 +208,53 @@ def test_ctrl_z_stops_the_wheels_before_suspending_and_fg_resumes(emulator):
 def _stopped_state(pid: int) -> bool:
     with open(f"/proc/{pid}/stat") as stat:
         return stat.read().rsplit(")", 1)[1].split()[0] == "T"
+
+
+DEADMAN_MS = 300
+TICK_S = 1 / 20  # drive's default --rate
+SCHEDULING_S = 0.05  # a key reaching drive, a frame reaching the tap: allowance for both
+
+
+def test_the_dead_man_stops_the_wheels_within_its_time_and_one_tick(emulator):
+    """Keys every 100 ms keep the wheels going; after the last one they stop in MS + a tick.
+
+    A tap on the line timestamps every SET_WHEELS as drive sends it (the same monotonic
+    clock as the keys); --max-accel 20 ramps from full speed to zero within one tick.
+    """
+    from servicebot_cli.drive.protocols.framing import Decoder
+    from servicebot_cli.drive.protocols.messages import MsgType, decode_values
+    from tests.drive.relay import Noise, Relay
+
+    emu = emulator()
+    decoder, wheels = Decoder(), []  # (monotonic s, speeds) of every SET_WHEELS
+
+    def tap(data: bytes) -> None:
+        now = time.monotonic()
+        wheels.extend((now, decode_values(frame)) for frame in decoder.feed(data)
+                      if frame.type == MsgType.SET_WHEELS)
+
+    relay = Relay(emu.path, Noise(), on_host=tap)
+    terminal = Terminal("--port", relay.path, "--deadman-ms", DEADMAN_MS, "--max-accel", 20)
+    try:
+        wait_for(lambda: "Hz rtt" in terminal.read(), "the status line")
+        first_key_s = time.monotonic()
+        for _ in range(12):  # as keyboard auto-repeat does, slower than it
+            terminal.type(b"w")
+            last_key_s = time.monotonic()
+            time.sleep(0.1)
+        wait_for(lambda: any(t > last_key_s and not any(v) for t, v in wheels),
+                 "a stop after the last key")
+        held = [v for t, v in wheels if first_key_s + 0.2 < t <= last_key_s]
+        assert held and all(all(s > 0 for s in v) for v in held)  # no early trip
+        stopped_s = min(t for t, v in wheels if t > last_key_s and not any(v))
+        assert DEADMAN_MS / 1000 < stopped_s - last_key_s <= (DEADMAN_MS / 1000 + TICK_S
+                                                              + SCHEDULING_S)
+        wait_for(lambda: not emu.state()["moving"], "the emulator's wheels to stop")
+        terminal.type(b"q")
+        assert terminal.finish() == 0, terminal.read()
+        assert emu.state()["counters"]["watchdog_trips"] == 0  # drive stopped them, not it
+    finally:
+        if terminal.proc.poll() is None:
+            terminal.proc.kill()
+        terminal.close()
+        relay.close()
