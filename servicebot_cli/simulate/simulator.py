@@ -69,8 +69,8 @@ class SimResult:
     imu: imu.ImuSamples | None
     camera: camera_info.Intrinsics | None
     camera_times_s: FloatArray
-    first_tick: int = 0
-    run_ticks: int = 0
+    first_tick: int
+    run_ticks: int
 
     @property
     def first(self) -> bool:

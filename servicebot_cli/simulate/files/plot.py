@@ -20,7 +20,7 @@ from servicebot_cli.common.files import OutputError, atomic_output
 from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.sensors.lidar import Scans
 from servicebot_cli.simulate.simulator import SimResult
-from servicebot_cli.simulate.summary import odometry_in_world
+from servicebot_cli.simulate.summary import odometry_drift, odometry_in_world
 from servicebot_cli.simulate.world.solids import Solid
 
 if TYPE_CHECKING:
@@ -63,8 +63,6 @@ class Track:
 
     def add(self, piece: SimResult) -> None:
         """Keep what the figure needs from the next piece of the run."""
-        from servicebot_cli.simulate.summary import odometry_drift
-
         truth, first = piece.truth, piece.first_tick
         ticks = np.arange(first, first + len(truth.x_m))
         keep = ((ticks % self.tick_stride == 0) | (ticks == self.ticks)) & (

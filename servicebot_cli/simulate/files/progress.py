@@ -36,12 +36,6 @@ class Progress:
         self.last_draw = now
         self._draw()
 
-    def stage(self, label: str) -> None:
-        """Name the stage now running (shown on the next redraw)."""
-        self.label = label
-        if self.drawn:
-            self._draw()
-
     def _draw(self) -> None:
         width = 30
         filled = int(width * self.done / self.total)
