@@ -10,7 +10,7 @@ from dataclasses import replace
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.kinematics.collisions import Contact
+from servicebot_cli.kinematics.collisions import FLOOR, Contact
 from servicebot_cli.kinematics.inverse import IkSolver, IkTarget
 
 FloatArray = npt.NDArray[np.float64]
@@ -50,6 +50,9 @@ def hint(solver: IkSolver, target: IkTarget, seed: FloatArray, rng: np.random.Ge
 
 def collision_hint(contact: Contact) -> str:
     """A hint for a target reached only with links in collision: which two."""
+    if contact.second == FLOOR:  # an SRDF names pairs of links, never the floor
+        return (f"reachable only through a collision: {contact} would intersect; "
+                "--allow-collisions accepts it")
     return (f"reachable only through a collision: {contact} would intersect; "
             "--allow-collisions accepts it, or --srdf FILE can disable the pair")
 

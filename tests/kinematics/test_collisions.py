@@ -157,3 +157,14 @@ def test_without_a_check_the_api_answers_as_before():
                             TargetSpec((0.1, 0.0, 0.0))), clock=time.perf_counter)
     assert not checked.success and isinstance(checked.outcome.result.contact, Contact)
     assert str(checked.outcome.result.contact).startswith("'base_link' and 'arm_link")
+
+
+def test_the_hint_offers_an_srdf_only_for_a_pair_of_links():
+    """An SRDF's <disable_collisions> names two links; it cannot name the floor."""
+    from servicebot_cli.kinematics.collisions import Contact
+    from servicebot_cli.kinematics.diagnosis import collision_hint
+
+    assert "--srdf FILE" in collision_hint(Contact("arm_link3", "base_link"))
+    floor = collision_hint(Contact("arm_link3", FLOOR))
+    assert "'arm_link3' and the floor" in floor and "--srdf" not in floor
+    assert "--allow-collisions" in floor
