@@ -4,7 +4,9 @@ The same scenario (the built-in default: a loop in a room, arm moving, every sen
   - in servicebot, in-process, with the MCAP bag written (what the >= 300 target is about),
   - in pybullet (DIRECT mode, husky from pybullet_data, 240 Hz physics, wheel velocity control,
     a 360-ray LIDAR by rayTestBatch at 10 Hz), and
-  - in ir-sim (diff-drive rectangle robot, lidar2d with 360 rays, 0.1 s steps, no display).
+  - in ir-sim (diff-drive rectangle robot, lidar2d with 360 rays, 0.1 s steps, no display),
+  - in MuJoCo, kinematic mode: the same URDF, poses set at the same 100 Hz control rate with
+    MuJoCo's kinematics and collision detection, the LIDAR's 360 rays by mj_multiRay at 10 Hz.
 Peers come from the `bench` extra: pip install '.[bench]'. A missing peer is reported, not
 faked. Run: python bench/simulate.py [--repeat N]
 
@@ -101,6 +103,71 @@ def pybullet_run(scenario) -> float:
     return wall
 
 
+def mujoco_run(scenario, robot) -> float:
+    """MuJoCo, kinematic mode: the same URDF, poses set at the control rate, the same rays.
+
+    The robot's root gets a free joint; each control tick integrates the commanded twist
+    (as a kinematic simulator does), writes the base pose, wheel and arm angles into qpos and
+    runs MuJoCo's kinematics and collision detection (mj_kinematics, mj_collision); the
+    LIDAR's 360 rays are cast with mj_multiRay at 10 Hz from the LIDAR's place on the base,
+    seeing the robot's own geometry as servicebot's rays do.
+    """
+    import mujoco
+    import numpy as np
+
+    from servicebot_cli.kinematics.forward import transforms
+    from servicebot_cli.kinematics.frames import frame_id, link_names
+
+    spec = mujoco.MjSpec.from_file(str(robot.path))
+    spec.worldbody.first_body().add_freejoint()
+    floor = spec.worldbody.add_geom()
+    floor.type, floor.size = mujoco.mjtGeom.mjGEOM_PLANE, [20, 20, 0.1]
+    for kind, x, y, z, hx, hy, hz, yaw in _boxes(scenario):
+        geom = spec.worldbody.add_geom()
+        geom.pos, geom.quat = [x, y, z], [math.cos(yaw / 2), 0, 0, math.sin(yaw / 2)]
+        if kind == "box":
+            geom.type, geom.size = mujoco.mjtGeom.mjGEOM_BOX, [hx, hy, hz]
+        else:
+            geom.type, geom.size = mujoco.mjtGeom.mjGEOM_CYLINDER, [hx, hz, 0]
+    model = spec.compile()
+    data = mujoco.MjData(model)
+    names = link_names(robot)
+    lidar = transforms(robot.model, robot.data, np.zeros(robot.model.nq),
+                       [frame_id(robot.model, "lidar_link", names)],
+                       frame_id(robot.model, robot.root_link, names))[0]
+    angles = np.linspace(-math.pi, math.pi, 360)
+    geomid, distance = np.zeros(360, dtype=np.int32), np.zeros(360)
+    dt, ticks = 0.01, int(scenario.duration_s * 100)
+    start = scenario.initial_pose
+    x, y, heading = start.x_m, start.y_m, start.yaw_rad
+    wheel, radius, track = 0.0, 0.05, 0.3
+    def multi_ray(*args):  # MuJoCo 4 added the normals out-argument before nray
+        try:
+            mujoco.mj_multiRay(*args[:9], None, *args[9:])
+        except TypeError:
+            mujoco.mj_multiRay(*args)
+
+    began = time.perf_counter()
+    for k in range(ticks):
+        v, w = _command_at(scenario, k * dt)
+        x, y = x + v * math.cos(heading) * dt, y + v * math.sin(heading) * dt
+        heading += w * dt
+        wheel += v / radius * dt
+        data.qpos[:7] = [x, y, 0.0, math.cos(heading / 2), 0, 0, math.sin(heading / 2)]
+        data.qpos[7:11] = wheel + np.array([-1, 1, -1, 1]) * w * track / (2 * radius) * k * dt
+        data.qpos[11:15] = 0.3 * math.sin(0.1 * k * dt)
+        mujoco.mj_kinematics(model, data)
+        mujoco.mj_collision(model, data)
+        if k % 10 == 0:  # LIDAR at 10 Hz
+            c, s = math.cos(heading), math.sin(heading)
+            origin = np.array([x + c * lidar[0, 3] - s * lidar[1, 3],
+                               y + s * lidar[0, 3] + c * lidar[1, 3], lidar[2, 3]])
+            rays = np.stack([np.cos(angles + heading), np.sin(angles + heading),
+                             np.zeros(360)], axis=1).ravel()
+            multi_ray(model, data, origin, rays, None, 1, -1, geomid, distance, 360, 12.0)
+    return time.perf_counter() - began
+
+
 def irsim_run(scenario) -> float:
     import irsim
     import numpy as np
@@ -190,6 +257,8 @@ def main() -> None:
              lambda: servicebot_run(scenario, robot), args.repeat))]
     rows.append(("pybullet DIRECT, husky", _try("pybullet", lambda: pybullet_run(scenario), 1)))
     rows.append(("ir-sim, no display", _try("ir-sim", lambda: irsim_run(scenario), 1)))
+    rows.append(("MuJoCo, kinematic, same URDF and rays", _try(
+        "mujoco", lambda: mujoco_run(scenario, robot), args.repeat)))
     ours = rows[0][1]
     print(f"default scenario: {scenario.duration_s:g} s simulated, median wall time")
     print(f"{'simulator':<36} {'wall [s]':>9} {'RTF':>8} {'servicebot is':>15}")
@@ -197,7 +266,8 @@ def main() -> None:
         if wall is None:
             print(f"{name:<36} {'-':>9} {'-':>8} {'not installed':>15}")
             continue
-        ratio = "-" if name.startswith("servicebot") else f"{wall / ours:.1f}x faster"
+        ratio = "-" if name.startswith("servicebot") else f"{wall / ours:.1f}x faster" \
+            if wall >= ours else f"{ours / wall:.1f}x slower"
         print(f"{name:<36} {wall:9.3f} {scenario.duration_s / wall:8.0f} {ratio:>15}")
 
 
