@@ -75,6 +75,14 @@ class ExpectationParam(click.ParamType["Expectation"]):
               help="ros2_control controllers file for diff_drive_controller's parameters "
               "[default: the one the robot's gazebo_ros2_control plugin names, else "
               "controllers.yaml beside the robot].")
+@click.option("--camera-scale", type=Number("S", positive=True, maximum=1.0),
+              help="Render camera images at S times the URDF's image size (0 < S <= 1); "
+              "turns images on.  [scenario default: 0.125]")
+@click.option("--camera-rate-hz", type=Number("HZ", positive=True),
+              help="Camera frames per simulated second, at most the URDF camera's update "
+              "rate; turns images on.  [default: that rate]")
+@click.option("--camera-depth", is_flag=True,
+              help="Render a depth image (32FC1) with each camera image; turns images on.")
 @click.option("--speed", type=Number(positive=True), default=1.0,
               show_default=True, help="Playback speed of the live window (not with --headless).")
 @click.option("--print-scenario", is_flag=True, is_eager=True, expose_value=False,
@@ -90,20 +98,24 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
              out_dir: str | None, bag: str | None, plot: str | None, seed: int,
              duration_s: float | None, wheel_separation_multiplier: float | None,
              saturation: str | None, cmd_vel_timeout_s: float | None, max_linear: float | None,
-             max_angular: float | None, controllers_file: str | None, speed: float,
+             max_angular: float | None, controllers_file: str | None,
+             camera_scale: float | None, camera_rate_hz: float | None,
+             camera_depth: bool, speed: float,
              expectations: tuple[Expectation, ...], progress: bool | None, fmt: str) -> None:
     """Simulate the robot's base, arm and sensors, headless and fast.
 
     Drives the diff-drive base with the scenario's timed cmd_vel, moves the arm along its
     joint_trajectory, and simulates the LIDAR, IMU, wheel odometry, joint states and
-    camera_info as the URDF's <gazebo> sensors describe them. Prints a summary; --out,
-    --bag and --plot write files (atomically). Same --seed, same bytes.
+    camera_info as the URDF's <gazebo> sensors describe them; with --camera-scale or
+    --camera-rate-hz (or the scenario's camera:) also the camera's images. Prints a
+    summary; --out, --bag and --plot write files (atomically). Same --seed, same bytes.
 
     \b
     Examples:
       servicebot simulate --headless
       servicebot simulate --headless -s run.yaml --out results --bag run_bag --plot run.png
       servicebot simulate --headless --saturation per-wheel --format json
+      servicebot simulate --headless --camera-scale 0.125 --camera-rate-hz 5 --bag run_bag
     """
     from servicebot_cli.output.simulate_text import show_simulation
     from servicebot_cli.simulate import session
@@ -115,7 +127,8 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
                           cmd_vel_timeout_s=cmd_vel_timeout_s,
                           max_linear_acceleration_m_s2=max_linear,
                           max_angular_acceleration_rad_s2=max_angular,
-                          controllers_file=controllers_file)
+                          controllers_file=controllers_file, camera_scale=camera_scale,
+                          camera_rate_hz=camera_rate_hz, camera_depth=camera_depth or None)
     request = SimulateRequest(robot_args.source(), scenario_file, overrides, seed,
                               Outputs(out_dir, bag, plot), live_window=not headless,
                               progress=progress, expectations=expectations)

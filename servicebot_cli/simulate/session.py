@@ -49,6 +49,9 @@ class Overrides:
     max_linear_acceleration_m_s2: float | None = None
     max_angular_acceleration_rad_s2: float | None = None
     controllers_file: str | None = None
+    camera_scale: float | None = None
+    camera_rate_hz: float | None = None
+    camera_depth: bool | None = None
 
 
 @dataclass(frozen=True)
@@ -129,14 +132,26 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
 
 
 def with_overrides(scenario: Scenario, overrides: Overrides) -> Scenario:
-    """``scenario`` with the values of ``overrides`` that are not None in place of its own."""
+    """``scenario`` with the values of ``overrides`` that are not None in place of its own.
+
+    Any camera value turns the camera's images on.
+    """
     changes = {f.name: getattr(overrides, f.name) for f in dataclasses.fields(overrides)
                if f.name not in ("duration_s", "controllers_file")
-               and getattr(overrides, f.name) is not None}
+               and not f.name.startswith("camera_") and getattr(overrides, f.name) is not None}
     controller = dataclasses.replace(scenario.controller, **changes)
     duration_s = scenario.duration_s if overrides.duration_s is None else overrides.duration_s
+    camera = {name: value for name, value in (("scale", overrides.camera_scale),
+                                              ("rate_hz", overrides.camera_rate_hz),
+                                              ("depth", overrides.camera_depth))
+              if value is not None}
+    images = scenario.camera
+    if camera:
+        images = dataclasses.replace(images, enabled=True, from_cli=images.from_cli
+                                     | frozenset(camera), **camera)  # type: ignore[arg-type]
     return dataclasses.replace(scenario, controller=controller, duration_s=duration_s,
-                               controller_cli=scenario.controller_cli | frozenset(changes))
+                               controller_cli=scenario.controller_cli | frozenset(changes),
+                               camera=images)
 
 
 def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,

@@ -46,6 +46,15 @@ YAML_CASES = [
      "initial_pose.x_m: expected a finite number, got an integer too large for a float"),
     ("duration_s: 10\ninitial_pose: {x_m: 1" + "0" * 5000 + "}\n", ":2:",
      "initial_pose.x_m: expected a finite number, got an integer too long to read"),
+    # Camera images: a scale of the URDF's size, a rate the URDF camera can give.
+    ("duration_s: 10\ncamera:\n  scale: 1.5\n", ":3:", "camera.scale: must be at most 1"),
+    ("duration_s: 10\ncamera:\n  scale: 0\n", ":3:", "camera.scale: must be positive"),
+    ("duration_s: 10\ncamera:\n  depth: yes please\n", ":3:",
+     "camera.depth: expected true or false"),
+    ("duration_s: 10\ncamera:\n  rate_hz: 40\n", ":3:",
+     "camera.rate_hz: 40 Hz is above the URDF camera's update rate (30 Hz)"),
+    ("duration_s: 10\ncamera:\n  size: 2\n", ":3:", "camera.size: unknown field"),
+    ("duration_s: 10\ncamera: on\n", ":2:", "camera: expected a mapping"),
     # The seed is the command line's alone (--seed): a scenario cannot carry one.
     ("duration_s: 10\nseed: -1\n", ":2:", "seed: unknown field"),
 ]
@@ -107,3 +116,15 @@ def test_a_scenario_that_cannot_be_what_was_meant_is_refused(run, tmp_path, text
     scenario = tmp_path / "s.yaml"
     scenario.write_text(text)
     assert_one_line_error(run("simulate", "--headless", "-s", scenario), 2, needle)
+
+
+@pytest.mark.parametrize(("args", "code", "needle"), [
+    (("--camera-scale", "0"), 2, "--camera-scale"),
+    (("--camera-scale", "1.5"), 2, "above the maximum 1"),
+    (("--camera-rate-hz", "-5"), 2, "--camera-rate-hz"),
+    (("--camera-rate-hz", "31"), 2,
+     "--camera-rate-hz: 31 Hz is above the URDF camera's update rate (30 Hz)"),
+])
+def test_bad_camera_options_are_refused_before_the_run(run, args, code, needle):
+    assert_one_line_error(run("simulate", "--headless", "--duration-s", "1", *args), code,
+                          needle)

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path as FsPath
 
 from servicebot_cli.common.inputs import read_input_text
+from servicebot_cli.simulate.scenario.camera import CameraImages, read_camera
 from servicebot_cli.simulate.scenario.located import Located, Path, ScenarioError, parse
 from servicebot_cli.simulate.scenario.schema import Reader
 
@@ -172,6 +173,7 @@ class Scenario:
     arm: ArmTrajectory = ArmTrajectory()
     world: World = World()
     rates: Rates = Rates()
+    camera: CameraImages = CameraImages()
     name: str = "scenario"
     source: Located | None = field(default=None, repr=False, compare=False)
     controller_given: frozenset[str] = frozenset()
@@ -196,7 +198,8 @@ def load_scenario(path: str | FsPath | None) -> Scenario:
     return read_scenario(located, name="default" if path is None else file.stem)
 
 
-_TOP = ("duration_s", "initial_pose", "controller", "slip", "cmd_vel", "arm", "world", "rates")
+_TOP = ("duration_s", "initial_pose", "controller", "slip", "cmd_vel", "arm", "world", "rates",
+        "camera")
 
 
 def read_scenario(located: Located, name: str = "scenario", *,
@@ -225,6 +228,7 @@ def read_scenario(located: Located, name: str = "scenario", *,
         arm=_arm(r, ("arm",)),
         world=_world(r, ("world",)),
         rates=_rates(r, ("rates",)),
+        camera=read_camera(r, ("camera",)),
         name=name,
         source=located,
     )

@@ -35,10 +35,12 @@ def check_scenario(body: SimRobot, scenario: Scenario, solids: Sequence[Solid],
     ``tester`` holds the solids and meshes already (built from them when None).
 
     Raises:
-        ScenarioError: An unknown or wheel joint, a position outside its limits, or a start
-            pose where a link touches an obstacle.
+        ScenarioError: An unknown or wheel joint, a position outside its limits, a start
+            pose where a link touches an obstacle, or camera images asked of a robot
+            without a camera or faster than its camera's update rate.
     """
     q0 = _check_arm(body, scenario)
+    _check_camera(body, scenario)
     if tester is None:
         tester = Tester(body.shape, obstacles(solids, meshes))
     start = scenario.initial_pose
@@ -74,3 +76,35 @@ def _check_arm(body: SimRobot, scenario: Scenario) -> FloatArray:
                              f"{name} = {value:g} rad is outside its URDF limits "
                              f"[{lo:g}, {hi:g}] rad")
     return q0
+
+
+def _check_camera(body: SimRobot, scenario: Scenario) -> None:
+    """Images need a camera; their rate is at most its update rate and the control rate."""
+    images = scenario.camera
+    if not images.enabled:
+        return
+    cli = images.from_cli
+    if body.camera is None:
+        message = f"camera images asked, but {body.robot.display} has no camera sensor"
+        if cli:
+            raise ScenarioError(f"--camera-scale/--camera-rate-hz/--camera-depth: {message}")
+        raise _error(scenario, ("camera",), message)
+    limit, what = camera_rate_limit(body, scenario)
+    if images.rate_hz is not None and images.rate_hz > limit + 1e-9:
+        message = f"{images.rate_hz:g} Hz is above {what} ({limit:g} Hz)"
+        if "rate_hz" in cli:
+            raise ScenarioError(f"--camera-rate-hz: {message}")
+        raise _error(scenario, ("camera", "rate_hz"), message)
+
+
+def camera_rate_limit(body: SimRobot, scenario: Scenario) -> tuple[float, str]:
+    """The highest camera rate a run can have [Hz], and what sets it.
+
+    The URDF camera's ``<update_rate>`` when it has one below the control rate, else the
+    control rate (Gazebo updates a sensor without a rate every step).
+    """
+    control = scenario.controller.update_rate_hz
+    urdf = body.camera.spec.update_rate_hz if body.camera is not None else None
+    if urdf and urdf < control:
+        return float(urdf), "the URDF camera's update rate"
+    return control, "the control rate (controller.update_rate_hz)"
