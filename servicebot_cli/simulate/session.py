@@ -199,7 +199,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
         summary, last = _write_pieces(
             simulator.pieces(body, scenario, seed=seed, solids=world_solids(scenario.world),
                              meshes=meshes, piece_s=piece_s),
-            outputs, publishers(body), stack, bar.advance if bar else None)
+            outputs, publishers(body, scenario.camera), stack, bar.advance if bar else None)
     return SimulateReport(summary, clock() - start, last if keep_run else None)
 
 

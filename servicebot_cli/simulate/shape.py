@@ -100,18 +100,32 @@ class RobotShape:
         Returns:
             Shape (P, S, 4, 4).
         """
+        links = self._links(q)
+        count = len(links[self.root])
+        out = np.empty((count, len(self.parts), 4, 4))
+        for i, part in enumerate(self.parts):
+            out[:, i] = links[part.link] @ part.transform_part_to_link
+        return out
+
+
+    def link_to_base(self, q: FloatArray, link: str) -> FloatArray:
+        """``transform_link_to_base`` of ``link`` for each configuration, shape (P, 4, 4).
+
+        Raises:
+            KeyError: ``link`` is not in the tree below the root.
+        """
+        return self._links(q)[link]
+
+    def _links(self, q: FloatArray) -> dict[str, FloatArray]:
+        """Every link's ``transform_link_to_base`` for each row of ``q``, shape (P, 4, 4)."""
         q = np.asarray(q, dtype=float).reshape(-1, len(self.joints))
-        count = len(q)
-        links = {self.root: np.broadcast_to(np.eye(4), (count, 4, 4))}
+        links = {self.root: np.broadcast_to(np.eye(4), (len(q), 4, 4))}
         for link, parent, origin, joint in self.steps:
             placed = links[parent] @ origin
             if joint is not None:
                 placed = placed @ joint_motions(joint, q[:, self.joints.index(joint.name)])
             links[link] = placed
-        out = np.empty((count, len(self.parts), 4, 4))
-        for i, part in enumerate(self.parts):
-            out[:, i] = links[part.link] @ part.transform_part_to_link
-        return out
+        return links
 
 
 def joint_motions(joint: Joint, values: FloatArray) -> FloatArray:

@@ -25,9 +25,11 @@ from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.controllers.arm_trajectory import ArmLimits, ArmMotion
 from servicebot_cli.simulate.controllers.diff_drive import WheelPlan, WheelPlanner
 from servicebot_cli.simulate.scenario.definition import Scenario
-from servicebot_cli.simulate.scenario.world_check import check_scenario
+from servicebot_cli.simulate.scenario.world_check import camera_rate_limit, check_scenario
 from servicebot_cli.simulate.self_contact import SelfContact, SelfContactWatch
 from servicebot_cli.simulate.sensors import camera_info, imu, joint_states, lidar, odometry
+from servicebot_cli.simulate.sensors.camera_image import Frame
+from servicebot_cli.simulate.sensors.camera_stream import PIECE_BYTES, CameraStream
 from servicebot_cli.simulate.sensors.noise import Noise, stream_rng
 from servicebot_cli.simulate.sensors.sample import SampleClock, sample_count
 from servicebot_cli.simulate.world import motion
@@ -48,7 +50,9 @@ class SimResult:
     A piece of the run, or all of it (``first_tick`` 0 and ``run_ticks`` ticks). Arrays at
     tick boundaries hold the piece's ticks and the boundary after its last; samples are
     those the piece's ticks hold. ``contacts`` and ``self_contacts`` began in the piece;
-    ``closest`` is the record so far, over this piece and the ones before it.
+    ``closest`` is the record so far, over this piece and the ones before it. ``camera``
+    describes the rendered images when the run renders them (``frames``, one per
+    ``camera_times_s``), else the URDF's full-size camera.
     """
 
     body: SimRobot
@@ -71,6 +75,7 @@ class SimResult:
     camera_times_s: FloatArray
     first_tick: int
     run_ticks: int
+    frames: tuple[Frame, ...] = ()
 
     @property
     def first(self) -> bool:
@@ -94,6 +99,9 @@ def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[So
     """
     run = _Run(body, scenario, seed, list(solids), meshes)
     step = max(1, round(piece_s / run.dt_s)) if math.isfinite(piece_s) else run.ticks
+    if run.images is not None and math.isfinite(piece_s):  # frames kept within PIECE_BYTES
+        frames = max(1, PIECE_BYTES // run.images.frame_bytes)
+        step = min(step, max(1, int(frames / run.clocks["camera"].rate_hz / run.dt_s)))
     for first in range(0, run.ticks, step):
         yield run.piece(range(first, min(first + step, run.ticks)))
 
@@ -149,9 +157,14 @@ class _Run:
             self.imu_noise = imu.axis_noises(body.imu.spec, stream_rng(seed, "imu"),
                                              sample_count(rate, duration))
         self.camera = camera_info.intrinsics(body.camera.spec) if body.camera else None
+        self.images: CameraStream | None = None
         if body.camera is not None:
-            self.clocks["camera"] = SampleClock(_rate(body.camera.spec, scenario), duration,
-                                                self.dt_s)
+            rate = _rate(body.camera.spec, scenario)
+            if scenario.camera.enabled:
+                self.images = CameraStream(body, scenario.camera, seed, solids, meshes)
+                self.camera = self.images.intrinsics
+                rate = scenario.camera.rate_hz or camera_rate_limit(body, scenario)[0]
+            self.clocks["camera"] = SampleClock(rate, duration, self.dt_s)
 
     def piece(self, ticks: range) -> SimResult:
         """Simulate ``ticks``, the ticks after those of the pieces before."""
@@ -163,6 +176,8 @@ class _Run:
         sides = self._wheel_angles(plan)
         odom_path, odom_before = self.odometer.advance(first, plan.left_rad_s, plan.right_rad_s)
         names, positions = _joint_positions(body, sides, arm_q)
+        camera_times = self.clocks["camera"].take(stop) if "camera" in self.clocks \
+            else np.zeros(0)
         piece = SimResult(
             body, self.scenario, self.seed, self.solids, [o.name for o in self.tester.world],
             plan, truth, contacts,
@@ -171,9 +186,8 @@ class _Run:
             joint_states.at_times(names, positions, self.dt_s,
                                   self.clocks["joints"].take(stop), first),
             arm_q, self._closest(first, truth, arm_q), self._scans(truth, arm_q, stop),
-            self._imu(truth, stop), self.camera,
-            self.clocks["camera"].take(stop) if "camera" in self.clocks else np.zeros(0),
-            first, self.ticks)
+            self._imu(truth, stop), self.camera, camera_times, first, self.ticks,
+            self.images.frames(truth, arm_q, camera_times) if self.images else ())
         self.twist_before = (float(truth.linear_m_s[-1]), float(truth.angular_rad_s[-1]))
         return piece
 

@@ -22,7 +22,7 @@ from servicebot_cli.simulate.session import Outputs
 from tests.simulate.helpers import scenario
 
 # The arm swings into a wall and the base, held there, waits until it can back away; the
-# floor slips; a cylinder is close by; every sensor is on.
+# floor slips; a cylinder is close by; every sensor is on, the camera's images too.
 EVENTFUL = {
     "duration_s": 9.0,
     "slip": {"track_factor": 1.2, "longitudinal": 0.02},
@@ -35,6 +35,8 @@ EVENTFUL = {
                        {"time_from_start_s": 7, "positions": [-0.5, 0.3]}]},
     "world": {"walls": [{"from_m": [0.95, -1], "to_m": [0.95, 1]}],
               "cylinders": [{"center_m": [-0.6, 0.4], "radius_m": 0.1}]},
+    # 38x22 images with noise and depth, in the bag and the last one as camera.png
+    "camera": {"scale": 0.02, "rate_hz": 3, "depth": True},
 }
 ROBOT = load(RobotSource.bundled("sim"))
 
@@ -57,7 +59,8 @@ def test_the_piece_length_does_not_change_a_byte(tmp_path, monkeypatch):
     whole, report = _outputs(tmp_path, "whole", None, keep_run=True)
     assert report.result is not None and report.result.first and report.result.last
     assert report.summary["collisions"] and report.summary["self_collisions"] == []
-    assert len(whole) == 12  # 9 CSV + summary.json, the bag's two files, the picture
+    assert len(whole) == 13  # 9 CSV, summary.json, camera.png, the bag's two files, the picture
+    assert len(report.result.frames) == 27
     for piece_s in (0.01, 0.37, 2.0, simulator.PIECE_S):
         pieces, _ = _outputs(tmp_path, f"pieces_{piece_s}", piece_s)
         assert sorted(pieces) == sorted(whole)

@@ -99,6 +99,15 @@ _FIELDS: dict[str, str] = {
         'uint32 binning_y\n'
         'sensor_msgs/RegionOfInterest roi\n'
     ),
+    "sensor_msgs/msg/Image": (
+        'std_msgs/Header header\n'
+        'uint32 height\n'
+        'uint32 width\n'
+        'string encoding\n'
+        'uint8 is_bigendian\n'
+        'uint32 step\n'
+        'uint8[] data\n'
+    ),
     "sensor_msgs/RegionOfInterest": (
         'uint32 x_offset\n'
         'uint32 y_offset\n'
@@ -157,6 +166,10 @@ _USES: dict[str, tuple[str, ...]] = {
         "std_msgs/Header",
         "builtin_interfaces/Time",
         "sensor_msgs/RegionOfInterest",
+    ),
+    "sensor_msgs/msg/Image": (
+        "std_msgs/Header",
+        "builtin_interfaces/Time",
     ),
     "tf2_msgs/msg/TFMessage": (
         "geometry_msgs/TransformStamped",

@@ -1,7 +1,9 @@
 """A run's messages as serialized ROS 2 messages on the robot's topics, a piece at a time.
 
 Topics follow the robot's documentation: the sensors' topics as their Gazebo plugins resolve
-them (``scan``, ``imu/data``, ``pi_camera/camera_info``), ``/diff_controller/odom`` and
+them (``scan``, ``imu/data``, ``pi_camera/camera_info``; with images ``pi_camera/image_raw``
+(rgb8) and, with depth, ``pi_camera/depth/image_raw`` (32FC1), as gazebo_ros_camera names
+them), ``/diff_controller/odom`` and
 ``/tf`` (odom -> base) as diff_drive_controller publishes them, ``/joint_states`` as
 joint_state_broadcaster, ``/tf`` for movable joints, ``/tf_static`` for fixed ones and
 ``/robot_description`` (the URDF, once) as robot_state_publisher, and ``/clock`` at every
@@ -22,6 +24,7 @@ from servicebot_cli.kinematics.transforms import rpy_matrix
 from servicebot_cli.simulate.bag import cdr, qos
 from servicebot_cli.simulate.bag import quaternions as rotations
 from servicebot_cli.simulate.body import SimRobot
+from servicebot_cli.simulate.scenario.camera import CameraImages
 from servicebot_cli.simulate.simulator import SimResult
 
 FloatArray = npt.NDArray[np.float64]
@@ -29,6 +32,8 @@ ODOM_TOPIC, TF_TOPIC, TF_STATIC_TOPIC = "/diff_controller/odom", "/tf", "/tf_sta
 JOINT_STATES_TOPIC, ODOM_FRAME = "/joint_states", "odom"
 CLOCK_TOPIC, DESCRIPTION_TOPIC = "/clock", "/robot_description"
 TF_TYPE = "tf2_msgs/msg/TFMessage"
+IMAGE_TYPE = "sensor_msgs/msg/Image"
+NO_IMAGES = CameraImages()
 
 
 @dataclass(frozen=True)
@@ -60,10 +65,11 @@ def absolute(topic: str | None, fallback: str) -> str:
     return name if name.startswith("/") else f"/{name}"
 
 
-def publishers(body: SimRobot) -> list[Publisher]:
+def publishers(body: SimRobot, images: CameraImages = NO_IMAGES) -> list[Publisher]:
     """Every publisher of a run of ``body``: latched topics and the clock first.
 
-    Messages with equal stamps are in this order in a bag.
+    Camera images only when ``images`` are on. Messages with equal stamps are in this order
+    in a bag.
     """
     out = [Publisher(DESCRIPTION_TOPIC, "std_msgs/msg/String", qos.ROBOT_DESCRIPTION, _once,
                      _robot_description),
@@ -88,7 +94,19 @@ def publishers(body: SimRobot) -> list[Publisher]:
         out.append(Publisher(absolute(body.camera.spec.info_topic, "camera_info"),
                              "sensor_msgs/msg/CameraInfo", qos.SENSOR_DATA,
                              lambda r: r.camera_times_s, _camera_info))
+        if images.enabled:
+            image_topic = absolute(body.camera.spec.image_topic, "image_raw")
+            out.append(Publisher(image_topic, IMAGE_TYPE, qos.SENSOR_DATA,
+                                 lambda r: r.camera_times_s, _colour_images))
+            if images.depth:
+                out.append(Publisher(depth_topic(image_topic), IMAGE_TYPE, qos.SENSOR_DATA,
+                                     lambda r: r.camera_times_s, _depth_images))
     return out
+
+
+def depth_topic(image_topic: str) -> str:
+    """gazebo_ros_camera's depth topic beside ``image_topic``: ``NAME/depth/image_raw``."""
+    return f"{image_topic.rsplit('/', 1)[0]}/depth/image_raw"
 
 
 def topics(publishers: Sequence[Publisher]) -> list[Topic]:
@@ -218,6 +236,34 @@ def _camera_info(result: SimResult) -> list[bytes]:
     return _serialize(layout, result.camera_times_s, {
         "d": np.array(camera.d), "k": np.array(camera.k),
         "r": np.eye(3).ravel(), "p": np.array(camera.p)})
+
+
+def _colour_images(result: SimResult) -> list[bytes]:
+    """``rgb8`` images: 3 bytes a pixel, rows top to bottom."""
+    return _images(result, "rgb8", 3, [f.rgb.reshape(-1) for f in result.frames])
+
+
+def _depth_images(result: SimResult) -> list[bytes]:
+    """``32FC1`` depth images [m] along the optical axis, little-endian float32."""
+    return _images(result, "32FC1", 4,
+                   [f.depth_m.astype("<f4").reshape(-1).view(np.uint8) for f in result.frames])
+
+
+def _images(result: SimResult, encoding: str, pixel_bytes: int,
+            data: list[npt.NDArray[np.uint8]]) -> list[bytes]:
+    camera, mounted = result.camera, result.body.camera
+    assert camera is not None and mounted is not None
+    if not data:
+        return []
+    layout = cdr.Layout()
+    layout.header(mounted.spec.frame or result.body.root_link)
+    layout.constant("<I", camera.height_px)
+    layout.constant("<I", camera.width_px)
+    layout.string(encoding)
+    layout.constant("<B", 0)  # is_bigendian
+    layout.constant("<I", pixel_bytes * camera.width_px)  # step: bytes a row
+    layout.sequence("data", "u1", pixel_bytes * camera.width_px * camera.height_px)
+    return _serialize(layout, result.camera_times_s, {"data": np.stack(data)})
 
 
 def _transforms(frames: list[tuple[str, str]]) -> cdr.Layout:

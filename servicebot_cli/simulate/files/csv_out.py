@@ -3,7 +3,8 @@
 Every file is written to a temporary first and renamed into place only once all are written,
 so an error or a signal leaves no temporary file and no partial set of new files. Rows are
 appended a piece of the run at a time. Numbers are written in the shortest form that reads
-back to the same float, so files are exact and the same seed gives the same bytes.
+back to the same float, so files are exact and the same seed gives the same bytes. A run
+that renders camera images also leaves its last frame as ``camera.png``.
 """
 
 from __future__ import annotations
@@ -18,6 +19,8 @@ import numpy.typing as npt
 
 from servicebot_cli.common.files import OutputError, atomic_directory, atomic_output
 from servicebot_cli.common.jsonable import dumps
+from servicebot_cli.simulate.files.png import png_bytes
+from servicebot_cli.simulate.sensors.camera_image import Frame
 from servicebot_cli.simulate.simulator import SimResult
 
 if TYPE_CHECKING:
@@ -118,12 +121,15 @@ class CsvWriter:
         else:
             self.folder, self.in_place = stack.enter_context(atomic_directory(path)), True
         self.files: dict[str, IO[Any]] = {}
+        self.last_frame: Frame | None = None
 
-    def _open(self, name: str) -> IO[Any]:
-        if self.in_place:  # inside the directory being built
+    def _open(self, name: str, mode: str = "w") -> IO[Any]:
+        if self.in_place and mode == "wb":  # inside the directory being built
+            return self.stack.enter_context((self.folder / name).open("wb"))
+        if self.in_place:
             return self.stack.enter_context((self.folder / name).open(
                 "w", encoding="utf-8", newline="\n"))
-        return self.stack.enter_context(atomic_output(self.folder / name))
+        return self.stack.enter_context(atomic_output(self.folder / name, mode))
 
     def add(self, piece: SimResult) -> None:
         """Append the rows of a piece of the run (the first opens the files)."""
@@ -132,7 +138,11 @@ class CsvWriter:
                 self.files[name] = self._open(name)
                 self.files[name].write(",".join(header) + "\n")
             self.files[name].write(rows)
+        if piece.frames:
+            self.last_frame = piece.frames[-1]
 
     def finish(self, summary: Summary) -> None:
-        """Write ``summary.json``; the files go in place when the stack closes."""
+        """Write ``summary.json`` and ``camera.png``; in place when the stack closes."""
         self._open("summary.json").write(dumps(summary))
+        if self.last_frame is not None:
+            self._open("camera.png", "wb").write(png_bytes(self.last_frame.rgb))
