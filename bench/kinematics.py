@@ -137,6 +137,7 @@ Solve = Callable[[int, np.ndarray], "np.ndarray | None"]
 def servicebot_solver(problem: Problem, axes: tuple[str, ...] = ("roll", "pitch", "yaw"),
                       compiled: bool = True) -> Solve:
     solver = IkSolver(problem.chain, IkSettings(solutions=1), compiled=compiled)
+    solver.prepare()  # compiled, or loaded from numba's cache, before the clock runs
     rng = np.random.default_rng(7)
     pin.framesForwardKinematics(problem.model, problem.data, pin.neutral(problem.model))
     root_to_base = problem.data.oMf[problem.base].copy()

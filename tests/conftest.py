@@ -27,6 +27,29 @@ CONTROLLERS_YAML = ROBOTS / "controllers.yaml"
 
 RunCli = Callable[..., Result]
 
+_READY_LOOP = """
+from servicebot_cli.description.loader import RobotSource, load
+from servicebot_cli.kinematics.chain import Chain
+from servicebot_cli.kinematics.frames import link_names
+from servicebot_cli.kinematics.inverse import IkSolver
+robot = load(RobotSource.bundled("sim"))
+IkSolver(Chain(robot.model, robot.joint_space, "arm_tool_link", link_names(robot))).prepare()
+"""
+
+
+@pytest.fixture(scope="session", autouse=True)
+def compiled_ik_loop(tmp_path_factory: pytest.TempPathFactory) -> None:
+    """Batch ik's loop compiled before any test, as on a machine that has run it once.
+
+    The first batch on a machine compiles it (seconds, and a line on stderr saying so); tests
+    of what a batch prints must not depend on which of them ran first. Readied here for this
+    checkout and, from a directory outside it, for the installed copy that commands started
+    elsewhere import (each keeps its own numba cache).
+    """
+    subprocess.run([sys.executable, "-c", _READY_LOOP], check=True, cwd=REPO)
+    subprocess.run([sys.executable, "-c", _READY_LOOP], check=True,
+                   cwd=tmp_path_factory.mktemp("elsewhere"))
+
 
 @pytest.fixture
 def run() -> RunCli:

@@ -12,7 +12,7 @@ from dataclasses import dataclass, replace
 from servicebot_cli.batch.ik_rows import IkBatch
 from servicebot_cli.batch.policy import OnError
 from servicebot_cli.batch.stream import BatchSummary, RowSink, Warn, stream
-from servicebot_cli.kinematics.ik import Clock, IkProblem, IkSession
+from servicebot_cli.kinematics.ik import Clock, IkProblem, IkSession, compile_note
 from servicebot_cli.kinematics.targets import parse_axes
 
 
@@ -43,7 +43,11 @@ def run(request: IkBatchRequest, sink: RowSink, *, warn: Warn, clock: Clock) -> 
         BadLine: An unusable line under ``--on-error stop``.
     """
     axes = parse_axes(request.axes, True)
-    session = IkSession(request.problem, clock, compiled=True)
+    def compiled(ready_s: float) -> None:
+        for line in compile_note(ready_s):
+            warn(line)
+
+    session = IkSession(request.problem, clock, compiled=True, on_compiled=compiled)
     for note in session.notes:
         warn(note)
     rows = IkBatch(session, axes=axes)

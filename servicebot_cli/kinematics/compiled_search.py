@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -55,7 +56,12 @@ class CompiledSearch:
     """Runs of attempts for one chain, with fixed tolerances and iterations per attempt."""
 
     def __init__(self, chain: Chain, arrays: ChainArrays, tolerance_m: float,
-                 tolerance_rad: float, max_iterations: int) -> None:
+                 tolerance_rad: float, max_iterations: int,
+                 on_ready: Callable[[float], None] | None = None) -> None:
+        """Prepare the search; the loop itself is readied by the first run (see :meth:`ready`).
+
+        ``on_ready`` hears how many seconds that took.
+        """
         import pinocchio as pin
 
         from servicebot_cli.kinematics import lm_kernel
@@ -68,17 +74,30 @@ class CompiledSearch:
         self._max_iterations = max_iterations
         self._target = np.zeros((3, 4))
         self._out = np.empty(arrays.size)
-        # no attempt: compiles the loop (or loads it from numba's cache) before any solve,
-        # so solve times measure solving
-        begin = time.perf_counter()
-        self._search(arrays.frames, arrays.axes, arrays.kinds, arrays.limits, self._target, 6,
-                     self._tolerances, 1, _NO_SEED, np.empty((0, arrays.size)), self._out)
-        self.ready_s = time.perf_counter() - begin
-        """Seconds the loop took to be ready: to compile, the first time on a machine."""
+        self._on_ready = on_ready
+        self.ready_s: float | None = None
+        """Seconds the loop took to be ready (to compile, the first time on a machine)."""
+
+    def ready(self) -> float:
+        """Compile the loop, or load it from numba's cache, unless done; the seconds it took.
+
+        A call with no attempt, so that solve times after it measure solving.
+        """
+        if self.ready_s is None:
+            arrays = self._arrays
+            begin = time.perf_counter()
+            self._search(arrays.frames, arrays.axes, arrays.kinds, arrays.limits, self._target,
+                         6, self._tolerances, 1, _NO_SEED, np.empty((0, arrays.size)),
+                         self._out)
+            self.ready_s = time.perf_counter() - begin
+            if self._on_ready is not None:
+                self._on_ready(self.ready_s)
+        return self.ready_s
 
     @classmethod
     def build(cls, chain: Chain, tolerance_m: float, tolerance_rad: float,
-              max_iterations: int) -> CompiledSearch | None:
+              max_iterations: int,
+              on_ready: Callable[[float], None] | None = None) -> CompiledSearch | None:
         """The search for ``chain``; None without numba, or for a chain the loop cannot do."""
         try:
             from servicebot_cli.kinematics.chain_arrays import chain_arrays
@@ -89,7 +108,7 @@ class CompiledSearch:
         arrays = chain_arrays(chain)
         if arrays is None:
             return None
-        return cls(chain, arrays, tolerance_m, tolerance_rad, max_iterations)
+        return cls(chain, arrays, tolerance_m, tolerance_rad, max_iterations, on_ready)
 
     def run(self, target: IkTarget, start: FloatArray | None, rng: np.random.Generator,
             most: int) -> Attempts:
@@ -98,6 +117,7 @@ class CompiledSearch:
         The first from ``start`` (a chain ``q``) if given, the others from random
         configurations within the limits; stops at the first attempt that converges.
         """
+        self.ready()
         arrays, goal = self._arrays, self._target
         goal[:, 3] = target.position_m
         rows = 3

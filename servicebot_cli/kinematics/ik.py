@@ -145,12 +145,14 @@ class IkSession:
         notes: Lines for stderr: the frame picked, start values clamped.
     """
 
-    def __init__(self, problem: IkProblem, clock: Clock, *, compiled: bool = False) -> None:
+    def __init__(self, problem: IkProblem, clock: Clock, *, compiled: bool = False,
+                 on_compiled: Callable[[float], None] | None = None) -> None:
         """Load the robot and build everything a solve needs.
 
         With ``compiled``, attempts run in the compiled loop where it can (see
         :class:`~servicebot_cli.kinematics.inverse.IkSolver`): worth it for many targets,
-        since the first process on a machine compiles it (seconds) before it solves one.
+        since the first process on a machine compiles it (seconds) at its first solve, and
+        ``on_compiled`` then hears how many seconds that took.
 
         Raises:
             DescriptionError: The robot cannot be loaded.
@@ -170,11 +172,11 @@ class IkSession:
         self.robot: RobotDescription = robot
         self.space = space
         check = collision_check(robot, model, problem.robot, problem.collisions, chain.names)
-        self.solver = IkSolver(chain, problem.settings, check, compiled=compiled)
+        self.solver = IkSolver(chain, problem.settings, check, compiled=compiled,
+                             on_compiled=on_compiled)
         self.start: FloatArray = space.to_q(space.clamped(values))
         self.deg = problem.deg
-        self.notes = (*((note,) if note else ()), *(c.note() for c in clamped),
-                      *compile_note(self.solver.ready_s))
+        self.notes = (*((note,) if note else ()), *(c.note() for c in clamped))
         self.target_frame = None if problem.relative_to is None else TargetFrame.at(
             model, self.start, problem.relative_to, link_names(robot))
         self._rng = np.random.default_rng(problem.seed)

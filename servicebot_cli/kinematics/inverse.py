@@ -116,13 +116,16 @@ class IkSolver:
     """Solves IK for one chain; reuse it for many targets (batch mode warm-starts)."""
 
     def __init__(self, chain: Chain, settings: IkSettings | None = None,
-                 collisions: CollisionCheck | None = None, *, compiled: bool = True) -> None:
+                 collisions: CollisionCheck | None = None, *, compiled: bool = True,
+                 on_compiled: Callable[[float], None] | None = None) -> None:
         """Prepare the solver for ``chain`` with ``settings`` (defaults otherwise).
 
         With ``collisions``, an answer whose links touch each other or the floor is not
         one: the search goes on from other restarts. Its model is the one ``chain`` was
         reduced from. With ``compiled`` (and numba installed), attempts at a full pose or a
-        position run in the compiled loop, and Pinocchio checks each converged answer.
+        position run in the compiled loop, and Pinocchio checks each converged answer; the
+        loop is readied (compiled the first time on a machine) by the first solve that needs
+        it, and ``on_compiled`` hears how many seconds that took.
         """
         import eigenpy
         import pinocchio as pin
@@ -137,17 +140,24 @@ class IkSolver:
         self._gate2 = 1.5 * (self.settings.tolerance_m ** 2 + self.settings.tolerance_rad ** 2)
         self._compiled = CompiledSearch.build(chain, self.settings.tolerance_m,
                                               self.settings.tolerance_rad,
-                                              self.settings.max_iterations) if compiled else None
+                                              self.settings.max_iterations,
+                                              on_compiled) if compiled else None
 
     @property
     def compiled(self) -> bool:
         """Whether attempts at a full pose or a position run in the compiled loop."""
         return self._compiled is not None
 
+    def prepare(self) -> None:
+        """Ready the compiled loop now, so that later solve times measure solving alone."""
+        if self._compiled is not None:
+            self._compiled.ready()
+
     @property
     def ready_s(self) -> float:
-        """Seconds the compiled loop took to be ready (compiled, or loaded); 0 without it."""
-        return 0.0 if self._compiled is None else self._compiled.ready_s
+        """Seconds the compiled loop took to be ready (compiled, or loaded); 0 until then."""
+        ready_s = None if self._compiled is None else self._compiled.ready_s
+        return 0.0 if ready_s is None else ready_s
 
     def solve(self, target: IkTarget, seed: FloatArray, rng: np.random.Generator,
               stop: Callable[[], bool] | None = None) -> IkResult:

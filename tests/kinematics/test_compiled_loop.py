@@ -175,3 +175,20 @@ def test_a_compile_is_said_once_it_took_seconds():
     assert compile_note(0.02) == ()
     (line,) = compile_note(7.24)
     assert line.startswith("compiled the IK loop in 7.2 s")
+
+
+def test_a_batch_refused_for_its_input_never_waits_for_the_compiler(tmp_path):
+    """The loop is readied by the first solve: a bad header is refused before it."""
+    targets = tmp_path / "t.csv"
+    targets.write_text("x_m,y_m,z_m,colour\n0.4,0.1,0.2,red\n")
+    script = ("import sys\nfrom click.testing import CliRunner\n"
+              "from servicebot_cli.cli import main\n"
+              "from servicebot_cli.kinematics import compiled_search\n"
+              "made = []\n"
+              "ready = compiled_search.CompiledSearch.ready\n"
+              "compiled_search.CompiledSearch.ready = lambda self: made.append(1) or ready(self)\n"
+              f"done = CliRunner().invoke(main, ['ik', '--targets', {str(targets)!r}])\n"
+              "print(done.exit_code, len(made))")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                          check=True, cwd=REPO)
+    assert done.stdout.split() == ["2", "0"]
