@@ -23,10 +23,10 @@ from dataclasses import dataclass, field
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.simulate.sensors import camera_rays
 from servicebot_cli.simulate.sensors.camera_info import Intrinsics
 from servicebot_cli.simulate.shape import Part
 from servicebot_cli.simulate.world import raycast
-from servicebot_cli.simulate.world.robot_rays import cast_parts
 from servicebot_cli.simulate.world.solids import Solid
 
 FloatArray = npt.NDArray[np.float64]
@@ -157,10 +157,12 @@ def render(view: CameraView, transform_camera_to_world: FloatArray, scene: Scene
     rotation, origin = transform_camera_to_world[:3, :3], transform_camera_to_world[:3, 3]
     directions = view.directions @ rotation.T
     origins = np.broadcast_to(origin, directions.shape)
-    surfaces = _surfaces(scene)
+    half_angle = math.acos(min(1.0, float(np.min(view.forward))))
+    surfaces = [s for s in _surfaces(scene)
+                if _in_view(s, scene, origin, rotation[:, 0], half_angle)]
     triangles: dict[int, IntArray] = {}  # per mesh: the triangle each ray met first
-    distances = np.stack([_distances(s, scene, origins, directions, triangles)
-                          for s in surfaces])
+    d = camera_rays.columns(directions)
+    distances = np.stack([_distances(s, scene, origins, d, triangles) for s in surfaces])
     depth = distances * view.forward
     distances[(depth < view.near_m) | (depth > view.far_m)] = np.inf
     nearest = np.argmin(distances, axis=0)
@@ -195,21 +197,40 @@ def _surfaces(scene: Scene) -> list[Surface]:
             *(("part", i) for i in range(len(scene.parts)))]
 
 
-def _distances(surface: Surface, scene: Scene, origins: FloatArray, directions: FloatArray,
+def _in_view(surface: Surface, scene: Scene, origin: FloatArray, axis: FloatArray,
+             half_angle_rad: float) -> bool:
+    """Whether a ray of the view can meet ``surface`` (the floor and meshes always can)."""
+    kind, index = surface
+    if kind == "solid":
+        solid = scene.solids[index]
+        radius = camera_rays.bounding_radius(solid.kind, solid.half_m)
+        return camera_rays.in_view(solid.center_m, radius, origin, axis, half_angle_rad)
+    if kind == "part":
+        assert scene.part_transforms is not None
+        return camera_rays.in_view(scene.part_transforms[index][:3, 3],
+                                   scene.parts[index].radius_m, origin, axis, half_angle_rad)
+    return True
+
+
+def _distances(surface: Surface, scene: Scene, origins: FloatArray, d: list[FloatArray],
                triangles: dict[int, IntArray]) -> FloatArray:
     kind, index = surface
+    origin = origins[0]
     if kind == "floor":
-        return raycast.cast(origins, directions, (), floor=True)
+        return camera_rays.floor_distances(origin, d)
     if kind == "solid":
-        return raycast.cast(origins, directions, [scene.solids[index]], floor=False)
+        solid = scene.solids[index]
+        transform = np.eye(4)
+        transform[:3, :3], transform[:3, 3] = solid.rotation, solid.center_m
+        return camera_rays.primitive_distances(solid.kind, solid.half_m, transform, origin, d)
     if kind == "mesh":
+        directions = np.column_stack(d)
         distances, triangles[index] = _mesh_hits(scene.meshes[index], origins, directions)
         return distances
     assert scene.part_transforms is not None
-    robot: FloatArray = cast_parts([scene.parts[index]],
-                                   scene.part_transforms[None, index:index + 1],
-                                   np.ascontiguousarray(origins), directions)[0]
-    return robot
+    part = scene.parts[index]
+    return camera_rays.primitive_distances(part.kind, part.half_m,
+                                           scene.part_transforms[index], origin, d)
 
 
 def _mesh_hits(mesh: raycast.Mesh, origins: FloatArray,
@@ -237,7 +258,7 @@ def _looks(surface: Surface, scene: Scene, points: FloatArray, triangles: dict[i
     if kind == "solid":
         solid = scene.solids[index]
         local = (points - solid.center_m) @ solid.rotation
-        normals = _primitive_normals(solid.kind, solid.half_m, local) @ solid.rotation.T
+        normals = camera_rays.primitive_normals(solid.kind, solid.half_m, local) @ solid.rotation.T
         return _flat(palette.of_solid(solid), len(points)), normals
     if kind == "mesh":
         return _flat(palette.mesh, len(points)), _mesh_normals(scene.meshes[index],
@@ -245,32 +266,12 @@ def _looks(surface: Surface, scene: Scene, points: FloatArray, triangles: dict[i
     assert scene.part_transforms is not None
     part, transform = scene.parts[index], scene.part_transforms[index]
     local = (points - transform[:3, 3]) @ transform[:3, :3]
-    normals = _primitive_normals(part.kind, part.half_m, local) @ transform[:3, :3].T
+    normals = camera_rays.primitive_normals(part.kind, part.half_m, local) @ transform[:3, :3].T
     return _flat(palette.robot, len(points)), normals
 
 
 def _flat(rgb: Rgb, count: int) -> FloatArray:
     return np.tile(np.array(rgb, dtype=np.float64), (count, 1))
-
-
-def _primitive_normals(kind: str, half_m: FloatArray, local: FloatArray) -> FloatArray:
-    """Outward unit normals at points on a box, cylinder or sphere, in its own frame."""
-    normals = np.zeros_like(local)
-    rows = np.arange(len(local))
-    if kind == "box":
-        axis = np.argmax(np.abs(local) / half_m, axis=1)
-        normals[rows, axis] = np.sign(local[rows, axis])
-        return normals
-    if kind == "cylinder":
-        radial = np.hypot(local[:, 0], local[:, 1])
-        cap = np.abs(local[:, 2]) / half_m[2] >= radial / half_m[0]
-        normals[cap, 2] = np.sign(local[cap, 2])
-        side = ~cap & (radial > 0)
-        normals[side, :2] = local[side, :2] / radial[side, None]
-        return normals
-    length = np.linalg.norm(local, axis=1, keepdims=True)
-    normal: FloatArray = local / np.where(length > 0, length, 1.0)
-    return normal
 
 
 def _mesh_normals(mesh: raycast.Mesh, triangles: IntArray) -> FloatArray:
