@@ -25,6 +25,7 @@ from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.controllers.arm_trajectory import ArmLimits, ArmMotion
 from servicebot_cli.simulate.controllers.diff_drive import WheelPlan, WheelPlanner
 from servicebot_cli.simulate.scenario.definition import Scenario
+from servicebot_cli.simulate.scenario.located import ScenarioError
 from servicebot_cli.simulate.scenario.world_check import camera_rate_limit, check_scenario
 from servicebot_cli.simulate.self_contact import SelfContact, SelfContactWatch
 from servicebot_cli.simulate.sensors import camera_info, imu, joint_states, lidar, odometry
@@ -41,6 +42,8 @@ FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.int64]
 PIECE_S = 30.0
 """Simulated seconds per piece: long enough for numpy to work in bulk, short for memory."""
+WHOLE_RUN_FRAME_BYTES = 2_000_000_000
+"""At most this many bytes of camera frames in a run computed in one piece."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -92,18 +95,37 @@ def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[So
            meshes: Sequence[Mesh] = (), piece_s: float = PIECE_S) -> Iterator[SimResult]:
     """Simulate ``scenario`` a piece of ``piece_s`` simulated seconds at a time.
 
-    The scenario is checked against the robot and the world before the first piece.
+    The scenario is checked against the robot and the world before the first piece. Pieces
+    with camera frames are cut shorter so that their frames stay within
+    :data:`~servicebot_cli.simulate.sensors.camera_stream.PIECE_BYTES`.
 
     Raises:
-        ScenarioError: The arm's goal or the start pose does not fit the robot or the world.
+        ScenarioError: The arm's goal, the start pose or the camera does not fit the robot
+            or the world, or a run in one piece would hold too many camera frames.
     """
     run = _Run(body, scenario, seed, list(solids), meshes)
     step = max(1, round(piece_s / run.dt_s)) if math.isfinite(piece_s) else run.ticks
     if run.images is not None and math.isfinite(piece_s):  # frames kept within PIECE_BYTES
         frames = max(1, PIECE_BYTES // run.images.frame_bytes)
         step = min(step, max(1, int(frames / run.clocks["camera"].rate_hz / run.dt_s)))
+    elif run.images is not None:
+        _refuse_frames_beyond_memory(run.clocks["camera"].count * run.images.frame_bytes)
     for first in range(0, run.ticks, step):
         yield run.piece(range(first, min(first + step, run.ticks)))
+
+
+def _refuse_frames_beyond_memory(total_bytes: int) -> None:
+    """A run kept whole (for the live window) holds every frame: refuse more than that.
+
+    Raises:
+        ScenarioError: The frames would take more than :data:`WHOLE_RUN_FRAME_BYTES`.
+    """
+    if total_bytes > WHOLE_RUN_FRAME_BYTES:
+        raise ScenarioError(
+            f"the run's camera images would take {total_bytes / 1e9:.1f} GB, and a run kept "
+            f"whole for the live window holds them all (at most "
+            f"{WHOLE_RUN_FRAME_BYTES / 1e9:g} GB); use --headless, or a smaller camera "
+            "scale or rate")
 
 
 def run(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[Solid],

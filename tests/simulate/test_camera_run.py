@@ -146,3 +146,11 @@ def test_the_camera_sees_the_robots_own_arm():
 
     assert dark_pixels([0.0, 0.0, 0.0, 0.0]) == 0
     assert dark_pixels([0.0, 0.2, 0.6, 0.5]) > 1000
+
+
+def test_a_run_kept_whole_refuses_frames_that_would_not_fit_in_memory():
+    from servicebot_cli.simulate.scenario.located import ScenarioError
+
+    # 20 s of full-size frames at 30 Hz: 600 x 6.2 MB, kept whole as the live window keeps it
+    with pytest.raises(ScenarioError, match=r"would take 3\.7 GB.*use --headless"):
+        run({"duration_s": 20, "camera": {"scale": 1, "rate_hz": 30}})
