@@ -35,6 +35,8 @@ Rgb = tuple[int, int, int]
 
 _LIGHT = np.array([0.4, 0.3, 0.866]) / np.linalg.norm([0.4, 0.3, 0.866])
 _AMBIENT = 0.45  # share of a colour lit from any side; the rest follows the light
+COMPILED = True
+"""Render in numba's compiled loop where it can (False: always the numpy path)."""
 
 
 @dataclass(frozen=True)
@@ -160,6 +162,22 @@ def render(view: CameraView, transform_camera_to_world: FloatArray, scene: Scene
     half_angle = math.acos(min(1.0, float(np.min(view.forward))))
     surfaces = [s for s in _surfaces(scene)
                 if _in_view(s, scene, origin, rotation[:, 0], half_angle)]
+    compiled = _compiled(view, origin, directions, scene, surfaces)
+    colour, distance = compiled if compiled is not None else _numpy_path(
+        view, origins, directions, scene, surfaces)
+    seen = np.isfinite(distance)
+    rows, columns = view.shape
+    if noise_stddev > 0.0:
+        generator = rng if rng is not None else np.random.default_rng(0)
+        colour = colour + generator.normal(0.0, noise_stddev * 255.0, colour.shape)
+    rgb = np.clip(np.rint(colour), 0, 255).astype(np.uint8).reshape(rows, columns, 3)
+    depth_m = np.where(seen, distance * view.forward, np.inf).astype(np.float32)
+    return Frame(rgb, depth_m.reshape(rows, columns))
+
+
+def _numpy_path(view: CameraView, origins: FloatArray, directions: FloatArray, scene: Scene,
+                surfaces: list[Surface]) -> tuple[FloatArray, FloatArray]:
+    """Colour (N, 3) and distance (N,) of each ray, surface by surface in numpy."""
     triangles: dict[int, IntArray] = {}  # per mesh: the triangle each ray met first
     d = camera_rays.columns(directions)
     distances = np.stack([_distances(s, scene, origins, d, triangles) for s in surfaces])
@@ -176,13 +194,43 @@ def render(view: CameraView, transform_camera_to_world: FloatArray, scene: Scene
             base, normals = _looks(surface, scene, points[hit], triangles, hit)
             light = _AMBIENT + (1.0 - _AMBIENT) * np.abs(normals @ _LIGHT)
             colour[hit] = base * light[:, None]
-    rows, columns = view.shape
-    if noise_stddev > 0.0:
-        generator = rng if rng is not None else np.random.default_rng(0)
-        colour = colour + generator.normal(0.0, noise_stddev * 255.0, colour.shape)
-    rgb = np.clip(np.rint(colour), 0, 255).astype(np.uint8).reshape(rows, columns, 3)
-    depth_m = np.where(seen, distance * view.forward, np.inf).astype(np.float32)
-    return Frame(rgb, depth_m.reshape(rows, columns))
+    return colour, distance
+
+
+def _compiled(view: CameraView, origin: FloatArray, directions: FloatArray, scene: Scene,
+              surfaces: list[Surface]) -> tuple[FloatArray, FloatArray] | None:
+    """The same, in numba's compiled loop; None with meshes in view or without numba."""
+    if not COMPILED or any(kind == "mesh" for kind, _ in surfaces):
+        return None
+    try:
+        from servicebot_cli.simulate.sensors import camera_kernel
+    except ModuleNotFoundError as exc:
+        if exc.name != "numba":
+            raise
+        return None
+    solids = [scene.solids[i] for kind, i in surfaces if kind == "solid"]
+    parts = [i for kind, i in surfaces if kind == "part"]
+    kinds = [*(s.kind for s in solids), *(scene.parts[i].kind for i in parts)]
+    transforms = scene.part_transforms if scene.part_transforms is not None \
+        else np.zeros((0, 4, 4))
+    palette = scene.palette
+    count = len(kinds)
+    colour, distance = np.empty((len(directions), 3)), np.empty(len(directions))
+    camera_kernel.shade(
+        np.ascontiguousarray(origin, dtype=np.float64), np.ascontiguousarray(directions),
+        view.forward, view.near_m, view.far_m,
+        np.array([("box", "cylinder", "sphere").index(k) for k in kinds], dtype=np.int64),
+        np.array([*(s.half_m for s in solids), *(scene.parts[i].half_m for i in parts)],
+                 dtype=np.float64).reshape(count, 3),
+        np.array([*(s.rotation for s in solids), *(transforms[i][:3, :3] for i in parts)],
+                 dtype=np.float64).reshape(count, 3, 3),
+        np.array([*(s.center_m for s in solids), *(transforms[i][:3, 3] for i in parts)],
+                 dtype=np.float64).reshape(count, 3),
+        np.array([*(palette.of_solid(s) for s in solids), *(palette.robot for _ in parts)],
+                 dtype=np.float64).reshape(count, 3),
+        np.array(palette.floor, dtype=np.float64), np.array(palette.sky, dtype=np.float64),
+        _LIGHT, _AMBIENT, colour, distance)
+    return colour, distance
 
 
 # -- surfaces: the floor, each solid, each mesh, each robot part ---------------------------

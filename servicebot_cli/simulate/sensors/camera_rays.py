@@ -50,7 +50,8 @@ def primitive_distances(kind: str, half_m: FloatArray, transform: FloatArray,
     """
     rotation = transform[:3, :3]
     shifted = origin - transform[:3, 3]
-    o = [float(shifted @ rotation[:, i]) for i in range(3)]
+    o = [float(shifted[0] * rotation[0, i] + shifted[1] * rotation[1, i]
+               + shifted[2] * rotation[2, i]) for i in range(3)]
     local = [d[0] * rotation[0, i] + d[1] * rotation[1, i] + d[2] * rotation[2, i]
              for i in range(3)]
     if kind == "box":
