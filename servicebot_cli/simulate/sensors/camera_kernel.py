@@ -22,46 +22,52 @@ IntArray = npt.NDArray[np.int64]
 BOX, CYLINDER, SPHERE = 0, 1, 2
 
 
+@njit(cache=True, nogil=True, error_model="numpy", inline="always")
+def _slab(o: float, d: float, half: float, near: float, far: float) -> tuple[float, float]:
+    """One axis of the slab method: ``near`` and ``far`` narrowed (near > far: a miss)."""
+    if d == 0.0:
+        return (near, far) if -half <= o <= half else (math.inf, -math.inf)
+    inv = 1.0 / d  # as raycast.box_entry: the same rounding at edges
+    t1, t2 = (-half - o) * inv, (half - o) * inv
+    return max(near, min(t1, t2)), min(far, max(t1, t2))
+
+
 @njit(cache=True, nogil=True, error_model="numpy")
-def _box(o: FloatArray, d: FloatArray, half: FloatArray) -> float:
-    near, far = -math.inf, math.inf
-    for i in range(3):
-        if d[i] == 0.0:
-            if o[i] < -half[i] or o[i] > half[i]:
-                return math.inf
-            continue
-        inv = 1.0 / d[i]  # as raycast.box_entry: the same rounding at edges
-        t1, t2 = (-half[i] - o[i]) * inv, (half[i] - o[i]) * inv
-        near, far = max(near, min(t1, t2)), min(far, max(t1, t2))
+def _box(o0: float, o1: float, o2: float, d0: float, d1: float, d2: float, h0: float,
+         h1: float, h2: float) -> float:
+    near, far = _slab(o0, d0, h0, -math.inf, math.inf)
+    near, far = _slab(o1, d1, h1, near, far)
+    near, far = _slab(o2, d2, h2, near, far)
     return near if near <= far and near >= 0.0 else math.inf
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
-def _cylinder(o: FloatArray, d: FloatArray, half: FloatArray) -> float:
-    radius, half_length = half[0], half[2]
-    c = o[0] * o[0] + o[1] * o[1] - radius * radius
-    if c < 0.0 and abs(o[2]) < half_length:
+def _cylinder(o0: float, o1: float, o2: float, d0: float, d1: float, d2: float,
+              radius: float, half_length: float) -> float:
+    c = o0 * o0 + o1 * o1 - radius * radius
+    if c < 0.0 and abs(o2) < half_length:
         return math.inf  # from inside: no entry
-    a = d[0] * d[0] + d[1] * d[1]
-    b = o[0] * d[0] + o[1] * d[1]
+    a = d0 * d0 + d1 * d1
+    b = o0 * d0 + o1 * d1
     disc = b * b - a * c
     best = math.inf
     if disc >= 0.0 and a > 0.0:
         t = (-b - math.sqrt(disc)) / a
-        if t >= 0.0 and abs(o[2] + t * d[2]) <= half_length:
+        if t >= 0.0 and abs(o2 + t * d2) <= half_length:
             best = t
-    if d[2] != 0.0:
-        t = (-math.copysign(half_length, d[2]) - o[2]) / d[2]
-        x, y = o[0] + t * d[0], o[1] + t * d[1]
+    if d2 != 0.0:
+        t = (-math.copysign(half_length, d2) - o2) / d2
+        x, y = o0 + t * d0, o1 + t * d1
         if t >= 0.0 and x * x + y * y <= radius * radius:
             best = min(best, t)
     return best
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
-def _sphere(o: FloatArray, d: FloatArray, radius: float) -> float:
-    b = o[0] * d[0] + o[1] * d[1] + o[2] * d[2]
-    c = o[0] * o[0] + o[1] * o[1] + o[2] * o[2] - radius * radius
+def _sphere(o0: float, o1: float, o2: float, d0: float, d1: float, d2: float,
+            radius: float) -> float:
+    b = o0 * d0 + o1 * d1 + o2 * d2
+    c = o0 * o0 + o1 * o1 + o2 * o2 - radius * radius
     disc = b * b - c
     if disc < 0.0 or c <= 0.0:
         return math.inf
@@ -116,24 +122,40 @@ def shade(origin: FloatArray, directions: FloatArray, forward: FloatArray, near_
             local_origins[s, i] = ((origin[0] - centres[s, 0]) * rotations[s, 0, i]
                                    + (origin[1] - centres[s, 1]) * rotations[s, 1, i]
                                    + (origin[2] - centres[s, 2]) * rotations[s, 2, i])
-    d, local = np.empty(3), np.empty(3)
+    # each primitive's bounding sphere as seen from the camera: a ray further from its
+    # centre's direction than its angular radius, or with a nearer hit already, misses it
+    towards, reach_cos, nearest = np.empty((count, 3)), np.empty(count), np.empty(count)
+    for s in range(count):
+        offset = centres[s] - origin
+        length = math.sqrt(offset[0] ** 2 + offset[1] ** 2 + offset[2] ** 2)
+        radius = math.sqrt(halves[s, 0] ** 2 + halves[s, 1] ** 2 + halves[s, 2] ** 2)
+        towards[s] = offset / length if length > 0.0 else offset
+        inside = length <= radius * (1.0 + 1e-9)
+        reach_cos[s] = -2.0 if inside else math.cos(math.asin(radius / length)) - 1e-9
+        nearest[s] = 0.0 if inside else length - radius
+    local = np.empty(3)
     for n in range(len(directions)):
+        dx, dy, dz = directions[n, 0], directions[n, 1], directions[n, 2]
         best, which = math.inf, -2  # -2: nothing, -1: the floor, s: a primitive
-        if directions[n, 2] < 0.0:
-            t = -origin[2] / directions[n, 2]
+        if dz < 0.0:
+            t = -origin[2] / dz
             if t >= 0.0 and near_m <= t * forward[n] <= far_m:
                 best, which = t, -1
         for s in range(count):
-            for i in range(3):
-                d[i] = (directions[n, 0] * rotations[s, 0, i] + directions[n, 1]
-                        * rotations[s, 1, i] + directions[n, 2] * rotations[s, 2, i])
-            o = local_origins[s]
+            if nearest[s] >= best or (dx * towards[s, 0] + dy * towards[s, 1]
+                                      + dz * towards[s, 2]) < reach_cos[s]:
+                continue
+            r = rotations[s]
+            d0 = dx * r[0, 0] + dy * r[1, 0] + dz * r[2, 0]
+            d1 = dx * r[0, 1] + dy * r[1, 1] + dz * r[2, 1]
+            d2 = dx * r[0, 2] + dy * r[1, 2] + dz * r[2, 2]
+            o0, o1, o2 = local_origins[s, 0], local_origins[s, 1], local_origins[s, 2]
             if kinds[s] == BOX:
-                t = _box(o, d, halves[s])
+                t = _box(o0, o1, o2, d0, d1, d2, halves[s, 0], halves[s, 1], halves[s, 2])
             elif kinds[s] == CYLINDER:
-                t = _cylinder(o, d, halves[s])
+                t = _cylinder(o0, o1, o2, d0, d1, d2, halves[s, 0], halves[s, 2])
             else:
-                t = _sphere(o, d, halves[s, 0])
+                t = _sphere(o0, o1, o2, d0, d1, d2, halves[s, 0])
             if t < best and near_m <= t * forward[n] <= far_m:
                 best, which = t, s
         distance[n] = best
