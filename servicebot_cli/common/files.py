@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import IO, Any
 
 from servicebot_cli.common.errors import ServicebotError
-from servicebot_cli.common.signals import ENDING_SIGNALS
+from servicebot_cli.common.signals import ENDING_SIGNALS, SignalsHeld
 
 
 class OutputError(ServicebotError):
@@ -53,14 +53,14 @@ def atomic_output(
     if "b" not in mode:
         open_kwargs.setdefault("encoding", "utf-8")
         open_kwargs.setdefault("newline", "\n")
-    blocked = _block_signals()  # no signal between creating the file and owning its clean-up
+    held = _hold_signals()  # no signal between creating the file and owning its clean-up
     try:
         fd, tmp_name = tempfile.mkstemp(dir=directory, prefix=f".{target.name}.", suffix=".tmp")
     except OSError as exc:
-        _unblock_signals(blocked)
+        _release(held)
         raise _cannot_write(target, directory, exc) from None
     try:
-        _unblock_signals(blocked)  # a signal that came meanwhile raises here, inside the try
+        _release(held)  # a signal that came meanwhile raises here, inside the try
         with os.fdopen(fd, mode, **open_kwargs) as handle:
             yield handle
         os.chmod(tmp_name, 0o644 & ~_umask())
@@ -68,8 +68,7 @@ def atomic_output(
     except OSError as exc:
         raise OutputError(f"{target}: cannot write: {exc.strerror or exc}") from None
     finally:
-        with contextlib.suppress(FileNotFoundError):
-            os.unlink(tmp_name)
+        _remove(tmp_name)
 
 
 @contextlib.contextmanager
@@ -85,40 +84,65 @@ def atomic_directory(path: str | os.PathLike[str]) -> Iterator[Path]:
     if target.exists():
         raise OutputError(f"{target}: already exists; remove it or give another path")
     parent = _parent(target)
-    blocked = _block_signals()
+    held = _hold_signals()
     try:
         temporary = Path(tempfile.mkdtemp(dir=parent, prefix=f".{target.name}.", suffix=".tmp"))
     except OSError as exc:
-        _unblock_signals(blocked)
+        _release(held)
         raise _cannot_write(target, parent, exc) from None
     try:
-        _unblock_signals(blocked)
+        _release(held)
         yield temporary
         os.chmod(temporary, 0o755 & ~_umask())
         os.rename(temporary, target)
     except OSError as exc:
         raise OutputError(f"{target}: cannot write: {exc.strerror or exc}") from None
     finally:
-        shutil.rmtree(temporary, ignore_errors=True)
+        _remove(str(temporary))
+
+
+def _remove(temporary: str) -> None:
+    """Remove a temporary file or directory (already gone: nothing to do), signals held.
+
+    A signal raised in the middle of a clean-up would leave the temporary behind; held, it
+    is raised once the temporary is gone.
+    """
+    held = _hold_signals()
+    try:
+        if os.path.isdir(temporary):
+            shutil.rmtree(temporary, ignore_errors=True)
+        else:
+            with contextlib.suppress(FileNotFoundError):
+                os.unlink(temporary)
+    finally:
+        _release(held)
 
 
 _DEFERRED = {signal.SIGINT, *ENDING_SIGNALS}  # Ctrl-C and the signals cli.py turns into errors
 
 
-def _block_signals() -> set[int | signal.Signals] | None:
-    """Hold back the signals that end a run, in the main thread; the mask to restore.
+Held = tuple[SignalsHeld, "set[int | signal.Signals] | None"]
 
-    Between creating a temporary file and entering the ``try`` that removes it, a signal
-    would leave the file behind. Held back, it is delivered by :func:`_unblock_signals`.
+
+def _hold_signals() -> Held:
+    """Hold back the signals that end a run; what :func:`_release` needs to let them through.
+
+    The handlers ``cli.py`` installs wait for the hold (:class:`SignalsHeld`), whichever
+    thread the kernel delivers a signal to; for code run without them (a library caller),
+    the main thread's signal mask holds them back too.
     """
-    if threading.current_thread() is not threading.main_thread():
-        return None
-    return signal.pthread_sigmask(signal.SIG_BLOCK, _DEFERRED)
+    mask = None
+    if threading.current_thread() is threading.main_thread():
+        mask = signal.pthread_sigmask(signal.SIG_BLOCK, _DEFERRED)
+    return SignalsHeld(), mask
 
 
-def _unblock_signals(previous: set[int | signal.Signals] | None) -> None:
-    if previous is not None:
-        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+def _release(held: Held) -> None:
+    """Let held signals through: one that came meanwhile raises here."""
+    hold, mask = held
+    if mask is not None:
+        signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+    hold.release()
 
 
 def _parent(target: Path) -> Path:

@@ -35,20 +35,65 @@ class EndedBySignal(BaseException):
         return f"{what} ({signal.Signals(self.signum).name})"
 
 
+class _Deferral:
+    """How many blocks hold signals back now, and the first signal that came meanwhile."""
+
+    depth = 0
+    pending: int | None = None
+
+
 def _raise(signum: int, frame: FrameType | None) -> None:
+    if _Deferral.depth:
+        _Deferral.pending = _Deferral.pending or signum
+        return
+    _raise_for(signum)
+
+
+def _raise_for(signum: int) -> None:
+    if signum == signal.SIGINT:
+        raise KeyboardInterrupt
     raise EndedBySignal(signum)
+
+
+class SignalsHeld:
+    """Signals that end a run held back until :meth:`release` (the ``finally`` of a clean-up).
+
+    A process-directed signal may be delivered to any thread (numpy's BLAS threads among
+    them), and CPython then runs the handler in the main thread at once: blocking it in the
+    main thread's signal mask does not hold it back. The handlers that
+    :func:`signals_as_exceptions` installs check this instead: while a hold is on, a signal is
+    kept and raised by :meth:`release` (once, by the outermost hold).
+    """
+
+    def __init__(self) -> None:
+        _Deferral.depth += 1
+        self._held = True
+
+    def release(self) -> None:
+        """End the hold; raise the signal that came meanwhile, if this was the last hold."""
+        if not self._held:
+            return
+        self._held = False
+        _Deferral.depth -= 1
+        if _Deferral.depth == 0 and _Deferral.pending is not None:
+            signum, _Deferral.pending = _Deferral.pending, None
+            _raise_for(signum)
 
 
 @contextlib.contextmanager
 def signals_as_exceptions() -> Iterator[None]:
     """Within the block, SIGTERM, SIGHUP and SIGQUIT raise :class:`EndedBySignal`.
 
+    SIGINT raises KeyboardInterrupt, as Python's own handler does; both wait while a
+    :class:`SignalsHeld` is on.
+
     Only the main thread can install handlers; elsewhere the block runs unchanged.
     """
     if threading.current_thread() is not threading.main_thread():
         yield
         return
-    previous = {signum: signal.signal(signum, _raise) for signum in ENDING_SIGNALS}
+    previous = {signum: signal.signal(signum, _raise)
+                for signum in (signal.SIGINT, *ENDING_SIGNALS)}
     try:
         yield
     finally:
