@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 import click
 
 from servicebot_cli.commands.command import Command
+from servicebot_cli.commands.kinematics_options import srdf_option
 from servicebot_cli.commands.options import (
     JointValue,
     Number,
@@ -54,9 +55,7 @@ _PORT_ONLY = (("--port", "port", "no port is opened"),
 @click.option("--allow-collisions", is_flag=True,
               help="Send arm targets even when they, or the arm's way to them, put links of "
               "the robot into each other or the floor (refused by default, as ik does).")
-@click.option("--srdf", type=click.Path(exists=True, dir_okay=False), default=None,
-              metavar="FILE",
-              help="An SRDF whose <disable_collisions link1= link2=> pairs are not checked.")
+@srdf_option
 @click.option("--max-speed", type=Number("RAD_S", positive=True), default=None,
               help="Cap every wheel at this speed [rad/s], below the URDF's limit (first "
               "tests on a real robot).")

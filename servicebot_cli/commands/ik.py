@@ -16,6 +16,7 @@ from servicebot_cli.commands.kinematics_options import (
     echo_notes,
     format_option,
     refuse_format_with_file,
+    srdf_option,
     warn,
 )
 from servicebot_cli.commands.options import (
@@ -94,9 +95,7 @@ class IkCommand(Command):
 @click.option("--allow-collisions", is_flag=True,
               help="Accept answers whose links intersect each other or the floor (by "
               "default such answers are refused and the search goes on).")
-@click.option("--srdf", type=click.Path(exists=True, dir_okay=False), default=None,
-              metavar="FILE",
-              help="An SRDF whose <disable_collisions link1= link2=> pairs are not checked.")
+@srdf_option
 @deg_option
 @clamp_option
 @batch_options("--targets", help="Batch: one target per line (CSV or JSON Lines, the column "

@@ -29,6 +29,11 @@ clamp_option = click.option(
     "stderr says which).",
 )
 
+srdf_option = click.option(
+    "--srdf", type=click.Path(exists=True, dir_okay=False), default=None, metavar="FILE",
+    help="An SRDF whose <disable_collisions link1= link2=> pairs are not checked.",
+)
+
 
 format_option = click.option(
     "--format", "fmt", type=click.Choice(["text", "json", "csv"]), default="text",

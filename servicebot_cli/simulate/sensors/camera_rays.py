@@ -21,6 +21,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.simulate.world.raycast import box_entry, cylinder_entry
+from servicebot_cli.simulate.world.robot_rays import sphere_entry
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -58,15 +59,7 @@ def primitive_distances(kind: str, half_m: FloatArray, transform: FloatArray,
         return box_entry(o, local, half_m)  # type: ignore[arg-type]  # scalars broadcast
     if kind == "cylinder":
         return cylinder_entry(o, local, half_m)  # type: ignore[arg-type]
-    return _sphere_entry(o, local, float(half_m[0]))
-
-
-def _sphere_entry(o: list[float], d: list[FloatArray], radius: float) -> FloatArray:
-    b = o[0] * d[0] + o[1] * d[1] + o[2] * d[2]
-    c = o[0] * o[0] + o[1] * o[1] + o[2] * o[2] - radius**2
-    disc = b * b - c
-    t = -b - np.sqrt(np.maximum(disc, 0.0))
-    return np.where((disc >= 0) & (c > 0) & (t >= 0), t, np.inf)
+    return sphere_entry(o, local, float(half_m[0]))  # type: ignore[arg-type]
 
 
 def bounding_radius(kind: str, half_m: FloatArray) -> float:

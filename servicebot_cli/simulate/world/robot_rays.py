@@ -47,12 +47,12 @@ def cast_parts(parts: Sequence[Part], transforms: FloatArray, origins: FloatArra
         elif part.kind == "cylinder":
             hit = cylinder_entry(o, d, part.half_m)
         else:
-            hit = _sphere_entry(o, d, float(part.half_m[0]))
+            hit = sphere_entry(o, d, float(part.half_m[0]))
         np.minimum(best, hit, out=best)
     return best
 
 
-def _sphere_entry(o: list[FloatArray], d: list[FloatArray], radius: float) -> FloatArray:
+def sphere_entry(o: list[FloatArray], d: list[FloatArray], radius: float) -> FloatArray:
     """Entry distance into a sphere of ``radius`` centred at the origin."""
     b = o[0] * d[0] + o[1] * d[1] + o[2] * d[2]
     c = o[0] * o[0] + o[1] * o[1] + o[2] * o[2] - radius**2
