@@ -43,6 +43,7 @@ def run(request: IkBatchRequest, sink: RowSink, *, warn: Warn, clock: Clock) -> 
         BadLine: An unusable line under ``--on-error stop``.
     """
     axes = parse_axes(request.axes, True)
+
     def compiled(ready_s: float) -> None:
         for line in compile_note(ready_s):
             warn(line)

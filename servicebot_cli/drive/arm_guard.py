@@ -25,7 +25,8 @@ from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.drive.arm_motion import ArmValues, arm_legs
 from servicebot_cli.drive.motors import MotorMap
 from servicebot_cli.drive.plan import Step
-from servicebot_cli.kinematics.collisions import FLOOR, Contact
+from servicebot_cli.kinematics.collisions import Contact
+from servicebot_cli.kinematics.diagnosis import ways_out
 
 if TYPE_CHECKING:
     from servicebot_cli.description.loader import RobotSource
@@ -92,7 +93,7 @@ class ArmGuard:
         if contact is not None:
             return Refusal(self.where(legs[0].step), (
                 f"the arm starts at {self._values(start_rad)}, where {contact} already "
-                f"intersect; move it clear first, or {_ways_out(contact)}"))
+                f"intersect; move it clear first, or {ways_out(contact)}"))
         for leg in legs:
             contact = self.collisions.contact(leg.target_rad)
             if contact is not None:
@@ -117,7 +118,7 @@ class ArmGuard:
     def _target_refusal(self, step: Step, contact: Contact) -> Refusal:
         return Refusal(self.where(step), (
             f"arm target {_typed(step)} is reachable only through a collision: {contact} "
-            f"would intersect; {_ways_out(contact)}"))
+            f"would intersect; {ways_out(contact)}"))
 
     def _path_refusal(self, step: Step, contact: Contact, start: ArmValues, target: ArmValues,
                       there: tuple[float, ...]) -> Refusal:
@@ -125,20 +126,13 @@ class ArmGuard:
         return Refusal(self.where(step), (
             f"arm target {_typed(step)}: on the way there, "
             f"at {self._values(there, moving)}, {contact} would intersect; a target in "
-            f"between can steer around it, or {_ways_out(contact)}"))
+            f"between can steer around it, or {ways_out(contact)}"))
 
     def _values(self, arm: Sequence[float], joints: Sequence[int] | None = None) -> str:
         """``name=value`` for ``joints`` of ``arm`` (default: every arm joint)."""
         names = self.motors.arm_joints
         chosen = range(len(names)) if joints is None else joints
         return " ".join(f"{names[k]}={arm[k]:.3g}" for k in chosen)
-
-
-def _ways_out(contact: Contact) -> str:
-    """``ik``'s ways out of a collision (``collision_hint``); an SRDF cannot name the floor."""
-    if contact.second == FLOOR:
-        return "--allow-collisions accepts it"
-    return "--allow-collisions accepts it, or --srdf FILE can disable the pair"
 
 
 def _typed(step: Step) -> str:

@@ -50,11 +50,14 @@ def hint(solver: IkSolver, target: IkTarget, seed: FloatArray, rng: np.random.Ge
 
 def collision_hint(contact: Contact) -> str:
     """A hint for a target reached only with links in collision: which two."""
-    if contact.second == FLOOR:  # an SRDF names pairs of links, never the floor
-        return (f"reachable only through a collision: {contact} would intersect; "
-                "--allow-collisions accepts it")
-    return (f"reachable only through a collision: {contact} would intersect; "
-            "--allow-collisions accepts it, or --srdf FILE can disable the pair")
+    return f"reachable only through a collision: {contact} would intersect; {ways_out(contact)}"
+
+
+def ways_out(contact: Contact) -> str:
+    """The options that let a collision through; an SRDF names pairs of links, never the floor."""
+    if contact.second == FLOOR:
+        return "--allow-collisions accepts it"
+    return "--allow-collisions accepts it, or --srdf FILE can disable the pair"
 
 
 def timeout_hint(timeout_s: float, attempts: int) -> str:

@@ -19,6 +19,7 @@ import numpy.typing as npt
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.kinematics.forward import FramePose, frame_poses
 from servicebot_cli.kinematics.frames import link_names, pick_frame
+from servicebot_cli.kinematics.transforms import planar_matrix
 from servicebot_cli.kinematics.user_joints import (
     Mimics,
     clamped_user_vector,
@@ -62,10 +63,7 @@ class FrameQuery:
         if self.base is None:
             return None
         x_m, y_m, yaw = self.base
-        yaw_rad = math.radians(yaw) if self.deg else yaw
-        c, s = math.cos(yaw_rad), math.sin(yaw_rad)
-        return np.array([[c, -s, 0.0, x_m], [s, c, 0.0, y_m], [0.0, 0.0, 1.0, 0.0],
-                         [0.0, 0.0, 0.0, 1.0]])
+        return planar_matrix(x_m, y_m, math.radians(yaw) if self.deg else yaw)
 
 
 @dataclass(frozen=True)

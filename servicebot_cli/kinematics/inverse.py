@@ -153,12 +153,6 @@ class IkSolver:
         if self._compiled is not None:
             self._compiled.ready()
 
-    @property
-    def ready_s(self) -> float:
-        """Seconds the compiled loop took to be ready (compiled, or loaded); 0 until then."""
-        ready_s = None if self._compiled is None else self._compiled.ready_s
-        return 0.0 if ready_s is None else ready_s
-
     def solve(self, target: IkTarget, seed: FloatArray, rng: np.random.Generator,
               stop: Callable[[], bool] | None = None) -> IkResult:
         """Joint values that put the chain's frame at ``target``.

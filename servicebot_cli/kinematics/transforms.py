@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import numpy.typing as npt
 
@@ -22,3 +24,10 @@ def pose_matrix(pose: Pose) -> FloatArray:
     transform[:3, :3] = rpy_matrix(*pose.rpy)
     transform[:3, 3] = pose.xyz
     return transform
+
+
+def planar_matrix(x_m: float, y_m: float, yaw_rad: float, z_m: float = 0.0) -> FloatArray:
+    """4x4 transform of a frame at ``(x, y)``, turned by ``yaw`` about z, ``z_m`` up."""
+    c, s = math.cos(yaw_rad), math.sin(yaw_rad)
+    return np.array([[c, -s, 0.0, x_m], [s, c, 0.0, y_m], [0.0, 0.0, 1.0, z_m],
+                     [0.0, 0.0, 0.0, 1.0]])

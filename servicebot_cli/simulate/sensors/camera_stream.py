@@ -15,6 +15,7 @@ from collections.abc import Sequence
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.kinematics.transforms import planar_matrix
 from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.scenario.camera import CameraImages
 from servicebot_cli.simulate.sensors import camera_info
@@ -78,8 +79,8 @@ class CameraStream:
         camera_to_base = shape.link_to_base(q, self.link) @ self.camera_to_link
         out = []
         for i in range(len(times_s)):
-            base_to_world = _base_to_world(float(x[i]), float(y[i]), float(yaw[i]),
-                                           body.base_height_m)
+            base_to_world = planar_matrix(float(x[i]), float(y[i]), float(yaw[i]),
+                                          body.base_height_m)
             scene = Scene(self.solids, self.meshes, self.parts, base_to_world @ parts_to_base[i])
             frame = render(self.view, base_to_world @ camera_to_base[i], scene, self.stddev,
                            self.rng)
@@ -92,8 +93,3 @@ def _tree(body: SimRobot) -> set[str]:
     return {body.shape.root, *(link for link, *_ in body.shape.steps)}
 
 
-def _base_to_world(x_m: float, y_m: float, yaw_rad: float, height_m: float) -> FloatArray:
-    """``transform_base_to_world`` of the base at ``(x, y, yaw)``, its origin ``height_m`` up."""
-    c, s = np.cos(yaw_rad), np.sin(yaw_rad)
-    return np.array([[c, -s, 0.0, x_m], [s, c, 0.0, y_m], [0.0, 0.0, 1.0, height_m],
-                     [0.0, 0.0, 0.0, 1.0]])
