@@ -23,6 +23,7 @@ from servicebot_cli.check.meshes import MeshCache
 from servicebot_cli.check.runner import FileReport, check_source, place_issues
 from servicebot_cli.check.settings import Settings
 from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.common.signals import ENDING_SIGNALS
 from servicebot_cli.description.loader import RobotSource
 from servicebot_cli.description.packages import PackageResolver
 
@@ -66,8 +67,8 @@ class _Worker:
 def _start(settings: Settings, packages: tuple[tuple[str, str], ...],
            mesh_cache: Path | None) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    for ending in (signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT):  # not the parent's handlers:
-        signal.signal(ending, signal.SIG_DFL)  # the parent stops its workers with SIGTERM
+    for ending in ENDING_SIGNALS:  # not the parent's handlers: it stops them with SIGTERM
+        signal.signal(ending, signal.SIG_DFL)
     _Worker.settings = settings
     _Worker.env = env_for(packages, settings, mesh_cache)
 
