@@ -1,10 +1,11 @@
 """The arm controller: ``joint_trajectory`` points followed within the URDF's limits.
 
 Like joint_trajectory_controller given positions only, the reference moves linearly from the
-arm's state when the goal arrives to each point in turn, then holds the last one. The joints
-follow that reference at most at their URDF velocity limit and never leave their position
-limits, so a point asked for too soon is reached late, as on the real arm. While the arm tracks
-exactly, whole stretches are filled at once; ticks are stepped one by one only while it lags.
+arm's state when the goal arrives to each point in turn, then holds the last one. Every point is
+reached: a segment asked for faster than a joint's URDF velocity limit allows is stretched until
+it is not, and the points after it come that much later, so the arm passes through each point
+(late) instead of cutting the corner toward the next one. While the arm tracks exactly, whole
+stretches are filled at once; ticks are stepped one by one only while it lags.
 :class:`ArmMotion` follows a run a stretch of ticks at a time.
 """
 
@@ -31,16 +32,35 @@ class ArmLimits:
     velocity: FloatArray
 
 
-def reference(trajectory: ArmTrajectory, q0: FloatArray, times_s: FloatArray) -> FloatArray:
-    """The interpolated reference at ``times_s``, shape (len(times_s), joints)."""
+def knots(trajectory: ArmTrajectory, q0: FloatArray,
+          limits: ArmLimits | None = None) -> tuple[FloatArray, FloatArray]:
+    """When [s] the reference passes each point, and the points (the first row is ``q0``).
+
+    With ``limits`` (for the trajectory's joints, in its order), each segment lasts at least as
+    long as its slowest joint needs at its velocity limit; later points are delayed by what
+    earlier segments were stretched.
+    """
+    values = np.vstack([q0] + [np.array(p.positions, dtype=float) for p in trajectory.points])
+    asked = np.diff([0.0] + [p.time_from_start_s for p in trajectory.points])
+    if limits is not None:
+        velocity = np.where(np.isnan(limits.velocity), np.inf, limits.velocity)
+        needed = np.max(np.abs(np.diff(values, axis=0)) / velocity, axis=1, initial=0.0)
+        asked = np.maximum(asked, needed)
+    return trajectory.start_s + np.concatenate([[0.0], np.cumsum(asked)]), values
+
+
+def reference(trajectory: ArmTrajectory, q0: FloatArray, times_s: FloatArray,
+              limits: ArmLimits | None = None) -> FloatArray:
+    """The interpolated reference at ``times_s``, shape (len(times_s), joints).
+
+    ``limits`` (the trajectory's joints, in its order) retime it as :func:`knots` says.
+    """
     if not trajectory.points:
         return np.broadcast_to(q0, (len(times_s), len(q0))).copy()
-    knots = np.array([trajectory.start_s] + [trajectory.start_s + p.time_from_start_s
-                                             for p in trajectory.points])
-    values = np.vstack([q0] + [np.array(p.positions) for p in trajectory.points])
-    if knots[1] == knots[0]:  # a first point at time 0 replaces the current state
-        knots, values = knots[1:], values[1:]
-    return np.column_stack([np.interp(times_s, knots, values[:, j], left=q0[j])
+    knots_s, values = knots(trajectory, q0, limits)
+    if knots_s[1] == knots_s[0]:  # a first point at time 0 replaces the current state
+        knots_s, values = knots_s[1:], values[1:]
+    return np.column_stack([np.interp(times_s, knots_s, values[:, j], left=q0[j])
                             for j in range(len(q0))])
 
 
@@ -100,7 +120,9 @@ class ArmMotion:
         if not self.trajectory.points:
             return np.broadcast_to(q0, (len(times_s), len(q0))).copy()
         ref = np.broadcast_to(q0, (len(times_s), len(q0))).copy()
-        ref[:, self.order] = reference(self.trajectory, q0[self.order], times_s)
+        own = ArmLimits(self.limits.lower[self.order], self.limits.upper[self.order],
+                        self.limits.velocity[self.order])
+        ref[:, self.order] = reference(self.trajectory, q0[self.order], times_s, own)
         q = follow(ref, q0 if self.q is None else self.q, self.limits, self.dt_s,
                    clip_start=self.q is None)
         self.q = q[-1].copy()
