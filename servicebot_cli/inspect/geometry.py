@@ -8,6 +8,7 @@ measured vertex by vertex. A mesh that cannot be found or read is reported, not 
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -25,6 +26,8 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 FloatArray = npt.NDArray[np.float64]
+FAR_M = 1e6
+"""Sizes and places beyond this [m] are no robot's: such shapes are not drawn or bounded."""
 
 
 @dataclass(frozen=True)
@@ -92,6 +95,10 @@ class MeshLibrary:
         if len(vertices) == 0:
             self.problems.append(f"mesh {filename}: has no vertices")
             return None
+        if not np.all(np.isfinite(vertices)) or np.max(np.abs(vertices)) > FAR_M:
+            self.problems.append(f"mesh {filename}: not drawn: it has coordinates that are not "
+                                 f"finite numbers within {FAR_M:g} (check reports it)")
+            return None
         return Mesh(vertices, faces)
 
 
@@ -114,6 +121,22 @@ def posed_visuals(robot: RobotDescription,
     return posed
 
 
+def unusable(posed: PosedShape) -> str | None:
+    """Why a placed shape cannot be drawn or bounded, or None when it can.
+
+    A size or a place that is not a finite number within :data:`FAR_M` is no robot's: check
+    reports the value; inspect leaves the shape out instead of drawing nonsense.
+    """
+    g = posed.shape.geometry
+    sizes = [v for v in (g.radius, g.length, *(g.size or ()), *g.scale) if v is not None]
+    if not all(math.isfinite(v) and abs(v) <= FAR_M for v in sizes):
+        return f"a size is not a finite number within {FAR_M:g} m"
+    t = posed.transform
+    if not np.all(np.isfinite(t)) or np.max(np.abs(t[:3, 3])) > FAR_M:
+        return f"its origin is not a finite place within {FAR_M:g} m"
+    return None
+
+
 def shape_bounds(posed: PosedShape, meshes: MeshLibrary) -> FloatArray | None:
     """Axis-aligned box ``[[xmin, ymin, zmin], [xmax, ymax, zmax]]`` [m] of a placed shape.
 
@@ -122,6 +145,8 @@ def shape_bounds(posed: PosedShape, meshes: MeshLibrary) -> FloatArray | None:
     """
     g, t = posed.shape.geometry, posed.transform
     centre, rotation = t[:3, 3], t[:3, :3]
+    if unusable(posed):
+        return None
     if g.kind == "box" and g.size is not None:
         half = np.abs(rotation) @ (np.abs(np.array(g.size, dtype=float)) / 2)
     elif g.kind == "cylinder" and g.radius is not None and g.length is not None:

@@ -17,6 +17,7 @@ from servicebot_cli.inspect.geometry import (
     PosedShape,
     mesh_library,
     posed_visuals,
+    unusable,
 )
 from servicebot_cli.inspect.poses import link_transforms
 
@@ -41,6 +42,7 @@ class PosedRobot:
         meshes: The mesh files, loaded once; its ``problems`` lists the unusable ones.
         materials: Top-level material name to RGBA.
         labels: Frames worth naming: the root, sensor links, bare leaf frames (the tool).
+        undrawn: One line per visual shape left out, and why.
     """
 
     name: str
@@ -52,18 +54,26 @@ class PosedRobot:
     meshes: MeshLibrary = field(repr=False)
     materials: Mapping[str, Rgba | None] = field(repr=False)
     labels: tuple[str, ...] = ()
+    undrawn: tuple[str, ...] = ()
 
 
 def pose_robot(robot: RobotDescription, values: Mapping[str, float],
                resolver: PackageResolver) -> PosedRobot:
     """``robot`` at the checked ``values`` (from :func:`~.poses.checked_values`)."""
     frames = link_transforms(robot, values)
+    visuals = posed_visuals(robot, frames)
+    why = [unusable(shape) for shape in visuals]
+    undrawn = tuple(f"link '{shape.link}': a {shape.shape.geometry.kind} not drawn: {reason}"
+                    for shape, reason in zip(visuals, why, strict=True) if reason)
+    drawn = [shape for shape, reason in zip(visuals, why, strict=True) if not reason]
+    standing = [shape for shape in posed_visuals(robot, link_transforms(robot))
+                if not unusable(shape)]
     return PosedRobot(
-        name=robot.name, display=robot.display, values=dict(values), frames=frames,
-        visuals=tuple(posed_visuals(robot, frames)),
-        standing=tuple(posed_visuals(robot, link_transforms(robot))),
+        name=robot.name, display=robot.display, values=dict(values),
+        frames={name: t for name, t in frames.items() if np.all(np.isfinite(t))},
+        visuals=tuple(drawn), standing=tuple(standing),
         meshes=mesh_library(robot, resolver), materials=robot.materials,
-        labels=_labels(robot, frames),
+        labels=_labels(robot, frames), undrawn=undrawn,
     )
 
 

@@ -45,7 +45,7 @@ def title(robot: str, values: Mapping[str, float]) -> str:
 
 
 def write_picture(posed: PosedRobot, path: str, view: str) -> list[str]:
-    """Draw ``posed`` into ``path`` as seen from ``view``; returns the meshes that failed.
+    """Draw ``posed`` into ``path`` as seen from ``view``; returns what was left out, and why.
 
     Raises:
         RenderError: Bad file type, or no visual geometry at all.
@@ -55,7 +55,7 @@ def write_picture(posed: PosedRobot, path: str, view: str) -> list[str]:
     scene = _scene(posed)
     with atomic_output(path, "wb") as handle:
         draw(scene, handle, fmt=fmt, view=view)
-    return list(posed.meshes.problems)
+    return [*posed.undrawn, *posed.meshes.problems]
 
 
 def _scene(posed: PosedRobot) -> Scene:
