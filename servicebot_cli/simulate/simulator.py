@@ -34,7 +34,7 @@ from servicebot_cli.simulate.sensors.camera_stream import PIECE_BYTES, CameraStr
 from servicebot_cli.simulate.sensors.noise import Noise, stream_rng
 from servicebot_cli.simulate.sensors.sample import SampleClock, sample_count
 from servicebot_cli.simulate.world import motion
-from servicebot_cli.simulate.world.contacts import Closest, Tester, closest, obstacles, posed_parts
+from servicebot_cli.simulate.world.contacts import Closest, Placed, Tester, closest, obstacles
 from servicebot_cli.simulate.world.raycast import Mesh
 from servicebot_cli.simulate.world.solids import Solid
 
@@ -194,7 +194,8 @@ class _Run:
         stop = None if ticks.stop >= self.ticks else ticks.stop  # None: every sample left
         plan = self.planner.plan(ticks)
         arm_q = self.arm.advance(np.arange(first, ticks.stop + 1, dtype=np.float64) * self.dt_s)
-        truth, contacts = self._ground_truth(first, plan, arm_q)
+        parts = body.shape.transforms_to_base(arm_q)  # (n+1, S, 4, 4), the arm at each boundary
+        truth, contacts = self._ground_truth(first, plan, parts)
         sides = self._wheel_angles(plan)
         odom_path, odom_before = self.odometer.advance(first, plan.left_rad_s, plan.right_rad_s)
         names, positions = _joint_positions(body, sides, arm_q)
@@ -207,17 +208,18 @@ class _Run:
             sides, odometry.published(odom_path, self.clocks["odometry"].take(stop), odom_before),
             joint_states.at_times(names, positions, self.dt_s,
                                   self.clocks["joints"].take(stop), first),
-            arm_q, self._closest(first, truth, arm_q), self._scans(truth, arm_q, stop),
+            arm_q, self._closest(first, truth, arm_q, parts), self._scans(truth, arm_q, parts, stop),
             self._imu(truth, stop), self.camera, camera_times, first, self.ticks,
             self.images.frames(truth, arm_q, camera_times) if self.images else ())
         self.twist_before = (float(truth.linear_m_s[-1]), float(truth.angular_rad_s[-1]))
         return piece
 
     def _ground_truth(self, first: int, plan: WheelPlan,
-                      arm_q: FloatArray) -> tuple[motion.Path2D, list[motion.Contact]]:
+                      parts: FloatArray) -> tuple[motion.Path2D, list[motion.Contact]]:
         """The base's real motion: wheel speeds through the floor's slip, stopped by obstacles.
 
         Any link touching an obstacle (with the arm where it is at that tick) stops the base.
+        ``parts`` holds every part's ``transform_part_to_base`` at the piece's boundaries.
         """
         body, slip = self.body, self.scenario.slip
         linear, angular = diff_drive.body_twist(
@@ -228,8 +230,8 @@ class _Run:
 
         def collides(ticks: IntArray, x: FloatArray, y: FloatArray,
                      yaw: FloatArray) -> tuple[IntArray, IntArray]:
-            return self.tester.first_hits(posed_parts(body.shape, x, y, yaw, body.base_height_m,
-                                                      arm_q[ticks - first]))
+            return self.tester.first_hits(Placed(parts[ticks - first], x, y, yaw,
+                                                 body.base_height_m))
 
         return self.motion.advance(first, np.asarray(linear) * keep, np.asarray(angular) * keep,
                                    collides)
@@ -242,22 +244,22 @@ class _Run:
         self.wheel_sums = self.wheel_angles = sums[-1]
         return angles
 
-    def _closest(self, first: int, truth: motion.Path2D, arm_q: FloatArray) -> Closest:
+    def _closest(self, first: int, truth: motion.Path2D, arm_q: FloatArray,
+                 parts: FloatArray) -> Closest:
         """The clearance record, with the piece's poses (each distinct one measured once)."""
         lo = 0 if first == 0 else 1  # the piece's first boundary ended the piece before
         rows = np.column_stack((truth.x_m[lo:], truth.y_m[lo:], truth.yaw_rad[lo:], arm_q[lo:]))
         _, index = np.unique(rows, axis=0, return_index=True)
         index = np.sort(index) + lo  # the first tick of each distinct pose, in time order
-        body = self.body
-        found = closest(self.tester, posed_parts(body.shape, truth.x_m[index], truth.y_m[index],
-                                                 truth.yaw_rad[index], body.base_height_m,
-                                                 arm_q[index]), below=self.record.distance_m)
+        found = closest(self.tester, Placed(parts[index], truth.x_m[index], truth.y_m[index],
+                                            truth.yaw_rad[index], self.body.base_height_m),
+                        below=self.record.distance_m)
         if found.index >= 0:
             self.record = Closest(found.distance_m, first + int(index[found.index]),
                                   found.obstacle, found.part)
         return self.record
 
-    def _scans(self, truth: motion.Path2D, arm_q: FloatArray,
+    def _scans(self, truth: motion.Path2D, arm_q: FloatArray, parts: FloatArray,
                stop: int | None) -> lidar.Scans | None:
         """The LIDAR's scans: the world and the robot's own links (the arm where it is)."""
         mounted = self.body.lidar
@@ -266,7 +268,8 @@ class _Run:
         times = self.clocks["scan"].take(stop)
         spec, mount = mounted.spec, mounted.transform_sensor_to_base
         boundary = truth.tick_index(times, boundaries=True)  # the arm at the tick's start
-        own = lidar.own_ranges(self.body.shape, mounted.link, mount, self.rays, arm_q[boundary])
+        own = lidar.own_ranges(self.body.shape, mounted.link, mount, self.rays, arm_q[boundary],
+                               parts[boundary])
         return lidar.scan(spec, mount, self.body.base_height_m, truth, times, self.solids,
                           self.meshes, self.scan_noise, own_m=own,
                           period_s=self.clocks["scan"].period_s)

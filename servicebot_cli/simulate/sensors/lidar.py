@@ -93,7 +93,8 @@ def ray_directions(spec: LidarSpec, transform_sensor_to_base: FloatArray) -> Flo
 
 
 def own_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: FloatArray,
-               directions: FloatArray, q: FloatArray) -> FloatArray:
+               directions: FloatArray, q: FloatArray,
+               parts_to_base: FloatArray | None = None) -> FloatArray:
     """Distance along each ray to the robot's own links, per scan, shape (scans, R).
 
     The sensor's own link is left out (Gazebo's ray sensor ignores the link it is on). Parts
@@ -105,6 +106,7 @@ def own_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: Fl
         transform_sensor_to_base: The sensor's pose on the base, (4, 4).
         directions: Ray directions in the base frame, shape (R, 3).
         q: The moving joints' positions at each scan, shape (scans, J).
+        parts_to_base: ``shape.transforms_to_base(q)`` when the caller has it already.
     """
     keep = np.array([p.link != sensor_link for p in shape.parts], dtype=bool)
     fixed = shape.fixed() & keep
@@ -113,16 +115,18 @@ def own_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: Fl
     parts = shape.parts
     out = np.full((len(q), len(directions)), np.inf)
     if fixed.any():
-        placed = shape.transforms_to_base(q[:1] if len(q) else np.zeros((1, len(shape.joints))))
+        placed = parts_to_base[:1] if parts_to_base is not None and len(q) else \
+            shape.transforms_to_base(q[:1] if len(q) else np.zeros((1, len(shape.joints))))
         out[:] = cast_parts([p for p, f in zip(parts, fixed, strict=True) if f],
                             placed[:, fixed], origin, directions)
     if moving.any() and len(q):
-        distinct, index = np.unique(q, axis=0, return_inverse=True)
+        distinct, first, index = np.unique(q, axis=0, return_index=True, return_inverse=True)
         moved = [p for p, m in zip(parts, moving, strict=True) if m]
         hits = np.empty((len(distinct), len(directions)))
         per_batch = max(1, raycast_batch() // max(1, len(directions) * len(moved)))
         for start in range(0, len(distinct), per_batch):
-            placed = shape.transforms_to_base(distinct[start:start + per_batch])[:, moving]
+            placed = (parts_to_base[first[start:start + per_batch]] if parts_to_base is not None
+                      else shape.transforms_to_base(distinct[start:start + per_batch]))[:, moving]
             hits[start:start + per_batch] = cast_parts(moved, placed, origin, directions)
         np.minimum(out, hits[index.ravel()], out=out)
     return out

@@ -13,6 +13,7 @@ meshes).
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -58,6 +59,22 @@ class Obstacle:
         outside = np.maximum(np.abs(local) - self.half_m, 0.0)
         return np.asarray(np.sqrt(np.einsum("...i,...i->...", outside, outside)),
                           dtype=np.float64)
+
+
+    def point_distance_xyz(self, points: list[FloatArray]) -> FloatArray:
+        """:meth:`point_distance` of points given as x, y and z arrays of one shape."""
+        shifted = [points[j] - self.center_m[j] for j in range(3)]
+        rot = self.rotation
+        local = [sum(shifted[j] * rot[j, i] for j in range(3) if rot[j, i] != 0.0)
+                 for i in range(3)]
+        local = [x if isinstance(x, np.ndarray) else np.zeros_like(points[0]) for x in local]
+        if self.kind == "cylinder":
+            radial = np.maximum(np.hypot(local[0], local[1]) - self.half_m[0], 0.0)
+            axial = np.maximum(np.abs(local[2]) - self.half_m[2], 0.0)
+            return np.asarray(np.hypot(radial, axial), dtype=np.float64)
+        outside = [np.maximum(np.abs(local[i]) - self.half_m[i], 0.0) for i in range(3)]
+        return np.asarray(np.sqrt(outside[0] * outside[0] + outside[1] * outside[1]
+                                  + outside[2] * outside[2]), dtype=np.float64)
 
 
 def obstacles(solids: Sequence[Solid], meshes: Sequence[Mesh] = ()) -> list[Obstacle]:
@@ -108,22 +125,87 @@ def posed_parts(shape: RobotShape, x: FloatArray, y: FloatArray, yaw: FloatArray
         base_height_m: Height of the base frame above the floor.
         q: The moving joints' positions at those poses, shape (P, J).
     """
-    base = np.zeros((len(x), 4, 4))
-    c, s = np.cos(yaw), np.sin(yaw)
-    base[:, 0, 0], base[:, 0, 1], base[:, 1, 0], base[:, 1, 1] = c, -s, s, c
-    base[:, 2, 2] = base[:, 3, 3] = 1.0
-    base[:, 0, 3], base[:, 1, 3], base[:, 2, 3] = x, y, base_height_m
-    return base[:, None] @ shape.transforms_to_base(q)
+    return Placed(shape.transforms_to_base(q), x, y, yaw, base_height_m).posed()
 
 
-def _lower_bounds(shape: RobotShape, world: Sequence[Obstacle],
-                  posed: FloatArray) -> FloatArray:
+@dataclass(frozen=True, eq=False)
+class Placed:
+    """The robot's parts at many base poses; whole transforms are made only where asked.
+
+    The contact tests need every part's centre at every pose (for their bounds) but whole
+    ``transform_part_to_world`` matrices only for the few pairs Coal measures.
+
+    Attributes:
+        parts_to_base: ``transform_part_to_base`` per pose, shape (P, S, 4, 4).
+        x_m, y_m, yaw_rad: The base's poses in the world, shape (P,) each.
+        base_height_m: Height of the base frame above the floor [m].
+    """
+
+    parts_to_base: FloatArray
+    x_m: FloatArray
+    y_m: FloatArray
+    yaw_rad: FloatArray
+    base_height_m: float
+
+    def __len__(self) -> int:
+        return int(self.parts_to_base.shape[0])
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        """(poses, parts)."""
+        return self.parts_to_base.shape[0], self.parts_to_base.shape[1]
+
+    @functools.cached_property
+    def _cos_sin(self) -> tuple[FloatArray, FloatArray]:
+        yaw = np.asarray(self.yaw_rad)
+        return np.cos(yaw), np.sin(yaw)
+
+    def bases(self, rows: slice | IntArray = slice(None)) -> FloatArray:
+        """``transform_base_to_world`` at the poses ``rows``, shape (P, 4, 4)."""
+        c, s = self._cos_sin[0][rows], self._cos_sin[1][rows]
+        base = np.zeros((len(c), 4, 4))
+        base[:, 0, 0], base[:, 0, 1], base[:, 1, 0], base[:, 1, 1] = c, -s, s, c
+        base[:, 2, 2] = base[:, 3, 3] = 1.0
+        base[:, 0, 3], base[:, 1, 3] = np.asarray(self.x_m)[rows], np.asarray(self.y_m)[rows]
+        base[:, 2, 3] = self.base_height_m
+        return base
+
+    def posed(self) -> FloatArray:
+        """``transform_part_to_world`` of every part at every pose, shape (P, S, 4, 4)."""
+        return self.bases()[:, None] @ self.parts_to_base
+
+    def transform(self, pose: int, part: int) -> FloatArray:
+        """``transform_part_to_world`` of one part at one pose, (4, 4): the bits of
+        :meth:`posed`."""
+        return self.bases(np.array([pose]))[0] @ self.parts_to_base[pose, part]
+
+    def centres(self) -> FloatArray:
+        """Each part's centre in the world, shape (P, S, 3)."""
+        c, s = self._cos_sin[0][:, None], self._cos_sin[1][:, None]
+        local = self.parts_to_base[..., :3, 3]
+        out = np.empty(local.shape)
+        out[..., 0] = c * local[..., 0] - s * local[..., 1] + np.asarray(self.x_m)[:, None]
+        out[..., 1] = s * local[..., 0] + c * local[..., 1] + np.asarray(self.y_m)[:, None]
+        out[..., 2] = local[..., 2] + self.base_height_m
+        return out
+
+
+def _as_placed(posed: FloatArray | Placed) -> Placed:
+    """Whole transforms (P, S, 4, 4) as :class:`Placed` (the base at the world's origin)."""
+    if isinstance(posed, Placed):
+        return posed
+    zeros = np.zeros(len(posed))
+    return Placed(np.asarray(posed, dtype=np.float64), zeros, zeros, zeros, 0.0)
+
+
+def _lower_bounds(shape: RobotShape, world: Sequence[Obstacle], placed: Placed) -> FloatArray:
     """Lower bound of each part-obstacle distance, shape (P, S, O)."""
     radius = np.array([p.radius_m for p in shape.parts])
-    centres = posed[..., :3, 3]
-    out = np.empty(posed.shape[:2] + (len(world),))
+    centres = placed.centres()
+    points = [np.ascontiguousarray(centres[..., i]) for i in range(3)]
+    out = np.empty(placed.shape + (len(world),))
     for o, obstacle in enumerate(world):
-        out[..., o] = obstacle.point_distance(centres) - radius
+        out[..., o] = obstacle.point_distance_xyz(points) - radius
     return out
 
 
@@ -135,22 +217,22 @@ class Tester:
         self.world = list(world)
         self.geometries = [part_geometry(p) for p in shape.parts]
 
-    def touching(self, posed: FloatArray, pose: int, part: int, obstacle: int) -> bool:
-        """Whether a part at ``posed[pose, part]`` touches an obstacle."""
+    def touching(self, posed: Placed, pose: int, part: int, obstacle: int) -> bool:
+        """Whether a part at ``posed`` pose ``pose`` touches an obstacle."""
         import coal
 
-        transform = posed[pose, part]
+        transform = posed.transform(pose, part)
         request, result = coal.CollisionRequest(), coal.CollisionResult()
         target = self.world[obstacle]
         coal.collide(self.geometries[part], coal.Transform3s(transform[:3, :3], transform[:3, 3]),
                      target.geometry, target.transform, request, result)
         return bool(result.isCollision())
 
-    def distance(self, posed: FloatArray, pose: int, part: int, obstacle: int) -> float:
+    def distance(self, posed: Placed, pose: int, part: int, obstacle: int) -> float:
         """Distance between a part and an obstacle [m] (0 when touching)."""
         import coal
 
-        transform = posed[pose, part]
+        transform = posed.transform(pose, part)
         request, result = coal.DistanceRequest(), coal.DistanceResult()
         target = self.world[obstacle]
         coal.distance(self.geometries[part],
@@ -158,11 +240,13 @@ class Tester:
                       target.geometry, target.transform, request, result)
         return max(float(result.min_distance), 0.0)
 
-    def first_hits(self, posed: FloatArray) -> tuple[IntArray, IntArray]:
+    def first_hits(self, posed: FloatArray | Placed) -> tuple[IntArray, IntArray]:
         """Per pose, the first obstacle touched and the part touching it; -1 where free.
 
-        "First" is in obstacle order, then part order, so reports are stable.
+        ``posed`` holds the parts at each pose: whole transforms (P, S, 4, 4) or
+        :class:`Placed`. "First" is in obstacle order, then part order, so reports are stable.
         """
+        posed = _as_placed(posed)
         obstacle = np.full(len(posed), -1, dtype=np.int64)
         part = np.full(len(posed), -1, dtype=np.int64)
         if not self.world or not len(posed):
@@ -194,7 +278,7 @@ class Closest:
     part: int
 
 
-def closest(tester: Tester, posed: FloatArray, below: float = np.inf) -> Closest:
+def closest(tester: Tester, posed: FloatArray | Placed, below: float = np.inf) -> Closest:
     """The smallest part-obstacle distance over all poses, measured only where it can be.
 
     Pairs are measured in order of their lower bound; the search stops when the next bound
@@ -204,6 +288,7 @@ def closest(tester: Tester, posed: FloatArray, below: float = np.inf) -> Closest
     otherwise.
     """
     none = Closest(float("inf"), -1, -1, -1)
+    posed = _as_placed(posed)
     if not tester.world or not len(posed):
         return none
     bounds = _lower_bounds(tester.shape, tester.world, posed).ravel()
@@ -213,7 +298,7 @@ def closest(tester: Tester, posed: FloatArray, below: float = np.inf) -> Closest
         take = open_ if len(open_) <= _CHUNK else \
             open_[np.argpartition(bounds[open_], _CHUNK)[:_CHUNK]]
         for flat in np.sort(take).tolist():
-            p, s, o = np.unravel_index(flat, posed.shape[:2] + (len(tester.world),))
+            p, s, o = np.unravel_index(flat, posed.shape + (len(tester.world),))
             d = tester.distance(posed, int(p), int(s), int(o))
             if d < best or (d == best and best_flat >= 0 and flat < best_flat):
                 best, best_flat = d, flat
@@ -222,5 +307,5 @@ def closest(tester: Tester, posed: FloatArray, below: float = np.inf) -> Closest
         open_ = open_[bounds[open_] <= best] if best_flat >= 0 else open_[bounds[open_] < best]
     if best_flat < 0:
         return none
-    p, s, o = np.unravel_index(best_flat, posed.shape[:2] + (len(tester.world),))
+    p, s, o = np.unravel_index(best_flat, posed.shape + (len(tester.world),))
     return Closest(best, int(p), int(o), int(s))

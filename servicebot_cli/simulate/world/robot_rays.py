@@ -2,7 +2,8 @@ r"""Rays against the robot's own collision parts, posed differently in each batc
 
 The LIDAR and the camera see the robot they stand on. A ray :math:`o + t d` is moved into
 each part's frame (:math:`R^T (o - c)`, :math:`R^T d`) and intersected in closed form: the
-slab method for boxes, a quadratic and two caps for cylinders, a quadratic for spheres.
+slab method for boxes, a quadratic and two caps for cylinders, a quadratic for spheres. Only
+the rays through a part's bounding sphere are intersected with it.
 A ray that starts inside a part does not see it, as with Gazebo's ray sensor inside its
 own link.
 """
@@ -18,11 +19,14 @@ from servicebot_cli.simulate.shape import Part
 from servicebot_cli.simulate.world.raycast import box_entry, cylinder_entry
 
 FloatArray = npt.NDArray[np.float64]
+IntArray = npt.NDArray[np.int64]
 
 
 def cast_parts(parts: Sequence[Part], transforms: FloatArray, origins: FloatArray,
                directions: FloatArray) -> FloatArray:
     """Distance along each ray to the first part it enters [m], inf for none.
+
+    Only the rays that pass through a part's bounding sphere are intersected with it.
 
     Args:
         parts: The parts, S of them.
@@ -34,22 +38,48 @@ def cast_parts(parts: Sequence[Part], transforms: FloatArray, origins: FloatArra
         Distances, shape (B, R).
     """
     batches, rays = transforms.shape[0], origins.shape[-2]
-    best = np.full((batches, rays), np.inf)
+    best = np.full(batches * rays, np.inf)
+    o_full = [np.broadcast_to(origins[..., j], (batches, rays)) for j in range(3)]
+    d_full = [np.broadcast_to(directions[..., j], (batches, rays)) for j in range(3)]
     for i, part in enumerate(parts):
         rotation, centre = transforms[:, i, :3, :3], transforms[:, i, :3, 3]
-        # local = R^T (o - c): einsum over the rotation's rows
-        shifted = origins - centre[:, None, :]
-        o = [np.einsum("brj,bj->br", shifted, rotation[:, :, k]) for k in range(3)]
-        spec = "rj,bj->br" if directions.ndim == 2 else "brj,bj->br"
-        d = [np.einsum(spec, directions, rotation[:, :, k]) for k in range(3)]
+        batch, ray = _through_sphere(o_full, d_full, centre, part.radius_m)
+        if not len(batch):
+            continue
+        # local = R^T (o - c), each sum in the order of the rotation's rows
+        shifted = [o_full[j][batch, ray] - centre[batch, j] for j in range(3)]
+        d_rays = [d_full[j][batch, ray] for j in range(3)]
+        o = [_dot3(shifted, rotation[batch, :, k]) for k in range(3)]
+        d = [_dot3(d_rays, rotation[batch, :, k]) for k in range(3)]
         if part.kind == "box":
             hit = box_entry(o, d, part.half_m)
         elif part.kind == "cylinder":
             hit = cylinder_entry(o, d, part.half_m)
         else:
             hit = sphere_entry(o, d, float(part.half_m[0]))
-        np.minimum(best, hit, out=best)
-    return best
+        flat = batch * rays + ray
+        best[flat] = np.minimum(best[flat], hit)
+    return best.reshape(batches, rays)
+
+
+def _dot3(vectors: list[FloatArray], rows: FloatArray) -> FloatArray:
+    """``v[0] r[:, 0] + v[1] r[:, 1] + v[2] r[:, 2]``, summed left to right."""
+    return vectors[0] * rows[:, 0] + vectors[1] * rows[:, 1] + vectors[2] * rows[:, 2]
+
+
+def _through_sphere(origins: list[FloatArray], directions: list[FloatArray],
+                    centres: FloatArray, radius_m: float) -> tuple[IntArray, IntArray]:
+    """Batch and ray indices of the rays that may meet a sphere ahead of their origin.
+
+    A ray from ``o`` along unit ``d`` meets the sphere (centre ``c``, radius ``r``) at some
+    ``t >= 0`` only if its distance from the centre is at most ``r`` and ``d . (c - o) >= -r``;
+    the radius is taken a little larger so that rounding never drops a ray that hits.
+    """
+    reach = radius_m * (1 + 1e-6) + 1e-9
+    v = [centres[:, None, j] - origins[j] for j in range(3)]
+    along = directions[0] * v[0] + directions[1] * v[1] + directions[2] * v[2]
+    across = v[0] * v[0] + v[1] * v[1] + v[2] * v[2] - along * along
+    return np.nonzero((across <= reach * reach) & (along >= -reach))
 
 
 def sphere_entry(o: list[FloatArray], d: list[FloatArray], radius: float) -> FloatArray:
