@@ -58,8 +58,12 @@ class SelfContactWatch:
         self.previous = -2  # the last tick checked
         self.last_q: FloatArray | None = None  # the arm at the last tick seen
 
-    def advance(self, first_tick: int, arm_q: FloatArray) -> list[SelfContact]:
-        """Events among the arm positions (n+1, J) at the boundaries from ``first_tick``."""
+    def advance(self, first_tick: int, arm_q: FloatArray,
+                parts_to_base: FloatArray | None = None) -> list[SelfContact]:
+        """Events among the arm positions (n+1, J) at the boundaries from ``first_tick``.
+
+        ``parts_to_base`` is ``shape.transforms_to_base(arm_q)`` when the caller has it.
+        """
         if not self.check.pairs or not len(arm_q):
             return []
         before = arm_q[:1] if self.last_q is None else self.last_q[None]
@@ -70,8 +74,9 @@ class SelfContactWatch:
             changes = np.concatenate(([0], changes))
         self.last_q = arm_q[-1].copy()
         if len(changes):
-            changes = changes[_could_touch(self.robot, self.shape, self.base_height_m,
-                                           arm_q[changes])]
+            changes = changes[_could_touch(
+                self.robot, self.shape, self.base_height_m, arm_q[changes],
+                None if parts_to_base is None else parts_to_base[changes])]
         events: list[SelfContact] = []
         for k in (changes + first_tick).tolist():
             if k != self.previous + 1:
@@ -92,7 +97,7 @@ def self_contacts(robot: RobotDescription, shape: RobotShape, base_height_m: flo
 
 
 def _could_touch(robot: RobotDescription, shape: RobotShape, base_height_m: float,
-                 q: FloatArray) -> npt.NDArray[np.bool_]:
+                 q: FloatArray, placed: FloatArray | None = None) -> npt.NDArray[np.bool_]:
     """Per configuration: may a moving part touch another link's part, or the floor?
 
     A moving part (bounding sphere) is compared with a part fixed on the base through that
@@ -102,7 +107,7 @@ def _could_touch(robot: RobotDescription, shape: RobotShape, base_height_m: floa
     joined = {frozenset((j.parent, j.child)) for j in robot.joints}
     fixed = shape.fixed()
     radius = np.array([p.radius_m for p in shape.parts])
-    placed = shape.transforms_to_base(q)
+    placed = shape.transforms_to_base(q) if placed is None else placed
     centres = placed[..., :3, 3]
     out = np.zeros(len(q), dtype=bool)
     for i in np.flatnonzero(~fixed):

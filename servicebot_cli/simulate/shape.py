@@ -94,6 +94,8 @@ class RobotShape:
     def transforms_to_base(self, q: FloatArray) -> FloatArray:
         """``transform_part_to_base`` of every part for each configuration.
 
+        Parts no joint moves are placed once and copied to every configuration.
+
         Args:
             q: Positions of :attr:`joints` [rad or m], shape (P, J).
 
@@ -104,9 +106,12 @@ class RobotShape:
         count = len(links[self.root])
         out = np.empty((count, len(self.parts), 4, 4))
         for i, part in enumerate(self.parts):
-            out[:, i] = links[part.link] @ part.transform_part_to_link
+            placed = links[part.link]
+            if placed.strides[0] == 0:  # the same for every configuration
+                out[:, i] = placed[:1] @ part.transform_part_to_link
+            else:
+                out[:, i] = placed @ part.transform_part_to_link
         return out
-
 
     def link_to_base(self, q: FloatArray, link: str) -> FloatArray:
         """``transform_link_to_base`` of ``link`` for each configuration, shape (P, 4, 4).
@@ -117,11 +122,18 @@ class RobotShape:
         return self._links(q)[link]
 
     def _links(self, q: FloatArray) -> dict[str, FloatArray]:
-        """Every link's ``transform_link_to_base`` for each row of ``q``, shape (P, 4, 4)."""
+        """Every link's ``transform_link_to_base`` for each row of ``q``, shape (P, 4, 4).
+
+        A link no joint moves is one matrix broadcast to every row (a zero first stride).
+        """
         q = np.asarray(q, dtype=float).reshape(-1, len(self.joints))
         links = {self.root: np.broadcast_to(np.eye(4), (len(q), 4, 4))}
         for link, parent, origin, joint in self.steps:
-            placed = links[parent] @ origin
+            before = links[parent]
+            if joint is None and before.strides[0] == 0:  # fixed: one matrix for every row
+                links[link] = np.broadcast_to(before[:1] @ origin, before.shape)
+                continue
+            placed = before @ origin
             if joint is not None:
                 placed = placed @ joint_motions(joint, q[:, self.joints.index(joint.name)])
             links[link] = placed

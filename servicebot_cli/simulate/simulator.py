@@ -204,7 +204,7 @@ class _Run:
         piece = SimResult(
             body, self.scenario, self.seed, self.solids, [o.name for o in self.tester.world],
             plan, truth, contacts,
-            self.self_contacts.advance(first, arm_q) if self.self_contacts else [],
+            self.self_contacts.advance(first, arm_q, parts) if self.self_contacts else [],
             sides, odometry.published(odom_path, self.clocks["odometry"].take(stop), odom_before),
             joint_states.at_times(names, positions, self.dt_s,
                                   self.clocks["joints"].take(stop), first),

@@ -9,7 +9,9 @@ file's bytes do not depend on how the messages are split into batches.
 
 Why not the ``mcap`` package's writer: it builds each message record in Python, about 4 us a
 message; a three-minute run has 60 000 of them, half the simulator's time. Here the record
-headers of a batch are one numpy array and a chunk is one ``bytes.join``.
+headers of a batch are one numpy array and a chunk is one ``bytes.join``. Full chunks are
+joined, compressed, checksummed and written by one worker thread, in order, while the caller
+goes on (zstd and zlib let go of the GIL); at most :data:`PENDING_CHUNKS` wait for it.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ import itertools
 import struct
 import zlib
 from collections.abc import Mapping, Sequence
+from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass, field
 from typing import BinaryIO, Protocol
 
@@ -33,6 +36,8 @@ _SUMMARY_OFFSET, _DATA_END = 0x0E, 0x0F
 _MESSAGE_HEAD = np.dtype([("opcode", "u1"), ("length", "<u8"), ("channel", "<u2"),
                           ("sequence", "<u4"), ("log_time", "<u8"), ("publish_time", "<u8")])
 _INDEX_ENTRY = np.dtype([("log_time", "<u8"), ("offset", "<u8")])
+PENDING_CHUNKS = 2
+"""Full chunks at most waiting for the writing thread (each about ``chunk_size`` bytes)."""
 
 
 @dataclass(frozen=True)
@@ -112,6 +117,8 @@ class McapWriter:
         self.payloads: list[bytes] = []  # payloads and offsets in it
         self.offsets: list[npt.NDArray[np.int64]] = []
         self.chunk_indexes: list[bytes] = []
+        self.pending: list[Future[bytes]] = []  # chunks given to the thread, in file order
+        self.thread: ThreadPoolExecutor | None = None
         self.counts = np.zeros(len(channels), dtype=np.int64)
         self.first_time = self.last_time = 0
 
@@ -150,17 +157,41 @@ class McapWriter:
                                    minlength=len(self.channels))
 
     def _write_open_chunk(self) -> None:
+        """Give the chunk being filled to the writing thread (after the ones before it)."""
         if not self.payloads:
             return
         offsets = np.concatenate(self.offsets)
-        self.chunk_indexes.append(_write_chunk(self.out, np.concatenate(self.heads),
-                                               self.payloads, offsets - offsets[0],
-                                               self.compressor))
+        if self.thread is None:
+            self.thread = ThreadPoolExecutor(1, thread_name_prefix="mcap-chunks")
+        while len(self.pending) >= PENDING_CHUNKS:
+            self.chunk_indexes.append(self.pending.pop(0).result())
+        self.pending.append(self.thread.submit(
+            _write_chunk, self.out, np.concatenate(self.heads), self.payloads,
+            offsets - offsets[0], self.compressor))
         self.heads, self.payloads, self.offsets = [], [], []
+
+    def close(self) -> None:
+        """Stop the writing thread: chunks not begun are dropped (for a run ended early)."""
+        if self.thread is not None:
+            self.thread.shutdown(cancel_futures=True)
+            self.thread = None
+        self.pending = []
+
+    def _written_chunks(self) -> None:
+        """Wait for the writing thread to write every chunk given to it; raise its error."""
+        try:
+            for future in self.pending:
+                self.chunk_indexes.append(future.result())
+        finally:
+            self.pending = []
+            if self.thread is not None:
+                self.thread.shutdown()
+                self.thread = None
 
     def finish(self) -> None:
         """Write the last chunk, the data end, the summary and the footer."""
         self._write_open_chunk()
+        self._written_chunks()
         out, total = self.out, int(self.counts.sum())
         out.write(_record(_DATA_END, struct.pack("<I", out.crc)))
         statistics = _record(_STATISTICS, struct.pack(
@@ -216,10 +247,11 @@ class Compressor(Protocol):
 def _write_chunk(out: _Output, heads: np.ndarray, payloads: Sequence[bytes],
                  offsets: npt.NDArray[np.int64], compressor: Compressor) -> bytes:
     """Write one chunk and its message indexes; returns its chunk index record."""
-    head_bytes = memoryview(heads.tobytes())
-    width = _MESSAGE_HEAD.itemsize
-    pieces = (head_bytes[k * width:(k + 1) * width] for k in range(len(payloads)))
-    records = b"".join(itertools.chain.from_iterable(zip(pieces, payloads, strict=True)))
+    head_bytes, width = heads.tobytes(), _MESSAGE_HEAD.itemsize
+    parts: list[bytes] = [b""] * (2 * len(payloads))
+    parts[0::2] = [head_bytes[k:k + width] for k in range(0, len(head_bytes), width)]
+    parts[1::2] = payloads
+    records = b"".join(parts)
     compressed = compressor.compress(records)
     first, last = int(heads["log_time"][0]), int(heads["log_time"][-1])
     chunk = _record(_CHUNK, struct.pack("<QQQI", first, last, len(records), zlib.crc32(records))

@@ -57,6 +57,7 @@ class BagWriter:
                                  for p in publishers])
         self.mcap = McapWriter(handle, [_channel(t) for t in self.topics], profile="ros2",
                                library=f"servicebot {__version__}")
+        stack.callback(self.mcap.close)  # before the file closes
         self.sequences = np.zeros(len(self.topics), dtype=np.int64)
         self.start_ns: int | None = None
         self.end_ns = 0

@@ -77,11 +77,19 @@ def cast(origins: FloatArray, directions: FloatArray, solids: Sequence[Solid], *
         if level and not np.any((o[2] >= low) & (o[2] <= high)):
             continue  # a horizontal scan that passes above or below the solid
         rot = solid.rotation
-        ol = [sum((o[j] - solid.center_m[j]) * rot[j, i] for j in range(3)) for i in range(3)]
+        # Terms of a zero rotation entry are left out: they add only zeros.
+        shifted = [o[j] - solid.center_m[j] for j in range(3)]
+        ol = [sum(shifted[j] * rot[j, i] for j in range(3) if rot[j, i] != 0.0)
+              for i in range(3)]
         dl = [sum(d[j] * rot[j, i] for j in range(3) if rot[j, i] != 0.0) for i in range(3)]
+        ol = [x if isinstance(x, np.ndarray) else np.zeros_like(best) for x in ol]
         dl = [x if isinstance(x, np.ndarray) else np.zeros_like(best) for x in dl]
-        hit = (box_entry(ol, dl, solid.half_m) if solid.kind == "box"
-               else cylinder_entry(ol, dl, solid.half_m))
+        if level and not np.any(dl[2]) and _strictly_within(ol[2], solid.half_m[2]):
+            hit = (_level_box_entry(ol, dl, solid.half_m) if solid.kind == "box"
+                   else _level_cylinder_entry(ol, dl, solid.half_m))
+        else:
+            hit = (box_entry(ol, dl, solid.half_m) if solid.kind == "box"
+                   else cylinder_entry(ol, dl, solid.half_m))
         np.minimum(best, hit, out=best)
     for mesh in meshes:
         np.minimum(best, mesh_distances(mesh, origins, directions), out=best)
@@ -99,6 +107,41 @@ def box_entry(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> Flo
             np.fmax(near, np.fmin(t1, t2), out=near)
             np.fmin(far, np.fmax(t1, t2), out=far)
     return np.where((near <= far) & (near >= 0.0), near, np.inf)
+
+
+def _strictly_within(z: FloatArray, half: float) -> bool:
+    """Every local height strictly between the solid's bottom and top."""
+    return bool(np.all((z > -half) & (z < half)))
+
+
+def _level_box_entry(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
+    """:func:`box_entry` for level rays (local ``d[2] == 0``) starting between the box's
+    bottom and top: the z slab is all of the line (its bounds are -inf and inf), so it is
+    left out, with the same result."""
+    near = np.full(np.shape(d[0]), -np.inf)
+    far = np.full(np.shape(d[0]), np.inf)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for i in range(2):
+            inv = 1.0 / d[i]
+            t1, t2 = (-half[i] - o[i]) * inv, (half[i] - o[i]) * inv
+            np.fmax(near, np.fmin(t1, t2), out=near)
+            np.fmin(far, np.fmax(t1, t2), out=far)
+    return np.where((near <= far) & (near >= 0.0), near, np.inf)
+
+
+def _level_cylinder_entry(o: list[FloatArray], d: list[FloatArray],
+                          half: FloatArray) -> FloatArray:
+    """:func:`cylinder_entry` for level rays starting between the cylinder's caps: the side
+    alone (a level ray never meets a cap from there)."""
+    radius = half[0]
+    a = d[0] * d[0] + d[1] * d[1]
+    b = o[0] * d[0] + o[1] * d[1]
+    c = o[0] * o[0] + o[1] * o[1] - radius**2
+    disc = b * b - a * c
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t_side = (-b - np.sqrt(np.maximum(disc, 0.0))) / a
+        side = np.where((disc >= 0) & (a > 0) & (t_side >= 0), t_side, np.inf)
+    return np.where(c < 0, np.inf, side)
 
 
 def cylinder_entry(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
