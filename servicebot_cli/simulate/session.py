@@ -113,12 +113,15 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
             output that cannot be written.
     """
     from servicebot_cli.description.loader import load
-    from servicebot_cli.simulate.files.live import display_problem
     from servicebot_cli.simulate.scenario.definition import load_scenario
 
     robot = load(request.robot)
     scenario = with_overrides(load_scenario(request.scenario_file), request.overrides)
-    problem = display_problem() if request.live_window else ""
+    problem = ""
+    if request.live_window:  # the window's module brings the plot's, not needed headless
+        from servicebot_cli.simulate.files.live import display_problem
+
+        problem = display_problem()
     if problem:  # checked after the input, before any work
         raise ServicebotError(f"{problem}; use --headless (with --plot FILE.png for a picture)")
     scenario_dir = Path(request.scenario_file).parent if request.scenario_file else Path.cwd()
@@ -241,15 +244,17 @@ class Writer(Protocol):
 def _writers(outputs: Outputs, first: SimResult, sources: list[Publisher],
              stack: contextlib.ExitStack) -> list[Writer]:
     """The writers ``outputs`` asks for, begun on ``stack``, for a run starting with ``first``."""
-    from servicebot_cli.simulate.bag.rosbag import BagWriter
-    from servicebot_cli.simulate.files.csv_out import CsvWriter
-    from servicebot_cli.simulate.files.plot import PlotWriter
-
     writers: list[Writer] = []
     if outputs.bag is not None:
+        from servicebot_cli.simulate.bag.rosbag import BagWriter
+
         writers.append(BagWriter(outputs.bag, sources, stack))
     if outputs.out_dir is not None:
+        from servicebot_cli.simulate.files.csv_out import CsvWriter
+
         writers.append(CsvWriter(outputs.out_dir, stack))
     if outputs.plot is not None:
+        from servicebot_cli.simulate.files.plot import PlotWriter
+
         writers.append(PlotWriter(outputs.plot, first))
     return writers

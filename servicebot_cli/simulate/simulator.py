@@ -208,7 +208,8 @@ class _Run:
             sides, odometry.published(odom_path, self.clocks["odometry"].take(stop), odom_before),
             joint_states.at_times(names, positions, self.dt_s,
                                   self.clocks["joints"].take(stop), first),
-            arm_q, self._closest(first, truth, arm_q, parts), self._scans(truth, arm_q, parts, stop),
+            arm_q, self._closest(first, truth, arm_q, parts),
+            self._scans(truth, arm_q, parts, stop),
             self._imu(truth, stop), self.camera, camera_times, first, self.ticks,
             self.images.frames(truth, arm_q, camera_times) if self.images else ())
         self.twist_before = (float(truth.linear_m_s[-1]), float(truth.angular_rad_s[-1]))

@@ -175,9 +175,9 @@ class Placed:
         return self.bases()[:, None] @ self.parts_to_base
 
     def transform(self, pose: int, part: int) -> FloatArray:
-        """``transform_part_to_world`` of one part at one pose, (4, 4): the bits of
-        :meth:`posed`."""
-        return self.bases(np.array([pose]))[0] @ self.parts_to_base[pose, part]
+        """``transform_part_to_world`` of one part at one pose, (4, 4), as :meth:`posed` has it."""
+        return np.asarray(self.bases(np.array([pose]))[0] @ self.parts_to_base[pose, part],
+                          dtype=np.float64)
 
     def centres(self) -> FloatArray:
         """Each part's centre in the world, shape (P, S, 3)."""

@@ -115,9 +115,11 @@ def _strictly_within(z: FloatArray, half: float) -> bool:
 
 
 def _level_box_entry(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
-    """:func:`box_entry` for level rays (local ``d[2] == 0``) starting between the box's
-    bottom and top: the z slab is all of the line (its bounds are -inf and inf), so it is
-    left out, with the same result."""
+    """:func:`box_entry` for level rays starting between the box's bottom and top.
+
+    With local ``d[2] == 0`` the z slab holds all of the line (its bounds are -inf and inf),
+    so leaving it out gives the same result.
+    """
     near = np.full(np.shape(d[0]), -np.inf)
     far = np.full(np.shape(d[0]), np.inf)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -131,8 +133,10 @@ def _level_box_entry(o: list[FloatArray], d: list[FloatArray], half: FloatArray)
 
 def _level_cylinder_entry(o: list[FloatArray], d: list[FloatArray],
                           half: FloatArray) -> FloatArray:
-    """:func:`cylinder_entry` for level rays starting between the cylinder's caps: the side
-    alone (a level ray never meets a cap from there)."""
+    """:func:`cylinder_entry` for level rays starting between the cylinder's caps.
+
+    The side alone: a level ray never meets a cap from there.
+    """
     radius = half[0]
     a = d[0] * d[0] + d[1] * d[1]
     b = o[0] * d[0] + o[1] * d[1]

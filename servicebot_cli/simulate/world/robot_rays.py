@@ -79,7 +79,8 @@ def _through_sphere(origins: list[FloatArray], directions: list[FloatArray],
     v = [centres[:, None, j] - origins[j] for j in range(3)]
     along = directions[0] * v[0] + directions[1] * v[1] + directions[2] * v[2]
     across = v[0] * v[0] + v[1] * v[1] + v[2] * v[2] - along * along
-    return np.nonzero((across <= reach * reach) & (along >= -reach))
+    batch, ray = np.nonzero((across <= reach * reach) & (along >= -reach))
+    return batch.astype(np.int64), ray.astype(np.int64)
 
 
 def sphere_entry(o: list[FloatArray], d: list[FloatArray], radius: float) -> FloatArray:
