@@ -15,6 +15,8 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.check.collada_xml import ColladaXmlError, parse_collada
+
 FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.int64]
 
@@ -165,8 +167,8 @@ def _numbers(text: str | None, dtype: type = np.float64) -> np.ndarray:
 def _collada(data: bytes) -> tuple[list[tuple[ET.Element, FloatArray]], str, float]:
     """Each geometry instance of the scene with its transform, the namespace, and the unit."""
     try:
-        root = ET.fromstring(data)
-    except ET.ParseError as exc:
+        root = parse_collada(data)
+    except ColladaXmlError as exc:
         raise MeshFormatError(f"COLLADA file is not well-formed XML: {exc}") from None
     ns = root.tag[: root.tag.index("}") + 1] if root.tag.startswith("{") else ""
     unit = root.find(f"{ns}asset/{ns}unit")
@@ -204,7 +206,7 @@ def read_dae_bounds(data: bytes) -> tuple[int, FloatArray, FloatArray]:
         mesh = geometry.find(f"{ns}mesh")
         if mesh is None:
             continue
-        n = sum(_primitive_triangles(prim, ns) for prim in mesh)
+        n = sum(_primitive_triangles(prim, ns) for prim in _elements(mesh))
         if n:
             count += n
             positions = _positions(mesh, ns)
@@ -224,6 +226,11 @@ def bounds(points: FloatArray) -> tuple[FloatArray, FloatArray]:
     lower = np.array([points[:, axis].min() for axis in range(3)])
     upper = np.array([points[:, axis].max() for axis in range(3)])
     return lower, upper
+
+
+def _elements(parent: ET.Element) -> list[ET.Element]:
+    """The child elements of ``parent``, without comments (which lxml keeps in the tree)."""
+    return [child for child in parent if isinstance(child.tag, str)]
 
 
 def _primitive_triangles(prim: ET.Element, ns: str) -> int:
@@ -255,7 +262,7 @@ def _instances(scene: ET.Element, ns: str, geometries: dict[str | None, ET.Eleme
 
 def _node_transform(node: ET.Element, ns: str) -> FloatArray:
     transform = np.eye(4)
-    for step in node:
+    for step in _elements(node):
         tag = step.tag[len(ns):]
         values = [float(v) for v in (step.text or "").split()]
         local = np.eye(4)
@@ -303,7 +310,7 @@ def _geometry_triangles(geometry: ET.Element, ns: str) -> FloatArray:
         return np.zeros((0, 3, 3))
     points = _positions(mesh, ns)
     tris = []
-    for prim in mesh:
+    for prim in _elements(mesh):
         kind = prim.tag[len(ns):]
         if kind in ("triangles", "polylist", "polygons"):
             tris.append(_primitive(prim, ns, kind, points))
