@@ -14,10 +14,15 @@ Output rows::
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Iterable, Iterator, Mapping, Sequence
+
+import numpy as np
+import numpy.typing as npt
 
 from servicebot_cli.batch.reading import Row
 from servicebot_cli.batch.stream import RowKind
+from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.kinematics.ik import IkSession
 from servicebot_cli.kinematics.inverse import IkTarget
 from servicebot_cli.kinematics.json_types import JsonObject
@@ -26,6 +31,9 @@ from servicebot_cli.kinematics.targets import TARGET_KEYS, BadTarget, row_target
 _TAIL = ("position_error_m", "orientation_error_rad", "iterations", "attempts", "solutions",
          "solve_time_s", "hint")
 TARGET_COLUMNS = TARGET_KEYS | {"line"}
+CHUNK = 1024
+"""Targets read, then solved, at a time."""
+FloatArray = npt.NDArray[np.float64]
 
 
 class IkBatch:
@@ -42,6 +50,7 @@ class IkBatch:
         """
         self.session, self.frame, self.axes = session, session.frame, axes
         self.failed: list[int] = []
+        self._start = session.start
 
     def columns(self) -> list[str]:
         """CSV header of the results."""
@@ -70,10 +79,29 @@ class IkBatch:
 
     def results(self, items: Iterable[tuple[Row, IkTarget]],
                 kind: RowKind) -> Iterator[JsonObject]:
-        """Solve each target from the last solution; one output row each."""
+        """Solve each target from the last solution; one output row each.
+
+        Targets are solved :data:`CHUNK` at a time (see :meth:`IkSession.solve_series`), so
+        memory stays bounded; a bad line ends the run only after the lines before it.
+        """
         start = self.session.start
-        for row, target in items:
-            outcome = self.session.solve(target, start)
+        iterator = iter(items)
+        while True:
+            chunk: list[tuple[Row, IkTarget]] = []
+            try:
+                chunk.extend(itertools.islice(iterator, CHUNK))
+            except ServicebotError:  # a bad line under --on-error stop: the lines before it
+                yield from self._rows(chunk, start, kind)
+                raise
+            if not chunk:
+                return
+            yield from self._rows(chunk, start, kind)
+            start = self._start
+
+    def _rows(self, chunk: list[tuple[Row, IkTarget]], start: FloatArray,
+              kind: RowKind) -> Iterator[JsonObject]:
+        outcomes = self.session.solve_series([target for _, target in chunk], start)
+        for (row, _), outcome in zip(chunk, outcomes, strict=True):
             if outcome.success:
                 start = outcome.result.q
             else:
@@ -81,6 +109,7 @@ class IkBatch:
             values = self.session.values(outcome)
             yield {"line": row.line, **values} if kind == "jsonl" else \
                 self._flat(row.line, values)
+        self._start = start
 
     def _flat(self, line: int, values: JsonObject) -> JsonObject:
         flat: JsonObject = {"line": line, "success": values["success"]}

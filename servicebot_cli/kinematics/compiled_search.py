@@ -21,12 +21,15 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.kinematics.numba_start import without_blas_probe
+
 if TYPE_CHECKING:
     from servicebot_cli.kinematics.chain import Chain
     from servicebot_cli.kinematics.chain_arrays import ChainArrays
     from servicebot_cli.kinematics.inverse import IkTarget
 
 FloatArray = npt.NDArray[np.float64]
+IntArray = npt.NDArray[np.int64]
 
 _FIRST_RUN = 8  # random restarts after the seed in the first run
 _RUN = 16  # restarts in each later run
@@ -64,9 +67,10 @@ class CompiledSearch:
         """
         import pinocchio as pin
 
-        from servicebot_cli.kinematics import lm_kernel
+        from servicebot_cli.kinematics import lm_kernel, lm_series
 
         self._search = lm_kernel.search
+        self._series = lm_series.solve_series
         self._pin = pin
         self._chain = chain
         self._arrays = arrays
@@ -76,23 +80,65 @@ class CompiledSearch:
         self._out = np.empty(arrays.size)
         self._on_ready = on_ready
         self.ready_s: float | None = None
-        """Seconds the loop took to be ready (to compile, the first time on a machine)."""
+        """Seconds the loops took to be ready (to compile, the first time on a machine)."""
+        self._series_ready = self._search_ready = False
 
-    def ready(self) -> float:
+    @property
+    def arrays(self) -> ChainArrays:
+        """The chain, flat."""
+        return self._arrays
+
+    def ready(self, *, series: bool = False) -> float:
         """Compile the loop, or load it from numba's cache, unless done; the seconds it took.
 
-        A call with no attempt, so that solve times after it measure solving.
+        A call with no attempt, so that solve times after it measure solving. With
+        ``series``, the loop over a series of targets (:meth:`series`) is readied instead
+        (it holds its own copy of the attempts' loop).
         """
-        if self.ready_s is None:
+        if (self._series_ready if series else self._search_ready):
+            return self.ready_s or 0.0
+        begin = time.perf_counter()
+        with without_blas_probe():
+            self._ready(series)
+        took_s = time.perf_counter() - begin
+        self.ready_s = (self.ready_s or 0.0) + took_s
+        if self._on_ready is not None:
+            self._on_ready(took_s)
+        return self.ready_s
+
+    def _ready(self, series: bool) -> None:
+        if series:
+            none, empty = np.empty(0, dtype=np.int64), np.empty((0, self._arrays.size))
+            self._run_series(np.empty((0, 3, 4)), none, none, self._out, _NO_SEED, empty,
+                             none, none, none)
+            self._series_ready = True
+        else:
             arrays = self._arrays
-            begin = time.perf_counter()
             self._search(arrays.frames, arrays.axes, arrays.kinds, arrays.limits, self._target,
                          6, self._tolerances, 1, _NO_SEED, np.empty((0, arrays.size)),
                          self._out)
-            self.ready_s = time.perf_counter() - begin
-            if self._on_ready is not None:
-                self._on_ready(self.ready_s)
-        return self.ready_s
+            self._search_ready = True
+
+    def series(self, goals: FloatArray, rows: IntArray, attempt_limits: IntArray,
+               start: FloatArray, unit: FloatArray, out: FloatArray, attempts: IntArray,
+               iterations: IntArray, draws: IntArray) -> tuple[int, int, int]:
+        """Targets solved in one compiled call, each from the last answer.
+
+        See :func:`~servicebot_cli.kinematics.lm_series.solve_series` (same arguments).
+        """
+        self.ready(series=True)
+        return self._run_series(goals, rows, attempt_limits, start, unit, out, attempts,
+                                iterations, draws)
+
+    def _run_series(self, goals: FloatArray, rows: IntArray, attempt_limits: IntArray,
+                    start: FloatArray, unit: FloatArray, out: FloatArray, attempts: IntArray,
+                    iterations: IntArray, draws: IntArray) -> tuple[int, int, int]:
+        arrays = self._arrays
+        done, drawn, why = self._series(
+            arrays.frames, arrays.axes, arrays.kinds, arrays.limits, goals, rows,
+            attempt_limits, self._tolerances, self._max_iterations, start, unit, 0, out,
+            attempts, iterations, draws)
+        return int(done), int(drawn), int(why)
 
     @classmethod
     def build(cls, chain: Chain, tolerance_m: float, tolerance_rad: float,

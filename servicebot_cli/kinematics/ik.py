@@ -10,7 +10,7 @@ passed in: solve times are measured around the pure solver.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -28,6 +28,7 @@ from servicebot_cli.kinematics.drive_geometry import drive_geometry
 from servicebot_cli.kinematics.frames import link_names, pick_frame
 from servicebot_cli.kinematics.inverse import IkResult, IkSettings, IkSolver, IkTarget
 from servicebot_cli.kinematics.json_types import JsonObject
+from servicebot_cli.kinematics.series import series_search, solve_leading
 from servicebot_cli.kinematics.srdf import disabled_pairs
 from servicebot_cli.kinematics.target_frame import TargetFrame
 from servicebot_cli.kinematics.targets import make_target, parse_axes
@@ -216,6 +217,44 @@ class IkSession:
             else timeout_hint(timeout_s, result.attempts) if result.stopped and timeout_s \
             else hint(self.solver, target, start, self._rng)
         return IkOutcome(result, elapsed_s, why)
+
+    def solve_series(self, targets: Sequence[IkTarget], start: FloatArray) -> list[IkOutcome]:
+        """:meth:`solve` each target in turn, each from the last success.
+
+        The first starts from ``start``. The outcomes are the same, with runs of targets
+        solved in one compiled call where the settings allow it (see
+        :mod:`~servicebot_cli.kinematics.series`).
+
+        A target solved in such a run is given its share of the run's time as ``elapsed_s``.
+        """
+        compiled = None if self._timeout_s is not None else series_search(self.solver,
+                                                                            self._rng)
+        if compiled is None:
+            return self._one_by_one(targets, start)
+        outcomes: list[IkOutcome] = []
+        while len(outcomes) < len(targets):
+            begin = self._clock()
+            results = solve_leading(self.solver, compiled, targets[len(outcomes):], start,
+                                    self._rng)
+            share_s = (self._clock() - begin) / max(1, len(results))
+            outcomes.extend(IkOutcome(result, share_s, None) for result in results)
+            if results:
+                start = results[-1].q
+            if len(outcomes) < len(targets):
+                outcome = self.solve(targets[len(outcomes)], start)
+                outcomes.append(outcome)
+                if outcome.success:
+                    start = outcome.result.q
+        return outcomes
+
+    def _one_by_one(self, targets: Sequence[IkTarget], start: FloatArray) -> list[IkOutcome]:
+        outcomes = []
+        for target in targets:
+            outcome = self.solve(target, start)
+            if outcome.success:
+                start = outcome.result.q
+            outcomes.append(outcome)
+        return outcomes
 
     def values(self, outcome: IkOutcome) -> JsonObject:
         """``outcome`` as JSON values in the user's units (see :func:`outcome_values`)."""

@@ -148,6 +148,19 @@ class IkSolver:
         """Whether attempts at a full pose or a position run in the compiled loop."""
         return self._compiled is not None
 
+    @property
+    def compiled_search(self) -> CompiledSearch | None:
+        """The compiled loop's search for this chain; None when attempts run in Pinocchio."""
+        return self._compiled
+
+    def compiled_for(self, target: IkTarget) -> bool:
+        """Whether the compiled loop runs the attempts at ``target``.
+
+        It does for full poses and positions; some orientation axes keep to Pinocchio.
+        """
+        return self._compiled is not None and (target.rotation is None or not target.axes
+                                               or len(target.axes) == 3)
+
     def prepare(self) -> None:
         """Ready the compiled loop now, so that later solve times measure solving alone."""
         if self._compiled is not None:
@@ -165,8 +178,7 @@ class IkSolver:
                 then returns its best try (a deadline: see ``IkProblem.timeout_s``).
         """
         chain, settings = self.chain, self.settings
-        fast = self._compiled is not None and (target.rotation is None or not target.axes
-                                               or len(target.axes) == 3)
+        fast = self.compiled_for(target)
         residual = None if fast else residual_for(chain, target.position_m, target.rotation,
                                                   target.axes)
         start = chain.clamp(chain.to_chain(seed))  # a fresh array: results stay in limits
