@@ -5,8 +5,10 @@ cell, a writer call per result. Here a chunk of :data:`CHUNK_LINES` lines is spl
 the joint columns converted by one ``np.array(cells, dtype=float)`` (which reads each
 cell as ``float()`` does), the limits checked on the whole
 chunk, the poses computed by Pinocchio into one array, and the CSV text of the chunk made by
-one ``repr`` of its rows (JSON Lines: one %-format of a per-line template). Numbers are
-written as before: ``repr`` of each float, so output is byte for byte the per-line path's.
+one %-format of a per-row template (``%r``: the ``repr`` of each float), so output is byte
+for byte the per-line path's. From the second chunk on, that formatting runs in a worker
+process (:mod:`~servicebot_cli.batch.formatting`) while the next chunks are read and
+computed.
 
 A chunk with a line the fast path cannot take (a quoted or empty cell, a wrong field count,
 not a number, a value outside its limits) goes through the per-line path instead, so every
@@ -25,6 +27,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.batch.fk_rows import RESULT_COLUMNS, FkBatch
+from servicebot_cli.batch.formatting import Formatter, format_rows
 from servicebot_cli.batch.policy import OnError, Tally
 from servicebot_cli.batch.reading import Source, csv_rows, meaningful
 from servicebot_cli.batch.stream import BatchSummary, RowSink, Warn, summarise, write_results
@@ -57,22 +60,21 @@ def stream_csv(batch: FkBatch, source: Source, handle: IO[str], sink: RowSink, *
     tally = Tally()
     number = source.header_line
     with sink.open(batch.columns()) as write:
-        while raw := list(itertools.islice(handle, CHUNK_LINES)):
-            lines = _numbered(raw, number)
-            number += len(raw)
-            values = parser.values([text for _, text in lines]) if lines else None
-            if values is None:  # line by line: the messages name the line
-                write_results(batch, csv_rows(lines, source.columns, source.delimiter),
-                              source.display, write, sink.kind, on_error=on_error, warn=warn,
-                              tally=tally)
-                continue
-            tally.rows += len(lines)
-            numbers = [n for n, _ in lines]
-            poses = batch.pose_table(values)
-            if sink.kind == "csv":
-                write.text(csv_text(numbers, poses, write.delimiter))
-            else:
-                write.text(jsonl_text(numbers, poses, template))
+        row = csv_template(len(batch.columns()) - 1, write.delimiter) if sink.kind == "csv" \
+            else template
+        with Formatter(row, write.text) as formatter:
+            while raw := list(itertools.islice(handle, CHUNK_LINES)):
+                lines = _numbered(raw, number)
+                number += len(raw)
+                values = parser.values([text for _, text in lines]) if lines else None
+                if values is None:  # line by line: the messages name the line
+                    formatter.drain()
+                    write_results(batch, csv_rows(lines, source.columns, source.delimiter),
+                                  source.display, write, sink.kind, on_error=on_error,
+                                  warn=warn, tally=tally)
+                    continue
+                tally.rows += len(lines)
+                formatter.submit([n for n, _ in lines], batch.pose_table(values))
     return summarise(source.display, tally, warn)
 
 
@@ -133,10 +135,15 @@ def jsonl_template(frames: Sequence[str], unit: str) -> str:
 
 def jsonl_text(lines: Sequence[int], poses: FloatArray, template: str) -> str:
     """JSON Lines results for a chunk, by one %-format of ``template`` repeated per line."""
-    table = poses.reshape(len(lines), -1).tolist()
-    flat = list(itertools.chain.from_iterable([line, *row] for line, row in zip(
-        lines, table, strict=True)))
-    return (template * len(lines)) % tuple(flat)
+    return format_rows(template, lines, poses)
+
+
+def csv_template(width: int, delimiter: str) -> str:
+    """A %-format of one CSV result row: the line (``%d``), then ``width`` numbers (``%r``).
+
+    ``%r`` of a float is its ``repr``, as csv.writer writes it.
+    """
+    return "%d" + f"{delimiter}%r" * width + "\n"
 
 
 def csv_text(lines: Sequence[int], poses: FloatArray, delimiter: str) -> str:
@@ -144,8 +151,5 @@ def csv_text(lines: Sequence[int], poses: FloatArray, delimiter: str) -> str:
 
     One %-format of a row template repeated per line (``%r`` of a float is its ``repr``).
     """
-    table = poses.reshape(len(lines), -1).tolist()
-    row = "%d" + f"{delimiter}%r" * (len(table[0]) if table else 0) + "\n"
-    flat = list(itertools.chain.from_iterable([line, *values] for line, values in zip(
-        lines, table, strict=True)))
-    return (row * len(lines)) % tuple(flat)
+    width = poses.reshape(len(lines), -1).shape[1] if len(lines) else 0
+    return format_rows(csv_template(width, delimiter), lines, poses)
