@@ -12,6 +12,7 @@ import re
 from collections.abc import Iterator
 from pathlib import Path
 
+from servicebot_cli.description.install_layout import installed_source
 from servicebot_cli.description.packages import holding_package
 
 SUFFIXES = (".urdf", ".urdf.xml", ".xacro")
@@ -71,16 +72,48 @@ def walk(directory: Path) -> Iterator[Path]:
 def included_by(paths: list[Path]) -> set[Path]:
     """Which of ``paths`` another of them includes with ``<xacro:include filename>``.
 
-    ``$(find PKG)/REL`` matches a file of package PKG whose path ends with REL (in the
-    source tree or as installed: ``description/urdf/x.xacro`` is installed as ``urdf/x.xacro``);
-    a relative filename is relative to the including file. Computed names (``${...}``,
-    ``$(arg ...)``) match nothing.
+    A filename is read as xacro reads it, through :mod:`install_layout`: relative to the
+    including file, or ``$(find PKG)/REL`` under the directory of package PKG (a package
+    holding one of ``paths``), or the source file its install rules put there
+    (``$(find PKG)/urdf/x.xacro`` from ``description/urdf/x.xacro``). Computed names
+    (``${...}``, ``$(arg ...)``) name nothing.
     """
+    by_location = {_location(path): path for path in paths}
+    packages = _packages(paths)
     included: set[Path] = set()
     for path in paths:
         for target in _include_targets(path):
-            included.update(p for p in paths if p != path and _names(target, path, p))
+            for named in _named(target, path, packages):
+                found = by_location.get(_location(named))
+                if found is not None and found != path:
+                    included.add(found)
     return included
+
+
+def _location(path: Path | str) -> str:
+    return os.path.normpath(os.path.abspath(path))
+
+
+def _packages(paths: list[Path]) -> dict[str, set[Path]]:
+    """The directories of the packages holding ``paths``, by package name."""
+    packages: dict[str, set[Path]] = {}
+    for directory in {path.parent.absolute() for path in paths}:
+        holder = holding_package(directory)
+        if holder is not None:
+            packages.setdefault(holder[0], set()).add(holder[1])
+    return packages
+
+
+def _named(target: str, includer: Path, packages: dict[str, set[Path]]) -> list[str]:
+    """The files the include ``target`` written in ``includer`` can name."""
+    match = _FIND.match(target)
+    if match is None:
+        return [] if "$(" in target else [str(includer.parent / target)]
+    package, relative = match.groups()
+    if not relative:
+        return []
+    return [installed_source(str(directory / relative))
+            for directory in sorted(packages.get(package, ()))]
 
 
 def _include_targets(path: Path) -> list[str]:
@@ -95,17 +128,3 @@ def _include_targets(path: Path) -> list[str]:
     targets = ((double or single).decode("utf-8", "replace").strip()
                for double, single in _INCLUDE.findall(text))
     return [t for t in targets if t and "${" not in t and "$(arg" not in t]
-
-
-def _names(target: str, includer: Path, candidate: Path) -> bool:
-    """Whether the include ``target`` written in ``includer`` can be ``candidate``."""
-    match = _FIND.match(target)
-    if match is None:
-        if "$(" in target:
-            return False
-        return os.path.normpath(includer.parent / target) == os.path.normpath(candidate)
-    package, relative = match.groups()
-    if not relative or not candidate.as_posix().endswith("/" + relative):
-        return False
-    holder = holding_package(candidate.parent.absolute())
-    return holder is not None and holder[0] == package
