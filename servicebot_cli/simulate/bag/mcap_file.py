@@ -36,7 +36,7 @@ _SUMMARY_OFFSET, _DATA_END = 0x0E, 0x0F
 _MESSAGE_HEAD = np.dtype([("opcode", "u1"), ("length", "<u8"), ("channel", "<u2"),
                           ("sequence", "<u4"), ("log_time", "<u8"), ("publish_time", "<u8")])
 _INDEX_ENTRY = np.dtype([("log_time", "<u8"), ("offset", "<u8")])
-PENDING_CHUNKS = 2
+PENDING_CHUNKS = 1
 """Full chunks at most waiting for the writing thread (each about ``chunk_size`` bytes)."""
 
 
