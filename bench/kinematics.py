@@ -3,6 +3,7 @@
     pip install -e '.[bench]'
     python bench/kinematics.py                 # 1000 targets per robot, 100 for ikpy
     python bench/kinematics.py --targets 300 --ikpy-targets 30 --fk-configs 5000
+    python bench/kinematics.py --batch-only    # ik --targets and fk --configs end to end
 
 For UR5, Panda and Kinova's 6-DoF Jaco 2 (j2s6s200), all from the example-robot-data
 package, and the service arm: the same random reachable targets (FK of random in-limit
@@ -455,7 +456,12 @@ def main() -> None:
                         help="ik --targets end to end, against rtb's loop (0: skip)")
     parser.add_argument("--batch-configs", type=int, default=200000,
                         help="fk --configs end to end, against Pinocchio's loop (0: skip)")
+    parser.add_argument("--batch-only", action="store_true",
+                        help="only the end-to-end batch tables (ik --targets, fk --configs)")
     args = parser.parse_args()
+    if args.batch_only:
+        batch_tables(args)
+        return
     rows = []
     peers = {name: installed(name) for name in ("roboticstoolbox", "pytracik", "ikpy")}
     for case in cases():
@@ -491,6 +497,10 @@ def main() -> None:
     print("|---|---:|")
     for label, rate in fk_throughput(args.fk_configs):
         print(f"| {label} | {rate:,.0f} |")
+    batch_tables(args)
+
+
+def batch_tables(args: argparse.Namespace) -> None:
     if args.batch_targets:
         print_batch_table(f"Batch IK, UR5, {args.batch_targets} full-pose targets",
                           batch_ik(args.batch_targets))
