@@ -9,7 +9,6 @@ reports come back to the parent, which renders them as a serial run does.
 
 from __future__ import annotations
 
-import multiprocessing
 import os
 import signal
 from collections.abc import Iterator, Sequence
@@ -18,7 +17,6 @@ from pathlib import Path
 
 from servicebot_cli.check.env import CheckEnv
 from servicebot_cli.check.findings import Issue
-from servicebot_cli.check.mesh_store import MeshStore
 from servicebot_cli.check.meshes import MeshCache
 from servicebot_cli.check.runner import FileReport, check_source, place_issues
 from servicebot_cli.check.settings import Settings
@@ -77,7 +75,11 @@ def env_for(packages: tuple[tuple[str, str], ...], settings: Settings,
             mesh_cache: Path | None = None) -> CheckEnv:
     """The shared part of a run: package search and mesh cache (kept in ``mesh_cache``)."""
     resolver = PackageResolver.from_environment({k: Path(v) for k, v in packages})
-    store = None if mesh_cache is None else MeshStore(mesh_cache)
+    store = None
+    if mesh_cache is not None:
+        from servicebot_cli.check.mesh_store import MeshStore  # hashlib, json: only then
+
+        store = MeshStore(mesh_cache)
     return CheckEnv(resolver=resolver, meshes=MeshCache(store),
                     inertia_factor=settings.inertia_factor)
 
@@ -105,6 +107,8 @@ def check_in_workers(sources: Sequence[tuple[RobotSource, bool]], settings: Sett
                      packages: tuple[tuple[str, str], ...], jobs: int,
                      mesh_cache: Path | None = None) -> Iterator[Outcome]:
     """Each source's outcome, in order, checked by ``jobs`` worker processes."""
+    import multiprocessing  # not for a single file
+
     methods = multiprocessing.get_all_start_methods()
     context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
     pool = context.Pool(jobs, initializer=_start, initargs=(settings, packages, mesh_cache))

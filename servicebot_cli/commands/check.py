@@ -113,10 +113,13 @@ def urdf(robot_args: RobotArgs, jobs: int | None, mesh_cache: bool, show_package
     if robot_args.files and robot_args.bundled:
         raise click.UsageError(f"give FILEs or --robot {robot_args.bundled}, not both")
     default = None if robot_args.files else robot_args.source()
-    from servicebot_cli.check.mesh_store import default_directory
+    cache = None
+    if mesh_cache:
+        from servicebot_cli.check.mesh_store import default_directory
 
+        cache = default_directory()
     targets = UrdfTargets(robot_args.files, robot_args.xacro_args, robot_args.packages, default,
-                          jobs, default_directory() if mesh_cache else None)
+                          jobs, cache)
     _run(CheckRequest(targets, _settings(report)), report, show_packages)
 
 
