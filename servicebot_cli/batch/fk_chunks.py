@@ -18,6 +18,7 @@ the chunk size.
 
 from __future__ import annotations
 
+import contextlib
 import itertools
 import json
 from collections.abc import Sequence
@@ -59,22 +60,25 @@ def stream_csv(batch: FkBatch, source: Source, handle: IO[str], sink: RowSink, *
     template = jsonl_template(batch.frames, batch.unit)
     tally = Tally()
     number = source.header_line
-    with sink.open(batch.columns()) as write:
-        row = csv_template(len(batch.columns()) - 1, write.delimiter) if sink.kind == "csv" \
-            else template
-        with Formatter(row, write.text) as formatter:
-            while raw := list(itertools.islice(handle, CHUNK_LINES)):
-                lines = _numbered(raw, number)
-                number += len(raw)
-                values = parser.values([text for _, text in lines]) if lines else None
-                if values is None:  # line by line: the messages name the line
+    with sink.open(batch.columns()) as write, contextlib.ExitStack() as stack:
+        formatter: Formatter | None = None  # made at the first chunk of numbers
+        while raw := list(itertools.islice(handle, CHUNK_LINES)):
+            lines = _numbered(raw, number)
+            number += len(raw)
+            values = parser.values([text for _, text in lines]) if lines else None
+            if values is None:  # line by line: the messages name the line
+                if formatter is not None:
                     formatter.drain()
-                    write_results(batch, csv_rows(lines, source.columns, source.delimiter),
-                                  source.display, write, sink.kind, on_error=on_error,
-                                  warn=warn, tally=tally)
-                    continue
-                tally.rows += len(lines)
-                formatter.submit([n for n, _ in lines], batch.pose_table(values))
+                write_results(batch, csv_rows(lines, source.columns, source.delimiter),
+                              source.display, write, sink.kind, on_error=on_error, warn=warn,
+                              tally=tally)
+                continue
+            tally.rows += len(lines)
+            if formatter is None:
+                row = template if sink.kind == "jsonl" else \
+                    csv_template(len(batch.columns()) - 1, write.delimiter)
+                formatter = stack.enter_context(Formatter(row, write.text))
+            formatter.submit([n for n, _ in lines], batch.pose_table(values))
     return summarise(source.display, tally, warn)
 
 
