@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from servicebot_cli.simulate.scenario.colour import Color
 from servicebot_cli.simulate.scenario.located import Path
 from servicebot_cli.simulate.scenario.schema import Reader
 
@@ -31,6 +32,9 @@ class CameraImages:
         rate_hz: Frames per simulated second; None: the URDF camera's update rate.
         depth: Render a depth image (``32FC1``) with each colour image.
         from_cli: The fields the command line set (its errors name the option, not a line).
+        floor_color: The world's ``floor.color`` (None: the camera's grey checker).
+        mesh_colors: Each mesh obstacle's ``color`` (None: the camera's default), in order.
+            Solids carry their own (:class:`~servicebot_cli.simulate.world.solids.Solid`).
     """
 
     enabled: bool = False
@@ -38,6 +42,8 @@ class CameraImages:
     rate_hz: float | None = None
     depth: bool = False
     from_cli: frozenset[str] = frozenset()
+    floor_color: Color | None = None
+    mesh_colors: tuple[Color | None, ...] = ()
 
 
 def read_camera(r: Reader, path: Path) -> CameraImages:

@@ -14,6 +14,7 @@ from pathlib import Path as FsPath
 
 from servicebot_cli.common.inputs import read_input_text
 from servicebot_cli.simulate.scenario.camera import CameraImages, read_camera
+from servicebot_cli.simulate.scenario.colour import Color, read_color
 from servicebot_cli.simulate.scenario.located import Located, Path, ScenarioError, parse
 from servicebot_cli.simulate.scenario.schema import Reader
 
@@ -114,6 +115,7 @@ class Wall:
     to_m: tuple[float, float]
     thickness_m: float
     height_m: float
+    color: Color | None = None
 
 
 @dataclass(frozen=True)
@@ -123,6 +125,7 @@ class Box:
     center_m: tuple[float, float, float]
     size_m: tuple[float, float, float]
     yaw_rad: float
+    color: Color | None = None
 
 
 @dataclass(frozen=True)
@@ -132,6 +135,7 @@ class Cylinder:
     center_m: tuple[float, float]
     radius_m: float
     height_m: float
+    color: Color | None = None
 
 
 @dataclass(frozen=True)
@@ -142,16 +146,18 @@ class MeshObstacle:
     xyz_m: tuple[float, float, float]
     rpy_rad: tuple[float, float, float]
     scale: float
+    color: Color | None = None
 
 
 @dataclass(frozen=True)
 class World:
-    """Obstacles; the floor is the plane z = 0."""
+    """Obstacles; the floor is the plane z = 0 (``floor_color``: None, the camera's checker)."""
 
     walls: tuple[Wall, ...] = ()
     boxes: tuple[Box, ...] = ()
     cylinders: tuple[Cylinder, ...] = ()
     meshes: tuple[MeshObstacle, ...] = ()
+    floor_color: Color | None = None
 
 
 @dataclass(frozen=True)
@@ -218,6 +224,7 @@ def read_scenario(located: Located, name: str = "scenario", *,
     r = Reader(located)
     r.mapping((), _TOP, required=("duration_s",))
     duration = r.number(("duration_s",), positive=True, maximum=MAX_DURATION_S)
+    world = _world(r, ("world",))
     scenario = Scenario(
         duration_s=duration,
         initial_pose=_pose(r, ("initial_pose",)),
@@ -226,9 +233,10 @@ def read_scenario(located: Located, name: str = "scenario", *,
         slip=_slip(r, ("slip",)),
         cmd_vel=_cmd_vel(r, ("cmd_vel",)),
         arm=_arm(r, ("arm",)),
-        world=_world(r, ("world",)),
+        world=world,
         rates=_rates(r, ("rates",)),
-        camera=read_camera(r, ("camera",)),
+        camera=dataclasses.replace(read_camera(r, ("camera",)), floor_color=world.floor_color,
+                                   mesh_colors=tuple(m.color for m in world.meshes)),
         name=name,
         source=located,
     )
@@ -359,38 +367,47 @@ def _arm(r: Reader, path: Path) -> ArmTrajectory:
 def _world(r: Reader, path: Path) -> World:
     if not r.has(path):
         return World()
-    r.mapping(path, ("walls", "boxes", "cylinders", "meshes"))
+    r.mapping(path, ("walls", "boxes", "cylinders", "meshes", "floor"))
 
     def wall(p: Path) -> Wall:
-        r.mapping(p, ("from_m", "to_m", "thickness_m", "height_m"), required=("from_m", "to_m"))
+        r.mapping(p, ("from_m", "to_m", "thickness_m", "height_m", "color"),
+                  required=("from_m", "to_m"))
         start, end = r.pair((*p, "from_m")), r.pair((*p, "to_m"))
         if start == end:
             raise r.error((*p, "to_m"), "a wall needs two different ends")
         return Wall(start, end, r.number((*p, "thickness_m"), 0.1, positive=True),
-                    r.number((*p, "height_m"), 1.0, positive=True))
+                    r.number((*p, "height_m"), 1.0, positive=True), read_color(r, (*p, "color")))
 
     def box(p: Path) -> Box:
-        r.mapping(p, ("center_m", "size_m", "yaw_rad"), required=("center_m", "size_m"))
+        r.mapping(p, ("center_m", "size_m", "yaw_rad", "color"), required=("center_m", "size_m"))
         size = r.triple((*p, "size_m"))
         if min(size) <= 0:
             raise r.error((*p, "size_m"), "sizes must be positive")
         centre = r.vector((*p, "center_m"), (2, 3))
         z = centre[2] if len(centre) == 3 else size[2] / 2.0
-        return Box((centre[0], centre[1], z), size, r.number((*p, "yaw_rad"), 0.0))
+        return Box((centre[0], centre[1], z), size, r.number((*p, "yaw_rad"), 0.0),
+                   read_color(r, (*p, "color")))
 
     def cylinder(p: Path) -> Cylinder:
-        r.mapping(p, ("center_m", "radius_m", "height_m"), required=("center_m", "radius_m"))
+        r.mapping(p, ("center_m", "radius_m", "height_m", "color"),
+                  required=("center_m", "radius_m"))
         return Cylinder(r.pair((*p, "center_m")), r.number((*p, "radius_m"), positive=True),
-                        r.number((*p, "height_m"), 1.0, positive=True))
+                        r.number((*p, "height_m"), 1.0, positive=True),
+                        read_color(r, (*p, "color")))
 
     def mesh(p: Path) -> MeshObstacle:
-        r.mapping(p, ("file", "xyz_m", "rpy_rad", "scale"), required=("file",))
+        r.mapping(p, ("file", "xyz_m", "rpy_rad", "scale", "color"), required=("file",))
         return MeshObstacle(r.string((*p, "file")), r.triple((*p, "xyz_m"), (0, 0, 0)),
                             r.triple((*p, "rpy_rad"), (0, 0, 0)),
-                            r.number((*p, "scale"), 1.0, positive=True))
+                            r.number((*p, "scale"), 1.0, positive=True),
+                            read_color(r, (*p, "color")))
 
+    floor = (*path, "floor")
+    if r.has(floor):
+        r.mapping(floor, ("color",))
     return World(r.items((*path, "walls"), wall), r.items((*path, "boxes"), box),
-                 r.items((*path, "cylinders"), cylinder), r.items((*path, "meshes"), mesh))
+                 r.items((*path, "cylinders"), cylinder), r.items((*path, "meshes"), mesh),
+                 read_color(r, (*floor, "color")) if r.has(floor) else None)
 
 
 def _rates(r: Reader, path: Path) -> Rates:

@@ -1,8 +1,8 @@
 """The world's solids: walls, boxes and cylinders of a scenario, placed in the world.
 
 Walls, boxes and cylinders become :class:`Solid` objects: boxes (a wall is a thin box) and
-vertical cylinders with a pose. Rays meet them in :mod:`.raycast`; the robot's links touch
-them in :mod:`.contacts`.
+vertical cylinders with a pose, and the colour the scenario gives them. Rays meet them in
+:mod:`.raycast`; the robot's links touch them in :mod:`.contacts`.
 """
 
 from __future__ import annotations
@@ -29,6 +29,7 @@ class Solid:
         center_m: Centre, shape (3,).
         rotation: Local axes in the parent frame (columns), shape (3, 3).
         half_m: Box half sizes; for a cylinder ``(radius, radius, half length)``.
+        color: The scenario's ``color``, rgb in [0, 1]; None: the camera's default.
     """
 
     name: str
@@ -36,6 +37,7 @@ class Solid:
     center_m: FloatArray
     rotation: FloatArray
     half_m: FloatArray
+    color: tuple[float, float, float] | None = None
 
     @property
     def z_range_m(self) -> tuple[float, float]:
@@ -67,12 +69,14 @@ def world_solids(world: World) -> list[Solid]:
             yaw_rotation(math.atan2(y1 - y0, x1 - x0)),
             # Walls reach half a thickness past their ends, so corners close.
             np.array([length / 2 + wall.thickness_m / 2, wall.thickness_m / 2, wall.height_m / 2]),
-        ))
+            wall.color))
     for i, box in enumerate(world.boxes, 1):
         solids.append(Solid(f"box {i}", "box", np.array(box.center_m, float),
-                            yaw_rotation(box.yaw_rad), np.array(box.size_m, float) / 2))
+                            yaw_rotation(box.yaw_rad), np.array(box.size_m, float) / 2,
+                            box.color))
     for i, cyl in enumerate(world.cylinders, 1):
         solids.append(Solid(f"cylinder {i}", "cylinder",
                             np.array([cyl.center_m[0], cyl.center_m[1], cyl.height_m / 2]),
-                            np.eye(3), np.array([cyl.radius_m, cyl.radius_m, cyl.height_m / 2])))
+                            np.eye(3), np.array([cyl.radius_m, cyl.radius_m, cyl.height_m / 2]),
+                            cyl.color))
     return solids
