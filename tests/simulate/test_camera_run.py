@@ -135,17 +135,22 @@ def test_out_holds_the_last_frame_as_a_png(recorded):
     assert np.array_equal(pixels, np.frombuffer(bytes(last.data), np.uint8).reshape(54, 96, 3))
 
 
-def test_the_camera_sees_the_robots_own_arm():
-    """With the arm reaching down in front of the camera, robot-coloured pixels fill the view."""
-    def dark_pixels(positions):
+def test_the_camera_sees_the_robots_own_arm_in_its_urdf_colour():
+    """With the arm reaching down in front of the camera, its links' orange fills the view.
+
+    The arm's links have ``<material name="orange"/>``, the top-level material of that name
+    is rgba 1.0 0.5 0.1: red twice green whatever the shading; nothing else in this scene is.
+    """
+    def orange_pixels(positions):
         result = run({"duration_s": 1.0, "camera": {"scale": 0.05, "rate_hz": 1},
                       "arm": {"joint_names": ARM, "points": [
                           {"time_from_start_s": 0.7, "positions": positions}]}})
         assert result.arm_positions_rad[-1].tolist() == positions
-        return int((result.frames[-1].rgb.astype(int).sum(axis=-1) < 300).sum())
+        rgb = result.frames[-1].rgb.astype(int)
+        return int(((rgb[..., 0] > 1.7 * rgb[..., 1]) & (rgb[..., 1] > 2.5 * rgb[..., 2])).sum())
 
-    assert dark_pixels([0.0, 0.0, 0.0, 0.0]) == 0
-    assert dark_pixels([0.0, 0.2, 0.6, 0.5]) > 1000
+    assert orange_pixels([0.0, 0.0, 0.0, 0.0]) == 0
+    assert orange_pixels([0.0, 0.2, 0.6, 0.5]) > 1000
 
 
 def test_a_run_kept_whole_refuses_frames_that_would_not_fit_in_memory():

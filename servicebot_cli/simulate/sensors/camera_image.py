@@ -3,12 +3,16 @@
 Each pixel's ray leaves the camera through the pinhole that ``camera_info`` describes, scaled
 by ``scale`` (``--camera-scale``: 1/8 of 1920x1080 is 240x135), and meets the floor, the
 world's solids and meshes, and the robot's own collision parts, in closed form as the LIDAR's
-rays do. The nearest surface gives the colour, shaded by the angle between its normal and a
-light from above, and the depth: the distance along the optical axis, as a ROS depth image
-(32FC1) stores it, +inf where nothing is within the far clip plane. Surfaces nearer than the
-near clip plane are not drawn (what lies behind them is). Gazebo's camera noise is gaussian
-on the pixel values scaled to [0, 1], then clipped, which is what the noise here does.
+rays do. The nearest surface gives the colour (the scenario's, the URDF material's, else
+:class:`Palette`'s), shaded by the angle between its normal and a light from above, and the
+depth: the distance along the optical axis, as a ROS depth image (32FC1) stores it, +inf
+where nothing is within the far clip plane. Surfaces nearer than the near clip plane are not
+drawn (what lies behind them is). Gazebo's camera noise is gaussian on the pixel values
+scaled to [0, 1], then clipped, which is what the noise here does
+(:mod:`~servicebot_cli.simulate.sensors.camera_noise`).
 
+Frames are drawn by numba's compiled loop (:mod:`.camera_kernel`); without numba, by the
+numpy path (:mod:`.camera_numpy`), which gives the same bytes for scenes without meshes.
 The camera link's frame looks along +x (Gazebo's convention); the image is in the optical
 frame (z forward, x right, y down), as ``camera_info`` and ``sensor_msgs/Image`` expect.
 Pure: every input is an argument.
@@ -16,6 +20,8 @@ Pure: every input is an argument.
 
 from __future__ import annotations
 
+import dataclasses
+import functools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -23,25 +29,30 @@ from dataclasses import dataclass, field
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.simulate.sensors import camera_rays
+from servicebot_cli.simulate.sensors import camera_mesh, camera_noise
 from servicebot_cli.simulate.sensors.camera_info import Intrinsics
-from servicebot_cli.simulate.shape import Part
+from servicebot_cli.simulate.shape import KINDS, Part
 from servicebot_cli.simulate.world import raycast
 from servicebot_cli.simulate.world.solids import Solid
 
 FloatArray = npt.NDArray[np.float64]
-IntArray = npt.NDArray[np.int64]
 Rgb = tuple[int, int, int]
 
-_LIGHT = np.array([0.4, 0.3, 0.866]) / np.linalg.norm([0.4, 0.3, 0.866])
-_AMBIENT = 0.45  # share of a colour lit from any side; the rest follows the light
+LIGHT = np.array([0.4, 0.3, 0.866]) / np.linalg.norm([0.4, 0.3, 0.866])
+AMBIENT = 0.45  # share of a colour lit from any side; the rest follows the light
 COMPILED = True
-"""Render in numba's compiled loop where it can (False: always the numpy path)."""
+"""Render in numba's compiled loop (False: always the numpy path)."""
+
+
+def rgb_of(colour: Sequence[float]) -> Rgb:
+    """Rgb 0-255 of a colour given as three numbers in [0, 1]."""
+    r, g, b = (int(round(255.0 * c)) for c in colour)
+    return r, g, b
 
 
 @dataclass(frozen=True)
 class Palette:
-    """Colours of what a camera sees, rgb 0-255.
+    """Colours of what a camera sees, rgb 0-255, where the scenario and the URDF give none.
 
     Attributes:
         sky: Where a ray meets nothing.
@@ -59,7 +70,9 @@ class Palette:
     robot: Rgb = (60, 60, 65)
 
     def of_solid(self, solid: Solid) -> Rgb:
-        """The colour of ``solid``, by the start of its name."""
+        """The colour of ``solid``: its own, else by the start of its name."""
+        if solid.color is not None:
+            return rgb_of(solid.color)
         return next((rgb for prefix, rgb in self.solids if solid.name.startswith(prefix)),
                     self.solids[0][1])
 
@@ -86,6 +99,17 @@ class CameraView:
         """Image rows and columns."""
         return self.intrinsics.height_px, self.intrinsics.width_px
 
+    @functools.cached_property
+    def pinhole(self) -> FloatArray:
+        """fx, cx, fy, cy of ``intrinsics``, (4,)."""
+        k = self.intrinsics.k
+        return np.array([k[0], k[2], k[4], k[5]], dtype=np.float64)
+
+    @functools.cached_property
+    def half_angle_rad(self) -> float:
+        """Half angle of the cone about the optical axis that holds every ray [rad]."""
+        return math.acos(min(1.0, float(np.min(self.forward))))
+
 
 @dataclass(frozen=True)
 class Frame:
@@ -94,6 +118,7 @@ class Frame:
     Attributes:
         rgb: rgb8 pixels, (h, w, 3) uint8, row 0 at the top.
         depth_m: Depth along the optical axis [m], (h, w) float32; +inf: nothing within reach.
+            Empty, (0, 0), when no depth image was asked for.
     """
 
     rgb: npt.NDArray[np.uint8]
@@ -139,11 +164,13 @@ class Scene:
     """What a camera can see, placed in the world.
 
     Attributes:
-        solids: Walls, boxes and cylinders.
+        solids: Walls, boxes and cylinders (each with its colour, or the palette's).
         meshes: Mesh obstacles (trimesh meshes), in the world frame.
         parts: The robot's collision parts.
         part_transforms: ``transform_part_to_world`` of each part for this frame, (S, 4, 4).
-        palette: Their colours.
+        palette: Colours where none is given.
+        part_rgb: Colour of each part (its link's URDF material); empty: the palette's.
+        mesh_rgb: Colour of each mesh; empty: the palette's.
     """
 
     solids: Sequence[Solid] = ()
@@ -151,184 +178,118 @@ class Scene:
     parts: Sequence[Part] = ()
     part_transforms: FloatArray | None = None
     palette: Palette = Palette()
+    part_rgb: Sequence[Rgb] = ()
+    mesh_rgb: Sequence[Rgb] = ()
+
+    def posed(self, part_transforms: FloatArray) -> Scene:
+        """This scene with the parts at ``part_transforms``; what does not move is kept."""
+        moved = dataclasses.replace(self, part_transforms=part_transforms)
+        for name in ("packed_world", "triangles"):  # built once, here, for every pose
+            moved.__dict__[name] = getattr(self, name)
+        return moved
+
+    def part_colour(self, index: int) -> Rgb:
+        """The colour of part ``index``."""
+        return self.part_rgb[index] if self.part_rgb else self.palette.robot
+
+    def mesh_colour(self, index: int) -> Rgb:
+        """The colour of mesh ``index``."""
+        return self.mesh_rgb[index] if self.mesh_rgb else self.palette.mesh
+
+    @functools.cached_property
+    def packed_world(self) -> tuple[FloatArray, ...]:
+        """The solids as the compiled loop reads them, then each part's kind, size, colour."""
+        kinds = [KINDS.index(s.kind) for s in self.solids]
+        part_kinds = [KINDS.index(p.kind) for p in self.parts]
+        return (np.array(kinds, np.int64), _rows([s.half_m for s in self.solids], (3,)),
+                _rows([s.rotation for s in self.solids], (3, 3)),
+                _rows([s.center_m for s in self.solids], (3,)),
+                _rows([self.palette.of_solid(s) for s in self.solids], (3,)),
+                np.array(part_kinds, np.int64), _rows([p.half_m for p in self.parts], (3,)),
+                _rows([self.part_colour(i) for i in range(len(self.parts))], (3,)))
+
+    @functools.cached_property
+    def triangles(self) -> camera_mesh.Triangles:
+        """The meshes' triangles and their hierarchy, for the compiled loop."""
+        return camera_mesh.triangles(self.meshes, [self.mesh_colour(i)
+                                                   for i in range(len(self.meshes))])
+
+
+def _rows(values: Sequence[object], shape: tuple[int, ...]) -> FloatArray:
+    return np.array(values, dtype=np.float64).reshape(len(values), *shape)
 
 
 def render(view: CameraView, transform_camera_to_world: FloatArray, scene: Scene,
-           noise_stddev: float = 0.0, rng: np.random.Generator | None = None) -> Frame:
-    """The frame the camera at ``transform_camera_to_world`` sees of ``scene``."""
-    rotation, origin = transform_camera_to_world[:3, :3], transform_camera_to_world[:3, 3]
-    directions = view.directions @ rotation.T
-    origins = np.broadcast_to(origin, directions.shape)
-    half_angle = math.acos(min(1.0, float(np.min(view.forward))))
-    surfaces = [s for s in _surfaces(scene)
-                if _in_view(s, scene, origin, rotation[:, 0], half_angle)]
-    compiled = _compiled(view, origin, directions, scene, surfaces)
-    colour, distance = compiled if compiled is not None else _numpy_path(
-        view, origins, directions, scene, surfaces)
-    seen = np.isfinite(distance)
+           noise_stddev: float = 0.0, rng: np.random.Generator | None = None, *,
+           depth: bool = True) -> Frame:
+    """The frame the camera at ``transform_camera_to_world`` sees of ``scene``.
+
+    With noise, the frame takes one key from ``rng`` (seed 0 when None); ``depth`` False
+    leaves the frame's depth image empty.
+    """
+    poses = None if scene.part_transforms is None else scene.part_transforms[None]
+    return render_frames(view, transform_camera_to_world[None], scene, poses, noise_stddev,
+                         rng if rng is not None else np.random.default_rng(0), depth=depth)[0]
+
+
+def render_frames(view: CameraView, transforms_camera_to_world: FloatArray, scene: Scene,
+                  part_transforms: FloatArray | None, noise_stddev: float,
+                  rng: np.random.Generator, *, depth: bool = True) -> tuple[Frame, ...]:
+    """Frames from the camera at each of ``transforms_camera_to_world`` (F, 4, 4).
+
+    ``part_transforms`` (F, S, 4, 4) places ``scene``'s parts in each frame. With noise,
+    each frame takes one key from ``rng``, in order; the frames are the bytes that
+    :func:`render` gives for each alone.
+    """
+    count = len(transforms_camera_to_world)
+    keys = np.array([camera_noise.frame_key(rng) if noise_stddev > 0.0 else 0
+                     for _ in range(count)], dtype=np.uint64)
     rows, columns = view.shape
-    if noise_stddev > 0.0:
-        generator = rng if rng is not None else np.random.default_rng(0)
-        colour = colour + generator.normal(0.0, noise_stddev * 255.0, colour.shape)
-    rgb = np.clip(np.rint(colour), 0, 255).astype(np.uint8).reshape(rows, columns, 3)
-    depth_m = np.where(seen, distance * view.forward, np.inf).astype(np.float32)
-    return Frame(rgb, depth_m.reshape(rows, columns))
+    rgb = np.empty((count, rows * columns, 3), dtype=np.uint8)
+    depth_m = np.empty((count, rows * columns if depth else 0), dtype=np.float32)
+    rotations = np.ascontiguousarray(transforms_camera_to_world[:, :3, :3], dtype=np.float64)
+    origins = np.ascontiguousarray(transforms_camera_to_world[:, :3, 3], dtype=np.float64)
+    poses = np.zeros((count, 0, 4, 4)) if part_transforms is None else part_transforms
+    if not (COMPILED and _compiled(view, rotations, origins, scene, poses, keys,
+                                   noise_stddev * 255.0, rgb, depth_m)):
+        from servicebot_cli.simulate.sensors import camera_numpy
+
+        for f in range(count):
+            camera_numpy.render(view, rotations[f], origins[f], scene.posed(poses[f]), keys[f],
+                                noise_stddev * 255.0, rgb[f], depth_m[f])
+    return tuple(Frame(rgb[f].reshape(rows, columns, 3),
+                       depth_m[f].reshape(rows, columns) if depth
+                       else np.zeros((0, 0), np.float32)) for f in range(count))
 
 
-def _numpy_path(view: CameraView, origins: FloatArray, directions: FloatArray, scene: Scene,
-                surfaces: list[Surface]) -> tuple[FloatArray, FloatArray]:
-    """Colour (N, 3) and distance (N,) of each ray, surface by surface in numpy."""
-    triangles: dict[int, IntArray] = {}  # per mesh: the triangle each ray met first
-    d = camera_rays.columns(directions)
-    distances = np.stack([_distances(s, scene, origins, d, triangles) for s in surfaces])
-    depth = distances * view.forward
-    distances[(depth < view.near_m) | (depth > view.far_m)] = np.inf
-    nearest = np.argmin(distances, axis=0)
-    distance = distances[nearest, np.arange(len(nearest))]
-    seen = np.isfinite(distance)
-    colour = np.tile(np.array(scene.palette.sky, dtype=np.float64), (len(nearest), 1))
-    points = origins + directions * np.where(seen, distance, 0.0)[:, None]
-    for index, surface in enumerate(surfaces):
-        hit = seen & (nearest == index)
-        if np.any(hit):
-            base, normals = _looks(surface, scene, points[hit], triangles, hit)
-            light = _AMBIENT + (1.0 - _AMBIENT) * np.abs(normals @ _LIGHT)
-            colour[hit] = base * light[:, None]
-    return colour, distance
-
-
-def _compiled(view: CameraView, origin: FloatArray, directions: FloatArray, scene: Scene,
-              surfaces: list[Surface]) -> tuple[FloatArray, FloatArray] | None:
-    """The same, in numba's compiled loop; None with meshes in view or without numba."""
-    if not COMPILED or any(kind == "mesh" for kind, _ in surfaces):
-        return None
+def _compiled(view: CameraView, rotations: FloatArray, origins: FloatArray, scene: Scene,
+              part_transforms: FloatArray, keys: npt.NDArray[np.uint64], scale: float,
+              rgb: npt.NDArray[np.uint8], depth_m: npt.NDArray[np.float32]) -> bool:
+    """Fill ``rgb`` and ``depth_m`` in numba's compiled loop; False without numba."""
     try:
+        import numba  # type: ignore[import-untyped, import-not-found, unused-ignore]
+
         from servicebot_cli.simulate.sensors import camera_kernel
     except ModuleNotFoundError as exc:
         if exc.name != "numba":
             raise
-        return None
-    solids = [scene.solids[i] for kind, i in surfaces if kind == "solid"]
-    parts = [i for kind, i in surfaces if kind == "part"]
-    kinds = [*(s.kind for s in solids), *(scene.parts[i].kind for i in parts)]
-    transforms = scene.part_transforms if scene.part_transforms is not None \
-        else np.zeros((0, 4, 4))
-    palette = scene.palette
-    count = len(kinds)
-    colour, distance = np.empty((len(directions), 3)), np.empty(len(directions))
-    camera_kernel.shade(
-        np.ascontiguousarray(origin, dtype=np.float64), np.ascontiguousarray(directions),
-        view.forward, view.near_m, view.far_m,
-        np.array([("box", "cylinder", "sphere").index(k) for k in kinds], dtype=np.int64),
-        np.array([*(s.half_m for s in solids), *(scene.parts[i].half_m for i in parts)],
-                 dtype=np.float64).reshape(count, 3),
-        np.array([*(s.rotation for s in solids), *(transforms[i][:3, :3] for i in parts)],
-                 dtype=np.float64).reshape(count, 3, 3),
-        np.array([*(s.center_m for s in solids), *(transforms[i][:3, 3] for i in parts)],
-                 dtype=np.float64).reshape(count, 3),
-        np.array([*(palette.of_solid(s) for s in solids), *(palette.robot for _ in parts)],
-                 dtype=np.float64).reshape(count, 3),
-        np.array(palette.floor, dtype=np.float64), np.array(palette.sky, dtype=np.float64),
-        _LIGHT, _AMBIENT, colour, distance)
-    return colour, distance
-
-
-# -- surfaces: the floor, each solid, each mesh, each robot part ---------------------------
-
-Surface = tuple[str, int]
-"""``("floor", 0)``, ``("solid", i)``, ``("mesh", i)`` or ``("part", i)``."""
-
-
-def _surfaces(scene: Scene) -> list[Surface]:
-    return [("floor", 0), *(("solid", i) for i in range(len(scene.solids))),
-            *(("mesh", i) for i in range(len(scene.meshes))),
-            *(("part", i) for i in range(len(scene.parts)))]
-
-
-def _in_view(surface: Surface, scene: Scene, origin: FloatArray, axis: FloatArray,
-             half_angle_rad: float) -> bool:
-    """Whether a ray of the view can meet ``surface`` (the floor and meshes always can)."""
-    kind, index = surface
-    if kind == "solid":
-        solid = scene.solids[index]
-        radius = camera_rays.bounding_radius(solid.kind, solid.half_m)
-        return camera_rays.in_view(solid.center_m, radius, origin, axis, half_angle_rad)
-    if kind == "part":
-        assert scene.part_transforms is not None
-        return camera_rays.in_view(scene.part_transforms[index][:3, 3],
-                                   scene.parts[index].radius_m, origin, axis, half_angle_rad)
+        return False
+    kinds, halves, rotations_s, centres, colours, part_kinds, part_halves, part_colours = \
+        scene.packed_world
+    t = scene.triangles
+    with numba.parallel_chunksize(1):  # a frame at a time to whichever thread is free
+        camera_kernel.render(
+            rotations, origins, (view.directions, view.forward, view.shape[1], view.near_m,
+                                 view.far_m, view.pinhole),
+            (kinds, halves, rotations_s, centres, colours),
+            (part_kinds, part_halves, part_colours,
+             np.ascontiguousarray(part_transforms[:, :, :3, :3]),
+             np.ascontiguousarray(part_transforms[:, :, :3, 3])),
+            (t.corner, t.edge_1, t.edge_2, t.normal, t.colour, t.low, t.high, t.first, t.count),
+            (np.array(scene.palette.floor, dtype=np.float64),
+             np.array(scene.palette.sky, dtype=np.float64), LIGHT, AMBIENT),
+            (keys, scale, camera_noise.normal_table()), rgb, depth_m)
     return True
-
-
-def _distances(surface: Surface, scene: Scene, origins: FloatArray, d: list[FloatArray],
-               triangles: dict[int, IntArray]) -> FloatArray:
-    kind, index = surface
-    origin = origins[0]
-    if kind == "floor":
-        return camera_rays.floor_distances(origin, d)
-    if kind == "solid":
-        solid = scene.solids[index]
-        transform = np.eye(4)
-        transform[:3, :3], transform[:3, 3] = solid.rotation, solid.center_m
-        return camera_rays.primitive_distances(solid.kind, solid.half_m, transform, origin, d)
-    if kind == "mesh":
-        directions = np.column_stack(d)
-        distances, triangles[index] = _mesh_hits(scene.meshes[index], origins, directions)
-        return distances
-    assert scene.part_transforms is not None
-    part = scene.parts[index]
-    return camera_rays.primitive_distances(part.kind, part.half_m,
-                                           scene.part_transforms[index], origin, d)
-
-
-def _mesh_hits(mesh: raycast.Mesh, origins: FloatArray,
-               directions: FloatArray) -> tuple[FloatArray, IntArray]:
-    """First hit on a mesh per ray: distance (inf for none) and triangle (-1 for none)."""
-    distances = np.full(len(directions), np.inf)
-    triangle = np.full(len(directions), -1, dtype=np.int64)
-    locations, rays, hit = mesh.ray.intersects_location(
-        np.ascontiguousarray(origins), np.ascontiguousarray(directions), multiple_hits=False)
-    if len(rays):
-        along = np.einsum("ij,ij->i", locations - origins[rays], directions[rays])
-        distances[rays], triangle[rays] = along, hit
-    return distances, triangle
-
-
-def _looks(surface: Surface, scene: Scene, points: FloatArray, triangles: dict[int, IntArray],
-           hit: npt.NDArray[np.bool_]) -> tuple[FloatArray, FloatArray]:
-    """Base colour (n, 3) and unit normal (n, 3) at ``points`` (rays ``hit``) on ``surface``."""
-    kind, index = surface
-    palette = scene.palette
-    if kind == "floor":
-        squares = (np.floor(points[:, 0]) + np.floor(points[:, 1])).astype(np.int64) % 2
-        normals = np.tile([0.0, 0.0, 1.0], (len(points), 1))
-        return np.array(palette.floor, dtype=np.float64)[squares], normals
-    if kind == "solid":
-        solid = scene.solids[index]
-        local = (points - solid.center_m) @ solid.rotation
-        normals = camera_rays.primitive_normals(solid.kind, solid.half_m, local) @ solid.rotation.T
-        return _flat(palette.of_solid(solid), len(points)), normals
-    if kind == "mesh":
-        return _flat(palette.mesh, len(points)), _mesh_normals(scene.meshes[index],
-                                                               triangles[index][hit])
-    assert scene.part_transforms is not None
-    part, transform = scene.parts[index], scene.part_transforms[index]
-    local = (points - transform[:3, 3]) @ transform[:3, :3]
-    normals = camera_rays.primitive_normals(part.kind, part.half_m, local) @ transform[:3, :3].T
-    return _flat(palette.robot, len(points)), normals
-
-
-def _flat(rgb: Rgb, count: int) -> FloatArray:
-    return np.tile(np.array(rgb, dtype=np.float64), (count, 1))
-
-
-def _mesh_normals(mesh: raycast.Mesh, triangles: IntArray) -> FloatArray:
-    """The unit normal of each of ``triangles`` of ``mesh``."""
-    corners = mesh.vertices[mesh.faces[triangles]]
-    normals = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
-    found: FloatArray = normals / np.maximum(np.linalg.norm(normals, axis=1, keepdims=True),
-                                             1e-300)
-    return found
 
 
 def field_of_view_rad(intrinsics: Intrinsics) -> float:

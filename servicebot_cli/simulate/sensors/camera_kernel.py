@@ -1,12 +1,15 @@
-r"""A camera frame's colours and distances in one compiled loop over the pixels.
+r"""A camera frame in one compiled loop: rays, nearest surface, shading, noise, bytes.
 
-The same surfaces, tests and shading as the numpy path of
-:mod:`~servicebot_cli.simulate.sensors.camera_image` (floor, then boxes, cylinders and
-spheres in closed form: the slab method, the cylinder's quadratic and caps, the sphere's
-quadratic; a ray starting inside a primitive does not see it; surfaces outside the clip
-planes are passed over), pixel by pixel, without the numpy path's temporaries. Meshes are
-not drawn here: a scene with meshes takes the numpy path. Compiled by numba (cached on
-disk after the first run). Pure.
+The same surfaces, tests, shading and noise as the numpy path of
+:mod:`~servicebot_cli.simulate.sensors.camera_image`, pixel by pixel and rows in parallel
+(numba's ``prange``; a pixel depends on nothing but its own ray, so the bytes do not depend
+on the thread count). Per frame, before the pixels: each primitive (box, cylinder, sphere)
+outside the view's cone is dropped and the rest are sorted by the distance to their bounding
+sphere, so a ray stops testing them once the nearest hit so far is closer. Mesh triangles
+are found through their bounding volume hierarchy
+(:mod:`~servicebot_cli.simulate.sensors.camera_mesh`) and met by the Moller-Trumbore test.
+Colour goes straight to rgb8 and depth to float32. Compiled by numba (cached on disk after
+the first run). Pure.
 """
 
 from __future__ import annotations
@@ -15,164 +18,246 @@ import math
 
 import numpy as np
 import numpy.typing as npt
-from numba import njit  # type: ignore[import-untyped, import-not-found, unused-ignore]
+from numba import njit, prange  # type: ignore[import-untyped, import-not-found, unused-ignore]
+
+from servicebot_cli.simulate.sensors import camera_culling as culling
+from servicebot_cli.simulate.sensors.camera_noise import GOLDEN, MIX_1, MIX_2
+from servicebot_cli.simulate.sensors.camera_primitives import entry, lit
 
 FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.int64]
-BOX, CYLINDER, SPHERE = 0, 1, 2
+_STACK = 64  # deepest hierarchy walked: 2**64 triangles
+TILE = 8
+"""Tiles of TILE x TILE pixels share one list of what they can show."""
+_MASK = np.uint64(0xFFFF)
+
+
+@njit(cache=True, nogil=True, error_model="numpy")
+def _box_near(o: FloatArray, inverse: FloatArray, low: FloatArray, high: FloatArray) -> float:
+    """Where a ray enters an axis-aligned box (inf: never)."""
+    near, far = 0.0, math.inf
+    for i in range(3):
+        t1, t2 = (low[i] - o[i]) * inverse[i], (high[i] - o[i]) * inverse[i]
+        near, far = max(near, min(t1, t2)), min(far, max(t1, t2))
+    return near if near <= far else math.inf
 
 
 @njit(cache=True, nogil=True, error_model="numpy", inline="always")
-def _slab(o: float, d: float, half: float, near: float, far: float) -> tuple[float, float]:
-    """One axis of the slab method: ``near`` and ``far`` narrowed (near > far: a miss)."""
-    if d == 0.0:
-        return (near, far) if -half <= o <= half else (math.inf, -math.inf)
-    inv = 1.0 / d  # as raycast.box_entry: the same rounding at edges
-    t1, t2 = (-half - o) * inv, (half - o) * inv
-    return max(near, min(t1, t2)), min(far, max(t1, t2))
+def _triangles(o: FloatArray, d: FloatArray, best: float, lowest: float, highest: float,
+               mesh: tuple, stack: IntArray) -> tuple[float, int]:  # type: ignore[type-arg]
+    """Nearest triangle a ray meets at a distance in [lowest, highest] before ``best``.
 
-
-@njit(cache=True, nogil=True, error_model="numpy")
-def _box(o0: float, o1: float, o2: float, d0: float, d1: float, d2: float, h0: float,
-         h1: float, h2: float) -> float:
-    near, far = _slab(o0, d0, h0, -math.inf, math.inf)
-    near, far = _slab(o1, d1, h1, near, far)
-    near, far = _slab(o2, d2, h2, near, far)
-    return near if near <= far and near >= 0.0 else math.inf
-
-
-@njit(cache=True, nogil=True, error_model="numpy")
-def _cylinder(o0: float, o1: float, o2: float, d0: float, d1: float, d2: float,
-              radius: float, half_length: float) -> float:
-    c = o0 * o0 + o1 * o1 - radius * radius
-    if c < 0.0 and abs(o2) < half_length:
-        return math.inf  # from inside: no entry
-    a = d0 * d0 + d1 * d1
-    b = o0 * d0 + o1 * d1
-    disc = b * b - a * c
-    best = math.inf
-    if disc >= 0.0 and a > 0.0:
-        t = (-b - math.sqrt(disc)) / a
-        if t >= 0.0 and abs(o2 + t * d2) <= half_length:
-            best = t
-    if d2 != 0.0:
-        t = (-math.copysign(half_length, d2) - o2) / d2
-        x, y = o0 + t * d0, o1 + t * d1
-        if t >= 0.0 and x * x + y * y <= radius * radius:
-            best = min(best, t)
-    return best
-
-
-@njit(cache=True, nogil=True, error_model="numpy")
-def _sphere(o0: float, o1: float, o2: float, d0: float, d1: float, d2: float,
-            radius: float) -> float:
-    b = o0 * d0 + o1 * d1 + o2 * d2
-    c = o0 * o0 + o1 * o1 + o2 * o2 - radius * radius
-    disc = b * b - c
-    if disc < 0.0 or c <= 0.0:
-        return math.inf
-    t = -b - math.sqrt(disc)
-    return t if t >= 0.0 else math.inf
-
-
-@njit(cache=True, nogil=True, error_model="numpy")
-def _lit(kind: int, local: FloatArray, half: FloatArray, rotation: FloatArray,
-         light: FloatArray, ambient: float) -> float:
-    """The light on a primitive at a point ``local`` on it, from its outward unit normal."""
-    n0 = n1 = n2 = 0.0
-    if kind == BOX:
-        axis, ratio = 0, -1.0
-        for i in range(3):
-            if abs(local[i]) / half[i] > ratio:
-                axis, ratio = i, abs(local[i]) / half[i]
-        sign = np.sign(local[axis])
-        n0, n1, n2 = (sign if axis == 0 else 0.0), (sign if axis == 1 else 0.0), \
-            (sign if axis == 2 else 0.0)
-    elif kind == CYLINDER:
-        radial = math.hypot(local[0], local[1])
-        if abs(local[2]) / half[2] >= radial / half[0]:
-            n2 = np.sign(local[2])
-        elif radial > 0.0:
-            n0, n1 = local[0] / radial, local[1] / radial
-    else:
-        length = math.sqrt(local[0] ** 2 + local[1] ** 2 + local[2] ** 2)
-        if length > 0.0:
-            n0, n1, n2 = local[0] / length, local[1] / length, local[2] / length
-    dot = 0.0
-    for r in range(3):
-        dot += (rotation[r, 0] * n0 + rotation[r, 1] * n1 + rotation[r, 2] * n2) * light[r]
-    return ambient + (1.0 - ambient) * abs(dot)
-
-
-@njit(cache=True, nogil=True, error_model="numpy")
-def shade(origin: FloatArray, directions: FloatArray, forward: FloatArray, near_m: float,
-          far_m: float, kinds: IntArray, halves: FloatArray, rotations: FloatArray,
-          centres: FloatArray, colours: FloatArray, floor: FloatArray, sky: FloatArray,
-          light: FloatArray, ambient: float, colour: FloatArray, distance: FloatArray) -> None:
-    """Fill ``colour`` (N, 3) and ``distance`` (N,) [m] (inf: nothing) for each ray.
-
-    Primitives (S of them): ``kinds``, ``halves`` (S, 3), ``rotations`` (S, 3, 3, local
-    axes as columns), ``centres`` (S, 3) in the world, base ``colours`` (S, 3); ``floor``
-    holds the checker's two colours (2, 3).
+    Returns:
+        Distance and triangle (-1: none before ``best``).
     """
-    count = len(kinds)
-    local_origins = np.empty((count, 3))
-    for s in range(count):
-        for i in range(3):
-            local_origins[s, i] = ((origin[0] - centres[s, 0]) * rotations[s, 0, i]
-                                   + (origin[1] - centres[s, 1]) * rotations[s, 1, i]
-                                   + (origin[2] - centres[s, 2]) * rotations[s, 2, i])
-    # each primitive's bounding sphere as seen from the camera: a ray further from its
-    # centre's direction than its angular radius, or with a nearer hit already, misses it
-    towards, reach_cos, nearest = np.empty((count, 3)), np.empty(count), np.empty(count)
-    for s in range(count):
-        offset = centres[s] - origin
-        length = math.sqrt(offset[0] ** 2 + offset[1] ** 2 + offset[2] ** 2)
-        radius = math.sqrt(halves[s, 0] ** 2 + halves[s, 1] ** 2 + halves[s, 2] ** 2)
-        towards[s] = offset / length if length > 0.0 else offset
-        inside = length <= radius * (1.0 + 1e-9)
-        reach_cos[s] = -2.0 if inside else math.cos(math.asin(radius / length)) - 1e-9
-        nearest[s] = 0.0 if inside else length - radius
-    local = np.empty(3)
-    for n in range(len(directions)):
-        dx, dy, dz = directions[n, 0], directions[n, 1], directions[n, 2]
-        best, which = math.inf, -2  # -2: nothing, -1: the floor, s: a primitive
-        if dz < 0.0:
-            t = -origin[2] / dz
-            if t >= 0.0 and near_m <= t * forward[n] <= far_m:
-                best, which = t, -1
-        for s in range(count):
-            if nearest[s] >= best or (dx * towards[s, 0] + dy * towards[s, 1]
-                                      + dz * towards[s, 2]) < reach_cos[s]:
+    corner, edge_1, edge_2, _, _, low, high, first, count = mesh
+    inverse = np.empty(3)
+    for i in range(3):
+        inverse[i] = 1.0 / (d[i] if abs(d[i]) > 1e-300 else 1e-300)
+    found, top = -1, 0
+    stack[0] = 0
+    while top >= 0:
+        node = stack[top]
+        top -= 1
+        if _box_near(o, inverse, low[node], high[node]) >= min(best, highest):
+            continue
+        if count[node] == 0:
+            stack[top + 1], stack[top + 2] = first[node], first[node] + 1
+            top += 2
+            continue
+        for k in range(first[node], first[node] + count[node]):
+            e1, e2 = edge_1[k], edge_2[k]
+            p0, p1, p2 = d[1] * e2[2] - d[2] * e2[1], d[2] * e2[0] - d[0] * e2[2], \
+                d[0] * e2[1] - d[1] * e2[0]
+            det = e1[0] * p0 + e1[1] * p1 + e1[2] * p2
+            if abs(det) < 1e-15:
                 continue
-            r = rotations[s]
-            d0 = dx * r[0, 0] + dy * r[1, 0] + dz * r[2, 0]
-            d1 = dx * r[0, 1] + dy * r[1, 1] + dz * r[2, 1]
-            d2 = dx * r[0, 2] + dy * r[1, 2] + dz * r[2, 2]
-            o0, o1, o2 = local_origins[s, 0], local_origins[s, 1], local_origins[s, 2]
-            if kinds[s] == BOX:
-                t = _box(o0, o1, o2, d0, d1, d2, halves[s, 0], halves[s, 1], halves[s, 2])
-            elif kinds[s] == CYLINDER:
-                t = _cylinder(o0, o1, o2, d0, d1, d2, halves[s, 0], halves[s, 2])
+            s0, s1, s2 = o[0] - corner[k, 0], o[1] - corner[k, 1], o[2] - corner[k, 2]
+            u = (s0 * p0 + s1 * p1 + s2 * p2) / det
+            if u < 0.0 or u > 1.0:
+                continue
+            q0, q1, q2 = s1 * e1[2] - s2 * e1[1], s2 * e1[0] - s0 * e1[2], s0 * e1[1] - s1 * e1[0]
+            v = (d[0] * q0 + d[1] * q1 + d[2] * q2) / det
+            t = (e2[0] * q0 + e2[1] * q1 + e2[2] * q2) / det
+            if v >= 0.0 and u + v <= 1.0 and lowest <= t <= highest and t < best:
+                best, found = t, k
+    return best, found
+
+
+@njit(cache=True, nogil=True, error_model="numpy", inline="always")
+def _noisy(colour: FloatArray, n: int, key: np.uint64, scale: float, table: FloatArray,
+           rgb: npt.NDArray[np.uint8]) -> None:
+    """``colour`` plus pixel ``n``'s noise (:mod:`.camera_noise`), rounded into ``rgb[n]``."""
+    bits = np.uint64(0)
+    if scale > 0.0:
+        z = key + np.uint64(n + 1) * GOLDEN
+        z = (z ^ (z >> np.uint64(30))) * MIX_1
+        z = (z ^ (z >> np.uint64(27))) * MIX_2
+        bits = z ^ (z >> np.uint64(31))
+    for i in range(3):
+        value = colour[i]
+        if scale > 0.0:
+            value = value + table[np.int64((bits >> np.uint64(16 * i)) & _MASK)] * scale
+        rgb[n, i] = np.uint8(min(255.0, max(0.0, np.rint(value))))
+
+
+@njit(cache=True, nogil=True, error_model="numpy")
+def _tile(pixels: tuple, rotation: FloatArray, origin: FloatArray,  # type: ignore[type-arg]
+          view: tuple, solids: tuple, frame: tuple, chosen: IntArray,  # type: ignore[type-arg]
+          mesh: tuple, look: tuple, noise: tuple,  # type: ignore[type-arg]
+          rgb: npt.NDArray[np.uint8], depth: npt.NDArray[np.float32]) -> None:
+    """Shade the pixels of one tile from the ``chosen`` primitives (and the meshes)."""
+    top, bottom, left, right = pixels
+    directions, forward, width, near_m, far_m, _ = view
+    kinds, halves, rotations, _, colours = solids
+    local_origins, lower, meshes_seen = frame
+    floor, sky, light, ambient = look
+    key, scale, table = noise
+    stack, d, local, colour = np.empty(_STACK, np.int64), np.empty(3), np.empty(3), np.empty(3)
+    floor_shade = ambient + (1.0 - ambient) * abs(light[2])
+    for row in range(top, bottom):
+        for n in range(row * width + left, row * width + right):
+            for i in range(3):
+                d[i] = (directions[n, 0] * rotation[i, 0] + directions[n, 1] * rotation[i, 1]
+                        + directions[n, 2] * rotation[i, 2])
+            best, which = math.inf, -2  # -2: nothing, -1: the floor, s: a primitive
+            if d[2] < 0.0:
+                t = -origin[2] / d[2]
+                if t >= 0.0 and near_m <= t * forward[n] <= far_m:
+                    best, which = t, -1
+            for s in chosen:
+                if lower[s] > best:
+                    break
+                t = entry(kinds[s], local_origins[s, 0], local_origins[s, 1],
+                          local_origins[s, 2], d[0] * rotations[s, 0, 0]
+                          + d[1] * rotations[s, 1, 0] + d[2] * rotations[s, 2, 0],
+                          d[0] * rotations[s, 0, 1] + d[1] * rotations[s, 1, 1]
+                          + d[2] * rotations[s, 2, 1], d[0] * rotations[s, 0, 2]
+                          + d[1] * rotations[s, 1, 2] + d[2] * rotations[s, 2, 2],
+                          halves[s, 0], halves[s, 1], halves[s, 2])
+                nearer = t < best or (t == best and s < which)  # a tie: the numpy path's first
+                if nearer and t < math.inf and near_m <= t * forward[n] <= far_m:
+                    best, which = t, s
+            triangle = -1
+            if meshes_seen:
+                best, triangle = _triangles(origin, d, best, near_m / forward[n],
+                                            far_m / forward[n], mesh, stack)
+            if depth.size:
+                depth[n] = np.float32(best * forward[n]) if best < math.inf else np.inf
+            if triangle >= 0:
+                normal = mesh[3][triangle]
+                shade = ambient + (1.0 - ambient) * abs(
+                    normal[0] * light[0] + normal[1] * light[1] + normal[2] * light[2])
+                for i in range(3):
+                    colour[i] = mesh[4][triangle, i] * shade
+            elif which == -2:
+                colour[:] = sky
+            elif which == -1:
+                x, y = origin[0] + best * d[0], origin[1] + best * d[1]
+                square = int(math.floor(x) + math.floor(y)) % 2
+                for i in range(3):
+                    colour[i] = floor[square, i] * floor_shade
             else:
-                t = _sphere(o0, o1, o2, d0, d1, d2, halves[s, 0])
-            if t < best and near_m <= t * forward[n] <= far_m:
-                best, which = t, s
-        distance[n] = best
-        if which == -2:
-            for i in range(3):
-                colour[n, i] = sky[i]
-        elif which == -1:
-            x, y = origin[0] + best * directions[n, 0], origin[1] + best * directions[n, 1]
-            square = int(math.floor(x) + math.floor(y)) % 2
-            lit = ambient + (1.0 - ambient) * abs(light[2])
-            for i in range(3):
-                colour[n, i] = floor[square, i] * lit
-        else:
-            for i in range(3):
-                local[i] = local_origins[which, i] + best * (
-                    directions[n, 0] * rotations[which, 0, i] + directions[n, 1]
-                    * rotations[which, 1, i] + directions[n, 2] * rotations[which, 2, i])
-            lit = _lit(kinds[which], local, halves[which], rotations[which], light, ambient)
-            for i in range(3):
-                colour[n, i] = colours[which, i] * lit
+                for i in range(3):
+                    local[i] = local_origins[which, i] + best * (
+                        d[0] * rotations[which, 0, i] + d[1] * rotations[which, 1, i]
+                        + d[2] * rotations[which, 2, i])
+                shade = lit(kinds[which], local, halves[which], rotations[which], light,
+                            ambient)
+                for i in range(3):
+                    colour[i] = colours[which, i] * shade
+            _noisy(colour, n, key, scale, table, rgb)
+
+
+@njit(cache=True, nogil=True, error_model="numpy")
+def _local_origins(origin: FloatArray, rotations: FloatArray, centres: FloatArray) -> FloatArray:
+    """The camera in each primitive's frame, :math:`R^T (o - c)`, (S, 3)."""
+    out = np.empty((len(centres), 3))
+    for s in range(len(centres)):
+        for i in range(3):
+            out[s, i] = ((origin[0] - centres[s, 0]) * rotations[s, 0, i]
+                         + (origin[1] - centres[s, 1]) * rotations[s, 1, i]
+                         + (origin[2] - centres[s, 2]) * rotations[s, 2, i])
+    return out
+
+
+@njit(cache=True, nogil=True, error_model="numpy")
+def _frame(rotation: FloatArray, origin: FloatArray, view: tuple,  # type: ignore[type-arg]
+           solids: tuple, mesh: tuple, look: tuple, noise: tuple,  # type: ignore[type-arg]
+           rgb: npt.NDArray[np.uint8], depth: npt.NDArray[np.float32]) -> None:
+    """One frame, tile by tile: ``render``'s arguments for one camera pose and one key."""
+    directions, _, width, near_m, far_m, intrinsics = view
+    kinds, halves, rotations, centres, _ = solids
+    count = len(kinds)
+    # the meshes' root box joins the primitives' boxes, as index ``count``
+    box_halves, box_rotations, box_centres = np.zeros((count + 1, 3)), \
+        np.zeros((count + 1, 3, 3)), np.zeros((count + 1, 3))
+    box_halves[:count], box_rotations[:count], box_centres[:count] = halves, rotations, centres
+    box_rotations[count] = np.eye(3)
+    low, high = mesh[5], mesh[6]
+    if len(low):
+        box_halves[count] = np.maximum((high[0] - low[0]) / 2.0, 1e-9)
+        box_centres[count] = (high[0] + low[0]) / 2.0
+    centre, axes, lower = culling.boxes(rotation, origin, box_halves, box_rotations, box_centres)
+    local_origins = _local_origins(origin, rotations, centres)
+    rows = len(directions) // width
+    everything = np.arange(count + (1 if len(low) else 0))
+    in_view = np.empty(len(everything), np.int64)
+    whole = culling.cone(intrinsics, 0, width - 1, 0, rows - 1)
+    found = culling.survivors(everything, centre, axes, whole, near_m, far_m, in_view)
+    ordered = in_view[:found][np.argsort(lower[in_view[:found]], kind="mergesort")]
+    chosen = np.empty(len(ordered), np.int64)
+    for top in range(0, rows, TILE):
+        bottom = min(rows, top + TILE)
+        for left in range(0, width, TILE):
+            right = min(width, left + TILE)
+            cone = culling.cone(intrinsics, left, right - 1, top, bottom - 1)
+            tile = culling.survivors(ordered, centre, axes, cone, near_m, far_m, chosen)
+            meshes_seen, kept = False, 0
+            for j in range(tile):  # the meshes' box out of the primitives' list
+                if chosen[j] == count:
+                    meshes_seen = True
+                else:
+                    chosen[kept] = chosen[j]
+                    kept += 1
+            _tile((top, bottom, left, right), rotation, origin, view, solids,
+                  (local_origins, lower, meshes_seen), chosen[:kept], mesh, look, noise, rgb,
+                  depth)
+
+
+@njit(cache=True, nogil=True, error_model="numpy", parallel=True)
+def render(rotations: FloatArray, origins: FloatArray, view: tuple,  # type: ignore[type-arg]
+           solids: tuple, parts: tuple, mesh: tuple, look: tuple,  # type: ignore[type-arg]
+           noise: tuple, rgb: npt.NDArray[np.uint8],  # type: ignore[type-arg]
+           depth: npt.NDArray[np.float32]) -> None:
+    """Fill ``rgb`` (F, N, 3) and, unless it is empty, ``depth`` (F, N) [m] (inf: nothing).
+
+    Frames are shared out between threads (a frame to each, as it finishes the last); each
+    frame's bytes depend on its own inputs alone.
+
+    Args:
+        rotations: ``transform_camera_to_world``'s rotation of each frame, (F, 3, 3).
+        origins: Its origin, (F, 3).
+        view: Link-frame unit rays (N, 3), their cosines to the axis (N,), the image width,
+            the near and far clip planes [m], and fx, cx, fy, cy (4,).
+        solids: The world's primitives: kinds (S,), half sizes (S, 3), rotations (S, 3, 3,
+            local axes as columns), centres (S, 3) and base colours (S, 3).
+        parts: The robot's: kinds (P,), half sizes (P, 3), colours (P, 3), and per frame
+            rotations (F, P, 3, 3) and centres (F, P, 3).
+        mesh: :class:`~servicebot_cli.simulate.sensors.camera_mesh.Triangles`' arrays.
+        look: The floor's two colours (2, 3), the sky's (3,), the unit light (3,), ambient.
+        noise: Each frame's key (F,), the noise's stddev in pixel values (0: none), the table.
+        rgb: Out: each frame's rgb8 pixels, row by row, (F, N, 3).
+        depth: Out: each frame's depth [m], (F, N), or (F, 0) for none.
+    """
+    kinds, halves, rotations_s, centres_s, colours = solids
+    part_kinds, part_halves, part_colours, part_rotations, part_centres = parts
+    keys, scale, table = noise
+    all_kinds = np.concatenate((kinds, part_kinds))
+    all_halves = np.concatenate((halves, part_halves))
+    all_colours = np.concatenate((colours, part_colours))
+    for f in prange(len(origins)):
+        frame_solids = (all_kinds, all_halves, np.concatenate((rotations_s, part_rotations[f])),
+                        np.concatenate((centres_s, part_centres[f])), all_colours)
+        _frame(rotations[f], origins[f], view, frame_solids, mesh, look, (keys[f], scale, table),
+               rgb[f], depth[f])

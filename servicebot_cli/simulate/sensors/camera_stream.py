@@ -3,9 +3,11 @@
 The camera sits on its URDF link, posed with the base at the sample time (exact along the
 tick's arc, as the LIDAR) and with the arm as it is at the start of that tick. The scene is
 the world and the robot's own collision parts (but those of the camera's own link, as the
-LIDAR leaves out its own), posed the same way. Each frame's pixel noise is drawn from one
-generator of the run (``stream_rng(seed, "camera")``), frame after frame, so a run gives the
-same bytes for a seed whatever pieces it is simulated in.
+LIDAR leaves out its own), posed the same way, each link in its URDF material's colour and
+the world in the scenario's. Each frame's pixel noise is keyed by one draw from one generator
+of the run (``stream_rng(seed, "camera")``), frame after frame, so a run gives the same bytes
+for a seed whatever pieces it is simulated in. What does not move (the world's solids, the
+meshes' triangles, the parts' sizes and colours) is packed once for the run.
 """
 
 from __future__ import annotations
@@ -18,8 +20,14 @@ import numpy.typing as npt
 from servicebot_cli.kinematics.transforms import planar_matrix
 from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.scenario.camera import CameraImages
-from servicebot_cli.simulate.sensors import camera_info
-from servicebot_cli.simulate.sensors.camera_image import Frame, Scene, camera_view, render, scaled
+from servicebot_cli.simulate.sensors import camera_colours, camera_info
+from servicebot_cli.simulate.sensors.camera_image import (
+    Frame,
+    Scene,
+    camera_view,
+    render_frames,
+    scaled,
+)
 from servicebot_cli.simulate.sensors.noise import stream_rng
 from servicebot_cli.simulate.world.motion import Path2D, pose_at
 from servicebot_cli.simulate.world.raycast import Mesh
@@ -55,7 +63,11 @@ class CameraStream:
         self.body, self.solids, self.meshes = body, list(solids), list(meshes)
         shape = body.shape
         self.keep = np.array([p.link != mounted.link for p in shape.parts], dtype=bool)
-        self.parts = [p for p, k in zip(shape.parts, self.keep, strict=True) if k]
+        parts = [p for p, k in zip(shape.parts, self.keep, strict=True) if k]
+        colours, palette = camera_colours.link_colours(body.robot), camera_colours.palette(images)
+        self.scene = Scene(self.solids, self.meshes, parts, None, palette,
+                           tuple(colours.get(p.link, palette.robot) for p in parts),
+                           camera_colours.mesh_colours(images, len(self.meshes), palette))
         # the camera on its link: the link's pose in the configuration sim_robot placed it in
         at_rest = shape.link_to_base(np.zeros((1, len(shape.joints))), mounted.link)[0] \
             if mounted.link in _tree(body) else np.eye(4)
@@ -77,15 +89,11 @@ class CameraStream:
         q = arm_q[truth.tick_index(times_s, boundaries=True)]
         parts_to_base = shape.transforms_to_base(q)[:, self.keep]
         camera_to_base = shape.link_to_base(q, self.link) @ self.camera_to_link
-        out = []
-        for i in range(len(times_s)):
-            base_to_world = planar_matrix(float(x[i]), float(y[i]), float(yaw[i]),
-                                          body.base_height_m)
-            scene = Scene(self.solids, self.meshes, self.parts, base_to_world @ parts_to_base[i])
-            frame = render(self.view, base_to_world @ camera_to_base[i], scene, self.stddev,
-                           self.rng)
-            out.append(frame if self.depth else Frame(frame.rgb, np.zeros((0, 0), np.float32)))
-        return tuple(out)
+        base_to_world = np.array([planar_matrix(float(x[i]), float(y[i]), float(yaw[i]),
+                                                body.base_height_m) for i in range(len(x))])
+        return render_frames(self.view, base_to_world @ camera_to_base, self.scene,
+                             base_to_world[:, None] @ parts_to_base, self.stddev, self.rng,
+                             depth=self.depth)
 
 
 def _tree(body: SimRobot) -> set[str]:
