@@ -199,3 +199,62 @@ def test_the_compiled_loop_matches_the_independent_ray_caster():
     frame = ci.render(view, pose, ci.Scene(SOLIDS, (), [PART], np.array([PART_POSE])))
     expected = reference_depth(view, pose, SOLIDS, (), [PART], [PART_POSE])
     assert agreement(frame.depth_m.astype(np.float64), expected) > 0.995
+
+
+def test_frames_are_the_same_bytes_on_one_thread_or_two_and_alone_or_together():
+    """Frames are shared out between threads; a frame's bytes depend on its inputs alone."""
+    import numba
+
+    view = ci.camera_view(ci.scaled(FULL_HD, 1 / 16), 0.05, 30.0)
+    poses = np.array([camera_pose(), camera_pose(0.3, 0.2, 0.9, 0.4, 0.35),
+                      camera_pose(4.0, 1.0, 0.3, math.pi - 0.3)])
+    scene = ci.Scene(SOLIDS, [obstacle_mesh()], [PART])
+    part_poses = np.array([[PART_POSE], [_placed(0.6, 0.1, 0.3)], [PART_POSE]])
+
+    def frames(threads):
+        before = numba.get_num_threads()
+        numba.set_num_threads(threads)
+        try:
+            return ci.render_frames(view, poses, scene, part_poses, 0.007,
+                                    np.random.default_rng(5))
+        finally:
+            numba.set_num_threads(before)
+
+    one, two = frames(1), frames(min(2, numba.config.NUMBA_NUM_THREADS))
+    rng = np.random.default_rng(5)
+    alone = [ci.render(view, p, scene.posed(q), 0.007, rng) for p, q in zip(poses, part_poses,
+                                                                          strict=True)]
+    for a, b, c in zip(one, two, alone, strict=True):
+        assert np.array_equal(a.rgb, b.rgb) and np.array_equal(a.rgb, c.rgb)
+        assert np.array_equal(a.depth_m, b.depth_m) and np.array_equal(a.depth_m, c.depth_m)
+    assert not np.array_equal(one[0].rgb, one[2].rgb)
+
+
+def test_a_mesh_of_many_triangles_matches_the_independent_ray_caster():
+    """A 1280-triangle sphere and a 4-triangle pyramid, through the compiled loop's hierarchy."""
+    view = ci.camera_view(ci.scaled(FULL_HD, 1 / 16), 0.05, 30.0)
+    ball = trimesh.creation.icosphere(subdivisions=3, radius=0.35)
+    ball.apply_translation([1.8, 0.3, 0.35])
+    assert len(ball.faces) == 1280
+    meshes = [ball, obstacle_mesh()]
+    pose = camera_pose(0.0, 0.0, 0.6, 0.0, 0.15)
+    frame = ci.render(view, pose, ci.Scene(SOLIDS[:1], meshes, mesh_rgb=[(255, 0, 0),
+                                                                         (0, 0, 255)]))
+    expected = reference_depth(view, pose, SOLIDS[:1], meshes)
+    assert agreement(frame.depth_m.astype(np.float64), expected) > 0.995
+    rgb = frame.rgb.reshape(-1, 3).astype(int)
+    assert ((rgb[:, 0] > 100) & (rgb[:, 1] == 0) & (rgb[:, 2] == 0)).sum() > 50  # the ball
+    assert ((rgb[:, 2] > 100) & (rgb[:, 0] == 0) & (rgb[:, 1] == 0)).sum() > 5  # the pyramid
+
+
+def test_noise_keyed_by_pixel_is_the_same_in_numpy_and_draws_a_normal_table():
+    from servicebot_cli.simulate.sensors import camera_noise
+
+    table = camera_noise.normal_table()
+    assert len(table) == 65536 and np.all(np.diff(table) > 0)
+    assert table.mean() == pytest.approx(0.0, abs=1e-12)
+    assert table.std() == pytest.approx(1.0, abs=1e-3)
+    drawn = camera_noise.standard_normal(np.uint64(12345), 200_000)
+    assert drawn.mean() == pytest.approx(0.0, abs=0.01)
+    assert drawn.std() == pytest.approx(1.0, abs=0.01)
+    assert abs(np.corrcoef(drawn[:, 0], drawn[:, 1])[0, 1]) < 0.01  # channels independent

@@ -8,6 +8,7 @@ import json
 def test_the_printed_scenario_runs_as_the_built_in_one(run, tmp_path):
     printed = run("simulate", "--print-scenario")
     assert printed.exit_code == 0 and printed.stdout.startswith("# The built-in scenario")
+    assert 'color: "#d77828"' in printed.stdout  # the camera's colours, as a field to edit
     (tmp_path / "default.yaml").write_text(printed.stdout)
     own = run("simulate", "--headless", "--duration-s", "30", "--format", "json")
     copied = run("simulate", "--headless", "-s", tmp_path / "default.yaml", "--duration-s", "30",

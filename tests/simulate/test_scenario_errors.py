@@ -55,6 +55,20 @@ YAML_CASES = [
      "camera.rate_hz: 40 Hz is above the URDF camera's update rate (30 Hz)"),
     ("duration_s: 10\ncamera:\n  size: 2\n", ":3:", "camera.size: unknown field"),
     ("duration_s: 10\ncamera: on\n", ":2:", "camera: expected a mapping"),
+    # Colours: "#rrggbb" or [r, g, b] in 0-1, each refused naming its field.
+    ("duration_s: 10\nworld:\n  boxes:\n    - {center_m: [1, 1], size_m: [1, 1, 1], "
+     "color: red}\n", ":4:", 'world.boxes[0].color: expected [r, g, b] with each in 0-1, or '
+     '"#rrggbb", got \'red\''),
+    ("duration_s: 10\nworld:\n  cylinders:\n    - center_m: [1, 1]\n      radius_m: 0.2\n"
+     "      color: [0.5, 2, 0]\n", ":6:",
+     "world.cylinders[0].color[1]: must be at most 1, got 2"),
+    ("duration_s: 10\nworld:\n  walls:\n    - from_m: [0, 0]\n      to_m: [1, 0]\n"
+     "      color: [1, 0]\n", ":6:", "world.walls[0].color: expected [r, g, b]"),
+    ("duration_s: 10\nworld:\n  floor:\n    color: #00ff00\n", ":4:",
+     "world.floor.color: expected [r, g, b] with each in 0-1, or \"#rrggbb\", got nothing "
+     "(quote a \"#rrggbb\""),
+    ("duration_s: 10\nworld:\n  floor:\n    colour: '#00ff00'\n", ":4:",
+     "world.floor.colour: unknown field; did you mean 'color'?"),
     # The seed is the command line's alone (--seed): a scenario cannot carry one.
     ("duration_s: 10\nseed: -1\n", ":2:", "seed: unknown field"),
 ]
