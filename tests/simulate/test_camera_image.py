@@ -231,11 +231,11 @@ def test_frames_are_the_same_bytes_on_one_thread_or_two_and_alone_or_together():
 
 
 def test_a_mesh_of_many_triangles_matches_the_independent_ray_caster():
-    """A 1280-triangle sphere and a 4-triangle pyramid, through the compiled loop's hierarchy."""
-    view = ci.camera_view(ci.scaled(FULL_HD, 1 / 16), 0.05, 30.0)
-    ball = trimesh.creation.icosphere(subdivisions=3, radius=0.35)
+    """A 320-triangle sphere and a 4-triangle pyramid, through the compiled loop's hierarchy."""
+    view = ci.camera_view(ci.scaled(FULL_HD, 1 / 24), 0.05, 30.0)
+    ball = trimesh.creation.icosphere(subdivisions=2, radius=0.35)
     ball.apply_translation([1.8, 0.3, 0.35])
-    assert len(ball.faces) == 1280
+    assert len(ball.faces) == 320
     meshes = [ball, obstacle_mesh()]
     pose = camera_pose(0.0, 0.0, 0.6, 0.0, 0.15)
     frame = ci.render(view, pose, ci.Scene(SOLIDS[:1], meshes, mesh_rgb=[(255, 0, 0),
@@ -243,8 +243,8 @@ def test_a_mesh_of_many_triangles_matches_the_independent_ray_caster():
     expected = reference_depth(view, pose, SOLIDS[:1], meshes)
     assert agreement(frame.depth_m.astype(np.float64), expected) > 0.995
     rgb = frame.rgb.reshape(-1, 3).astype(int)
-    assert ((rgb[:, 0] > 100) & (rgb[:, 1] == 0) & (rgb[:, 2] == 0)).sum() > 50  # the ball
-    assert ((rgb[:, 2] > 100) & (rgb[:, 0] == 0) & (rgb[:, 1] == 0)).sum() > 5  # the pyramid
+    assert ((rgb[:, 0] > 100) & (rgb[:, 1] == 0) & (rgb[:, 2] == 0)).sum() > 20  # the ball
+    assert ((rgb[:, 2] > 100) & (rgb[:, 0] == 0) & (rgb[:, 1] == 0)).sum() > 2  # the pyramid
 
 
 def test_noise_keyed_by_pixel_is_the_same_in_numpy_and_draws_a_normal_table():
