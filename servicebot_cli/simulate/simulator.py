@@ -2,7 +2,8 @@
 
 A run is simulated a stretch of control ticks at a time (a piece, :data:`PIECE_S` simulated
 seconds by default). For each piece the base's wheel speeds are planned (commands are known
-ahead), the ground truth follows them along exact arcs until an obstacle stops it, and every
+ahead), the ground truth follows them along exact arcs and the arm follows its reference,
+each held where a step would put a link into an obstacle (:mod:`.world.blocking`), and every
 sensor is sampled from that motion in whole batches. Every stage carries its state to the
 next piece (the limiter's last commands, the integrators' running sums, each noise
 generator, the contact and clearance records), so the pieces hold the same bits as the run
@@ -33,7 +34,7 @@ from servicebot_cli.simulate.sensors.camera_image import Frame
 from servicebot_cli.simulate.sensors.camera_stream import PIECE_BYTES, CameraStream
 from servicebot_cli.simulate.sensors.noise import Noise, stream_rng
 from servicebot_cli.simulate.sensors.sample import SampleClock, sample_count
-from servicebot_cli.simulate.world import motion
+from servicebot_cli.simulate.world import blocking, motion
 from servicebot_cli.simulate.world.contacts import Closest, Placed, Tester, closest, obstacles
 from servicebot_cli.simulate.world.raycast import Mesh
 from servicebot_cli.simulate.world.solids import Solid
@@ -149,9 +150,9 @@ class _Run:
         self.planner = WheelPlanner(scenario.cmd_vel, ctrl, geometry, scenario.duration_s)
         self.dt_s, self.ticks = self.planner.dt_s, self.planner.ticks
         self.arm = _arm_motion(body, scenario, arm_q0, self.dt_s)
-        self.motion = motion.BlockedMotion((start.x_m, start.y_m, start.yaw_rad), self.dt_s,
-                                           [o.name for o in self.tester.world],
-                                           body.shape.links)
+        self.motion = blocking.BlockedMotion((start.x_m, start.y_m, start.yaw_rad), self.dt_s,
+                                             [o.name for o in self.tester.world],
+                                             body.shape.links, self.arm)
         self.odometer = odometry.Odometer(
             self.dt_s, wheel_radius_m=geometry.wheel_radius_m,
             track_m=geometry.track_m * ctrl.wheel_separation_multiplier)
@@ -193,9 +194,8 @@ class _Run:
         body, first = self.body, ticks.start
         stop = None if ticks.stop >= self.ticks else ticks.stop  # None: every sample left
         plan = self.planner.plan(ticks)
-        arm_q = self.arm.advance(np.arange(first, ticks.stop + 1, dtype=np.float64) * self.dt_s)
+        truth, arm_q, contacts = self._ground_truth(first, plan)
         parts = body.shape.transforms_to_base(arm_q)  # (n+1, S, 4, 4), the arm at each boundary
-        truth, contacts = self._ground_truth(first, plan, parts)
         sides = self._wheel_angles(plan)
         odom_path, odom_before = self.odometer.advance(first, plan.left_rad_s, plan.right_rad_s)
         names, positions = _joint_positions(body, sides, arm_q)
@@ -215,12 +215,12 @@ class _Run:
         self.twist_before = (float(truth.linear_m_s[-1]), float(truth.angular_rad_s[-1]))
         return piece
 
-    def _ground_truth(self, first: int, plan: WheelPlan,
-                      parts: FloatArray) -> tuple[motion.Path2D, list[motion.Contact]]:
-        """The base's real motion: wheel speeds through the floor's slip, stopped by obstacles.
+    def _ground_truth(self, first: int,
+                      plan: WheelPlan) -> tuple[motion.Path2D, FloatArray, list[motion.Contact]]:
+        """The base's and the arm's real motion, each held where it would touch an obstacle.
 
-        Any link touching an obstacle (with the arm where it is at that tick) stops the base.
-        ``parts`` holds every part's ``transform_part_to_base`` at the piece's boundaries.
+        The base follows the wheel speeds through the floor's slip. Returns the path, the
+        arm's positions at the piece's boundaries (n+1, J) and the contacts that began.
         """
         body, slip = self.body, self.scenario.slip
         linear, angular = diff_drive.body_twist(
@@ -228,11 +228,11 @@ class _Run:
             wheel_radius_m=body.geometry.wheel_radius_m,
             track_m=body.geometry.track_m * slip.track_factor)
         keep = 1.0 - slip.longitudinal
+        shape, height = body.shape, body.base_height_m
 
-        def collides(ticks: IntArray, x: FloatArray, y: FloatArray,
+        def collides(q: FloatArray, x: FloatArray, y: FloatArray,
                      yaw: FloatArray) -> tuple[IntArray, IntArray]:
-            return self.tester.first_hits(Placed(parts[ticks - first], x, y, yaw,
-                                                 body.base_height_m))
+            return self.tester.first_hits(Placed(shape.transforms_to_base(q), x, y, yaw, height))
 
         return self.motion.advance(first, np.asarray(linear) * keep, np.asarray(angular) * keep,
                                    collides)

@@ -6,7 +6,8 @@ reached: a segment asked for faster than a joint's URDF velocity limit allows is
 it is not, and the points after it come that much later, so the arm passes through each point
 (late) instead of cutting the corner toward the next one. While the arm tracks exactly, whole
 stretches are filled at once; ticks are stepped one by one only while it lags.
-:class:`ArmMotion` follows a run a stretch of ticks at a time.
+:class:`ArmMotion` gives a run's reference and steps; the simulator keeps the arm's state, so that
+an arm held by an obstacle (:mod:`..world.blocking`) follows on from where it was held.
 """
 
 from __future__ import annotations
@@ -68,13 +69,11 @@ def follow(ref: FloatArray, q0: FloatArray, limits: ArmLimits, dt_s: float, *,
            clip_start: bool = True) -> FloatArray:
     """Joint positions at each tick boundary following ``ref`` (shape (n+1, joints)).
 
-    Each tick moves every joint toward the reference by at most ``velocity * dt_s``. The
-    positions start at ``q0``, moved into the limits unless ``clip_start`` is False (a run
-    followed on from where an earlier stretch ended).
+    Each tick moves every joint toward the reference by at most ``velocity * dt_s``
+    (:func:`step`). The positions start at ``q0``, moved into the limits unless
+    ``clip_start`` is False (a run followed on from where an earlier stretch ended).
     """
-    speed = np.where(np.isnan(limits.velocity), np.inf, limits.velocity) * dt_s
-    lower = np.where(np.isnan(limits.lower), -np.inf, limits.lower)
-    upper = np.where(np.isnan(limits.upper), np.inf, limits.upper)
+    speed, lower, upper = _bounds(limits, dt_s)
     ref = np.clip(ref, lower, upper)
     n = len(ref) - 1
     q = np.empty_like(ref)
@@ -94,8 +93,45 @@ def follow(ref: FloatArray, q0: FloatArray, limits: ArmLimits, dt_s: float, *,
     return q
 
 
+def step(q: FloatArray, ref_before: FloatArray, ref_after: FloatArray, limits: ArmLimits,
+         dt_s: float) -> FloatArray:
+    """One tick of :func:`follow` for many rows at once, with the same bits.
+
+    A row on its reference (``ref_before``) whose next reference is reachable in a tick takes
+    it exactly; any other moves toward ``ref_after`` by at most ``velocity * dt_s``.
+
+    Args:
+        q: Positions at the tick's start, shape (P, joints).
+        ref_before: The reference at the tick's start, shape (P, joints).
+        ref_after: The reference at its end, shape (P, joints).
+        limits: The joints' limits.
+        dt_s: Control period [s].
+
+    Returns:
+        Positions at the tick's end, shape (P, joints).
+    """
+    speed, lower, upper = _bounds(limits, dt_s)
+    before, after = np.clip(ref_before, lower, upper), np.clip(ref_after, lower, upper)
+    tracking = np.max(np.abs(q - before), axis=1, initial=0.0) <= _TRACKING
+    slow = ~np.any(np.abs(after - before) > speed * (1 + 1e-9), axis=1)
+    return np.where((tracking & slow)[:, None], after, q + np.clip(after - q, -speed, speed))
+
+
+def _bounds(limits: ArmLimits, dt_s: float) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """The largest step per tick, the lower and the upper limits, with none as infinite."""
+    speed = np.where(np.isnan(limits.velocity), np.inf, limits.velocity) * dt_s
+    lower = np.where(np.isnan(limits.lower), -np.inf, limits.lower)
+    upper = np.where(np.isnan(limits.upper), np.inf, limits.upper)
+    return speed, lower, upper
+
+
 class ArmMotion:
-    """The arm's positions over a run, a stretch of tick boundaries at a time.
+    """The arm controller of a run: its start, its reference over time and its steps.
+
+    An arm without a goal stands where it started (unclipped); one with a goal starts clipped
+    into its limits and follows the reference (:func:`follow`, :func:`step`). The caller
+    keeps the arm's positions, so that an arm held by an obstacle follows on from where it
+    was held.
 
     Args:
         trajectory: The scenario's goal.
@@ -109,21 +145,34 @@ class ArmMotion:
                  limits: ArmLimits, dt_s: float) -> None:
         self.trajectory, self.order, self.q0, self.limits = trajectory, order, q0, limits
         self.dt_s = dt_s
-        self.q: FloatArray | None = None  # where the last stretch ended
+        self.static = not trajectory.points
 
-    def advance(self, times_s: FloatArray) -> FloatArray:
-        """Positions at the tick boundaries ``times_s``, shape (len(times_s), joints).
+    def start(self) -> FloatArray:
+        """The arm's positions at the run's start [rad], shape (joints,)."""
+        if self.static:
+            return np.array(self.q0, dtype=np.float64)
+        _, lower, upper = _bounds(self.limits, self.dt_s)
+        return np.asarray(np.clip(self.q0, lower, upper), dtype=np.float64)
 
-        The first boundary is the one the last stretch ended at.
-        """
+    def references(self, times_s: FloatArray) -> FloatArray:
+        """The reference at ``times_s``, shape (len(times_s), joints)."""
         q0 = self.q0
-        if not self.trajectory.points:
-            return np.broadcast_to(q0, (len(times_s), len(q0))).copy()
         ref = np.broadcast_to(q0, (len(times_s), len(q0))).copy()
+        if self.static:
+            return ref
         own = ArmLimits(self.limits.lower[self.order], self.limits.upper[self.order],
                         self.limits.velocity[self.order])
         ref[:, self.order] = reference(self.trajectory, q0[self.order], times_s, own)
-        q = follow(ref, q0 if self.q is None else self.q, self.limits, self.dt_s,
-                   clip_start=self.q is None)
-        self.q = q[-1].copy()
-        return q
+        return ref
+
+    def follow(self, ref: FloatArray, q: FloatArray) -> FloatArray:
+        """Positions from ``q`` following ``ref`` (the first row is ``q``), shape (n+1, joints)."""
+        if self.static:
+            return np.broadcast_to(q, ref.shape).copy()
+        return follow(ref, q, self.limits, self.dt_s, clip_start=False)
+
+    def step(self, q: FloatArray, ref_before: FloatArray, ref_after: FloatArray) -> FloatArray:
+        """Positions a tick after ``q`` (P, joints) toward the reference (see :func:`step`)."""
+        if self.static:
+            return np.broadcast_to(q, ref_after.shape).copy()
+        return step(q, ref_before, ref_after, self.limits, self.dt_s)

@@ -1,4 +1,4 @@
-r"""Planar motion along exact arcs, and the same motion stopped by obstacles.
+r"""Planar motion along exact arcs.
 
 A body moving at constant forward speed :math:`v` and yaw rate :math:`\omega` for
 :math:`\Delta t` follows an arc; in the body frame at the start of the step it moves
@@ -9,14 +9,13 @@ A body moving at constant forward speed :math:`v` and yaw rate :math:`\omega` fo
 
 (the straight line :math:`\Delta x = v\Delta t` when :math:`\omega = 0`). Steps are composed
 for many ticks at once with cumulative sums, so a stretch of a run is a handful of numpy calls.
-A run is integrated a stretch at a time (:class:`Integrator`, :class:`BlockedMotion`): the
-sums run on from one stretch to the next, so the poses have the same bits as one sum over
-the whole run.
+A run is integrated a stretch at a time (:class:`Integrator`; :mod:`.blocking` stops it at
+obstacles): the sums run on from one stretch to the next, so the poses have the same bits as
+one sum over the whole run.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -55,7 +54,10 @@ class Path2D:
 
 @dataclass(frozen=True)
 class Contact:
-    """A link touched an obstacle: the base's step starting at ``time_s`` was refused."""
+    """A link touched an obstacle: a step of the base or the arm was refused.
+
+    The step began at ``time_s``, with the base at ``x_m, y_m, yaw_rad``.
+    """
 
     time_s: float
     obstacle: str
@@ -115,81 +117,6 @@ class Integrator:
         self.sums = (float(sums[steps, 0]), float(sums[steps, 1]), float(sums[steps, 2]))
 
 
-Collides = Callable[[IntArray, FloatArray, FloatArray, FloatArray], tuple[IntArray, IntArray]]
-"""Given ticks and the base poses at them: per pose, the obstacle touched and the link touching
-it (indices into the names), -1 where free. The tick says where the arm is."""
-
-
-class BlockedMotion:
-    """The base's motion with steps into obstacles refused, a stretch of ticks at a time.
-
-    A step that would put any link into an obstacle leaves the base where it was (its
-    wheels still turn) and logs a contact naming the obstacle and the link. While blocked,
-    each later step is tried from the resting pose; the first one that is free (turning or
-    backing away) resumes the motion.
-    """
-
-    def __init__(self, start: tuple[float, float, float], dt_s: float, names: list[str],
-                 links: Sequence[str]) -> None:
-        self.dt_s, self.names, self.links = dt_s, names, links
-        self.pose = start
-        self.integrator = Integrator(start)
-        self.waiting = False  # resting against an obstacle
-
-    def advance(self, first_tick: int, linear_m_s: FloatArray, angular_rad_s: FloatArray,
-                collides: Collides) -> tuple[Path2D, list[Contact]]:
-        """The next ticks, from ``first_tick``: the path and the contacts that began.
-
-        ``collides`` names the obstacle and link (indices into ``names`` and ``links``)
-        each pose at those ticks would touch.
-        """
-        n = len(linear_m_s)
-        lin, ang = np.array(linear_m_s, float), np.array(angular_rad_s, float)
-        x, y, yaw = np.empty(n + 1), np.empty(n + 1), np.empty(n + 1)
-        x[0], y[0], yaw[0] = self.pose
-        contacts: list[Contact] = []
-        k = 0
-        while k < n:
-            if self.waiting:
-                k = self._wait_until_free(first_tick, k, (x, y, yaw), lin, ang, collides)
-                continue
-            px, py, pyaw, sums = self.integrator.trial(lin[k:], ang[k:], self.dt_s)
-            hit, link = collides(np.arange(first_tick + k + 1, first_tick + n + 1),
-                                      px, py, pyaw)
-            blocked = np.flatnonzero(hit >= 0)
-            stop = n if not len(blocked) else k + int(blocked[0])
-            x[k + 1:stop + 1], y[k + 1:stop + 1] = px[:stop - k], py[:stop - k]
-            yaw[k + 1:stop + 1] = pyaw[:stop - k]
-            if stop == n:
-                self.integrator.keep(sums, n - k)
-                break
-            tick = first_tick + stop
-            contacts.append(Contact(tick * self.dt_s, self.names[int(hit[blocked[0]])],
-                                    self.links[int(link[blocked[0]])],
-                                    float(x[stop]), float(y[stop]), float(yaw[stop])))
-            self.waiting, k = True, stop
-        self.pose = (float(x[n]), float(y[n]), float(yaw[n]))
-        moved_lin, moved_ang = _followed_twist(x, y, yaw, lin, ang)
-        return Path2D(self.dt_s, x, y, yaw, moved_lin, moved_ang, first_tick), contacts
-
-    def _wait_until_free(self, first_tick: int, k: int,
-                         poses: tuple[FloatArray, FloatArray, FloatArray], lin: FloatArray,
-                         ang: FloatArray, collides: Collides) -> int:
-        """Hold the pose at ``k`` until a step from it is free; return that step's index."""
-        n, (x, y, yaw) = len(lin), poses
-        dx, dy, dyaw = arc_step(lin[k:], ang[k:], self.dt_s)
-        c, s = np.cos(yaw[k]), np.sin(yaw[k])
-        hit, _ = collides(np.arange(first_tick + k + 1, first_tick + n + 1),
-                               x[k] + c * dx - s * dy, y[k] + s * dx + c * dy, yaw[k] + dyaw)
-        ok = np.flatnonzero((hit < 0) & ((lin[k:] != 0) | (ang[k:] != 0)))
-        resume = n if not len(ok) else k + int(ok[0])
-        x[k + 1:resume + 1], y[k + 1:resume + 1], yaw[k + 1:resume + 1] = x[k], y[k], yaw[k]
-        if resume < n:
-            self.waiting = False
-            self.integrator.restart((float(x[k]), float(y[k]), float(yaw[k])))
-        return resume
-
-
 def pose_at(path: Path2D, times_s: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
     """Poses at arbitrary times, exact along each tick's arc (clamped to the path)."""
     k = path.tick_index(times_s)
@@ -197,10 +124,3 @@ def pose_at(path: Path2D, times_s: FloatArray) -> tuple[FloatArray, FloatArray, 
     dx, dy, dyaw = arc_step(path.linear_m_s[k], path.angular_rad_s[k], tau)
     c, s = np.cos(path.yaw_rad[k]), np.sin(path.yaw_rad[k])
     return path.x_m[k] + c * dx - s * dy, path.y_m[k] + s * dx + c * dy, path.yaw_rad[k] + dyaw
-
-
-def _followed_twist(x: FloatArray, y: FloatArray, yaw: FloatArray, lin: FloatArray,
-                    ang: FloatArray) -> tuple[FloatArray, FloatArray]:
-    """The commanded twist where the base moved, zero where it was held."""
-    held = (np.diff(x) == 0) & (np.diff(y) == 0) & (np.diff(yaw) == 0)
-    return np.where(held, 0.0, lin), np.where(held, 0.0, ang)
