@@ -29,8 +29,9 @@ import numpy.typing as npt
 
 from servicebot_cli.batch.fk_rows import RESULT_COLUMNS, FkBatch
 from servicebot_cli.batch.formatting import Formatter, format_rows
+from servicebot_cli.batch.line_chunks import numbered, numbers, split_cells
 from servicebot_cli.batch.policy import OnError, Tally
-from servicebot_cli.batch.reading import Source, csv_rows, meaningful
+from servicebot_cli.batch.reading import Source, csv_rows
 from servicebot_cli.batch.stream import BatchSummary, RowSink, Warn, summarise, write_results
 
 FloatArray = npt.NDArray[np.float64]
@@ -63,7 +64,7 @@ def stream_csv(batch: FkBatch, source: Source, handle: IO[str], sink: RowSink, *
     with sink.open(batch.columns()) as write, contextlib.ExitStack() as stack:
         formatter: Formatter | None = None  # made at the first chunk of numbers
         while raw := list(itertools.islice(handle, CHUNK_LINES)):
-            lines = _numbered(raw, number)
+            lines = numbered(raw, number)
             number += len(raw)
             values = parser.values([text for _, text in lines]) if lines else None
             if values is None:  # line by line: the messages name the line
@@ -94,33 +95,9 @@ class ChunkParser:
 
     def values(self, texts: list[str]) -> FloatArray | None:
         """One value per joint and line [rad or m], limits checked; None: go line by line."""
-        delimiter = self.delimiter
-        joined = delimiter.join(texts)
-        cells = joined.split(delimiter)
-        if '"' in joined or len(cells) != self.width * len(texts) or \
-                set(map(str.count, texts, itertools.repeat(delimiter))) != {self.width - 1}:
-            return None
-        try:  # numpy reads a str as float() does, a little faster
-            if len(self.joint_columns) == self.width:
-                given = np.array(cells, dtype=np.float64).reshape(len(texts), self.width)
-            else:
-                given = np.array([cells[k::self.width] for k in self.joint_columns],
-                                 dtype=np.float64).reshape(len(self.joints), -1).T
-        except ValueError:
-            return None
-        if not np.isfinite(given).all():
-            return None
-        return self.batch.chunk_vectors(given, self.joints)
-
-
-def _numbered(raw: list[str], before: int) -> list[tuple[int, str]]:
-    """``(line number, text)`` of the meaningful lines of ``raw``, which follow line ``before``."""
-    text = "".join(raw)
-    texts = text.splitlines()
-    if "#" not in text and len(texts) == len(raw) and not any(map(str.isspace, raw)):
-        return list(zip(range(before + 1, before + 1 + len(raw)), texts, strict=True))
-    return [(before + k, line.rstrip("\r\n")) for k, line in enumerate(raw, start=1)
-            if meaningful(line)]
+        cells = split_cells(texts, self.delimiter, self.width)
+        given = None if cells is None else numbers(cells, self.width, self.joint_columns)
+        return None if given is None else self.batch.chunk_vectors(given, self.joints)
 
 
 def jsonl_template(frames: Sequence[str], unit: str) -> str:

@@ -23,10 +23,11 @@ import numpy.typing as npt
 from servicebot_cli.batch.reading import Row
 from servicebot_cli.batch.stream import RowKind
 from servicebot_cli.common.errors import ServicebotError
-from servicebot_cli.kinematics.ik import IkSession
+from servicebot_cli.kinematics.ik import IkOutcome, IkSession
 from servicebot_cli.kinematics.inverse import IkTarget
 from servicebot_cli.kinematics.json_types import JsonObject
 from servicebot_cli.kinematics.targets import TARGET_KEYS, BadTarget, row_target
+from servicebot_cli.kinematics.user_joints import angular
 
 _TAIL = ("position_error_m", "orientation_error_rad", "iterations", "attempts", "solutions",
          "solve_time_s", "hint")
@@ -84,32 +85,58 @@ class IkBatch:
         Targets are solved :data:`CHUNK` at a time (see :meth:`IkSession.solve_series`), so
         memory stays bounded; a bad line ends the run only after the lines before it.
         """
-        start = self.session.start
         iterator = iter(items)
         while True:
             chunk: list[tuple[Row, IkTarget]] = []
             try:
                 chunk.extend(itertools.islice(iterator, CHUNK))
             except ServicebotError:  # a bad line under --on-error stop: the lines before it
-                yield from self._rows(chunk, start, kind)
+                yield from self._rows(chunk, kind)
                 raise
             if not chunk:
                 return
-            yield from self._rows(chunk, start, kind)
-            start = self._start
+            yield from self._rows(chunk, kind)
 
-    def _rows(self, chunk: list[tuple[Row, IkTarget]], start: FloatArray,
-              kind: RowKind) -> Iterator[JsonObject]:
-        outcomes = self.session.solve_series([target for _, target in chunk], start)
-        for (row, _), outcome in zip(chunk, outcomes, strict=True):
+    def solve(self, targets: Sequence[IkTarget]) -> list[IkOutcome]:
+        """Solve ``targets`` in turn, from the last line's solution; note the failures' index.
+
+        The next call goes on from this one's last solution.
+        """
+        outcomes = self.session.solve_series(targets, self._start)
+        for outcome in outcomes:
             if outcome.success:
-                start = outcome.result.q
-            else:
-                self.failed.append(row.line)
-            values = self.session.values(outcome)
-            yield {"line": row.line, **values} if kind == "jsonl" else \
-                self._flat(row.line, values)
-        self._start = start
+                self._start = outcome.result.q
+        return outcomes
+
+    def row(self, line: int, outcome: IkOutcome, kind: RowKind) -> JsonObject:
+        """The result row of one line (and the line noted when its target was not reached)."""
+        if not outcome.success:
+            self.failed.append(line)
+        values = self.session.values(outcome)
+        return {"line": line, **values} if kind == "jsonl" else self._flat(line, values)
+
+    def joint_table(self, qs: Sequence[FloatArray]) -> FloatArray:
+        """Joint values in the user's units, one row per configuration, as :meth:`row` shows.
+
+        Args:
+            qs: Full configurations.
+
+        Returns:
+            Shape (len(qs), joints), the values :func:`~servicebot_cli.kinematics.ik.outcome_values`
+            gives, bit for bit.
+        """
+        space = self.session.space
+        if "continuous" in space.types:  # atan2 of (cos, sin), one configuration at a time
+            values = np.array([space.from_q(q) for q in qs]).reshape(len(qs), -1)
+        else:
+            values = np.array(qs).reshape(len(qs), -1)[:, list(space.idx_q)]
+        return np.where(angular(space), np.degrees(values), values) if self.session.deg \
+            else values
+
+    def _rows(self, chunk: list[tuple[Row, IkTarget]], kind: RowKind) -> Iterator[JsonObject]:
+        outcomes = self.solve([target for _, target in chunk])
+        for (row, _), outcome in zip(chunk, outcomes, strict=True):
+            yield self.row(row.line, outcome, kind)
 
     def _flat(self, line: int, values: JsonObject) -> JsonObject:
         flat: JsonObject = {"line": line, "success": values["success"]}

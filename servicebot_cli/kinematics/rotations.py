@@ -104,6 +104,32 @@ def matrix_from_quaternion(xyzw: FloatArray) -> FloatArray:
     ])
 
 
+def matrices_from_quaternions(xyzw: FloatArray) -> FloatArray | None:
+    """Rotation matrices of many quaternions, as :func:`matrix_from_quaternion` makes each.
+
+    The same numbers, bit for bit: each length is ``sqrt(q.dot(q))``, as ``np.linalg.norm``
+    of one quaternion computes it, and the rest are the same element-wise operations.
+
+    Args:
+        xyzw: Quaternions ``(x, y, z, w)``, shape (m, 4), any length.
+
+    Returns:
+        Shape (m, 3, 3); None when one of them has (nearly) zero length or is not finite
+        (:func:`matrix_from_quaternion` of that one says which).
+    """
+    q = np.ascontiguousarray(xyzw, dtype=np.float64)
+    dot = np.ndarray.dot
+    norm = np.sqrt(np.array([dot(row, row) for row in q]).reshape(len(q)))
+    if not (np.isfinite(norm).all() and (norm >= 1e-9).all()):
+        return None
+    x, y, z, w = (q / norm[:, None]).T
+    return np.stack([
+        1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w),
+        2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w),
+        2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y),
+    ], axis=-1).reshape(len(q), 3, 3)
+
+
 def rpy_rate_rows(rpy_rad: FloatArray) -> FloatArray:
     r"""Rows mapping angular velocity (world frame) to roll, pitch, yaw rates.
 
