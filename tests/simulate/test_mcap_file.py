@@ -103,3 +103,29 @@ def test_messages_added_in_batches_give_the_same_file():
     writer.finish()
     assert buffer.getvalue() == whole
     assert len(make_reader(io.BytesIO(whole)).get_summary().chunk_indexes) > 3
+
+
+def test_payloads_as_rows_in_any_order_give_the_same_file():
+    from servicebot_cli.simulate.bag.mcap_file import Payloads
+
+    rng = np.random.default_rng(11)
+    n = 300
+    channel_ids = rng.integers(0, 3, n).tolist()
+    times = np.cumsum(rng.integers(0, 3, n)).tolist()
+    widths = [0, 5, 40]  # an empty payload, short and long ones
+    blocks = [rng.integers(0, 256, (n, w), dtype=np.uint8) for w in widths]
+    block = rng.integers(0, 3, n)
+    row = rng.permutation(n)  # rows taken out of order, some never
+    payloads = [bytes(blocks[b][r]) for b, r in zip(block, row, strict=True)]
+    as_bytes = _write(channel_ids, times, payloads, chunk_size=700)
+    buffer = io.BytesIO()
+    sequences = np.zeros(n, dtype=np.uint32)
+    for channel in set(channel_ids):
+        mine = np.flatnonzero(np.asarray(channel_ids) == channel)
+        sequences[mine] = np.arange(len(mine))
+    write_mcap(buffer, CHANNELS, np.asarray(channel_ids, dtype=np.uint16), sequences,
+               np.asarray(times, dtype=np.uint64), Payloads(blocks, block, row),
+               profile="ros2", library="test", chunk_size=700)
+    assert buffer.getvalue() == as_bytes
+    read = [m.data for _, _, m in make_reader(io.BytesIO(as_bytes)).iter_messages()]
+    assert read == payloads

@@ -3,7 +3,8 @@
 A stream's messages share one layout: the same frame names, the same number of rays, joints
 or transforms. :class:`Layout` computes that layout once (little-endian CDR with its 4-byte
 encapsulation header, each primitive aligned to its size counted from the end of the header)
-as a numpy structured type; a stream is then filled column by column and cut into messages.
+as a numpy structured type; a stream is then filled column by column, and its messages are
+the rows of one byte array.
 """
 
 from __future__ import annotations
@@ -102,7 +103,9 @@ def stamps_ns(times_s: npt.NDArray[np.float64]) -> npt.NDArray[np.int64]:
     return np.round(np.asarray(times_s) * 1e9).astype(np.int64)
 
 
-def split(records: npt.NDArray[np.void]) -> list[bytes]:
-    """One ``bytes`` per message."""
-    data, size = records.tobytes(), records.dtype.itemsize
-    return [data[i:i + size] for i in range(0, len(data), size)]
+def rows(records: npt.NDArray[np.void]) -> npt.NDArray[np.uint8]:
+    """The messages' bytes, one row per message: shape (messages, message size).
+
+    A view on ``records`` (their bytes between fields included), not a copy.
+    """
+    return records.view(np.uint8).reshape(len(records), records.dtype.itemsize)

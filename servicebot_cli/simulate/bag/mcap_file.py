@@ -8,10 +8,12 @@ libraries) seek through the indexes. Only the chunk being filled is held in memo
 file's bytes do not depend on how the messages are split into batches.
 
 Why not the ``mcap`` package's writer: it builds each message record in Python, about 4 us a
-message; a three-minute run has 60 000 of them, half the simulator's time. Here the record
-headers of a batch are one numpy array and a chunk is one ``bytes.join``. Full chunks are
-joined, compressed, checksummed and written by one worker thread, in order, while the caller
-goes on (zstd and zlib let go of the GIL); at most :data:`PENDING_CHUNKS` wait for it.
+message; a three-minute run has 80 000 of them, half the simulator's time. Here payloads come
+as :class:`Payloads`, rows of a few byte arrays (a stream's messages have one size); the
+records of a batch (headers and payloads) are copied into one byte array a block of rows at a
+time, with no Python object per message, and a chunk is a slice of it. Full chunks
+are joined, compressed, checksummed and written by one worker thread, in order, while the
+caller goes on (zstd and zlib let go of the GIL); at most :data:`PENDING_CHUNKS` wait for it.
 """
 
 from __future__ import annotations
@@ -38,6 +40,49 @@ _MESSAGE_HEAD = np.dtype([("opcode", "u1"), ("length", "<u8"), ("channel", "<u2"
 _INDEX_ENTRY = np.dtype([("log_time", "<u8"), ("offset", "<u8")])
 PENDING_CHUNKS = 1
 """Full chunks at most waiting for the writing thread (each about ``chunk_size`` bytes)."""
+
+
+ByteRows = npt.NDArray[np.uint8]
+IntArray = npt.NDArray[np.int64]
+
+
+@dataclass(frozen=True)
+class Payloads:
+    """Serialized messages, in order, as rows of a few byte arrays.
+
+    Message ``i`` is ``blocks[block[i]][row[i]]``.
+
+    Attributes:
+        blocks: Byte arrays, each of shape (messages, message size).
+        block: The block of each message.
+        row: The row of each message in its block.
+    """
+
+    blocks: Sequence[ByteRows]
+    block: IntArray
+    row: IntArray
+
+    def __len__(self) -> int:
+        return len(self.block)
+
+    def sizes(self) -> IntArray:
+        """Bytes of each message."""
+        widths = np.array([b.shape[1] for b in self.blocks], dtype=np.int64)
+        return widths[self.block] if len(widths) else np.zeros(0, dtype=np.int64)
+
+    @classmethod
+    def of(cls, payloads: Sequence[bytes]) -> Payloads:
+        """``payloads`` as rows: one block per distinct size."""
+        lengths = np.fromiter(map(len, payloads), dtype=np.int64, count=len(payloads))
+        sizes, block = np.unique(lengths, return_inverse=True)
+        row = np.zeros(len(payloads), dtype=np.int64)
+        blocks = []
+        for index, size in enumerate(sizes.tolist()):
+            mine = np.flatnonzero(block == index)
+            row[mine] = np.arange(len(mine))
+            data = b"".join([payloads[k] for k in mine.tolist()])
+            blocks.append(np.frombuffer(data, dtype=np.uint8).reshape(len(mine), size))
+        return cls(blocks, block.reshape(-1).astype(np.int64), row)
 
 
 @dataclass(frozen=True)
@@ -114,7 +159,7 @@ class McapWriter:
         self.written = 0  # record bytes added so far
         self.open_chunk = -1  # written // chunk_size of the chunk being filled
         self.heads: list[np.ndarray] = []  # the chunk being filled: record headers,
-        self.payloads: list[bytes] = []  # payloads and offsets in it
+        self.records: list[ByteRows] = []  # its records, end to end, and their offsets
         self.offsets: list[npt.NDArray[np.int64]] = []
         self.chunk_indexes: list[bytes] = []
         self.pending: list[Future[bytes]] = []  # chunks given to the thread, in file order
@@ -123,7 +168,8 @@ class McapWriter:
         self.first_time = self.last_time = 0
 
     def add(self, channel_ids: npt.NDArray[np.integer], sequences: npt.NDArray[np.integer],
-            log_times_ns: npt.NDArray[np.integer], payloads: Sequence[bytes]) -> None:
+            log_times_ns: npt.NDArray[np.integer],
+            payloads: Payloads | Sequence[bytes]) -> None:
         """Add messages after those added before (``log_times_ns`` non-decreasing).
 
         Args:
@@ -132,15 +178,18 @@ class McapWriter:
             log_times_ns: Time of each message [ns]; also its publish time.
             payloads: Serialized messages.
         """
+        if not isinstance(payloads, Payloads):
+            payloads = Payloads.of(payloads)
         if not len(payloads):
             return
         heads = np.zeros(len(payloads), dtype=_MESSAGE_HEAD)
-        sizes = np.fromiter(map(len, payloads), dtype=np.int64, count=len(payloads))
+        sizes = payloads.sizes()
         heads["opcode"], heads["length"] = _MESSAGE, 22 + sizes
         heads["channel"], heads["sequence"] = channel_ids, sequences
         heads["log_time"] = heads["publish_time"] = log_times_ns
-        starts = self.written + np.concatenate(([0], np.cumsum(_MESSAGE_HEAD.itemsize + sizes)))
-        self.written = int(starts[-1])
+        offsets = np.concatenate(([0], np.cumsum(_MESSAGE_HEAD.itemsize + sizes)))
+        records = _records(heads, payloads, offsets)
+        starts = self.written + offsets
         groups = starts[:-1] // self.chunk_size
         bounds = [0, *(np.flatnonzero(np.diff(groups)) + 1).tolist(), len(payloads)]
         for a, b in itertools.pairwise(bounds):
@@ -148,8 +197,9 @@ class McapWriter:
                 self._write_open_chunk()
                 self.open_chunk = int(groups[a])
             self.heads.append(heads[a:b])
-            self.payloads.extend(payloads[a:b])
+            self.records.append(records[offsets[a]:offsets[b]])
             self.offsets.append(starts[a:b])
+        self.written = int(starts[-1])
         if not self.counts.any():
             self.first_time = int(log_times_ns[0])
         self.last_time = int(log_times_ns[-1])
@@ -158,7 +208,7 @@ class McapWriter:
 
     def _write_open_chunk(self) -> None:
         """Give the chunk being filled to the writing thread (after the ones before it)."""
-        if not self.payloads:
+        if not self.records:
             return
         offsets = np.concatenate(self.offsets)
         if self.thread is None:
@@ -166,9 +216,9 @@ class McapWriter:
         while len(self.pending) >= PENDING_CHUNKS:
             self.chunk_indexes.append(self.pending.pop(0).result())
         self.pending.append(self.thread.submit(
-            _write_chunk, self.out, np.concatenate(self.heads), self.payloads,
+            _write_chunk, self.out, np.concatenate(self.heads), self.records,
             offsets - offsets[0], self.compressor))
-        self.heads, self.payloads, self.offsets = [], [], []
+        self.heads, self.records, self.offsets = [], [], []
 
     def close(self) -> None:
         """Stop the writing thread: chunks not begun are dropped (for a run ended early)."""
@@ -205,7 +255,7 @@ class McapWriter:
 
 def write_mcap(handle: BinaryIO, channels: Sequence[Channel],
                channel_ids: npt.NDArray[np.integer], sequences: npt.NDArray[np.integer],
-               log_times_ns: npt.NDArray[np.integer], payloads: Sequence[bytes], *,
+               log_times_ns: npt.NDArray[np.integer], payloads: Payloads | Sequence[bytes], *,
                profile: str, library: str, chunk_size: int = 1 << 20) -> None:
     """Write one MCAP file of ``payloads``, which must be in ``log_times_ns`` order.
 
@@ -239,19 +289,43 @@ def _schemas_and_channels(channels: Sequence[Channel]) -> tuple[list[bytes], lis
 class Compressor(Protocol):
     """A chunk compressor (``zstandard.ZstdCompressor``)."""
 
-    def compress(self, data: bytes) -> bytes:
+    def compress(self, data: memoryview) -> bytes:
         """``data`` compressed, as one frame."""
         ...
 
 
-def _write_chunk(out: _Output, heads: np.ndarray, payloads: Sequence[bytes],
+def _records(heads: np.ndarray, payloads: Payloads, offsets: IntArray) -> ByteRows:
+    """The messages' records (``heads[i]`` then payload ``i``) end to end, one byte array.
+
+    Record ``i`` starts at ``offsets[i]``; ``offsets[-1]`` is the total. A block's rows go
+    to their places at once, through a view whose row ``k`` is the array from byte ``k`` on.
+    """
+    flat = np.empty(int(offsets[-1]), dtype=np.uint8)
+    starts = offsets[:-1]
+    _place(flat, starts, heads.view(np.uint8).reshape(len(heads), _MESSAGE_HEAD.itemsize))
+    for index, block in enumerate(payloads.blocks):
+        mine = np.flatnonzero(payloads.block == index)
+        if len(mine) and block.shape[1]:
+            rows = payloads.row[mine]
+            in_order = len(rows) == len(block) and bool(np.all(np.diff(rows) == 1)) \
+                and rows[0] == 0
+            _place(flat, starts[mine] + _MESSAGE_HEAD.itemsize,
+                   block if in_order else block[rows])
+    return flat
+
+
+def _place(flat: ByteRows, starts: IntArray, rows: ByteRows) -> None:
+    """Copy row ``i`` of ``rows`` to ``flat[starts[i]:starts[i] + width]`` (no overlaps)."""
+    width = rows.shape[1]
+    windows = np.lib.stride_tricks.as_strided(flat, shape=(len(flat) - width + 1, width),
+                                              strides=(1, 1), writeable=True)
+    windows[starts] = rows
+
+
+def _write_chunk(out: _Output, heads: np.ndarray, parts: Sequence[ByteRows],
                  offsets: npt.NDArray[np.int64], compressor: Compressor) -> bytes:
-    """Write one chunk and its message indexes; returns its chunk index record."""
-    head_bytes, width = heads.tobytes(), _MESSAGE_HEAD.itemsize
-    parts: list[bytes] = [b""] * (2 * len(payloads))
-    parts[0::2] = [head_bytes[k:k + width] for k in range(0, len(head_bytes), width)]
-    parts[1::2] = payloads
-    records = b"".join(parts)
+    """Write one chunk (its records in ``parts``) and its message indexes; returns its index."""
+    records = (parts[0] if len(parts) == 1 else np.concatenate(parts)).data
     compressed = compressor.compress(records)
     first, last = int(heads["log_time"][0]), int(heads["log_time"][-1])
     chunk = _record(_CHUNK, struct.pack("<QQQI", first, last, len(records), zlib.crc32(records))

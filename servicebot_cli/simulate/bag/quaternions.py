@@ -12,10 +12,16 @@ FloatArray = npt.NDArray[np.float64]
 
 
 def about_axis(axis: FloatArray, angle_rad: FloatArray) -> FloatArray:
-    """Quaternions of rotations by ``angle_rad`` (N,) about unit ``axis`` (3,), shape (N, 4)."""
+    """Quaternions of rotations by ``angle_rad`` about unit ``axis``.
+
+    ``axis`` (..., 3) and ``angle_rad`` broadcast against each other without the axis'
+    last dimension: an axis (3,) and angles (N,) give (N, 4); axes (J, 3) and angles (N, J)
+    give (N, J, 4).
+    """
     half = np.asarray(angle_rad) / 2.0
     s = np.sin(half)
-    return np.column_stack((axis[0] * s, axis[1] * s, axis[2] * s, np.cos(half)))
+    return np.stack((axis[..., 0] * s, axis[..., 1] * s, axis[..., 2] * s,
+                     np.broadcast_to(np.cos(half), s.shape)), axis=-1)
 
 
 def yaw(yaw_rad: FloatArray) -> FloatArray:

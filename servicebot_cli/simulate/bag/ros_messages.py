@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
@@ -27,7 +28,12 @@ from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.scenario.camera import CameraImages
 from servicebot_cli.simulate.simulator import SimResult
 
+if TYPE_CHECKING:
+    from servicebot_cli.description.elements import Joint
+
 FloatArray = npt.NDArray[np.float64]
+ByteRows = npt.NDArray[np.uint8]
+"""Serialized messages of one stream, one row each: shape (messages, message size)."""
 ODOM_TOPIC, TF_TOPIC, TF_STATIC_TOPIC = "/diff_controller/odom", "/tf", "/tf_static"
 JOINT_STATES_TOPIC, ODOM_FRAME = "/joint_states", "odom"
 CLOCK_TOPIC, DESCRIPTION_TOPIC = "/clock", "/robot_description"
@@ -40,14 +46,15 @@ NO_IMAGES = CameraImages()
 class Publisher:
     """One ROS node's messages on one topic, and the QoS the node offers.
 
-    ``times`` gives a piece's message stamps [s] and ``serialize`` their CDR payloads.
+    ``times`` gives a piece's message stamps [s] and ``serialize`` their CDR payloads, one
+    row of bytes per message (a publisher's messages all have one size).
     """
 
     topic: str
     type: str
     qos: qos.Qos
     times: Callable[[SimResult], FloatArray]
-    serialize: Callable[[SimResult], list[bytes]]
+    serialize: Callable[[SimResult], ByteRows]
 
 
 @dataclass(frozen=True)
@@ -79,7 +86,8 @@ def publishers(body: SimRobot, images: CameraImages = NO_IMAGES) -> list[Publish
                      lambda r: r.odometry.times_s, _odometry),
            Publisher(TF_TOPIC, TF_TYPE, qos.SYSTEM_DEFAULTS, lambda r: r.odometry.times_s,
                      _tf_base),
-           Publisher(TF_TOPIC, TF_TYPE, qos.DYNAMIC_TF, lambda r: r.joints.times_s, _tf_joints),
+           Publisher(TF_TOPIC, TF_TYPE, qos.DYNAMIC_TF, lambda r: r.joints.times_s,
+                     _JointTransforms()),
            Publisher(JOINT_STATES_TOPIC, "sensor_msgs/msg/JointState", qos.SYSTEM_DEFAULTS,
                      lambda r: r.joints.times_s, _joint_states)]
     if body.lidar is not None:
@@ -129,15 +137,15 @@ def _tick_times(result: SimResult) -> FloatArray:
 
 
 def _serialize(layout: cdr.Layout, times: FloatArray,
-               fill: Mapping[str, FloatArray | float]) -> list[bytes]:
+               fill: Mapping[str, FloatArray | float]) -> ByteRows:
     records = layout.records(len(times))
     cdr.set_stamps(records, times)
     for name, values in fill.items():
         records[name] = values
-    return cdr.split(records)
+    return cdr.rows(records)
 
 
-def _clock(result: SimResult) -> list[bytes]:
+def _clock(result: SimResult) -> ByteRows:
     """Simulated time at every control tick, from 0 to the end of the run."""
     layout = cdr.Layout()
     layout.field("sec", "<i4")
@@ -145,14 +153,14 @@ def _clock(result: SimResult) -> list[bytes]:
     return _serialize(layout, _tick_times(result), {})
 
 
-def _robot_description(result: SimResult) -> list[bytes]:
+def _robot_description(result: SimResult) -> ByteRows:
     """The URDF the run used, once at time 0 (transient local: late subscribers get it)."""
     layout = cdr.Layout()
     layout.string(result.body.robot.xml_text)
-    return cdr.split(layout.records(len(_once(result))))
+    return cdr.rows(layout.records(len(_once(result))))
 
 
-def _scan(result: SimResult) -> list[bytes]:
+def _scan(result: SimResult) -> ByteRows:
     scans = result.scans
     assert scans is not None
     spec, rays = scans.spec, len(scans.angles_rad)
@@ -171,7 +179,7 @@ def _scan(result: SimResult) -> list[bytes]:
         "ranges": scans.ranges_m.astype(np.float32)})
 
 
-def _imu(result: SimResult) -> list[bytes]:
+def _imu(result: SimResult) -> ByteRows:
     imu = result.imu
     assert imu is not None
     layout = cdr.Layout()
@@ -188,7 +196,7 @@ def _imu(result: SimResult) -> list[bytes]:
         "linear_acceleration_covariance": np.diag(imu.linear_acceleration_variance).ravel()})
 
 
-def _odometry(result: SimResult) -> list[bytes]:
+def _odometry(result: SimResult) -> ByteRows:
     odom = result.odometry
     layout = cdr.Layout()
     layout.header(ODOM_FRAME)
@@ -207,7 +215,7 @@ def _odometry(result: SimResult) -> list[bytes]:
         "angular": np.column_stack((zeros, zeros, odom.angular_rad_s))})
 
 
-def _joint_states(result: SimResult) -> list[bytes]:
+def _joint_states(result: SimResult) -> ByteRows:
     joints = result.joints
     layout = cdr.Layout()
     layout.header("")
@@ -219,7 +227,7 @@ def _joint_states(result: SimResult) -> list[bytes]:
                       {"position": joints.positions, "velocity": joints.velocities})
 
 
-def _camera_info(result: SimResult) -> list[bytes]:
+def _camera_info(result: SimResult) -> ByteRows:
     camera, spec = result.camera, result.body.camera
     assert camera is not None and spec is not None
     layout = cdr.Layout()
@@ -238,23 +246,23 @@ def _camera_info(result: SimResult) -> list[bytes]:
         "r": np.eye(3).ravel(), "p": np.array(camera.p)})
 
 
-def _colour_images(result: SimResult) -> list[bytes]:
+def _colour_images(result: SimResult) -> ByteRows:
     """``rgb8`` images: 3 bytes a pixel, rows top to bottom."""
     return _images(result, "rgb8", 3, [f.rgb.reshape(-1) for f in result.frames])
 
 
-def _depth_images(result: SimResult) -> list[bytes]:
+def _depth_images(result: SimResult) -> ByteRows:
     """``32FC1`` depth images [m] along the optical axis, little-endian float32."""
     return _images(result, "32FC1", 4,
                    [f.depth_m.astype("<f4").reshape(-1).view(np.uint8) for f in result.frames])
 
 
 def _images(result: SimResult, encoding: str, pixel_bytes: int,
-            data: list[npt.NDArray[np.uint8]]) -> list[bytes]:
+            data: list[npt.NDArray[np.uint8]]) -> ByteRows:
     camera, mounted = result.camera, result.body.camera
     assert camera is not None and mounted is not None
     if not data:
-        return []
+        return np.zeros((0, 0), dtype=np.uint8)
     layout = cdr.Layout()
     layout.header(mounted.spec.frame or result.body.root_link)
     layout.constant("<I", camera.height_px)
@@ -280,19 +288,20 @@ def _transforms(frames: list[tuple[str, str]]) -> cdr.Layout:
 
 
 def _tf_messages(frames: list[tuple[str, str]], times: FloatArray,
-                 translations: list[FloatArray], quaternions: list[FloatArray]) -> list[bytes]:
+                 translations: list[FloatArray], quaternions: list[FloatArray]) -> ByteRows:
     layout = _transforms(frames)
     records = layout.records(len(times))
     stamps = cdr.stamps_ns(times)
+    sec, nanosec = stamps // 1_000_000_000, stamps % 1_000_000_000
     for i in range(len(frames)):
-        records[f"sec{i}"] = stamps // 1_000_000_000
-        records[f"nanosec{i}"] = stamps % 1_000_000_000
+        records[f"sec{i}"] = sec
+        records[f"nanosec{i}"] = nanosec
         records[f"translation{i}"] = translations[i]
         records[f"rotation{i}"] = quaternions[i]
-    return cdr.split(records)
+    return cdr.rows(records)
 
 
-def _tf_base(result: SimResult) -> list[bytes]:
+def _tf_base(result: SimResult) -> ByteRows:
     """The base in ``odom``, as the drive controller publishes it with its odometry."""
     odom = result.odometry
     zeros = np.zeros_like(odom.x_m)
@@ -301,26 +310,63 @@ def _tf_base(result: SimResult) -> list[bytes]:
                         [rotations.yaw(odom.yaw_rad)])
 
 
-def _tf_joints(result: SimResult) -> list[bytes]:
-    """Every movable joint's transform, as robot_state_publisher sends them."""
-    joints, robot = result.joints, result.body.robot
-    frames, translations, quaternions = [], [], []
-    for i, name in enumerate(joints.names):
-        joint = robot.joint(name)
+@dataclass(frozen=True)
+class _MovingJoint:
+    """What does not change with a movable joint's position, as robot_state_publisher sends it.
+
+    Attributes:
+        frames: Parent and child link.
+        offset_m: The origin's translation, shape (3,).
+        axis: Unit axis in the joint frame, shape (3,).
+        slide: Unit direction of a prismatic joint in the parent frame; None for others.
+        fixed: The origin's rotation as a quaternion (x, y, z, w).
+    """
+
+    frames: tuple[str, str]
+    offset_m: FloatArray
+    axis: FloatArray
+    slide: FloatArray | None
+    fixed: FloatArray
+
+    @classmethod
+    def of(cls, joint: Joint) -> _MovingJoint:
+        """The constants of URDF joint ``joint``."""
         axis = np.array(joint.axis, float) / np.linalg.norm(joint.axis)
-        fixed = quaternion_from_matrix(rpy_matrix(*joint.origin.rpy))
-        q = joints.positions[:, i]
-        offset = np.array(joint.origin.xyz)
-        slide = q[:, None] * (rpy_matrix(*joint.origin.rpy) @ axis) if joint.type == "prismatic" \
-            else np.zeros((len(q), 3))
-        turn = rotations.about_axis(axis, q if joint.type != "prismatic" else np.zeros_like(q))
-        frames.append((joint.parent or "", joint.child or ""))
-        translations.append(offset + slide)
-        quaternions.append(rotations.multiply(fixed, turn))
-    return _tf_messages(frames, joints.times_s, translations, quaternions)
+        rotation = rpy_matrix(*joint.origin.rpy)
+        return cls((joint.parent or "", joint.child or ""), np.array(joint.origin.xyz), axis,
+                   rotation @ axis if joint.type == "prismatic" else None,
+                   quaternion_from_matrix(rotation))
 
 
-def _tf_static(result: SimResult) -> list[bytes]:
+class _JointTransforms:
+    """Every movable joint's transform, as robot_state_publisher sends them.
+
+    Each joint's constants are worked out at the first piece, for every piece of the run.
+    """
+
+    def __init__(self) -> None:
+        self.names: tuple[str, ...] = ()
+        self.joints: list[_MovingJoint] = []
+
+    def __call__(self, result: SimResult) -> ByteRows:
+        joints = result.joints
+        if tuple(joints.names) != self.names or not self.joints:
+            self.names = tuple(joints.names)
+            self.joints = [_MovingJoint.of(result.body.robot.joint(n)) for n in self.names]
+        q = joints.positions  # (samples, joints)
+        slides = np.array([j.slide is not None for j in self.joints], dtype=bool)
+        turns = rotations.about_axis(np.array([j.axis for j in self.joints]).reshape(-1, 3),
+                                     np.where(slides, 0.0, q))
+        quaternions = rotations.multiply(np.array([j.fixed for j in self.joints]).reshape(-1, 4),
+                                         turns)  # (samples, joints, 4)
+        translations = [j.offset_m + (np.zeros((len(q), 3)) if j.slide is None
+                                      else q[:, i, None] * j.slide)
+                        for i, j in enumerate(self.joints)]
+        return _tf_messages([j.frames for j in self.joints], joints.times_s, translations,
+                            [quaternions[:, i] for i in range(len(self.joints))])
+
+
+def _tf_static(result: SimResult) -> ByteRows:
     """Fixed joints, once at time 0, latched (robot_state_publisher)."""
     static = [(f.parent, f.name, f.origin) for f in result.body.robot.fixed_frames]
     return _tf_messages([(p, c) for p, c, _ in static], _once(result),

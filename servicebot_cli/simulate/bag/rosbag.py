@@ -24,7 +24,7 @@ import numpy.typing as npt
 from servicebot_cli import __version__
 from servicebot_cli.common.files import OutputError, atomic_directory
 from servicebot_cli.simulate.bag.cdr import stamps_ns
-from servicebot_cli.simulate.bag.mcap_file import Channel, McapWriter
+from servicebot_cli.simulate.bag.mcap_file import ByteRows, Channel, McapWriter, Payloads
 from servicebot_cli.simulate.bag.msgdefs import MESSAGE_DEFINITIONS
 from servicebot_cli.simulate.bag.qos import offered_qos_profiles
 from servicebot_cli.simulate.bag.ros_messages import Publisher, Topic, topics
@@ -61,51 +61,58 @@ class BagWriter:
         self.sequences = np.zeros(len(self.topics), dtype=np.int64)
         self.start_ns: int | None = None
         self.end_ns = 0
-        # messages waiting for their turn, in time order: stamp, publisher, payload
-        self.stamps: IntArray = np.zeros(0, dtype=np.int64)
-        self.sources: IntArray = np.zeros(0, dtype=np.int64)
-        self.payloads: list[bytes] = []
+        # messages waiting for their turn, in the order they came: blocks of one publisher's
+        # messages (its index, their stamps [ns] in time order, their payloads as rows)
+        self.waiting: list[tuple[int, IntArray, ByteRows]] = []
 
     def add(self, piece: SimResult) -> None:
         """Take a piece's messages; write those no later piece can precede."""
-        stamps, sources, payloads = [self.stamps], [self.sources], list(self.payloads)
         for index, publisher in enumerate(self.publishers):
             times = publisher.times(piece)
             if len(times):
-                stamps.append(stamps_ns(times))
-                sources.append(np.full(len(times), index))
-                payloads += publisher.serialize(piece)
-        stamp, source = np.concatenate(stamps), np.concatenate(sources)
-        order = np.lexsort((np.arange(len(stamp)), source, stamp))
-        self.stamps, self.sources = stamp[order], source[order]
-        self.payloads = [payloads[k] for k in order.tolist()]
+                self.waiting.append((index, stamps_ns(times), publisher.serialize(piece)))
+        if piece.last:
+            self._write(None)
+            return
         # A later piece's messages are stamped at or after its first tick's start, less
         # a nanosecond's rounding and odometry's one tick of lag: a tick more is safe.
-        ready = len(self.stamps) if piece.last else int(np.searchsorted(
-            self.stamps, stamps_ns(np.array([(piece.first_tick + piece.plan.ticks - 1)
-                                             * piece.plan.dt_s]))[0]))
-        self._write(ready)
+        self._write(int(stamps_ns(np.array([(piece.first_tick + piece.plan.ticks - 1)
+                                            * piece.plan.dt_s]))[0]))
 
-    def _write(self, count: int) -> None:
-        """Write the first ``count`` waiting messages."""
-        if not count:
+    def _write(self, before_ns: int | None) -> None:
+        """Write the waiting messages stamped before ``before_ns`` (None: all), in time order.
+
+        Equal stamps go in the order of the publishers, then in the order they came.
+        """
+        ready, kept = [], []
+        for publisher, times, rows in self.waiting:  # each block's ready messages lead it
+            count = len(times) if before_ns is None else int(np.searchsorted(times, before_ns))
+            ready.append((publisher, times[:count], rows[:count]))
+            if count < len(times):
+                kept.append((publisher, times[count:], rows[count:]))
+        self.waiting = kept
+        counts = [len(times) for _, times, _ in ready]
+        if not sum(counts):
             return
-        channels = self.channel[self.sources[:count]]
-        sequences = np.empty(count, dtype=np.int64)
+        stamp = np.concatenate([times for _, times, _ in ready])
+        source = np.repeat([publisher for publisher, _, _ in ready], counts)
+        order = np.lexsort((np.arange(len(stamp)), source, stamp))
+        payloads = Payloads([rows for _, _, rows in ready],
+                            np.repeat(np.arange(len(ready)), counts)[order],
+                            np.concatenate([np.arange(n) for n in counts])[order])
+        channels, stamps = self.channel[source[order]], stamp[order]
+        sequences = np.empty(len(stamps), dtype=np.int64)
         for channel in np.unique(channels).tolist():
             mine = np.flatnonzero(channels == channel)
             sequences[mine] = self.sequences[channel] + np.arange(len(mine))
             self.sequences[channel] += len(mine)
-        stamps = self.stamps[:count]
-        self.mcap.add(channels, sequences, stamps, self.payloads[:count])
+        self.mcap.add(channels, sequences, stamps, payloads)
         self.start_ns = int(stamps[0]) if self.start_ns is None else self.start_ns
         self.end_ns = max(self.end_ns, int(stamps.max()))
-        self.stamps, self.sources = self.stamps[count:], self.sources[count:]
-        self.payloads = self.payloads[count:]
 
     def finish(self, summary: object = None) -> None:
         """Write what waits, the file's summary and ``metadata.yaml`` (``summary`` unused)."""
-        self._write(len(self.stamps))
+        self._write(None)
         self.mcap.finish()
         counts = [int(n) for n in self.sequences]
         (self.directory / "metadata.yaml").write_text(
