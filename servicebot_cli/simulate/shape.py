@@ -1,19 +1,22 @@
-r"""The robot's collision shape: every link's boxes, cylinders and spheres, posed with the arm.
+r"""The robot's collision shape: every link's primitives and meshes, posed with the arm.
 
-Each ``<collision>`` primitive of each link becomes a :class:`Part`. Parts are placed on the
+Each ``<collision>`` shape of each link becomes a :class:`Part`; a mesh is read once, scaled,
+and placed in a frame at the centre of its bounding box. Parts are placed on the
 base by composing the URDF's joint origins and motions from the root, vectorised over many arm
 configurations at once:
 
 .. math:: T_{link \to base}(q) = T_{parent \to base}(q)\, T_{origin}\, M_{joint}(q_j)
 
 Wheel joints count as fixed: a wheel's collision cylinder turns about its own axis, so its
-spin does not move its surface. Mesh collision shapes are not parts (see :attr:`skipped`).
-Pure: a description in, arrays out.
+spin does not move its surface. Shapes that cannot be used (a mesh file that cannot be read,
+sizes that are not positive) are left out and named in :attr:`RobotShape.skipped`. Pure but
+for reading mesh files, which is injected.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import functools
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -27,32 +30,50 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 FloatArray = npt.NDArray[np.float64]
+IntArray = npt.NDArray[np.int64]
 KINDS = ("box", "cylinder", "sphere")
+"""The primitive kinds; a part can also be a ``mesh``."""
+MeshReader = Callable[["Geometry"], tuple[FloatArray, IntArray]]
+"""A mesh ``<geometry>`` to its vertices [m, scaled] (V, 3) and triangles (F, 3); raises
+:class:`MeshUnreadable`."""
+
+
+class MeshUnreadable(Exception):  # noqa: N818  # a reason, not an error the user sees
+    """A mesh collision shape that cannot be used; the message says why."""
 
 
 @dataclass(frozen=True)
 class Part:
-    """One collision primitive of a link.
+    """One collision shape of a link.
 
     Attributes:
         link: The link it belongs to.
-        kind: ``box``, ``cylinder`` (axis along its local z) or ``sphere``.
-        half_m: Box half sizes; ``(r, r, half length)`` for a cylinder; ``(r, r, r)`` for a sphere.
-        transform_part_to_link: The ``<collision><origin>``, (4, 4).
+        kind: ``box``, ``cylinder`` (axis along its local z), ``sphere`` or ``mesh``.
+        half_m: Box half sizes; ``(r, r, half length)`` for a cylinder; ``(r, r, r)`` for a
+            sphere; for a mesh, the half sizes of its bounding box (centred on the part's frame).
+        transform_part_to_link: The ``<collision><origin>``, (4, 4); for a mesh, moved to the
+            centre of its bounding box.
+        vertices_m: A mesh's vertices in the part's frame, scaled, shape (V, 3); else None.
+        faces: A mesh's triangles (vertex indices), shape (F, 3); else None.
     """
 
     link: str
     kind: str
     half_m: FloatArray
     transform_part_to_link: FloatArray
+    vertices_m: FloatArray | None = None
+    faces: IntArray | None = None
 
-    @property
+    @functools.cached_property
     def radius_m(self) -> float:
         """Radius of the sphere around the part's centre that holds it."""
         if self.kind == "box":
             return float(np.linalg.norm(self.half_m))
         if self.kind == "cylinder":
             return float(np.hypot(self.half_m[0], self.half_m[2]))
+        if self.vertices_m is not None:
+            return float(np.sqrt(np.max(np.einsum("ij,ij->i", self.vertices_m,
+                                                  self.vertices_m), initial=0.0)))
         return float(self.half_m[0])
 
 
@@ -62,10 +83,11 @@ class RobotShape:
 
     Attributes:
         root: The base link, whose frame the parts are placed in.
-        parts: The primitives, in URDF link order.
+        parts: The shapes (primitives and meshes), in URDF link order.
         joints: Movable joints that move parts (the arm's), in the order of ``q`` columns.
         steps: Per link in tree order: (link, parent link, origin (4, 4), joint or None).
-        skipped: ``link: reason`` for collision shapes that are not parts (meshes, bad sizes).
+        skipped: ``link: reason`` for collision shapes that are not parts (unreadable meshes,
+            bad sizes).
     """
 
     root: str
@@ -162,11 +184,12 @@ def joint_motions(joint: Joint, values: FloatArray) -> FloatArray:
     return out
 
 
-def robot_shape(robot: RobotDescription, moving_joints: Sequence[str]) -> RobotShape:
+def robot_shape(robot: RobotDescription, moving_joints: Sequence[str],
+                read_mesh: MeshReader | None = None) -> RobotShape:
     """The collision parts of ``robot``; ``moving_joints`` move them, other joints are fixed.
 
-    Raises:
-        DescriptionError: The root link is unknown (no single root).
+    ``read_mesh`` reads mesh shapes (default: trimesh, with the robot's packages resolved
+    from its directory and the environment).
     """
     root = robot.root_link or ""
     children: dict[str, list[Joint]] = {}
@@ -184,15 +207,51 @@ def robot_shape(robot: RobotDescription, moving_joints: Sequence[str]) -> RobotS
                 stack.append(joint.child)
     parts, skipped = [], []
     for link in robot.links:
-        if link.name not in seen:
-            continue
-        for shape in link.collisions:
+        for shape in link.collisions if link.name in seen else ():
+            origin = pose_matrix(shape.origin)
+            if shape.geometry.kind == "mesh":
+                if read_mesh is None:
+                    read_mesh = _mesh_reader(robot)
+                try:
+                    parts.append(mesh_part(link.name, *read_mesh(shape.geometry), origin))
+                except MeshUnreadable as exc:
+                    skipped.append(f"{link.name}: mesh '{shape.geometry.filename}' left out: "
+                                   f"{exc}")
+                continue
             half = half_extents(shape.geometry)
             if half is None:
                 skipped.append(f"{link.name}: {shape.geometry.kind or 'unknown'} collision shape")
                 continue
-            parts.append(Part(link.name, shape.geometry.kind, half, pose_matrix(shape.origin)))
+            parts.append(Part(link.name, shape.geometry.kind, half, origin))
     return RobotShape(root, tuple(parts), tuple(moving_joints), tuple(steps), tuple(skipped))
+
+
+def mesh_part(link: str, vertices_m: FloatArray, faces: IntArray,
+              transform_mesh_to_link: FloatArray) -> Part:
+    """A mesh as a part: its frame moved to the centre of its bounding box.
+
+    Raises:
+        MeshUnreadable: No triangles, or vertices that are not finite.
+    """
+    vertices_m = np.asarray(vertices_m, dtype=np.float64).reshape(-1, 3)
+    faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
+    if not len(faces):
+        raise MeshUnreadable("it has no triangles")
+    if not np.all(np.isfinite(vertices_m)):
+        raise MeshUnreadable("its vertices are not all finite numbers")
+    low, high = vertices_m.min(axis=0), vertices_m.max(axis=0)
+    centre = np.eye(4)
+    centre[:3, 3] = (low + high) / 2
+    return Part(link, "mesh", (high - low) / 2, transform_mesh_to_link @ centre,
+                vertices_m - centre[:3, 3], faces)
+
+
+def _mesh_reader(robot: RobotDescription) -> MeshReader:
+    from servicebot_cli.description.packages import PackageResolver
+    from servicebot_cli.simulate.world.meshes import link_mesh_reader
+
+    return link_mesh_reader(PackageResolver.from_environment(context=robot.path.parent),
+                            robot.path.parent)
 
 
 def half_extents(geometry: Geometry) -> FloatArray | None:
@@ -226,6 +285,8 @@ def outlines(parts: Sequence[Part], transforms: FloatArray) -> list[FloatArray]:
 
 def _surface_points(part: Part) -> FloatArray:
     """Points of the part's surface whose hull is its shape (circles as 32-gons)."""
+    if part.vertices_m is not None:
+        return part.vertices_m
     h = part.half_m
     if part.kind == "box":
         signs = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)])

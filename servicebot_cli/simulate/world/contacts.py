@@ -1,8 +1,8 @@
 r"""Contacts and clearance between the robot's collision parts and the world's obstacles.
 
-Every part of every link (base, wheels, sensors, arm), posed at each tick with the arm, is
-tested against every obstacle (boxes, walls, cylinders, meshes). The floor is not an
-obstacle: the wheels stand on it.
+Every part of every link (base, wheels, sensors, arm; primitives and meshes), posed at each
+tick with the arm, is tested against every obstacle (boxes, walls, cylinders, meshes). The
+floor is not an obstacle: the wheels stand on it.
 
 A cheap bound comes first, for all poses at once with numpy: a part whose bounding sphere
 (centre :math:`c`, radius :math:`r`) lies farther than :math:`r` from an obstacle cannot touch
@@ -16,6 +16,7 @@ from __future__ import annotations
 import functools
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -90,22 +91,29 @@ def obstacles(solids: Sequence[Solid], meshes: Sequence[Mesh] = ()) -> list[Obst
                             solid.kind, solid.center_m, solid.rotation, solid.half_m))
     for i, mesh in enumerate(meshes, 1):
         vertices = np.asarray(mesh.vertices, dtype=np.float64)
-        faces = np.asarray(mesh.faces, dtype=np.int64)
-        model = coal.BVHModelOBBRSS()
-        model.beginModel(len(faces), len(vertices))
-        model.addVertices(vertices)
-        model.addTriangles(faces)
-        model.endModel()
+        model = _bvh(coal, vertices, np.asarray(mesh.faces, dtype=np.int64))
         low, high = vertices.min(axis=0), vertices.max(axis=0)
         out.append(Obstacle(f"mesh {i}", model, coal.Transform3s(), "mesh", (low + high) / 2,
                             np.eye(3), (high - low) / 2))
     return out
 
 
+def _bvh(coal: Any, vertices: FloatArray, faces: IntArray) -> object:
+    """Coal's bounding volume hierarchy (oriented boxes and swept spheres) of triangles."""
+    model = coal.BVHModelOBBRSS()
+    model.beginModel(len(faces), len(vertices))
+    model.addVertices(vertices)
+    model.addTriangles(faces)
+    model.endModel()
+    return model
+
+
 def part_geometry(part: Part) -> object:
-    """A Coal geometry for a robot part."""
+    """A Coal geometry for a robot part (a BVH of its triangles for a mesh)."""
     import coal
 
+    if part.vertices_m is not None and part.faces is not None:
+        return _bvh(coal, part.vertices_m, part.faces)
     if part.kind == "box":
         return coal.Box(*(2 * part.half_m))
     if part.kind == "cylinder":

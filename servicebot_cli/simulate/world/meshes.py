@@ -1,13 +1,15 @@
-"""Mesh obstacles: files loaded with trimesh and placed in the world.
+"""Mesh files loaded with trimesh: obstacles placed in the world, and links' collision meshes.
 
-A mesh (a room, a shelf) is placed with its pose and scale. LIDAR rays hit it through trimesh
-(Embree when ``embreex`` is installed); the robot's links touch its surface through Coal
-(:mod:`.contacts`).
+A mesh obstacle (a room, a shelf) is placed with its pose and scale. LIDAR rays hit it through
+trimesh (Embree when ``embreex`` is installed); the robot's links touch its surface through
+Coal (:mod:`.contacts`). A link's collision mesh is read with its ``scale`` for
+:mod:`..shape`.
 """
 
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
@@ -16,7 +18,12 @@ from servicebot_cli.common.library_logs import captured
 from servicebot_cli.kinematics.transforms import rpy_matrix
 from servicebot_cli.simulate.scenario.definition import Scenario
 from servicebot_cli.simulate.scenario.located import Located
+from servicebot_cli.simulate.shape import MeshReader, MeshUnreadable
 from servicebot_cli.simulate.world.raycast import Mesh
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.elements import Geometry
+    from servicebot_cli.description.packages import PackageResolver
 
 FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.int64]
@@ -53,3 +60,44 @@ def load_meshes(scenario: Scenario, base_dir: Path) -> list[Mesh]:
         mesh.apply_transform(transform)
         meshes.append(mesh)
     return meshes
+
+
+def link_mesh_reader(resolver: PackageResolver, base_dir: Path) -> MeshReader:
+    """Reads a link's mesh ``<geometry>``: its file resolved and loaded, and scaled.
+
+    Each file is loaded once; ``base_dir`` is where relative references start.
+    """
+    loaded: dict[Path, tuple[FloatArray, IntArray]] = {}
+
+    def read(geometry: Geometry) -> tuple[FloatArray, IntArray]:
+        try:
+            path = resolver.resolve_uri(geometry.filename or "", base_dir)
+        except Exception as exc:  # PackageNotFound and friends: the message says where
+            raise MeshUnreadable(str(exc)) from None
+        if path not in loaded:
+            loaded[path] = _load_triangles(path)
+        vertices, faces = loaded[path]
+        return vertices * np.asarray(geometry.scale, dtype=np.float64), faces
+
+    return read
+
+
+def _load_triangles(path: Path) -> tuple[FloatArray, IntArray]:
+    """Vertices (V, 3) and triangles (F, 3) of a mesh file.
+
+    Raises:
+        MeshUnreadable: Missing, unreadable or empty.
+    """
+    if not path.is_file():
+        raise MeshUnreadable(f"{path} is not a file")
+    import trimesh
+
+    try:
+        with captured():  # texture chatter: only the geometry matters here
+            mesh = trimesh.load(path, force="mesh")
+    except Exception as exc:  # trimesh raises many types for unreadable files
+        raise MeshUnreadable(f"trimesh cannot read {path}: {exc}") from None
+    if not isinstance(mesh, trimesh.Trimesh) or not len(mesh.faces):
+        raise MeshUnreadable(f"{path} has no triangles")
+    return (np.asarray(mesh.vertices, dtype=np.float64),
+            np.asarray(mesh.faces, dtype=np.int64))
