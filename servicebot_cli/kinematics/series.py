@@ -33,6 +33,7 @@ _BUFFER = 1 << 15  # uniform numbers drawn at a time (beyond one target's worst 
 _FIRST_RUN = 8  # as lm_series.FIRST_RUN, read without importing numba
 _RUN = 16
 _REFILL = 2  # lm_series.REFILL
+_NEAR_M = 1e-9  # beyond the reach by less than this: tested again one target at a time
 
 
 def series_search(solver: IkSolver, rng: np.random.Generator) -> CompiledSearch | None:
@@ -93,17 +94,31 @@ def solve_leading(solver: IkSolver, compiled: CompiledSearch, targets: Sequence[
 
 def _goals(solver: IkSolver, targets: Sequence[IkTarget]) -> tuple[FloatArray, npt.NDArray[
         np.int64], npt.NDArray[np.int64]]:
-    """Targets as ``[R | p]`` (m, 3, 4), rows per target (6 or 3), attempts allowed."""
+    """Targets as ``[R | p]`` (m, 3, 4), rows per target (6 or 3), attempts allowed.
+
+    A target beyond the reach sphere gets one attempt, as :meth:`IkSolver.out_of_reach`
+    says; that test is made here for all at once, and again target by target only where the
+    answer is within :data:`_NEAR_M` of changing.
+    """
     count = len(targets)
     goals = np.zeros((count, 3, 4))
     rows = np.full(count, 3, dtype=np.int64)
     limits = np.full(count, solver.settings.max_attempts, dtype=np.int64)
-    for k, target in enumerate(targets):
-        goals[k, :, 3] = target.position_m
-        if target.rotation is not None and target.axes:
-            goals[k, :, :3], rows[k] = target.rotation, 6
-        if solver.out_of_reach(target):
-            limits[k] = 1
+    goals[:, :, 3] = [target.position_m for target in targets]
+    posed = [k for k, target in enumerate(targets) if target.rotation is not None and
+             target.axes]
+    if posed:
+        goals[posed, :, :3] = [targets[k].rotation for k in posed]
+        rows[posed] = 6
+    chain = solver.chain
+    if chain.base_nq:
+        return goals, rows, limits
+    offset = goals[:, :, 3] - chain.reach.center_m
+    beyond = np.sqrt((offset * offset).sum(axis=1)) - chain.reach.radius_m - \
+        solver.settings.tolerance_m
+    limits[beyond > _NEAR_M] = 1
+    for k in np.flatnonzero(np.abs(beyond) <= _NEAR_M):
+        limits[k] = 1 if solver.out_of_reach(targets[k]) else solver.settings.max_attempts
     return goals, rows, limits
 
 
@@ -113,15 +128,17 @@ def _confirm(solver: IkSolver, compiled: CompiledSearch, targets: Sequence[IkTar
              results: list[IkResult]) -> int:
     """Append results for targets ``first..stop-1`` that Pinocchio's FK confirms.
 
-    In order, up to the first it does not; returns how many were appended.
+    In order, up to the first it does not; returns how many were appended. Each answer's
+    full ``q`` is ``seed`` with the chain's entries replaced (the others never change along
+    a series), made for the whole run at once.
     """
-    chain, nq = solver.chain, solver.chain.model.nq
+    full = np.repeat(seed[np.newaxis], stop - first, axis=0)
+    full[:, solver.chain.full_index] = out[first:stop]  # plain chain: q is the angles
+    check = compiled.check
     for k in range(first, stop):
-        q = compiled.arrays.to_q(out[k], nq)
-        errors = compiled.check(q, targets[k])
+        errors = check(out[k], targets[k])
         if errors is None:
             return k - first
-        seed = chain.to_full(q, seed)
-        results.append(IkResult(seed, True, errors[0], errors[1], int(iterations[k]),
-                                int(attempts[k]), 1))
+        results.append(IkResult(full[k - first], True, errors[0], errors[1],
+                                int(iterations[k]), int(attempts[k]), 1))
     return stop - first
