@@ -71,17 +71,16 @@ def test_live_window_frame_draws_the_path_up_to_its_time():
     from servicebot_cli.description.loader import load
     from servicebot_cli.simulate.files import live
     from servicebot_cli.simulate.scenario.definition import load_scenario
-    from servicebot_cli.simulate.summary import odometry_in_world
 
     scenario = dataclasses.replace(load_scenario(None), duration_s=4.0)
     result = session.run_and_write(load(RobotSource.bundled("sim")), scenario, seed=0,
                                    outputs=Outputs(), scenario_dir=Path.cwd(),
-                                   keep_run=True).result  # as for the live window
+                                   keep_run=True).result  # a run kept whole
     assert result is not None and result.first and result.last
     ax = Figure().add_subplot()
     artists = live._artists(ax)
-    ox, oy, _ = odometry_in_world(result)
-    live._update(artists, result, 2.0, ox, oy)
+    track = live.LiveTrack.of_run(result)
+    live._update(artists, track, live._Series.of(track), 2.0)
     xs, _ = artists.truth.get_data()
     assert len(xs) == round(2.0 / result.truth.dt_s) + 1
     outline = np.asarray(artists.body.get_data()[0], dtype=float)

@@ -51,7 +51,7 @@ class Track:
         self.odometry_count = odometry_count
         self.seen = 0  # odometry samples so far
         self.ticks_kept: list[npt.NDArray[np.int64]] = []
-        self.truth: list[FloatArray] = []  # x, y per kept boundary
+        self.truth: list[FloatArray] = []  # x, y, yaw per kept boundary
         self.arm: list[FloatArray] = []
         self.odometry: list[FloatArray] = []  # time, x, y (world) and drift per kept sample
         self.contacts: list[tuple[float, float]] = []
@@ -68,7 +68,7 @@ class Track:
         keep = ((ticks % self.tick_stride == 0) | (ticks == self.ticks)) & (
             (ticks > first) | piece.first)
         self.ticks_kept.append(ticks[keep])
-        self.truth.append(np.column_stack((truth.x_m, truth.y_m))[keep])
+        self.truth.append(np.column_stack((truth.x_m, truth.y_m, truth.yaw_rad))[keep])
         self.arm.append(piece.arm_positions_rad[keep])
         odom = piece.odometry
         if len(odom.times_s):
@@ -90,7 +90,7 @@ class Track:
         self.end = (truth.x_m[-1], truth.y_m[-1], truth.yaw_rad[-1], piece.arm_positions_rad[-1])
 
     def series(self) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
-        """Kept boundaries' times [s], (x, y) of the truth, arm angles; odometry rows."""
+        """Kept boundaries' times [s], (x, y, yaw) of the truth, arm angles; odometry rows."""
         ticks = np.concatenate(self.ticks_kept)
         width = len(self.body.arm_joints)
         return (np.asarray(ticks * self.dt_s, dtype=np.float64), np.vstack(self.truth),
