@@ -68,6 +68,7 @@ def scan(spec: LidarSpec, transform_sensor_to_base: FloatArray, base_height_m: f
                                y + s * offset[0] + c * offset[1],
                                np.full_like(x, base_height_m + offset[2])))
     true = np.empty((len(times_s), len(angles)))
+    bearings = np.arctan2(local_dirs[1], local_dirs[0])  # of each ray on the base
     per_batch = max(1, RAYS_PER_BATCH // len(angles))
     for start in range(0, len(times_s), per_batch):
         stop = min(start + per_batch, len(times_s))
@@ -77,7 +78,9 @@ def scan(spec: LidarSpec, transform_sensor_to_base: FloatArray, base_height_m: f
                          np.broadcast_to(local_dirs[2], cb.shape[:1] + local_dirs[2].shape)),
                         axis=-1).reshape(-1, 3)
         o = np.repeat(origins[start:stop], len(angles), axis=0)
-        true[start:stop] = raycast.cast(o, dirs, solids, meshes=meshes).reshape(stop - start, -1)
+        fans = raycast.Fans(yaw[start:stop], bearings)  # each scan's rays leave one point
+        true[start:stop] = raycast.cast(o, dirs, solids, meshes=meshes,
+                                        fans=fans).reshape(stop - start, -1)
         if own_m is not None:
             np.minimum(true[start:stop], own_m[start:stop], out=true[start:stop])
     sensor_yaw = yaw + np.arctan2(transform_sensor_to_base[1, 0], transform_sensor_to_base[0, 0])

@@ -9,6 +9,7 @@ is the distance to the nearest surface the ray enters, inf where it hits nothing
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import Protocol
 
 import numpy as np
@@ -18,6 +19,9 @@ from servicebot_cli.simulate.world.solids import Solid
 
 FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.int64]
+_BOX_CORNERS = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], float)
+_CULL_MARGIN_RAD = 1e-7
+"""Bearings this far outside a solid's span are still cast: far above any rounding."""
 
 
 class RayQueries(Protocol):
@@ -48,8 +52,21 @@ class Mesh(Protocol):
         ...
 
 
+@dataclass(frozen=True)
+class Fans:
+    """Rays laid out as fans: ray ``i * R + k`` is ray ``k`` of fan ``i``.
+
+    A fan's rays all leave one point; ray ``k`` of fan ``i`` points at the bearing
+    ``heading_rad[i] + bearing_rad[k]`` (about z, in the rays' frame). A LIDAR's scans are
+    fans.
+    """
+
+    heading_rad: FloatArray  # (S,)
+    bearing_rad: FloatArray  # (R,)
+
+
 def cast(origins: FloatArray, directions: FloatArray, solids: Sequence[Solid], *,
-         floor: bool = True, meshes: Sequence[Mesh] = ()) -> FloatArray:
+         floor: bool = True, meshes: Sequence[Mesh] = (), fans: Fans | None = None) -> FloatArray:
     """Distance along each ray to the first surface it enters [m].
 
     Args:
@@ -58,6 +75,8 @@ def cast(origins: FloatArray, directions: FloatArray, solids: Sequence[Solid], *
         solids: Boxes and cylinders.
         floor: Include the plane z = 0.
         meshes: Placed meshes (trimesh.Trimesh), in the same frame.
+        fans: How the rays make fans, if they do; level fans are then intersected with a
+            solid only where their bearing can meet it (the same distances, less work).
 
     Returns:
         Distances, shape (N,); inf where a ray hits nothing.
@@ -72,28 +91,118 @@ def cast(origins: FloatArray, directions: FloatArray, solids: Sequence[Solid], *
         with np.errstate(divide="ignore", invalid="ignore"):
             t = -o[2] / d[2]
         np.minimum(best, np.where((d[2] < 0) & (t >= 0), t, np.inf), out=best)
-    for solid in solids:
-        low, high = solid.z_range_m
-        if level and not np.any((o[2] >= low) & (o[2] <= high)):
-            continue  # a horizontal scan that passes above or below the solid
-        rot = solid.rotation
-        # Terms of a zero rotation entry are left out: they add only zeros.
-        shifted = [o[j] - solid.center_m[j] for j in range(3)]
-        ol = [sum(shifted[j] * rot[j, i] for j in range(3) if rot[j, i] != 0.0)
-              for i in range(3)]
-        dl = [sum(d[j] * rot[j, i] for j in range(3) if rot[j, i] != 0.0) for i in range(3)]
-        ol = [x if isinstance(x, np.ndarray) else np.zeros_like(best) for x in ol]
-        dl = [x if isinstance(x, np.ndarray) else np.zeros_like(best) for x in dl]
-        if level and not np.any(dl[2]) and _strictly_within(ol[2], solid.half_m[2]):
-            hit = (_level_box_entry(ol, dl, solid.half_m) if solid.kind == "box"
-                   else _level_cylinder_entry(ol, dl, solid.half_m))
-        else:
-            hit = (box_entry(ol, dl, solid.half_m) if solid.kind == "box"
-                   else cylinder_entry(ol, dl, solid.half_m))
-        np.minimum(best, hit, out=best)
+    cull = level and fans is not None and fan_cull_works(fans)
+    crossed = [solid for solid in solids  # a level scan passes above or below the others
+               if not level or _meets_heights(o[2], *solid.z_range_m)]
+    if cull and crossed:
+        assert fans is not None
+        every = len(fans.bearing_rad)  # the first ray of each fan: the fans' origins
+        for solid, rays in zip(crossed, facing_rays(fans, o[0][::every], o[1][::every],
+                                                    crossed), strict=True):
+            hit = _fan_entry(o, d, rays, solid, o[2][::every])
+            best[rays] = np.minimum(best[rays], hit)
+    else:
+        for solid in crossed:
+            np.minimum(best, _solid_entry(o, d, solid, level), out=best)
     for mesh in meshes:
         np.minimum(best, mesh_distances(mesh, origins, directions), out=best)
     return best
+
+
+def _meets_heights(z_m: FloatArray, low_m: float, high_m: float) -> bool:
+    """Some height ``z_m`` lies in ``[low_m, high_m]``."""
+    return bool(np.any((z_m >= low_m) & (z_m <= high_m)))
+
+
+def _solid_entry(o: list[FloatArray], d: list[FloatArray], solid: Solid,
+                 level: bool) -> FloatArray:
+    """Entry distance of each ray into ``solid`` (inf for none); ``level``: every d_z is 0."""
+    rot = solid.rotation
+    # Terms of a zero rotation entry are left out: they add only zeros.
+    shifted = [o[j] - solid.center_m[j] for j in range(3)]
+    ol = [sum(shifted[j] * rot[j, i] for j in range(3) if rot[j, i] != 0.0) for i in range(3)]
+    dl = [sum(d[j] * rot[j, i] for j in range(3) if rot[j, i] != 0.0) for i in range(3)]
+    ol = [x if isinstance(x, np.ndarray) else np.zeros_like(o[0]) for x in ol]
+    dl = [x if isinstance(x, np.ndarray) else np.zeros_like(o[0]) for x in dl]
+    if level and not np.any(dl[2]) and _strictly_within(ol[2], solid.half_m[2]):
+        return (_level_box_entry(ol, dl, solid.half_m) if solid.kind == "box"
+                else _level_cylinder_entry(ol, dl, solid.half_m))
+    return (box_entry(ol, dl, solid.half_m) if solid.kind == "box"
+            else cylinder_entry(ol, dl, solid.half_m))
+
+
+def _fan_entry(o: list[FloatArray], d: list[FloatArray], rays: IntArray, solid: Solid,
+               fan_z_m: FloatArray) -> FloatArray:
+    """:func:`_solid_entry` of the level rays ``rays``, from fans at heights ``fan_z_m``.
+
+    A solid turned about z alone, with every fan strictly between its bottom and top, needs
+    the rays' x and y only: the same terms, in the same order, as :func:`_solid_entry`.
+    """
+    rot = solid.rotation
+    turned_about_z = rot[2, 0] == 0.0 and rot[2, 1] == 0.0 and rot[0, 2] == 0.0 \
+        and rot[1, 2] == 0.0 and rot[2, 2] == 1.0
+    if not turned_about_z or not _strictly_within(fan_z_m - solid.center_m[2],
+                                                  solid.half_m[2]):
+        return _solid_entry([c[rays] for c in o], [c[rays] for c in d], solid, True)
+    shifted = [o[j][rays] - solid.center_m[j] for j in range(2)]
+    directions = [d[j][rays] for j in range(2)]
+    ol = [sum(shifted[j] * rot[j, i] for j in range(2) if rot[j, i] != 0.0) for i in range(2)]
+    dl = [sum(directions[j] * rot[j, i] for j in range(2) if rot[j, i] != 0.0)
+          for i in range(2)]
+    ol = [x if isinstance(x, np.ndarray) else np.zeros(len(rays)) for x in ol]
+    dl = [x if isinstance(x, np.ndarray) else np.zeros(len(rays)) for x in dl]
+    return (_level_box_entry(ol, dl, solid.half_m) if solid.kind == "box"
+            else _level_cylinder_entry(ol, dl, solid.half_m))
+
+
+def fan_cull_works(fans: Fans) -> bool:
+    """The fans' bearings span at most a full turn (each direction is met once or twice)."""
+    bearings = fans.bearing_rad
+    return bool(len(bearings)) and float(np.ptp(bearings)) <= 2 * np.pi + 1e-12
+
+
+def facing_rays(fans: Fans, x_m: FloatArray, y_m: FloatArray,
+                solids: Sequence[Solid]) -> list[IntArray]:
+    """Per solid, the indexes of the level rays whose bearing can meet it; fans from (x, y).
+
+    Seen from a fan's origin outside its footprint, the corners of the solid's box span less
+    than half a turn of bearing; only the rays within that span (and a margin far above
+    rounding) can enter it. A fan from inside the footprint keeps every ray.
+    """
+    centres = np.array([s.center_m[:2] for s in solids])  # (P, 2)
+    corners = np.stack([s.center_m[:2] + (_BOX_CORNERS * s.half_m) @ s.rotation[:2].T
+                        for s in solids])  # (P, 8, 2)
+    towards = np.arctan2(centres[:, 1] - y_m[:, None], centres[:, 0] - x_m[:, None])  # (S, P)
+    spread = np.arctan2(corners[:, :, 1] - y_m[:, None, None],
+                        corners[:, :, 0] - x_m[:, None, None])  # (S, P, 8)
+    spread = (spread - towards[..., None] + np.pi) % (2 * np.pi) - np.pi  # from the centre
+    low = spread.min(axis=2) - _CULL_MARGIN_RAD
+    width = spread.max(axis=2) + _CULL_MARGIN_RAD - low
+    outside = width < np.pi - 1e-3
+    order = np.argsort(fans.bearing_rad, kind="stable")
+    bearings = fans.bearing_rad[order]
+    start = bearings[0] + (towards + low - fans.heading_rad[:, None] - bearings[0]) % (2 * np.pi)
+    rays = len(order)
+    first = np.concatenate((np.where(outside, np.searchsorted(bearings, start, "left"), 0),
+                            np.searchsorted(bearings, start - 2 * np.pi, "left")))
+    stop = np.concatenate((np.where(outside, np.searchsorted(bearings, start + width, "right"),
+                                    rays),
+                           np.where(outside, np.searchsorted(bearings, start - 2 * np.pi + width,
+                                                             "right"), 0)))
+    fan = np.concatenate((np.arange(len(x_m)), np.arange(len(x_m))))
+    sorted_already = bool(np.all(order == np.arange(rays)))
+    return [_spans(fan, first[:, p], stop[:, p], None if sorted_already else order, rays)
+            for p in range(len(solids))]
+
+
+def _spans(fan: IntArray, first: IntArray, stop: IntArray, order: IntArray | None,
+           rays: int) -> IntArray:
+    """Ray indexes of the sorted positions ``first[i]`` to ``stop[i] - 1`` of fan ``fan[i]``."""
+    counts = np.maximum(stop - first, 0)
+    position = np.arange(int(counts.sum())) + np.repeat(first - (np.cumsum(counts) - counts),
+                                                        counts)
+    chosen: IntArray = position if order is None else order[position]
+    return np.repeat(fan * rays, counts) + chosen
 
 
 def box_entry(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
