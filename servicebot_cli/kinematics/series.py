@@ -117,7 +117,7 @@ def _goals(solver: IkSolver, targets: Sequence[IkTarget]) -> tuple[FloatArray, n
     beyond = np.sqrt((offset * offset).sum(axis=1)) - chain.reach.radius_m - \
         solver.settings.tolerance_m
     limits[beyond > _NEAR_M] = 1
-    for k in np.flatnonzero(np.abs(beyond) <= _NEAR_M):
+    for k in np.flatnonzero(np.abs(beyond) <= _NEAR_M).tolist():
         limits[k] = 1 if solver.out_of_reach(targets[k]) else solver.settings.max_attempts
     return goals, rows, limits
 
