@@ -31,12 +31,40 @@ Table = tuple[tuple[str, ...], str]
 
 
 def _rows(columns: Sequence[npt.ArrayLike]) -> str:
+    """CSV lines of the columns' numbers, each in numpy's shortest round-trip form.
+
+    Each distinct number (bit pattern) is formatted once; the lines are then put together
+    in one byte array, the cells of one text length at a time.
+    """
     if not columns:
         return ""
     matrix = np.column_stack([np.asarray(c, dtype=float) for c in columns])
-    text = matrix.astype(str)  # numpy's shortest round-trip repr, in C
-    body = "\n".join(",".join(row) for row in text.tolist())
-    return body + "\n" if body else ""
+    if not matrix.size:
+        return ""
+    distinct, which = np.unique(np.ascontiguousarray(matrix).reshape(-1).view(np.int64),
+                                return_inverse=True)
+    text = distinct.view(np.float64).astype(str).astype(np.bytes_)  # in C, ASCII
+    table = np.frombuffer(text.tobytes(), dtype=np.uint8).reshape(len(text), -1)
+    lengths = np.strings.str_len(text).astype(np.uint8)[which.reshape(-1)]  # at most 24
+    sizes = lengths + np.int64(1)  # each cell and its separator
+    starts = np.cumsum(sizes) - sizes
+    out = np.full(int(starts[-1] + sizes[-1]), ord(","), dtype=np.uint8)
+    out[(starts + lengths).reshape(matrix.shape)[:, -1]] = ord("\n")
+    order, counts = np.argsort(lengths, kind="stable"), np.bincount(lengths)
+    ends, cell_text = np.cumsum(counts), which.reshape(-1)
+    for length in np.flatnonzero(counts).tolist():  # each text length's cells in one copy
+        cells = order[ends[length] - counts[length]:ends[length]]
+        _place(out, starts[cells], table[cell_text[cells], :length])
+    return out.tobytes().decode("ascii")
+
+
+def _place(flat: npt.NDArray[np.uint8], starts: npt.NDArray[np.int64],
+           rows: npt.NDArray[np.uint8]) -> None:
+    """Copy row ``i`` of ``rows`` to ``flat[starts[i]:starts[i] + width]`` (no overlaps)."""
+    width = rows.shape[1]
+    windows = np.lib.stride_tricks.as_strided(flat, shape=(len(flat) - width + 1, width),
+                                              strides=(1, 1), writeable=True)
+    windows[starts] = rows
 
 
 def _table(header: Sequence[str], columns: Sequence[npt.ArrayLike]) -> Table:
