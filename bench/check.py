@@ -7,8 +7,14 @@ once per file,
 both as the pip-installed command (a Python wrapper from cmeel-urdfdom) and as the native
 binary it wraps. servicebot is timed with every rule, and with the URDF rules only (no mesh
 files read: --ignore SB4,SB301), which is closer to what check_urdf looks at. Last, a single
-UR5 check from a cold process. Medians of REPEATS runs; a ratio is a command's time over
-servicebot's (above 1: servicebot is faster).
+UR5 check from a cold process. Medians of REPEATS runs of the wall time, and of the CPU
+time (user + system, every process) that a shared machine disturbs less; a ratio is a
+command's wall time over servicebot's (above 1: servicebot is faster).
+
+Python commands run with their bytecode cached (in a temporary PYTHONPYCACHEPREFIX, even
+where PYTHONDONTWRITEBYTECODE is set), as pip leaves an installed package: a cold process
+is a new process, not the first run after an install. Compiling servicebot's modules from
+source would add about 0.05 s to every run.
 
     python bench/check.py [REPEATS]
 """
@@ -16,6 +22,7 @@ servicebot's (above 1: servicebot is faster).
 from __future__ import annotations
 
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -37,57 +44,75 @@ SERVICEBOT = [sys.executable, "-m", "servicebot_cli", "check", "urdf", "--isolat
               "--format", "json", "--package", f"example-robot-data={erd_root()}"]
 
 
-def _timed(commands: list[list[str]], env: dict[str, str] | None = None) -> float:
-    start = time.perf_counter()
+def _cpu_s() -> float:
+    used = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return used.ru_utime + used.ru_stime
+
+
+def _timed(commands: list[list[str]], env: dict[str, str] | None = None) -> tuple[float, float]:
+    """Wall and CPU seconds of running ``commands`` one after the other."""
+    cpu, start = _cpu_s(), time.perf_counter()
     for command in commands:
         subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env,
                        timeout=600)
-    return time.perf_counter() - start
+    return time.perf_counter() - start, _cpu_s() - cpu
 
 
-def _median(repeats: int, commands: list[list[str]], env: dict[str, str] | None = None) -> float:
-    return statistics.median(_timed(commands, env) for _ in range(repeats))
+def _median(repeats: int, commands: list[list[str]],
+            env: dict[str, str] | None = None) -> tuple[float, float]:
+    runs = [_timed(commands, env) for _ in range(repeats)]
+    return statistics.median(r[0] for r in runs), statistics.median(r[1] for r in runs)
+
+
+def _python_env(pycache: str) -> dict[str, str]:
+    """This environment, with Python's bytecode written to and read from ``pycache``."""
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    return {**env, "PYTHONPYCACHEPREFIX": pycache}
 
 
 def main(repeats: int = 3) -> None:
     files = [str(p) for p in erd_urdfs() + pybullet_urdfs()]
     ur5 = str(next(p for p in erd_urdfs() if p.name == "ur5_robot.urdf"))
-    wrapper, native, env = check_urdf_commands()
+    wrapper, native, native_env = check_urdf_commands()
     print(f"corpus: {len(files)} URDF files (example-robot-data + pybullet_data); "
           f"median of {repeats} runs", file=sys.stderr)
-    with tempfile.TemporaryDirectory() as cache:
-        cached = {**os.environ, "XDG_CACHE_HOME": cache}
+    with tempfile.TemporaryDirectory() as cache, tempfile.TemporaryDirectory() as pycache:
+        env = _python_env(pycache)
+        _timed([SERVICEBOT + [ur5], wrapper + [ur5]], env)  # compiles the bytecode
+        cached = {**env, "XDG_CACHE_HOME": cache}
         _timed([SERVICEBOT + ["--mesh-cache"] + files], cached)  # fills the mesh cache
         warm = _median(repeats, [SERVICEBOT + ["--mesh-cache"] + files], cached)
-    corpus = {
-        "servicebot check urdf, every rule, one call": _median(repeats, [SERVICEBOT + files]),
-        "servicebot check urdf, URDF rules only, one call":
-            _median(repeats, [SERVICEBOT + ["--ignore", "SB4,SB301"] + files]),
-        "servicebot check urdf, every rule, --jobs 1": _median(repeats, [SERVICEBOT + [
-            "--jobs", "1"] + files]),
-        "servicebot check urdf, every rule, --mesh-cache (warm)": warm,
-        "check_urdf (pip-installed wrapper), once per file":
-            _median(repeats, [wrapper + [f] for f in files]),
-        "check_urdf (native binary), once per file":
-            _median(repeats, [native + [f] for f in files], env),
-    }
-    single = {
-        "servicebot check urdf ur5_robot.urdf (cold process)":
-            _median(max(repeats, 5), [SERVICEBOT + [ur5]]),
-        "servicebot check urdf ur5_robot.urdf, URDF rules only":
-            _median(max(repeats, 5), [SERVICEBOT + ["--ignore", "SB4,SB301", ur5]]),
-        "check_urdf ur5_robot.urdf (pip-installed wrapper)": _median(max(repeats, 5),
-                                                                      [wrapper + [ur5]]),
-        "check_urdf ur5_robot.urdf (native binary)": _median(max(repeats, 5), [native + [ur5]],
-                                                              env),
-    }
+        corpus = {
+            "servicebot check urdf, every rule, one call": _median(repeats, [SERVICEBOT + files],
+                                                                   env),
+            "servicebot check urdf, URDF rules only, one call":
+                _median(repeats, [SERVICEBOT + ["--ignore", "SB4,SB301"] + files], env),
+            "servicebot check urdf, every rule, --jobs 1": _median(repeats, [SERVICEBOT + [
+                "--jobs", "1"] + files], env),
+            "servicebot check urdf, every rule, --mesh-cache (warm)": warm,
+            "check_urdf (pip-installed wrapper), once per file":
+                _median(repeats, [wrapper + [f] for f in files], env),
+            "check_urdf (native binary), once per file":
+                _median(repeats, [native + [f] for f in files], native_env),
+        }
+        single = {
+            "servicebot check urdf ur5_robot.urdf (cold process)":
+                _median(max(repeats, 5), [SERVICEBOT + [ur5]], env),
+            "servicebot check urdf ur5_robot.urdf, URDF rules only":
+                _median(max(repeats, 5), [SERVICEBOT + ["--ignore", "SB4,SB301", ur5]], env),
+            "check_urdf ur5_robot.urdf (pip-installed wrapper)":
+                _median(max(repeats, 5), [wrapper + [ur5]], env),
+            "check_urdf ur5_robot.urdf (native binary)":
+                _median(max(repeats, 5), [native + [ur5]], native_env),
+        }
     for title, times in (("whole corpus", corpus), ("one UR5", single)):
         print(f"\n{title}")
-        base = list(times.values())
-        rows = [(name, f"{seconds:.3f}", f"{seconds / base[0]:.2f}", f"{seconds / base[1]:.2f}")
-                for name, seconds in times.items()]
-        headers = ["command", "median [s]", "/ servicebot all rules", "/ URDF rules only"]
-        for line in table(headers, rows, max_width=140):
+        base = [wall for wall, _ in times.values()]
+        rows = [(name, f"{wall:.3f}", f"{cpu:.3f}", f"{wall / base[0]:.2f}",
+                 f"{wall / base[1]:.2f}") for name, (wall, cpu) in times.items()]
+        headers = ["command", "median [s]", "CPU [s]", "/ servicebot all rules",
+                   "/ URDF rules only"]
+        for line in table(headers, rows, max_width=150):
             print(line)
 
 
