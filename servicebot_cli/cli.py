@@ -7,6 +7,7 @@ import only Click and light helpers at the top, so ``--help`` and shell completi
 
 from __future__ import annotations
 
+import importlib
 import sys
 import traceback
 from typing import Any, NoReturn
@@ -14,15 +15,6 @@ from typing import Any, NoReturn
 import click
 
 from servicebot_cli import __version__
-from servicebot_cli.commands.check import check
-from servicebot_cli.commands.drive import drive
-from servicebot_cli.commands.emulate import emulate
-from servicebot_cli.commands.expand import expand
-from servicebot_cli.commands.fk import fk
-from servicebot_cli.commands.ik import ik
-from servicebot_cli.commands.inspect import inspect
-from servicebot_cli.commands.simulate import simulate
-from servicebot_cli.commands.sweep import sweep
 from servicebot_cli.common.errors import ExitCode, ServicebotError
 from servicebot_cli.common.signals import EndedBySignal, signals_as_exceptions
 
@@ -42,8 +34,29 @@ class OneLineUsageError(click.ClickException):
         return f"{self.message.rstrip('.')} (see '{self.command_path} --help')"
 
 
+COMMANDS = ("check", "drive", "emulate", "expand", "fk", "ik", "inspect", "simulate", "sweep")
+"""Each subcommand is the function of that name in ``servicebot_cli.commands.<name>``."""
+
+
 class ServicebotGroup(click.Group):
-    """Translates every error into one stderr line and an exit code."""
+    """Translates every error into one stderr line and an exit code.
+
+    Subcommands are imported when named: ``servicebot check`` imports no other command's
+    module (``--help`` and completion import them all; each is light).
+    """
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        """Every subcommand's name, sorted."""
+        return sorted(COMMANDS)
+
+    def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
+        """The subcommand ``cmd_name``, imported now; None for an unknown name."""
+        if cmd_name not in COMMANDS:
+            return None
+        if cmd_name not in self.commands:
+            module = importlib.import_module(f"servicebot_cli.commands.{cmd_name}")
+            self.add_command(getattr(module, cmd_name), cmd_name)
+        return self.commands[cmd_name]
 
     def make_context(self, info_name: str | None, args: list[str],
                      parent: click.Context | None = None, **extra: Any) -> click.Context:
@@ -114,7 +127,3 @@ def main(debug: bool) -> None:
     129 hung up (SIGHUP), 130 interrupted (Ctrl-C), 131 quit (SIGQUIT),
     143 terminated (SIGTERM). --debug adds the traceback and keeps the code.
     """
-
-
-for _command in (check, inspect, fk, ik, simulate, sweep, drive, emulate, expand):
-    main.add_command(_command)

@@ -37,7 +37,7 @@ def _with_lxml(data: bytes) -> ET.Element | None:
     if b"<!DOCTYPE" in data:
         return None
     try:
-        from lxml import etree  # type: ignore[import-untyped]
+        from lxml import etree
     except ImportError:  # pragma: no cover - yourdfpy depends on lxml
         return None
     # huge_tree: number lists beyond 10 MB; no DTD is read, so no entity is ever expanded
