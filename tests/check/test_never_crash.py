@@ -23,6 +23,7 @@ from servicebot_cli.description.packages import PackageResolver
 from tests.check.corpus import check_urdf_drops, erd_root, erd_urdfs
 from tests.check.helpers import codes
 from tests.conftest import REAL_URDF
+from tests.mutants import mutate
 
 ROBOT = """<robot name="r">
   <link name="base">
@@ -101,28 +102,7 @@ def test_a_texture_without_filename_is_a_warning(run, tmp_path):
 
 # -- property test: mutations of real URDFs -------------------------------------------------
 
-_NUMBERS = ["nan", "inf", "-inf", "1e200", "-1e200", "0", "-1", "1e-300", "", " ", "0 0",
-            "1 2 3 4", "\uff11", "\u0661.\u0665", "1e", "0x10", "1,5"]
 _SOURCES = [REAL_URDF, *[p for p in erd_urdfs() if p.name in ("ur5_robot.urdf", "solo12.urdf")]]
-
-
-def _mutate(root: ET.Element, rng: random.Random, steps: int) -> None:
-    elements = list(root.iter())
-    for _ in range(steps):
-        element = rng.choice(elements)
-        choice = rng.random()
-        if choice < 0.6 and element.attrib:
-            key = rng.choice(sorted(element.attrib))
-            element.set(key, rng.choice(_NUMBERS))
-        elif choice < 0.8 and len(element):
-            element.remove(rng.choice(list(element)))
-            elements = list(root.iter())
-        elif choice < 0.9:
-            element.append(ET.Element(rng.choice(["plane", "mesh", "origin", "inertial", "limit"]),
-                                      {"filename": "", "xyz": rng.choice(_NUMBERS)}))
-            elements = list(root.iter())
-        else:
-            element.tag = rng.choice(["mesh", "box", "cylinder", "sphere", "plane", "capsule"])
 
 
 @settings(max_examples=60, deadline=None,
@@ -131,7 +111,7 @@ def _mutate(root: ET.Element, rng: random.Random, steps: int) -> None:
        steps=st.integers(1, 12))
 def test_mutated_real_urdfs_never_crash_or_warn(tmp_path_factory, source, seed, steps):
     root = ET.parse(source).getroot()
-    _mutate(root, random.Random(seed), steps)
+    mutate(root, random.Random(seed), steps)
     path = tmp_path_factory.mktemp("mutant") / "robot.urdf"
     path.write_bytes(ET.tostring(root))
     env = CheckEnv(resolver=PackageResolver.from_environment(
