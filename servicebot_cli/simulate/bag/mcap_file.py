@@ -13,7 +13,8 @@ as :class:`Payloads`, rows of a few byte arrays (a stream's messages have one si
 records of a batch (headers and payloads) are copied into one byte array a block of rows at a
 time, with no Python object per message, and a chunk is a slice of it. Full chunks
 are joined, compressed, checksummed and written by one worker thread, in order, while the
-caller goes on (zstd and zlib let go of the GIL); at most :data:`PENDING_CHUNKS` wait for it.
+caller goes on (zstd and zlib let go of the GIL); at most :data:`PENDING_BYTES` of records
+wait for it (they are views on the batches' arrays, which live while a chunk of them waits).
 """
 
 from __future__ import annotations
@@ -38,8 +39,9 @@ _SUMMARY_OFFSET, _DATA_END = 0x0E, 0x0F
 _MESSAGE_HEAD = np.dtype([("opcode", "u1"), ("length", "<u8"), ("channel", "<u2"),
                           ("sequence", "<u4"), ("log_time", "<u8"), ("publish_time", "<u8")])
 _INDEX_ENTRY = np.dtype([("log_time", "<u8"), ("offset", "<u8")])
-PENDING_CHUNKS = 1
-"""Full chunks at most waiting for the writing thread (each about ``chunk_size`` bytes)."""
+PENDING_BYTES = 32 << 20
+"""Record bytes of full chunks at most waiting for the writing thread: a few seconds of a run
+without camera images, so the caller waits for none until the end."""
 
 
 ByteRows = npt.NDArray[np.uint8]
@@ -162,7 +164,8 @@ class McapWriter:
         self.records: list[ByteRows] = []  # its records, end to end, and their offsets
         self.offsets: list[npt.NDArray[np.int64]] = []
         self.chunk_indexes: list[bytes] = []
-        self.pending: list[Future[bytes]] = []  # chunks given to the thread, in file order
+        self.pending: list[tuple[Future[bytes], int]] = []  # chunks given to the thread, in
+        # file order, with their record bytes
         self.thread: ThreadPoolExecutor | None = None
         self.counts = np.zeros(len(channels), dtype=np.int64)
         self.first_time = self.last_time = 0
@@ -213,11 +216,12 @@ class McapWriter:
         offsets = np.concatenate(self.offsets)
         if self.thread is None:
             self.thread = ThreadPoolExecutor(1, thread_name_prefix="mcap-chunks")
-        while len(self.pending) >= PENDING_CHUNKS:
-            self.chunk_indexes.append(self.pending.pop(0).result())
-        self.pending.append(self.thread.submit(
+        size = sum(len(part) for part in self.records)
+        while self.pending and sum(n for _, n in self.pending) + size > PENDING_BYTES:
+            self.chunk_indexes.append(self.pending.pop(0)[0].result())
+        self.pending.append((self.thread.submit(
             _write_chunk, self.out, np.concatenate(self.heads), self.records,
-            offsets - offsets[0], self.compressor))
+            offsets - offsets[0], self.compressor), size))
         self.heads, self.records, self.offsets = [], [], []
 
     def close(self) -> None:
@@ -230,7 +234,7 @@ class McapWriter:
     def _written_chunks(self) -> None:
         """Wait for the writing thread to write every chunk given to it; raise its error."""
         try:
-            for future in self.pending:
+            for future, _ in self.pending:
                 self.chunk_indexes.append(future.result())
         finally:
             self.pending = []
