@@ -18,7 +18,7 @@ import numpy.typing as npt
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.description.sensors import LidarSpec
 from servicebot_cli.simulate.sensors import noise
-from servicebot_cli.simulate.shape import RobotShape
+from servicebot_cli.simulate.shape import Part, RobotShape
 from servicebot_cli.simulate.world import raycast
 from servicebot_cli.simulate.world.motion import Path2D, pose_at
 from servicebot_cli.simulate.world.robot_rays import cast_parts
@@ -101,7 +101,8 @@ def own_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: Fl
     """Distance along each ray to the robot's own links, per scan, shape (scans, R).
 
     The sensor's own link is left out (Gazebo's ray sensor ignores the link it is on). Parts
-    fixed on the base are cast once; the arm's once per distinct arm configuration.
+    fixed on the base are cast once; the arm's once per distinct arm configuration, those
+    of a batch of configurations whose sphere never reaches a level scan's plane not at all.
 
     Args:
         shape: The robot's parts.
@@ -125,14 +126,32 @@ def own_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: Fl
     if moving.any() and len(q):
         distinct, first, index = np.unique(q, axis=0, return_index=True, return_inverse=True)
         moved = [p for p, m in zip(parts, moving, strict=True) if m]
-        hits = np.empty((len(distinct), len(directions)))
+        hits = np.full((len(distinct), len(directions)), np.inf)
         per_batch = max(1, raycast_batch() // max(1, len(directions) * len(moved)))
         for start in range(0, len(distinct), per_batch):
             placed = (parts_to_base[first[start:start + per_batch]] if parts_to_base is not None
                       else shape.transforms_to_base(distinct[start:start + per_batch]))[:, moving]
-            hits[start:start + per_batch] = cast_parts(moved, placed, origin, directions)
+            seen = _may_be_seen(moved, placed, transform_sensor_to_base[:3, 3], directions)
+            if seen.any():  # the parts no ray can reach are left out; a batch of none, too
+                rows = slice(start, start + len(placed))
+                hits[rows] = cast_parts([p for p, k in zip(moved, seen, strict=True) if k],
+                                        placed[:, seen], origin, directions)
         np.minimum(out, hits[index.ravel()], out=out)
     return out
+
+
+def _may_be_seen(parts: list[Part], placed: FloatArray, origin_m: FloatArray,
+                 directions: FloatArray) -> npt.NDArray[np.bool_]:
+    """Per part: may a ray meet its bounding sphere in one of the configurations ``placed``?
+
+    Level rays stay in the sensor's horizontal plane: a sphere wholly above or below it
+    (with a margin above the ray caster's own) is never met. Other rays: every part may be.
+    """
+    if not np.all(directions[:, 2] == 0.0):
+        return np.ones(len(parts), dtype=bool)
+    radius = np.array([p.radius_m for p in parts])
+    height = np.abs(placed[:, :, 2, 3] - origin_m[2])  # (configurations, parts)
+    return np.asarray((height <= radius * (1 + 1e-5) + 1e-6).any(axis=0))
 
 
 def raycast_batch() -> int:
