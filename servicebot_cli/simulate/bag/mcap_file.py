@@ -336,7 +336,7 @@ def _write_chunk(out: _Output, heads: np.ndarray, parts: Sequence[ByteRows],
                     + _string("zstd") + struct.pack("<Q", len(compressed)) + compressed)
     chunk_start = out.write(chunk)
     index_offsets = {}
-    for channel in np.unique(heads["channel"]).tolist():
+    for channel in np.flatnonzero(np.bincount(heads["channel"])).tolist():
         mine = heads["channel"] == channel
         entries = np.empty(int(mine.sum()), dtype=_INDEX_ENTRY)
         entries["log_time"], entries["offset"] = heads["log_time"][mine], offsets[mine]

@@ -102,7 +102,7 @@ class BagWriter:
                             np.concatenate([np.arange(n) for n in counts])[order])
         channels, stamps = self.channel[source[order]], stamp[order]
         sequences = np.empty(len(stamps), dtype=np.int64)
-        for channel in np.unique(channels).tolist():
+        for channel in np.flatnonzero(np.bincount(channels)).tolist():
             mine = np.flatnonzero(channels == channel)
             sequences[mine] = self.sequences[channel] + np.arange(len(mine))
             self.sequences[channel] += len(mine)
