@@ -2,8 +2,9 @@
 
 Each pixel's ray leaves the camera through the pinhole that ``camera_info`` describes, scaled
 by ``scale`` (``--camera-scale``: 1/8 of 1920x1080 is 240x135), and meets the floor, the
-world's solids and meshes, and the robot's own collision parts, in closed form as the LIDAR's
-rays do. The nearest surface gives the colour (the scenario's, the URDF material's, else
+world's solids and meshes, and the robot's own collision parts (primitives in closed form,
+as the LIDAR's rays do; mesh parts through a hierarchy of their triangles, in their own
+frame). The nearest surface gives the colour (the scenario's, the URDF material's, else
 :class:`Palette`'s), shaded by the angle between its normal and a light from above, and the
 depth: the distance along the optical axis, as a ROS depth image (32FC1) stores it, +inf
 where nothing is within the far clip plane. Surfaces nearer than the near clip plane are not
@@ -12,7 +13,8 @@ scaled to [0, 1], then clipped, which is what the noise here does
 (:mod:`~servicebot_cli.simulate.sensors.camera_noise`).
 
 Frames are drawn by numba's compiled loop (:mod:`.camera_kernel`); without numba, by the
-numpy path (:mod:`.camera_numpy`), which gives the same bytes for scenes without meshes.
+numpy path (:mod:`.camera_numpy`), which gives the same bytes for scenes without mesh
+obstacles (mesh parts included).
 The camera link's frame looks along +x (Gazebo's convention); the image is in the optical
 frame (z forward, x right, y down), as ``camera_info`` and ``sensor_msgs/Image`` expect.
 Pure: every input is an argument.
@@ -38,6 +40,8 @@ from servicebot_cli.simulate.world.solids import Solid
 FloatArray = npt.NDArray[np.float64]
 Rgb = tuple[int, int, int]
 
+PART_KINDS = (*KINDS, "mesh")
+"""Kinds as the compiled loop numbers them (``camera_primitives``' BOX .. MESH)."""
 LIGHT = np.array([0.4, 0.3, 0.866]) / np.linalg.norm([0.4, 0.3, 0.866])
 AMBIENT = 0.45  # share of a colour lit from any side; the rest follows the light
 COMPILED = True
@@ -184,7 +188,7 @@ class Scene:
     def posed(self, part_transforms: FloatArray) -> Scene:
         """This scene with the parts at ``part_transforms``; what does not move is kept."""
         moved = dataclasses.replace(self, part_transforms=part_transforms)
-        for name in ("packed_world", "triangles"):  # built once, here, for every pose
+        for name in ("packed_world", "triangles", "part_triangles"):  # once for every pose
             moved.__dict__[name] = getattr(self, name)
         return moved
 
@@ -199,8 +203,8 @@ class Scene:
     @functools.cached_property
     def packed_world(self) -> tuple[FloatArray, ...]:
         """The solids as the compiled loop reads them, then each part's kind, size, colour."""
-        kinds = [KINDS.index(s.kind) for s in self.solids]
-        part_kinds = [KINDS.index(p.kind) for p in self.parts]
+        kinds = [PART_KINDS.index(s.kind) for s in self.solids]
+        part_kinds = [PART_KINDS.index(p.kind) for p in self.parts]
         return (np.array(kinds, np.int64), _rows([s.half_m for s in self.solids], (3,)),
                 _rows([s.rotation for s in self.solids], (3, 3)),
                 _rows([s.center_m for s in self.solids], (3,)),
@@ -213,6 +217,11 @@ class Scene:
         """The meshes' triangles and their hierarchy, for the compiled loop."""
         return camera_mesh.triangles(self.meshes, [self.mesh_colour(i)
                                                    for i in range(len(self.meshes))])
+
+    @functools.cached_property
+    def part_triangles(self) -> camera_mesh.PartTriangles:
+        """The mesh parts' triangles, each part's in its own frame under its own root."""
+        return camera_mesh.part_triangles(self.parts)
 
 
 def _rows(values: Sequence[object], shape: tuple[int, ...]) -> FloatArray:
@@ -276,7 +285,8 @@ def _compiled(view: CameraView, rotations: FloatArray, origins: FloatArray, scen
         return False
     kinds, halves, rotations_s, centres, colours, part_kinds, part_halves, part_colours = \
         scene.packed_world
-    t = scene.triangles
+    t, p = scene.triangles, scene.part_triangles
+    roots = np.concatenate((np.full(len(kinds), -1, np.int64), p.root))
     with numba.parallel_chunksize(1):  # a frame at a time to whichever thread is free
         camera_kernel.render(
             rotations, origins, (view.directions, view.forward, view.shape[1], view.near_m,
@@ -285,11 +295,16 @@ def _compiled(view: CameraView, rotations: FloatArray, origins: FloatArray, scen
             (part_kinds, part_halves, part_colours,
              np.ascontiguousarray(part_transforms[:, :, :3, :3]),
              np.ascontiguousarray(part_transforms[:, :, :3, 3])),
-            (t.corner, t.edge_1, t.edge_2, t.normal, t.colour, t.low, t.high, t.first, t.count),
+            _arrays(t), (_arrays(p.triangles), roots),
             (np.array(scene.palette.floor, dtype=np.float64),
              np.array(scene.palette.sky, dtype=np.float64), LIGHT, AMBIENT),
             (keys, scale, camera_noise.normal_table()), rgb, depth_m)
     return True
+
+
+def _arrays(t: camera_mesh.Triangles) -> tuple[npt.NDArray[np.generic], ...]:
+    """``t``'s arrays in the order the compiled loop unpacks them."""
+    return (t.corner, t.edge_1, t.edge_2, t.normal, t.colour, t.low, t.high, t.first, t.count)
 
 
 def field_of_view_rad(intrinsics: Intrinsics) -> float:

@@ -7,7 +7,10 @@ on the thread count). Per frame, before the pixels: each primitive (box, cylinde
 outside the view's cone is dropped and the rest are sorted by the distance to their bounding
 sphere, so a ray stops testing them once the nearest hit so far is closer. Mesh triangles
 are found through their bounding volume hierarchy
-(:mod:`~servicebot_cli.simulate.sensors.camera_mesh`) and met by the Moller-Trumbore test.
+(:mod:`~servicebot_cli.simulate.sensors.camera_mesh`) and met by the Moller-Trumbore test
+(:mod:`~servicebot_cli.simulate.sensors.camera_bvh`). A robot's mesh part is culled and
+sorted as a box (its bounding box), and a ray that reaches it is moved into its frame to walk
+its own hierarchy; the normal it meets is turned back to the world to shade it.
 Colour goes straight to rgb8 and depth to float32. Compiled by numba (cached on disk after
 the first run). Pure.
 """
@@ -21,8 +24,9 @@ import numpy.typing as npt
 from numba import njit, prange  # type: ignore[import-untyped, import-not-found, unused-ignore]
 
 from servicebot_cli.simulate.sensors import camera_culling as culling
+from servicebot_cli.simulate.sensors.camera_bvh import box_near, lit_normal, mesh_entry
 from servicebot_cli.simulate.sensors.camera_noise import GOLDEN, MIX_1, MIX_2
-from servicebot_cli.simulate.sensors.camera_primitives import entry, lit
+from servicebot_cli.simulate.sensors.camera_primitives import MESH, entry, lit
 
 FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.int64]
@@ -30,16 +34,6 @@ _STACK = 64  # deepest hierarchy walked: 2**64 triangles
 TILE = 8
 """Tiles of TILE x TILE pixels share one list of what they can show."""
 _MASK = np.uint64(0xFFFF)
-
-
-@njit(cache=True, nogil=True, error_model="numpy")
-def _box_near(o: FloatArray, inverse: FloatArray, low: FloatArray, high: FloatArray) -> float:
-    """Where a ray enters an axis-aligned box (inf: never)."""
-    near, far = 0.0, math.inf
-    for i in range(3):
-        t1, t2 = (low[i] - o[i]) * inverse[i], (high[i] - o[i]) * inverse[i]
-        near, far = max(near, min(t1, t2)), min(far, max(t1, t2))
-    return near if near <= far else math.inf
 
 
 @njit(cache=True, nogil=True, error_model="numpy", inline="always")
@@ -59,7 +53,7 @@ def _triangles(o: FloatArray, d: FloatArray, best: float, lowest: float, highest
     while top >= 0:
         node = stack[top]
         top -= 1
-        if _box_near(o, inverse, low[node], high[node]) >= min(best, highest):
+        if box_near(o, inverse, low[node], high[node]) >= min(best, highest):
             continue
         if count[node] == 0:
             stack[top + 1], stack[top + 2] = first[node], first[node] + 1
@@ -104,8 +98,9 @@ def _noisy(colour: FloatArray, n: int, key: np.uint64, scale: float, table: Floa
 @njit(cache=True, nogil=True, error_model="numpy")
 def _tile(pixels: tuple, rotation: FloatArray, origin: FloatArray,  # type: ignore[type-arg]
           view: tuple, solids: tuple, frame: tuple, chosen: IntArray,  # type: ignore[type-arg]
-          mesh: tuple, look: tuple, noise: tuple,  # type: ignore[type-arg]
-          rgb: npt.NDArray[np.uint8], depth: npt.NDArray[np.float32]) -> None:
+          mesh: tuple, part_mesh: tuple, look: tuple,  # type: ignore[type-arg]
+          noise: tuple, rgb: npt.NDArray[np.uint8],  # type: ignore[type-arg]
+          depth: npt.NDArray[np.float32]) -> None:
     """Shade the pixels of one tile from the ``chosen`` primitives (and the meshes)."""
     top, bottom, left, right = pixels
     directions, forward, width, near_m, far_m, _ = view
@@ -113,6 +108,8 @@ def _tile(pixels: tuple, rotation: FloatArray, origin: FloatArray,  # type: igno
     local_origins, lower, meshes_seen = frame
     floor, sky, light, ambient = look
     key, scale, table = noise
+    part_triangles, roots = part_mesh
+    part_normals = part_triangles[3]
     stack, d, local, colour = np.empty(_STACK, np.int64), np.empty(3), np.empty(3), np.empty(3)
     floor_shade = ambient + (1.0 - ambient) * abs(light[2])
     for row in range(top, bottom):
@@ -121,6 +118,7 @@ def _tile(pixels: tuple, rotation: FloatArray, origin: FloatArray,  # type: igno
                 d[i] = (directions[n, 0] * rotation[i, 0] + directions[n, 1] * rotation[i, 1]
                         + directions[n, 2] * rotation[i, 2])
             best, which = math.inf, -2  # -2: nothing, -1: the floor, s: a primitive
+            part_triangle = -1  # the triangle of a mesh part ``which``
             if d[2] < 0.0:
                 t = -origin[2] / d[2]
                 if t >= 0.0 and near_m <= t * forward[n] <= far_m:
@@ -128,16 +126,24 @@ def _tile(pixels: tuple, rotation: FloatArray, origin: FloatArray,  # type: igno
             for s in chosen:
                 if lower[s] > best:
                     break
-                t = entry(kinds[s], local_origins[s, 0], local_origins[s, 1],
-                          local_origins[s, 2], d[0] * rotations[s, 0, 0]
-                          + d[1] * rotations[s, 1, 0] + d[2] * rotations[s, 2, 0],
-                          d[0] * rotations[s, 0, 1] + d[1] * rotations[s, 1, 1]
-                          + d[2] * rotations[s, 2, 1], d[0] * rotations[s, 0, 2]
-                          + d[1] * rotations[s, 1, 2] + d[2] * rotations[s, 2, 2],
-                          halves[s, 0], halves[s, 1], halves[s, 2])
+                k = -1
+                if kinds[s] == MESH:
+                    for i in range(3):
+                        local[i] = (d[0] * rotations[s, 0, i] + d[1] * rotations[s, 1, i]
+                                    + d[2] * rotations[s, 2, i])
+                    t, k = mesh_entry(local_origins[s], local, best, roots[s],
+                                      part_triangles, stack)
+                else:
+                    t = entry(kinds[s], local_origins[s, 0], local_origins[s, 1],
+                              local_origins[s, 2], d[0] * rotations[s, 0, 0]
+                              + d[1] * rotations[s, 1, 0] + d[2] * rotations[s, 2, 0],
+                              d[0] * rotations[s, 0, 1] + d[1] * rotations[s, 1, 1]
+                              + d[2] * rotations[s, 2, 1], d[0] * rotations[s, 0, 2]
+                              + d[1] * rotations[s, 1, 2] + d[2] * rotations[s, 2, 2],
+                              halves[s, 0], halves[s, 1], halves[s, 2])
                 nearer = t < best or (t == best and s < which)  # a tie: the numpy path's first
                 if nearer and t < math.inf and near_m <= t * forward[n] <= far_m:
-                    best, which = t, s
+                    best, which, part_triangle = t, s, k
             triangle = -1
             if meshes_seen:
                 best, triangle = _triangles(origin, d, best, near_m / forward[n],
@@ -157,6 +163,10 @@ def _tile(pixels: tuple, rotation: FloatArray, origin: FloatArray,  # type: igno
                 square = int(math.floor(x) + math.floor(y)) % 2
                 for i in range(3):
                     colour[i] = floor[square, i] * floor_shade
+            elif part_triangle >= 0:
+                shade = lit_normal(part_normals[part_triangle], rotations[which], light, ambient)
+                for i in range(3):
+                    colour[i] = colours[which, i] * shade
             else:
                 for i in range(3):
                     local[i] = local_origins[which, i] + best * (
@@ -183,8 +193,9 @@ def _local_origins(origin: FloatArray, rotations: FloatArray, centres: FloatArra
 
 @njit(cache=True, nogil=True, error_model="numpy")
 def _frame(rotation: FloatArray, origin: FloatArray, view: tuple,  # type: ignore[type-arg]
-           solids: tuple, mesh: tuple, look: tuple, noise: tuple,  # type: ignore[type-arg]
-           rgb: npt.NDArray[np.uint8], depth: npt.NDArray[np.float32]) -> None:
+           solids: tuple, mesh: tuple, part_mesh: tuple,  # type: ignore[type-arg]
+           look: tuple, noise: tuple, rgb: npt.NDArray[np.uint8],  # type: ignore[type-arg]
+           depth: npt.NDArray[np.float32]) -> None:
     """One frame, tile by tile: ``render``'s arguments for one camera pose and one key."""
     directions, _, width, near_m, far_m, intrinsics = view
     kinds, halves, rotations, centres, _ = solids
@@ -221,15 +232,15 @@ def _frame(rotation: FloatArray, origin: FloatArray, view: tuple,  # type: ignor
                     chosen[kept] = chosen[j]
                     kept += 1
             _tile((top, bottom, left, right), rotation, origin, view, solids,
-                  (local_origins, lower, meshes_seen), chosen[:kept], mesh, look, noise, rgb,
-                  depth)
+                  (local_origins, lower, meshes_seen), chosen[:kept], mesh, part_mesh, look,
+                  noise, rgb, depth)
 
 
 @njit(cache=True, nogil=True, error_model="numpy", parallel=True)
 def render(rotations: FloatArray, origins: FloatArray, view: tuple,  # type: ignore[type-arg]
-           solids: tuple, parts: tuple, mesh: tuple, look: tuple,  # type: ignore[type-arg]
-           noise: tuple, rgb: npt.NDArray[np.uint8],  # type: ignore[type-arg]
-           depth: npt.NDArray[np.float32]) -> None:
+           solids: tuple, parts: tuple, mesh: tuple,  # type: ignore[type-arg]
+           part_mesh: tuple, look: tuple, noise: tuple,  # type: ignore[type-arg]
+           rgb: npt.NDArray[np.uint8], depth: npt.NDArray[np.float32]) -> None:
     """Fill ``rgb`` (F, N, 3) and, unless it is empty, ``depth`` (F, N) [m] (inf: nothing).
 
     Frames are shared out between threads (a frame to each, as it finishes the last); each
@@ -245,6 +256,9 @@ def render(rotations: FloatArray, origins: FloatArray, view: tuple,  # type: ign
         parts: The robot's: kinds (P,), half sizes (P, 3), colours (P, 3), and per frame
             rotations (F, P, 3, 3) and centres (F, P, 3).
         mesh: :class:`~servicebot_cli.simulate.sensors.camera_mesh.Triangles`' arrays.
+        part_mesh: The mesh parts' triangles' arrays (:class:`~.camera_mesh.PartTriangles`,
+            in their parts' frames), and each solid's and part's root node (-1: not a mesh),
+            (S + P,).
         look: The floor's two colours (2, 3), the sky's (3,), the unit light (3,), ambient.
         noise: Each frame's key (F,), the noise's stddev in pixel values (0: none), the table.
         rgb: Out: each frame's rgb8 pixels, row by row, (F, N, 3).
@@ -256,8 +270,11 @@ def render(rotations: FloatArray, origins: FloatArray, view: tuple,  # type: ign
     all_kinds = np.concatenate((kinds, part_kinds))
     all_halves = np.concatenate((halves, part_halves))
     all_colours = np.concatenate((colours, part_colours))
+    # a tuple inside a tuple cannot reach prange's body: its arrays one by one
+    (corner, edge_1, edge_2, normal, colour, low, high, first, count), roots = part_mesh
     for f in prange(len(origins)):
         frame_solids = (all_kinds, all_halves, np.concatenate((rotations_s, part_rotations[f])),
                         np.concatenate((centres_s, part_centres[f])), all_colours)
-        _frame(rotations[f], origins[f], view, frame_solids, mesh, look, (keys[f], scale, table),
-               rgb[f], depth[f])
+        _frame(rotations[f], origins[f], view, frame_solids, mesh,
+               ((corner, edge_1, edge_2, normal, colour, low, high, first, count), roots), look,
+               (keys[f], scale, table), rgb[f], depth[f])

@@ -5,17 +5,20 @@ colour), ordered so that each leaf of a bounding volume hierarchy holds a contig
 them. The hierarchy is built once per run by median splits along the longest axis of the
 triangles' centres; a ray visits only the boxes it enters before its nearest hit so far, so
 a frame costs about the logarithm of the triangle count per ray, and a mesh outside the view
-costs one box test per ray. Pure.
+costs one box test per ray. The robot's mesh parts get a hierarchy each, built once in the
+part's own frame (:func:`part_triangles`): a ray is moved into that frame, as for a box. Pure.
 """
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.simulate.shape import Part
 from servicebot_cli.simulate.world.raycast import Mesh
 
 FloatArray = npt.NDArray[np.float64]
@@ -49,6 +52,23 @@ class Triangles:
     count: IntArray = field(repr=False)
 
 
+@dataclass(frozen=True)
+class PartTriangles:
+    """The robot's mesh parts for the compiled loop: one hierarchy per part, in its frame.
+
+    Attributes:
+        triangles: Every mesh part's triangles, part after part, in its part's frame; node
+            and triangle numbers (``first``) count from the start of these arrays.
+        root: The root node of each part's hierarchy, -1 for a primitive, (P,).
+        start, stop: Each part's triangles are ``start .. stop - 1`` (empty for a primitive).
+    """
+
+    triangles: Triangles
+    root: IntArray = field(repr=False)
+    start: IntArray = field(repr=False)
+    stop: IntArray = field(repr=False)
+
+
 def triangles(meshes: Sequence[Mesh], colours: Sequence[tuple[int, int, int]]) -> Triangles:
     """The triangles of ``meshes`` (placed in the world), each with its mesh's colour."""
     corners = [np.asarray(m.vertices, dtype=np.float64)[np.asarray(m.faces)] for m in meshes]
@@ -56,6 +76,33 @@ def triangles(meshes: Sequence[Mesh], colours: Sequence[tuple[int, int, int]]) -
     colour = np.concatenate([np.tile(np.array(c, dtype=np.float64), (len(k), 1))
                              for c, k in zip(colours, corners, strict=True)]) \
         if corners else np.zeros((0, 3))
+    return _ordered(soup, colour)
+
+
+def part_triangles(parts: Sequence[Part]) -> PartTriangles:
+    """The triangles of the mesh ``parts``, each in its part's frame under its own root."""
+    root, start, stop = (np.full(len(parts), -1, np.int64), np.zeros(len(parts), np.int64),
+                         np.zeros(len(parts), np.int64))
+    pieces, nodes, before = [], 0, 0
+    for i, part in enumerate(parts):
+        if part.vertices_m is None or part.faces is None:
+            continue
+        piece = _ordered(part.vertices_m[part.faces], np.zeros((len(part.faces), 3)))
+        inner = piece.count == 0
+        piece.first[inner] += nodes  # an inner node's first is a node, a leaf's a triangle
+        piece.first[~inner] += before
+        root[i], start[i], stop[i] = nodes, before, before + len(piece.corner)
+        nodes, before = nodes + len(piece.count), before + len(piece.corner)
+        pieces.append(piece)
+    if not pieces:
+        pieces.append(_ordered(np.zeros((0, 3, 3)), np.zeros((0, 3))))
+    joined = [np.concatenate([getattr(p, f.name) for p in pieces])
+              for f in dataclasses.fields(Triangles)]
+    return PartTriangles(Triangles(*joined), root, start, stop)
+
+
+def _ordered(soup: FloatArray, colour: FloatArray) -> Triangles:
+    """Triangles (T, 3 corners, 3) in the order of their hierarchy, with its nodes."""
     order, low, high, first, count = _hierarchy(soup)
     soup, colour = soup[order], colour[order]
     edge_1, edge_2 = soup[:, 1] - soup[:, 0], soup[:, 2] - soup[:, 0]

@@ -1,9 +1,10 @@
 """A camera frame in numpy, surface by surface: the path without numba, and its reference.
 
-For scenes without meshes it gives the bytes of the compiled loop
+For scenes without mesh obstacles it gives the bytes of the compiled loop
 (:mod:`~servicebot_cli.simulate.sensors.camera_kernel`): the same formulas in the same order
 of operations, ties between equal distances going to the surface listed first (the floor,
-the solids, the meshes, the robot's parts). Meshes go through trimesh's ray queries. Pure.
+the solids, the meshes, the robot's parts). Mesh obstacles go through trimesh's ray queries;
+the robot's mesh parts through :mod:`.camera_mesh_rays`, the compiled walk's numbers. Pure.
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.simulate.sensors import camera_noise, camera_rays
+from servicebot_cli.simulate.sensors import camera_mesh_rays, camera_noise, camera_rays
 from servicebot_cli.simulate.sensors.camera_image import (
     AMBIENT,
     LIGHT,
@@ -36,7 +37,7 @@ def render(view: CameraView, rotation: FloatArray, origin: FloatArray, scene: Sc
     directions = np.column_stack(d)
     surfaces = [s for s in _surfaces(scene)
                 if _in_view(s, scene, origin, rotation[:, 0], view.half_angle_rad)]
-    triangles: dict[int, IntArray] = {}  # per mesh: the triangle each ray met first
+    triangles: dict[Surface, IntArray] = {}  # per mesh: the triangle each ray met first
     origins = np.broadcast_to(origin, directions.shape)
     distances = np.stack([_distances(s, scene, origins, d, triangles) for s in surfaces])
     depth = distances * view.forward
@@ -81,7 +82,7 @@ def _in_view(surface: Surface, scene: Scene, origin: FloatArray, axis: FloatArra
 
 
 def _distances(surface: Surface, scene: Scene, origins: FloatArray, d: list[FloatArray],
-               triangles: dict[int, IntArray]) -> FloatArray:
+               triangles: dict[Surface, IntArray]) -> FloatArray:
     kind, index = surface
     origin = origins[0]
     if kind == "floor":
@@ -93,10 +94,16 @@ def _distances(surface: Surface, scene: Scene, origins: FloatArray, d: list[Floa
         return camera_rays.primitive_distances(solid.kind, solid.half_m, transform, origin, d)
     if kind == "mesh":
         directions = np.column_stack(d)
-        distances, triangles[index] = _mesh_hits(scene.meshes[index], origins, directions)
+        distances, triangles[surface] = _mesh_hits(scene.meshes[index], origins, directions)
         return distances
     assert scene.part_transforms is not None
     part = scene.parts[index]
+    if part.kind == "mesh":
+        shapes = scene.part_triangles
+        distances, triangles[surface] = camera_mesh_rays.mesh_part_hits(
+            scene.part_transforms[index], part.radius_m, origin, d, shapes.triangles,
+            int(shapes.start[index]), int(shapes.stop[index]))
+        return distances
     return camera_rays.primitive_distances(part.kind, part.half_m,
                                            scene.part_transforms[index], origin, d)
 
@@ -114,7 +121,8 @@ def _mesh_hits(mesh: raycast.Mesh, origins: FloatArray,
     return distances, triangle
 
 
-def _looks(surface: Surface, scene: Scene, points: FloatArray, triangles: dict[int, IntArray],
+def _looks(surface: Surface, scene: Scene, points: FloatArray,
+           triangles: dict[Surface, IntArray],
            hit: npt.NDArray[np.bool_]) -> tuple[FloatArray, FloatArray]:
     """Base colour (n, 3) and unit normal (n, 3) at ``points`` (rays ``hit``) on ``surface``."""
     kind, index = surface
@@ -129,9 +137,12 @@ def _looks(surface: Surface, scene: Scene, points: FloatArray, triangles: dict[i
         return _flat(scene.palette.of_solid(solid), len(points)), normals
     if kind == "mesh":
         return _flat(scene.mesh_colour(index), len(points)), _mesh_normals(
-            scene.meshes[index], triangles[index][hit])
+            scene.meshes[index], triangles[surface][hit])
     assert scene.part_transforms is not None
     part, transform = scene.parts[index], scene.part_transforms[index]
+    if part.kind == "mesh":
+        return _flat(scene.part_colour(index), len(points)), camera_mesh_rays.mesh_part_normals(
+            transform, scene.part_triangles.triangles, triangles[surface][hit])
     local = (points - transform[:3, 3]) @ transform[:3, :3]
     normals = camera_rays.primitive_normals(part.kind, part.half_m, local) @ transform[:3, :3].T
     return _flat(scene.part_colour(index), len(points)), normals

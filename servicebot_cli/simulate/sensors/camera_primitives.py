@@ -15,7 +15,8 @@ import numpy.typing as npt
 from numba import njit  # type: ignore[import-untyped, import-not-found, unused-ignore]
 
 FloatArray = npt.NDArray[np.float64]
-BOX, CYLINDER, SPHERE = 0, 1, 2
+BOX, CYLINDER, SPHERE, MESH = 0, 1, 2, 3
+"""Kind numbers: ``camera_image.PART_KINDS``' order; a mesh part is not a primitive."""
 
 
 @njit(cache=True, nogil=True, error_model="numpy", inline="always")

@@ -49,17 +49,24 @@ def primitive_distances(kind: str, half_m: FloatArray, transform: FloatArray,
         origin: The rays' common origin in the world, (3,).
         d: The rays' directions as :func:`columns`.
     """
+    o, local = into_frame(transform, origin, d)
+    if kind == "box":
+        return box_entry(o, local, half_m)  # type: ignore[arg-type]  # scalars broadcast
+    if kind == "cylinder":
+        return cylinder_entry(o, local, half_m)  # type: ignore[arg-type]
+    return sphere_entry(o, local, float(half_m[0]))  # type: ignore[arg-type]
+
+
+def into_frame(transform: FloatArray, origin: FloatArray,
+               d: list[FloatArray]) -> tuple[list[float], list[FloatArray]]:
+    """The rays in the frame ``transform`` places: :math:`R^T (o - c)` and :math:`R^T d`."""
     rotation = transform[:3, :3]
     shifted = origin - transform[:3, 3]
     o = [float(shifted[0] * rotation[0, i] + shifted[1] * rotation[1, i]
                + shifted[2] * rotation[2, i]) for i in range(3)]
     local = [d[0] * rotation[0, i] + d[1] * rotation[1, i] + d[2] * rotation[2, i]
              for i in range(3)]
-    if kind == "box":
-        return box_entry(o, local, half_m)  # type: ignore[arg-type]  # scalars broadcast
-    if kind == "cylinder":
-        return cylinder_entry(o, local, half_m)  # type: ignore[arg-type]
-    return sphere_entry(o, local, float(half_m[0]))  # type: ignore[arg-type]
+    return o, local
 
 
 def bounding_radius(kind: str, half_m: FloatArray) -> float:
