@@ -59,7 +59,9 @@ def test_a_solid_out_of_the_way_keeps_few_rays_and_one_around_the_fan_keeps_all(
     around = Solid("around", "box", np.array([0.0, 0.0, 0.5]), np.eye(3),
                    np.array([1.0, 1.0, 0.5]))
     fans = Fans(np.array([0.0, math.pi / 2]), bearings)
-    seen_far, seen_around = facing_rays(fans, np.zeros(2), np.zeros(2), [far, around])
+    (seen_far, fan_far), (seen_around, _) = facing_rays(fans, np.zeros(2), np.zeros(2),
+                                                         [far, around])
+    assert np.array_equal(fan_far, seen_far // 360)
     # 0.2 m wide at 4.9 m: bearings within 0.0204 rad of the box's; rays 359 / 2 pi apart
     assert sorted(seen_far.tolist()) == [179, 180, 360 + 89, 360 + 90]
     assert sorted(seen_around.tolist()) == list(range(720))

@@ -92,14 +92,15 @@ def cast(origins: FloatArray, directions: FloatArray, solids: Sequence[Solid], *
             t = -o[2] / d[2]
         np.minimum(best, np.where((d[2] < 0) & (t >= 0), t, np.inf), out=best)
     cull = level and fans is not None and fan_cull_works(fans)
+    # each fan's first ray's origin: the fan's, which all its rays share
+    origin = [c[::len(fans.bearing_rad)] for c in o] if cull and fans is not None else o
     crossed = [solid for solid in solids  # a level scan passes above or below the others
-               if not level or _meets_heights(o[2], *solid.z_range_m)]
+               if not level or _meets_heights(origin[2], *solid.z_range_m)]
     if cull and crossed:
         assert fans is not None
-        every = len(fans.bearing_rad)  # the first ray of each fan: the fans' origins
-        for solid, rays in zip(crossed, facing_rays(fans, o[0][::every], o[1][::every],
-                                                    crossed), strict=True):
-            hit = _fan_entry(o, d, rays, solid, o[2][::every])
+        for solid, (rays, owner) in zip(crossed, facing_rays(fans, origin[0], origin[1],
+                                                             crossed), strict=True):
+            hit = _fan_entry(origin, d, rays, owner, solid)
             best[rays] = np.minimum(best[rays], hit)
     else:
         for solid in crossed:
@@ -131,25 +132,26 @@ def _solid_entry(o: list[FloatArray], d: list[FloatArray], solid: Solid,
             else cylinder_entry(ol, dl, solid.half_m))
 
 
-def _fan_entry(o: list[FloatArray], d: list[FloatArray], rays: IntArray, solid: Solid,
-               fan_z_m: FloatArray) -> FloatArray:
-    """:func:`_solid_entry` of the level rays ``rays``, from fans at heights ``fan_z_m``.
+def _fan_entry(origin: list[FloatArray], d: list[FloatArray], rays: IntArray, owner: IntArray,
+               solid: Solid) -> FloatArray:
+    """:func:`_solid_entry` of the level rays ``rays``, of fans ``owner`` from ``origin``.
 
     A solid turned about z alone, with every fan strictly between its bottom and top, needs
-    the rays' x and y only: the same terms, in the same order, as :func:`_solid_entry`.
+    the rays' x and y only: the same terms, in the same order, as :func:`_solid_entry`; those
+    of the origin are worked out once per fan.
     """
     rot = solid.rotation
     turned_about_z = rot[2, 0] == 0.0 and rot[2, 1] == 0.0 and rot[0, 2] == 0.0 \
         and rot[1, 2] == 0.0 and rot[2, 2] == 1.0
-    if not turned_about_z or not _strictly_within(fan_z_m - solid.center_m[2],
+    if not turned_about_z or not _strictly_within(origin[2] - solid.center_m[2],
                                                   solid.half_m[2]):
-        return _solid_entry([c[rays] for c in o], [c[rays] for c in d], solid, True)
-    shifted = [o[j][rays] - solid.center_m[j] for j in range(2)]
+        return _solid_entry([c[owner] for c in origin], [c[rays] for c in d], solid, True)
+    shifted = [origin[j] - solid.center_m[j] for j in range(2)]  # per fan
     directions = [d[j][rays] for j in range(2)]
     ol = [sum(shifted[j] * rot[j, i] for j in range(2) if rot[j, i] != 0.0) for i in range(2)]
     dl = [sum(directions[j] * rot[j, i] for j in range(2) if rot[j, i] != 0.0)
           for i in range(2)]
-    ol = [x if isinstance(x, np.ndarray) else np.zeros(len(rays)) for x in ol]
+    ol = [x[owner] if isinstance(x, np.ndarray) else np.zeros(len(rays)) for x in ol]
     dl = [x if isinstance(x, np.ndarray) else np.zeros(len(rays)) for x in dl]
     return (_level_box_entry(ol, dl, solid.half_m) if solid.kind == "box"
             else _level_cylinder_entry(ol, dl, solid.half_m))
@@ -162,8 +164,8 @@ def fan_cull_works(fans: Fans) -> bool:
 
 
 def facing_rays(fans: Fans, x_m: FloatArray, y_m: FloatArray,
-                solids: Sequence[Solid]) -> list[IntArray]:
-    """Per solid, the indexes of the level rays whose bearing can meet it; fans from (x, y).
+                solids: Sequence[Solid]) -> list[tuple[IntArray, IntArray]]:
+    """Per solid, the level rays whose bearing can meet it, and their fans; fans from (x, y).
 
     Seen from a fan's origin outside its footprint, the corners of the solid's box span less
     than half a turn of bearing; only the rays within that span (and a margin far above
@@ -196,13 +198,18 @@ def facing_rays(fans: Fans, x_m: FloatArray, y_m: FloatArray,
 
 
 def _spans(fan: IntArray, first: IntArray, stop: IntArray, order: IntArray | None,
-           rays: int) -> IntArray:
-    """Ray indexes of the sorted positions ``first[i]`` to ``stop[i] - 1`` of fan ``fan[i]``."""
+           rays: int) -> tuple[IntArray, IntArray]:
+    """The rays at sorted positions ``first[i]`` to ``stop[i] - 1`` of fan ``fan[i]``.
+
+    Returns:
+        Their indexes, and the fan of each.
+    """
     counts = np.maximum(stop - first, 0)
     position = np.arange(int(counts.sum())) + np.repeat(first - (np.cumsum(counts) - counts),
                                                         counts)
     chosen: IntArray = position if order is None else order[position]
-    return np.repeat(fan * rays, counts) + chosen
+    owner = np.repeat(fan, counts)
+    return owner * rays + chosen, owner
 
 
 def box_entry(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
