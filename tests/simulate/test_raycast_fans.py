@@ -41,6 +41,7 @@ def _fans(rng: np.random.Generator, scans: int, bearings: np.ndarray, z_m: float
     np.linspace(-2.0, 1.0, 100),  # a partial fan
     np.linspace(math.pi, -math.pi, 90, endpoint=False),  # bearings decreasing
     np.random.default_rng(3).permutation(np.linspace(0.0, 2 * math.pi, 50, endpoint=False)),
+    np.array([0.3]),  # one ray a scan
 ])
 @pytest.mark.parametrize("tilted", [False, True])
 def test_fans_give_the_distances_of_every_ray(bearings, tilted):
