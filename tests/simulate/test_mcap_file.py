@@ -106,7 +106,7 @@ def test_messages_added_in_batches_give_the_same_file():
 
 
 def test_payloads_as_rows_in_any_order_give_the_same_file():
-    from servicebot_cli.simulate.bag.mcap_file import Payloads
+    from servicebot_cli.simulate.bag.byte_rows import Payloads
 
     rng = np.random.default_rng(11)
     n = 300

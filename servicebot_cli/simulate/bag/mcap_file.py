@@ -9,9 +9,10 @@ file's bytes do not depend on how the messages are split into batches.
 
 Why not the ``mcap`` package's writer: it builds each message record in Python, about 4 us a
 message; a three-minute run has 80 000 of them, half the simulator's time. Here payloads come
-as :class:`Payloads`, rows of a few byte arrays (a stream's messages have one size); the
-records of a batch (headers and payloads) are copied into one byte array a block of rows at a
-time, with no Python object per message, and a chunk is a slice of it. Full chunks
+as :class:`~servicebot_cli.simulate.bag.byte_rows.Payloads`, rows of a few byte arrays (a
+stream's messages have one size); the records of a batch (headers and payloads) are copied
+into one byte array a block of rows at a time, with no Python object per message, and a chunk
+is a slice of it. Full chunks
 are joined, compressed, checksummed and written by one worker thread, in order, while the
 caller goes on (zstd and zlib let go of the GIL); at most :data:`PENDING_BYTES` of records
 wait for it (they are views on the batches' arrays, which live while a chunk of them waits).
@@ -30,6 +31,8 @@ from typing import BinaryIO, Protocol
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.simulate.bag.byte_rows import ByteRows, Payloads, after_prefixes
+
 MAGIC = b"\x89MCAP0\r\n"
 _HEADER, _FOOTER, _SCHEMA, _CHANNEL, _MESSAGE = 0x01, 0x02, 0x03, 0x04, 0x05
 _CHUNK, _MESSAGE_INDEX, _CHUNK_INDEX, _STATISTICS = 0x06, 0x07, 0x08, 0x0B
@@ -42,49 +45,6 @@ _INDEX_ENTRY = np.dtype([("log_time", "<u8"), ("offset", "<u8")])
 PENDING_BYTES = 32 << 20
 """Record bytes of full chunks at most waiting for the writing thread: a few seconds of a run
 without camera images, so the caller waits for none until the end."""
-
-
-ByteRows = npt.NDArray[np.uint8]
-IntArray = npt.NDArray[np.int64]
-
-
-@dataclass(frozen=True)
-class Payloads:
-    """Serialized messages, in order, as rows of a few byte arrays.
-
-    Message ``i`` is ``blocks[block[i]][row[i]]``.
-
-    Attributes:
-        blocks: Byte arrays, each of shape (messages, message size).
-        block: The block of each message.
-        row: The row of each message in its block.
-    """
-
-    blocks: Sequence[ByteRows]
-    block: IntArray
-    row: IntArray
-
-    def __len__(self) -> int:
-        return len(self.block)
-
-    def sizes(self) -> IntArray:
-        """Bytes of each message."""
-        widths = np.array([b.shape[1] for b in self.blocks], dtype=np.int64)
-        return widths[self.block] if len(widths) else np.zeros(0, dtype=np.int64)
-
-    @classmethod
-    def of(cls, payloads: Sequence[bytes]) -> Payloads:
-        """``payloads`` as rows: one block per distinct size."""
-        lengths = np.fromiter(map(len, payloads), dtype=np.int64, count=len(payloads))
-        sizes, block = np.unique(lengths, return_inverse=True)
-        row = np.zeros(len(payloads), dtype=np.int64)
-        blocks = []
-        for index, size in enumerate(sizes.tolist()):
-            mine = np.flatnonzero(block == index)
-            row[mine] = np.arange(len(mine))
-            data = b"".join([payloads[k] for k in mine.tolist()])
-            blocks.append(np.frombuffer(data, dtype=np.uint8).reshape(len(mine), size))
-        return cls(blocks, block.reshape(-1).astype(np.int64), row)
 
 
 @dataclass(frozen=True)
@@ -191,7 +151,8 @@ class McapWriter:
         heads["channel"], heads["sequence"] = channel_ids, sequences
         heads["log_time"] = heads["publish_time"] = log_times_ns
         offsets = np.concatenate(([0], np.cumsum(_MESSAGE_HEAD.itemsize + sizes)))
-        records = _records(heads, payloads, offsets)
+        records = after_prefixes(heads.view(np.uint8).reshape(len(heads), -1), payloads,
+                                 offsets)
         starts = self.written + offsets
         groups = starts[:-1] // self.chunk_size
         bounds = [0, *(np.flatnonzero(np.diff(groups)) + 1).tolist(), len(payloads)]
@@ -296,34 +257,6 @@ class Compressor(Protocol):
     def compress(self, data: memoryview) -> bytes:
         """``data`` compressed, as one frame."""
         ...
-
-
-def _records(heads: np.ndarray, payloads: Payloads, offsets: IntArray) -> ByteRows:
-    """The messages' records (``heads[i]`` then payload ``i``) end to end, one byte array.
-
-    Record ``i`` starts at ``offsets[i]``; ``offsets[-1]`` is the total. A block's rows go
-    to their places at once, through a view whose row ``k`` is the array from byte ``k`` on.
-    """
-    flat = np.empty(int(offsets[-1]), dtype=np.uint8)
-    starts = offsets[:-1]
-    _place(flat, starts, heads.view(np.uint8).reshape(len(heads), _MESSAGE_HEAD.itemsize))
-    for index, block in enumerate(payloads.blocks):
-        mine = np.flatnonzero(payloads.block == index)
-        if len(mine) and block.shape[1]:
-            rows = payloads.row[mine]
-            in_order = len(rows) == len(block) and bool(np.all(np.diff(rows) == 1)) \
-                and rows[0] == 0
-            _place(flat, starts[mine] + _MESSAGE_HEAD.itemsize,
-                   block if in_order else block[rows])
-    return flat
-
-
-def _place(flat: ByteRows, starts: IntArray, rows: ByteRows) -> None:
-    """Copy row ``i`` of ``rows`` to ``flat[starts[i]:starts[i] + width]`` (no overlaps)."""
-    width = rows.shape[1]
-    windows = np.lib.stride_tricks.as_strided(flat, shape=(len(flat) - width + 1, width),
-                                              strides=(1, 1), writeable=True)
-    windows[starts] = rows
 
 
 def _write_chunk(out: _Output, heads: np.ndarray, parts: Sequence[ByteRows],

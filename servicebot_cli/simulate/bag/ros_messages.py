@@ -15,27 +15,21 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.kinematics.rotations import quaternion_from_matrix
-from servicebot_cli.kinematics.transforms import rpy_matrix
 from servicebot_cli.simulate.bag import cdr, qos
 from servicebot_cli.simulate.bag import quaternions as rotations
+from servicebot_cli.simulate.bag.byte_rows import ByteRows
+from servicebot_cli.simulate.bag.tf_messages import ODOM_FRAME, JointTransforms, tf_base, tf_static
 from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.scenario.camera import CameraImages
 from servicebot_cli.simulate.simulator import SimResult
 
-if TYPE_CHECKING:
-    from servicebot_cli.description.elements import Joint
-
 FloatArray = npt.NDArray[np.float64]
-ByteRows = npt.NDArray[np.uint8]
-"""Serialized messages of one stream, one row each: shape (messages, message size)."""
 ODOM_TOPIC, TF_TOPIC, TF_STATIC_TOPIC = "/diff_controller/odom", "/tf", "/tf_static"
-JOINT_STATES_TOPIC, ODOM_FRAME = "/joint_states", "odom"
+JOINT_STATES_TOPIC = "/joint_states"
 CLOCK_TOPIC, DESCRIPTION_TOPIC = "/clock", "/robot_description"
 TF_TYPE = "tf2_msgs/msg/TFMessage"
 IMAGE_TYPE = "sensor_msgs/msg/Image"
@@ -80,14 +74,14 @@ def publishers(body: SimRobot, images: CameraImages = NO_IMAGES) -> list[Publish
     """
     out = [Publisher(DESCRIPTION_TOPIC, "std_msgs/msg/String", qos.ROBOT_DESCRIPTION, _once,
                      _robot_description),
-           Publisher(TF_STATIC_TOPIC, TF_TYPE, qos.STATIC_TF, _once, _tf_static),
+           Publisher(TF_STATIC_TOPIC, TF_TYPE, qos.STATIC_TF, _once, tf_static),
            Publisher(CLOCK_TOPIC, "rosgraph_msgs/msg/Clock", qos.CLOCK, _tick_times, _clock),
            Publisher(ODOM_TOPIC, "nav_msgs/msg/Odometry", qos.SYSTEM_DEFAULTS,
                      lambda r: r.odometry.times_s, _odometry),
            Publisher(TF_TOPIC, TF_TYPE, qos.SYSTEM_DEFAULTS, lambda r: r.odometry.times_s,
-                     _tf_base),
+                     tf_base),
            Publisher(TF_TOPIC, TF_TYPE, qos.DYNAMIC_TF, lambda r: r.joints.times_s,
-                     _JointTransforms()),
+                     JointTransforms()),
            Publisher(JOINT_STATES_TOPIC, "sensor_msgs/msg/JointState", qos.SYSTEM_DEFAULTS,
                      lambda r: r.joints.times_s, _joint_states)]
     if body.lidar is not None:
@@ -272,103 +266,3 @@ def _images(result: SimResult, encoding: str, pixel_bytes: int,
     layout.constant("<I", pixel_bytes * camera.width_px)  # step: bytes a row
     layout.sequence("data", "u1", pixel_bytes * camera.width_px * camera.height_px)
     return _serialize(layout, result.camera_times_s, {"data": np.stack(data)})
-
-
-def _transforms(frames: list[tuple[str, str]]) -> cdr.Layout:
-    layout = cdr.Layout()
-    layout.constant("<I", len(frames))
-    for i, (parent, child) in enumerate(frames):
-        layout.field(f"sec{i}", "<i4")
-        layout.field(f"nanosec{i}", "<u4")
-        layout.string(parent)
-        layout.string(child)
-        layout.field(f"translation{i}", "<f8", 3)
-        layout.field(f"rotation{i}", "<f8", 4)
-    return layout
-
-
-def _tf_messages(frames: list[tuple[str, str]], times: FloatArray,
-                 translations: list[FloatArray], quaternions: list[FloatArray]) -> ByteRows:
-    layout = _transforms(frames)
-    records = layout.records(len(times))
-    stamps = cdr.stamps_ns(times)
-    sec, nanosec = stamps // 1_000_000_000, stamps % 1_000_000_000
-    for i in range(len(frames)):
-        records[f"sec{i}"] = sec
-        records[f"nanosec{i}"] = nanosec
-        records[f"translation{i}"] = translations[i]
-        records[f"rotation{i}"] = quaternions[i]
-    return cdr.rows(records)
-
-
-def _tf_base(result: SimResult) -> ByteRows:
-    """The base in ``odom``, as the drive controller publishes it with its odometry."""
-    odom = result.odometry
-    zeros = np.zeros_like(odom.x_m)
-    return _tf_messages([(ODOM_FRAME, result.body.root_link)], odom.times_s,
-                        [np.column_stack((odom.x_m, odom.y_m, zeros))],
-                        [rotations.yaw(odom.yaw_rad)])
-
-
-@dataclass(frozen=True)
-class _MovingJoint:
-    """What does not change with a movable joint's position, as robot_state_publisher sends it.
-
-    Attributes:
-        frames: Parent and child link.
-        offset_m: The origin's translation, shape (3,).
-        axis: Unit axis in the joint frame, shape (3,).
-        slide: Unit direction of a prismatic joint in the parent frame; None for others.
-        fixed: The origin's rotation as a quaternion (x, y, z, w).
-    """
-
-    frames: tuple[str, str]
-    offset_m: FloatArray
-    axis: FloatArray
-    slide: FloatArray | None
-    fixed: FloatArray
-
-    @classmethod
-    def of(cls, joint: Joint) -> _MovingJoint:
-        """The constants of URDF joint ``joint``."""
-        axis = np.array(joint.axis, float) / np.linalg.norm(joint.axis)
-        rotation = rpy_matrix(*joint.origin.rpy)
-        return cls((joint.parent or "", joint.child or ""), np.array(joint.origin.xyz), axis,
-                   rotation @ axis if joint.type == "prismatic" else None,
-                   quaternion_from_matrix(rotation))
-
-
-class _JointTransforms:
-    """Every movable joint's transform, as robot_state_publisher sends them.
-
-    Each joint's constants are worked out at the first piece, for every piece of the run.
-    """
-
-    def __init__(self) -> None:
-        self.names: tuple[str, ...] = ()
-        self.joints: list[_MovingJoint] = []
-
-    def __call__(self, result: SimResult) -> ByteRows:
-        joints = result.joints
-        if tuple(joints.names) != self.names or not self.joints:
-            self.names = tuple(joints.names)
-            self.joints = [_MovingJoint.of(result.body.robot.joint(n)) for n in self.names]
-        q = joints.positions  # (samples, joints)
-        slides = np.array([j.slide is not None for j in self.joints], dtype=bool)
-        turns = rotations.about_axis(np.array([j.axis for j in self.joints]).reshape(-1, 3),
-                                     np.where(slides, 0.0, q))
-        quaternions = rotations.multiply(np.array([j.fixed for j in self.joints]).reshape(-1, 4),
-                                         turns)  # (samples, joints, 4)
-        translations = [j.offset_m + (np.zeros((len(q), 3)) if j.slide is None
-                                      else q[:, i, None] * j.slide)
-                        for i, j in enumerate(self.joints)]
-        return _tf_messages([j.frames for j in self.joints], joints.times_s, translations,
-                            [quaternions[:, i] for i in range(len(self.joints))])
-
-
-def _tf_static(result: SimResult) -> ByteRows:
-    """Fixed joints, once at time 0, latched (robot_state_publisher)."""
-    static = [(f.parent, f.name, f.origin) for f in result.body.robot.fixed_frames]
-    return _tf_messages([(p, c) for p, c, _ in static], _once(result),
-                        [np.array(o.xyz)[None] for _, _, o in static],
-                        [quaternion_from_matrix(rpy_matrix(*o.rpy))[None] for _, _, o in static])

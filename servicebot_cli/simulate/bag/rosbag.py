@@ -23,8 +23,9 @@ import numpy.typing as npt
 
 from servicebot_cli import __version__
 from servicebot_cli.common.files import OutputError, atomic_directory
+from servicebot_cli.simulate.bag.byte_rows import ByteRows, Payloads
 from servicebot_cli.simulate.bag.cdr import stamps_ns
-from servicebot_cli.simulate.bag.mcap_file import ByteRows, Channel, McapWriter, Payloads
+from servicebot_cli.simulate.bag.mcap_file import Channel, McapWriter
 from servicebot_cli.simulate.bag.msgdefs import MESSAGE_DEFINITIONS
 from servicebot_cli.simulate.bag.qos import offered_qos_profiles
 from servicebot_cli.simulate.bag.ros_messages import Publisher, Topic, topics

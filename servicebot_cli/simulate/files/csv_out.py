@@ -19,6 +19,7 @@ import numpy.typing as npt
 
 from servicebot_cli.common.files import OutputError, atomic_directory, atomic_output
 from servicebot_cli.common.jsonable import dumps
+from servicebot_cli.simulate.bag.byte_rows import place_rows
 from servicebot_cli.simulate.files.png import png_bytes
 from servicebot_cli.simulate.sensors.camera_image import Frame
 from servicebot_cli.simulate.simulator import SimResult
@@ -54,17 +55,8 @@ def _rows(columns: Sequence[npt.ArrayLike]) -> str:
     ends, cell_text = np.cumsum(counts), which.reshape(-1)
     for length in np.flatnonzero(counts).tolist():  # each text length's cells in one copy
         cells = order[ends[length] - counts[length]:ends[length]]
-        _place(out, starts[cells], table[cell_text[cells], :length])
+        place_rows(out, starts[cells], table[cell_text[cells], :length])
     return out.tobytes().decode("ascii")
-
-
-def _place(flat: npt.NDArray[np.uint8], starts: npt.NDArray[np.int64],
-           rows: npt.NDArray[np.uint8]) -> None:
-    """Copy row ``i`` of ``rows`` to ``flat[starts[i]:starts[i] + width]`` (no overlaps)."""
-    width = rows.shape[1]
-    windows = np.lib.stride_tricks.as_strided(flat, shape=(len(flat) - width + 1, width),
-                                              strides=(1, 1), writeable=True)
-    windows[starts] = rows
 
 
 def _table(header: Sequence[str], columns: Sequence[npt.ArrayLike]) -> Table:

@@ -1,0 +1,87 @@
+"""Messages as rows of byte arrays, and rows copied into one byte array, many at once.
+
+A stream's serialized messages all have one size, so they are the rows of one byte array.
+Rows of several such arrays are interleaved into one array without a Python object per
+message: all of one array's rows go to their places in one numpy assignment, through a view of
+the target whose row ``k`` is the ``width`` bytes from byte ``k`` on.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+ByteRows = npt.NDArray[np.uint8]
+"""Messages of one size, one row each: shape (messages, message size)."""
+IntArray = npt.NDArray[np.int64]
+
+
+@dataclass(frozen=True)
+class Payloads:
+    """Serialized messages, in order, as rows of a few byte arrays.
+
+    Message ``i`` is ``blocks[block[i]][row[i]]``.
+
+    Attributes:
+        blocks: Byte arrays, each of shape (messages, message size).
+        block: The block of each message.
+        row: The row of each message in its block.
+    """
+
+    blocks: Sequence[ByteRows]
+    block: IntArray
+    row: IntArray
+
+    def __len__(self) -> int:
+        return len(self.block)
+
+    def sizes(self) -> IntArray:
+        """Bytes of each message."""
+        widths = np.array([b.shape[1] for b in self.blocks], dtype=np.int64)
+        return widths[self.block] if len(widths) else np.zeros(0, dtype=np.int64)
+
+    @classmethod
+    def of(cls, payloads: Sequence[bytes]) -> Payloads:
+        """``payloads`` as rows: one block per distinct size."""
+        lengths = np.fromiter(map(len, payloads), dtype=np.int64, count=len(payloads))
+        sizes, block = np.unique(lengths, return_inverse=True)
+        row = np.zeros(len(payloads), dtype=np.int64)
+        blocks = []
+        for index, size in enumerate(sizes.tolist()):
+            mine = np.flatnonzero(block == index)
+            row[mine] = np.arange(len(mine))
+            data = b"".join([payloads[k] for k in mine.tolist()])
+            blocks.append(np.frombuffer(data, dtype=np.uint8).reshape(len(mine), size))
+        return cls(blocks, block.reshape(-1).astype(np.int64), row)
+
+
+def after_prefixes(prefixes: ByteRows, payloads: Payloads, offsets: IntArray) -> ByteRows:
+    """Each message's prefix row (``prefixes[i]``) then its payload, end to end, in one array.
+
+    Message ``i`` starts at ``offsets[i]``; ``offsets[-1]`` is the total.
+    """
+    flat = np.empty(int(offsets[-1]), dtype=np.uint8)
+    starts, width = offsets[:-1], prefixes.shape[1]
+    place_rows(flat, starts, prefixes)
+    for index, block in enumerate(payloads.blocks):
+        mine = np.flatnonzero(payloads.block == index)
+        if len(mine) and block.shape[1]:
+            rows = payloads.row[mine]
+            in_order = len(rows) == len(block) and bool(np.all(np.diff(rows) == 1)) \
+                and rows[0] == 0
+            place_rows(flat, starts[mine] + width, block if in_order else block[rows])
+    return flat
+
+
+def place_rows(flat: ByteRows, starts: IntArray, rows: ByteRows) -> None:
+    """Copy row ``i`` of ``rows`` to ``flat[starts[i]:starts[i] + width]``.
+
+    The places must not overlap (nor run past the end of ``flat``).
+    """
+    width = rows.shape[1]
+    windows = np.lib.stride_tricks.as_strided(flat, shape=(len(flat) - width + 1, width),
+                                              strides=(1, 1), writeable=True)
+    windows[starts] = rows
