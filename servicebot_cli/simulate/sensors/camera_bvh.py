@@ -55,16 +55,18 @@ def mesh_entry(o: FloatArray, d: FloatArray, bound: float, root: int,
         Distance (inf: none) and triangle (-1: none).
     """
     corner, edge_1, edge_2, _, _, low, high, first, count = mesh
-    inverse = np.empty(3)
-    for i in range(3):
-        inverse[i] = 1.0 / (d[i] if abs(d[i]) > 1e-300 else 1e-300)
+    i0, i1, i2 = _inverse(d[0]), _inverse(d[1]), _inverse(d[2])
     best, found, facing, top = math.inf, -1, False, 0
     stack[0] = root
     while top >= 0:
         node = stack[top]
         top -= 1
         limit = min(best, bound)
-        if box_near(o, inverse, low[node], high[node]) > limit + _SLACK * (1.0 + limit):
+        near, far = 0.0, math.inf  # the slab method on the node's box
+        for i, inverse in ((0, i0), (1, i1), (2, i2)):
+            t1, t2 = (low[node, i] - o[i]) * inverse, (high[node, i] - o[i]) * inverse
+            near, far = max(near, min(t1, t2)), min(far, max(t1, t2))
+        if near > far or near > limit + _SLACK * (1.0 + limit):
             continue
         if count[node] == 0:
             stack[top + 1], stack[top + 2] = first[node], first[node] + 1
@@ -90,6 +92,12 @@ def mesh_entry(o: FloatArray, d: FloatArray, bound: float, root: int,
     if not facing:
         return math.inf, -1
     return best, found
+
+
+@njit(cache=True, nogil=True, error_model="numpy", inline="always")
+def _inverse(component: float) -> float:
+    """1 / ``component``, kept finite (a ray along a box's face stays in its slab)."""
+    return 1.0 / (component if abs(component) > 1e-300 else 1e-300)
 
 
 @njit(cache=True, nogil=True, error_model="numpy", inline="always")
