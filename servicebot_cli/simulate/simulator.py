@@ -16,6 +16,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
@@ -30,14 +31,16 @@ from servicebot_cli.simulate.scenario.located import ScenarioError
 from servicebot_cli.simulate.scenario.world_check import camera_rate_limit, check_scenario
 from servicebot_cli.simulate.self_contact import SelfContact, SelfContactWatch
 from servicebot_cli.simulate.sensors import camera_info, imu, joint_states, lidar, odometry
-from servicebot_cli.simulate.sensors.camera_image import Frame
-from servicebot_cli.simulate.sensors.camera_stream import PIECE_BYTES, CameraStream
 from servicebot_cli.simulate.sensors.noise import Noise, stream_rng
 from servicebot_cli.simulate.sensors.sample import SampleClock, sample_count
 from servicebot_cli.simulate.world import blocking, motion
 from servicebot_cli.simulate.world.contacts import Closest, Placed, Tester, closest, obstacles
 from servicebot_cli.simulate.world.raycast import Mesh
 from servicebot_cli.simulate.world.solids import Solid
+
+if TYPE_CHECKING:  # the camera's modules are imported only for runs that render images
+    from servicebot_cli.simulate.sensors.camera_image import Frame
+    from servicebot_cli.simulate.sensors.camera_stream import CameraStream
 
 FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.int64]
@@ -107,6 +110,8 @@ def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[So
     run = _Run(body, scenario, seed, list(solids), meshes)
     step = max(1, round(piece_s / run.dt_s)) if math.isfinite(piece_s) else run.ticks
     if run.images is not None and math.isfinite(piece_s):  # frames kept within PIECE_BYTES
+        from servicebot_cli.simulate.sensors.camera_stream import PIECE_BYTES
+
         frames = max(1, PIECE_BYTES // run.images.frame_bytes)
         step = min(step, max(1, int(frames / run.clocks["camera"].rate_hz / run.dt_s)))
     elif run.images is not None:
@@ -184,6 +189,8 @@ class _Run:
         if body.camera is not None:
             rate = _rate(body.camera.spec, scenario)
             if scenario.camera.enabled:
+                from servicebot_cli.simulate.sensors.camera_stream import CameraStream
+
                 self.images = CameraStream(body, scenario.camera, seed, solids, meshes)
                 self.camera = self.images.intrinsics
                 rate = scenario.camera.rate_hz or camera_rate_limit(body, scenario)[0]

@@ -113,7 +113,8 @@ class McapWriter:
         import zstandard
 
         self.out, self.chunk_size, self.channels = _Output(handle), chunk_size, channels
-        self.compressor = zstandard.ZstdCompressor()
+        # level 1: what rosbag2's MCAP storage (the mcap C++ writer's Default) uses
+        self.compressor = zstandard.ZstdCompressor(level=1)
         self.out.write(MAGIC)
         self.out.write(_record(_HEADER, _string(profile) + _string(library)))
         self.schemas, self.channel_records = _schemas_and_channels(channels)

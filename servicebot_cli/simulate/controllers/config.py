@@ -65,7 +65,8 @@ def read_controllers_file(path: Path | None) -> ControllersFile:
     import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
     try:
-        document = yaml.safe_load(path.read_text(encoding="utf-8"))
+        document = yaml.load(path.read_text(encoding="utf-8"),  # libyaml's safe loader if built
+                             Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
     except (OSError, UnicodeDecodeError, yaml.YAMLError) as exc:
         raise ControllersFileError(f"{path}: cannot read the controllers file: {exc}") from None
     if not isinstance(document, dict):

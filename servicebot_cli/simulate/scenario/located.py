@@ -87,7 +87,9 @@ def _yaml_loader() -> type[SafeLoader]:
     """
     import yaml
 
-    class Loader(yaml.SafeLoader):  # type: ignore[misc]  # PyYAML ships no types
+    base = getattr(yaml, "CSafeLoader", yaml.SafeLoader)  # libyaml's parser when built with it
+
+    class Loader(base):  # type: ignore[misc, valid-type]  # PyYAML ships no types
         """SafeLoader with YAML 1.2's exponent floats."""
 
     Loader.add_implicit_resolver(
