@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 import click
 
 from servicebot_cli.commands.command import Command
+from servicebot_cli.commands.kinematics_options import srdf_option
 from servicebot_cli.commands.options import (
     Number,
     OutputPath,
@@ -91,6 +92,10 @@ class ExpectationParam(click.ParamType["Expectation"]):
 @click.option("--expect", "expectations", type=ExpectationParam(), multiple=True,
               metavar="EXPR", help="Fail (exit 1) unless the summary meets EXPR, e.g. "
               "'collisions == 0' or 'odometry_drift.final_position_m < 0.05' (repeatable).")
+@click.option("--allow-collisions", is_flag=True,
+              help="Run arm trajectory points that put links into each other or the floor "
+              "(refused by default, as ik refuses them); the run logs the self collisions.")
+@srdf_option
 @click.option("--progress/--no-progress", default=None,
               help="Progress bar on stderr  [default: on a terminal, outside CI].")
 @format_option
@@ -101,7 +106,8 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
              max_angular: float | None, controllers_file: str | None,
              camera_scale: float | None, camera_rate_hz: float | None,
              camera_depth: bool, speed: float,
-             expectations: tuple[Expectation, ...], progress: bool | None, fmt: str) -> None:
+             expectations: tuple[Expectation, ...], allow_collisions: bool, srdf: str | None,
+             progress: bool | None, fmt: str) -> None:
     """Simulate the robot's base, arm and sensors, headless and fast.
 
     Drives the diff-drive base with the scenario's timed cmd_vel, moves the arm along its
@@ -131,13 +137,14 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
                           camera_rate_hz=camera_rate_hz, camera_depth=camera_depth or None)
     request = SimulateRequest(robot_args.source(), scenario_file, overrides, seed,
                               Outputs(out_dir, bag, plot), live_window=not headless,
-                              progress=progress, expectations=expectations)
+                              progress=progress, expectations=expectations,
+                              allow_collisions=allow_collisions, srdf=srdf)
     report = session.run(request, stderr=sys.stderr)
     show_simulation(report, fmt)
-    if report.result is not None:  # kept for the live window (not --headless)
+    if report.live_track is not None:  # gathered for the live window (not --headless)
         from servicebot_cli.simulate.files.live import show
 
-        show(report.result, speed=speed)
+        show(report.live_track, speed=speed)
     if report.unmet:
         from servicebot_cli.output.simulate_text import unmet_line
 

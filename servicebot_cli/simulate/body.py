@@ -8,7 +8,7 @@ shapes of every link. Nothing is a constant of the bundled robot.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Generic, TypeVar
 
@@ -36,6 +36,7 @@ if TYPE_CHECKING:
 
     from servicebot_cli.description.elements import Joint
     from servicebot_cli.description.extensions import Sensor
+    from servicebot_cli.description.packages import PackageResolver
     from servicebot_cli.description.robot import RobotDescription
 
 FloatArray = npt.NDArray[np.float64]
@@ -65,6 +66,8 @@ class SimRobot:
         base_height_m: Height of the root link's origin above the floor (wheels touching it).
         shape: Every link's collision parts, posed by the arm joints.
         lidar, imu, camera: Mounted sensors, None where the URDF has none.
+        disabled_pairs: Link pairs the self-contact check leaves out (an SRDF's
+            ``<disable_collisions>``, as ``ik --srdf``).
     """
 
     robot: RobotDescription
@@ -76,6 +79,7 @@ class SimRobot:
     lidar: Mounted[LidarSpec] | None
     imu: Mounted[ImuSpec] | None
     camera: Mounted[CameraSpec] | None
+    disabled_pairs: tuple[tuple[str, str], ...] = ()
 
     @property
     def root_link(self) -> str:
@@ -88,8 +92,12 @@ class SimRobot:
         return self.robot.model_with_base("planar")
 
 
-def sim_robot(robot: RobotDescription) -> SimRobot:
+def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = None,
+              disabled_pairs: Sequence[tuple[str, str]] = ()) -> SimRobot:
     """Read what the simulator needs from ``robot``.
+
+    ``resolver`` finds ``package://`` collision meshes (default: the environment's and the
+    file's workspace); ``disabled_pairs`` are left out of the self-contact check.
 
     Raises:
         DescriptionError: Not a differential drive, or no collision shape on the base.
@@ -113,10 +121,11 @@ def sim_robot(robot: RobotDescription) -> SimRobot:
         robot=robot, geometry=geometry, joint_space=space,
         arm_joints=arm_joints,
         base_height_m=height,
-        shape=_shape(robot, arm_joints),
+        shape=_shape(robot, arm_joints, resolver),
         lidar=_mount(robot, LIDAR_TYPES, lidar_spec, placement),
         imu=_mount(robot, ("imu",), imu_spec, placement),
         camera=_mount(robot, CAMERA_TYPES, camera_spec, placement),
+        disabled_pairs=tuple(disabled_pairs),
     )
 
 
@@ -130,13 +139,21 @@ def _mount(robot: RobotDescription, types: tuple[str, ...], read: Callable[[Sens
     return Mounted(read(sensor), transform, sensor.reference)
 
 
-def _shape(robot: RobotDescription, arm_joints: tuple[str, ...]) -> RobotShape:
-    shape = robot_shape(robot, arm_joints)
+def _shape(robot: RobotDescription, arm_joints: tuple[str, ...],
+           resolver: PackageResolver | None) -> RobotShape:
+    reader = None
+    if resolver is not None:
+        from servicebot_cli.simulate.world.meshes import link_mesh_reader
+
+        reader = link_mesh_reader(resolver, robot.path.parent)
+    shape = robot_shape(robot, arm_joints, reader)
     if not any(p.link == shape.root for p in shape.parts):
+        skipped = next((s for s in shape.skipped if s.startswith(f"{shape.root}:")), None)
         raise DescriptionError(
-            f"{robot.display}: the base has no box, cylinder or sphere collision shape, so "
-            "the simulator cannot tell where it would touch obstacles; add <collision> to "
-            f"{robot.root_link}"
+            f"{robot.display}: the base has no collision shape the simulator can use"
+            + (f" ({skipped})" if skipped else "")
+            + ", so it cannot tell where it would touch obstacles; add a <collision> box, "
+            f"cylinder, sphere or readable mesh to {robot.root_link}"
         )
     return shape
 

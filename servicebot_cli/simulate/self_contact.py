@@ -12,6 +12,7 @@ the arm's positions in, events out.
 
 from __future__ import annotations
 
+from collections.abc import Collection
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -49,11 +50,13 @@ class SelfContactWatch:
         shape: The robot's parts; its joints are the arm positions' columns.
         base_height_m: Height of the base frame above the floor [m].
         dt_s: Control period [s].
+        disabled: Link pairs never checked (an SRDF's ``<disable_collisions>``).
     """
 
     def __init__(self, robot: RobotDescription, shape: RobotShape, base_height_m: float,
-                 dt_s: float) -> None:
+                 dt_s: float, disabled: Collection[tuple[str, str]] = ()) -> None:
         self.robot, self.shape, self.base_height_m, self.dt_s = robot, shape, base_height_m, dt_s
+        self.disabled = tuple(disabled)
         self.built: tuple[CollisionCheck, FloatArray, list[int]] | None = None
         self.touching: set[tuple[str, str]] = set()
         self.previous = -2  # the last tick checked
@@ -68,7 +71,8 @@ class SelfContactWatch:
             from servicebot_cli.kinematics.collisions import build_check
 
             robot, model = self.robot, self.robot.model
-            check = build_check(robot, model, PackageResolver(context=robot.path.parent))
+            check = build_check(robot, model, PackageResolver(context=robot.path.parent),
+                                disabled=self.disabled)
             columns = [model.joints[model.getJointId(name)].idx_q for name in self.shape.joints]
             self.built = (check, np.array(pin.neutral(model)), columns)
         return self.built

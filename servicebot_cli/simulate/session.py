@@ -3,7 +3,7 @@
 Click-free, so the command only builds a :class:`SimulateRequest` and bench/simulate.py can
 drive and time the same function. The progress stream and the clock are injected. The run is
 simulated a piece at a time and each piece goes to every output as it comes, so memory does
-not grow with the simulated duration; the live window alone needs the whole run kept.
+not grow with the simulated duration; the live window keeps a thinned track of it.
 """
 
 from __future__ import annotations
@@ -22,9 +22,11 @@ from servicebot_cli.simulate.scenario.definition import Scenario
 
 if TYPE_CHECKING:
     from servicebot_cli.description.loader import RobotSource
+    from servicebot_cli.description.packages import PackageResolver
     from servicebot_cli.description.robot import RobotDescription
     from servicebot_cli.simulate.bag.ros_messages import Publisher
     from servicebot_cli.simulate.expectations import Expectation
+    from servicebot_cli.simulate.files.live import LiveTrack
     from servicebot_cli.simulate.simulator import SimResult
     from servicebot_cli.simulate.summary import Summary
 
@@ -67,6 +69,9 @@ class SimulateRequest:
         live_window: The run is played back in a window afterwards: a display must exist.
         progress: Draw a progress bar (None: on a terminal, outside CI).
         expectations: What the summary must meet (``simulate --expect``).
+        allow_collisions: Run a trajectory whose points put links into each other or the
+            floor (the run logs it); else such a point is refused, as ``ik`` refuses it.
+        srdf: An SRDF whose ``<disable_collisions>`` pairs are never checked.
     """
 
     robot: RobotSource
@@ -77,21 +82,24 @@ class SimulateRequest:
     live_window: bool = False
     progress: bool | None = None
     expectations: tuple[Expectation, ...] = ()
+    allow_collisions: bool = False
+    srdf: str | None = None
 
 
 @dataclass(frozen=True)
 class SimulateReport:
     """What the command shows: the summary and the wall time of the run [s].
 
-    ``result`` is the whole run when it was asked to be kept (for the live window), else
-    None. ``unmet`` holds each expectation the summary does not meet, with the value it has
-    (None when the field has none).
+    ``result`` is the whole run when it was asked to be kept, else None; ``live_track`` what
+    the live window plays, when it was asked for. ``unmet`` holds each expectation the
+    summary does not meet, with the value it has (None when the field has none).
     """
 
     summary: Summary
     wall_s: float
     result: SimResult | None = None
     unmet: tuple[tuple[Expectation, float | None], ...] = ()
+    live_track: LiveTrack | None = None
 
     @property
     def real_time_factor(self) -> float:
@@ -109,13 +117,20 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
         clock: Wall clock [s] for the report's ``wall_s``.
 
     Raises:
-        ServicebotError: Bad robot or scenario, no display for the live window, or an
-            output that cannot be written.
+        ServicebotError: Bad robot or scenario, a trajectory point in collision, an
+            unreadable SRDF, no display for the live window, or an output that cannot be
+            written.
     """
     from servicebot_cli.description.loader import load
     from servicebot_cli.simulate.scenario.definition import load_scenario
 
     robot = load(request.robot)
+    disabled: tuple[tuple[str, str], ...] = ()
+    if request.srdf is not None:
+        from servicebot_cli.kinematics.frames import link_names
+        from servicebot_cli.kinematics.srdf import disabled_pairs
+
+        disabled = tuple(disabled_pairs(request.srdf, link_names(robot)))
     scenario = with_overrides(load_scenario(request.scenario_file), request.overrides)
     problem = ""
     if request.live_window:  # the window's module brings the plot's, not needed headless
@@ -128,7 +143,9 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
     report = run_and_write(robot, scenario, seed=request.seed, outputs=request.outputs,
                            scenario_dir=scenario_dir, stderr=stderr, progress=request.progress,
                            clock=clock, controllers=request.overrides.controllers_file,
-                           keep_run=request.live_window)
+                           live=request.live_window, resolver=request.robot.resolver(),
+                           disabled_pairs=disabled,
+                           check_points=not request.allow_collisions)
     unmet = tuple((e, e.value(report.summary)) for e in request.expectations
                   if not e.holds(report.summary))
     return dataclasses.replace(report, unmet=unmet)
@@ -162,17 +179,24 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
                   progress: bool | None = None,
                   clock: Callable[[], float] = time.perf_counter,
                   controllers: str | None = None, piece_s: float | None = None,
-                  keep_run: bool = False) -> SimulateReport:
+                  keep_run: bool = False, live: bool = False,
+                  resolver: PackageResolver | None = None,
+                  disabled_pairs: tuple[tuple[str, str], ...] = (),
+                  check_points: bool = False) -> SimulateReport:
     """Run ``scenario`` on a loaded robot and write ``outputs``; the wall time excludes loading.
 
     The controller's parameters come from the controllers file (``controllers``, else the
     one the robot names or has beside it) where the scenario does not set them. The run is
     simulated ``piece_s`` simulated seconds at a time (None: the simulator's default), or in
     one piece kept in the report with ``keep_run``; the outputs are the same bytes either way.
+    ``live`` gathers the live window's track as the run goes. ``resolver`` finds the robot's
+    collision meshes; ``disabled_pairs`` are never checked for self contact; with
+    ``check_points`` a trajectory point in collision is refused before the run.
 
     Raises:
-        ServicebotError: Bad scenario for this robot, an unreadable controllers file, or an
-            output that cannot be written.
+        ServicebotError: Bad scenario for this robot, an unreadable controllers file, a
+            trajectory point in collision (``check_points``), or an output that cannot be
+            written.
     """
     from servicebot_cli.simulate.controllers.config import (
         find_controllers_file,
@@ -191,7 +215,11 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
     from servicebot_cli.simulate.world.solids import world_solids
 
     start = clock()
-    body = sim_robot(robot)
+    body = sim_robot(robot, resolver=resolver, disabled_pairs=disabled_pairs)
+    if check_points:
+        from servicebot_cli.simulate.scenario.world_check import check_arm_points
+
+        check_arm_points(body, scenario)
     meshes = load_meshes(scenario, scenario_dir)
     piece_s = math.inf if keep_run else simulator.PIECE_S if piece_s is None else piece_s
     with contextlib.ExitStack() as stack:  # outputs go in place when it closes, unless on error
@@ -199,17 +227,26 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
                        enabled=progress) if stderr is not None else None
         if bar:  # an error line, or Ctrl-C's, starts on a clean line
             stack.callback(bar.close)
-        summary, last = _write_pieces(
+        summary, last, writers = _write_pieces(
             simulator.pieces(body, scenario, seed=seed, solids=world_solids(scenario.world),
                              meshes=meshes, piece_s=piece_s),
-            outputs, publishers(body, scenario.camera), stack, bar.advance if bar else None)
-    return SimulateReport(summary, clock() - start, last if keep_run else None)
+            outputs, publishers(body, scenario.camera), stack, bar.advance if bar else None,
+            live)
+    track = None
+    if live:
+        from servicebot_cli.simulate.files.live import LiveWriter
+
+        track = next(w.track for w in writers if isinstance(w, LiveWriter))
+    return SimulateReport(summary, clock() - start, last if keep_run else None,
+                          live_track=track)
 
 
 def _write_pieces(pieces: Iterator[SimResult], outputs: Outputs, sources: list[Publisher],
-                  stack: contextlib.ExitStack,
-                  advance: Callable[[int], None] | None) -> tuple[Summary, SimResult]:
-    """Give each piece to the summary and to every writer; the summary and the last piece.
+                  stack: contextlib.ExitStack, advance: Callable[[int], None] | None,
+                  live: bool = False) -> tuple[Summary, SimResult, list[Writer]]:
+    """Give each piece to the summary and to every writer (``live``: the live window's too).
+
+    Returns the summary, the last piece and the writers.
 
     The writers begin with the first piece, which comes once the scenario is checked.
     """
@@ -219,7 +256,7 @@ def _write_pieces(pieces: Iterator[SimResult], outputs: Outputs, sources: list[P
     writers: list[Writer] | None = None
     for piece in pieces:
         if writers is None:
-            writers = _writers(outputs, piece, sources, stack)
+            writers = _writers(outputs, piece, sources, stack, live)
         summarizer.add(piece)
         for writer in writers:
             writer.add(piece)
@@ -228,7 +265,7 @@ def _write_pieces(pieces: Iterator[SimResult], outputs: Outputs, sources: list[P
     summary = summarizer.summary()
     for writer in writers or []:
         writer.finish(summary)
-    return summary, piece
+    return summary, piece, writers or []
 
 
 class Writer(Protocol):
@@ -242,9 +279,16 @@ class Writer(Protocol):
 
 
 def _writers(outputs: Outputs, first: SimResult, sources: list[Publisher],
-             stack: contextlib.ExitStack) -> list[Writer]:
-    """The writers ``outputs`` asks for, begun on ``stack``, for a run starting with ``first``."""
+             stack: contextlib.ExitStack, live: bool = False) -> list[Writer]:
+    """The writers ``outputs`` asks for, begun on ``stack``, for a run starting with ``first``.
+
+    With ``live``, the live window's track is gathered too.
+    """
     writers: list[Writer] = []
+    if live:
+        from servicebot_cli.simulate.files.live import LiveWriter
+
+        writers.append(LiveWriter(first))
     if outputs.bag is not None:
         from servicebot_cli.simulate.bag.rosbag import BagWriter
 

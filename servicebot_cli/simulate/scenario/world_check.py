@@ -53,6 +53,42 @@ def check_scenario(body: SimRobot, scenario: Scenario, solids: Sequence[Solid],
     return q0
 
 
+def check_arm_points(body: SimRobot, scenario: Scenario) -> None:
+    """Refuse a trajectory point that puts links of the robot into each other or the floor.
+
+    The check and the words are ``ik``'s and ``drive --arm``'s (the pairs ``ik`` leaves out,
+    and ``body.disabled_pairs``); the arm's way between points is what the run logs as self
+    collisions. Joints the trajectory does not name stay where the run starts them.
+
+    Raises:
+        ScenarioError: A point in collision, with its line in the scenario.
+    """
+    trajectory = scenario.arm
+    if not trajectory.points:
+        return
+    from servicebot_cli.simulate.self_contact import SelfContactWatch
+
+    q0 = _check_arm(body, scenario)
+    columns = [body.arm_joints.index(name) for name in trajectory.joint_names]
+    points = np.repeat(q0[None], len(trajectory.points), axis=0)
+    points[:, columns] = [point.positions for point in trajectory.points]
+    watch = SelfContactWatch(body.robot, body.shape, body.base_height_m, 1.0,
+                             body.disabled_pairs)
+    events = watch.advance(0, points)  # one point per "tick": an event's time is its index
+    if not events:
+        return
+    from servicebot_cli.kinematics.collisions import Contact
+    from servicebot_cli.kinematics.diagnosis import ways_out
+
+    k = round(events[0].time_s)
+    contact = Contact(events[0].first, events[0].second)
+    typed = " ".join(f"{name}={value:g}" for name, value
+                     in zip(trajectory.joint_names, trajectory.points[k].positions, strict=True))
+    raise _error(scenario, ("arm", "points", k), (
+        f"arm point {typed} is reachable only through a collision: {contact} would "
+        f"intersect; {ways_out(contact)}"))
+
+
 def _check_arm(body: SimRobot, scenario: Scenario) -> FloatArray:
     space = body.joint_space
     index = [space.index(n) for n in body.arm_joints]
