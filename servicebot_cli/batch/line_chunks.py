@@ -50,7 +50,7 @@ def numbers(cells: list[str], width: int, columns: Sequence[int]) -> FloatArray 
     faster; an empty cell, a word or a non-finite value gives None.
     """
     try:
-        if len(columns) == width:
+        if list(columns) == list(range(width)):  # every column, in the file's order
             given = np.array(cells, dtype=np.float64).reshape(-1, width)
         else:
             given = np.array([cells[k::width] for k in columns],

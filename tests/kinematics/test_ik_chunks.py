@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from servicebot_cli.batch.ik_chunks import CHUNK_LINES
+from servicebot_cli.batch.line_chunks import numbers
 from servicebot_cli.kinematics.rotations import matrices_from_quaternions, matrix_from_quaternion
 from servicebot_cli.kinematics.target_table import table_targets, target_layout
 from servicebot_cli.kinematics.targets import row_target
@@ -63,7 +64,8 @@ def _same_rows(run, tmp_path, csv_path, jsonl_path, *options):
     return fast
 
 
-@pytest.mark.parametrize("columns", [POSE[:3] + POSE[6:], POSE[:3]])
+@pytest.mark.parametrize("columns", [POSE[:3] + POSE[6:], POSE[:3], POSE[2::-1],
+                                     POSE[6:] + POSE[:3]])  # in another order too
 def test_chunks_write_the_rows_of_the_per_line_path(run, tmp_path, columns):
     rows = _poses(run, tmp_path, LINES, np.random.default_rng(1))
     rows[CHUNK_LINES + 5][0] = 3.0  # out of reach: a failed row amid rows from a template
@@ -123,7 +125,8 @@ def test_a_header_layout_gives_the_targets_of_row_target(header, deg):
     values = rng.uniform(-2, 2, size=(20, len(header)))
     layout = target_layout(header, "tool", deg=deg)
     assert layout is not None
-    targets = table_targets(layout, values[:, list(layout.columns)], None)
+    cells = [repr(v) for v in values.ravel().tolist()]  # as the chunked reader splits them
+    targets = table_targets(layout, numbers(cells, len(header), layout.columns), None)
     assert targets is not None
     for row, target in zip(values, targets, strict=True):
         expected = row_target(dict(zip(header, map(repr, row.tolist()), strict=True)), "tool",
