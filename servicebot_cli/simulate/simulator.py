@@ -33,8 +33,10 @@ from servicebot_cli.simulate.self_contact import SelfContact, SelfContactWatch
 from servicebot_cli.simulate.sensors import camera_info, imu, joint_states, lidar, odometry
 from servicebot_cli.simulate.sensors.noise import Noise, stream_rng
 from servicebot_cli.simulate.sensors.sample import SampleClock, sample_count
+from servicebot_cli.simulate.shape_memo import TransformMemo
 from servicebot_cli.simulate.world import blocking, motion
-from servicebot_cli.simulate.world.contacts import Closest, Placed, Tester, closest, obstacles
+from servicebot_cli.simulate.world.clearance import Closest, closest
+from servicebot_cli.simulate.world.contacts import Placed, Tester, obstacles
 from servicebot_cli.simulate.world.raycast import Mesh
 from servicebot_cli.simulate.world.solids import Solid
 
@@ -150,6 +152,7 @@ class _Run:
         self.body, self.scenario, self.seed, self.solids = body, scenario, seed, solids
         self.meshes = meshes
         self.tester = Tester(body.shape, obstacles(solids, meshes))
+        self.transforms = TransformMemo(body.shape)  # the parts at a piece's configurations
         arm_q0 = check_scenario(body, scenario, solids, meshes, self.tester)
         geometry, ctrl, start = body.geometry, scenario.controller, scenario.initial_pose
         self.planner = WheelPlanner(scenario.cmd_vel, ctrl, geometry, scenario.duration_s)
@@ -202,8 +205,9 @@ class _Run:
         body, first = self.body, ticks.start
         stop = None if ticks.stop >= self.ticks else ticks.stop  # None: every sample left
         plan = self.planner.plan(ticks)
+        self.transforms.clear()
         truth, arm_q, contacts = self._ground_truth(first, plan)
-        parts = body.shape.transforms_to_base(arm_q)  # (n+1, S, 4, 4), the arm at each boundary
+        parts = self.transforms(arm_q)  # (n+1, S, 4, 4), the arm at each boundary
         sides = self._wheel_angles(plan)
         odom_path, odom_before = self.odometer.advance(first, plan.left_rad_s, plan.right_rad_s)
         names, positions = _joint_positions(body, sides, arm_q)
@@ -236,11 +240,11 @@ class _Run:
             wheel_radius_m=body.geometry.wheel_radius_m,
             track_m=body.geometry.track_m * slip.track_factor)
         keep = 1.0 - slip.longitudinal
-        shape, height = body.shape, body.base_height_m
+        height = body.base_height_m
 
         def collides(q: FloatArray, x: FloatArray, y: FloatArray,
                      yaw: FloatArray) -> tuple[IntArray, IntArray]:
-            return self.tester.first_hits(Placed(shape.transforms_to_base(q), x, y, yaw, height))
+            return self.tester.first_hits(Placed(self.transforms(q), x, y, yaw, height))
 
         return self.motion.advance(first, np.asarray(linear) * keep, np.asarray(angular) * keep,
                                    collides)
@@ -255,11 +259,15 @@ class _Run:
 
     def _closest(self, first: int, truth: motion.Path2D, arm_q: FloatArray,
                  parts: FloatArray) -> Closest:
-        """The clearance record, with the piece's poses (each distinct one measured once)."""
+        """The clearance record, with the piece's poses (a pose held for ticks measured once).
+
+        A pose met again later measures no less than at its first tick, which wins ties.
+        """
         lo = 0 if first == 0 else 1  # the piece's first boundary ended the piece before
         rows = np.column_stack((truth.x_m[lo:], truth.y_m[lo:], truth.yaw_rad[lo:], arm_q[lo:]))
-        _, index = np.unique(rows, axis=0, return_index=True)
-        index = np.sort(index) + lo  # the first tick of each distinct pose, in time order
+        new = np.ones(len(rows), dtype=bool)
+        new[1:] = np.any(rows[1:] != rows[:-1], axis=1)
+        index = np.flatnonzero(new) + lo  # the first tick of each held pose, in time order
         found = closest(self.tester, Placed(parts[index], truth.x_m[index], truth.y_m[index],
                                             truth.yaw_rad[index], self.body.base_height_m),
                         below=self.record.distance_m)

@@ -4,11 +4,12 @@ Every part of every link (base, wheels, sensors, arm; primitives and meshes), po
 tick with the arm, is tested against every obstacle (boxes, walls, cylinders, meshes). The
 floor is not an obstacle: the wheels stand on it.
 
-A cheap bound comes first, for all poses at once with numpy: a part whose bounding sphere
+Cheap bounds come first, for all poses at once with numpy: a part whose bounding sphere
 (centre :math:`c`, radius :math:`r`) lies farther than :math:`r` from an obstacle cannot touch
-it, and its distance is at least :math:`d(c, \text{obstacle}) - r`. Only the pairs that bound
-leaves open go to Coal (Pinocchio's collision library: GJK/EPA, exact for primitives, BVH for
-meshes).
+it, and its distance is at least :math:`d(c, \text{obstacle}) - r`. Parts are bounded one by
+one only where their group's sphere does not already clear them (:mod:`.part_groups`), and
+only the pairs the bounds leave open go to Coal (Pinocchio's collision library: GJK/EPA,
+exact for primitives, BVH for meshes). The clearance search is :mod:`.clearance`.
 """
 
 from __future__ import annotations
@@ -22,12 +23,17 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.simulate.shape import Part, RobotShape
+from servicebot_cli.simulate.world.part_groups import (
+    MARGIN_M,
+    group_bounds,
+    part_bounds,
+    part_groups,
+)
 from servicebot_cli.simulate.world.raycast import Mesh
 from servicebot_cli.simulate.world.solids import Solid
 
 FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.int64]
-_CHUNK = 64  # exact distances measured per round of the clearance search
 
 
 @dataclass(frozen=True)
@@ -198,23 +204,12 @@ class Placed:
         return out
 
 
-def _as_placed(posed: FloatArray | Placed) -> Placed:
+def as_placed(posed: FloatArray | Placed) -> Placed:
     """Whole transforms (P, S, 4, 4) as :class:`Placed` (the base at the world's origin)."""
     if isinstance(posed, Placed):
         return posed
     zeros = np.zeros(len(posed))
     return Placed(np.asarray(posed, dtype=np.float64), zeros, zeros, zeros, 0.0)
-
-
-def _lower_bounds(shape: RobotShape, world: Sequence[Obstacle], placed: Placed) -> FloatArray:
-    """Lower bound of each part-obstacle distance, shape (P, S, O)."""
-    radius = np.array([p.radius_m for p in shape.parts])
-    centres = placed.centres()
-    points = [np.ascontiguousarray(centres[..., i]) for i in range(3)]
-    out = np.empty(placed.shape + (len(world),))
-    for o, obstacle in enumerate(world):
-        out[..., o] = obstacle.point_distance_xyz(points) - radius
-    return out
 
 
 class Tester:
@@ -224,6 +219,24 @@ class Tester:
         self.shape = shape
         self.world = list(world)
         self.geometries = [part_geometry(p) for p in shape.parts]
+        self.radius_m = np.array([p.radius_m for p in shape.parts])
+        self.groups = part_groups(shape)
+
+    def near(self, posed: Placed, below: float) -> tuple[FloatArray, FloatArray]:
+        """Each part's centre (P, S, 3), and which groups may hold a part bound below ``below``.
+
+        The second array, shape (P, G, O), holds the groups' bounds where they may (else inf).
+        """
+        centres = posed.centres()
+        bounds = group_bounds(self.world, centres, self.radius_m, self.groups)
+        return centres, np.where(bounds <= below + MARGIN_M, bounds, np.inf)
+
+    def pairs(self, centres: FloatArray, pose: IntArray, group: int,
+              obstacle: int) -> tuple[FloatArray, IntArray]:
+        """The bounds (k, m) of a group's parts at poses ``pose`` (k,), and the parts (m,)."""
+        members = self.groups[group]
+        inside = centres[pose][:, members]
+        return part_bounds(self.world[obstacle], inside, self.radius_m[members]), members
 
     def touching(self, posed: Placed, pose: int, part: int, obstacle: int) -> bool:
         """Whether a part at ``posed`` pose ``pose`` touches an obstacle."""
@@ -253,67 +266,28 @@ class Tester:
 
         ``posed`` holds the parts at each pose: whole transforms (P, S, 4, 4) or
         :class:`Placed`. "First" is in obstacle order, then part order, so reports are stable.
+        Coal tests the pairs whose part bound is not above 0, of the groups whose bound is not.
         """
-        posed = _as_placed(posed)
+        posed = as_placed(posed)
         obstacle = np.full(len(posed), -1, dtype=np.int64)
         part = np.full(len(posed), -1, dtype=np.int64)
         if not self.world or not len(posed):
             return obstacle, part
-        bounds = _lower_bounds(self.shape, self.world, posed)
-        for p, s, o in sorted(zip(*np.nonzero(bounds <= 0.0), strict=True),
-                              key=lambda t: (t[0], t[2], t[1])):
+        centres, near = self.near(posed, 0.0)
+        found: list[tuple[IntArray, IntArray, IntArray]] = []
+        for g, o in zip(*np.nonzero(np.isfinite(near).any(axis=0)), strict=True):
+            rows = np.flatnonzero(np.isfinite(near[:, g, o]))
+            bounds, members = self.pairs(centres, rows, int(g), int(o))
+            k, j = np.nonzero(bounds <= 0.0)
+            found.append((rows[k], members[j], np.full(len(k), o, dtype=np.int64)))
+        if not found:
+            return obstacle, part
+        poses, parts, obstacles_ = (np.concatenate(column) for column in zip(*found,
+                                                                             strict=True))
+        for i in np.lexsort((parts, obstacles_, poses)).tolist():
+            p, s, o = int(poses[i]), int(parts[i]), int(obstacles_[i])
             if obstacle[p] >= 0 and (o > obstacle[p] or (o == obstacle[p] and s > part[p])):
                 continue
-            if self.touching(posed, int(p), int(s), int(o)):
+            if self.touching(posed, p, s, o):
                 obstacle[p], part[p] = o, s
         return obstacle, part
-
-
-@dataclass(frozen=True)
-class Closest:
-    """The closest the robot came to an obstacle.
-
-    Attributes:
-        distance_m: The clearance [m]; inf in an empty world.
-        index: The pose (tick) where it happened, -1 for none.
-        obstacle: Index into the obstacles, -1 for none.
-        part: Index into the robot's parts, -1 for none.
-    """
-
-    distance_m: float
-    index: int
-    obstacle: int
-    part: int
-
-
-def closest(tester: Tester, posed: FloatArray | Placed, below: float = np.inf) -> Closest:
-    """The smallest part-obstacle distance over all poses, measured only where it can be.
-
-    Pairs are measured in order of their lower bound; the search stops when the next bound
-    is above the best distance found. Of equal distances the first pose wins (then the first
-    part, then the first obstacle), so the answer does not depend on the order of measuring.
-    Only a distance below ``below`` (a clearance already known) counts: none is found
-    otherwise.
-    """
-    none = Closest(float("inf"), -1, -1, -1)
-    posed = _as_placed(posed)
-    if not tester.world or not len(posed):
-        return none
-    bounds = _lower_bounds(tester.shape, tester.world, posed).ravel()
-    best, best_flat = float(below), -1
-    open_ = np.flatnonzero(bounds < best)
-    while len(open_):
-        take = open_ if len(open_) <= _CHUNK else \
-            open_[np.argpartition(bounds[open_], _CHUNK)[:_CHUNK]]
-        for flat in np.sort(take).tolist():
-            p, s, o = np.unravel_index(flat, posed.shape + (len(tester.world),))
-            d = tester.distance(posed, int(p), int(s), int(o))
-            if d < best or (d == best and best_flat >= 0 and flat < best_flat):
-                best, best_flat = d, flat
-        bounds[take] = np.inf
-        # a pair bounded by the best distance may still equal it, at an earlier pose
-        open_ = open_[bounds[open_] <= best] if best_flat >= 0 else open_[bounds[open_] < best]
-    if best_flat < 0:
-        return none
-    p, s, o = np.unravel_index(best_flat, posed.shape + (len(tester.world),))
-    return Closest(best, int(p), int(o), int(s))

@@ -1,0 +1,128 @@
+"""The closest the robot came to an obstacle, measured with Coal only where it can matter.
+
+Bounds first (:mod:`.part_groups`): a group of parts at a pose, against one obstacle, is
+opened (its parts bounded one by one) only while its bound could beat the best distance
+measured so far, nearest groups first; a part-obstacle pair is measured only while its own
+bound could. Of equal distances the first pose wins (then the first part, then the first
+obstacle), so the answer is the least (distance, pose, part, obstacle) of all the pairs below
+the clearance already known, whatever the order of measuring.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.simulate.world.contacts import Placed, Tester, as_placed
+from servicebot_cli.simulate.world.part_groups import MARGIN_M
+
+FloatArray = npt.NDArray[np.float64]
+IntArray = npt.NDArray[np.int64]
+_CHUNK = 64  # exact distances measured per round of the search
+_GROUPS = 64  # groups opened per round
+
+
+@dataclass(frozen=True)
+class Closest:
+    """The closest the robot came to an obstacle.
+
+    Attributes:
+        distance_m: The clearance [m]; inf in an empty world.
+        index: The pose (tick) where it happened, -1 for none.
+        obstacle: Index into the obstacles, -1 for none.
+        part: Index into the robot's parts, -1 for none.
+    """
+
+    distance_m: float
+    index: int
+    obstacle: int
+    part: int
+
+
+def closest(tester: Tester, posed: FloatArray | Placed, below: float = np.inf) -> Closest:
+    """The smallest part-obstacle distance over all poses, measured only where it can be.
+
+    Only a distance below ``below`` (a clearance already known) counts: none is found
+    otherwise.
+    """
+    none = Closest(float("inf"), -1, -1, -1)
+    posed = as_placed(posed)
+    if not tester.world or not len(posed):
+        return none
+    search = _Search(tester, posed, float(below))
+    centres, near = tester.near(posed, search.best)
+    groups = near.ravel()
+    open_ = np.flatnonzero(np.isfinite(groups))
+    while True:
+        open_ = open_[groups[open_] <= search.best + MARGIN_M]
+        # groups whose bound comes before the next pair's are opened first
+        ready = open_[groups[open_] <= search.next_bound() + MARGIN_M]
+        if len(ready):
+            take = ready if len(ready) <= _GROUPS else \
+                ready[np.argpartition(groups[ready], _GROUPS)[:_GROUPS]]
+            search.add(centres, np.sort(take), near.shape)
+            groups[take] = np.nan  # opened: neither below nor above any bound
+        elif not search.measure():
+            return search.answer()
+
+
+class _Search:
+    """The pairs opened so far, their bounds, and the best distance measured."""
+
+    def __init__(self, tester: Tester, posed: Placed, below: float) -> None:
+        self.tester, self.posed = tester, posed
+        self.shape = posed.shape + (len(tester.world),)  # (poses, parts, obstacles)
+        self.best, self.best_flat = below, -1
+        self.bounds = np.zeros(0)
+        self.flats = np.zeros(0, dtype=np.int64)
+
+    def add(self, centres: FloatArray, groups: IntArray, grid: tuple[int, ...]) -> None:
+        """Open ``groups`` (flat indices into (poses, groups, obstacles)): bound their pairs."""
+        pose, group, obstacle = np.unravel_index(groups, grid)
+        bounds, flats = [self.bounds], [self.flats]
+        key = group * grid[2] + obstacle
+        for k in np.unique(key).tolist():
+            rows = pose[key == k]
+            g, o = divmod(k, grid[2])
+            pair_bounds, members = self.tester.pairs(centres, rows, g, o)
+            bounds.append(pair_bounds.ravel())
+            flats.append(np.ravel_multi_index(
+                (np.repeat(rows, len(members)), np.tile(members, len(rows)),
+                 np.full(len(rows) * len(members), o)), self.shape))
+        self.bounds, self.flats = np.concatenate(bounds), np.concatenate(flats)
+
+    def next_bound(self) -> float:
+        """The least bound of the pairs not measured yet (inf for none)."""
+        return float(self.bounds.min()) if len(self.bounds) else np.inf
+
+    def measure(self) -> bool:
+        """Measure the (up to :data:`_CHUNK`) least-bounded pairs that could beat the best.
+
+        A pair bounded by the best distance may still equal it, at an earlier pose. Returns
+        False when no pair could.
+        """
+        bounds = self.bounds
+        open_ = np.flatnonzero(bounds <= self.best) if self.best_flat >= 0 \
+            else np.flatnonzero(bounds < self.best)
+        if not len(open_):
+            return False
+        take = open_ if len(open_) <= _CHUNK else \
+            open_[np.argpartition(bounds[open_], _CHUNK)[:_CHUNK]]
+        for flat in np.sort(self.flats[take]).tolist():
+            p, s, o = np.unravel_index(flat, self.shape)
+            d = self.tester.distance(self.posed, int(p), int(s), int(o))
+            if d < self.best or (d == self.best and self.best_flat >= 0
+                                 and flat < self.best_flat):
+                self.best, self.best_flat = d, flat
+        keep = bounds <= self.best  # the others can neither beat nor equal it
+        keep[take] = False
+        self.bounds, self.flats = bounds[keep], self.flats[keep]
+        return True
+
+    def answer(self) -> Closest:
+        if self.best_flat < 0:
+            return Closest(float("inf"), -1, -1, -1)
+        p, s, o = np.unravel_index(self.best_flat, self.shape)
+        return Closest(self.best, int(p), int(o), int(s))
