@@ -21,7 +21,12 @@ from servicebot_cli.kinematics.transforms import pose_matrix
 from servicebot_cli.simulate.shape_memo import TransformMemo
 from servicebot_cli.simulate.world import contacts
 from servicebot_cli.simulate.world.clearance import closest
-from servicebot_cli.simulate.world.part_groups import group_bounds, part_bounds
+from servicebot_cli.simulate.world.part_groups import (
+    SLACK_M,
+    box_bounds,
+    group_bounds,
+    part_bounds,
+)
 from servicebot_cli.simulate.world.solids import world_solids
 from tests.simulate.helpers import body, scenario
 
@@ -166,3 +171,29 @@ def test_closest_is_the_least_distance_of_every_pair(free):
         # a clearance known already counts: none is found unless below it
         assert closest(tester, _placed(poses), below=found.distance_m).index == -1
         assert closest(tester, _placed(poses), below=found.distance_m + 1e-6) == found
+
+
+def test_a_box_bound_is_below_coals_distance_and_meets_it_face_to_face():
+    tester, reference = _world()
+    [wall] = [o for o in tester.world if o.name == "wall 1"]
+    wall_shape, wall_pose = reference[tester.world.index(wall)]
+    rng = np.random.default_rng(5)
+    half = rng.uniform(0.02, 0.3, (200, 3))
+    centres = np.column_stack((rng.uniform(-1, 1, 200), rng.uniform(-1.8, -0.2, 200),
+                               rng.uniform(0, 1.2, 200)))
+    axes = rng.normal(size=(200, 3))
+    rotations = np.array([coal.AngleAxis(rng.uniform(0, math.pi), a / np.linalg.norm(a))
+                          .toRotationMatrix() for a in axes])
+    bounds = box_bounds(wall, centres, rotations, half)
+    for c, r, h, b in zip(centres, rotations, half, bounds, strict=True):
+        answer = coal.DistanceResult()
+        coal.distance(coal.Box(*(2 * h)), coal.Transform3s(r, c), wall_shape, wall_pose,
+                      coal.DistanceRequest(), answer)
+        # Coal's GJK is exact to about 1e-11 m here; the simulator takes SLACK_M off
+        distance = max(answer.min_distance, 0.0)
+        assert b - SLACK_M < distance and b <= distance + 1e-9
+    assert np.count_nonzero(bounds > 0.05) > 20  # it clears boxes, not only says 0
+    # a box facing the wall square on, 0.2 m from its face: the bound is the distance
+    face = np.array([[0.3, -1.0 + 0.05 + 0.2 + 0.1, 0.5]])
+    assert box_bounds(wall, face, np.eye(3)[None], np.array([[0.1, 0.1, 0.1]]))[0] == \
+        pytest.approx(0.2, abs=1e-12)

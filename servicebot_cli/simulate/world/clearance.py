@@ -1,11 +1,12 @@
 """The closest the robot came to an obstacle, measured with Coal only where it can matter.
 
 Bounds first (:mod:`.part_groups`): a group of parts at a pose, against one obstacle, is
-opened (its parts bounded one by one) only while its bound could beat the best distance
-measured so far, nearest groups first; a part-obstacle pair is measured only while its own
-bound could. Of equal distances the first pose wins (then the first part, then the first
-obstacle), so the answer is the least (distance, pose, part, obstacle) of all the pairs below
-the clearance already known, whatever the order of measuring.
+opened (its parts bounded one by one) only if its bound could beat the best distance measured
+(without a clearance known yet, the nearest groups are measured first to find one); a
+part-obstacle pair is bounded again with boxes, and measured only while its bound could beat
+it. Of equal distances the first pose wins (then the first part, then the first obstacle), so
+the answer is the least (distance, pose, part, obstacle) of all the pairs below the clearance
+already known, whatever the order of measuring.
 """
 
 from __future__ import annotations
@@ -20,8 +21,8 @@ from servicebot_cli.simulate.world.part_groups import MARGIN_M
 
 FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.int64]
-_CHUNK = 64  # exact distances measured per round of the search
-_GROUPS = 64  # groups opened per round
+_CHUNK = 32  # exact distances measured per round of the search
+_GROUPS = 64  # groups opened to find a first clearance
 
 
 @dataclass(frozen=True)
@@ -55,17 +56,17 @@ def closest(tester: Tester, posed: FloatArray | Placed, below: float = np.inf) -
     centres, near = tester.near(posed, search.best)
     groups = near.ravel()
     open_ = np.flatnonzero(np.isfinite(groups))
-    while True:
-        open_ = open_[groups[open_] <= search.best + MARGIN_M]
-        # groups whose bound comes before the next pair's are opened first
-        ready = open_[groups[open_] <= search.next_bound() + MARGIN_M]
-        if len(ready):
-            take = ready if len(ready) <= _GROUPS else \
-                ready[np.argpartition(groups[ready], _GROUPS)[:_GROUPS]]
-            search.add(centres, np.sort(take), near.shape)
-            groups[take] = np.nan  # opened: neither below nor above any bound
-        elif not search.measure():
-            return search.answer()
+    if not np.isfinite(search.best) and len(open_) > _GROUPS:  # a first best, from the nearest
+        first = open_[np.argpartition(groups[open_], _GROUPS)[:_GROUPS]]
+        search.add(centres, np.sort(first), near.shape)
+        while search.measure():
+            pass
+        groups[first] = np.nan  # opened: neither below nor above any bound
+    open_ = open_[groups[open_] <= search.best + MARGIN_M]
+    search.add(centres, open_, near.shape)
+    while search.measure():
+        pass
+    return search.answer()
 
 
 class _Search:
@@ -79,7 +80,11 @@ class _Search:
         self.flats = np.zeros(0, dtype=np.int64)
 
     def add(self, centres: FloatArray, groups: IntArray, grid: tuple[int, ...]) -> None:
-        """Open ``groups`` (flat indices into (poses, groups, obstacles)): bound their pairs."""
+        """Open ``groups`` (flat indices into (poses, groups, obstacles)): bound their pairs.
+
+        The pairs whose sphere bound could beat (or equal) the best are bounded again with
+        boxes; only those that still could are kept.
+        """
         pose, group, obstacle = np.unravel_index(groups, grid)
         bounds, flats = [self.bounds], [self.flats]
         key = group * grid[2] + obstacle
@@ -87,15 +92,15 @@ class _Search:
             rows = pose[key == k]
             g, o = divmod(k, grid[2])
             pair_bounds, members = self.tester.pairs(centres, rows, g, o)
-            bounds.append(pair_bounds.ravel())
+            i, j = np.nonzero(pair_bounds <= self.best)
+            closer = self.tester.closer(self.posed, centres, rows[i], members[j], o,
+                                        pair_bounds[i, j])
+            near = closer <= self.best
+            bounds.append(closer[near])
             flats.append(np.ravel_multi_index(
-                (np.repeat(rows, len(members)), np.tile(members, len(rows)),
-                 np.full(len(rows) * len(members), o)), self.shape))
+                (rows[i[near]], members[j[near]], np.full(np.count_nonzero(near), o)),
+                self.shape))
         self.bounds, self.flats = np.concatenate(bounds), np.concatenate(flats)
-
-    def next_bound(self) -> float:
-        """The least bound of the pairs not measured yet (inf for none)."""
-        return float(self.bounds.min()) if len(self.bounds) else np.inf
 
     def measure(self) -> bool:
         """Measure the (up to :data:`_CHUNK`) least-bounded pairs that could beat the best.

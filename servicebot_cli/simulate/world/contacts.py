@@ -25,6 +25,8 @@ import numpy.typing as npt
 from servicebot_cli.simulate.shape import Part, RobotShape
 from servicebot_cli.simulate.world.part_groups import (
     MARGIN_M,
+    SLACK_M,
+    box_bounds,
     group_bounds,
     part_bounds,
     part_groups,
@@ -56,20 +58,11 @@ class Obstacle:
     rotation: FloatArray
     half_m: FloatArray
 
-    def point_distance(self, points: FloatArray) -> FloatArray:
-        """Distance from points (..., 3) to the obstacle (to its box for a mesh), 0 inside."""
-        local = (points - self.center_m) @ self.rotation
-        if self.kind == "cylinder":
-            radial = np.maximum(np.hypot(local[..., 0], local[..., 1]) - self.half_m[0], 0.0)
-            axial = np.maximum(np.abs(local[..., 2]) - self.half_m[2], 0.0)
-            return np.asarray(np.hypot(radial, axial), dtype=np.float64)
-        outside = np.maximum(np.abs(local) - self.half_m, 0.0)
-        return np.asarray(np.sqrt(np.einsum("...i,...i->...", outside, outside)),
-                          dtype=np.float64)
-
-
     def point_distance_xyz(self, points: list[FloatArray]) -> FloatArray:
-        """:meth:`point_distance` of points given as x, y and z arrays of one shape."""
+        """Distance from points, given as x, y and z arrays of one shape, to the obstacle.
+
+        To its box for a mesh; 0 inside.
+        """
         shifted = [points[j] - self.center_m[j] for j in range(3)]
         rot = self.rotation
         local = [sum(shifted[j] * rot[j, i] for j in range(3) if rot[j, i] != 0.0)
@@ -193,6 +186,15 @@ class Placed:
         return np.asarray(self.bases(np.array([pose]))[0] @ self.parts_to_base[pose, part],
                           dtype=np.float64)
 
+    def rotations(self, pose: IntArray, part: IntArray) -> FloatArray:
+        """``rotation_part_to_world`` of parts ``part`` at poses ``pose`` (n,), (n, 3, 3)."""
+        c, s = self._cos_sin[0][pose], self._cos_sin[1][pose]
+        local = self.parts_to_base[pose, part, :3, :3]
+        out = local.copy()
+        out[:, 0] = c[:, None] * local[:, 0] - s[:, None] * local[:, 1]
+        out[:, 1] = s[:, None] * local[:, 0] + c[:, None] * local[:, 1]
+        return out
+
     def centres(self) -> FloatArray:
         """Each part's centre in the world, shape (P, S, 3)."""
         c, s = self._cos_sin[0][:, None], self._cos_sin[1][:, None]
@@ -220,6 +222,7 @@ class Tester:
         self.world = list(world)
         self.geometries = [part_geometry(p) for p in shape.parts]
         self.radius_m = np.array([p.radius_m for p in shape.parts])
+        self.half_m = np.array([p.half_m for p in shape.parts]).reshape(-1, 3)
         self.groups = part_groups(shape)
 
     def near(self, posed: Placed, below: float) -> tuple[FloatArray, FloatArray]:
@@ -237,6 +240,16 @@ class Tester:
         members = self.groups[group]
         inside = centres[pose][:, members]
         return part_bounds(self.world[obstacle], inside, self.radius_m[members]), members
+
+    def closer(self, posed: Placed, centres: FloatArray, pose: IntArray, part: IntArray,
+               obstacle: int, bounds: FloatArray) -> FloatArray:
+        """Pairs' bounds (n,) made closer with the parts' and the obstacle's boxes.
+
+        ``centres`` are the parts' (P, S, 3); ``pose`` and ``part`` (n,) name the pairs.
+        """
+        boxes = box_bounds(self.world[obstacle], centres[pose, part],
+                           posed.rotations(pose, part), self.half_m[part])
+        return np.maximum(bounds, boxes - SLACK_M)
 
     def touching(self, posed: Placed, pose: int, part: int, obstacle: int) -> bool:
         """Whether a part at ``posed`` pose ``pose`` touches an obstacle."""
@@ -266,7 +279,8 @@ class Tester:
 
         ``posed`` holds the parts at each pose: whole transforms (P, S, 4, 4) or
         :class:`Placed`. "First" is in obstacle order, then part order, so reports are stable.
-        Coal tests the pairs whose part bound is not above 0, of the groups whose bound is not.
+        Coal tests the pairs whose bounds (sphere, then boxes) are not above 0, of the groups
+        whose bound is not.
         """
         posed = as_placed(posed)
         obstacle = np.full(len(posed), -1, dtype=np.int64)
@@ -279,6 +293,8 @@ class Tester:
             rows = np.flatnonzero(np.isfinite(near[:, g, o]))
             bounds, members = self.pairs(centres, rows, int(g), int(o))
             k, j = np.nonzero(bounds <= 0.0)
+            closer = self.closer(posed, centres, rows[k], members[j], int(o), bounds[k, j])
+            k, j = k[closer <= 0.0], j[closer <= 0.0]
             found.append((rows[k], members[j], np.full(len(k), o, dtype=np.int64)))
         if not found:
             return obstacle, part
