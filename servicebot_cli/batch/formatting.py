@@ -8,7 +8,9 @@ computing; a thread takes the text back, in order, and writes it. The text is wh
 :func:`format_rows` makes here, byte for byte. Memory stays bounded: a pipe holds at most a
 chunk or two.
 
-If the child cannot start or dies, the chunks it did not answer are formatted here.
+If the child cannot start or dies, the chunks it did not answer are formatted here. If
+writing fails in the thread (a closed pipe, a full disk), the error is raised in the caller's
+thread at its next submit or drain, and nothing more is written.
 """
 
 from __future__ import annotations
@@ -58,6 +60,7 @@ class Formatter:
             collections.deque()
         self._done = threading.Condition()
         self._failed = False
+        self._error: BaseException | None = None  # the reader thread's write failed
 
     def __enter__(self) -> Formatter:
         """The formatter."""
@@ -72,6 +75,7 @@ class Formatter:
 
     def submit(self, lines: Sequence[int], values: FloatArray) -> None:
         """Format rows ``lines`` (their input line numbers) of ``values`` (one row each)."""
+        self._raise_error()
         self._submitted += 1
         if self._submitted == 2 and not self._failed:
             self._start()
@@ -101,6 +105,7 @@ class Formatter:
                 self._fail()
             with self._done:
                 self._done.wait_for(lambda: not self._pending or self._failed)
+        self._raise_error()
         if self._failed:
             self._write_left_here()
 
@@ -128,7 +133,13 @@ class Formatter:
             text = stream.read(size)
             if len(text) < size:
                 break
-            self._write(text.decode())
+            try:
+                self._write(text.decode())
+            except BaseException as exc:  # noqa: BLE001 -- handed to the caller's thread
+                with self._done:
+                    self._error, self._failed = exc, True
+                    self._done.notify_all()
+                return
             with self._done:
                 self._pending.popleft()
                 self._done.notify_all()
@@ -136,6 +147,14 @@ class Formatter:
             if self._pending:
                 self._failed = True
             self._done.notify_all()
+
+    def _raise_error(self) -> None:
+        """Raise here what made the reader thread stop writing, once; the worker is ended."""
+        if self._error is not None:
+            error, self._error = self._error, None
+            self._pending.clear()  # nothing more is written after a failed write
+            self._stop()
+            raise error
 
     def _fail(self) -> None:
         with self._done:

@@ -5,6 +5,10 @@ A real child process formats; one test kills it half way and the rest is formatt
 
 from __future__ import annotations
 
+import subprocess
+import sys
+import threading
+
 import numpy as np
 
 from servicebot_cli.batch.fk_chunks import csv_template, jsonl_template
@@ -69,3 +73,56 @@ def test_one_chunk_needs_no_worker():
     text, used_worker = formatted(template, parts)
     assert not used_worker
     assert text == format_rows(template, *parts[0])
+
+
+def test_a_write_that_fails_in_the_thread_is_raised_here_and_nothing_hangs():
+    parts = chunks(6, 300, 10)
+    template = csv_template(10, ",")
+    written: list[str] = []
+
+    def write(text: str) -> None:
+        if len(written) == 2:  # the output went away while the worker's text came back
+            raise BrokenPipeError(32, "Broken pipe")
+        written.append(text)
+
+    formatter = Formatter(template, write)
+    raised: list[BaseException] = []
+
+    def feed() -> None:
+        try:
+            with formatter:
+                for lines, values in parts:
+                    formatter.submit(lines, values)
+        except BaseException as exc:  # noqa: BLE001 -- what reached the caller's thread
+            raised.append(exc)
+
+    caller = threading.Thread(target=feed, daemon=True)
+    caller.start()
+    caller.join(timeout=30)
+    assert not caller.is_alive()  # a write error in the thread once made drain() wait forever
+    assert [type(e) for e in raised] == [BrokenPipeError]
+    assert len(written) == 2
+    assert formatter._process is None  # the worker was ended
+
+
+def test_fk_into_a_pipe_closed_early_ends_at_once_without_a_traceback(tmp_path):
+    names = ["arm_base_to_link1", "arm_link1_to_link2", "arm_link2_to_link3",
+             "arm_link3_to_link4"]
+    configs = tmp_path / "configs.csv"
+    rows = np.random.default_rng(0).uniform(-1, 1, (40_000, 4)).tolist()
+    configs.write_text(",".join(names) + "\n" + "".join(",".join(map(repr, r)) + "\n"
+                                                        for r in rows))
+    process = subprocess.Popen([sys.executable, "-m", "servicebot_cli", "fk", "--configs",
+                                str(configs), "--format", "csv"], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE)
+    assert process.stdout is not None and process.stderr is not None
+    head = [process.stdout.readline() for _ in range(6000)]
+    process.stdout.close()  # as `| head -n 6000` does
+    try:
+        code = process.wait(timeout=60)  # a failed write in the thread once hung here
+    finally:
+        process.kill()
+    stderr = process.stderr.read().decode()
+    assert code == 0
+    assert len(head[5999].split(b",")) > 4  # the 6,000th line was written whole
+    assert "Traceback" not in stderr and stderr == ""
