@@ -8,9 +8,6 @@ from __future__ import annotations
 
 import yaml
 
-from servicebot_cli.description.loader import RobotSource, load
-from servicebot_cli.simulate.session import Outputs, run_and_write
-from servicebot_cli.simulate.scenario.definition import load_scenario
 from tests.conftest import assert_one_line_error, run_servicebot
 
 ARM = ["arm_base_to_link1", "arm_link1_to_link2", "arm_link2_to_link3", "arm_link3_to_link4"]
@@ -62,12 +59,3 @@ def test_an_srdf_that_disables_the_pair_lets_the_point_through(tmp_path):
     assert result.returncode == 0, result.stderr
     assert yaml.safe_load(result.stdout)["self_collisions"] == []
 
-
-def test_the_live_window_gathers_a_track_not_the_whole_run(tmp_path):
-    robot = load(RobotSource.bundled("sim"))
-    report = run_and_write(robot, load_scenario(None), seed=0, outputs=Outputs(),
-                           scenario_dir=tmp_path, live=True, piece_s=7.0)
-    assert report.result is None and report.live_track is not None
-    track = report.live_track
-    assert track.duration_s == 180.0
-    assert track.track.truth and track.scans  # every piece went to it

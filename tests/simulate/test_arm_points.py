@@ -2,9 +2,13 @@
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 import pytest
 
+from servicebot_cli.simulate.controllers.arm_trajectory import ArmLimits, ArmMotion
+from servicebot_cli.simulate.scenario.definition import ArmTrajectory, TrajectoryPoint
 from tests.simulate.helpers import run
 
 V_RAD_S = 1.0  # every arm joint's URDF velocity limit
@@ -36,3 +40,16 @@ def test_joints_of_a_stretched_segment_arrive_together():
     np.testing.assert_allclose(first, np.interp(t, [0, 1], [0, 1]), atol=1e-12)
     np.testing.assert_allclose(second, np.interp(t, [0, 1, 3], [0, 0.5, -0.5]), atol=1e-12)
 
+
+
+def test_a_joint_whose_velocity_limit_is_zero_holds_and_the_others_keep_their_times():
+    trajectory = ArmTrajectory(("a", "b"), (TrajectoryPoint(1.0, (0.5, 0.5)),
+                                            TrajectoryPoint(2.0, (0.5, -0.5))))
+    limits = ArmLimits(np.array([-1.0, -1.0]), np.array([1.0, 1.0]), np.array([0.0, 1.0]))
+    motion = ArmMotion(trajectory, [0, 1], np.zeros(2), limits, 0.01)
+    t = np.arange(301) * 0.01
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # no division by the zero limit
+        q = motion.follow(motion.references(t), motion.start())
+    assert np.all(q[:, 0] == 0.0)  # URDF velocity="0": the joint cannot move
+    np.testing.assert_allclose(q[:, 1], np.interp(t, [0, 1, 2], [0, 0.5, -0.5]), atol=1e-12)

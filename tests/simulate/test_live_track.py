@@ -7,9 +7,11 @@ import dataclasses
 import numpy as np
 from matplotlib.figure import Figure
 
+from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.simulate import simulator
 from servicebot_cli.simulate.files import live, plot
 from servicebot_cli.simulate.scenario.definition import load_scenario
+from servicebot_cli.simulate.session import Outputs, run_and_write
 from servicebot_cli.simulate.world.solids import world_solids
 from tests.simulate.helpers import body
 
@@ -61,3 +63,13 @@ def test_a_frame_shows_the_kept_pose_and_the_last_kept_scan(monkeypatch):
     assert whole.scans.times_s[index] <= t
     drawn = np.column_stack([np.asarray(v, dtype=float) for v in artists.scan.get_data()])
     np.testing.assert_array_equal(drawn, plot.scan_points(whole.scans, index))
+
+
+def test_the_live_window_gathers_a_track_not_the_whole_run(tmp_path):
+    robot = load(RobotSource.bundled("sim"))
+    report = run_and_write(robot, load_scenario(None), seed=0, outputs=Outputs(),
+                           scenario_dir=tmp_path, live=True, piece_s=7.0)
+    assert report.result is None and report.live_track is not None
+    track = report.live_track
+    assert track.duration_s == 180.0
+    assert track.track.truth and track.scans  # every piece went to it

@@ -39,13 +39,18 @@ def knots(trajectory: ArmTrajectory, q0: FloatArray,
 
     With ``limits`` (for the trajectory's joints, in its order), each segment lasts at least as
     long as its slowest joint needs at its velocity limit; later points are delayed by what
-    earlier segments were stretched.
+    earlier segments were stretched. A joint whose limit is 0 cannot move and stretches
+    nothing.
     """
     values = np.vstack([q0] + [np.array(p.positions, dtype=float) for p in trajectory.points])
     asked = np.diff([0.0] + [p.time_from_start_s for p in trajectory.points])
     if limits is not None:
-        velocity = np.where(np.isnan(limits.velocity), np.inf, limits.velocity)
-        needed = np.max(np.abs(np.diff(values, axis=0)) / velocity, axis=1, initial=0.0)
+        # a joint without a limit, or with a limit of 0 (it cannot move: follow() holds it),
+        # stretches nothing
+        moves = np.nan_to_num(limits.velocity, nan=0.0) > 0.0
+        velocity = np.where(moves, limits.velocity, 1.0)
+        needed = np.max(np.abs(np.diff(values, axis=0)) * moves / velocity, axis=1,
+                        initial=0.0)
         asked = np.maximum(asked, needed)
     return trajectory.start_s + np.concatenate([[0.0], np.cumsum(asked)]), values
 
@@ -59,7 +64,7 @@ def reference(trajectory: ArmTrajectory, q0: FloatArray, times_s: FloatArray,
     if not trajectory.points:
         return np.broadcast_to(q0, (len(times_s), len(q0))).copy()
     knots_s, values = knots(trajectory, q0, limits)
-    if knots_s[1] == knots_s[0]:  # a first point at time 0 replaces the current state
+    if knots_s[1] == knots_s[0]:  # a first point at time 0 that needs no time to reach
         knots_s, values = knots_s[1:], values[1:]
     return np.column_stack([np.interp(times_s, knots_s, values[:, j], left=q0[j])
                             for j in range(len(q0))])

@@ -46,7 +46,7 @@ def _rows(columns: Sequence[npt.ArrayLike]) -> str:
                                 return_inverse=True)
     text = distinct.view(np.float64).astype(str).astype(np.bytes_)  # in C, ASCII
     table = np.frombuffer(text.tobytes(), dtype=np.uint8).reshape(len(text), -1)
-    lengths = np.strings.str_len(text).astype(np.uint8)[which.reshape(-1)]  # at most 24
+    lengths = np.char.str_len(text).astype(np.uint8)[which.reshape(-1)]  # at most 24
     sizes = lengths + np.int64(1)  # each cell and its separator
     starts = np.cumsum(sizes) - sizes
     out = np.full(int(starts[-1] + sizes[-1]), ord(","), dtype=np.uint8)
