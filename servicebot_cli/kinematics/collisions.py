@@ -186,7 +186,8 @@ def _geometry(robot: RobotDescription, model: pin.Model,
     base_dir = robot.path.parent
 
     def resolved(match: re.Match[str]) -> str:
-        path = resolver.resolve_uri(match.group(2), base_dir)
+        # absolute: Pinocchio looks for a relative mesh path on its package dirs, not here
+        path = resolver.resolve_uri(match.group(2), base_dir).absolute()
         return f"filename={match.group(1)}{path}{match.group(1)}"
 
     xml = re.sub(r"filename\s*=\s*([\"'])(.*?)\1", resolved, robot.xml_text)

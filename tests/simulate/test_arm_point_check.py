@@ -59,3 +59,18 @@ def test_an_srdf_that_disables_the_pair_lets_the_point_through(tmp_path):
     assert result.returncode == 0, result.stderr
     assert yaml.safe_load(result.stdout)["self_collisions"] == []
 
+
+
+def test_a_mesh_collision_link_given_relative_to_a_relative_urdf_path_is_checked(tmp_path):
+    from tests.simulate.test_mesh_parts import _robot, _stl
+
+    folder = tmp_path / "robot"
+    folder.mkdir()
+    _stl(folder)
+    _robot(folder, "bumper.stl")  # filename="bumper.stl", beside robot.urdf
+    for cwd, path in ((folder, "robot.urdf"), (tmp_path, "robot/robot.urdf")):
+        result = run_servicebot("simulate", path, "--headless", "--duration-s", "20",
+                                cwd=cwd)  # the default arm points are checked with the mesh
+        assert_one_line_error(result, 2, "'arm_link4' and 'bumper' would intersect")
+        ik = run_servicebot("ik", path, "--position", "0.5", "0", "0.4", cwd=cwd)
+        assert ik.returncode in (0, 1) and "collision geometry" not in ik.stderr, ik.stderr
