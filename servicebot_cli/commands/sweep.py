@@ -7,6 +7,7 @@ import sys
 import click
 
 from servicebot_cli.commands.command import Command
+from servicebot_cli.commands.kinematics_options import srdf_option
 from servicebot_cli.commands.options import (
     OutputPath,
     RobotArgs,
@@ -52,12 +53,16 @@ class KeepList(click.ParamType[tuple[str, ...]]):
               help="Keep each run's outputs under DIR/runs/KEY/: csv, bag, plot.")
 @click.option("--plot", type=OutputPath(suffixes=PLOT_SUFFIXES, what="plot"),
               metavar="FILE.png", help="Each metric against each swept value, over seeds.")
+@click.option("--allow-collisions", is_flag=True,
+              help="Run arm trajectory points that put links into each other or the floor "
+              "(refused by default, as simulate refuses them).")
+@srdf_option
 @click.option("--progress/--no-progress", default=None,
               help="Progress bar on stderr  [default: on a terminal, outside CI].")
 @format_option
 def sweep(sweep_file: str, robot_args: RobotArgs, jobs: int | None, scheduler: str | None,
           out_dir: str | None, keep: tuple[str, ...] | None, plot: str | None,
-          progress: bool | None, fmt: str) -> None:
+          allow_collisions: bool, srdf: str | None, progress: bool | None, fmt: str) -> None:
     """Simulate a scenario over seeds, a grid of values and random draws; check expectations.
 
     SWEEP.yaml names the scenario, the seeds, the values to sweep (dotted scenario fields,
@@ -84,7 +89,7 @@ def sweep(sweep_file: str, robot_args: RobotArgs, jobs: int | None, scheduler: s
     request = session.SweepRequest(
         sweep_file, robot_args.source(), jobs=jobs or available_cores(), scheduler=scheduler,
         out_dir=out_dir, keep=keep or (), plot=plot,
-        progress=progress)
+        progress=progress, allow_collisions=allow_collisions, srdf=srdf)
     report = session.run(request, stderr=sys.stderr)
     show_sweep(report, fmt)
     if report.failed:

@@ -35,6 +35,9 @@ class SweepRequest:
         keep: Per-run outputs to keep: any of ``csv``, ``bag``, ``plot``.
         plot: A picture of every metric against every swept value, or None.
         progress: Draw a progress bar (None: on a terminal, outside CI).
+        allow_collisions: Run arm points that put links into each other or the floor, as
+            ``simulate --allow-collisions`` does; else such a scenario is refused up front.
+        srdf: An SRDF whose ``<disable_collisions>`` pairs are never checked.
     """
 
     sweep_file: str
@@ -45,6 +48,8 @@ class SweepRequest:
     keep: tuple[str, ...] = ()
     plot: str | None = None
     progress: bool | None = None
+    allow_collisions: bool = False
+    srdf: str | None = None
 
 
 @dataclass(frozen=True)
@@ -119,7 +124,14 @@ def run(request: SweepRequest, *, stderr: TextIO | None = None,
     checks = _expectations(definition)
     robot = load(request.robot)
     runs = plan(definition, base, robot.xml_text)
-    _check_against_robot(definition, runs, robot)
+    disabled: tuple[tuple[str, str], ...] = ()
+    if request.srdf is not None:
+        from servicebot_cli.kinematics.frames import link_names
+        from servicebot_cli.kinematics.srdf import disabled_pairs
+
+        disabled = tuple(disabled_pairs(request.srdf, link_names(robot)))
+    _check_against_robot(definition, runs, robot, disabled,
+                         check_points=not request.allow_collisions)
     out_dir = Path(request.out_dir) if request.out_dir else None
     if out_dir is not None:
         _make_dir(out_dir)
@@ -139,7 +151,7 @@ def run(request: SweepRequest, *, stderr: TextIO | None = None,
     files: tuple[Path, ...] = ()
     start = clock()
     try:
-        _run_all(request, definition, todo, checks, results, out_dir, stderr)
+        _run_all(request, definition, todo, checks, results, out_dir, stderr, disabled)
     finally:  # Ctrl-C, SIGTERM or a failed run: the tables of what finished
         if out_dir is not None and results:
             files = _write(report(clock() - start), out_dir, stderr)
@@ -153,8 +165,12 @@ def run(request: SweepRequest, *, stderr: TextIO | None = None,
 
 def _run_all(request: SweepRequest, definition: SweepDefinition, todo: list[Run],
              checks: Sequence[Expectation], results: dict[int, RunResult],
-             out_dir: Path | None, stderr: TextIO | None) -> None:
-    """Run ``todo`` on the workers, storing each result as it comes."""
+             out_dir: Path | None, stderr: TextIO | None,
+             disabled: tuple[tuple[str, str], ...] = ()) -> None:
+    """Run ``todo`` on the workers, storing each result as it comes.
+
+    ``disabled`` pairs are left out of each run's self-contact log.
+    """
     from servicebot_cli.simulate.session import Outputs
     from servicebot_cli.sweep import store
     from servicebot_cli.sweep.engine import execute, executor_for
@@ -166,8 +182,8 @@ def _run_all(request: SweepRequest, definition: SweepDefinition, todo: list[Run]
         return
     directory = str(scenario_dir(definition).resolve())
     tasks = [Task(request.robot, r.scenario, r.seed, directory,
-                  store.kept_outputs(out_dir, r.key, request.keep) if out_dir else Outputs())
-             for r in todo]
+                  store.kept_outputs(out_dir, r.key, request.keep) if out_dir else Outputs(),
+                  disabled) for r in todo]
     total = len(todo) + len(results)
     bar = SweepProgress(total, stderr, done=len(results), enabled=request.progress) \
         if stderr is not None else None
@@ -201,19 +217,25 @@ def _expectations(definition: SweepDefinition) -> list[Expectation]:
 
 
 def _check_against_robot(definition: SweepDefinition, runs: Sequence[Run],
-                         robot: RobotDescription) -> None:
-    """Check each distinct scenario against the robot: arm joints and limits, start pose."""
+                         robot: RobotDescription, disabled: tuple[tuple[str, str], ...] = (),
+                         *, check_points: bool = True) -> None:
+    """Check each distinct scenario against the robot, as ``simulate`` checks one.
+
+    Arm joints and limits, the start pose, and (``check_points``) arm points in collision.
+    """
     from servicebot_cli.simulate.body import sim_robot
-    from servicebot_cli.simulate.scenario.world_check import check_scenario
+    from servicebot_cli.simulate.scenario.world_check import check_arm_points, check_scenario
     from servicebot_cli.simulate.world.meshes import load_meshes
     from servicebot_cli.simulate.world.solids import world_solids
     from servicebot_cli.sweep.plan import distinct_scenarios, scenario_dir
 
     directory = scenario_dir(definition)
-    body = sim_robot(robot)
+    body = sim_robot(robot, disabled_pairs=disabled)
     for r in distinct_scenarios(runs):
         s = r.scenario
         check_scenario(body, s, world_solids(s.world), load_meshes(s, directory))
+        if check_points:
+            check_arm_points(body, s)
 
 
 def _result(r: Run, record: Record, checks: Sequence[Expectation], *,

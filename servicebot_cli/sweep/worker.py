@@ -37,6 +37,7 @@ class Task:
         seed: The noise seed.
         scenario_dir: Where the scenario's relative paths (meshes) start.
         outputs: Per-run outputs to keep (absolute paths), or none.
+        disabled_pairs: Link pairs left out of the self-contact log (``--srdf``).
     """
 
     robot: RobotSource
@@ -44,6 +45,7 @@ class Task:
     seed: int
     scenario_dir: str
     outputs: Outputs = Outputs()
+    disabled_pairs: tuple[tuple[str, str], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -67,7 +69,8 @@ def simulate_task(task: Task) -> Outcome:
         if directory is not None:
             Path(directory).parent.mkdir(parents=True, exist_ok=True)
     report = run_and_write(load(task.robot), task.scenario, seed=task.seed,
-                           outputs=task.outputs, scenario_dir=Path(task.scenario_dir))
+                           outputs=task.outputs, scenario_dir=Path(task.scenario_dir),
+                           disabled_pairs=task.disabled_pairs)
     return Outcome(report.summary, report.wall_s)
 
 
