@@ -4,7 +4,8 @@ The format is https://mcap.dev/spec, laid out as the reference writer does it: m
 schemas and channels, zstd chunks of about ``chunk_size`` bytes each followed by their message
 indexes, data end, then a summary (schemas, channels, statistics, chunk indexes), summary
 offsets, footer and magic. Readers (Foxglove, ``ros2 bag``, the ``mcap`` and ``rosbags``
-libraries) seek through the indexes. Only the chunk being filled is held in memory; the
+libraries) seek through the indexes. The chunk being filled and at most
+:data:`PENDING_BYTES` of full chunks waiting for the writing thread are held in memory; the
 file's bytes do not depend on how the messages are split into batches.
 
 Why not the ``mcap`` package's writer: it builds each message record in Python, about 4 us a

@@ -40,7 +40,7 @@ def mesh_entry(o: FloatArray, d: FloatArray, bound: float, root: int,
     The nearest triangle the ray meets at :math:`0 \\le t \\le` ``bound`` (ties: the lowest
     numbered) is the entry if it faces the ray; if it faces away, the ray starts inside
     and enters nothing (as a primitive seen from inside, and the LIDAR's meshes). The
-    numpy path (:func:`~servicebot_cli.simulate.sensors.camera_rays.mesh_part_distances`)
+    numpy path (:func:`~servicebot_cli.simulate.sensors.camera_mesh_rays.mesh_part_hits`)
     computes the same numbers in the same order.
 
     Args:
