@@ -11,8 +11,7 @@ from dataclasses import dataclass
 from servicebot_cli.batch.fk_chunks import stream_csv
 from servicebot_cli.batch.fk_rows import FkBatch
 from servicebot_cli.batch.policy import OnError
-from servicebot_cli.batch.reading import open_source
-from servicebot_cli.batch.stream import BatchSummary, RowSink, Warn, stream_source
+from servicebot_cli.batch.stream import BatchSummary, RowSink, Warn, stream
 from servicebot_cli.description.loader import load
 from servicebot_cli.kinematics.fk import FrameQuery, resolve_frames
 
@@ -47,13 +46,8 @@ def run(request: FkBatchRequest, sink: RowSink, *, warn: Warn) -> BatchSummary:
         warn(note)
     rows = FkBatch(robot, frames, reference, deg=query.deg, clamp=query.clamp,
                    in_world=query.transform_root_to_world())
-    source, handle = open_source(request.configs)
-    with handle:
-        if source.kind == "csv":
-            summary = stream_csv(rows, source, handle, sink, on_error=request.on_error,
-                                 warn=warn)
-        else:
-            summary = stream_source(rows, source, sink, on_error=request.on_error, warn=warn)
+    summary = stream(rows, request.configs, sink, on_error=request.on_error, warn=warn,
+                     chunked_csv=stream_csv)
     if rows.clamped_values:
         warn(f"note: --clamp moved {rows.clamped_values} joint value"
              f"{'s' if rows.clamped_values != 1 else ''} onto a limit, on {rows.clamped_lines} "

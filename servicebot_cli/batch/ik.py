@@ -12,8 +12,7 @@ from dataclasses import dataclass, replace
 from servicebot_cli.batch.ik_chunks import stream_csv
 from servicebot_cli.batch.ik_rows import IkBatch
 from servicebot_cli.batch.policy import OnError
-from servicebot_cli.batch.reading import open_source
-from servicebot_cli.batch.stream import BatchSummary, RowSink, Warn, stream_source
+from servicebot_cli.batch.stream import BatchSummary, RowSink, Warn, stream
 from servicebot_cli.kinematics.ik import Clock, IkProblem, IkSession, compile_note
 from servicebot_cli.kinematics.targets import parse_axes
 
@@ -54,11 +53,6 @@ def run(request: IkBatchRequest, sink: RowSink, *, warn: Warn, clock: Clock) -> 
     for note in session.notes:
         warn(note)
     rows = IkBatch(session, axes=axes)
-    source, handle = open_source(request.targets)
-    with handle:
-        if source.kind == "csv":
-            summary = stream_csv(rows, source, handle, sink, on_error=request.on_error,
-                                 warn=warn)
-        else:
-            summary = stream_source(rows, source, sink, on_error=request.on_error, warn=warn)
+    summary = stream(rows, request.targets, sink, on_error=request.on_error, warn=warn,
+                     chunked_csv=stream_csv)
     return replace(summary, failed=tuple(rows.failed))

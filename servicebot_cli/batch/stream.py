@@ -83,12 +83,14 @@ class BatchSummary:
     failed: tuple[int, ...] = ()
 
 
-def stream(stage: Stage[T], path: str, sink: RowSink, *, on_error: OnError,
-           warn: Warn) -> BatchSummary:
+def stream(stage: Stage[T], path: str, sink: RowSink, *, on_error: OnError, warn: Warn,
+           chunked_csv: Callable[..., BatchSummary] | None = None) -> BatchSummary:
     """Run ``stage`` over every line of ``path``, writing results to ``sink`` as they come.
 
     The sink is opened after the input's header is read and checked, so a bad input
-    leaves no output file.
+    leaves no output file. A CSV input goes to ``chunked_csv`` when the stage has one (its
+    own reader, a chunk of lines at a time: ``(stage, source, handle, sink, on_error=,
+    warn=)``).
 
     Raises:
         BatchInputError: The input cannot be opened or its header is unusable.
@@ -96,6 +98,8 @@ def stream(stage: Stage[T], path: str, sink: RowSink, *, on_error: OnError,
     """
     source, handle = open_source(path)
     with handle:
+        if source.kind == "csv" and chunked_csv is not None:
+            return chunked_csv(stage, source, handle, sink, on_error=on_error, warn=warn)
         return stream_source(stage, source, sink, on_error=on_error, warn=warn)
 
 

@@ -32,6 +32,31 @@ def box_near(o: FloatArray, inverse: FloatArray, low: FloatArray, high: FloatArr
     return near if near <= far else math.inf
 
 
+@njit(cache=True, nogil=True, error_model="numpy", inline="always")
+def triangle_hit(o: FloatArray, d: FloatArray, corner: FloatArray, e1: FloatArray,
+                 e2: FloatArray) -> tuple[float, float]:
+    """Where a ray meets one triangle (the module's Moller-Trumbore test), and its delta.
+
+    Returns:
+        ``t`` (NaN: it misses, so every comparison with it is false) and :math:`\\delta`
+        (> 0: the triangle faces the ray).
+    """
+    p0, p1, p2 = d[1] * e2[2] - d[2] * e2[1], d[2] * e2[0] - d[0] * e2[2], \
+        d[0] * e2[1] - d[1] * e2[0]
+    det = e1[0] * p0 + e1[1] * p1 + e1[2] * p2
+    if abs(det) < 1e-15:
+        return math.nan, det
+    s0, s1, s2 = o[0] - corner[0], o[1] - corner[1], o[2] - corner[2]
+    u = (s0 * p0 + s1 * p1 + s2 * p2) / det
+    if u < 0.0 or u > 1.0:
+        return math.nan, det
+    q0, q1, q2 = s1 * e1[2] - s2 * e1[1], s2 * e1[0] - s0 * e1[2], s0 * e1[1] - s1 * e1[0]
+    v = (d[0] * q0 + d[1] * q1 + d[2] * q2) / det
+    if not (v >= 0.0 and u + v <= 1.0):
+        return math.nan, det
+    return (e2[0] * q0 + e2[1] * q1 + e2[2] * q2) / det, det
+
+
 @njit(cache=True, nogil=True, error_model="numpy")
 def mesh_entry(o: FloatArray, d: FloatArray, bound: float, root: int,
                mesh: tuple, stack: IntArray) -> tuple[float, int]:  # type: ignore[type-arg]
@@ -73,21 +98,8 @@ def mesh_entry(o: FloatArray, d: FloatArray, bound: float, root: int,
             top += 2
             continue
         for k in range(first[node], first[node] + count[node]):
-            e1, e2 = edge_1[k], edge_2[k]
-            p0, p1, p2 = d[1] * e2[2] - d[2] * e2[1], d[2] * e2[0] - d[0] * e2[2], \
-                d[0] * e2[1] - d[1] * e2[0]
-            det = e1[0] * p0 + e1[1] * p1 + e1[2] * p2
-            if abs(det) < 1e-15:
-                continue
-            s0, s1, s2 = o[0] - corner[k, 0], o[1] - corner[k, 1], o[2] - corner[k, 2]
-            u = (s0 * p0 + s1 * p1 + s2 * p2) / det
-            if u < 0.0 or u > 1.0:
-                continue
-            q0, q1, q2 = s1 * e1[2] - s2 * e1[1], s2 * e1[0] - s0 * e1[2], s0 * e1[1] - s1 * e1[0]
-            v = (d[0] * q0 + d[1] * q1 + d[2] * q2) / det
-            t = (e2[0] * q0 + e2[1] * q1 + e2[2] * q2) / det
-            if v >= 0.0 and u + v <= 1.0 and 0.0 <= t <= bound \
-                    and (t < best or (t == best and k < found)):
+            t, det = triangle_hit(o, d, corner[k], edge_1[k], edge_2[k])
+            if 0.0 <= t <= bound and (t < best or (t == best and k < found)):
                 best, found, facing = t, k, det > 0.0
     if not facing:
         return math.inf, -1

@@ -24,7 +24,12 @@ import numpy.typing as npt
 from numba import njit, prange  # type: ignore[import-untyped, import-not-found, unused-ignore]
 
 from servicebot_cli.simulate.sensors import camera_culling as culling
-from servicebot_cli.simulate.sensors.camera_bvh import box_near, lit_normal, mesh_entry
+from servicebot_cli.simulate.sensors.camera_bvh import (
+    box_near,
+    lit_normal,
+    mesh_entry,
+    triangle_hit,
+)
 from servicebot_cli.simulate.sensors.camera_noise import GOLDEN, MIX_1, MIX_2
 from servicebot_cli.simulate.sensors.camera_primitives import MESH, entry, lit
 
@@ -60,20 +65,8 @@ def _triangles(o: FloatArray, d: FloatArray, best: float, lowest: float, highest
             top += 2
             continue
         for k in range(first[node], first[node] + count[node]):
-            e1, e2 = edge_1[k], edge_2[k]
-            p0, p1, p2 = d[1] * e2[2] - d[2] * e2[1], d[2] * e2[0] - d[0] * e2[2], \
-                d[0] * e2[1] - d[1] * e2[0]
-            det = e1[0] * p0 + e1[1] * p1 + e1[2] * p2
-            if abs(det) < 1e-15:
-                continue
-            s0, s1, s2 = o[0] - corner[k, 0], o[1] - corner[k, 1], o[2] - corner[k, 2]
-            u = (s0 * p0 + s1 * p1 + s2 * p2) / det
-            if u < 0.0 or u > 1.0:
-                continue
-            q0, q1, q2 = s1 * e1[2] - s2 * e1[1], s2 * e1[0] - s0 * e1[2], s0 * e1[1] - s1 * e1[0]
-            v = (d[0] * q0 + d[1] * q1 + d[2] * q2) / det
-            t = (e2[0] * q0 + e2[1] * q1 + e2[2] * q2) / det
-            if v >= 0.0 and u + v <= 1.0 and lowest <= t <= highest and t < best:
+            t, _ = triangle_hit(o, d, corner[k], edge_1[k], edge_2[k])
+            if lowest <= t <= highest and t < best:
                 best, found = t, k
     return best, found
 
