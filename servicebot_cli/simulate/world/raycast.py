@@ -126,7 +126,7 @@ def _solid_entry(o: list[FloatArray], d: list[FloatArray], solid: Solid,
     ol = [x if isinstance(x, np.ndarray) else np.zeros_like(o[0]) for x in ol]
     dl = [x if isinstance(x, np.ndarray) else np.zeros_like(o[0]) for x in dl]
     if level and not np.any(dl[2]) and _strictly_within(ol[2], solid.half_m[2]):
-        return (_level_box_entry(ol, dl, solid.half_m) if solid.kind == "box"
+        return (box_entry(ol, dl, solid.half_m, axes=2) if solid.kind == "box"
                 else _level_cylinder_entry(ol, dl, solid.half_m))
     return (box_entry(ol, dl, solid.half_m) if solid.kind == "box"
             else cylinder_entry(ol, dl, solid.half_m))
@@ -153,7 +153,7 @@ def _fan_entry(origin: list[FloatArray], d: list[FloatArray], rays: IntArray, ow
           for i in range(2)]
     ol = [x[owner] if isinstance(x, np.ndarray) else np.zeros(len(rays)) for x in ol]
     dl = [x if isinstance(x, np.ndarray) else np.zeros(len(rays)) for x in dl]
-    return (_level_box_entry(ol, dl, solid.half_m) if solid.kind == "box"
+    return (box_entry(ol, dl, solid.half_m, axes=2) if solid.kind == "box"
             else _level_cylinder_entry(ol, dl, solid.half_m))
 
 
@@ -212,12 +212,17 @@ def _spans(fan: IntArray, first: IntArray, stop: IntArray, order: IntArray | Non
     return owner * rays + chosen, owner
 
 
-def box_entry(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
-    """Slab method: entry distance into an axis-aligned box centred at the origin."""
+def box_entry(o: list[FloatArray], d: list[FloatArray], half: FloatArray, *,
+              axes: int = 3) -> FloatArray:
+    """Slab method: entry distance into an axis-aligned box centred at the origin.
+
+    ``axes`` 2 leaves out the z slab, which holds all of a level ray's line when it starts
+    between the box's bottom and top (the same result).
+    """
     near = np.full(np.shape(d[0]), -np.inf)
     far = np.full(np.shape(d[0]), np.inf)
     with np.errstate(divide="ignore", invalid="ignore"):
-        for i in range(3):
+        for i in range(axes):
             inv = 1.0 / d[i]
             t1, t2 = (-half[i] - o[i]) * inv, (half[i] - o[i]) * inv
             np.fmax(near, np.fmin(t1, t2), out=near)
@@ -228,23 +233,6 @@ def box_entry(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> Flo
 def _strictly_within(z: FloatArray, half: float) -> bool:
     """Every local height strictly between the solid's bottom and top."""
     return bool(np.all((z > -half) & (z < half)))
-
-
-def _level_box_entry(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
-    """:func:`box_entry` for level rays starting between the box's bottom and top.
-
-    With local ``d[2] == 0`` the z slab holds all of the line (its bounds are -inf and inf),
-    so leaving it out gives the same result.
-    """
-    near = np.full(np.shape(d[0]), -np.inf)
-    far = np.full(np.shape(d[0]), np.inf)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        for i in range(2):
-            inv = 1.0 / d[i]
-            t1, t2 = (-half[i] - o[i]) * inv, (half[i] - o[i]) * inv
-            np.fmax(near, np.fmin(t1, t2), out=near)
-            np.fmin(far, np.fmax(t1, t2), out=far)
-    return np.where((near <= far) & (near >= 0.0), near, np.inf)
 
 
 def _level_cylinder_entry(o: list[FloatArray], d: list[FloatArray],
