@@ -235,13 +235,22 @@ def _outcome(collides: Collides, asked: tuple[FloatArray, FloatArray, FloatArray
 
 def _hits(collides: Collides, poses: tuple[FloatArray, FloatArray, FloatArray, FloatArray],
           rows: BoolArray) -> tuple[IntArray, IntArray]:
-    """What the poses at ``rows`` touch (obstacle, link); -1 elsewhere."""
+    """What the poses at ``rows`` touch (obstacle, link); -1 elsewhere.
+
+    Each distinct pose (the same bits) is tested once: a base held against an obstacle asks
+    for the same step tick after tick.
+    """
     obstacle = np.full(len(rows), -1, dtype=np.int64)
     link = np.full(len(rows), -1, dtype=np.int64)
     index = np.flatnonzero(rows)
     if len(index):
         x, y, yaw, q = poses
-        obstacle[index], link[index] = collides(q[index], x[index], y[index], yaw[index])
+        bits = np.column_stack((x[index], y[index], yaw[index], q[index])).view(np.int64)
+        _, first, back = np.unique(bits, axis=0, return_index=True, return_inverse=True)
+        chosen = index[np.sort(first)]  # in tick order
+        found = collides(q[chosen], x[chosen], y[chosen], yaw[chosen])
+        at = np.searchsorted(np.sort(first), first)[back.reshape(-1)]
+        obstacle[index], link[index] = found[0][at], found[1][at]
     return obstacle, link
 
 
