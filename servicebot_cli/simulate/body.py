@@ -68,6 +68,8 @@ class SimRobot:
         lidar, imu, camera: Mounted sensors, None where the URDF has none.
         disabled_pairs: Link pairs the self-contact check leaves out (an SRDF's
             ``<disable_collisions>``, as ``ik --srdf``).
+        resolver: Finds the ``package://`` collision meshes (the shape's and the self-contact
+            check's); None: the environment's and the file's workspace.
     """
 
     robot: RobotDescription
@@ -80,6 +82,7 @@ class SimRobot:
     imu: Mounted[ImuSpec] | None
     camera: Mounted[CameraSpec] | None
     disabled_pairs: tuple[tuple[str, str], ...] = ()
+    resolver: PackageResolver | None = None
 
     @property
     def root_link(self) -> str:
@@ -125,7 +128,7 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
         lidar=_mount(robot, LIDAR_TYPES, lidar_spec, placement),
         imu=_mount(robot, ("imu",), imu_spec, placement),
         camera=_mount(robot, CAMERA_TYPES, camera_spec, placement),
-        disabled_pairs=tuple(disabled_pairs),
+        disabled_pairs=tuple(disabled_pairs), resolver=resolver,
     )
 
 

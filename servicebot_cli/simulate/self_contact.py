@@ -22,6 +22,7 @@ import numpy.typing as npt
 from servicebot_cli.simulate.shape import RobotShape
 
 if TYPE_CHECKING:
+    from servicebot_cli.description.packages import PackageResolver
     from servicebot_cli.description.robot import RobotDescription
     from servicebot_cli.kinematics.collisions import CollisionCheck
 
@@ -51,12 +52,14 @@ class SelfContactWatch:
         base_height_m: Height of the base frame above the floor [m].
         dt_s: Control period [s].
         disabled: Link pairs never checked (an SRDF's ``<disable_collisions>``).
+        resolver: Finds ``package://`` collision meshes (None: the file's workspace).
     """
 
     def __init__(self, robot: RobotDescription, shape: RobotShape, base_height_m: float,
-                 dt_s: float, disabled: Collection[tuple[str, str]] = ()) -> None:
+                 dt_s: float, disabled: Collection[tuple[str, str]] = (),
+                 resolver: PackageResolver | None = None) -> None:
         self.robot, self.shape, self.base_height_m, self.dt_s = robot, shape, base_height_m, dt_s
-        self.disabled = tuple(disabled)
+        self.disabled, self.resolver = tuple(disabled), resolver
         self.built: tuple[CollisionCheck, FloatArray, list[int]] | None = None
         self.touching: set[tuple[str, str]] = set()
         self.previous = -2  # the last tick checked
@@ -71,8 +74,8 @@ class SelfContactWatch:
             from servicebot_cli.kinematics.collisions import build_check
 
             robot, model = self.robot, self.robot.model
-            check = build_check(robot, model, PackageResolver(context=robot.path.parent),
-                                disabled=self.disabled)
+            resolver = self.resolver or PackageResolver(context=robot.path.parent)
+            check = build_check(robot, model, resolver, disabled=self.disabled)
             columns = [model.joints[model.getJointId(name)].idx_q for name in self.shape.joints]
             self.built = (check, np.array(pin.neutral(model)), columns)
         return self.built

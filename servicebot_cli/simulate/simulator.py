@@ -167,7 +167,7 @@ class _Run:
         self.wheel_angles = np.zeros(2)  # left, right at the piece's first boundary [rad]
         self.wheel_sums = np.array([-0.0, -0.0])  # -0.0 + v == v: an empty running sum
         self.self_contacts = (SelfContactWatch(body.robot, body.shape, body.base_height_m,
-                                               self.dt_s, body.disabled_pairs)
+                                               self.dt_s, body.disabled_pairs, body.resolver)
                               if body.arm_joints else None)
         self.record = Closest(float("inf"), -1, -1, -1)
         self.twist_before = (0.0, 0.0)  # the followed twist of the tick before the piece

@@ -74,3 +74,17 @@ def test_a_mesh_collision_link_given_relative_to_a_relative_urdf_path_is_checked
         assert_one_line_error(result, 2, "'arm_link4' and 'bumper' would intersect")
         ik = run_servicebot("ik", path, "--position", "0.5", "0", "0.4", cwd=cwd)
         assert ik.returncode in (0, 1) and "collision geometry" not in ik.stderr, ik.stderr
+
+
+def test_a_mesh_collision_link_in_a_package_given_by_option_is_checked(tmp_path):
+    from tests.simulate.test_mesh_parts import _robot, _stl
+
+    meshes = tmp_path / "meshes"
+    meshes.mkdir()
+    _stl(meshes)
+    _robot(tmp_path, "package://bumper_meshes/bumper.stl")
+    result = run_servicebot("simulate", tmp_path / "robot.urdf", "--headless", "--duration-s",
+                            "20", "--package", f"bumper_meshes={meshes}", cwd=tmp_path,
+                            env={"ROS_PACKAGE_PATH": "", "AMENT_PREFIX_PATH": ""})
+    # the point check read the mesh through --package (once: "package not found")
+    assert_one_line_error(result, 2, "'arm_link4' and 'bumper' would intersect")

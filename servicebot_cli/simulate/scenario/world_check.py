@@ -73,7 +73,7 @@ def check_arm_points(body: SimRobot, scenario: Scenario) -> None:
     points = np.repeat(q0[None], len(trajectory.points), axis=0)
     points[:, columns] = [point.positions for point in trajectory.points]
     watch = SelfContactWatch(body.robot, body.shape, body.base_height_m, 1.0,
-                             body.disabled_pairs)
+                             body.disabled_pairs, body.resolver)
     events = watch.advance(0, points)  # one point per "tick": an event's time is its index
     if not events:
         return
