@@ -241,26 +241,32 @@ def _level_cylinder_entry(o: list[FloatArray], d: list[FloatArray],
 
     The side alone: a level ray never meets a cap from there.
     """
-    radius = half[0]
+    a, c, disc, t_side = _side(o, d, half[0])
+    side = np.where((disc >= 0) & (a > 0) & (t_side >= 0), t_side, np.inf)
+    return np.where(c < 0, np.inf, side)
+
+
+def _side(o: list[FloatArray], d: list[FloatArray],
+          radius: float) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    """A ray against a cylinder's infinite side, radius ``radius`` about the local z axis.
+
+    Returns ``a``, ``c`` (< 0: the ray starts inside), the discriminant, and the nearer root
+    ``t`` of :math:`a t^2 + 2 b t + c = 0`.
+    """
     a = d[0] * d[0] + d[1] * d[1]
     b = o[0] * d[0] + o[1] * d[1]
     c = o[0] * o[0] + o[1] * o[1] - radius**2
     disc = b * b - a * c
     with np.errstate(divide="ignore", invalid="ignore"):
         t_side = (-b - np.sqrt(np.maximum(disc, 0.0))) / a
-        side = np.where((disc >= 0) & (a > 0) & (t_side >= 0), t_side, np.inf)
-    return np.where(c < 0, np.inf, side)
+    return a, c, disc, t_side
 
 
 def cylinder_entry(o: list[FloatArray], d: list[FloatArray], half: FloatArray) -> FloatArray:
     """Entry distance into a cylinder of radius ``half[0]`` and half length ``half[2]``."""
     radius, half_length = half[0], half[2]
-    a = d[0] * d[0] + d[1] * d[1]
-    b = o[0] * d[0] + o[1] * d[1]
-    c = o[0] * o[0] + o[1] * o[1] - radius**2
-    disc = b * b - a * c
+    a, c, disc, t_side = _side(o, d, radius)
     with np.errstate(divide="ignore", invalid="ignore"):
-        t_side = (-b - np.sqrt(np.maximum(disc, 0.0))) / a
         z = o[2] + t_side * d[2]
         side = np.where((disc >= 0) & (a > 0) & (t_side >= 0) & (np.abs(z) <= half_length),
                         t_side, np.inf)
