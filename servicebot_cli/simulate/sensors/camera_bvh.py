@@ -23,7 +23,8 @@ _SLACK = 1e-9  # boxes up to this share further than the bound are still opened 
 
 
 @njit(cache=True, nogil=True, error_model="numpy")
-def box_near(o: FloatArray, inverse: FloatArray, low: FloatArray, high: FloatArray) -> float:
+def box_near(o: FloatArray, inverse: tuple[float, float, float], low: FloatArray,
+             high: FloatArray) -> float:
     """Where a ray enters an axis-aligned box (inf: never)."""
     near, far = 0.0, math.inf
     for i in range(3):
@@ -80,18 +81,15 @@ def mesh_entry(o: FloatArray, d: FloatArray, bound: float, root: int,
         Distance (inf: none) and triangle (-1: none).
     """
     corner, edge_1, edge_2, _, _, low, high, first, count = mesh
-    i0, i1, i2 = _inverse(d[0]), _inverse(d[1]), _inverse(d[2])
+    inverse = ray_inverse(d)
     best, found, facing, top = math.inf, -1, False, 0
     stack[0] = root
     while top >= 0:
         node = stack[top]
         top -= 1
         limit = min(best, bound)
-        near, far = 0.0, math.inf  # the slab method on the node's box
-        for i, inverse in ((0, i0), (1, i1), (2, i2)):
-            t1, t2 = (low[node, i] - o[i]) * inverse, (high[node, i] - o[i]) * inverse
-            near, far = max(near, min(t1, t2)), min(far, max(t1, t2))
-        if near > far or near > limit + _SLACK * (1.0 + limit):
+        near = box_near(o, inverse, low[node], high[node])
+        if near == math.inf or near > limit + _SLACK * (1.0 + limit):
             continue
         if count[node] == 0:
             stack[top + 1], stack[top + 2] = first[node], first[node] + 1
@@ -107,8 +105,16 @@ def mesh_entry(o: FloatArray, d: FloatArray, bound: float, root: int,
 
 
 @njit(cache=True, nogil=True, error_model="numpy", inline="always")
+def ray_inverse(d: FloatArray) -> tuple[float, float, float]:
+    """1 / each component of ``d``, kept finite (a ray along a box's face stays in its slab).
+
+    A tuple, as :func:`box_near` takes it: nothing is allocated per ray.
+    """
+    return _inverse(d[0]), _inverse(d[1]), _inverse(d[2])
+
+
+@njit(cache=True, nogil=True, error_model="numpy", inline="always")
 def _inverse(component: float) -> float:
-    """1 / ``component``, kept finite (a ray along a box's face stays in its slab)."""
     return 1.0 / (component if abs(component) > 1e-300 else 1e-300)
 
 

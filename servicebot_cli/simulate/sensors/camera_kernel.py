@@ -28,6 +28,7 @@ from servicebot_cli.simulate.sensors.camera_bvh import (
     box_near,
     lit_normal,
     mesh_entry,
+    ray_inverse,
     triangle_hit,
 )
 from servicebot_cli.simulate.sensors.camera_noise import GOLDEN, MIX_1, MIX_2
@@ -50,9 +51,7 @@ def _triangles(o: FloatArray, d: FloatArray, best: float, lowest: float, highest
         Distance and triangle (-1: none before ``best``).
     """
     corner, edge_1, edge_2, _, _, low, high, first, count = mesh
-    inverse = np.empty(3)
-    for i in range(3):
-        inverse[i] = 1.0 / (d[i] if abs(d[i]) > 1e-300 else 1e-300)
+    inverse = ray_inverse(d)
     found, top = -1, 0
     stack[0] = 0
     while top >= 0:
