@@ -19,7 +19,6 @@ the chunk size.
 from __future__ import annotations
 
 import contextlib
-import itertools
 import json
 from collections.abc import Sequence
 from typing import IO
@@ -29,7 +28,7 @@ import numpy.typing as npt
 
 from servicebot_cli.batch.fk_rows import RESULT_COLUMNS, FkBatch
 from servicebot_cli.batch.formatting import Formatter, format_rows
-from servicebot_cli.batch.line_chunks import numbered, numbers, split_cells
+from servicebot_cli.batch.line_chunks import chunks, numbers, split_cells
 from servicebot_cli.batch.policy import OnError, Tally
 from servicebot_cli.batch.reading import Source, csv_rows
 from servicebot_cli.batch.stream import BatchSummary, RowSink, Warn, summarise, write_results
@@ -60,12 +59,9 @@ def stream_csv(batch: FkBatch, source: Source, handle: IO[str], sink: RowSink, *
     parser = ChunkParser(batch, source.columns, source.delimiter)
     template = jsonl_template(batch.frames, batch.unit)
     tally = Tally()
-    number = source.header_line
     with sink.open(batch.columns()) as write, contextlib.ExitStack() as stack:
         formatter: Formatter | None = None  # made at the first chunk of numbers
-        while raw := list(itertools.islice(handle, CHUNK_LINES)):
-            lines = numbered(raw, number)
-            number += len(raw)
+        for lines in chunks(handle, source.header_line, CHUNK_LINES):
             values = parser.values([text for _, text in lines]) if lines else None
             if values is None:  # line by line: the messages name the line
                 if formatter is not None:

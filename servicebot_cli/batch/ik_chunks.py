@@ -17,12 +17,11 @@ behaves the same. Memory stays bounded by the chunk size.
 
 from __future__ import annotations
 
-import itertools
 from collections.abc import Sequence
 from typing import IO
 
 from servicebot_cli.batch.ik_rows import CHUNK, IkBatch
-from servicebot_cli.batch.line_chunks import numbered, numbers, split_cells
+from servicebot_cli.batch.line_chunks import chunks, numbers, split_cells
 from servicebot_cli.batch.policy import OnError, Tally
 from servicebot_cli.batch.reading import Source, csv_rows
 from servicebot_cli.batch.stream import (
@@ -62,11 +61,8 @@ def stream_csv(batch: IkBatch, source: Source, handle: IO[str], sink: RowSink, *
     batch.check_header(source.columns)
     layout = target_layout(source.columns, batch.frame, deg=batch.session.deg)
     tally = Tally()
-    number = source.header_line
     with sink.open(batch.columns()) as write:
-        while raw := list(itertools.islice(handle, CHUNK_LINES)):
-            lines = numbered(raw, number)
-            number += len(raw)
+        for lines in chunks(handle, source.header_line, CHUNK_LINES):
             targets = _targets(batch, layout, source, [text for _, text in lines]) \
                 if lines and layout is not None else None
             if targets is None:  # line by line: the messages name the line

@@ -10,7 +10,8 @@ every error names its line.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
+from typing import IO
 
 import numpy as np
 import numpy.typing as npt
@@ -18,6 +19,16 @@ import numpy.typing as npt
 from servicebot_cli.batch.reading import meaningful
 
 FloatArray = npt.NDArray[np.float64]
+
+
+def chunks(handle: IO[str], before: int, size: int) -> Iterator[list[tuple[int, str]]]:
+    """The rest of ``handle`` (its lines follow line ``before``), ``size`` raw lines at a time.
+
+    Each chunk is :func:`numbered`: its meaningful lines only (a chunk of comments is empty).
+    """
+    while raw := list(itertools.islice(handle, size)):
+        yield numbered(raw, before)
+        before += len(raw)
 
 
 def numbered(raw: list[str], before: int) -> list[tuple[int, str]]:
