@@ -237,8 +237,8 @@ def _hits(collides: Collides, poses: tuple[FloatArray, FloatArray, FloatArray, F
           rows: BoolArray) -> tuple[IntArray, IntArray]:
     """What the poses at ``rows`` touch (obstacle, link); -1 elsewhere.
 
-    Each distinct pose (the same bits) is tested once: a base held against an obstacle asks
-    for the same step tick after tick.
+    A pose with the same bits as the tick before is not tested again: a base held against an
+    obstacle asks for the same step tick after tick.
     """
     obstacle = np.full(len(rows), -1, dtype=np.int64)
     link = np.full(len(rows), -1, dtype=np.int64)
@@ -246,10 +246,11 @@ def _hits(collides: Collides, poses: tuple[FloatArray, FloatArray, FloatArray, F
     if len(index):
         x, y, yaw, q = poses
         bits = np.column_stack((x[index], y[index], yaw[index], q[index])).view(np.int64)
-        _, first, back = np.unique(bits, axis=0, return_index=True, return_inverse=True)
-        chosen = index[np.sort(first)]  # in tick order
+        new = np.ones(len(index), dtype=bool)
+        new[1:] = np.any(bits[1:] != bits[:-1], axis=1)
+        chosen = index[new]
         found = collides(q[chosen], x[chosen], y[chosen], yaw[chosen])
-        at = np.searchsorted(np.sort(first), first)[back.reshape(-1)]
+        at = np.cumsum(new) - 1  # each row's pose among those tested
         obstacle[index], link[index] = found[0][at], found[1][at]
     return obstacle, link
 
