@@ -29,7 +29,7 @@ from servicebot_cli.kinematics.frames import link_names, pick_frame
 from servicebot_cli.kinematics.inverse import IkResult, IkSettings, IkSolver, IkTarget
 from servicebot_cli.kinematics.json_types import JsonObject
 from servicebot_cli.kinematics.series import series_search, solve_leading
-from servicebot_cli.kinematics.srdf import disabled_pairs
+from servicebot_cli.kinematics.srdf import robot_disabled_pairs
 from servicebot_cli.kinematics.target_frame import TargetFrame
 from servicebot_cli.kinematics.targets import make_target, parse_axes
 from servicebot_cli.kinematics.user_joints import clamped_user_vector, user_values
@@ -313,7 +313,7 @@ def collision_check(robot: RobotDescription, model: pin.Model, source: RobotSour
     """
     if not options.check:
         return None
-    disabled = disabled_pairs(options.srdf, link_names(robot)) if options.srdf else ()
+    disabled = robot_disabled_pairs(options.srdf, robot)
     return build_check(robot, model, source.resolver(), disabled=disabled, moving=moving,
                        floor=is_mobile(robot))
 

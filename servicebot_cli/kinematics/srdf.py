@@ -9,10 +9,14 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from servicebot_cli.common.errors import NameNotFound, ServicebotError
 from servicebot_cli.common.inputs import display_path, read_input_bytes
 from servicebot_cli.description.safe_xml import parse_xml
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.robot import RobotDescription
 
 LinkPair = tuple[str, str]
 """Two link names, in the order written."""
@@ -26,6 +30,19 @@ class SrdfLinkNotFound(NameNotFound):
     """A link named in an SRDF that the robot does not have."""
 
     kind = "link"
+
+
+def robot_disabled_pairs(path: str | None, robot: RobotDescription) -> tuple[LinkPair, ...]:
+    """:func:`disabled_pairs` of the SRDF ``path`` for ``robot``'s links; none without one.
+
+    Raises:
+        BadSrdf: See :func:`disabled_pairs`.
+    """
+    if path is None:
+        return ()
+    from servicebot_cli.kinematics.frames import link_names
+
+    return disabled_pairs(path, link_names(robot))
 
 
 def disabled_pairs(path: str, links: Sequence[str]) -> tuple[LinkPair, ...]:

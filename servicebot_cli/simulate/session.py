@@ -125,12 +125,9 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
     from servicebot_cli.simulate.scenario.definition import load_scenario
 
     robot = load(request.robot)
-    disabled: tuple[tuple[str, str], ...] = ()
-    if request.srdf is not None:
-        from servicebot_cli.kinematics.frames import link_names
-        from servicebot_cli.kinematics.srdf import disabled_pairs
+    from servicebot_cli.kinematics.srdf import robot_disabled_pairs
 
-        disabled = tuple(disabled_pairs(request.srdf, link_names(robot)))
+    disabled = robot_disabled_pairs(request.srdf, robot)
     scenario = with_overrides(load_scenario(request.scenario_file), request.overrides)
     problem = ""
     if request.live_window:  # the window's module brings the plot's, not needed headless

@@ -124,12 +124,9 @@ def run(request: SweepRequest, *, stderr: TextIO | None = None,
     checks = _expectations(definition)
     robot = load(request.robot)
     runs = plan(definition, base, robot.xml_text)
-    disabled: tuple[tuple[str, str], ...] = ()
-    if request.srdf is not None:
-        from servicebot_cli.kinematics.frames import link_names
-        from servicebot_cli.kinematics.srdf import disabled_pairs
+    from servicebot_cli.kinematics.srdf import robot_disabled_pairs
 
-        disabled = tuple(disabled_pairs(request.srdf, link_names(robot)))
+    disabled = robot_disabled_pairs(request.srdf, robot)
     _check_against_robot(definition, runs, robot, disabled,
                          check_points=not request.allow_collisions)
     out_dir = Path(request.out_dir) if request.out_dir else None
