@@ -44,12 +44,15 @@ class CheckEnv:
         meshes: Mesh files read so far.
         inertia_factor: How far (as a ratio) inertia may stray from the geometry's (SB301).
         load_meshes: False when no mesh rule is selected: mesh files are then never read.
+        model_ahead: Build SB701's model in a forked child while the other rules run (a
+            one-file run with a second core; see :mod:`~servicebot_cli.check.model_ahead`).
     """
 
     resolver: PackageResolver = field(default_factory=PackageResolver.from_environment)
     meshes: MeshCache = field(default_factory=MeshCache)
     inertia_factor: float = 2.0
     load_meshes: bool = True
+    model_ahead: bool = False
     search: PackageSearch = field(init=False)
 
     def __post_init__(self) -> None:

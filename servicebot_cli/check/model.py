@@ -10,16 +10,33 @@ from servicebot_cli.check.findings import Issue
 from servicebot_cli.common.errors import DescriptionError
 
 if TYPE_CHECKING:
+    from servicebot_cli.check.model_ahead import ModelAhead
     from servicebot_cli.description.robot import RobotDescription
 
 _HINT = re.compile(r"\s*\(run 'servicebot check [^)]*\) for details\)\s*$|\s*\(run 'servicebot "
                    r"check .*$")
 
 
-def check(robot: RobotDescription) -> Iterator[Issue]:
-    """Build the fixed-base model; report what Pinocchio (and urdfdom below it) says."""
+def check(robot: RobotDescription, ahead: ModelAhead | None = None) -> Iterator[Issue]:
+    """Build the fixed-base model; report what Pinocchio (and urdfdom below it) says.
+
+    With ``ahead``, the verdict of the child building it meanwhile (built here if it gave none).
+    """
+    refused = _refusal(robot, ahead)
+    if refused is not None:
+        text = refused.removeprefix(f"{robot.display}: ")
+        yield Issue("SB701", _HINT.sub("", text), robot.root)
+
+
+def _refusal(robot: RobotDescription, ahead: ModelAhead | None) -> str | None:
+    """Pinocchio's error line for ``robot``, or None when it builds the model."""
+    if ahead is not None:
+        try:
+            return ahead.verdict()
+        except ChildProcessError:
+            pass
     try:
         robot.model  # noqa: B018 -- building is the check
     except DescriptionError as exc:
-        text = str(exc).removeprefix(f"{robot.display}: ")
-        yield Issue("SB701", _HINT.sub("", text), robot.root)
+        return str(exc)
+    return None

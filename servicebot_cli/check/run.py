@@ -12,7 +12,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
-from servicebot_cli.check import files, workers
+from servicebot_cli.check import files, model_ahead, workers
 from servicebot_cli.check.result import CheckResult
 from servicebot_cli.check.runner import FileReport, place_issues
 from servicebot_cli.check.settings import Settings, find_pyproject, load_settings
@@ -140,6 +140,8 @@ def _check_urdfs(targets: UrdfTargets, settings: Settings) -> list[FileReport]:
             sources, settings, targets.packages, jobs, targets.mesh_cache)
     else:
         env = workers.env_for(targets.packages, settings, targets.mesh_cache)
+        env.model_ahead = len(sources) == 1 and model_ahead.worth_forking(
+            workers.available_cores())
         outcomes = (workers.check_one(source, named, settings, env) for source, named in sources)
     return [workers.report_of(outcome, settings) for outcome in outcomes]
 

@@ -21,6 +21,7 @@ from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.description.safe_xml import MAX_BYTES
 
 if TYPE_CHECKING:
+    from servicebot_cli.check.model_ahead import ModelAhead
     from servicebot_cli.description.loader import RobotSource
     from servicebot_cli.description.packages import PackageLocation
     from servicebot_cli.description.robot import RobotDescription
@@ -66,13 +67,31 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv) -> File
         return _report(source.display, place_issues(None, [issue], settings))
     from servicebot_cli.check import packages
 
-    findings = place_issues(robot, _issues(robot, settings, env), settings)
-    return _report(source.display, findings + _model(robot, findings, settings),
-                   packages.used(robot, env.search))
+    ahead = _model_ahead(robot, settings, env)
+    try:
+        findings = place_issues(robot, _issues(robot, settings, env), settings)
+        return _report(source.display, findings + _model(robot, findings, settings, ahead),
+                       packages.used(robot, env.search))
+    finally:
+        if ahead is not None:
+            ahead.stop()
 
 
-def _model(robot: RobotDescription, findings: list[Finding], settings: Settings) -> list[Finding]:
-    """SB701 when every reported finding is below error level, else SB702."""
+def _model_ahead(robot: RobotDescription, settings: Settings, env: CheckEnv) -> ModelAhead | None:
+    """The child building SB701's model while the other rules run, when ``env`` asks for one."""
+    if not env.model_ahead or not settings.enabled("SB701"):
+        return None
+    from servicebot_cli.check.model_ahead import ModelAhead
+
+    return ModelAhead.start(robot.xml_text, robot.display)
+
+
+def _model(robot: RobotDescription, findings: list[Finding], settings: Settings,
+           ahead: ModelAhead | None = None) -> list[Finding]:
+    """SB701 when every reported finding is below error level, else SB702.
+
+    ``ahead``: the child building the model meanwhile, whose verdict stands for building it.
+    """
     from servicebot_cli.check import model
 
     if any(f.code in ("SB008", "SB015") for f in findings):
@@ -81,7 +100,9 @@ def _model(robot: RobotDescription, findings: list[Finding], settings: Settings)
         skipped = Issue("SB702", "Pinocchio model not built: fix the errors above first",
                         where=(robot.display, 0, 0))
         return place_issues(robot, [skipped], settings)
-    return place_issues(robot, model.check(robot), settings) if settings.enabled("SB701") else []
+    if not settings.enabled("SB701"):
+        return []
+    return place_issues(robot, model.check(robot, ahead), settings)
 
 
 def _unreadable(exc: DescriptionError, source: RobotSource) -> bool:
