@@ -52,9 +52,9 @@ def _cpu_s() -> float:
 def _timed(commands: list[list[str]], env: dict[str, str] | None = None) -> tuple[float, float]:
     """Wall and CPU seconds of running ``commands`` one after the other."""
     cpu, start = _cpu_s(), time.perf_counter()
-    for command in commands:
-        subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env,
-                       timeout=600)
+    for command in commands:  # no timeout: waiting with one polls the child with sleeps,
+        # which added about 1.7 ms to each of the 1,164 native check_urdf runs
+        subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
     return time.perf_counter() - start, _cpu_s() - cpu
 
 
