@@ -88,7 +88,7 @@ class _Search:
         pose, group, obstacle = np.unravel_index(groups, grid)
         bounds, flats = [self.bounds], [self.flats]
         key = group * grid[2] + obstacle
-        for k in np.unique(key).tolist():
+        for k in sorted(set(key.tolist())):  # np.unique would import numpy.ma
             rows = pose[key == k]
             g, o = divmod(k, grid[2])
             pair_bounds, members = self.tester.pairs(centres, rows, g, o)
