@@ -45,10 +45,10 @@ def read_stl(data: bytes) -> FloatArray:
     return vertices.reshape(-1, 3, 3)
 
 
-# an OBJ's vertex and face lines, after the newline before them (the file gets one first)
+# an OBJ's vertex and face lines after a newline; the first line is matched on its own
 _OBJ_VERTEX = re.compile(rb"\n[ \t]*v[ \t]([^\r\n]*)")
 _OBJ_FACE = re.compile(rb"\n[ \t]*f[ \t]([^\r\n]*)")
-_OBJ_AFTER_INDEX = re.compile(rb"/\S*")  # a corner's texture and normal indices: "7/2/5"
+_OBJ_FIRST_LINE = re.compile(rb"[ \t]*([vf])[ \t]([^\r\n]*)")
 
 
 def read_obj(data: bytes) -> FloatArray:
@@ -60,12 +60,15 @@ def read_obj(data: bytes) -> FloatArray:
     """
     if b"\\\n" in data or b"\\\r" in data:
         return _read_obj_lines(data)
-    lines = b"\n" + data
-    faces = _obj_faces(_OBJ_FACE.findall(lines))
+    vertex_lines, face_lines = _OBJ_VERTEX.findall(data), _OBJ_FACE.findall(data)
+    first = _OBJ_FIRST_LINE.match(data)
+    if first:
+        (vertex_lines if first[1] == b"v" else face_lines).insert(0, first[2])
+    faces = _obj_faces(face_lines)
     if faces is None:
         return _read_obj_lines(data)
     indices, counts = faces
-    table = _obj_vertices(_OBJ_VERTEX.findall(lines))
+    table = _obj_vertices(vertex_lines)
     polygons = counts >= 3  # a face of one or two corners has no area: left out
     return _fan_counts(table, indices[np.repeat(polygons, counts)] - 1, counts[polygons])
 
@@ -76,20 +79,38 @@ def _obj_faces(faces: list[bytes]) -> tuple[IntArray, IntArray] | None:
     None when a corner is not a positive index (a negative one counts from the vertices
     read so far, which only the line-by-line reader knows).
     """
-    text = b"\n".join(faces)
-    if b"/" in text:
-        text = _OBJ_AFTER_INDEX.sub(b"", text)
-    chars = np.frombuffer(text, np.uint8)
+    chars = np.frombuffer(b"\n".join(faces), np.uint8)
     blank = (chars == ord(" ")) | (chars == ord("\t")) | (chars == ord("\n"))
+    if (chars == ord("/")).any():
+        chars = _corner_vertices(chars, blank | (chars == ord("\r")) | (chars == ord("\f"))
+                                 | (chars == ord("\v")))
+        blank = (chars == ord(" ")) | (chars == ord("\t")) | (chars == ord("\n"))
     starts = ~blank & np.concatenate(([True], blank[:-1]))
     counts = np.bincount(np.cumsum(chars == ord("\n"))[starts], minlength=len(faces))
     try:
-        indices = _numbers(text, np.int64)
+        indices = _numbers(chars.tobytes(), np.int64)
     except MeshFormatError:
         return None
     if len(indices) != int(counts.sum()) or (len(indices) and indices.min() < 1):
         return None
     return indices, counts.astype(np.int64)
+
+
+def _corner_vertices(chars: npt.NDArray[np.uint8], blank: npt.NDArray[np.bool_]
+                     ) -> npt.NDArray[np.uint8]:
+    """Face text without each corner's texture and normal indices: "7/2/5 8//6" -> "7 8".
+
+    A character stays when it is blank or no slash stands between it and its corner's start.
+    """
+    slash = chars == ord("/")
+    slashes = np.cumsum(slash, dtype=np.int64 if len(chars) >= 2**31 else np.int32)
+    starts = np.flatnonzero(~blank & np.concatenate(([True], blank[:-1])))
+    at_start = np.zeros(len(chars), slashes.dtype)  # the count before each corner's start
+    if len(starts):
+        at_start[starts[0]:] = np.repeat(slashes[starts] - slash[starts],
+                                         np.diff(np.append(starts, len(chars))))
+    kept: npt.NDArray[np.uint8] = chars[(slashes == at_start) | blank]
+    return kept
 
 
 def _obj_vertices(lines: list[bytes]) -> FloatArray:

@@ -91,6 +91,10 @@ OBJ_SHAPES = {
     "vertex colours, texture indices": b"v 0 0 0 1 0 0\nv 2 0 0 0 1 0\nv 0 3 0 0 0 1\n"
                                        b"vt 0 0\nf 1/1 2/1 3/1\n",
     "a pentagon": b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0.5 2 0\nv 0 1 0\nf 1 2 3 4 5\n",
+    "runs of blanks between corners": b"v 0 0 0\nv 1 0 0\nv 1 1 0\n"
+        b"v 0 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1  3/1/1 \nf 1/1/1 3/1/1   4/1/1\n",
+    "faces before vertices, a face on the first line": b"f 1/1 2/1 3/1\nf 1 3 4\n"
+        b"v 0 0 0\nv 2 0 0\nv 2 2 0\nv 0 2 0\n",
 }
 
 
