@@ -8,6 +8,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from servicebot_cli.common.jsonable import dumps
 from servicebot_cli.output.table import format_number, table
@@ -52,3 +54,21 @@ def test_json_is_plain_ordered_and_has_no_nan():
     assert text.endswith("\n")
     assert list(json.loads(text)) == ["position_m", "error_m", "path"]
     assert json.loads(text) == {"position_m": [1.0, 2.0], "error_m": None, "path": "/tmp/x"}
+
+
+_JSON_LEAVES = st.none() | st.booleans() | st.integers(-2**70, 2**70) | st.text()
+_JSON_TREES = st.recursive(_JSON_LEAVES, lambda inner: st.lists(inner, max_size=4)
+                           | st.dictionaries(st.text(), inner, max_size=4), max_leaves=30)
+
+
+@settings(max_examples=300, deadline=None)
+@given(_JSON_TREES)
+def test_documents_without_floats_are_written_as_the_json_module_writes_them(document):
+    """Such documents go through orjson: every byte must still be the json module's."""
+    assert dumps(document) == json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+
+
+def test_documents_with_floats_keep_pythons_float_text():
+    assert dumps({"a": [1, {"b": 1e-05}]}) == '{\n  "a": [\n    1,\n    {\n      "b": 1e-05\n' \
+        '    }\n  ]\n}\n'
+    assert dumps({"a": "\x00\u2028é", "b": []}) == '{\n  "a": "\\u0000\u2028é",\n  "b": []\n}\n'
