@@ -155,12 +155,13 @@ def _closed(triangles: np.ndarray, size: float) -> bool:
     tolerance = max(size, 1e-12) * 1e-7
     keys = np.round(triangles.reshape(-1, 3) / tolerance).astype(np.int64)
     # One int64 per vertex position (a hash: a collision could only merge two far vertices)
-    packed = keys @ np.array([73856093, 19349663, 83492791], dtype=np.int64)
+    packed = keys[:, 0] * 73856093 + keys[:, 1] * 19349663 + keys[:, 2] * 83492791
     _, ids = np.unique(packed, return_inverse=True)
     ids = ids.reshape(-1, 3)
-    edges = np.sort(np.concatenate([ids[:, [0, 1]], ids[:, [1, 2]], ids[:, [2, 0]]]), axis=1)
-    edges = edges[edges[:, 0] != edges[:, 1]]
-    _, counts = np.unique(edges[:, 0] * (int(ids.max()) + 1) + edges[:, 1], return_counts=True)
+    first, second = ids.T.ravel(), ids[:, [1, 2, 0]].T.ravel()  # each triangle's three edges
+    low, high = np.minimum(first, second), np.maximum(first, second)
+    edge = low != high
+    _, counts = np.unique(low[edge] * (int(ids.max()) + 1) + high[edge], return_counts=True)
     return bool(len(counts)) and bool(np.all(counts == 2))
 
 
