@@ -16,8 +16,10 @@ import numpy as np
 import orjson
 
 _BLANKS_TO_COMMAS = bytes.maketrans(b" \t\n\r\f\v", b",,,,,,")
-_FLOAT_CHARS = b"0123456789-+.eE,"  # "+" only in exponents: checked below
-_INT_CHARS = b"0123456789-,"
+# what JSON reads in an array besides numbers (true, false, null, strings, nesting): one of
+# these characters is in each; index lists take no fraction or exponent either
+_NOT_FLOATS = (b"t", b"f", b"n", b'"', b"[", b"{")
+_NOT_INTS = (*_NOT_FLOATS, b".", b"e", b"E")
 
 
 class NumberListError(ValueError):
@@ -54,13 +56,14 @@ def _as_json(text: str | bytes, dtype: type) -> np.ndarray | None:
     data = data.strip().translate(_BLANKS_TO_COMMAS)
     while b",," in data:
         data = data.replace(b",,", b",")
-    if data.translate(None, _INT_CHARS if dtype is np.int64 else _FLOAT_CHARS):
-        return None  # letters, or a float where indices are wanted
+    if any(c in data for c in (_NOT_FLOATS if dtype is np.float64 else _NOT_INTS)):
+        return None  # JSON's strings, literals and nesting; a float where indices are wanted
     if b",+" in data or data.startswith(b"+"):
         return None  # a sign before a number is not JSON
     if b"-0," in data or data.endswith(b"-0"):
         return None  # JSON reads "-0" as the integer 0, numpy as -0.0
     try:
-        return np.array(orjson.loads(b"[" + data + b"]"), dtype=dtype)
+        values = orjson.loads(b"[" + data + b"]")
+        return np.fromiter(values, dtype=dtype, count=len(values))
     except (orjson.JSONDecodeError, OverflowError, ValueError, TypeError):
         return None
