@@ -18,6 +18,7 @@ from servicebot_cli.check import number_text
 from servicebot_cli.check.collada_xml import ColladaXmlError, parse_collada
 
 FloatArray = npt.NDArray[np.float64]
+_IDENTITY = np.eye(4)
 IntArray = npt.NDArray[np.int64]
 
 
@@ -204,11 +205,11 @@ def read_dae(data: bytes) -> FloatArray:
     for geometry, transform in instances:
         tris = _geometry_triangles(geometry, ns)
         if len(tris):
-            flat = tris.reshape(-1, 3) @ transform[:3, :3].T + transform[:3, 3]
-            parts.append(flat.reshape(-1, 3, 3))
+            parts.append(_placed(tris.reshape(-1, 3), transform).reshape(-1, 3, 3))
     if not parts:
         return np.zeros((0, 3, 3))
-    return np.concatenate(parts) * meter
+    triangles: FloatArray = np.concatenate(parts)
+    return triangles * meter if meter != 1.0 else triangles
 
 
 def read_dae_bounds(data: bytes) -> tuple[int, FloatArray, FloatArray]:
@@ -226,12 +227,21 @@ def read_dae_bounds(data: bytes) -> tuple[int, FloatArray, FloatArray]:
         n = sum(_primitive_triangles(prim, ns) for prim in _elements(mesh))
         if n:
             count += n
-            positions = _positions(mesh, ns)
-            points.append(positions @ transform[:3, :3].T + transform[:3, 3])
+            points.append(_placed(_positions(mesh, ns), transform))
     if not count:
         return 0, np.zeros(3), np.zeros(3)
-    lower, upper = bounds(np.concatenate(points) * meter)
+    # each part's corners, scaled by the unit, bound what the scaled points would
+    corners = [np.vstack(bounds(part)) for part in points if len(part)]
+    lower, upper = bounds(np.concatenate(corners or [np.zeros((0, 3))]) * meter)
     return count, lower, upper
+
+
+def _placed(points: FloatArray, transform: FloatArray) -> FloatArray:
+    """``(n, 3)`` points moved by a scene node's 4x4 ``transform`` (most are the identity)."""
+    if np.array_equal(transform, _IDENTITY):
+        return points
+    placed: FloatArray = points @ transform[:3, :3].T + transform[:3, 3]
+    return placed
 
 
 def bounds(points: FloatArray) -> tuple[FloatArray, FloatArray]:

@@ -137,3 +137,33 @@ def test_broken_obj_files_are_mesh_errors(tmp_path, text):
     path.write_bytes(text)
     with pytest.raises(MeshError):
         load_mesh(path)
+
+
+def _collada(meter: str) -> bytes:
+    geometry = ('<geometry id="{0}"><mesh><source id="{0}-p"><float_array id="{0}-a" count="9">'
+                '{1}</float_array></source><vertices id="{0}-v"><input semantic="POSITION" '
+                'source="#{0}-p"/></vertices><triangles count="1"><input semantic="VERTEX" '
+                'source="#{0}-v" offset="0"/><p>0 1 2</p></triangles></mesh></geometry>')
+    return (f'<?xml version="1.0"?><COLLADA xmlns="http://www.collada.org/2005/11/'
+            f'COLLADASchema" version="1.4.1"><asset><unit meter="{meter}"/></asset>'
+            '<library_geometries>' + geometry.format("a", "-0 0 0 1 0 0 0 2 0")
+            + geometry.format("b", "0 0 0 0 0 3 -1 0 0") + '</library_geometries>'
+            '<library_visual_scenes><visual_scene id="s"><node id="n1"><instance_geometry '
+            'url="#a"/></node><node id="n2"><translate>5 0 0</translate><rotate>0 0 1 90'
+            '</rotate><instance_geometry url="#b"/></node></visual_scene>'
+            '</library_visual_scenes></COLLADA>').encode()
+
+
+@pytest.mark.parametrize("meter", ["1", "0.001", "-2"])
+def test_collada_bounds_of_placed_and_scaled_parts_are_the_triangles_bounds(meter):
+    """An identity node, a moved and turned one, and units of any sign: the same box both ways."""
+    from servicebot_cli.check.mesh_readers import bounds, read_dae, read_dae_bounds
+
+    data = _collada(meter)
+    count, lower, upper = read_dae_bounds(data)
+    triangles = read_dae(data)
+    assert count == len(triangles) == 2
+    expected = bounds(triangles.reshape(-1, 3))
+    assert np.allclose(lower, expected[0], atol=1e-12)
+    assert np.allclose(upper, expected[1], atol=1e-12)
+    assert np.allclose(expected[1] - expected[0], np.array([5, 3, 3]) * abs(float(meter)))
