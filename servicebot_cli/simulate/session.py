@@ -224,9 +224,11 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
                        enabled=progress) if stderr is not None else None
         if bar:  # an error line, or Ctrl-C's, starts on a clean line
             stack.callback(bar.close)
+        pieces = simulator.pieces(body, scenario, seed=seed, solids=world_solids(scenario.world),
+                                  meshes=meshes, piece_s=piece_s)
+        stack.enter_context(contextlib.closing(pieces))  # its worker stopped whatever happens
         summary, last, writers = _write_pieces(
-            simulator.pieces(body, scenario, seed=seed, solids=world_solids(scenario.world),
-                             meshes=meshes, piece_s=piece_s),
+            pieces,
             outputs, publishers(body, scenario.camera), stack, bar.advance if bar else None,
             live)
     track = None

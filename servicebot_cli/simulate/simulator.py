@@ -13,8 +13,9 @@ scenario and the seed in, :class:`SimResult` pieces out.
 
 from __future__ import annotations
 
+import dataclasses
 import math
-from collections.abc import Iterator, Sequence
+from collections.abc import Generator, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -26,6 +27,7 @@ from servicebot_cli.kinematics import diff_drive
 from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.controllers.arm_trajectory import ArmLimits, ArmMotion
 from servicebot_cli.simulate.controllers.diff_drive import WheelPlan, WheelPlanner
+from servicebot_cli.simulate.pose_work import FromPoses, PoseJob, PoseWork
 from servicebot_cli.simulate.scenario.definition import Scenario
 from servicebot_cli.simulate.scenario.located import ScenarioError
 from servicebot_cli.simulate.scenario.world_check import camera_rate_limit, check_scenario
@@ -33,7 +35,9 @@ from servicebot_cli.simulate.self_contact import SelfContact, SelfContactWatch
 from servicebot_cli.simulate.sensors import camera_info, imu, joint_states, lidar, odometry
 from servicebot_cli.simulate.sensors.noise import Noise, stream_rng
 from servicebot_cli.simulate.sensors.sample import SampleClock, sample_count
+from servicebot_cli.simulate.sensors.scan_jobs import ScanCaster
 from servicebot_cli.simulate.shape_memo import TransformMemo
+from servicebot_cli.simulate.worker import Worker, second_core
 from servicebot_cli.simulate.world import blocking, motion
 from servicebot_cli.simulate.world.clearance import Closest, closest
 from servicebot_cli.simulate.world.contacts import Placed, Tester, obstacles
@@ -98,12 +102,17 @@ class SimResult:
 
 
 def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[Solid],
-           meshes: Sequence[Mesh] = (), piece_s: float = PIECE_S) -> Iterator[SimResult]:
+           meshes: Sequence[Mesh] = (), piece_s: float = PIECE_S
+           ) -> Generator[SimResult, None, None]:
     """Simulate ``scenario`` a piece of ``piece_s`` simulated seconds at a time.
 
     The scenario is checked against the robot and the world before the first piece. Pieces
     with camera frames are cut shorter so that their frames stay within
-    :data:`~servicebot_cli.simulate.sensors.camera_stream.PIECE_BYTES`.
+    :data:`~servicebot_cli.simulate.sensors.camera_stream.PIECE_BYTES`. With more than one
+    piece and a second core, what each piece computes from its poses alone (its LIDAR
+    scans and self contacts, :mod:`.pose_work`) is done by a forked worker process
+    (:mod:`.worker`) while the next piece is simulated; it is stopped and reaped when the
+    pieces end or fail, or when the generator is closed (close it to stop it at once).
 
     Raises:
         ScenarioError: The arm's goal, the start pose or the camera does not fit the robot
@@ -118,8 +127,21 @@ def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[So
         step = min(step, max(1, int(frames / run.clocks["camera"].rate_hz / run.dt_s)))
     elif run.images is not None:
         _refuse_frames_beyond_memory(run.clocks["camera"].count * run.images.frame_bytes)
-    for first in range(0, run.ticks, step):
-        yield run.piece(range(first, min(first + step, run.ticks)))
+    firsts = range(0, run.ticks, step)
+    poses = Worker(run.from_poses, forked=len(firsts) > 1 and second_core())
+    try:
+        begun: list[SimResult] = []  # forked: a piece's pose work is done while the next runs
+        for first in firsts:
+            begun.append(run.piece(range(first, min(first + step, run.ticks)), poses))
+            if first == firsts[-1]:
+                poses.no_more_jobs()
+            if len(begun) > (1 if poses.pid is not None else 0):
+                yield run.finish(begun.pop(0), poses)
+        while begun:
+            yield run.finish(begun.pop(0), poses)
+        poses.close(finished=True)
+    finally:
+        poses.close()  # at once on an error, or when the pieces are left unread
 
 
 def _refuse_frames_beyond_memory(total_bytes: int) -> None:
@@ -166,22 +188,23 @@ class _Run:
             track_m=geometry.track_m * ctrl.wheel_separation_multiplier)
         self.wheel_angles = np.zeros(2)  # left, right at the piece's first boundary [rad]
         self.wheel_sums = np.array([-0.0, -0.0])  # -0.0 + v == v: an empty running sum
-        self.self_contacts = (SelfContactWatch(body.robot, body.shape, body.base_height_m,
-                                               self.dt_s, body.disabled_pairs, body.resolver)
-                              if body.arm_joints else None)
-        self.record = Closest(float("inf"), -1, -1, -1)
         self.twist_before = (0.0, 0.0)  # the followed twist of the tick before the piece
         duration = scenario.duration_s
         self.clocks = {
             "odometry": SampleClock(ctrl.publish_rate_hz, duration, self.dt_s),
             "joints": SampleClock(scenario.rates.joint_states_hz, duration, self.dt_s)}
-        self.scan_noise: Noise | None = None
+        caster = None
         if body.lidar is not None:
             self.clocks["scan"] = SampleClock(_rate(body.lidar.spec, scenario), duration,
                                               self.dt_s)
-            self.scan_noise = Noise(body.lidar.spec.noise, stream_rng(seed, "scan"))
-            self.rays = lidar.ray_directions(body.lidar.spec,
-                                             body.lidar.transform_sensor_to_base)
+            caster = ScanCaster(body.lidar, body.shape, body.base_height_m, solids, meshes,
+                                Noise(body.lidar.spec.noise, stream_rng(seed, "scan")),
+                                self.clocks["scan"].period_s)
+        self.record = Closest(float("inf"), -1, -1, -1)
+        self.from_poses = PoseWork(
+            body.shape, caster,
+            SelfContactWatch(body.robot, body.shape, body.base_height_m, self.dt_s,
+                             body.disabled_pairs, body.resolver) if body.arm_joints else None)
         self.imu_noise: list[Noise] = []
         if body.imu is not None:
             rate = _rate(body.imu.spec, scenario)
@@ -200,14 +223,20 @@ class _Run:
                 rate = scenario.camera.rate_hz or camera_rate_limit(body, scenario)[0]
             self.clocks["camera"] = SampleClock(rate, duration, self.dt_s)
 
-    def piece(self, ticks: range) -> SimResult:
-        """Simulate ``ticks``, the ticks after those of the pieces before."""
+    def piece(self, ticks: range, poses: Worker[PoseJob, FromPoses]) -> SimResult:
+        """Simulate ``ticks``, the ticks after those of the pieces before, but its pose work.
+
+        What comes from the piece's poses alone is handed to ``poses`` (the piece's scans
+        and self contacts are left empty until :meth:`finish` puts them in), so that it is
+        done while the next piece is simulated.
+        """
         body, first = self.body, ticks.start
         stop = None if ticks.stop >= self.ticks else ticks.stop  # None: every sample left
         plan = self.planner.plan(ticks)
         self.transforms.clear()
         truth, arm_q, contacts = self._ground_truth(first, plan)
-        parts = self.transforms(arm_q)  # (n+1, S, 4, 4), the arm at each boundary
+        poses.submit(PoseJob(first, truth, arm_q, self.clocks["scan"].take(stop)
+                             if "scan" in self.clocks else None))
         sides = self._wheel_angles(plan)
         odom_path, odom_before = self.odometer.advance(first, plan.left_rad_s, plan.right_rad_s)
         names, positions = _joint_positions(body, sides, arm_q)
@@ -215,17 +244,20 @@ class _Run:
             else np.zeros(0)
         piece = SimResult(
             body, self.scenario, self.seed, self.solids, [o.name for o in self.tester.world],
-            plan, truth, contacts,
-            self.self_contacts.advance(first, arm_q, parts) if self.self_contacts else [],
+            plan, truth, contacts, [],
             sides, odometry.published(odom_path, self.clocks["odometry"].take(stop), odom_before),
             joint_states.at_times(names, positions, self.dt_s,
                                   self.clocks["joints"].take(stop), first),
-            arm_q, self._closest(first, truth, arm_q, parts),
-            self._scans(truth, arm_q, parts, stop),
+            arm_q, self._closest(first, truth, arm_q, self.transforms(arm_q)), None,
             self._imu(truth, stop), self.camera, camera_times, first, self.ticks,
             self.images.frames(truth, arm_q, camera_times) if self.images else ())
         self.twist_before = (float(truth.linear_m_s[-1]), float(truth.angular_rad_s[-1]))
         return piece
+
+    def finish(self, piece: SimResult, poses: Worker[PoseJob, FromPoses]) -> SimResult:
+        """``piece`` from :meth:`piece` with what ``poses`` owes for it (the oldest it owes)."""
+        done = poses.result()
+        return dataclasses.replace(piece, scans=done.scans, self_contacts=done.self_contacts)
 
     def _ground_truth(self, first: int,
                       plan: WheelPlan) -> tuple[motion.Path2D, FloatArray, list[motion.Contact]]:
@@ -275,21 +307,6 @@ class _Run:
             self.record = Closest(found.distance_m, first + int(index[found.index]),
                                   found.obstacle, found.part)
         return self.record
-
-    def _scans(self, truth: motion.Path2D, arm_q: FloatArray, parts: FloatArray,
-               stop: int | None) -> lidar.Scans | None:
-        """The LIDAR's scans: the world and the robot's own links (the arm where it is)."""
-        mounted = self.body.lidar
-        if mounted is None or self.scan_noise is None:
-            return None
-        times = self.clocks["scan"].take(stop)
-        spec, mount = mounted.spec, mounted.transform_sensor_to_base
-        boundary = truth.tick_index(times, boundaries=True)  # the arm at the tick's start
-        own = lidar.own_ranges(self.body.shape, mounted.link, mount, self.rays, arm_q[boundary],
-                               parts[boundary])
-        return lidar.scan(spec, mount, self.body.base_height_m, truth, times, self.solids,
-                          self.meshes, self.scan_noise, own_m=own,
-                          period_s=self.clocks["scan"].period_s)
 
     def _imu(self, truth: motion.Path2D, stop: int | None) -> imu.ImuSamples | None:
         mounted = self.body.imu

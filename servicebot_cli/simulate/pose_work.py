@@ -1,0 +1,75 @@
+"""What a piece computes from its poses alone: the LIDAR's scans and the arm's self contact.
+
+Once a piece's ground truth is known (the base's path, the arm at each tick boundary),
+these two depend on nothing else of it, and each carries its state from piece to piece
+(the scan noise's generator, the self-contact events under way).
+:class:`PoseWork` holds that state and everything fixed for the run, so the pieces' jobs
+can be done in another process (:mod:`servicebot_cli.simulate.worker`) while the simulator
+goes on: done in order, in whichever process, they give the same bits.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.simulate.self_contact import SelfContact, SelfContactWatch
+from servicebot_cli.simulate.sensors import lidar
+from servicebot_cli.simulate.sensors.scan_jobs import ScanCaster, ScanJob
+from servicebot_cli.simulate.shape import RobotShape
+from servicebot_cli.simulate.world.motion import Path2D
+
+FloatArray = npt.NDArray[np.float64]
+
+
+@dataclass(frozen=True, eq=False)
+class PoseJob:
+    """A piece's poses: ``truth`` and ``arm_q_rad`` (n+1, J) at its tick boundaries.
+
+    ``scan_times_s`` are the piece's scans (None without a LIDAR).
+    """
+
+    first_tick: int
+    truth: Path2D
+    arm_q_rad: FloatArray
+    scan_times_s: FloatArray | None
+
+
+@dataclass(frozen=True, eq=False)
+class FromPoses:
+    """A piece's scans (None without a LIDAR) and the self contacts that began in it."""
+
+    scans: lidar.Scans | None
+    self_contacts: list[SelfContact]
+
+
+class PoseWork:
+    """Does each piece's :class:`PoseJob`, in order, carrying the state between them.
+
+    Args:
+        shape: The robot's parts and the joints that move them.
+        caster: The LIDAR's scans, None without a LIDAR.
+        self_contacts: The arm's self-contact watch, None without an arm.
+    """
+
+    def __init__(self, shape: RobotShape, caster: ScanCaster | None,
+                 self_contacts: SelfContactWatch | None) -> None:
+        self.shape, self.caster, self.self_contacts = shape, caster, self_contacts
+
+    def __call__(self, job: PoseJob) -> FromPoses:
+        """The piece's scans and its self contacts.
+
+        The parts are placed only at the configurations each needs (row by row, the same
+        bits as at every configuration at once).
+        """
+        scans = None
+        if self.caster is not None and job.scan_times_s is not None:
+            boundary = job.truth.tick_index(job.scan_times_s, boundaries=True)  # tick's start
+            arm_q = job.arm_q_rad[boundary]
+            scans = self.caster(ScanJob(job.truth, job.scan_times_s, arm_q,
+                                        self.shape.transforms_to_base(arm_q)))
+        contacts = self.self_contacts.advance(job.first_tick, job.arm_q_rad) \
+            if self.self_contacts else []
+        return FromPoses(scans, contacts)

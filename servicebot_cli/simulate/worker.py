@@ -1,0 +1,215 @@
+"""One function applied to a run's jobs in order, in a forked process when a second core is free.
+
+The simulator hands what a piece computes from its poses alone (:mod:`.pose_work`) to a
+:class:`Worker` and goes on with the next piece meanwhile. The forked process inherits
+everything the function closes over (the robot, the world, the scan noise's generator) and
+only the jobs and the results cross the pipes, in order, so the results are the bits the
+function gives in-process: the state it carries from job to job (a noise generator) lives
+in the one process that calls it.
+
+Without :func:`os.fork` or with one core to run on (:func:`os.sched_getaffinity`), the jobs
+are done in-process when their results are asked for. The process ignores SIGINT and takes
+SIGTERM, SIGHUP and SIGQUIT at their default (Ctrl-C reaches the whole process group: the
+parent ends the run and stops the worker); it never returns into the caller's code. Closing
+the worker after the last result lets it end; closing it on an error or a signal kills it.
+Either way it is reaped before :meth:`Worker.close` returns.
+"""
+
+from __future__ import annotations
+
+import os
+import pickle
+import signal
+import threading
+from collections.abc import Callable
+from queue import SimpleQueue
+from typing import IO, Any, Generic, TypeVar
+
+from servicebot_cli.common.errors import ExitCode, ServicebotError
+from servicebot_cli.common.signals import ENDING_SIGNALS, SignalsHeld
+
+J = TypeVar("J")
+R = TypeVar("R")
+_END = None  # the job queue's end, after the parent closed the jobs' pipe
+
+
+class WorkerEnded(ServicebotError):
+    """The worker process ended before it gave a result (killed from outside)."""
+
+    exit_code = ExitCode.FAILED
+
+
+def second_core() -> bool:
+    """A process can be forked and given a core of its own (this process may use two)."""
+    if not hasattr(os, "fork"):
+        return False
+    affinity = getattr(os, "sched_getaffinity", None)
+    cores = len(affinity(0)) if affinity is not None else os.cpu_count() or 1
+    return cores >= 2
+
+
+class Worker(Generic[J, R]):
+    """``function`` applied to each submitted job, the results taken in the order submitted.
+
+    Args:
+        function: Called once per job, in order. In a forked process, what it keeps between
+            calls stays there: the caller's copy must not be used while the worker lives.
+        forked: Do the jobs in a forked process (else in-process, when taken).
+    """
+
+    def __init__(self, function: Callable[[J], R], *, forked: bool) -> None:
+        self._function = function
+        self._waiting: list[J] = []  # in-process: the jobs whose results are not taken
+        self.pid: int | None = None
+        self._jobs: IO[bytes] | None = None
+        self._results: IO[bytes] | None = None
+        if forked:
+            self._fork()
+
+    def _fork(self) -> None:
+        jobs_read, jobs_write = os.pipe()
+        results_read, results_write = os.pipe()
+        held = SignalsHeld()  # no signal between the fork and the parent knowing the pid
+        try:
+            try:
+                pid = os.fork()
+            except BaseException:
+                for fd in (jobs_read, jobs_write, results_read, results_write):
+                    os.close(fd)
+                raise
+            if pid == 0:  # the worker: it never returns from here
+                code = 1
+                try:
+                    os.close(jobs_write)
+                    os.close(results_read)
+                    _serve(self._function, jobs_read, results_write)
+                    code = 0
+                finally:
+                    os._exit(code)
+            self.pid = pid
+            os.close(jobs_read)
+            os.close(results_write)
+            self._jobs = os.fdopen(jobs_write, "wb")
+            self._results = os.fdopen(results_read, "rb")
+        finally:
+            try:
+                held.release()  # raises a signal that came meanwhile
+            except BaseException:
+                self.close()
+                raise
+
+    def submit(self, job: J) -> None:
+        """Hand over the next job; its result comes after those submitted before it.
+
+        Raises:
+            WorkerEnded: The worker process has ended.
+        """
+        if self._jobs is None:
+            self._waiting.append(job)
+            return
+        try:
+            pickle.dump(job, self._jobs, protocol=pickle.HIGHEST_PROTOCOL)
+            self._jobs.flush()
+        except BrokenPipeError:
+            raise self._ended() from None
+
+    def no_more_jobs(self) -> None:
+        """Every job is submitted: a forked worker ends once it has done them."""
+        if self._jobs is not None:
+            self._jobs.close()
+            self._jobs = None
+
+    def result(self) -> R:
+        """The result of the oldest job whose result is not taken yet (waits for it).
+
+        Raises:
+            WorkerEnded: The worker process ended without it.
+            Exception: What the function raised for the job.
+        """
+        if self._results is None:
+            return self._function(self._waiting.pop(0))
+        try:
+            done, value = pickle.load(self._results)
+        except (EOFError, pickle.UnpicklingError):  # none, or cut short by its end
+            raise self._ended() from None
+        if not done:
+            raise value
+        return value  # type: ignore[no-any-return]
+
+    def _ended(self) -> WorkerEnded:
+        return WorkerEnded(f"the simulation's worker process {self.pid} ended before its "
+                           "results came (killed from outside?)")
+
+    def close(self, *, finished: bool = False) -> None:
+        """Stop the worker process and reap it; ``finished``: every result was taken.
+
+        A finished worker ends by itself once its jobs' pipe is closed; any other is killed.
+        """
+        pid, self.pid = self.pid, None
+        held = SignalsHeld()  # the worker is reaped whatever signal comes meanwhile
+        try:
+            for stream in (self._jobs, self._results):
+                if stream is not None:
+                    try:
+                        stream.close()
+                    except OSError:  # a broken pipe, with unflushed bytes
+                        pass
+            self._jobs = self._results = None
+            if pid is not None:
+                if not finished:
+                    try:
+                        os.kill(pid, signal.SIGKILL)
+                    except ProcessLookupError:
+                        pass
+                os.waitpid(pid, 0)
+        finally:
+            held.release()
+
+
+def _serve(function: Callable[[Any], Any], jobs_fd: int, results_fd: int) -> None:
+    """The worker process: each job read, the function's result (or error) written back.
+
+    A thread reads the jobs and another writes the results, so that neither pipe waits on
+    the other process while this one works: the parent never waits to hand over a job,
+    and the next job is begun while the parent has not taken the last result yet.
+    """
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    for ending in ENDING_SIGNALS:  # not the parent's handlers: it stops the worker
+        signal.signal(ending, signal.SIG_DFL)
+    jobs: SimpleQueue[Any] = SimpleQueue()
+    results: SimpleQueue[bytes | None] = SimpleQueue()
+    threading.Thread(target=_read_jobs, args=(jobs_fd, jobs), daemon=True).start()
+    writer = threading.Thread(target=_write_results, args=(results_fd, results), daemon=True)
+    writer.start()
+    try:
+        while (job := jobs.get()) is not _END:
+            try:
+                answer: tuple[bool, Any] = (True, function(job[0]))
+            except Exception as exc:  # the parent raises it
+                answer = (False, exc)
+            try:
+                results.put(pickle.dumps(answer, protocol=pickle.HIGHEST_PROTOCOL))
+            except Exception as exc:  # an error that cannot be pickled
+                results.put(pickle.dumps((False, RuntimeError(f"{answer[1]!r} ({exc})"))))
+            if not answer[0]:
+                break
+    finally:
+        results.put(None)
+        writer.join()
+
+
+def _read_jobs(jobs_fd: int, jobs: SimpleQueue[Any]) -> None:
+    with os.fdopen(jobs_fd, "rb") as stream:
+        while True:
+            try:
+                job = pickle.load(stream)
+            except EOFError:
+                break
+            jobs.put((job,))
+    jobs.put(_END)
+
+
+def _write_results(results_fd: int, results: SimpleQueue[bytes | None]) -> None:
+    with os.fdopen(results_fd, "wb", buffering=0) as stream:
+        while (data := results.get()) is not None:
+            stream.write(data)

@@ -1,0 +1,227 @@
+"""The simulator's worker process: the same results as in-process, and nothing left behind.
+
+The unit tests drive :class:`~servicebot_cli.simulate.worker.Worker` directly; the others run
+the real ``servicebot simulate``: on one core against two (the same bytes), and with its
+worker killed or the run ended by a signal (no output, and no process, left behind).
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from servicebot_cli.simulate import worker as worker_module
+from servicebot_cli.simulate.worker import Worker, WorkerEnded, second_core
+
+pytestmark = pytest.mark.skipif(not hasattr(os, "fork"), reason="the worker is forked")
+
+
+class _Counter:
+    """A function with state carried from job to job, as the scan noise is."""
+
+    def __init__(self) -> None:
+        self.calls = 0
+
+    def __call__(self, job: int) -> tuple[int, int, int]:
+        self.calls += 1
+        if job < 0:
+            raise ValueError(f"job {job} refused")
+        if job == 99:
+            time.sleep(60)
+        return os.getpid(), self.calls, job * 2
+
+
+def _gone(pid: int) -> bool:
+    """The process is reaped (not even a zombie of this process is left)."""
+    try:
+        os.waitpid(pid, os.WNOHANG)
+    except ChildProcessError:
+        return True
+    return False
+
+
+def test_a_forked_worker_gives_each_result_in_order_from_its_own_process():
+    counter = _Counter()
+    worker: Worker[int, tuple[int, int, int]] = Worker(counter, forked=True)
+    pid = worker.pid
+    assert pid is not None and pid != os.getpid()
+    for job in (1, 2, 3):
+        worker.submit(job)
+    worker.no_more_jobs()
+    assert [worker.result() for _ in range(3)] == [(pid, 1, 2), (pid, 2, 4), (pid, 3, 6)]
+    assert counter.calls == 0  # the state lives in the worker
+    worker.close(finished=True)
+    assert _gone(pid)
+
+
+def test_an_in_process_worker_does_each_job_when_its_result_is_taken():
+    counter = _Counter()
+    worker: Worker[int, tuple[int, int, int]] = Worker(counter, forked=False)
+    assert worker.pid is None
+    worker.submit(1)
+    worker.submit(2)
+    assert counter.calls == 0
+    assert worker.result() == (os.getpid(), 1, 2)
+    assert worker.result() == (os.getpid(), 2, 4)
+    worker.close(finished=True)
+
+
+def test_an_error_in_the_worker_is_raised_in_the_parent_and_the_worker_reaped():
+    worker: Worker[int, tuple[int, int, int]] = Worker(_Counter(), forked=True)
+    pid = worker.pid
+    assert pid is not None
+    worker.submit(1)
+    worker.submit(-1)
+    assert worker.result()[2] == 2
+    with pytest.raises(ValueError, match="job -1 refused"):
+        worker.result()
+    worker.close()
+    assert _gone(pid)
+
+
+def test_a_worker_closed_before_its_results_is_killed_and_reaped_at_once():
+    worker: Worker[int, tuple[int, int, int]] = Worker(_Counter(), forked=True)
+    pid = worker.pid
+    assert pid is not None
+    worker.submit(99)  # a minute's work
+    began = time.monotonic()
+    worker.close()
+    assert time.monotonic() - began < 5
+    assert _gone(pid)
+    worker.close()  # twice is harmless
+
+
+def test_a_worker_killed_from_outside_is_reported():
+    worker: Worker[int, tuple[int, int, int]] = Worker(_Counter(), forked=True)
+    pid = worker.pid
+    assert pid is not None
+    worker.submit(99)
+    os.kill(pid, signal.SIGKILL)
+    with pytest.raises(WorkerEnded, match="ended before its results came"):
+        worker.result()
+    worker.close()
+    assert _gone(pid)
+
+
+def _handlers(job: int) -> list[object]:
+    return [signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP,
+                                          signal.SIGQUIT)]
+
+
+def test_the_worker_ignores_ctrl_c_and_ends_at_once_on_the_ending_signals():
+    worker: Worker[int, list[object]] = Worker(_handlers, forked=True)
+    worker.submit(0)
+    assert worker.result() == [signal.SIG_IGN, signal.SIG_DFL, signal.SIG_DFL, signal.SIG_DFL]
+    worker.close()
+
+
+def test_one_core_or_no_fork_means_in_process(monkeypatch):
+    monkeypatch.setattr(os, "sched_getaffinity", lambda pid: {0}, raising=False)
+    assert not second_core()
+    monkeypatch.setattr(os, "sched_getaffinity", lambda pid: {0, 1}, raising=False)
+    assert second_core()
+    monkeypatch.delattr(os, "fork")
+    assert not worker_module.second_core()
+
+
+# The real command.
+
+_TWO_CORES = pytest.mark.skipif(
+    not hasattr(os, "sched_getaffinity") or len(os.sched_getaffinity(0)) < 2,
+    reason="needs two cores to run a worker")
+
+
+def _simulate(cwd: Path, *args: str, one_core: bool = False,
+              **popen: object) -> subprocess.Popen[bytes]:
+    first = min(os.sched_getaffinity(0)) if one_core else None
+    return subprocess.Popen(  # type: ignore[call-overload]
+        [sys.executable, "-m", "servicebot_cli", "simulate", "--headless", *args], cwd=cwd,
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, env={**os.environ, "CI": ""},
+        preexec_fn=(lambda: os.sched_setaffinity(0, {first})) if one_core else None,
+        start_new_session=True, **popen)
+
+
+def _files(root: Path) -> dict[str, bytes]:
+    return {str(p.relative_to(root)): p.read_bytes() for p in sorted(root.rglob("*"))
+            if p.is_file()}
+
+
+def _children(pid: int) -> list[int]:
+    found = []
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if int(fields[1]) == pid:
+            found.append(int(stat.parent.name))
+    return found
+
+
+def _wait_for_worker(process: subprocess.Popen[bytes]) -> int:
+    deadline = time.monotonic() + 120
+    while not (children := _children(process.pid)):
+        assert process.poll() is None, "the run ended before its worker was seen"
+        assert time.monotonic() < deadline, "no worker process came"
+        time.sleep(0.002)
+    [child] = children
+    return child
+
+
+def _nothing_left(session: int, child: int) -> bool:
+    with pytest.raises(ProcessLookupError):
+        os.killpg(session, 0)  # no process of the run's session is left
+    return not Path(f"/proc/{child}").exists()
+
+
+@_TWO_CORES
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads /proc")
+def test_on_one_core_the_run_writes_the_same_bytes_as_with_its_worker(tmp_path):
+    runs = {}
+    for name, one_core in (("one", True), ("two", False)):
+        (tmp_path / name).mkdir()
+        process = _simulate(tmp_path / name, "--duration-s", "70", "--bag", "B", "--out", "O",
+                            one_core=one_core)
+        stdout, stderr = process.communicate(timeout=300)
+        assert process.returncode == 0, stderr.decode()
+        runs[name] = (stdout, _files(tmp_path / name))
+    assert runs["one"] == runs["two"]
+    assert "scan.csv" in {Path(name).name for name in runs["one"][1]}
+
+
+@_TWO_CORES
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads /proc")
+def test_a_run_whose_worker_is_killed_fails_and_leaves_nothing(tmp_path):
+    process = _simulate(tmp_path, "--duration-s", "3600", "--bag", "B", "--out", "O")
+    child = _wait_for_worker(process)
+    os.kill(child, signal.SIGKILL)
+    _, stderr = process.communicate(timeout=120)
+    assert process.returncode == 1, stderr.decode()
+    assert "worker process" in stderr.decode() and "ended before" in stderr.decode()
+    assert list(tmp_path.iterdir()) == []  # no bag, no CSV directory, no temporary
+    assert _nothing_left(process.pid, child)
+
+
+@_TWO_CORES
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads /proc")
+@pytest.mark.parametrize(("signum", "code", "group"), [(signal.SIGTERM, 143, False),
+                                                       (signal.SIGINT, 130, True),
+                                                       (signal.SIGHUP, 129, True)])
+def test_a_run_ended_by_a_signal_stops_its_worker(tmp_path, signum, code, group):
+    """To the run alone (a CI job cancelled) or to its whole group (Ctrl-C, a closed terminal)."""
+    process = _simulate(tmp_path, "--duration-s", "3600", "--bag", "B")
+    child = _wait_for_worker(process)
+    if group:
+        os.killpg(process.pid, signum)
+    else:
+        process.send_signal(signum)
+    _, stderr = process.communicate(timeout=120)
+    assert process.returncode == code, stderr.decode()
+    assert list(tmp_path.iterdir()) == []
+    assert _nothing_left(process.pid, child)
