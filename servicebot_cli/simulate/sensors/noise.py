@@ -18,6 +18,7 @@ import zlib
 from collections.abc import Sequence
 
 import numpy as np
+import numpy.random  # on import, not on the run's first draw (numpy imports it lazily)
 import numpy.typing as npt
 
 from servicebot_cli.description.sensors import NoiseSpec
