@@ -300,8 +300,10 @@ class _Run:
         new = np.ones(len(rows), dtype=bool)
         new[1:] = np.any(rows[1:] != rows[:-1], axis=1)
         index = np.flatnonzero(new) + lo  # the first tick of each held pose, in time order
-        found = closest(self.tester, Placed(parts[index], truth.x_m[index], truth.y_m[index],
-                                            truth.yaw_rad[index], self.body.base_height_m),
+        rows_at: slice | IntArray = slice(lo, None) if new.all() else index  # a view if all
+        found = closest(self.tester, Placed(parts[rows_at], truth.x_m[rows_at],
+                                            truth.y_m[rows_at], truth.yaw_rad[rows_at],
+                                            self.body.base_height_m),
                         below=self.record.distance_m)
         if found.index >= 0:
             self.record = Closest(found.distance_m, first + int(index[found.index]),
