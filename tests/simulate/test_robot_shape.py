@@ -155,3 +155,13 @@ def test_the_arm_folding_onto_the_camera_is_a_self_collision():
 
     assert overlap(tick) > 0.0 and overlap(tick - 1) == 0.0  # manifold3d agrees on the tick
     assert result.contacts == []  # the world is empty: no collision with an obstacle
+
+
+def test_parts_placed_in_a_batch_are_the_bits_of_each_row_placed_alone():
+    """The transform memo and the worker place rows in batches of any size: the same bits."""
+    shape = BODY.shape
+    q = np.random.default_rng(3).uniform(-2.0, 2.0, (257, len(shape.joints)))
+    whole = shape.transforms_to_base(q)
+    alone = np.concatenate([shape.transforms_to_base(q[k:k + 1]) for k in range(len(q))])
+    assert whole.tobytes() == alone.tobytes()
+    assert shape.transforms_to_base(q[100:233]).tobytes() == whole[100:233].tobytes()
