@@ -20,6 +20,7 @@ from __future__ import annotations
 import os
 import pickle
 import signal
+import sys
 import threading
 from collections.abc import Callable
 from queue import SimpleQueue
@@ -40,8 +41,15 @@ class WorkerEnded(ServicebotError):
 
 
 def second_core() -> bool:
-    """A process can be forked and given a core of its own (this process may use two)."""
+    """A process can be forked and given a core of its own (this process may use two).
+
+    Not in a worker of a :mod:`multiprocessing` pool (``sweep``'s runs): its siblings
+    share the cores already.
+    """
     if not hasattr(os, "fork"):
+        return False
+    pools = sys.modules.get("multiprocessing")  # imported in every such worker
+    if pools is not None and pools.parent_process() is not None:
         return False
     affinity = getattr(os, "sched_getaffinity", None)
     cores = len(affinity(0)) if affinity is not None else os.cpu_count() or 1

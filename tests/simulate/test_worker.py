@@ -130,6 +130,18 @@ def test_one_core_or_no_fork_means_in_process(monkeypatch):
     assert not worker_module.second_core()
 
 
+def _second_core_in_a_pool_worker() -> bool:
+    return second_core()
+
+
+def test_a_worker_of_a_process_pool_does_its_jobs_in_process():
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    with ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn")) as pool:
+        assert pool.submit(_second_core_in_a_pool_worker).result() is False
+
+
 # The real command.
 
 _TWO_CORES = pytest.mark.skipif(
