@@ -87,3 +87,32 @@ def test_live_window_frame_draws_the_path_up_to_its_time():
     # one closed outline per collision part, separated by NaN breaks
     assert np.isnan(outline).sum() == len(result.body.shape.parts)
     assert artists.clock.get_text().endswith("t =    2.0 s")
+
+
+_CLOCK_SEES = """
+import sys, time
+from servicebot_cli.description.loader import RobotSource
+from servicebot_cli.simulate import session
+seen = []
+def clock():
+    seen.append(("numba" in sys.modules, "servicebot_cli.simulate.bag.rosbag" in sys.modules))
+    return time.perf_counter()
+request = session.SimulateRequest(
+    RobotSource.bundled("sim"), seed=0, outputs=session.Outputs(bag=sys.argv[1]),
+    overrides=session.Overrides(duration_s=2.0, camera_scale=0.05 if sys.argv[2] else None))
+session.run(request, clock=clock)
+print(seen[0])
+"""
+
+
+@pytest.mark.parametrize("camera", [True, False])
+def test_the_run_clock_starts_once_the_writers_and_the_camera_renderer_are_loaded(tmp_path,
+                                                                                    camera):
+    """Importing is loading: numba (0.3 s) for the camera, the bag's modules, before the clock."""
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-c", _CLOCK_SEES, str(tmp_path / "bag"),
+                           "1" if camera else ""], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == f"({camera}, True)"

@@ -271,6 +271,17 @@ def render_frames(view: CameraView, transforms_camera_to_world: FloatArray, scen
                        else np.zeros((0, 0), np.float32)) for f in range(count))
 
 
+def load_renderer() -> bool:
+    """Import numba and the compiled loop ahead of the first frame; False without numba."""
+    try:
+        from servicebot_cli.simulate.sensors import camera_kernel  # noqa: F401 -- loading
+    except ModuleNotFoundError as exc:
+        if exc.name != "numba":
+            raise
+        return False
+    return True
+
+
 def _compiled(view: CameraView, rotations: FloatArray, origins: FloatArray, scene: Scene,
               part_transforms: FloatArray, keys: npt.NDArray[np.uint64], scale: float,
               rgb: npt.NDArray[np.uint8], depth_m: npt.NDArray[np.float32]) -> bool:
