@@ -82,6 +82,9 @@ def place_rows(flat: ByteRows, starts: IntArray, rows: ByteRows) -> None:
     The places must not overlap (nor run past the end of ``flat``).
     """
     width = rows.shape[1]
-    windows = np.lib.stride_tricks.as_strided(flat, shape=(len(flat) - width + 1, width),
-                                              strides=(1, 1), writeable=True)
-    windows[starts] = rows
+    if not width or not len(rows):
+        return
+    # each row one element of ``width`` bytes: numpy copies it whole, not byte by byte
+    row = np.dtype((np.void, width))
+    windows = np.ndarray((len(flat) - width + 1,), dtype=row, buffer=flat, strides=(1,))
+    windows[starts] = np.ascontiguousarray(rows).view(row).reshape(-1)
