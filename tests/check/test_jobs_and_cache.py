@@ -14,13 +14,13 @@ import signal
 import subprocess
 import sys
 import time
-from pathlib import Path
 
 import pytest
 
 from tests.check.corpus import erd_root
 from tests.check.helpers import FIXTURES
 from tests.conftest import assert_one_line_error
+from tests.processes import children
 
 MESHES = FIXTURES / "meshes"
 
@@ -103,16 +103,3 @@ def test_a_signal_stops_the_workers_with_one_line(ending):
     assert len(stderr.strip().splitlines()) == 1, stderr
     time.sleep(0.2)
     assert not [pid for pid in workers if os.path.exists(f"/proc/{pid}")]
-
-
-def children(pid: int) -> list[int]:
-    """The child processes of ``pid`` (Linux /proc)."""
-    found = []
-    for status in Path("/proc").glob("[0-9]*/stat"):
-        try:
-            fields = status.read_text().rsplit(")", 1)[1].split()
-        except OSError:
-            continue
-        if int(fields[1]) == pid:
-            found.append(int(status.parent.name))
-    return found

@@ -20,6 +20,7 @@ from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.description.loader import RobotSource, read_description
 from servicebot_cli.description.model import build_model
 from tests.check.helpers import findings, fixture
+from tests.processes import reaped
 
 REFUSED = fixture("SB701")
 
@@ -30,20 +31,12 @@ def _in_process_error(text: str, display: str) -> str:
     return str(caught.value)
 
 
-def _gone(pid: int) -> bool:
-    try:
-        os.waitpid(pid, os.WNOHANG)
-    except ChildProcessError:
-        return True
-    return False
-
-
 def test_verdict_is_pinocchios_refusal():
     text = REFUSED.read_text()
     ahead = ModelAhead.start(text, "r.urdf")
     assert ahead is not None
     assert ahead.verdict() == _in_process_error(text, "r.urdf")
-    assert _gone(ahead._pid)
+    assert reaped(ahead._pid)
 
 
 def test_verdict_of_a_model_that_builds_is_none():
@@ -67,7 +60,7 @@ def test_stop_ends_the_child_and_is_idempotent():
     ahead = ModelAhead.start(REFUSED.read_text(), "r.urdf")
     assert ahead is not None
     ahead.stop()
-    assert _gone(ahead._pid)
+    assert reaped(ahead._pid)
     ahead.stop()  # a second stop neither fails nor signals a reused process id
 
 

@@ -18,6 +18,7 @@ import pytest
 
 from servicebot_cli.simulate import worker as worker_module
 from servicebot_cli.simulate.worker import Worker, WorkerEnded, second_core
+from tests.processes import children, reaped
 
 pytestmark = pytest.mark.skipif(not hasattr(os, "fork"), reason="the worker is forked")
 
@@ -37,15 +38,6 @@ class _Counter:
         return os.getpid(), self.calls, job * 2
 
 
-def _gone(pid: int) -> bool:
-    """The process is reaped (not even a zombie of this process is left)."""
-    try:
-        os.waitpid(pid, os.WNOHANG)
-    except ChildProcessError:
-        return True
-    return False
-
-
 def test_a_forked_worker_gives_each_result_in_order_from_its_own_process():
     counter = _Counter()
     worker: Worker[int, tuple[int, int, int]] = Worker(counter, forked=True)
@@ -57,7 +49,7 @@ def test_a_forked_worker_gives_each_result_in_order_from_its_own_process():
     assert [worker.result() for _ in range(3)] == [(pid, 1, 2), (pid, 2, 4), (pid, 3, 6)]
     assert counter.calls == 0  # the state lives in the worker
     worker.close(finished=True)
-    assert _gone(pid)
+    assert reaped(pid)
 
 
 def test_an_in_process_worker_does_each_job_when_its_result_is_taken():
@@ -82,7 +74,7 @@ def test_an_error_in_the_worker_is_raised_in_the_parent_and_the_worker_reaped():
     with pytest.raises(ValueError, match="job -1 refused"):
         worker.result()
     worker.close()
-    assert _gone(pid)
+    assert reaped(pid)
 
 
 def test_a_worker_closed_before_its_results_is_killed_and_reaped_at_once():
@@ -93,7 +85,7 @@ def test_a_worker_closed_before_its_results_is_killed_and_reaped_at_once():
     began = time.monotonic()
     worker.close()
     assert time.monotonic() - began < 5
-    assert _gone(pid)
+    assert reaped(pid)
     worker.close()  # twice is harmless
 
 
@@ -106,7 +98,7 @@ def test_a_worker_killed_from_outside_is_reported():
     with pytest.raises(WorkerEnded, match="ended before its results came"):
         worker.result()
     worker.close()
-    assert _gone(pid)
+    assert reaped(pid)
 
 
 def _handlers(job: int) -> list[object]:
@@ -164,25 +156,13 @@ def _files(root: Path) -> dict[str, bytes]:
             if p.is_file()}
 
 
-def _children(pid: int) -> list[int]:
-    found = []
-    for stat in Path("/proc").glob("[0-9]*/stat"):
-        try:
-            fields = stat.read_text().rsplit(")", 1)[1].split()
-        except OSError:
-            continue
-        if int(fields[1]) == pid:
-            found.append(int(stat.parent.name))
-    return found
-
-
 def _wait_for_worker(process: subprocess.Popen[bytes]) -> int:
     deadline = time.monotonic() + 120
-    while not (children := _children(process.pid)):
+    while not (found := children(process.pid)):
         assert process.poll() is None, "the run ended before its worker was seen"
         assert time.monotonic() < deadline, "no worker process came"
         time.sleep(0.002)
-    [child] = children
+    [child] = found
     return child
 
 
