@@ -64,6 +64,9 @@ def _as_json(text: str | bytes, dtype: type) -> np.ndarray | None:
         return None  # JSON reads "-0" as the integer 0, numpy as -0.0
     try:
         values = orjson.loads(b"[" + data + b"]")
-        return np.fromiter(values, dtype=dtype, count=len(values))
+        if dtype is np.float64:
+            return np.fromiter(values, dtype=dtype, count=len(values))
+        indices = np.array(values)  # int64 unless orjson made a float of an integer below
+        return indices if indices.dtype == np.int64 else None  # -2**63 (or uint64 above)
     except (orjson.JSONDecodeError, OverflowError, ValueError, TypeError):
         return None
