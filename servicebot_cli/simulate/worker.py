@@ -44,10 +44,10 @@ def second_core() -> bool:
     """A process can be forked and given a core of its own (this process may use two).
 
     Not in a worker of a :mod:`multiprocessing` pool (``sweep``'s runs): its siblings
-    share the cores already.
+    share the cores already; nor while other Python threads run (a fork copies their locks).
     """
-    if not hasattr(os, "fork"):
-        return False
+    if not hasattr(os, "fork") or threading.active_count() > 1:
+        return False  # another thread could hold a lock the forked process would wait on
     pools = sys.modules.get("multiprocessing")  # imported in every such worker
     if pools is not None and pools.parent_process() is not None:
         return False
@@ -118,8 +118,8 @@ class Worker(Generic[J, R]):
         try:
             pickle.dump(job, self._jobs, protocol=pickle.HIGHEST_PROTOCOL)
             self._jobs.flush()
-        except BrokenPipeError:
-            raise self._ended() from None
+        except BrokenPipeError:  # it stopped: at an error of a job (which it sent), or killed
+            raise self._error_sent() from None
 
     def no_more_jobs(self) -> None:
         """Every job is submitted: a forked worker ends once it has done them."""
@@ -144,6 +144,18 @@ class Worker(Generic[J, R]):
             raise value
         return value  # type: ignore[no-any-return]
 
+    def _error_sent(self) -> Exception:
+        """The error of a job the worker sent before it ended, else :class:`WorkerEnded`."""
+        if self._results is not None:
+            try:
+                while True:
+                    done, value = pickle.load(self._results)
+                    if not done:
+                        return value  # type: ignore[no-any-return]
+            except Exception:  # noqa: BLE001 -- the end of what it sent, whatever the form
+                pass
+        return self._ended()
+
     def _ended(self) -> WorkerEnded:
         return WorkerEnded(f"the simulation's worker process {self.pid} ended before its "
                            "results came (killed from outside?)")
@@ -156,6 +168,11 @@ class Worker(Generic[J, R]):
         pid, self.pid = self.pid, None
         held = SignalsHeld()  # the worker is reaped whatever signal comes meanwhile
         try:
+            if pid is not None and not finished:  # before its pipes close under it
+                try:
+                    os.kill(pid, signal.SIGKILL)
+                except ProcessLookupError:
+                    pass
             for stream in (self._jobs, self._results):
                 if stream is not None:
                     try:
@@ -164,12 +181,10 @@ class Worker(Generic[J, R]):
                         pass
             self._jobs = self._results = None
             if pid is not None:
-                if not finished:
-                    try:
-                        os.kill(pid, signal.SIGKILL)
-                    except ProcessLookupError:
-                        pass
-                os.waitpid(pid, 0)
+                try:
+                    os.waitpid(pid, 0)
+                except ChildProcessError:  # SIGCHLD ignored: the system reaped it
+                    pass
         finally:
             held.release()
 
@@ -196,9 +211,12 @@ def _serve(function: Callable[[Any], Any], jobs_fd: int, results_fd: int) -> Non
             except Exception as exc:  # the parent raises it
                 answer = (False, exc)
             try:
-                results.put(pickle.dumps(answer, protocol=pickle.HIGHEST_PROTOCOL))
-            except Exception as exc:  # an error that cannot be pickled
-                results.put(pickle.dumps((False, RuntimeError(f"{answer[1]!r} ({exc})"))))
+                data = pickle.dumps(answer, protocol=pickle.HIGHEST_PROTOCOL)
+                if not answer[0]:
+                    pickle.loads(data)  # an error must come back whole in the parent
+            except Exception as exc:  # noqa: BLE001 -- one that cannot: its message and code
+                data = pickle.dumps((False, _portable(answer[1], exc)))
+            results.put(data)
             if not answer[0]:
                 break
     finally:
@@ -206,18 +224,34 @@ def _serve(function: Callable[[Any], Any], jobs_fd: int, results_fd: int) -> Non
         writer.join()
 
 
+def _portable(error: Exception, why: Exception) -> Exception:
+    """``error`` as one that pickles both ways: a user's error keeps its message and code."""
+    if isinstance(error, ServicebotError):
+        portable = ServicebotError(str(error))
+        portable.exit_code = error.exit_code
+        return portable
+    return RuntimeError(f"{error!r} ({why})")
+
+
 def _read_jobs(jobs_fd: int, jobs: SimpleQueue[Any]) -> None:
-    with os.fdopen(jobs_fd, "rb") as stream:
-        while True:
-            try:
-                job = pickle.load(stream)
-            except EOFError:
-                break
-            jobs.put((job,))
-    jobs.put(_END)
+    """Queue each job, then the end: at the pipe's end, or a job cut short (the parent died)."""
+    try:
+        with os.fdopen(jobs_fd, "rb") as stream:
+            while True:
+                try:
+                    job = pickle.load(stream)
+                except Exception:  # noqa: BLE001 -- EOF, or a job cut short: no more jobs
+                    break
+                jobs.put((job,))
+    finally:
+        jobs.put(_END)
 
 
 def _write_results(results_fd: int, results: SimpleQueue[bytes | None]) -> None:
-    with os.fdopen(results_fd, "wb", buffering=0) as stream:
-        while (data := results.get()) is not None:
-            stream.write(data)
+    """Write each result; the parent gone (a broken pipe), drop the rest quietly."""
+    try:
+        with os.fdopen(results_fd, "wb", buffering=0) as stream:
+            while (data := results.get()) is not None:
+                stream.write(data)
+    except OSError:
+        pass

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import pytest
 
+from servicebot_cli.common.errors import ExitCode, ServicebotError
 from servicebot_cli.simulate import worker as worker_module
 from servicebot_cli.simulate.worker import Worker, WorkerEnded, second_core
 from tests.processes import children, reaped
@@ -99,6 +100,93 @@ def test_a_worker_killed_from_outside_is_reported():
         worker.result()
     worker.close()
     assert reaped(pid)
+
+
+def _state(pid: int) -> str:
+    """The process's state letter in /proc ("Z": ended, not reaped yet; "" gone)."""
+    try:
+        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except OSError:
+        return ""
+
+
+def _ended(pid: int, within_s: float = 20.0) -> bool:
+    deadline = time.monotonic() + within_s
+    while _state(pid) not in ("Z", ""):
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.01)
+    return True
+
+
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads /proc")
+def test_a_job_submitted_after_the_worker_stopped_at_an_error_raises_that_error():
+    """Not "killed from outside": the error the worker sent before it ended."""
+    worker: Worker[int, tuple[int, int, int]] = Worker(_Counter(), forked=True)
+    pid = worker.pid
+    assert pid is not None
+    worker.submit(-1)
+    assert _ended(pid)  # it stopped at the error: the next job meets a broken pipe
+    with pytest.raises(ValueError, match="job -1 refused"):
+        worker.submit(2)
+    worker.close()
+    assert reaped(pid)
+
+
+class _Unrebuildable(ServicebotError):
+    """An error whose pickled form cannot be rebuilt (its constructor takes two arguments)."""
+
+    exit_code = ExitCode.FAILED
+
+    def __init__(self, what: str, where: str) -> None:
+        super().__init__(f"{what} at {where}")
+
+
+def _refuse(job: int) -> int:
+    raise _Unrebuildable("a mesh cannot be read", f"job {job}")
+
+
+def test_an_error_that_cannot_be_rebuilt_keeps_its_message_and_exit_code():
+    worker: Worker[int, int] = Worker(_refuse, forked=True)
+    worker.submit(3)
+    with pytest.raises(ServicebotError, match="a mesh cannot be read at job 3") as caught:
+        worker.result()
+    assert caught.value.exit_code == ExitCode.FAILED
+    worker.close()
+
+
+_ORPHAN = """
+import os, pickle, sys
+from servicebot_cli.simulate.worker import Worker
+worker = Worker(abs, forked=True)
+print(worker.pid, flush=True)
+worker._jobs.write(pickle.dumps(list(range(100000)))[:1000])  # a job cut short
+worker._jobs.flush()
+os._exit(0)  # the parent dies without closing anything
+"""
+
+
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads /proc")
+def test_a_worker_whose_parent_died_in_the_middle_of_a_job_ends():
+    done = subprocess.run([sys.executable, "-c", _ORPHAN], capture_output=True, text=True,
+                          timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert _ended(int(done.stdout)), "the orphaned worker still runs"
+    assert "Traceback" not in done.stderr
+
+
+def _big(job: int) -> bytes:
+    return bytes(2 << 20)  # more than a pipe holds: the writer waits for the parent
+
+
+def test_closing_a_worker_whose_writer_waits_on_a_full_pipe_prints_nothing(capfd):
+    for _ in range(10):
+        worker: Worker[int, bytes] = Worker(_big, forked=True)
+        for job in range(3):
+            worker.submit(job)
+        time.sleep(0.1)  # the first result fills the pipe
+        worker.close()
+    assert capfd.readouterr().err == ""
 
 
 def _handlers(job: int) -> list[object]:
