@@ -13,17 +13,23 @@ from __future__ import annotations
 import os
 import signal
 import sys
+import threading
 
 from servicebot_cli.common.errors import DescriptionError
-from servicebot_cli.common.signals import ENDING_SIGNALS
+from servicebot_cli.common.signals import ENDING_SIGNALS, SignalsHeld
 
 _BUILT = b"built"
 _REFUSED = b"refused:"
 
 
 def worth_forking(cores: int) -> bool:
-    """A child would save time: a second core, fork available, Pinocchio not yet imported."""
-    return cores >= 2 and hasattr(os, "fork") and "pinocchio" not in sys.modules
+    """A child would save time, and fork safely.
+
+    A second core, fork available, Pinocchio not yet imported, and no other Python thread
+    (whose locks the child would copy, perhaps held).
+    """
+    return (cores >= 2 and hasattr(os, "fork") and "pinocchio" not in sys.modules
+            and threading.active_count() == 1)
 
 
 class ModelAhead:
@@ -36,16 +42,27 @@ class ModelAhead:
     def start(cls, xml_text: str, display: str) -> ModelAhead | None:
         """Fork the child building ``xml_text``'s model; None when the fork fails."""
         reader, writer = os.pipe()
+        held = SignalsHeld()  # no signal between the fork and the parent knowing the child
+        ahead = None
         try:
-            pid = os.fork()
-        except OSError:
-            os.close(reader)
+            try:
+                pid = os.fork()
+            except OSError:
+                os.close(reader)
+                os.close(writer)
+                return None
+            if pid == 0:  # the child: never returns into the parent's code
+                _child(xml_text, display, reader, writer)
             os.close(writer)
-            return None
-        if pid == 0:  # the child: never returns into the parent's code
-            _child(xml_text, display, reader, writer)
-        os.close(writer)
-        return cls(pid, reader)
+            ahead = cls(pid, reader)
+        finally:
+            try:
+                held.release()  # raises a signal that came meanwhile
+            except BaseException:
+                if ahead is not None:
+                    ahead.stop()
+                raise
+        return ahead
 
     def verdict(self) -> str | None:
         """None when Pinocchio built the model, else its error line (the ``DescriptionError``).
@@ -68,22 +85,25 @@ class ModelAhead:
 
     def stop(self) -> None:
         """End the child without waiting for its verdict (the model is not needed)."""
-        if self._reader < 0:  # already ended and waited for
-            return
-        try:
-            os.kill(self._pid, signal.SIGKILL)
-        except ProcessLookupError:
-            pass
         self._close()
 
     def _close(self) -> None:
+        """Close the pipe, end the child and reap it.
+
+        Not reaped yet, the child's pid is still its own to kill; no signal ending the run
+        then waits for a model being built.
+        """
         if self._reader < 0:
             return
         os.close(self._reader)
         self._reader = -1
         try:
+            os.kill(self._pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        try:
             os.waitpid(self._pid, 0)
-        except ChildProcessError:
+        except ChildProcessError:  # SIGCHLD ignored: the system reaped it
             pass
 
 

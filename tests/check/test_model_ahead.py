@@ -8,7 +8,6 @@ the forked path (two cores) with the serial one (the process held to one core).
 from __future__ import annotations
 
 import os
-import signal
 import subprocess
 import sys
 
@@ -46,14 +45,25 @@ def test_verdict_of_a_model_that_builds_is_none():
     assert ahead.verdict() is None
 
 
-def test_a_child_that_dies_leaves_the_finding_to_the_parent():
+def _silent_child() -> ModelAhead:
+    """A child that ends without a verdict (as one killed, or crashed in a library, does)."""
+    reader, writer = os.pipe()
+    pid = os.fork()
+    if pid == 0:
+        os._exit(0)
+    os.close(writer)
+    return ModelAhead(pid, reader)
+
+
+def test_a_child_that_ends_without_a_verdict_leaves_the_finding_to_the_parent():
     robot = read_description(RobotSource(REFUSED, str(REFUSED)))
-    ahead = ModelAhead.start(robot.xml_text, robot.display)
-    assert ahead is not None
-    os.kill(ahead._pid, signal.SIGKILL)
-    with_dead_child = [(i.code, i.message) for i in model_check(robot, ahead)]
-    assert with_dead_child == [(i.code, i.message) for i in model_check(robot)]
-    assert with_dead_child and with_dead_child[0][0] == "SB701"
+    silent = _silent_child()
+    with pytest.raises(ChildProcessError):
+        silent.verdict()
+    assert reaped(silent._pid)
+    without_verdict = [(i.code, i.message) for i in model_check(robot, _silent_child())]
+    assert without_verdict == [(i.code, i.message) for i in model_check(robot)]
+    assert without_verdict and without_verdict[0][0] == "SB701"
 
 
 def test_stop_ends_the_child_and_is_idempotent():
@@ -76,9 +86,10 @@ sys.exit(code)
 """
 
 
-def _check(path: str, cores: set[int]) -> subprocess.CompletedProcess[str]:
+def _check(path: str, cores: set[int], *more: str) -> subprocess.CompletedProcess[str]:
     return subprocess.run(
-        [sys.executable, "-c", _RUN, "check", "urdf", path, "--format", "json", "--isolated"],
+        [sys.executable, "-c", _RUN, "check", "urdf", path, "--format", "json", "--isolated",
+         *more],
         capture_output=True, text=True, timeout=120,
         preexec_fn=lambda: os.sched_setaffinity(0, cores))
 
@@ -98,3 +109,11 @@ def test_forked_and_serial_runs_report_the_same(name):
     assert "pinocchio imported: True" in serial.stderr, serial.stderr
     found = {f["code"] for f in findings(forked.stdout)}
     assert ("SB701" in found) == bool(path)
+
+
+@pytest.mark.skipif(len(os.sched_getaffinity(0)) < 2, reason="needs a second core to decline")
+def test_jobs_1_keeps_the_run_in_one_process():
+    two = set(sorted(os.sched_getaffinity(0))[:2])
+    done = _check(str(RobotSource.bundled().path), two, "--jobs", "1")
+    assert done.returncode == 0, done.stderr
+    assert "pinocchio imported: True" in done.stderr
