@@ -139,6 +139,9 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
                               Outputs(out_dir, bag, plot), live_window=not headless,
                               progress=progress, expectations=expectations,
                               allow_collisions=allow_collisions, srdf=srdf)
+    from servicebot_cli.simulate.heap import keep_freed_memory
+
+    keep_freed_memory()  # this process is the run's: its temporaries reuse the heap's pages
     report = session.run(request, stderr=sys.stderr)
     show_simulation(report, fmt)
     if report.live_track is not None:  # gathered for the live window (not --headless)

@@ -5,8 +5,9 @@ A piece's numpy temporaries run to megabytes. By default glibc maps large blocks
 the heap's top back to the system, so each piece's temporaries come back as fresh pages
 that fault one by one: thousands of page faults a run. Served from the heap (blocks up to
 32 MB) with a large trim threshold and a large top pad, they reuse the pages the piece
-before touched; the peak memory is the same, and the memory is given back when the process
-ends. Elsewhere than glibc this does nothing.
+before touched, and the memory is given back when the process ends. The ``simulate``
+command sets it for its own process; the library functions do not (a long-lived process
+that calls them keeps its own malloc settings). Elsewhere than glibc this does nothing.
 """
 
 from __future__ import annotations

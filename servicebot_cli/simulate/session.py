@@ -208,12 +208,10 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
     from servicebot_cli.simulate.body import sim_robot
     from servicebot_cli.simulate.controllers.diff_drive import tick_count
     from servicebot_cli.simulate.files.progress import Progress
-    from servicebot_cli.simulate.heap import keep_freed_memory
     from servicebot_cli.simulate.world.meshes import load_meshes
     from servicebot_cli.simulate.world.solids import world_solids
 
     _load_modules(outputs, camera_images=scenario.camera.enabled)
-    keep_freed_memory()  # the pieces' numpy temporaries reuse the heap: fewer page faults
     start = clock()
     body = sim_robot(robot, resolver=resolver, disabled_pairs=disabled_pairs)
     if check_points:
