@@ -305,3 +305,21 @@ def test_a_run_ended_by_a_signal_stops_its_worker(tmp_path, signum, code, group)
     assert process.returncode == code, stderr.decode()
     assert list(tmp_path.iterdir()) == []
     assert _nothing_left(process.pid, child)
+
+
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads /proc")
+def test_a_run_of_several_pieces_with_a_second_core_forks_its_worker_and_reaps_it(monkeypatch):
+    """The pieces' generator forks one worker, which is gone once the generator is closed."""
+    from servicebot_cli.simulate import simulator
+    from servicebot_cli.simulate.scenario.definition import load_scenario
+    from servicebot_cli.simulate.world.solids import world_solids
+    from tests.simulate.helpers import body
+
+    monkeypatch.setattr(simulator, "second_core", lambda: True)
+    scenario = load_scenario(None)
+    pieces = simulator.pieces(body(), scenario, seed=0, solids=world_solids(scenario.world))
+    before = set(children(os.getpid()))
+    next(pieces)
+    [worker] = set(children(os.getpid())) - before
+    pieces.close()
+    assert reaped(worker)
