@@ -102,17 +102,29 @@ def test_a_worker_killed_from_outside_is_reported():
     assert reaped(pid)
 
 
-def _state(pid: int) -> str:
-    """The process's state letter in /proc ("Z": ended, not reaped yet; "" gone)."""
+def _states(pid: int) -> set[str]:
+    """The state letters of the process's threads in /proc ("Z": ended; none: gone)."""
+    found = set()
     try:
-        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+        tasks = list(Path(f"/proc/{pid}/task").iterdir())
     except OSError:
-        return ""
+        return found
+    for task in tasks:
+        try:
+            found.add((task / "stat").read_text().rsplit(")", 1)[1].split()[0])
+        except OSError:
+            continue
+    return found
 
 
 def _ended(pid: int, within_s: float = 20.0) -> bool:
+    """Every thread of the process has ended.
+
+    Its leader ends first; the last thread to end, tearing down a large address space,
+    still holds the process's files (the pipes) for a while.
+    """
     deadline = time.monotonic() + within_s
-    while _state(pid) not in ("Z", ""):
+    while _states(pid) - {"Z"}:
         if time.monotonic() > deadline:
             return False
         time.sleep(0.01)
