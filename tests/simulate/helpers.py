@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import json
-from typing import Any
+import re
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.simulate import simulator
@@ -11,6 +13,12 @@ from servicebot_cli.simulate.body import SimRobot, sim_robot
 from servicebot_cli.simulate.scenario.definition import Scenario, read_scenario
 from servicebot_cli.simulate.scenario.located import parse
 from servicebot_cli.simulate.world.solids import world_solids
+
+if TYPE_CHECKING:
+    import coal
+    import numpy as np
+
+    from servicebot_cli.description.robot import RobotDescription
 
 
 def body() -> SimRobot:
@@ -24,3 +32,39 @@ def scenario(document: dict[str, Any]) -> Scenario:
 def run(document: dict[str, Any], seed: int = 0) -> simulator.SimResult:
     s = scenario(document)
     return simulator.run(body(), s, seed=seed, solids=world_solids(s.world))
+
+
+def bundled_with(links: str, directory: Path) -> Path:
+    """The bundled robot with ``links`` (URDF text) added, written in ``directory``: its path.
+
+    The controllers file goes beside it, and so do the links' meshes (the caller's).
+    """
+    bundled = load(RobotSource.bundled("sim"))
+    text = bundled.xml_text.replace("</robot>", links + "</robot>")
+    for name in re.findall(r"<parameters>([^<]+)</parameters>", text):  # controllers.yaml
+        (directory / name).write_bytes((bundled.path.parent / name).read_bytes())
+    (directory / "robot.urdf").write_text(text)
+    return directory / "robot.urdf"
+
+
+def coal_primitives(robot: RobotDescription, links: set[str] | None = None
+                    ) -> list[tuple[str, coal.ShapeBase, np.ndarray]]:
+    """(link, Coal shape, transform_shape_to_link) of the robot's collision primitives.
+
+    Of ``links`` only, if given; in URDF order. The reference the simulator's parts are held to.
+    """
+    import coal
+
+    from servicebot_cli.kinematics.transforms import pose_matrix
+
+    out = []
+    for link in robot.links:
+        if links is not None and link.name not in links:
+            continue
+        for element in link.collisions:
+            g = element.geometry
+            shape = (coal.Box(*g.size) if g.kind == "box" else
+                     coal.Cylinder(g.radius, g.length) if g.kind == "cylinder" else
+                     coal.Sphere(g.radius))
+            out.append((link.name, shape, pose_matrix(element.origin)))
+    return out

@@ -15,10 +15,9 @@ import numpy as np
 import pytest
 
 from servicebot_cli.kinematics.link_poses import link_transforms
-from servicebot_cli.kinematics.transforms import pose_matrix
 from servicebot_cli.simulate import simulator
 from servicebot_cli.simulate.world.solids import world_solids
-from tests.simulate.helpers import body, run, scenario
+from tests.simulate.helpers import body, coal_primitives, run, scenario
 
 BODY = body()
 ARM = list(BODY.arm_joints)
@@ -54,26 +53,11 @@ def _wall_box(document: dict[str, Any]) -> tuple[coal.Box, coal.Transform3s]:
     return box, coal.Transform3s(rotation, centre)
 
 
-def _primitives(links: set[str] | None = None) -> list[tuple[str, coal.ShapeBase, np.ndarray]]:
-    """(link, Coal shape, transform_shape_to_link) of the robot's collision primitives."""
-    out = []
-    for link in BODY.robot.links:
-        if links is not None and link.name not in links:
-            continue
-        for shape in link.collisions:
-            g = shape.geometry
-            geometry = (coal.Box(*g.size) if g.kind == "box" else
-                        coal.Cylinder(g.radius, g.length) if g.kind == "cylinder" else
-                        coal.Sphere(g.radius))
-            out.append((link.name, geometry, pose_matrix(shape.origin)))
-    return out
-
-
 def _gaps(result: simulator.SimResult, document: dict[str, Any],
           links: set[str] | None = None) -> np.ndarray:
     """Signed distance from the links to the wall at every tick boundary [m] (< 0: inside)."""
     wall, wall_pose = _wall_box(document)
-    shapes = _primitives(links)
+    shapes = coal_primitives(BODY.robot, links)
     truth, height = result.truth, BODY.base_height_m
     gaps = np.empty(len(truth.x_m))
     for k in range(len(gaps)):
@@ -96,7 +80,7 @@ def _gaps(result: simulator.SimResult, document: dict[str, Any],
 
 def _corners_moved(result: simulator.SimResult, link: str) -> np.ndarray:
     """How far the farthest corner of ``link``'s box moved in each tick [m] (base standing)."""
-    [(_, box, origin)] = _primitives({link})
+    [(_, box, origin)] = coal_primitives(BODY.robot, {link})
     half = np.array(box.halfSide)
     corners = np.array([[x, y, z, 1] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]) \
         * np.append(half, 1)

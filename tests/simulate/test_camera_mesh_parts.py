@@ -9,7 +9,6 @@ by the simulator's shape), cast along the frame's pixel rays.
 
 from __future__ import annotations
 
-import re
 from pathlib import Path
 
 import numpy as np
@@ -26,6 +25,7 @@ from servicebot_cli.simulate.sensors.camera_info import Intrinsics
 from servicebot_cli.simulate.sensors.camera_stream import CameraStream
 from servicebot_cli.simulate.shape import Part
 from servicebot_cli.simulate.world.solids import Solid
+from tests.simulate.helpers import bundled_with
 
 VISOR_SCALE = (0.5, 0.6, 0.5)
 BLACK = (0, 0, 0)
@@ -75,12 +75,7 @@ def robot_file(tmp_path_factory: pytest.TempPathFactory) -> Path:
     directory = tmp_path_factory.mktemp("mesh_links")
     for name, mesh in STL.items():
         mesh.export(directory / f"{name}.stl")
-    bundled = load(RobotSource.bundled("sim"))
-    text = bundled.xml_text.replace("</robot>", LINKS + "</robot>")
-    for name in re.findall(r"<parameters>([^<]+)</parameters>", text):  # controllers.yaml
-        (directory / name).write_bytes((bundled.path.parent / name).read_bytes())
-    (directory / "robot.urdf").write_text(text)
-    return directory / "robot.urdf"
+    return bundled_with(LINKS, directory)
 
 
 @pytest.fixture(scope="module")

@@ -17,7 +17,6 @@ import pytest
 import trimesh
 
 from servicebot_cli.kinematics.link_poses import link_transforms
-from servicebot_cli.kinematics.transforms import pose_matrix
 from servicebot_cli.simulate.shape_memo import TransformMemo
 from servicebot_cli.simulate.world import contacts
 from servicebot_cli.simulate.world.clearance import closest
@@ -28,7 +27,7 @@ from servicebot_cli.simulate.world.part_groups import (
     part_bounds,
 )
 from servicebot_cli.simulate.world.solids import world_solids
-from tests.simulate.helpers import body, scenario
+from tests.simulate.helpers import body, coal_primitives, scenario
 
 BODY = body()
 SHAPE = BODY.shape
@@ -60,14 +59,7 @@ def _world() -> tuple[contacts.Tester, list[tuple[object, coal.Transform3s]]]:
 
 def _parts() -> list[tuple[str, coal.ShapeBase, np.ndarray]]:
     """(link, Coal shape, transform_shape_to_link) of every collision primitive, URDF order."""
-    out = []
-    for link in BODY.robot.links:
-        for element in link.collisions:
-            g = element.geometry
-            shape = (coal.Box(*g.size) if g.kind == "box" else
-                     coal.Cylinder(g.radius, g.length) if g.kind == "cylinder" else
-                     coal.Sphere(g.radius))
-            out.append((link.name, shape, pose_matrix(element.origin)))
+    out = coal_primitives(BODY.robot)
     assert [link for link, _, _ in out] == list(SHAPE.links)
     return out
 

@@ -8,7 +8,6 @@ own ray caster and Coal, with the mesh placed by ``kinematics.link_poses``.
 from __future__ import annotations
 
 import math
-import re
 from pathlib import Path
 
 import coal
@@ -25,7 +24,7 @@ from servicebot_cli.simulate.sensors import lidar
 from servicebot_cli.simulate.shape import outlines
 from servicebot_cli.simulate.world.robot_rays import cast_parts
 from servicebot_cli.simulate.world.solids import world_solids
-from tests.simulate.helpers import scenario
+from tests.simulate.helpers import bundled_with, scenario
 
 SCALE = (0.5, 1.0, 1.0)
 BUMPER = """
@@ -45,12 +44,7 @@ BUMPER = """
 
 def _robot(tmp_path: Path, mesh: str) -> SimRobot:
     """The bundled robot with the bumper, its URDF and ``mesh`` written in ``tmp_path``."""
-    bundled = load(RobotSource.bundled("sim"))
-    text = bundled.xml_text.replace("</robot>", BUMPER.format(mesh=mesh) + "</robot>")
-    for name in re.findall(r"<parameters>([^<]+)</parameters>", text):  # controllers.yaml
-        (tmp_path / name).write_bytes((bundled.path.parent / name).read_bytes())
-    (tmp_path / "robot.urdf").write_text(text)
-    return sim_robot(load(RobotSource.of(tmp_path / "robot.urdf")))
+    return sim_robot(load(RobotSource.of(bundled_with(BUMPER.format(mesh=mesh), tmp_path))))
 
 
 def _stl(tmp_path: Path) -> trimesh.Trimesh:
