@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue
 from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.common.forked import WorkerEnded
 
 if TYPE_CHECKING:
     from servicebot_cli.check.model_ahead import ModelAhead
@@ -32,9 +33,11 @@ def _refusal(robot: RobotDescription, ahead: ModelAhead | None) -> str | None:
     """Pinocchio's error line for ``robot``, or None when it builds the model."""
     if ahead is not None:
         try:
-            return ahead.verdict()
-        except ChildProcessError:
+            return ahead.result()
+        except WorkerEnded:  # no verdict came: built here, as a serial run does
             pass
+        finally:
+            ahead.close()
     try:
         robot.model  # noqa: B018 -- building is the check
     except DescriptionError as exc:

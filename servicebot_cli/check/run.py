@@ -140,8 +140,8 @@ def _check_urdfs(targets: UrdfTargets, settings: Settings) -> list[FileReport]:
             sources, settings, targets.packages, jobs, targets.mesh_cache)
     else:
         env = workers.env_for(targets.packages, settings, targets.mesh_cache)
-        env.model_ahead = len(sources) == 1 and targets.jobs != 1 and model_ahead.worth_forking(
-            workers.available_cores())  # --jobs 1: one process, as asked
+        env.model_ahead = (len(sources) == 1 and targets.jobs != 1  # --jobs 1: one process
+                           and model_ahead.worth_forking())
         outcomes = (workers.check_one(source, named, settings, env) for source, named in sources)
     return [workers.report_of(outcome, settings) for outcome in outcomes]
 

@@ -74,16 +74,16 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv) -> File
                        packages.used(robot, env.search))
     finally:
         if ahead is not None:
-            ahead.stop()
+            ahead.close()  # at once when no verdict was asked for
 
 
 def _model_ahead(robot: RobotDescription, settings: Settings, env: CheckEnv) -> ModelAhead | None:
     """The child building SB701's model while the other rules run, when ``env`` asks for one."""
     if not env.model_ahead or not settings.enabled("SB701"):
         return None
-    from servicebot_cli.check.model_ahead import ModelAhead
+    from servicebot_cli.check import model_ahead
 
-    return ModelAhead.start(robot.xml_text, robot.display)
+    return model_ahead.start(robot.xml_text, robot.display)
 
 
 def _model(robot: RobotDescription, findings: list[Finding], settings: Settings,

@@ -4,7 +4,7 @@ Once a piece's ground truth is known (the base's path, the arm at each tick boun
 these two depend on nothing else of it, and each carries its state from piece to piece
 (the scan noise's generator, the self-contact events under way).
 :class:`PoseWork` holds that state and everything fixed for the run, so the pieces' jobs
-can be done in another process (:mod:`servicebot_cli.simulate.worker`) while the simulator
+can be done in another process (:mod:`servicebot_cli.common.forked`) while the simulator
 goes on: done in order, in whichever process, they give the same bits.
 """
 

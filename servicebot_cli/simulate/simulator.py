@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.common.forked import Worker, second_core
 from servicebot_cli.description.sensors import CameraSpec, ImuSpec, LidarSpec
 from servicebot_cli.kinematics import diff_drive
 from servicebot_cli.simulate.body import SimRobot
@@ -37,7 +38,6 @@ from servicebot_cli.simulate.sensors.noise import Noise, stream_rng
 from servicebot_cli.simulate.sensors.sample import SampleClock, sample_count
 from servicebot_cli.simulate.sensors.scan_jobs import ScanCaster
 from servicebot_cli.simulate.shape_memo import TransformMemo
-from servicebot_cli.simulate.worker import Worker, second_core
 from servicebot_cli.simulate.world import blocking, motion
 from servicebot_cli.simulate.world.clearance import Closest, closest
 from servicebot_cli.simulate.world.contacts import Placed, Tester, obstacles
@@ -128,7 +128,8 @@ def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[So
     elif run.images is not None:
         _refuse_frames_beyond_memory(run.clocks["camera"].count * run.images.frame_bytes)
     firsts = range(0, run.ticks, step)
-    poses = Worker(run.from_poses, forked=len(firsts) > 1 and second_core())
+    poses = Worker(run.from_poses, forked=len(firsts) > 1 and second_core(),
+                   name="simulation's worker")
     try:
         begun: list[SimResult] = []  # forked: a piece's pose work is done while the next runs
         for first in firsts:

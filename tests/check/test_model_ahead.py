@@ -1,4 +1,4 @@
-"""SB701's model built by a forked child while a one-file check runs its other rules.
+"""SB701's model built by a forked worker while a one-file check runs its other rules.
 
 The child's verdict must be Pinocchio's own (same finding, same text), a child that dies
 must not lose the finding, and a stopped child must not be left behind. Whole runs compare
@@ -13,9 +13,11 @@ import sys
 
 import pytest
 
+from servicebot_cli.check import model_ahead
 from servicebot_cli.check.model import check as model_check
 from servicebot_cli.check.model_ahead import ModelAhead
 from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.common.forked import Worker, WorkerEnded
 from servicebot_cli.description.loader import RobotSource, read_description
 from servicebot_cli.description.model import build_model
 from tests.check.helpers import findings, fixture
@@ -32,46 +34,55 @@ def _in_process_error(text: str, display: str) -> str:
 
 def test_verdict_is_pinocchios_refusal():
     text = REFUSED.read_text()
-    ahead = ModelAhead.start(text, "r.urdf")
-    assert ahead is not None
-    assert ahead.verdict() == _in_process_error(text, "r.urdf")
-    assert reaped(ahead._pid)
+    ahead = model_ahead.start(text, "r.urdf")
+    assert ahead is not None and ahead.pid is not None
+    pid = ahead.pid
+    assert ahead.result() == _in_process_error(text, "r.urdf")
+    ahead.close(finished=True)
+    assert reaped(pid)
 
 
 def test_verdict_of_a_model_that_builds_is_none():
     robot = read_description(RobotSource.bundled())
-    ahead = ModelAhead.start(robot.xml_text, robot.display)
+    ahead = model_ahead.start(robot.xml_text, robot.display)
     assert ahead is not None
-    assert ahead.verdict() is None
+    assert ahead.result() is None
+    ahead.close(finished=True)
+
+
+def _end_at_once(_job: None) -> str | None:
+    os._exit(0)
 
 
 def _silent_child() -> ModelAhead:
-    """A child that ends without a verdict (as one killed, or crashed in a library, does)."""
-    reader, writer = os.pipe()
-    pid = os.fork()
-    if pid == 0:
-        os._exit(0)
-    os.close(writer)
-    return ModelAhead(pid, reader)
+    """A worker that ends without a verdict (as one killed, or crashed in a library, does)."""
+    silent: ModelAhead = Worker(_end_at_once, forked=True)
+    silent.submit(None)
+    silent.no_more_jobs()
+    return silent
 
 
 def test_a_child_that_ends_without_a_verdict_leaves_the_finding_to_the_parent():
     robot = read_description(RobotSource(REFUSED, str(REFUSED)))
     silent = _silent_child()
-    with pytest.raises(ChildProcessError):
-        silent.verdict()
-    assert reaped(silent._pid)
+    pid = silent.pid
+    assert pid is not None
+    with pytest.raises(WorkerEnded):
+        silent.result()
+    silent.close()
+    assert reaped(pid)
     without_verdict = [(i.code, i.message) for i in model_check(robot, _silent_child())]
     assert without_verdict == [(i.code, i.message) for i in model_check(robot)]
     assert without_verdict and without_verdict[0][0] == "SB701"
 
 
 def test_stop_ends_the_child_and_is_idempotent():
-    ahead = ModelAhead.start(REFUSED.read_text(), "r.urdf")
-    assert ahead is not None
-    ahead.stop()
-    assert reaped(ahead._pid)
-    ahead.stop()  # a second stop neither fails nor signals a reused process id
+    ahead = model_ahead.start(REFUSED.read_text(), "r.urdf")
+    assert ahead is not None and ahead.pid is not None
+    pid = ahead.pid
+    ahead.close()
+    assert reaped(pid)
+    ahead.close()  # a second close neither fails nor signals a reused process id
 
 
 _RUN = """

@@ -1,6 +1,6 @@
 """The simulator's worker process: the same results as in-process, and nothing left behind.
 
-The unit tests drive :class:`~servicebot_cli.simulate.worker.Worker` directly; the others run
+The unit tests drive :class:`~servicebot_cli.common.forked.Worker` directly; the others run
 the real ``servicebot simulate``: on one core against two (the same bytes), and with its
 worker killed or the run ended by a signal (no output, and no process, left behind).
 """
@@ -16,9 +16,9 @@ from pathlib import Path
 
 import pytest
 
+from servicebot_cli.common import forked as worker_module
 from servicebot_cli.common.errors import ExitCode, ServicebotError
-from servicebot_cli.simulate import worker as worker_module
-from servicebot_cli.simulate.worker import Worker, WorkerEnded, second_core
+from servicebot_cli.common.forked import Worker, WorkerEnded, second_core
 from tests.processes import children, reaped
 
 pytestmark = pytest.mark.skipif(not hasattr(os, "fork"), reason="the worker is forked")
@@ -169,7 +169,7 @@ def test_an_error_that_cannot_be_rebuilt_keeps_its_message_and_exit_code():
 
 _ORPHAN = """
 import os, pickle, sys
-from servicebot_cli.simulate.worker import Worker
+from servicebot_cli.common.forked import Worker
 worker = Worker(abs, forked=True)
 print(worker.pid, flush=True)
 worker._jobs.write(pickle.dumps(list(range(100000)))[:1000])  # a job cut short

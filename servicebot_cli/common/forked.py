@@ -1,11 +1,12 @@
-"""One function applied to a run's jobs in order, in a forked process when a second core is free.
+"""One function applied to jobs in order, in a forked process when a second core is free.
 
-The simulator hands what a piece computes from its poses alone (:mod:`.pose_work`) to a
-:class:`Worker` and goes on with the next piece meanwhile. The forked process inherits
-everything the function closes over (the robot, the world, the scan noise's generator) and
-only the jobs and the results cross the pipes, in order, so the results are the bits the
-function gives in-process: the state it carries from job to job (a noise generator) lives
-in the one process that calls it.
+A caller hands work that depends on nothing it does meanwhile to a :class:`Worker` and goes
+on: ``simulate`` the pose work of each piece (:mod:`~servicebot_cli.simulate.pose_work`),
+``check`` the Pinocchio model of a one-file run (:mod:`~servicebot_cli.check.model_ahead`).
+The forked process inherits everything the function closes over (a robot, a world, a noise
+generator) and only the jobs and the results cross the pipes, in order, so the results are
+the bits the function gives in-process: the state it carries from job to job (a noise
+generator) lives in the one process that calls it.
 
 Without :func:`os.fork` or with one core to run on (:func:`os.sched_getaffinity`), the jobs
 are done in-process when their results are asked for. The process ignores SIGINT and takes
@@ -63,10 +64,12 @@ class Worker(Generic[J, R]):
         function: Called once per job, in order. In a forked process, what it keeps between
             calls stays there: the caller's copy must not be used while the worker lives.
         forked: Do the jobs in a forked process (else in-process, when taken).
+        name: What the process is, for the error when it ends early ("the NAME process").
     """
 
-    def __init__(self, function: Callable[[J], R], *, forked: bool) -> None:
-        self._function = function
+    def __init__(self, function: Callable[[J], R], *, forked: bool,
+                 name: str = "worker") -> None:
+        self._function, self.name = function, name
         self._waiting: list[J] = []  # in-process: the jobs whose results are not taken
         self.pid: int | None = None
         self._jobs: IO[bytes] | None = None
@@ -157,8 +160,8 @@ class Worker(Generic[J, R]):
         return self._ended()
 
     def _ended(self) -> WorkerEnded:
-        return WorkerEnded(f"the simulation's worker process {self.pid} ended before its "
-                           "results came (killed from outside?)")
+        return WorkerEnded(f"the {self.name} process {self.pid} ended before its results came "
+                           "(killed from outside?)")
 
     def close(self, *, finished: bool = False) -> None:
         """Stop the worker process and reap it; ``finished``: every result was taken.
