@@ -286,14 +286,11 @@ def _compiled(view: CameraView, rotations: FloatArray, origins: FloatArray, scen
               part_transforms: FloatArray, keys: npt.NDArray[np.uint64], scale: float,
               rgb: npt.NDArray[np.uint8], depth_m: npt.NDArray[np.float32]) -> bool:
     """Fill ``rgb`` and ``depth_m`` in numba's compiled loop; False without numba."""
-    try:
-        import numba  # type: ignore[import-untyped, import-not-found, unused-ignore]
-
-        from servicebot_cli.simulate.sensors import camera_kernel
-    except ModuleNotFoundError as exc:
-        if exc.name != "numba":
-            raise
+    if not load_renderer():
         return False
+    import numba  # type: ignore[import-untyped, import-not-found, unused-ignore]
+
+    from servicebot_cli.simulate.sensors import camera_kernel
     kinds, halves, rotations_s, centres, colours, part_kinds, part_halves, part_colours = \
         scene.packed_world
     t, p = scene.triangles, scene.part_triangles
