@@ -7,6 +7,7 @@ SB008-SB016. Walks the tree iteratively against :mod:`urdf_schema`; extension el
 from __future__ import annotations
 
 import difflib
+import functools
 import math
 import re
 import xml.etree.ElementTree as ET
@@ -41,7 +42,7 @@ def check(root: ET.Element) -> Iterator[Issue]:
         if child.tag in TOP_LEVEL:
             yield from _element_tree(child)
         elif not _is_extension(child.tag):
-            close = difflib.get_close_matches(child.tag, TOP_LEVEL, n=1, cutoff=0.6)
+            close = _close(child.tag, TOP_LEVEL)
             if close:
                 yield Issue("SB010", f"<{child.tag}> is not a URDF element; did you mean "
                             f"<{close[0]}>?", child, fix=f"rename it <{close[0]}>")
@@ -101,10 +102,17 @@ def _empty_reference(element: ET.Element) -> Iterator[Issue]:
 
 
 def _unknown(child: ET.Element, parent: ET.Element, allowed: tuple[str, ...]) -> Issue:
-    close = difflib.get_close_matches(child.tag, allowed, n=1, cutoff=0.6)
+    close = _close(child.tag, allowed)
     hint = f"; did you mean <{close[0]}>?" if close else f" (allowed: {', '.join(allowed)})"
     return Issue("SB010", f"<{child.tag}> is not a URDF element inside <{parent.tag}>{hint}",
                  child, fix=f"rename it <{close[0]}>" if close else "remove it")
+
+
+@functools.lru_cache(maxsize=1024)
+def _close(name: str, allowed: tuple[str, ...]) -> tuple[str, ...]:
+    """The allowed name most like ``name`` (none or one): the same unknown names come back in
+    file after file (pybullet's ``<contact>``), and difflib takes a third of a millisecond."""
+    return tuple(difflib.get_close_matches(name, allowed, n=1, cutoff=0.6))
 
 
 def _named(element: ET.Element) -> str:
@@ -118,7 +126,7 @@ def _attributes(element: ET.Element, allowed: dict[str, int],
         if ":" in key or key.startswith("{"):
             continue
         if key not in allowed:
-            close = difflib.get_close_matches(key, list(allowed), n=1, cutoff=0.6)
+            close = _close(key, tuple(allowed))
             hint = f"; did you mean '{close[0]}'?" if close else ""
             yield Issue("SB011", f"<{element.tag}> has no attribute '{key}'{hint}", element,
                         fix=f"rename it '{close[0]}'" if close else "remove it")
