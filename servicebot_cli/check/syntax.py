@@ -110,8 +110,11 @@ def _unknown(child: ET.Element, parent: ET.Element, allowed: tuple[str, ...]) ->
 
 @functools.lru_cache(maxsize=1024)
 def _close(name: str, allowed: tuple[str, ...]) -> tuple[str, ...]:
-    """The allowed name most like ``name`` (none or one): the same unknown names come back in
-    file after file (pybullet's ``<contact>``), and difflib takes a third of a millisecond."""
+    """The allowed name most like ``name``: none or one.
+
+    The same unknown names come back in file after file (pybullet's ``<contact>``), and
+    difflib takes a third of a millisecond.
+    """
     return tuple(difflib.get_close_matches(name, allowed, n=1, cutoff=0.6))
 
 
