@@ -53,11 +53,23 @@ _OBJ_FIRST_LINE = re.compile(rb"[ \t]*([vf])[ \t]([^\r\n]*)")
 
 
 def read_obj(data: bytes) -> FloatArray:
-    """Triangles of a Wavefront OBJ (polygons fan-triangulated; negative indices allowed).
+    """Triangles of a Wavefront OBJ (polygons fan-triangulated; negative indices allowed)."""
+    vertices, faces = read_obj_indexed(data)
+    triangles: FloatArray = vertices[faces] if len(faces) else np.zeros((0, 3, 3))
+    return triangles
 
-    Vertices and faces are found by regular expression and parsed by numpy; a file this
-    cannot read in one pass (negative indices, continued lines, a corner that is not an
-    index) is read line by line, which also says what is wrong with it.
+
+def read_obj_indexed(data: bytes) -> tuple[FloatArray, IntArray]:
+    """A Wavefront OBJ's vertex table (V, 3) and triangles as rows of it (F, 3), from 0.
+
+    Polygons are fan-triangulated. Vertices and faces are found by regular expression and
+    parsed by numpy; a file this cannot read in one pass (negative indices, continued lines,
+    a corner that is not an index) is read line by line, which also says what is wrong with
+    it.
+
+    Raises:
+        MeshFormatError: A vertex without three numbers, or a face naming a vertex that does
+            not exist.
     """
     if b"\\\n" in data or b"\\\r" in data:
         return _read_obj_lines(data)
@@ -71,7 +83,8 @@ def read_obj(data: bytes) -> FloatArray:
     indices, counts = faces
     table = _obj_vertices(vertex_lines)
     polygons = counts >= 3  # a face of one or two corners has no area: left out
-    return _fan_counts(table, indices[np.repeat(polygons, counts)] - 1, counts[polygons])
+    return table, _fan_counts(len(table), indices[np.repeat(polygons, counts)] - 1,
+                              counts[polygons])
 
 
 def _obj_faces(faces: list[bytes]) -> tuple[IntArray, IntArray] | None:
@@ -128,8 +141,8 @@ def _obj_vertices(lines: list[bytes]) -> FloatArray:
     return table
 
 
-def _read_obj_lines(data: bytes) -> FloatArray:
-    """:func:`read_obj`, one line at a time."""
+def _read_obj_lines(data: bytes) -> tuple[FloatArray, IntArray]:
+    """:func:`read_obj_indexed`, one line at a time."""
     vertices: list[list[float]] = []
     faces: list[list[int]] = []
     for raw in data.splitlines():
@@ -142,28 +155,22 @@ def _read_obj_lines(data: bytes) -> FloatArray:
             indices = [int(p.split(b"/")[0]) for p in parts[1:]]
             faces.append([i - 1 if i > 0 else len(vertices) + i for i in indices])
     table = np.array(vertices, dtype=np.float64).reshape(-1, 3)
-    return _fan(table, faces)
+    tris = [(p[0], p[i], p[i + 1]) for p in faces for i in range(1, len(p) - 1)]
+    return table, _checked(len(table), np.array(tris, dtype=np.int64).reshape(-1, 3))
 
 
-def _fan(vertices: FloatArray, polygons: list[list[int]]) -> FloatArray:
-    tris = [(p[0], p[i], p[i + 1]) for p in polygons for i in range(1, len(p) - 1)]
-    return _take(vertices, np.array(tris, dtype=np.int64).reshape(-1, 3))
-
-
-def _take(vertices: FloatArray, index: npt.NDArray[np.int64]) -> FloatArray:
-    if not len(index):
-        return np.zeros((0, 3, 3))
-    if index.min() < 0 or index.max() >= len(vertices):
+def _checked(vertex_count: int, index: IntArray) -> IntArray:
+    """``index`` (F, 3), once every row it names is one of ``vertex_count`` vertices."""
+    if len(index) and (index.min() < 0 or index.max() >= vertex_count):
         raise MeshFormatError("a face refers to a vertex that does not exist")
-    triangles: FloatArray = vertices[index]
-    return triangles
+    return index
 
 
-def _fan_counts(vertices: FloatArray, indices: np.ndarray, counts: np.ndarray) -> FloatArray:
+def _fan_counts(vertex_count: int, indices: IntArray, counts: IntArray) -> IntArray:
     """Fan-triangulate polygons given as flat ``indices`` with ``counts`` corners each."""
     counts = counts[counts >= 3]
     if not len(counts):
-        return np.zeros((0, 3, 3))
+        return np.zeros((0, 3), dtype=np.int64)
     starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
     per = counts - 2
     first = np.repeat(starts, per)
@@ -171,7 +178,7 @@ def _fan_counts(vertices: FloatArray, indices: np.ndarray, counts: np.ndarray) -
     corners = np.stack([first, first + step, first + step + 1], axis=1)
     if corners.max() >= len(indices):
         raise MeshFormatError("a polygon list shorter than its vertex counts")
-    return _take(vertices, indices[corners])
+    return _checked(vertex_count, indices[corners])
 
 
 def _numbers(text: str | bytes | None, dtype: type = np.float64) -> np.ndarray:
@@ -352,10 +359,19 @@ def _primitive(prim: ET.Element, ns: str, kind: str, points: FloatArray) -> Floa
         parts = [_numbers(p.text, np.int64)[offset::stride] for p in prim.findall(f"{ns}p")]
         counts = np.array([len(p) for p in parts], dtype=np.int64)
         flat = np.concatenate(parts) if parts else np.zeros(0, dtype=np.int64)
-        return _fan_counts(points, flat, counts)
+        return _take(points, _fan_counts(len(points), flat, counts))
     indices = _numbers(" ".join(p.text or "" for p in prim.findall(f"{ns}p")), np.int64)
     indices = indices[offset::stride]
     if kind == "triangles":
-        return _take(points, indices[: len(indices) - len(indices) % 3].reshape(-1, 3))
+        return _take(points, _checked(len(points), indices[: len(indices) - len(indices) % 3]
+                                      .reshape(-1, 3)))
     counts = _numbers(prim.findtext(f"{ns}vcount"), np.int64)
-    return _fan_counts(points, indices, counts)
+    return _take(points, _fan_counts(len(points), indices, counts))
+
+
+def _take(points: FloatArray, faces: IntArray) -> FloatArray:
+    """The triangles (F, 3, 3) of ``faces``, checked rows of ``points``."""
+    if not len(faces):
+        return np.zeros((0, 3, 3))
+    triangles: FloatArray = points[faces]
+    return triangles

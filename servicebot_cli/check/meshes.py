@@ -7,6 +7,7 @@ of :mod:`mesh_readers`; other formats through trimesh, imported only then.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -77,6 +78,8 @@ def load_mesh(path: Path, with_mass: bool = False) -> MeshInfo:
     try:
         if reader is mesh_readers.read_dae and not with_mass:
             return _bounds_only(*mesh_readers.read_dae_bounds(data))
+        if reader is mesh_readers.read_obj:
+            return summarise_indexed(*mesh_readers.read_obj_indexed(data), with_mass)
         triangles = reader(data) if reader else _with_trimesh(path)
     except (mesh_readers.MeshFormatError, ValueError, IndexError) as exc:
         raise MeshError(str(exc) or type(exc).__name__) from None
@@ -109,19 +112,62 @@ def _with_trimesh(path: Path) -> np.ndarray:
 def summarise(triangles: np.ndarray, with_mass: bool = False) -> MeshInfo:
     """Bounding box of ``(n, 3, 3)`` triangles, and their mass properties if asked."""
     if len(triangles) == 0:
-        zero = (0.0, 0.0, 0.0)
-        return MeshInfo(0, zero, zero, None, False if with_mass else None)
-    points = triangles.reshape(-1, 3)
+        return _empty(with_mass)
+    lower, upper = mesh_readers.bounds(triangles.reshape(-1, 3))
+    if not with_mass:
+        return MeshInfo(len(triangles), _xyz(lower), _xyz(upper))
+    return _with_mass(len(triangles), lower, upper, lambda: triangles,
+                      lambda size: _closed(_welded(triangles.reshape(-1, 3), size)
+                                           .reshape(-1, 3)))
+
+
+def summarise_indexed(vertices: np.ndarray, faces: np.ndarray,
+                      with_mass: bool = False) -> MeshInfo:
+    """:func:`summarise` of triangles given as rows ``faces`` (F, 3) of ``vertices`` (V, 3).
+
+    The same summary, from the vertices the faces use, each once: vertices no face uses
+    count for nothing, as they are not in the triangles.
+
+    Raises:
+        MeshError: A vertex a face uses has a NaN or infinite coordinate.
+    """
+    if len(faces) == 0:
+        return _empty(with_mass)
+    used = np.zeros(len(vertices), dtype=bool)
+    used[faces.ravel()] = True
+    points = vertices if used.all() else vertices[used]
+    if not np.all(np.isfinite(points)):
+        raise MeshError("vertices with NaN or infinite coordinates")
     lower, upper = mesh_readers.bounds(points)
-    size = float(np.abs(upper - lower).max())
-    if with_mass and not np.maximum(np.abs(lower), np.abs(upper)).max() <= LARGEST_COORDINATE:
-        return MeshInfo(len(triangles), _xyz(lower), _xyz(upper), None, False)
-    closed = _closed(triangles, size) if with_mass else None
-    mass = mass_properties(triangles) if closed else None
+    if not with_mass:
+        return MeshInfo(len(faces), _xyz(lower), _xyz(upper))
+    if points is not vertices:  # the faces as rows of the used vertices
+        faces = (np.cumsum(used) - 1)[faces]
+    return _with_mass(len(faces), lower, upper, lambda: points[faces],
+                      lambda size: _closed(_welded(points, size)[faces]))
+
+
+def _empty(with_mass: bool) -> MeshInfo:
+    zero = (0.0, 0.0, 0.0)
+    return MeshInfo(0, zero, zero, None, False if with_mass else None)
+
+
+def _with_mass(count: int, lower: np.ndarray, upper: np.ndarray,
+               triangles: Callable[[], np.ndarray], closed_at: Callable[[float], bool]
+               ) -> MeshInfo:
+    """The summary of ``count`` triangles, with their mass properties if closed.
+
+    ``closed_at(size)`` says whether the mesh is closed; only then are ``triangles()``
+    (n, 3, 3) made and measured.
+    """
+    if not np.maximum(np.abs(lower), np.abs(upper)).max() <= LARGEST_COORDINATE:
+        return MeshInfo(count, _xyz(lower), _xyz(upper), None, False)
+    closed = closed_at(float(np.abs(upper - lower).max()))
+    mass = mass_properties(triangles()) if closed else None
     if mass is not None and not (math.isfinite(mass.volume)
                                  and np.all(np.isfinite(mass.second_moment))):
         mass = None
-    return MeshInfo(len(triangles), _xyz(lower), _xyz(upper), mass, closed)
+    return MeshInfo(count, _xyz(lower), _xyz(upper), mass, closed)
 
 
 def mass_properties(triangles: np.ndarray) -> MassProperties:
@@ -150,14 +196,23 @@ def _xyz(values: np.ndarray) -> tuple[float, float, float]:
     return x, y, z
 
 
-def _closed(triangles: np.ndarray, size: float) -> bool:
-    """Every edge shared by exactly two triangles, after merging coincident vertices."""
+def _welded(points: np.ndarray, size: float) -> np.ndarray:
+    """An id per point (P, 3), equal for points that coincide within ``size * 1e-7``.
+
+    Ids count the distinct positions in sorted order, so the same positions get the same
+    ids whether each is given once (a vertex table) or once per corner.
+    """
     tolerance = max(size, 1e-12) * 1e-7
-    keys = np.round(triangles.reshape(-1, 3) / tolerance).astype(np.int64)
+    keys = np.round(points / tolerance).astype(np.int64)
     # One int64 per vertex position (a hash: a collision could only merge two far vertices)
     packed = keys[:, 0] * 73856093 + keys[:, 1] * 19349663 + keys[:, 2] * 83492791
     _, ids = np.unique(packed, return_inverse=True)
-    ids = ids.reshape(-1, 3)
+    welded: np.ndarray = ids.reshape(-1)
+    return welded
+
+
+def _closed(ids: np.ndarray) -> bool:
+    """Every edge of the triangles ``ids`` (n, 3) (welded vertex ids) shared by exactly two."""
     first, second = ids.T.ravel(), ids[:, [1, 2, 0]].T.ravel()  # each triangle's three edges
     low, high = np.minimum(first, second), np.maximum(first, second)
     edge = low != high

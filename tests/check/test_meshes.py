@@ -167,3 +167,53 @@ def test_collada_bounds_of_placed_and_scaled_parts_are_the_triangles_bounds(mete
     assert np.allclose(lower, expected[0], atol=1e-12)
     assert np.allclose(upper, expected[1], atol=1e-12)
     assert np.allclose(expected[1] - expected[0], np.array([5, 3, 3]) * abs(float(meter)))
+
+
+def _soup_and_indexed(text: bytes, with_mass: bool):
+    from servicebot_cli.check.mesh_readers import read_obj, read_obj_indexed
+    from servicebot_cli.check.meshes import summarise, summarise_indexed
+
+    return summarise(read_obj(text), with_mass), \
+        summarise_indexed(*read_obj_indexed(text), with_mass=with_mass)
+
+
+CUBE_OBJ = (b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+            b"f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n")
+
+
+@pytest.mark.parametrize("text", [
+    CUBE_OBJ,
+    CUBE_OBJ + b"v 9 9 9\n",
+    CUBE_OBJ.replace(b"f 4 1 5 8\n", b""),  # one face left out: open
+    CUBE_OBJ + b"v 0 0 0\nv 1 0 0\n",  # unused duplicates of used vertices
+], ids=["closed cube", "an unused vertex outside", "an open box", "unused duplicates"])
+def test_the_vertex_table_summary_is_the_triangles_summary(text):
+    """Closedness welded on the vertex table, bounds over the used vertices: the same
+    summary, to the bit, as from the triangles themselves."""
+    for with_mass in (False, True):
+        soup, indexed = _soup_and_indexed(text, with_mass)
+        assert (soup.triangles, soup.lower, soup.upper, soup.closed) == \
+            (indexed.triangles, indexed.lower, indexed.upper, indexed.closed)
+        assert (soup.mass is None) == (indexed.mass is None)
+        if soup.mass is not None:
+            assert soup.mass.volume == indexed.mass.volume
+            assert np.array_equal(soup.mass.second_moment, indexed.mass.second_moment)
+
+
+def test_a_vertex_no_face_uses_counts_for_nothing(tmp_path):
+    """Outside the bounds, and a NaN there is no error (it is in no triangle)."""
+    path = tmp_path / "cube.obj"
+    path.write_bytes(b"v 50 50 50\nv nan 0 0\n" + _shifted(CUBE_OBJ, 2))
+    info = load_mesh(path, with_mass=True)
+    assert (info.lower, info.upper, info.closed) == ((0.0, 0.0, 0.0), (1.0, 1.0, 1.0), True)
+    assert info.mass is not None and info.mass.volume == pytest.approx(1.0)
+
+
+def _shifted(text: bytes, by: int) -> bytes:
+    """An OBJ's face lines with every index raised by ``by``."""
+    lines = []
+    for line in text.splitlines():
+        if line.startswith(b"f "):
+            line = b"f " + b" ".join(str(int(i) + by).encode() for i in line.split()[1:])
+        lines.append(line)
+    return b"\n".join(lines) + b"\n"
