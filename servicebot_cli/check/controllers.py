@@ -20,6 +20,19 @@ if TYPE_CHECKING:
 TOLERANCE = 0.01
 """Relative difference allowed between the YAML and the URDF's wheel numbers."""
 
+ROS2_CONTROLLERS = frozenset((
+    "ackermann_steering_controller", "admittance_controller", "bicycle_steering_controller",
+    "diff_drive_controller", "effort_controllers", "force_torque_sensor_broadcaster",
+    "forward_command_controller", "gpio_controllers", "gripper_controllers",
+    "imu_sensor_broadcaster", "joint_state_broadcaster", "joint_trajectory_controller",
+    "mecanum_drive_controller", "omni_wheel_drive_controller", "parallel_gripper_controller",
+    "pid_controller", "pose_broadcaster", "position_controllers", "range_sensor_broadcaster",
+    "steering_controllers_library", "tricycle_controller", "tricycle_steering_controller",
+    "velocity_controllers",
+))
+"""The packages of ros-controls/ros2_controllers: their ``joint``/``joints`` name URDF joints."""
+_NAMESPACE_DEPTH = 3
+
 
 def check(text: str, display: str, robot: RobotDescription) -> Iterator[Issue]:
     """Every issue of the controllers YAML ``text`` (shown as ``display``) against ``robot``."""
@@ -37,23 +50,58 @@ def check(text: str, display: str, robot: RobotDescription) -> Iterator[Issue]:
                     where=(display, 1, 1))
         return
     checker = _Checker(display, robot, frozenset(sections))
+    types = _types(sections)
     for name, params in sections.items():
-        if name != "controller_manager":
+        if name != "controller_manager" and _names_joints(types.get(name)):
             yield from checker.section(name, params)
 
 
-def _sections(root: yaml.Node | None) -> dict[str, yaml.MappingNode]:
+def _sections(root: yaml.Node | None, depth: int = 0) -> dict[str, yaml.MappingNode]:
+    """Each node's ``ros__parameters`` by node name.
+
+    A node may sit under namespaces, as ROS 2 parameter files allow: ``/**:`` (any
+    namespace, as irobot_create_control's ``control.yaml``) or ``robot1:`` above the node's
+    own key. A node keyed by a path (``/robot1/controller_manager``) is named by its last part.
+    """
     found: dict[str, yaml.MappingNode] = {}
-    if not isinstance(root, yaml.MappingNode):
+    if not isinstance(root, yaml.MappingNode) or depth > _NAMESPACE_DEPTH:
         return found
     for key, value in root.value:
         params = _get(value, "ros__parameters")
         if isinstance(params, yaml.MappingNode):
-            found[str(key.value)] = params
+            found[str(key.value).rstrip("/").rpartition("/")[2]] = params
+        elif isinstance(value, yaml.MappingNode):
+            for name, inner in _sections(value, depth + 1).items():
+                found.setdefault(name, inner)
     return found
 
 
-def _get(node: yaml.Node, key: str) -> yaml.Node | None:
+def _types(sections: dict[str, yaml.MappingNode]) -> dict[str, str]:
+    """Each controller's ``type`` (``package/Class``), by controller name.
+
+    Declared in ``controller_manager``'s parameters, or in the controller's own (ros2_control
+    since Jazzy).
+    """
+    types: dict[str, str] = {}
+    manager = sections.get("controller_manager")
+    for name, params in sections.items():
+        for node in (_get(_get(manager, name), "type"), _get(params, "type")):
+            if isinstance(node, yaml.ScalarNode) and node.value:
+                types[name] = str(node.value)
+    return types
+
+
+def _names_joints(controller_type: str | None) -> bool:
+    """Whether a controller's ``joint``/``joints`` are URDF joint names, as far as known.
+
+    True for a ros2_controllers type and for a controller whose type the file does not say.
+    A third party's controller is not checked: Kortex's twist controller takes
+    ``joint: tcp``, the prefix of interfaces its hardware exports, not a URDF joint.
+    """
+    return controller_type is None or controller_type.partition("/")[0] in ROS2_CONTROLLERS
+
+
+def _get(node: yaml.Node | None, key: str) -> yaml.Node | None:
     if isinstance(node, yaml.MappingNode):
         for k, v in node.value:
             if isinstance(k, yaml.ScalarNode) and k.value == key:
