@@ -16,10 +16,10 @@ import numpy as np
 import orjson
 
 _BLANKS_TO_COMMAS = bytes.maketrans(b" \t\n\r\f\v", b",,,,,,")
-# what JSON reads in an array besides numbers (true, false, null, strings, nesting): one of
-# these characters is in each; index lists take no fraction or exponent either
-_NOT_FLOATS = (b"t", b"f", b"n", b'"', b"[", b"{")
-_NOT_INTS = (*_NOT_FLOATS, b".", b"e", b"E")
+# what a list JSON may read as numpy does holds only these (JSON's strings, literals and
+# nesting need others); index lists take no fraction or exponent either
+_FLOAT_CHARS = b"0123456789.eE+-,"
+_INT_CHARS = b"0123456789+-,"
 
 
 class NumberListError(ValueError):
@@ -46,26 +46,34 @@ def numbers(text: str | bytes | None, dtype: type = np.float64) -> np.ndarray:
 
 
 def _as_json(text: str | bytes, dtype: type) -> np.ndarray | None:
-    """``text`` read as a JSON array, or None when JSON would read it otherwise than numpy."""
+    """``text`` read as a JSON array, or None when JSON would read it otherwise than numpy.
+
+    What JSON refuses (a sign or a point JSON does not write: ``+1``, ``.5``, ``1.``;
+    ``01``, ``nan``) goes to numpy; so do blank runs, once joined, if JSON then refuses.
+    """
     try:
         data = text.encode("ascii") if isinstance(text, str) else text
     except UnicodeEncodeError:
         return None
     if b"," in data:
-        return None
+        return None  # a comma is no separator to numpy
     data = data.strip().translate(_BLANKS_TO_COMMAS)
-    while b",," in data:
-        data = data.replace(b",,", b",")
-    if any(c in data for c in (_NOT_FLOATS if dtype is np.float64 else _NOT_INTS)):
+    if data.translate(None, _FLOAT_CHARS if dtype is np.float64 else _INT_CHARS):
         return None  # JSON's strings, literals and nesting; a float where indices are wanted
-    if b",+" in data or data.startswith(b"+"):
-        return None  # a sign before a number is not JSON
-    if b"-0," in data or data.endswith(b"-0"):
-        return None  # JSON reads "-0" as the integer 0, numpy as -0.0
     try:
-        values = orjson.loads(b"[" + data + b"]")
+        try:
+            values = orjson.loads(b"[" + data + b"]")
+        except orjson.JSONDecodeError:
+            if b",," not in data:
+                return None
+            while b",," in data:  # blank runs: one separator each
+                data = data.replace(b",,", b",")
+            values = orjson.loads(b"[" + data + b"]")
         if dtype is np.float64:
-            return np.fromiter(values, dtype=dtype, count=len(values))
+            floats = np.fromiter(values, dtype=dtype, count=len(values))
+            if (floats == 0).any() and (b"-0," in data or data.endswith(b"-0")):
+                return None  # JSON reads "-0" as the integer 0, numpy as -0.0
+            return floats
         indices = np.array(values)  # int64 unless orjson made a float of an integer below
         return indices if indices.dtype == np.int64 else None  # -2**63 (or uint64 above)
     except (orjson.JSONDecodeError, OverflowError, ValueError, TypeError):
