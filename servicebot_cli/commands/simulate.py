@@ -143,6 +143,8 @@ def simulate(robot_args: RobotArgs, scenario_file: str | None, headless: bool,
 
     keep_freed_memory()  # this process is the run's: its temporaries reuse the heap's pages
     report = session.run(request, stderr=sys.stderr)
+    for note in report.notes:
+        click.echo(note, err=True)
     show_simulation(report, fmt)
     if report.live_track is not None:  # gathered for the live window (not --headless)
         from servicebot_cli.simulate.files.live import show

@@ -150,7 +150,7 @@ def _shape(robot: RobotDescription, arm_joints: tuple[str, ...],
 
         reader = link_mesh_reader(resolver, robot.path.parent)
     shape = robot_shape(robot, arm_joints, reader)
-    if not any(p.link == shape.root for p in shape.parts):
+    if not shape.fixed().any():
         skipped = next((s for s in shape.skipped if s.startswith(f"{shape.root}:")), None)
         raise DescriptionError(
             f"{robot.display}: the base has no collision shape the simulator can use"

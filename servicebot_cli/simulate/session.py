@@ -100,6 +100,7 @@ class SimulateReport:
     result: SimResult | None = None
     unmet: tuple[tuple[Expectation, float | None], ...] = ()
     live_track: LiveTrack | None = None
+    notes: tuple[str, ...] = ()
 
     @property
     def real_time_factor(self) -> float:
@@ -129,6 +130,9 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
 
     disabled = robot_disabled_pairs(request.srdf, robot)
     scenario = with_overrides(load_scenario(request.scenario_file), request.overrides)
+    notes: tuple[str, ...] = ()
+    if request.scenario_file is None:
+        scenario, notes = default_arm_for(scenario, robot)
     problem = ""
     if request.live_window:  # the window's module brings the plot's, not needed headless
         from servicebot_cli.simulate.files.live import display_problem
@@ -145,7 +149,28 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
                            check_points=not request.allow_collisions)
     unmet = tuple((e, e.value(report.summary)) for e in request.expectations
                   if not e.holds(report.summary))
-    return dataclasses.replace(report, unmet=unmet)
+    return dataclasses.replace(report, unmet=unmet, notes=notes)
+
+
+def default_arm_for(scenario: Scenario,
+                    robot: RobotDescription) -> tuple[Scenario, tuple[str, ...]]:
+    """The built-in scenario without its arm goal when ``robot`` lacks the bundled arm's joints.
+
+    The built-in scenario moves the bundled robot's arm; another robot is driven by the same
+    ``cmd_vel`` with its joints held, and a note says so (a scenario file of its own can move
+    them). Returns the scenario and the notes for stderr.
+    """
+    movable = {j.name for j in robot.movable_joints}
+    missing = [n for n in scenario.arm.joint_names if n not in movable]
+    if not missing:
+        return scenario, ()
+    from servicebot_cli.simulate.scenario.definition import ArmTrajectory
+
+    name = robot.name or "this robot"
+    note = (f"note: the built-in scenario moves the bundled robot's arm; {name} has no joint "
+            f"'{missing[0]}', so its joints hold still (to move them, write a scenario from "
+            "'servicebot simulate --print-scenario' and give it with -s)")
+    return dataclasses.replace(scenario, arm=ArmTrajectory()), (note,)
 
 
 def with_overrides(scenario: Scenario, overrides: Overrides) -> Scenario:

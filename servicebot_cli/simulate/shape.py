@@ -148,7 +148,7 @@ class RobotShape:
 
         A link no joint moves is one matrix broadcast to every row (a zero first stride).
         """
-        q = np.asarray(q, dtype=float).reshape(-1, len(self.joints))
+        q = configuration_rows(q, len(self.joints))
         links = {self.root: np.broadcast_to(np.eye(4), (len(q), 4, 4))}
         for link, parent, origin, joint in self.steps:
             before = links[parent]
@@ -160,6 +160,15 @@ class RobotShape:
                 placed = placed @ joint_motions(joint, q[:, self.joints.index(joint.name)])
             links[link] = placed
         return links
+
+
+def configuration_rows(q: FloatArray, joints: int) -> FloatArray:
+    """``q`` as rows of ``joints`` positions, shape (P, joints).
+
+    A robot with no arm has rows of no positions, (P, 0), which ``reshape(-1, 0)`` cannot size.
+    """
+    q = np.asarray(q, dtype=np.float64)
+    return q.reshape(len(q) if q.ndim == 2 else -1, joints)
 
 
 def _each_times(stack: FloatArray, matrix: FloatArray) -> FloatArray:

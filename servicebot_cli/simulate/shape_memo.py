@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.simulate.shape import RobotShape
+from servicebot_cli.simulate.shape import RobotShape, configuration_rows
 
 FloatArray = npt.NDArray[np.float64]
 UIntArray = npt.NDArray[np.uint64]
@@ -39,7 +39,7 @@ class TransformMemo:
 
     def __call__(self, q: FloatArray) -> FloatArray:
         """``transform_part_to_base`` of every part at each row of ``q`` (P, J): (P, S, 4, 4)."""
-        q = np.ascontiguousarray(q, dtype=np.float64).reshape(-1, len(self.shape.joints))
+        q = np.ascontiguousarray(configuration_rows(q, len(self.shape.joints)))
         bits = q.view(np.uint64)
         if not self._batches:
             out, _ = self._make(q, bits)

@@ -170,6 +170,9 @@ def _draw_arm(ax: Axes, track: Track) -> None:
     ax.set_ylabel("joint angle [rad]")
     ax.set_title("arm joints")
     ax.grid(True, linewidth=0.3, alpha=0.6)
+    if not track.body.arm_joints:  # an empty legend is a matplotlib warning on stderr
+        ax.text(0.5, 0.5, "no arm joints", ha="center", va="center", transform=ax.transAxes)
+        return
     ax.legend(loc="best", fontsize=7)
 
 

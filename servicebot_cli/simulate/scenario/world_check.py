@@ -100,7 +100,9 @@ def _check_arm(body: SimRobot, scenario: Scenario) -> FloatArray:
         if name not in body.arm_joints:
             wheel = name in {w.joint for w in body.geometry.wheels}
             reason = ("is a wheel; wheels follow cmd_vel" if wheel else
-                      str(NameNotFound.for_name(name, body.arm_joints)).replace("no name ", ""))
+                      str(NameNotFound.for_name(name, body.arm_joints)).replace("no name ", "")
+                      if body.arm_joints else f"'{name}'; {body.robot.name or 'the robot'} has no "
+                      "movable joints but its wheels (leave out arm:)")
             raise _error(scenario, ("arm", "joint_names", i), f"'{name}' {reason}"
                          if wheel else f"unknown arm joint: {reason}")
     for p, point in enumerate(trajectory.points):
