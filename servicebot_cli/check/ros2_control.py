@@ -67,8 +67,13 @@ def _twice(item: ControlJoint, block: Ros2Control,
 
 
 def _hardware(block: Ros2Control) -> Iterator[Issue]:
+    """SB510: a serial port that is not a device path, a baud rate that is not standard.
+
+    A ``port`` that is a number is a network one (ros2_kortex's ``<param name="port">10000``,
+    beside ``robot_ip``), not a serial device.
+    """
     for key, value in block.hardware_params:
-        if key in _PORT_KEYS and not _PORT_RE.fullmatch(value):
+        if key in _PORT_KEYS and not value.strip().isdigit() and not _PORT_RE.fullmatch(value):
             yield Issue("SB510", f"ros2_control '{block.name}': {key} '{value}' is not a serial "
                         "device path", block.element, fix=f"e.g. <param name=\"{key}\">"
                         "/dev/ttyUSB0</param>")

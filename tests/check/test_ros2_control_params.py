@@ -1,0 +1,26 @@
+"""Hardware parameters of real ros2_control blocks that are right as written."""
+
+from __future__ import annotations
+
+from tests.check.helpers import findings, fixture
+
+
+def _sb510(run, tmp_path, port: str) -> list[str]:
+    text = fixture("SB510").read_text().replace(
+        '<param name="port">ttyUSB0</param>', f'<param name="port">{port}</param>').replace(
+        '<param name="baud_rate">9601</param>', '<param name="baud_rate">115200</param>')
+    path = tmp_path / "robot.urdf"
+    path.write_text(text)
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB510")
+    return [str(f["message"]) for f in findings(result.stdout)]
+
+
+def test_a_numeric_port_is_a_network_port_not_a_serial_device(run, tmp_path):
+    # ros2_kortex's KortexMultiInterfaceHardware: robot_ip, port 10000, port_realtime 10001
+    assert _sb510(run, tmp_path, "10000") == []
+
+
+def test_a_serial_device_without_its_directory_is_still_flagged(run, tmp_path):
+    assert _sb510(run, tmp_path, "/dev/ttyUSB0") == []
+    (message,) = _sb510(run, tmp_path, "ttyUSB0")
+    assert "port 'ttyUSB0' is not a serial device path" in message
