@@ -90,17 +90,21 @@ def drive_geometry(robot: RobotDescription) -> DriveGeometry:
         DescriptionError: Fewer than one wheel on either side, naming what was found.
     """
     world = _link_transforms(robot)
-    wheels = []
+    wheels: list[Wheel] = []
+    left_out: dict[str, list[str]] = {}
     for joint in robot.joints:
         wheel = _as_wheel(robot, joint, world)
-        if wheel is not None:
+        if isinstance(wheel, Wheel):
             wheels.append(wheel)
+        elif wheel is not None:
+            left_out.setdefault(wheel, []).append(joint.name)
     sides = {side: [w for w in wheels if w.side == side] for side in ("left", "right")}
     if not sides["left"] or not sides["right"]:
         found = ", ".join(f"{w.joint} ({w.side})" for w in wheels) or "none"
         raise DescriptionError(
             f"{robot.display}: not a differential drive: needs continuous wheel joints on both "
-            f"sides with a cylinder about the joint axis (found: {found})"
+            f"sides with a cylinder about the joint axis (found: {found}); "
+            + _why_not_wheels(robot, left_out)
         )
     left_y = np.mean([w.position_m[1] for w in sides["left"]])
     right_y = np.mean([w.position_m[1] for w in sides["right"]])
@@ -112,12 +116,24 @@ def drive_geometry(robot: RobotDescription) -> DriveGeometry:
     )
 
 
+def _why_not_wheels(robot: RobotDescription, left_out: dict[str, list[str]]) -> str:
+    """Why the continuous joints are not wheels, joints grouped by reason (three at most)."""
+    if not left_out:
+        return "it has no continuous joint" if not any(
+            j.type == "continuous" for j in robot.joints) else "no other continuous joint is one"
+    reasons = [f"{', '.join(joints)} {'turns' if len(joints) == 1 else 'turn'} {reason}"
+               for reason, joints in left_out.items()]
+    return "; ".join(reasons[:3]) + ("; ..." if len(reasons) > 3 else "")
+
+
 def _link_transforms(robot: RobotDescription) -> dict[str, np.ndarray]:
     """Pose of every reachable link in the root frame at the zero configuration."""
     return link_transforms(robot)
 
 
-def _as_wheel(robot: RobotDescription, joint: Joint, world: dict[str, np.ndarray]) -> Wheel | None:
+def _as_wheel(robot: RobotDescription, joint: Joint,
+              world: dict[str, np.ndarray]) -> Wheel | str | None:
+    """The wheel ``joint`` drives; why it is not one (a continuous joint); or None."""
     if joint.type != "continuous" or joint.child not in world or joint.parent not in world:
         return None
     link = robot.link(joint.child)
@@ -125,17 +141,20 @@ def _as_wheel(robot: RobotDescription, joint: Joint, world: dict[str, np.ndarray
         (s for s in (*link.collisions, *link.visuals) if s.geometry.kind == "cylinder"), None
     )
     if cylinder is None or not cylinder.geometry.radius:
-        return None
+        return (f"but link '{link.name}' has no <cylinder> collision or visual to take its "
+                "radius from")
     axis = np.array(joint.axis, dtype=float)
     if not np.all(np.isfinite(axis)) or np.linalg.norm(axis) == 0:
-        return None
+        return "about a zero axis"
     axis /= np.linalg.norm(axis)
     if abs(float(axis @ _cylinder_axis(cylinder))) < _PARALLEL:
-        return None
+        return f"about an axis that is not the axis of the cylinder on '{link.name}'"
     transform = world[joint.child]
     axis_in_root = transform[:3, :3] @ axis
     if abs(axis_in_root[1]) < _PARALLEL:
-        return None
+        shown = " ".join(f"{v:.3g}" for v in np.round(axis_in_root, 3) + 0.0)
+        return (f"about ({shown}) in {robot.root_link}, not across the robot (its y, with x "
+                "forward as REP 103 has it)")
     position = transform[:3, 3]
     limit = joint.limits.velocity if joint.limits and joint.limits.velocity else math.inf
     return Wheel(

@@ -1,0 +1,43 @@
+"""A robot that is not a differential drive is refused with the reason for each joint.
+
+Real descriptions: r2d2 (pybullet_data) rolls along its y, so its wheels turn about x; the
+ros2_control_demos rrbot's continuous joints carry boxes; the FANUC arm has no continuous joint.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from tests.conftest import REPO, assert_one_line_error, run_servicebot
+
+SRC = REPO / "tests" / "realworld" / "ws" / "src"
+NO_ROS = {"ROS_PACKAGE_PATH": "", "AMENT_PREFIX_PATH": ""}
+
+
+def _refusal(path: Path) -> str:
+    result = run_servicebot("simulate", path, "--headless", env=NO_ROS)
+    line = assert_one_line_error(result, 2, "not a differential drive", "(found: none); ")
+    return line.split("(found: none); ", 1)[1]
+
+
+def test_wheels_turning_about_x_are_named_with_their_axis():
+    pybullet_data = pytest.importorskip("pybullet_data")
+    why = _refusal(Path(pybullet_data.getDataPath()) / "r2d2.urdf")
+    assert why.startswith("right_front_wheel_joint, right_back_wheel_joint, "
+                          "left_front_wheel_joint, left_back_wheel_joint turn about (1 0 0) in "
+                          "base_link, not across the robot (its y")
+    assert "head_swivel turns but link 'head' has no <cylinder>" in why
+
+
+def test_continuous_joints_without_a_cylinder_are_named_with_their_link():
+    why = _refusal(SRC / "example_1" / "description" / "urdf" / "rrbot.urdf.xacro")
+    assert why == ("joint1 turns but link 'link1' has no <cylinder> collision or visual to take "
+                   "its radius from; joint2 turns but link 'link2' has no <cylinder> collision "
+                   "or visual to take its radius from")
+
+
+def test_an_arm_without_continuous_joints_says_so():
+    assert _refusal(SRC / "fanuc_description" / "urdf" / "fanuc.urdf") == \
+        "it has no continuous joint"
