@@ -9,8 +9,11 @@ what it said before, and entity expansion keeps expat's limits.
 
 from __future__ import annotations
 
+import re
 import xml.etree.ElementTree as ET
 from typing import cast
+
+_ELEMENT_START = re.compile(rb"<[A-Za-z_:]")
 
 
 class ColladaXmlError(ValueError):
@@ -34,7 +37,11 @@ def parse_collada(data: bytes) -> ET.Element:
 
 def _with_lxml(data: bytes) -> ET.Element | None:
     """The tree lxml builds (ElementTree's interface), or None when it is not sure of it."""
-    if b"<!DOCTYPE" in data:
+    start = _ELEMENT_START.search(data)  # a DOCTYPE stands before the root element,
+    prolog = data[:start.start()] if start else data
+    if b"<!--" in prolog or b"<![CDATA[" in prolog:  # unless that "<a" was in a comment
+        prolog = data
+    if b"<!DOCTYPE" in prolog:
         return None
     try:
         from lxml import etree

@@ -75,3 +75,15 @@ def test_malformed_collada_says_what_elementtree_says(tmp_path):
     path.write_text("<COLLADA><library_geometries></COLLADA>")
     with pytest.raises(MeshError, match=r"not well-formed XML: mismatched tag: line 1, column 31"):
         load_mesh(path)
+
+
+@pytest.mark.parametrize("before", ["", "<!-- <a> -->\n", "<!-- a comment -->\n"])
+def test_a_doctype_after_a_comment_still_goes_to_elementtree(before):
+    """Only the prolog is searched for a DOCTYPE; an element-like comment there widens it."""
+    from servicebot_cli.check.collada_xml import _with_lxml
+
+    text = (f'<?xml version="1.0"?>\n{before}<!DOCTYPE COLLADA [<!ENTITY n "1 2 3">]>\n'
+            '<COLLADA><float_array>&n;</float_array></COLLADA>').encode()
+    assert _with_lxml(text) is None
+    assert _with_lxml(text.replace(b"<!DOCTYPE COLLADA [<!ENTITY n \"1 2 3\">]>\n", b"")
+                      .replace(b"&n;", b"1 2 3")) is not None
