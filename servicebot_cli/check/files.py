@@ -1,8 +1,11 @@
 """Which files ``check urdf`` reads: the ones given, and robot files found in directories.
 
 In a directory, a xacro include is checked through the files that include it, not alone: a
-file that only defines macros or has an unnamed ``<robot>``, and a file another robot file
-of the same walk includes (``turtlebot3_burger.gazebo.xacro``, ``common_properties.xacro``).
+file that only defines macros or properties, a robot file with an unnamed ``<robot>``
+(husky's ``empty.urdf``, the default of ``$(optenv HUSKY_URDF_EXTRAS empty.urdf)``), a
+xacro file whose root is not ``<robot>`` (PR2's ``<root xmlns:xacro=...>`` sensors), and a
+file another robot file of the same walk includes (``turtlebot3_burger.gazebo.xacro``,
+``common_properties.xacro``). MoveIt's ``*.srdf.xacro`` are semantic descriptions, not URDF.
 """
 
 from __future__ import annotations
@@ -16,8 +19,10 @@ from servicebot_cli.description.install_layout import installed_source
 from servicebot_cli.description.packages import holding_package
 
 SUFFIXES = (".urdf", ".urdf.xml", ".xacro")
+NOT_URDF_SUFFIXES = (".srdf.xacro",)
 SKIPPED_DIRS = {"build", "install", "log", "node_modules", "__pycache__", "site-packages"}
 _ROBOT_TAG = re.compile(rb"<robot\b[^>]*>", re.DOTALL)
+_XACRO_ROOT = re.compile(rb"<[\w.:-]+\b[^>]*\bxmlns:xacro\s*=", re.DOTALL)
 _MACRO_BLOCK = re.compile(rb"<xacro:macro\b.*?</xacro:macro>", re.DOTALL)
 _COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
 _CONTENT = re.compile(rb"<(?:link|joint|xacro:(?!include\b|property\b|arg\b|macro\b)[\w.-]+)\b")
@@ -27,31 +32,39 @@ _HEAD_BYTES = 1 << 20
 
 
 def is_robot_file(path: Path) -> bool:
-    """True for ``*.urdf``, ``*.urdf.xml`` and ``*.xacro`` names."""
-    return path.name.lower().endswith(SUFFIXES)
+    """True for ``*.urdf``, ``*.urdf.xml`` and ``*.xacro`` names, but not ``*.srdf.xacro``."""
+    name = path.name.lower()
+    return name.endswith(SUFFIXES) and not name.endswith(NOT_URDF_SUFFIXES)
 
 
 def is_fragment(path: Path) -> bool:
-    """True for a xacro include, checked through the files that include it.
+    """True for an include, checked through the files that include it.
 
-    Its ``<robot>`` has no name, or it only defines macros: no link, joint or macro call
-    outside its ``<xacro:macro>`` definitions (a macro library such as ``panda_arm.xacro``).
+    Its ``<robot>`` has no name (in a ``.urdf``: and it has no link, or holds xacro elements,
+    so a robot that only lacks its name is still checked); or it is a xacro file whose root
+    is another element that declares the xacro namespace; or a xacro file that only defines
+    macros or properties: no link, joint or macro call outside its ``<xacro:macro>``
+    definitions (a macro library such as ``panda_arm.xacro``, kobuki's
+    ``common_properties.urdf.xacro``), and, when it defines no macro, no include either
+    (``robot.urdf.xacro`` may only include its parts).
     """
-    if path.suffix != ".xacro":
-        return False
     try:
         with path.open("rb") as handle:
-            head = handle.read(_HEAD_BYTES)
+            head = _COMMENT.sub(b"", handle.read(_HEAD_BYTES))
     except OSError:
         return False  # reading it again will report the problem
     match = _ROBOT_TAG.search(head)
+    xacro = path.suffix == ".xacro"
     if match is None:
-        return False
+        return xacro and _XACRO_ROOT.search(head) is not None
     if b"name=" not in match.group(0):
-        return True
-    text = _COMMENT.sub(b"", head)
-    outside = _MACRO_BLOCK.sub(b"", text)
-    return outside != text and _CONTENT.search(outside) is None
+        return xacro or b"<link" not in head or b"<xacro:" in head
+    if not xacro:
+        return False
+    outside = _MACRO_BLOCK.sub(b"", head)
+    if _CONTENT.search(outside) is not None:
+        return False
+    return outside != head or _INCLUDE.search(head) is None
 
 
 def walk(directory: Path) -> Iterator[Path]:

@@ -1,0 +1,72 @@
+"""A directory walk leaves out includes laid out as real description packages lay them out."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from servicebot_cli.check.files import walk
+
+XACRO_NS = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
+ROBOT = f'<robot name="r" {XACRO_NS}><link name="base"/></robot>'
+
+
+def _walked(directory: Path, files: dict[str, str]) -> list[str]:
+    for name, text in files.items():
+        (directory / name).parent.mkdir(parents=True, exist_ok=True)
+        (directory / name).write_text(text)
+    return [p.relative_to(directory).as_posix() for p in walk(directory)]
+
+
+def test_an_unnamed_urdf_placeholder_or_xacro_snippet_is_an_include(tmp_path):
+    # husky's empty.urdf, the default of $(optenv HUSKY_URDF_EXTRAS empty.urdf), and
+    # jackal's custom_example.urdf: macro calls and joints for JACKAL_URDF_EXTRAS
+    walked = _walked(tmp_path, {
+        "robot.urdf": ROBOT,
+        "empty.urdf": "<robot>\n  <!-- placeholder -->\n</robot>\n",
+        "custom_example.urdf": '<robot><xacro:camera_mount prefix="front"/><joint name="j" '
+                               'type="fixed"><parent link="a"/><child link="b"/></joint></robot>',
+        "no_name.urdf": '<robot><link name="base"/></robot>',
+    })
+    # a plain URDF that only lacks its name is still checked: SB009 tells it
+    assert walked == ["no_name.urdf", "robot.urdf"]
+
+
+def test_a_xacro_of_properties_only_is_an_include(tmp_path):
+    # kobuki's common_properties.urdf.xacro: a named <robot> with properties and no link
+    walked = _walked(tmp_path, {
+        "common_properties.urdf.xacro": f'<robot name="xacro_properties" {XACRO_NS}>'
+        '<xacro:property name="M_PI" value="3.14159"/><xacro:property name="white">'
+        '<material name="white"><color rgba="1 1 1 1"/></material></xacro:property></robot>',
+        "kobuki.urdf.xacro": ROBOT,
+    })
+    assert walked == ["kobuki.urdf.xacro"]
+
+
+def test_a_robot_file_that_only_includes_its_parts_is_still_a_robot(tmp_path):
+    # articubot_one's robot.urdf.xacro includes robot_core.xacro, which holds the links
+    walked = _walked(tmp_path, {
+        "robot.urdf.xacro": f'<robot name="robot" {XACRO_NS}><xacro:arg name="sim" '
+        'default="false"/><xacro:include filename="$(arg parts)"/></robot>',
+    })
+    assert walked == ["robot.urdf.xacro"]
+
+
+def test_a_xacro_with_another_root_is_an_include(tmp_path):
+    # PR2's sensors/prosilica_gc2450_camera.urdf.xacro: <root xmlns:xacro=...> holding a macro
+    walked = _walked(tmp_path, {
+        "camera.urdf.xacro": f'<?xml version="1.0"?>\n<root {XACRO_NS}><xacro:macro '
+        'name="cam" params="parent"><link name="cam"/></xacro:macro></root>',
+        "world.xacro": '<sdf version="1.6"><world name="w"/></sdf>',
+        "robot.urdf.xacro": ROBOT,
+    })
+    # a xacro file that is not a robot and not a xacro include is still checked (SB008)
+    assert walked == ["robot.urdf.xacro", "world.xacro"]
+
+
+def test_moveit_srdf_xacro_is_not_a_urdf(tmp_path):
+    walked = _walked(tmp_path, {
+        "panda_arm.srdf.xacro": f'<robot name="panda" {XACRO_NS}><group name="arm">'
+        '<chain base_link="l0" tip_link="l8"/></group></robot>',
+        "panda.urdf.xacro": ROBOT,
+    })
+    assert walked == ["panda.urdf.xacro"]
