@@ -134,12 +134,24 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
 
 def _mount(robot: RobotDescription, types: tuple[str, ...], read: Callable[[Sensor], SpecT],
            placement: Placement) -> Mounted[SpecT] | None:
-    sensor = next((s for s in robot.sensors if s.type in types and s.reference), None)
-    if sensor is None or sensor.reference is None:
+    """The first sensor of ``types``; of ray sensors, the one with the most rays.
+
+    A Create 3 base (TurtleBot 4) declares one-ray cliff and IR sensors before its LIDAR.
+    """
+    found = [s for s in robot.sensors if s.type in types and s.reference]
+    if not found:
+        return None
+    sensor = max(found, key=_rays) if types == LIDAR_TYPES else found[0]
+    if sensor.reference is None:
         return None
     robot.require_frame(sensor.reference)
     transform = placement(sensor.reference) @ pose_matrix(sensor.pose)
     return Mounted(read(sensor), transform, sensor.reference)
+
+
+def _rays(sensor: Sensor) -> int:
+    """Horizontal rays of a ray sensor (0 when it does not say)."""
+    return lidar_spec(sensor).samples or 0
 
 
 def _shape(robot: RobotDescription, arm_joints: tuple[str, ...],

@@ -63,6 +63,8 @@ class Layout:
         self.constant("<I", count)
         if count:
             self.field(name, fmt, count)
+            fmt, offset, _ = self.fields[name]
+            self.fields[name] = (fmt, offset, (count,))  # one element too: a (1,) array per row
 
     def header(self, frame_id: str) -> None:
         """A ``std_msgs/Header``: fields ``sec`` and ``nanosec``, constant ``frame_id``."""
