@@ -142,7 +142,13 @@ def _attributes(element: ET.Element, allowed: dict[str, int],
 
 
 def _number(element: ET.Element, key: str, value: str, count: int) -> Iterator[Issue]:
-    parts = [value] if count == 1 else value.split()
+    """SB013/SB014 for an attribute of ``count`` numbers.
+
+    A single number may have blanks before it, not after: urdfdom reads it with
+    ``istringstream >> double`` and then wants the stream at its end (unitree's R1.urdf has
+    ``izz=" 9e-06"``, which it loads).
+    """
+    parts = [value.lstrip()] if count == 1 else value.split()
     where = f"<{element.tag}{_named(element)} {key}=\"{value}\">"
     if len(parts) != count:
         yield Issue("SB013", f"{where}: expected {count} numbers, found {len(parts)}", element)

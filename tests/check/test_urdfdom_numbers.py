@@ -1,0 +1,43 @@
+"""Numbers written as real URDFs write them, judged as urdfdom (check_urdf) judges them."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from tests.check.corpus import check_urdf_drops
+from tests.check.helpers import findings
+
+LINK = """<robot name="r">
+  <link name="base">
+    <inertial>
+      <mass value="1"/>
+      <inertia ixx="1e-05" ixy="0" ixz="0" iyy="1e-05" iyz="0" izz="{izz}"/>
+    </inertial>
+  </link>
+</robot>
+"""
+
+
+def _write(tmp_path: Path, izz: str) -> Path:
+    path = tmp_path / "robot.urdf"
+    path.write_text(LINK.format(izz=izz))
+    return path
+
+
+@pytest.mark.parametrize("izz", [" 9e-06", "\t9e-06", "9e-06"])
+def test_blanks_before_a_number_are_read_as_urdfdom_reads_them(run, tmp_path, izz):
+    # unitree_ros' r1_description/R1.urdf: izz=" 9e-06"; urdfdom's istream skips the blank
+    path = _write(tmp_path, izz)
+    assert not check_urdf_drops(path)
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB01")
+    assert findings(result.stdout) == [] and result.exit_code == 0
+
+
+def test_blanks_after_a_number_are_refused_as_urdfdom_refuses_them(run, tmp_path):
+    # unitree_ros' dex2_5/Left_Hand.urdf: ixz="-0.00000000003261 "; urdfdom drops the inertial
+    path = _write(tmp_path, "9e-06 ")
+    assert check_urdf_drops(path)
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB01")
+    assert [f["code"] for f in findings(result.stdout)] == ["SB013"]
