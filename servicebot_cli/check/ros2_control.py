@@ -23,6 +23,9 @@ BAUD_RATES = (50, 75, 110, 134, 150, 200, 300, 600, 1200, 1800, 2400, 4800, 9600
               2000000, 2500000, 3000000, 3500000, 4000000)
 _PORT_KEYS = ("port", "serial_port", "device", "serial_device", "usb_port", "port_name")
 _BAUD_KEYS = ("baud_rate", "baudrate", "baud")
+CUSTOM_BAUD_FROM = 1_000_000
+"""From 1 Mbaud, USB-serial adapters (FTDI, ROBOTIS' U2D2) take any rate: Dynamixel buses run
+at 4.5, 6.25 (open_manipulator's OMY arms) or 10.5 Mbaud."""
 _PORT_RE = re.compile(r"(/dev/\S+|COM\d+|(socket|rfc2217|loop|spy|hwgrep)://\S*)")
 
 
@@ -70,17 +73,22 @@ def _hardware(block: Ros2Control) -> Iterator[Issue]:
     """SB510: a serial port that is not a device path, a baud rate that is not standard.
 
     A ``port`` that is a number is a network one (ros2_kortex's ``<param name="port">10000``,
-    beside ``robot_ip``), not a serial device.
+    beside ``robot_ip``), not a serial device. Rates from :data:`CUSTOM_BAUD_FROM` are not
+    judged.
     """
     for key, value in block.hardware_params:
         if key in _PORT_KEYS and not value.strip().isdigit() and not _PORT_RE.fullmatch(value):
             yield Issue("SB510", f"ros2_control '{block.name}': {key} '{value}' is not a serial "
                         "device path", block.element, fix=f"e.g. <param name=\"{key}\">"
                         "/dev/ttyUSB0</param>")
-        if key in _BAUD_KEYS and not (value.isdigit() and int(value) in BAUD_RATES):
+        if key in _BAUD_KEYS and not _is_baud_rate(value.strip()):
             yield Issue("SB510", f"ros2_control '{block.name}': {key} '{value}' is not a standard "
                         "baud rate", block.element,
                         fix="use one of 9600, 19200, 38400, 57600, 115200, ...")
+
+
+def _is_baud_rate(value: str) -> bool:
+    return value.isdigit() and (int(value) in BAUD_RATES or int(value) >= CUSTOM_BAUD_FROM)
 
 
 def _joint(item: ControlJoint, joints: dict[str, Joint], block: Ros2Control) -> Iterator[Issue]:

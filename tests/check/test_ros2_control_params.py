@@ -5,10 +5,10 @@ from __future__ import annotations
 from tests.check.helpers import findings, fixture
 
 
-def _sb510(run, tmp_path, port: str) -> list[str]:
+def _sb510(run, tmp_path, port: str, baud_rate: str = "115200") -> list[str]:
     text = fixture("SB510").read_text().replace(
         '<param name="port">ttyUSB0</param>', f'<param name="port">{port}</param>').replace(
-        '<param name="baud_rate">9601</param>', '<param name="baud_rate">115200</param>')
+        '<param name="baud_rate">9601</param>', f'<param name="baud_rate">{baud_rate}</param>')
     path = tmp_path / "robot.urdf"
     path.write_text(text)
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB510")
@@ -24,3 +24,11 @@ def test_a_serial_device_without_its_directory_is_still_flagged(run, tmp_path):
     assert _sb510(run, tmp_path, "/dev/ttyUSB0") == []
     (message,) = _sb510(run, tmp_path, "ttyUSB0")
     assert "port 'ttyUSB0' is not a serial device path" in message
+
+
+def test_a_dynamixel_bus_rate_above_1_mbaud_is_not_a_typo(run, tmp_path):
+    # open_manipulator's OMY arms: baud_rate 6250000 (4000000 for the end unit)
+    for rate in ("1000000", "4000000", "6250000", "10500000"):
+        assert _sb510(run, tmp_path, "/dev/ttyUSB0", rate) == [], rate
+    (message,) = _sb510(run, tmp_path, "/dev/ttyUSB0", "115201")
+    assert "baud_rate '115201' is not a standard baud rate" in message
