@@ -17,6 +17,7 @@ from pathlib import Path
 
 from servicebot_cli.description.install_layout import installed_source
 from servicebot_cli.description.packages import holding_package
+from servicebot_cli.description.robot import is_xacro_name
 
 SUFFIXES = (".urdf", ".urdf.xml", ".xacro")
 NOT_URDF_SUFFIXES = (".srdf.xacro",)
@@ -54,7 +55,7 @@ def is_fragment(path: Path) -> bool:
     except OSError:
         return False  # reading it again will report the problem
     match = _ROBOT_TAG.search(head)
-    xacro = path.suffix == ".xacro"
+    xacro = is_xacro_name(path)
     if match is None:
         return xacro and _XACRO_ROOT.search(head) is not None
     if b"name=" not in match.group(0):
@@ -130,8 +131,8 @@ def _named(target: str, includer: Path, packages: dict[str, set[Path]]) -> list[
 
 
 def _include_targets(path: Path) -> list[str]:
-    """The filenames of the ``<xacro:include>`` elements of a ``.xacro`` (comments removed)."""
-    if path.suffix != ".xacro":
+    """The filenames of the ``<xacro:include>`` elements of a xacro file (comments removed)."""
+    if not is_xacro_name(path):
         return []
     try:
         with path.open("rb") as handle:

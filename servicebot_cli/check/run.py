@@ -19,6 +19,7 @@ from servicebot_cli.check.settings import Settings, find_pyproject, load_setting
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.description.loader import RobotSource, read_description
 from servicebot_cli.description.resources import BUNDLED_ROBOTS, CONTROLLERS_YAML, bundled_file
+from servicebot_cli.description.robot import is_xacro_name
 
 
 @dataclass(frozen=True)
@@ -126,7 +127,7 @@ def _sources(targets: UrdfTargets) -> list[tuple[RobotSource, bool]]:
             raise DescriptionError(f"{name}: is a directory with no robot files "
                                    f"({', '.join('*' + s for s in files.SUFFIXES)})")
         for file in inside:
-            args = targets.xacro_args if file.suffix == ".xacro" else ()
+            args = targets.xacro_args if is_xacro_name(file) else ()
             found.append((RobotSource(file, str(file), args, targets.packages), False))
     return found
 

@@ -15,10 +15,8 @@ from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.common.inputs import display_path, read_input_bytes
 from servicebot_cli.description import resources
 from servicebot_cli.description.packages import PackageResolver
-from servicebot_cli.description.robot import RobotDescription
+from servicebot_cli.description.robot import RobotDescription, is_xacro_name
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
-
-XACRO_SUFFIXES = (".xacro",)
 
 
 @dataclass(frozen=True)
@@ -71,13 +69,13 @@ def read_bytes(path: Path, display: str, max_bytes: int = MAX_BYTES) -> bytes:
 
 
 def is_xacro(path: Path, data: bytes) -> bool:
-    """True for ``.xacro`` files: what ROS runs xacro on.
+    """True for ``.xacro`` and ``.xacro.urdf`` files: what ROS runs xacro on.
 
-    A ``.urdf`` file is URDF even when it holds xacro elements (ros/urdf's ``pr2_desc.urdf``):
-    robot_state_publisher and check_urdf read it as it is, and so does servicebot, with a
-    warning (see :func:`uses_xacro`).
+    Another ``.urdf`` file is URDF even when it holds xacro elements (ros/urdf's
+    ``pr2_desc.urdf``): robot_state_publisher and check_urdf read it as it is, and so does
+    servicebot, with a warning (see :func:`uses_xacro`).
     """
-    return path.suffix in XACRO_SUFFIXES
+    return is_xacro_name(path)
 
 
 def uses_xacro(data: bytes) -> bool:

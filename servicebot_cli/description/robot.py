@@ -27,6 +27,16 @@ if TYPE_CHECKING:
     from servicebot_cli.description.joint_space import JointSpace
 
 
+XACRO_NAMES = (".xacro", ".xacro.urdf")
+"""How the names of files ROS runs xacro on end: ``robot.urdf.xacro``, and gz_ros2_control_demos'
+``test_cart_effort.xacro.urdf``, which its launch files give to xacro."""
+
+
+def is_xacro_name(path: Path) -> bool:
+    """True for a file named as xacro input (see :data:`XACRO_NAMES`)."""
+    return path.name.lower().endswith(XACRO_NAMES)
+
+
 class LinkNotFound(NameNotFound):
     """A link name the robot does not have."""
 
@@ -85,7 +95,7 @@ class RobotDescription:
     @property
     def expanded(self) -> bool:
         """True when the description came from xacro."""
-        return bool(self.xacro_args) or self.path.suffix == ".xacro" or len(self.files) > 1
+        return bool(self.xacro_args) or is_xacro_name(self.path) or len(self.files) > 1
 
     @cached_property
     def links(self) -> tuple[el.Link, ...]:
