@@ -4,8 +4,9 @@ Which file: ``--controllers FILE`` when given; else the one the ``gazebo_ros2_co
 plugin's ``<parameters>`` names (relative to the description); else ``controllers.yaml``
 beside the description; else none (the simulator's defaults). In the file, the controller
 whose ``type`` is ``diff_drive_controller/DiffDriveController`` under ``controller_manager``
-gives its ``ros__parameters``; ``controller_manager``'s ``update_rate`` is the control rate.
-Pure apart from reading the one file.
+(or, since Jazzy, in its own ``ros__parameters``) gives its ``ros__parameters``;
+``controller_manager``'s ``update_rate`` is the control rate. Pure apart from reading the
+one file.
 """
 
 from __future__ import annotations
@@ -73,7 +74,9 @@ def read_controllers_file(path: Path | None) -> ControllersFile:
         raise ControllersFileError(f"{path}: expected a mapping of controllers")
     manager = _parameters(document.get("controller_manager"))
     name = next((key for key, value in manager.items()
-                 if isinstance(value, dict) and value.get("type") == DIFF_DRIVE), None)
+                 if isinstance(value, dict) and value.get("type") == DIFF_DRIVE), None) \
+        or next((key for key, value in document.items()  # ros2_control since Jazzy
+                 if _parameters(value).get("type") == DIFF_DRIVE), None)
     params = _flat(_parameters(document.get(name))) if name else {}
     values: dict[str, Any] = {}
     if "update_rate" in manager:
@@ -96,14 +99,16 @@ def read_controllers_file(path: Path | None) -> ControllersFile:
 
 def _limits(path: Path, params: Mapping[str, Any], prefix: str, axis: str,
             unit: str) -> dict[str, float]:
-    """Velocity, acceleration and jerk limits of one axis, where its ``has_*`` flag is set."""
+    """Velocity, acceleration and jerk limits of one axis.
+
+    Humble's ``has_*_limits`` flag switches a kind of limit on or off; without the flag (Jazzy
+    deprecated it: a limit is on when its value is given) the values given are the limits.
+    """
     out: dict[str, float] = {}
     for kind, suffix in (("velocity", unit), ("acceleration", f"{unit[:-2]}_s2"),
                          ("jerk", f"{unit[:-2]}_s3")):
         flag = params.get(f"{prefix}.has_{kind}_limits")
-        if flag is None:
-            continue
-        if not flag:  # limits switched off: none, whatever the values say
+        if flag is not None and not flag:  # limits switched off: none, whatever the values say
             out[f"max_{axis}_{kind}_{suffix}"] = math.inf
             out[f"min_{axis}_{kind}_{suffix}"] = -math.inf
             continue
