@@ -8,6 +8,7 @@ accepts, and memoises per source, so all commands in a process share one object.
 from __future__ import annotations
 
 import os
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -17,6 +18,8 @@ from servicebot_cli.description import resources
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.robot import RobotDescription, is_xacro_name
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
+
+_COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
 
 
 @dataclass(frozen=True)
@@ -79,8 +82,15 @@ def is_xacro(path: Path, data: bytes) -> bool:
 
 
 def uses_xacro(data: bytes) -> bool:
-    """Whether the bytes hold xacro elements or substitutions."""
-    return b"<xacro:" in data or b"$(arg " in data
+    """Whether the bytes hold xacro elements or substitutions outside comments.
+
+    A URDF xacro wrote keeps the comments of its source, and those may hold commented-out
+    xacro (unitree_ros' ``a1.urdf``: ``<!-- <xacro:property name="trunk_mass" ...``).
+    """
+    if b"<xacro:" not in data and b"$(arg " not in data:
+        return False
+    text = _COMMENT.sub(b"", data)
+    return b"<xacro:" in text or b"$(arg " in text
 
 
 def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDescription:
