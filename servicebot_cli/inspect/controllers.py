@@ -90,19 +90,27 @@ def read_controllers(path: Path, found_by: str) -> Controllers:
 def parse_controllers(document: Any, file: str, found_by: str) -> Controllers:
     """The controllers in a parsed YAML ``document``.
 
+    A controller's ``type`` is under ``controller_manager`` (Humble) or in the controller's
+    own ``ros__parameters`` (ros2_control since Jazzy); the manager's come first.
+
     Raises:
-        ControllersError: No ``controller_manager: ros__parameters`` mapping.
+        ControllersError: No ``controller_manager: ros__parameters`` mapping and no
+            controller that names its own type.
     """
     manager = _params_of(document, "controller_manager")
-    if manager is None:
+    types = {name: value["type"] for name, value in (manager or {}).items()
+             if isinstance(value, dict) and isinstance(value.get("type"), str)}
+    for name in document if isinstance(document, dict) else ():
+        own = _params_of(document, name) if name != "controller_manager" else None
+        if own is not None and isinstance(own.get("type"), str):
+            types.setdefault(name, own["type"])
+    if manager is None and not types:
         raise ControllersError(
             f"{file}: no 'controller_manager: ros__parameters:' mapping; is this a "
             "ros2_control controller configuration?"
         )
-    controllers = []
-    for name, value in manager.items():
-        if isinstance(value, dict) and isinstance(value.get("type"), str):
-            controllers.append(Controller(name, value["type"], _params_of(document, name) or {}))
+    controllers = [Controller(name, kind, _params_of(document, name) or {})
+                   for name, kind in types.items()]
     return Controllers(file, found_by, tuple(controllers))
 
 
