@@ -72,8 +72,8 @@ def _element_tree(top: ET.Element) -> Iterator[Issue]:
         spec = SPEC[element.tag]
         yield from _attributes(element, spec.attributes, spec.required)
         present = set()
-        for child in element:
-            if not isinstance(child.tag, str) or _is_extension(child.tag):
+        for child in _read_children(element):
+            if _is_extension(child.tag):
                 continue
             present.add(child.tag)
             if child.tag in spec.children:
@@ -88,6 +88,17 @@ def _element_tree(top: ET.Element) -> Iterator[Issue]:
         if element.tag == "dynamics" and not element.attrib.keys() & {"damping", "friction"}:
             yield Issue("SB012", "<dynamics> has neither damping nor friction", element,
                         fix="add damping=\"...\" or friction=\"...\", or remove <dynamics>")
+
+
+def _read_children(element: ET.Element) -> list[ET.Element]:
+    """The child elements urdfdom reads: of a ``<geometry>``, only the first.
+
+    urdfdom (and sdformat's copy of it) builds the shape from the first child and ignores
+    the rest, so a second shape is never read (diffbot's wheel macro leaves a
+    ``<mesh scale="">`` after the mesh it means).
+    """
+    children = [child for child in element if isinstance(child.tag, str)]
+    return children[:1] if element.tag == "geometry" else children
 
 
 def _empty_reference(element: ET.Element) -> Iterator[Issue]:
