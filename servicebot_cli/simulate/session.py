@@ -226,10 +226,10 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
     )
     from servicebot_cli.simulate.controllers.resolve import resolve
 
-    scenario = resolve(scenario, read_controllers_file(find_controllers_file(robot,
-                                                                             controllers)))
+    controllers_file = read_controllers_file(find_controllers_file(robot, controllers))
+    scenario = resolve(scenario, controllers_file)
     from servicebot_cli.simulate import simulator
-    from servicebot_cli.simulate.bag.ros_messages import publishers
+    from servicebot_cli.simulate.bag.ros_messages import odom_topic, publishers
     from servicebot_cli.simulate.body import sim_robot
     from servicebot_cli.simulate.controllers.diff_drive import tick_count
     from servicebot_cli.simulate.files.progress import Progress
@@ -255,8 +255,8 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
         stack.enter_context(contextlib.closing(pieces))  # its worker stopped whatever happens
         summary, last, writers = _write_pieces(
             pieces,
-            outputs, publishers(body, scenario.camera), stack, bar.advance if bar else None,
-            live)
+            outputs, publishers(body, scenario.camera, odom_topic(controllers_file)),
+            stack, bar.advance if bar else None, live)
     track = None
     if live:
         from servicebot_cli.simulate.files.live import LiveWriter

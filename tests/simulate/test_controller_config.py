@@ -85,7 +85,7 @@ base:
     assert c["saturation"]["source"] == "default"
     # 0.02 m/s from the first tick, for 2 s + the 0.75 s timeout
     assert summary["distance_m"] == pytest.approx(0.02 * 2.75, abs=0.02 * 0.02)  # one tick
-    assert summary["messages"]["/diff_controller/odom"] == 4 * 25
+    assert summary["messages"]["/base/odom"] == 4 * 25  # the controller's ~/odom
 
     from rosbags.rosbag2 import Reader
     from rosbags.typesys import Stores, get_typestore
@@ -93,7 +93,7 @@ base:
     store = get_typestore(Stores.ROS2_HUMBLE)
     with Reader(tmp_path / "bag") as reader:
         odom = [store.deserialize_cdr(raw, c.msgtype) for c, _, raw in reader.messages()
-                if c.topic == "/diff_controller/odom"]
+                if c.topic == "/base/odom"]
     assert np.diag(odom[-1].pose.covariance.reshape(6, 6)).tolist() == [1, 2, 3, 4, 5, 6]
     assert not odom[-1].twist.covariance.any()  # the file sets none: zero
     assert len(odom) == 100  # publish_rate 25 Hz from the file, for 4 s

@@ -51,3 +51,14 @@ def test_its_acceleration_limit_changes_the_run(tmp_path):
     assert free == pytest.approx(6 * 0.015)  # wheels' 1 rad/s at r = 0.015 m, for 6 s
     # 0.1 m/s braked at 1 m/s^2 keeps the wheels saturated 0.085 s longer: 1.3 mm further
     assert limited - free == pytest.approx(0.085 * 0.015, rel=0.1)
+
+
+def test_odometry_is_published_under_the_controllers_name(tmp_path):
+    rosbags = pytest.importorskip("rosbags.rosbag2")
+    bag = tmp_path / "bag"
+    summary = _summary(tmp_path, "--controllers", CONTROLLERS, "--bag", bag)
+    assert summary["messages"]["/diffbot_base_controller/odom"] == 600  # 50 Hz for 12 s
+    assert "/diff_controller/odom" not in summary["messages"]
+    with rosbags.Reader(bag) as reader:
+        odometry = [c.topic for c in reader.connections if c.msgtype == "nav_msgs/msg/Odometry"]
+    assert odometry == ["/diffbot_base_controller/odom"]

@@ -3,12 +3,12 @@
 Topics follow the robot's documentation: the sensors' topics as their Gazebo plugins resolve
 them (``scan``, ``imu/data``, ``pi_camera/camera_info``; with images ``pi_camera/image_raw``
 (rgb8) and, with depth, ``pi_camera/depth/image_raw`` (32FC1), as gazebo_ros_camera names
-them), ``/diff_controller/odom`` and
-``/tf`` (odom -> base) as diff_drive_controller publishes them, ``/joint_states`` as
-joint_state_broadcaster, ``/tf`` for movable joints, ``/tf_static`` for fixed ones and
-``/robot_description`` (the URDF, once) as robot_state_publisher, and ``/clock`` at every
-control tick as gazebo_ros publishes simulated time. Header stamps are simulated time; each
-publisher offers the QoS its ROS node does. ``/tf`` has two publishers.
+them), ``/CONTROLLER/odom`` (the controllers file's diff drive; ``/diff_controller/odom``
+without one) and ``/tf`` (odom -> base) as diff_drive_controller publishes them,
+``/joint_states`` as joint_state_broadcaster, ``/tf`` for movable joints, ``/tf_static`` for
+fixed ones and ``/robot_description`` (the URDF, once) as robot_state_publisher, and
+``/clock`` at every control tick as gazebo_ros publishes simulated time. Header stamps are
+simulated time; each publisher offers the QoS its ROS node does. ``/tf`` has two publishers.
 """
 
 from __future__ import annotations
@@ -24,6 +24,7 @@ from servicebot_cli.simulate.bag import quaternions as rotations
 from servicebot_cli.simulate.bag.byte_rows import ByteRows
 from servicebot_cli.simulate.bag.tf_messages import ODOM_FRAME, JointTransforms, tf_base, tf_static
 from servicebot_cli.simulate.body import SimRobot
+from servicebot_cli.simulate.controllers.config import ControllersFile
 from servicebot_cli.simulate.scenario.camera import CameraImages
 from servicebot_cli.simulate.simulator import SimResult
 
@@ -66,17 +67,23 @@ def absolute(topic: str | None, fallback: str) -> str:
     return name if name.startswith("/") else f"/{name}"
 
 
-def publishers(body: SimRobot, images: CameraImages = NO_IMAGES) -> list[Publisher]:
+def odom_topic(controllers: ControllersFile) -> str:
+    """Where the diff-drive controller of ``controllers`` publishes odometry (``~/odom``)."""
+    return f"/{controllers.name}/odom" if controllers.name else ODOM_TOPIC
+
+
+def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
+               odom_topic: str = ODOM_TOPIC) -> list[Publisher]:
     """Every publisher of a run of ``body``: latched topics and the clock first.
 
-    Camera images only when ``images`` are on. Messages with equal stamps are in this order
-    in a bag.
+    Camera images only when ``images`` are on; odometry on ``odom_topic`` (the diff-drive
+    controller's ``~/odom``). Messages with equal stamps are in this order in a bag.
     """
     out = [Publisher(DESCRIPTION_TOPIC, "std_msgs/msg/String", qos.ROBOT_DESCRIPTION, _once,
                      _robot_description),
            Publisher(TF_STATIC_TOPIC, TF_TYPE, qos.STATIC_TF, _once, tf_static),
            Publisher(CLOCK_TOPIC, "rosgraph_msgs/msg/Clock", qos.CLOCK, _tick_times, _clock),
-           Publisher(ODOM_TOPIC, "nav_msgs/msg/Odometry", qos.SYSTEM_DEFAULTS,
+           Publisher(odom_topic, "nav_msgs/msg/Odometry", qos.SYSTEM_DEFAULTS,
                      lambda r: r.odometry.times_s, _odometry),
            Publisher(TF_TOPIC, TF_TYPE, qos.SYSTEM_DEFAULTS, lambda r: r.odometry.times_s,
                      tf_base),

@@ -36,6 +36,8 @@ class ControllersFile:
 
     path: Path | None
     values: Mapping[str, Any]
+    name: str | None = None
+    """The diff-drive controller's name (its topics are ``/NAME/...``); None without one."""
 
 
 def find_controllers_file(robot: RobotDescription, explicit: str | None) -> Path | None:
@@ -94,7 +96,7 @@ def read_controllers_file(path: Path | None) -> ControllersFile:
             if not isinstance(diagonal, list) or len(diagonal) != 6:
                 raise ControllersFileError(f"{path}: {name}.{key}: expected 6 numbers")
             values[key] = tuple(_number(path, key, v) for v in diagonal)
-    return ControllersFile(path, values)
+    return ControllersFile(path, values, name)
 
 
 def _limits(path: Path, params: Mapping[str, Any], prefix: str, axis: str,
