@@ -58,3 +58,15 @@ def test_a_ros2_controllers_joint_is_still_checked(run, tmp_path):
     own = BUNDLED + "\ngripper:\n  ros__parameters:\n    type: gripper_controllers/" \
         "GripperActionController\n    joint: tcp\n"
     assert [f["code"] for f in _check(run, tmp_path, own)] == ["SB602"]
+
+
+def test_wheels_the_urdf_does_not_describe_as_cylinders_are_not_an_error(run, tmp_path):
+    # gz_ros2_control_demos' test_diff_drive.xacro.urdf: wheels are spheres of radius 0.3,
+    # and diff_drive_controller_velocity.yaml says wheel_radius: 0.3; Gazebo drives it
+    urdf = tmp_path / "spheres.urdf"
+    urdf.write_text(SIM_URDF.read_text().replace('<cylinder length="0.04" radius="0.07"/>',
+                                                 '<sphere radius="0.07"/>'))
+    path = tmp_path / "controllers.yaml"
+    path.write_text(BUNDLED)
+    result = run("check", "controllers", path, "--urdf", urdf, "--format", "json", "--isolated")
+    assert result.exit_code == 0 and findings(result.stdout) == [], result.stdout
