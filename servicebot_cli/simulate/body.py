@@ -30,6 +30,7 @@ from servicebot_cli.description.sensors import (
 from servicebot_cli.kinematics.drive_geometry import DriveGeometry, drive_geometry
 from servicebot_cli.kinematics.transforms import pose_matrix
 from servicebot_cli.simulate.shape import RobotShape, robot_shape
+from servicebot_cli.simulate.steering import refuse_steered_wheels
 
 if TYPE_CHECKING:
     import pinocchio as pin
@@ -103,11 +104,13 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
     file's workspace); ``disabled_pairs`` are left out of the self-contact check.
 
     Raises:
-        DescriptionError: Not a differential drive, or no collision shape on the base.
+        DescriptionError: Not a differential drive (steered wheels too), or no collision
+            shape on the base.
     """
     import pinocchio as pin
 
     geometry = drive_geometry(robot)
+    refuse_steered_wheels(robot)
     model = robot.model_with_base("planar")
     space = JointSpace.of(model, robot.movable_joints)
     data = model.createData()
