@@ -191,8 +191,11 @@ def _geometry(robot: RobotDescription, model: pin.Model,
         return f"filename={match.group(1)}{path}{match.group(1)}"
 
     xml = re.sub(r"filename\s*=\s*([\"'])(.*?)\1", resolved, robot.xml_text)
+    from servicebot_cli.kinematics.native_stderr import captured_fd2
+
     try:
-        return pin.buildGeomFromUrdfString(model, xml, pin.COLLISION)
+        with captured_fd2():  # urdfdom's words on what it skips (check reports those)
+            return pin.buildGeomFromUrdfString(model, xml, pin.COLLISION)
     except (ValueError, RuntimeError) as exc:
         reason = " ".join(str(exc).split())
         raise CollisionSetupError(f"{robot.display}: cannot read the collision geometry: "
