@@ -33,7 +33,8 @@ def issue_of(error: DescriptionError, display: str) -> Issue:
     if isinstance(error, PackageNotFound):
         return Issue("SB007", text, where=(file, line, column),
                      fix="pass --package NAME=DIR, or source the workspace that holds it")
-    if isinstance(error, XacroError) and "cannot read included file" in text:
+    if isinstance(error, XacroError) and text.startswith(("cannot read included file",
+                                                          "cannot read file")):
         return Issue("SB001", text, where=(file, line, column))
     if any(limit in text for limit in _LIMITS):
         return Issue("SB015", text, where=(file, line, column))

@@ -35,6 +35,7 @@ from servicebot_cli.description.sources import SourceRef
 _SRC_ATTR = "servicebot-src"
 _VIA_ATTR = "servicebot-via"
 _ARG_USE_RE = re.compile(r"\$\(arg\s+([A-Za-z_][\w]*)\s*\)")
+_EXPRESSION_RE = re.compile(r"when evaluating expression '(.*)' *$", re.MULTILINE)
 _LOCK = threading.Lock()
 
 
@@ -248,8 +249,14 @@ class _Tracer:
         if isinstance(inner, PackageNotFound):
             return PackageNotFound(f"{where}: {inner}")
         if isinstance(inner, OSError):
-            return XacroError(f"{where}: cannot read included file '{inner.filename}': "
-                              f"{inner.strerror}")
+            expression = _EXPRESSION_RE.search(str(exc))
+            if expression is None:
+                return XacroError(f"{where}: cannot read included file '{inner.filename}': "
+                                  f"{inner.strerror}")
+            # load_yaml(name) of an argument left empty reads the directory (motoman's
+            # joint_velocities_file:=): name the expression, not an include
+            return XacroError(f"{where}: cannot read file '{inner.filename}' that "
+                              f"'{expression[1]}' names: {inner.strerror}")
         import xacro
 
         # A deliberate error (xacro.fatal in the file, or xacro's own checks) says it all;
