@@ -14,6 +14,8 @@ from xml.parsers import expat
 
 from servicebot_cli.common.errors import UnsafeXmlError, XmlError
 
+_BAD_DECLARATION = expat.errors.XML_ERROR_XML_DECL
+
 MAX_BYTES = 32 * 1024 * 1024
 """Largest description accepted [bytes]; real URDFs are well under 1 MB."""
 MAX_ELEMENTS = 1_000_000
@@ -75,7 +77,24 @@ def parse_xml(
     text = _decode(data, filename)
     if not text.strip():
         raise XmlError(filename, "file is empty; a URDF needs a <robot> element")
-    return _Builder(filename, max_elements).parse(text)
+    try:
+        return _Builder(filename, max_elements).parse(text)
+    except XmlError as exc:
+        declaration = _declaration_end(text)
+        if not (declaration and exc.line == 1 and exc.reason.endswith(_BAD_DECLARATION)):
+            raise
+        # tinyxml2 (urdfdom, Gazebo, MuJoCo) reads the opening <?xml ...?> without judging
+        # what it says (ros/urdf's one_link.urdf: <?xml verison="1.0"?>); so does this,
+        # with the declaration blanked out for expat
+        return _Builder(filename, max_elements).parse(" " * declaration + text[declaration:])
+
+
+def _declaration_end(text: str) -> int:
+    """Where the ``<?xml ...?>`` that opens ``text`` ends, or 0 when it has none."""
+    if not text.startswith("<?xml") or text[5:6] not in (" ", "\t", "\r", "\n"):
+        return 0
+    end = text.find("?>")
+    return 0 if end < 0 or "<" in text[1:end] else end + 2
 
 
 def _decode(data: bytes, filename: str) -> str:
