@@ -62,3 +62,16 @@ def test_odometry_is_published_under_the_controllers_name(tmp_path):
     with rosbags.Reader(bag) as reader:
         odometry = [c.topic for c in reader.connections if c.msgtype == "nav_msgs/msg/Odometry"]
     assert odometry == ["/diffbot_base_controller/odom"]
+
+
+def test_streams_are_published_at_most_once_a_control_tick(tmp_path):
+    controllers = tmp_path / "slow.yaml"  # articubot_one's rates: a 30 Hz controller manager
+    controllers.write_text("controller_manager:\n  ros__parameters:\n    update_rate: 30\n"
+                           + CONTROLLERS.read_text())
+    summary = _summary(tmp_path, "--controllers", controllers)
+    assert summary["controller"]["update_rate_hz"]["value"] == 30.0
+    messages = summary["messages"]
+    assert messages["/clock"] == 12 * 30 + 1
+    # the file asks odometry at 50 Hz and joint states default to 50 Hz: 30 Hz is the most
+    assert messages["/diffbot_base_controller/odom"] == 12 * 30
+    assert messages["/joint_states"] == 12 * 30

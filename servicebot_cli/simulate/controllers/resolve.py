@@ -3,7 +3,9 @@
 Each later source overrides the earlier ones field by field, and every field remembers where
 its value came from, for the summary. As diff_drive_controller does, a minimum limit left
 unset mirrors its maximum (``min_acceleration = -max_acceleration``); a maximum the scenario
-or the command line sets replaces the file's pair of limits.
+or the command line sets replaces the file's pair of limits. Odometry and joint states are
+published at most at the control rate (a controllers file's ``update_rate`` of 30 Hz with
+the default 50 Hz streams).
 """
 
 from __future__ import annotations
@@ -44,5 +46,12 @@ def resolve(scenario: Scenario, file: ControllersFile) -> Scenario:
                 mirrored[name] = -high
                 origin[name] = origin["max_" + name[4:]]
     controller = dataclasses.replace(controller, **mirrored)
-    return dataclasses.replace(scenario, controller=controller,
+    # a stream is published at most once per control tick (diff_drive_controller checks its
+    # publish period in update(); joint_state_broadcaster publishes in update())
+    control_hz = controller.update_rate_hz
+    controller = dataclasses.replace(
+        controller, publish_rate_hz=min(controller.publish_rate_hz, control_hz))
+    rates = dataclasses.replace(
+        scenario.rates, joint_states_hz=min(scenario.rates.joint_states_hz, control_hz))
+    return dataclasses.replace(scenario, controller=controller, rates=rates,
                                controller_from=tuple(origin.items()))
