@@ -110,5 +110,6 @@ def pick_frame(robot: RobotDescription, name: str | None) -> tuple[str, str | No
     choice = default_tool_frame(robot)
     if choice.obvious:
         return choice.name, None
+    joints = f"{choice.joints} joint" + ("s" if choice.joints != 1 else "")
     return choice.name, (f"note: no --frame given; using '{choice.name}', the tip of the "
-                         f"longest chain ({choice.joints} joints)")
+                         f"longest chain ({joints})")
