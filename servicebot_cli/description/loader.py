@@ -72,13 +72,26 @@ def read_bytes(path: Path, display: str, max_bytes: int = MAX_BYTES) -> bytes:
 
 
 def is_xacro(path: Path, data: bytes) -> bool:
-    """True for ``.xacro`` and ``.xacro.urdf`` files: what ROS runs xacro on.
+    """True for ``.xacro`` and ``.xacro.urdf`` files, and for what only xacro can read.
 
     Another ``.urdf`` file is URDF even when it holds xacro elements (ros/urdf's
     ``pr2_desc.urdf``): robot_state_publisher and check_urdf read it as it is, and so does
-    servicebot, with a warning (see :func:`uses_xacro`).
+    servicebot, with a warning (see :func:`uses_xacro`). But one that also holds ``${...}``
+    expressions is xacro input whatever its name (see :func:`needs_xacro`).
     """
-    return is_xacro_name(path)
+    return is_xacro_name(path) or needs_xacro(data)
+
+
+def needs_xacro(data: bytes) -> bool:
+    """Whether the bytes hold xacro elements and ``${...}`` expressions outside comments.
+
+    No URDF reader takes ``${base_length}`` for a number, so such a file is only ever given
+    to xacro (navigation2_tutorials' ``sam_bot_description.urdf``, which its launch file
+    expands with ``Command(['xacro ', model])``).
+    """
+    if b"${" not in data or not uses_xacro(data):
+        return False
+    return b"${" in _COMMENT.sub(b"", data)
 
 
 def uses_xacro(data: bytes) -> bool:
@@ -122,10 +135,13 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
     document = parse_xml(expansion.xml_text.encode("utf-8"), source.display, max_bytes=max_bytes)
     for element, origin in zip(document.root.iter(), expansion.origins, strict=True):
         element.origin = origin  # type: ignore[attr-defined]
+    named = () if is_xacro_name(source.path) else (
+        f"{source.display}: holds xacro expressions (${{...}}), but is not a .xacro file: "
+        "expanded with xacro, as only xacro can read it (name it .urdf.xacro)",)
     return RobotDescription(
         display=source.display, path=source.path, xml_text=expansion.xml_text,
         root=document.root, files=expansion.files, xacro_args=source.xacro_args,
-        warnings=expansion.warnings,
+        warnings=(*named, *expansion.warnings),
     )
 
 

@@ -1,0 +1,42 @@
+"""A ``.urdf`` file that only xacro can read is read through xacro, as its launch file does."""
+
+from __future__ import annotations
+
+from tests.check.helpers import findings
+
+SAM_BOT_LIKE = """<?xml version="1.0"?>
+<robot name="sam_bot" xmlns:xacro="http://ros.org/wiki/xacro">
+  <!-- ${commented} -->
+  <xacro:property name="base_width" value="0.31"/>
+  <link name="base_link">
+    <visual>
+      <geometry><box size="0.42 ${base_width} 0.18"/></geometry>
+    </visual>
+  </link>
+</robot>
+"""
+
+
+def _check(run, tmp_path, text: str) -> tuple[int, list[tuple[str, str]]]:
+    path = tmp_path / "sam_bot_description.urdf"
+    path.write_text(text)
+    result = run("check", path, "--format", "json", "--isolated", "--ignore", "SB309")
+    return result.exit_code, [(str(f["code"]), str(f["message"])) for f in
+                              findings(result.stdout)]
+
+
+def test_a_urdf_with_xacro_expressions_is_expanded_with_a_warning(run, tmp_path):
+    # navigation2_tutorials' sam_bot_description.urdf: display.launch.py runs xacro on it
+    exit_code, found = _check(run, tmp_path, SAM_BOT_LIKE)
+    assert exit_code == 0
+    assert [code for code, _ in found] == ["SB017"]
+    assert "expanded with xacro" in found[0][1] and "name it .urdf.xacro" in found[0][1]
+
+
+def test_a_urdf_with_xacro_elements_but_no_expression_is_read_as_it_is(run, tmp_path):
+    # ros/urdf's test/pr2_desc.urdf: stray <xacro:...> calls that urdfdom ignores
+    text = SAM_BOT_LIKE.replace("${base_width}", "0.31").replace(
+        '<xacro:property name="base_width" value="0.31"/>', '<xacro:head_gazebo name="h"/>')
+    exit_code, found = _check(run, tmp_path, text)
+    assert exit_code == 0 and [code for code, _ in found] == ["SB017"]
+    assert "read as plain URDF" in found[0][1]
