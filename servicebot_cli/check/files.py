@@ -74,13 +74,23 @@ def walk(directory: Path) -> Iterator[Path]:
     Includes are left out: macro libraries, unnamed robots, and files that another robot
     file of the walk includes.
     """
-    found: list[Path] = []
-    for root, dirs, files in os.walk(directory):
-        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in SKIPPED_DIRS)
-        found.extend(path for name in sorted(files)
-                     if is_robot_file(path := Path(root) / name) and not is_fragment(path))
+    found = [path for path in _robot_files(directory) if not is_fragment(path)]
     included = included_by(found)
     yield from (path for path in found if path not in included)
+
+
+def holds_robot_files(directory: Path) -> bool:
+    """Whether ``directory`` holds robot files at all, includes too.
+
+    pal_urdf_utils holds only xacro libraries: nothing to check alone, and nothing wrong.
+    """
+    return next(_robot_files(directory), None) is not None
+
+
+def _robot_files(directory: Path) -> Iterator[Path]:
+    for root, dirs, files in os.walk(directory):
+        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in SKIPPED_DIRS)
+        yield from (path for name in sorted(files) if is_robot_file(path := Path(root) / name))
 
 
 def included_by(paths: list[Path]) -> set[Path]:

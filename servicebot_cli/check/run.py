@@ -123,7 +123,7 @@ def _sources(targets: UrdfTargets) -> list[tuple[RobotSource, bool]]:
             found.append((RobotSource(path, name, targets.xacro_args, targets.packages), True))
             continue
         inside = list(files.walk(path))
-        if not inside:
+        if not inside and not files.holds_robot_files(path):
             raise DescriptionError(f"{name}: is a directory with no robot files "
                                    f"({', '.join('*' + s for s in files.SUFFIXES)})")
         for file in inside:

@@ -70,3 +70,18 @@ def test_moveit_srdf_xacro_is_not_a_urdf(tmp_path):
         "panda.urdf.xacro": ROBOT,
     })
     assert walked == ["panda.urdf.xacro"]
+
+
+def test_a_directory_of_includes_only_passes_with_nothing_to_check(run, tmp_path):
+    # pal_urdf_utils: deg_to_rad.xacro, pi.xacro, materials.urdf.xacro, all libraries;
+    # pre-commit runs "servicebot check urdf ." at its root
+    _walked(tmp_path, {
+        "urdf/pi.xacro": f'<robot {XACRO_NS}><xacro:property name="M_PI" value="3.14"/></robot>',
+        "urdf/materials.urdf.xacro": f'<robot name="materials" {XACRO_NS}>'
+                                     '<xacro:property name="grey" value="0.5"/></robot>',
+    })
+    result = run("check", "urdf", tmp_path, "--isolated")
+    assert result.exit_code == 0 and "0 files checked" in result.stdout, result.output
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    assert run("check", "urdf", empty, "--isolated").exit_code == 2
