@@ -1,8 +1,9 @@
-"""What a piece computes from its poses alone: the LIDAR's scans and the arm's self contact.
+"""What a piece computes from its poses alone: LIDAR scans, self contact and clearance.
 
 Once a piece's ground truth is known (the base's path, the arm at each tick boundary),
-these two depend on nothing else of it, and each carries its state from piece to piece
-(the scan noise's generator, the self-contact events under way).
+these three depend on nothing else of it, and each carries its state from piece to piece
+(the scan noise's generator, the self-contact events under way, the clearance record).
+The parts are placed once per piece for all three.
 :class:`PoseWork` holds that state and everything fixed for the run, so the pieces' jobs
 can be done in another process (:mod:`servicebot_cli.common.forked`) while the simulator
 goes on: done in order, in whichever process, they give the same bits.
@@ -19,6 +20,9 @@ from servicebot_cli.simulate.self_contact import SelfContact, SelfContactWatch
 from servicebot_cli.simulate.sensors import lidar
 from servicebot_cli.simulate.sensors.scan_jobs import ScanCaster, ScanJob
 from servicebot_cli.simulate.shape import RobotShape
+from servicebot_cli.simulate.shape_memo import TransformMemo
+from servicebot_cli.simulate.world.clearance import Closest
+from servicebot_cli.simulate.world.clearance_record import ClearanceRecord
 from servicebot_cli.simulate.world.motion import Path2D
 
 FloatArray = npt.NDArray[np.float64]
@@ -39,10 +43,17 @@ class PoseJob:
 
 @dataclass(frozen=True, eq=False)
 class FromPoses:
-    """A piece's scans (None without a LIDAR) and the self contacts that began in it."""
+    """What a piece's poses give.
+
+    Attributes:
+        scans: The piece's LIDAR scans, None without a LIDAR.
+        self_contacts: The self contacts that began in the piece.
+        closest: The clearance record over the piece and the pieces before it.
+    """
 
     scans: lidar.Scans | None
     self_contacts: list[SelfContact]
+    closest: Closest
 
 
 class PoseWork:
@@ -52,24 +63,30 @@ class PoseWork:
         shape: The robot's parts and the joints that move them.
         caster: The LIDAR's scans, None without a LIDAR.
         self_contacts: The arm's self-contact watch, None without an arm.
+        clearance: The clearance record.
     """
 
     def __init__(self, shape: RobotShape, caster: ScanCaster | None,
-                 self_contacts: SelfContactWatch | None) -> None:
+                 self_contacts: SelfContactWatch | None, clearance: ClearanceRecord) -> None:
         self.shape, self.caster, self.self_contacts = shape, caster, self_contacts
+        self.clearance = clearance
+        self.transforms = TransformMemo(shape)
 
     def __call__(self, job: PoseJob) -> FromPoses:
-        """The piece's scans and its self contacts.
+        """The piece's scans, its self contacts and the clearance record.
 
-        The parts are placed only at the configurations each needs (row by row, the same
-        bits as at every configuration at once).
+        The parts are placed at each of the piece's arm configurations once (a
+        configuration held for ticks once), with the bits
+        :meth:`~servicebot_cli.simulate.shape.RobotShape.transforms_to_base` gives it.
         """
+        self.transforms.clear()
+        parts = self.transforms(job.arm_q_rad)  # (n+1, S, 4, 4) at the tick boundaries
         scans = None
         if self.caster is not None and job.scan_times_s is not None:
             boundary = job.truth.tick_index(job.scan_times_s, boundaries=True)  # tick's start
-            arm_q = job.arm_q_rad[boundary]
-            scans = self.caster(ScanJob(job.truth, job.scan_times_s, arm_q,
-                                        self.shape.transforms_to_base(arm_q)))
-        contacts = self.self_contacts.advance(job.first_tick, job.arm_q_rad) \
+            scans = self.caster(ScanJob(job.truth, job.scan_times_s, job.arm_q_rad[boundary],
+                                        parts[boundary]))
+        contacts = self.self_contacts.advance(job.first_tick, job.arm_q_rad, parts) \
             if self.self_contacts else []
-        return FromPoses(scans, contacts)
+        return FromPoses(scans, contacts, self.clearance.advance(job.first_tick, job.truth,
+                                                                 job.arm_q_rad, parts))

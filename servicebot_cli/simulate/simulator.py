@@ -39,7 +39,8 @@ from servicebot_cli.simulate.sensors.sample import SampleClock, sample_count
 from servicebot_cli.simulate.sensors.scan_jobs import ScanCaster
 from servicebot_cli.simulate.shape_memo import TransformMemo
 from servicebot_cli.simulate.world import blocking, motion
-from servicebot_cli.simulate.world.clearance import Closest, closest
+from servicebot_cli.simulate.world.clearance import Closest
+from servicebot_cli.simulate.world.clearance_record import NO_CLEARANCE, ClearanceRecord
 from servicebot_cli.simulate.world.contacts import Placed, Tester, obstacles
 from servicebot_cli.simulate.world.raycast import Mesh
 from servicebot_cli.simulate.world.solids import Solid
@@ -201,11 +202,11 @@ class _Run:
             caster = ScanCaster(body.lidar, body.shape, body.base_height_m, solids, meshes,
                                 Noise(body.lidar.spec.noise, stream_rng(seed, "scan")),
                                 self.clocks["scan"].period_s)
-        self.record = Closest(float("inf"), -1, -1, -1)
         self.from_poses = PoseWork(
             body.shape, caster,
             SelfContactWatch(body.robot, body.shape, body.base_height_m, self.dt_s,
-                             body.disabled_pairs, body.resolver) if body.arm_joints else None)
+                             body.disabled_pairs, body.resolver) if body.arm_joints else None,
+            ClearanceRecord(self.tester, body.base_height_m))
         self.imu_noise: list[Noise] = []
         if body.imu is not None:
             rate = _rate(body.imu.spec, scenario)
@@ -227,9 +228,9 @@ class _Run:
     def piece(self, ticks: range, poses: Worker[PoseJob, FromPoses]) -> SimResult:
         """Simulate ``ticks``, the ticks after those of the pieces before, but its pose work.
 
-        What comes from the piece's poses alone is handed to ``poses`` (the piece's scans
-        and self contacts are left empty until :meth:`finish` puts them in), so that it is
-        done while the next piece is simulated.
+        What comes from the piece's poses alone is handed to ``poses`` (the piece's scans,
+        self contacts and clearance are left empty until :meth:`finish` puts them in), so
+        that it is done while the next piece is simulated.
         """
         body, first = self.body, ticks.start
         stop = None if ticks.stop >= self.ticks else ticks.stop  # None: every sample left
@@ -249,7 +250,7 @@ class _Run:
             sides, odometry.published(odom_path, self.clocks["odometry"].take(stop), odom_before),
             joint_states.at_times(names, positions, self.dt_s,
                                   self.clocks["joints"].take(stop), first),
-            arm_q, self._closest(first, truth, arm_q, self.transforms(arm_q)), None,
+            arm_q, NO_CLEARANCE, None,
             self._imu(truth, stop), self.camera, camera_times, first, self.ticks,
             self.images.frames(truth, arm_q, camera_times) if self.images else ())
         self.twist_before = (float(truth.linear_m_s[-1]), float(truth.angular_rad_s[-1]))
@@ -258,7 +259,8 @@ class _Run:
     def finish(self, piece: SimResult, poses: Worker[PoseJob, FromPoses]) -> SimResult:
         """``piece`` from :meth:`piece` with what ``poses`` owes for it (the oldest it owes)."""
         done = poses.result()
-        return dataclasses.replace(piece, scans=done.scans, self_contacts=done.self_contacts)
+        return dataclasses.replace(piece, scans=done.scans, self_contacts=done.self_contacts,
+                                   closest=done.closest)
 
     def _ground_truth(self, first: int,
                       plan: WheelPlan) -> tuple[motion.Path2D, FloatArray, list[motion.Contact]]:
@@ -289,27 +291,6 @@ class _Run:
         angles = np.vstack((self.wheel_angles, sums[1:]))
         self.wheel_sums = self.wheel_angles = sums[-1]
         return angles
-
-    def _closest(self, first: int, truth: motion.Path2D, arm_q: FloatArray,
-                 parts: FloatArray) -> Closest:
-        """The clearance record, with the piece's poses (a pose held for ticks measured once).
-
-        A pose met again later measures no less than at its first tick, which wins ties.
-        """
-        lo = 0 if first == 0 else 1  # the piece's first boundary ended the piece before
-        rows = np.column_stack((truth.x_m[lo:], truth.y_m[lo:], truth.yaw_rad[lo:], arm_q[lo:]))
-        new = np.ones(len(rows), dtype=bool)
-        new[1:] = np.any(rows[1:] != rows[:-1], axis=1)
-        index = np.flatnonzero(new) + lo  # the first tick of each held pose, in time order
-        rows_at: slice | IntArray = slice(lo, None) if new.all() else index  # a view if all
-        found = closest(self.tester, Placed(parts[rows_at], truth.x_m[rows_at],
-                                            truth.y_m[rows_at], truth.yaw_rad[rows_at],
-                                            self.body.base_height_m),
-                        below=self.record.distance_m)
-        if found.index >= 0:
-            self.record = Closest(found.distance_m, first + int(index[found.index]),
-                                  found.obstacle, found.part)
-        return self.record
 
     def _imu(self, truth: motion.Path2D, stop: int | None) -> imu.ImuSamples | None:
         mounted = self.body.imu
