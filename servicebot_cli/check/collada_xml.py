@@ -14,6 +14,7 @@ import xml.etree.ElementTree as ET
 from typing import cast
 
 _ELEMENT_START = re.compile(rb"<[A-Za-z_:]")
+_ROOT_END = b"</COLLADA>"
 
 
 class ColladaXmlError(ValueError):
@@ -26,6 +27,18 @@ def parse_collada(data: bytes) -> ET.Element:
     Raises:
         ColladaXmlError: Not well-formed XML.
     """
+    try:
+        return _parsed(data)
+    except ColladaXmlError:
+        end = data.find(_ROOT_END)
+        if end < 0 or not data[end + len(_ROOT_END):].strip():
+            raise
+    # bytes after the root's end (NULs and the rest of an older, longer file written over):
+    # left out, as Assimp (Gazebo's and RViz's reader) leaves them
+    return _parsed(data[:end + len(_ROOT_END)])
+
+
+def _parsed(data: bytes) -> ET.Element:
     root = _with_lxml(data)
     if root is not None:
         return root

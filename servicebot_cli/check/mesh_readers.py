@@ -19,6 +19,8 @@ from servicebot_cli.check.collada_xml import ColladaXmlError, parse_collada
 
 FloatArray = npt.NDArray[np.float64]
 _IDENTITY = np.eye(4)
+_MOST_NESTED_INSTANCES = 32  # <instance_node> within placed library nodes
+_MOST_NODE_VISITS = 100_000  # nodes placed: library nodes can place each other many times
 IntArray = npt.NDArray[np.int64]
 
 
@@ -202,7 +204,8 @@ def _collada(data: bytes) -> tuple[list[tuple[ET.Element, FloatArray]], str, flo
     scene = root.find(f"{ns}library_visual_scenes/{ns}visual_scene")
     if scene is None:
         return [(g, np.eye(4)) for g in geometries.values()], ns, meter
-    return _instances(scene, ns, geometries), ns, meter
+    library = {n.get("id"): n for n in root.iterfind(f"{ns}library_nodes/{ns}node")}
+    return _instances(scene, ns, geometries, library), ns, meter
 
 
 def read_dae(data: bytes) -> FloatArray:
@@ -279,18 +282,40 @@ def _primitive_triangles(prim: ET.Element, ns: str) -> int:
     return 0
 
 
-def _instances(scene: ET.Element, ns: str, geometries: dict[str | None, ET.Element]
-               ) -> list[tuple[ET.Element, FloatArray]]:
+def _instances(scene: ET.Element, ns: str, geometries: dict[str | None, ET.Element],
+               library: dict[str | None, ET.Element]) -> list[tuple[ET.Element, FloatArray]]:
+    """Every geometry the scene places, with its transform.
+
+    A node places its ``<instance_geometry>`` and its child nodes, and the
+    ``<library_nodes>`` nodes its ``<instance_node>`` names (SketchUp's exports place every
+    part so), each under its own transform.
+
+    Raises:
+        MeshFormatError: Library nodes that place each other in a loop, or over
+            :data:`_MOST_NODE_VISITS` nodes placed in all.
+    """
     found: list[tuple[ET.Element, FloatArray]] = []
-    stack = [(node, np.eye(4)) for node in scene.findall(f"{ns}node")]
+    stack = [(node, np.eye(4), 0) for node in scene.findall(f"{ns}node")]
+    visits = 0
     while stack:
-        node, parent = stack.pop()
+        node, parent, depth = stack.pop()
+        visits += 1
+        if visits > _MOST_NODE_VISITS:
+            raise MeshFormatError(f"COLLADA scene placing over {_MOST_NODE_VISITS} nodes")
         transform = parent @ _node_transform(node, ns)
         for inst in node.findall(f"{ns}instance_geometry"):
             geometry = geometries.get((inst.get("url") or "").lstrip("#"))
             if geometry is not None:
                 found.append((geometry, transform))
-        stack.extend((child, transform) for child in node.findall(f"{ns}node"))
+        stack.extend((child, transform, depth) for child in node.findall(f"{ns}node"))
+        for inst in node.findall(f"{ns}instance_node"):
+            placed = library.get((inst.get("url") or "").lstrip("#"))
+            if placed is None:
+                continue
+            if depth >= _MOST_NESTED_INSTANCES:
+                raise MeshFormatError("COLLADA library nodes that place each other in a loop "
+                                      f"(or nested over {_MOST_NESTED_INSTANCES} deep)")
+            stack.append((placed, transform, depth + 1))
     return found
 
 

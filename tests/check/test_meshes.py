@@ -217,3 +217,58 @@ def _shifted(text: bytes, by: int) -> bytes:
             line = b"f " + b" ".join(str(int(i) + by).encode() for i in line.split()[1:])
         lines.append(line)
     return b"\n".join(lines) + b"\n"
+
+
+def _library_collada(scene_nodes: str, library: str) -> bytes:
+    """A one-triangle geometry 'a' (corners 0,0,0 1,0,0 0,2,0), placed through library nodes."""
+    base = _collada("1")
+    nodes = base[base.index(b'<node id="n1">'):base.index(b"</visual_scene>")]
+    return base.replace(
+        b'<library_visual_scenes><visual_scene id="s">',
+        f'<library_nodes>{library}</library_nodes><library_visual_scenes>'
+        '<visual_scene id="s">'.encode()).replace(nodes, scene_nodes.encode()).replace(
+        b"</COLLADA>", b'<scene><instance_visual_scene url="#s"/></scene></COLLADA>').replace(
+        b"</float_array></source>", b'</float_array><technique_common><accessor count="3" '
+        b'stride="3"><param name="X" type="float"/><param name="Y" type="float"/><param '
+        b'name="Z" type="float"/></accessor></technique_common></source>')
+
+
+def test_collada_library_nodes_are_placed_where_instance_node_puts_them(tmp_path):
+    """SketchUp's layout: the scene instances library nodes, each with its own transform;
+    trimesh (pycollada) reads the same triangles."""
+    data = _library_collada(
+        '<node id="i1"><translate>10 0 0</translate><instance_node url="#lib"/></node>'
+        '<node id="i2"><translate>0 0 7</translate><instance_node url="#lib"/></node>',
+        '<node id="lib"><translate>0 1 0</translate><instance_geometry url="#a"/></node>')
+    path = tmp_path / "placed.dae"
+    path.write_bytes(data)
+    info = load_mesh(path)
+    reference = trimesh.load(path, force="mesh", process=False)
+    assert info.triangles == len(reference.faces) == 2
+    assert np.allclose([info.lower, info.upper], reference.bounds)
+    assert np.allclose([info.lower, info.upper], [[0, 1, 0], [11, 3, 7]])
+
+
+def test_collada_library_nodes_placing_each_other_in_a_loop_are_a_mesh_error(tmp_path):
+    path = tmp_path / "loop.dae"
+    path.write_bytes(_library_collada(
+        '<node id="i1"><instance_node url="#lib"/></node>',
+        '<node id="lib"><instance_geometry url="#a"/><instance_node url="#lib"/></node>'))
+    with pytest.raises(MeshError, match="loop"):
+        load_mesh(path)
+
+
+def test_collada_bytes_after_the_root_end_are_left_out(tmp_path):
+    """kuka_experimental's iiwa meshes: NULs and an older file's tail after </COLLADA>."""
+    whole = _collada("1")
+    path = tmp_path / "tail.dae"
+    path.write_bytes(whole + b"\x00" * 40 + b"      </polylist>\n</mesh>\n</COLLADA>\n")
+    assert load_mesh(path) == load_mesh_of(tmp_path / "whole.dae", whole)
+    path.write_bytes(whole[:-200])  # cut short: still not a mesh
+    with pytest.raises(MeshError, match="not well-formed"):
+        load_mesh(path)
+
+
+def load_mesh_of(path, data: bytes):
+    path.write_bytes(data)
+    return load_mesh(path)
