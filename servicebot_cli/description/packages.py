@@ -148,9 +148,7 @@ class PackageResolver:
             name, _, rel = uri[len("package://"):].partition("/")
             rel = unquote(rel)
             if not name:  # package:///abs: some loaders read it as a plain path
-                self.found.setdefault("", PackageLocation(
-                    "", Path("/"), "package:/// (an absolute path)", ros_finds_it=False))
-                return Path("/") / rel
+                return self._rooted(rel, base_dir)
             location = (self._ros_location(name, base_dir)
                         or self._loader_location(name, base_dir)
                         or self._relative_location(name, rel, base_dir))
@@ -165,6 +163,28 @@ class PackageResolver:
             return Path(unquote(urlparse(uri).path))
         path = Path(uri).expanduser()
         return path if path.is_absolute() else base_dir / path
+
+    def _rooted(self, rel: str, base_dir: Path) -> Path:
+        """Where ``package:///rel`` leads, as the loaders that accept it read it.
+
+        The absolute path ``/rel`` where that exists; else, as Pinocchio reads it (``rel``
+        under one of its package directories), the package named by ``rel``'s first part
+        (example-robot-data's Talos: ``package:///example-robot-data/robots/...``). Either
+        way ROS would not find it.
+        """
+        absolute = Path("/") / rel
+        name, _, inner = rel.partition("/")
+        if not absolute.exists() and name and inner:
+            location = (self._ros_location(name, base_dir)
+                        or self._loader_location(name, base_dir))
+            if location is not None:
+                self.found.setdefault(name, PackageLocation(
+                    name, location.path, f"package:///{name}/... ({location.how}), as "
+                    "Pinocchio reads it", ros_finds_it=False))
+                return location.path / inner
+        self.found.setdefault("", PackageLocation(
+            "", Path("/"), "package:/// (an absolute path)", ros_finds_it=False))
+        return absolute
 
     def warnings(self) -> list[str]:
         """One line per package found only the way some loaders find it."""

@@ -38,8 +38,6 @@ KNOWN_DEFECTS = {
     "bolt_description/robots/bolt.urdf": {"SB310"},
     "romeo_description/urdf/romeo_laas_small.urdf": {"SB306", "SB308", "SB401"},
     "romeo_description/urdf/romeo_small.urdf": {"SB308"},
-    "talos_data/robots/talos_full_v2.urdf": {"SB401"},
-    "talos_data/robots/talos_full_v2_box.urdf": {"SB401"},
     "talos_data/robots/talos_left_arm.urdf": {"SB501", "SB511"},
     "tiago_description/robots/tiago.urdf": {"SB306"},
     "tiago_description/robots/tiago_dual.urdf": {"SB306", "SB501"},
@@ -92,7 +90,7 @@ def test_erd_corpus_agrees_with_check_urdf(env):
         if check_urdf_rejects(path):
             assert errors, f"check_urdf rejects {path}, servicebot does not"
         known = KNOWN_DEFECTS.get(str(path.relative_to(erd_root() / "robots")), set())
-        assert errors <= known, f"{path}: unexpected errors {errors - known}"
+        assert errors == known, f"{path}: errors {errors}, reviewed defects {known}"
 
 
 def test_pybullet_corpus_check_urdf_rejects_is_rejected(env):

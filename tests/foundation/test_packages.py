@@ -108,6 +108,31 @@ def test_package_triple_slash_is_an_absolute_path_with_a_warning(tmp_path):
     assert "ROS tools would not find it" in resolver.warnings()[0]
 
 
+def test_package_triple_slash_then_a_package_name_is_read_as_pinocchio_reads_it(tmp_path):
+    """example-robot-data's Talos: package:///example-robot-data/robots/... is no absolute
+    path; Pinocchio finds it under a package directory, so the package is looked for."""
+    share = tmp_path / "share" / "example-robot-data"
+    _package(share, "example_robot_descriptions")
+    urdf_dir = share / "robots" / "talos_data" / "robots"
+    urdf_dir.mkdir(parents=True)
+    resolver = _resolver()
+    path = resolver.resolve_uri("package:///example-robot-data/robots/talos_data/m.stl", urdf_dir)
+    assert path == share / "robots" / "talos_data" / "m.stl"
+    assert any("ROS tools would not find it" in w for w in resolver.warnings())
+    missing = _resolver().resolve_uri("package:///no-such-package/m.stl", urdf_dir)
+    assert missing == Path("/no-such-package/m.stl")  # said missing where it was looked for
+
+
+def test_talos_checks_without_missing_meshes():
+    """The real file, with no --package: its package:/// meshes are found."""
+    from tests.check.corpus import erd_root
+
+    talos = erd_root() / "robots" / "talos_data" / "robots" / "talos_full_v2.urdf"
+    done = run_servicebot("check", "urdf", str(talos), "--format", "json", env=NO_ROS)
+    assert done.returncode == 0, done.stdout
+    assert "SB401" not in done.stdout and "SB409" in done.stdout
+
+
 def test_ament_prefix_path_and_directory_names_on_the_paths(tmp_path):
     prefix = tmp_path / "install"
     (prefix / "share" / "qux_description").mkdir(parents=True)
