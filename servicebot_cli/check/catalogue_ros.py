@@ -43,8 +43,9 @@ ROS_RULES = (
          "<hardware><plugin> names the hardware interface to load; without it nothing runs.",
          "Add <hardware><plugin>package/Class</plugin></hardware>."),
     Rule("SB510", "control-hardware-param", E, "A malformed hardware parameter",
-         "A serial port must be a device path (/dev/ttyUSB0, /dev/serial/by-id/...) and a "
-         "baud rate a standard one (9600, 115200, ...).",
+         "A serial port must be a device path (/dev/ttyUSB0, /dev/serial/by-id/...) or a "
+         "network port number, and a baud rate a standard one (9600, 115200, ...) or, from "
+         "1 Mbaud, any rate a USB adapter takes (Dynamixel buses run at 4.5 or 6.25 Mbaud).",
          "Write a device path and a standard baud rate."),
     Rule("SB511", "transmission-unknown-joint", E,
          "<transmission> names a joint that does not exist",
