@@ -118,9 +118,9 @@ def _command_limits(item: ControlJoint, interface: Interface, joint: Joint) -> I
     if interface.name == "position" and joint.type in ("revolute", "prismatic"):
         allowed = (limits.lower, limits.upper)
     elif interface.name == "velocity" and limits.velocity is not None:
-        allowed = (-limits.velocity, limits.velocity)
+        allowed = (0.0 - limits.velocity, limits.velocity)  # 0 - 0 is 0, not -0
     elif interface.name == "effort" and limits.effort is not None:
-        allowed = (-limits.effort, limits.effort)
+        allowed = (0.0 - limits.effort, limits.effort)
     else:
         return
     low, high = parse_float(interface.get("min")), parse_float(interface.get("max"))

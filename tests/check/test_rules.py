@@ -50,3 +50,14 @@ def test_fixture_has_no_other_defect(run, code):
     others = {f["code"] for f in findings(result.stdout)} - {code, "SB309", "SB702"}
     others -= COMPANIONS.get(code, set())
     assert not others, others
+
+
+def test_a_zero_velocity_limit_prints_as_0_not_minus_0(run, tmp_path):
+    """SB508's bounds come from the URDF's limit: a limit of 0 is [0, 0]."""
+    from tests.conftest import SIM_URDF
+
+    robot = tmp_path / "r.urdf"
+    robot.write_text(SIM_URDF.read_text().replace('velocity="0.44"', 'velocity="0"'))
+    done = run("check", "urdf", str(robot), "--format", "json")
+    messages = [f["message"] for f in findings(done.stdout) if f["code"] == "SB508"]
+    assert messages and all("< 0;" in m and "-0;" not in m for m in messages)
