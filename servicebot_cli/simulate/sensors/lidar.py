@@ -95,14 +95,32 @@ def ray_directions(spec: LidarSpec, transform_sensor_to_base: FloatArray) -> Flo
     return np.asarray(local @ transform_sensor_to_base[:3, :3].T, dtype=np.float64)
 
 
+def fixed_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: FloatArray,
+                 directions: FloatArray) -> FloatArray:
+    """Distance along each ray to the parts fixed on the base, shape (R,).
+
+    The same for every scan: a run casts them once. The sensor's own link is left out.
+    """
+    fixed = shape.fixed() & np.array([p.link != sensor_link for p in shape.parts], dtype=bool)
+    if not fixed.any():
+        return np.full(len(directions), np.inf)
+    origin = np.broadcast_to(transform_sensor_to_base[:3, 3], directions.shape)
+    placed = shape.transforms_to_base(np.zeros((1, len(shape.joints))))
+    ranges: FloatArray = cast_parts([p for p, f in zip(shape.parts, fixed, strict=True) if f],
+                                    placed[:, fixed], origin, directions)[0]
+    return ranges
+
+
 def own_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: FloatArray,
                directions: FloatArray, q: FloatArray,
-               parts_to_base: FloatArray | None = None) -> FloatArray:
+               parts_to_base: FloatArray | None = None,
+               fixed_m: FloatArray | None = None) -> FloatArray:
     """Distance along each ray to the robot's own links, per scan, shape (scans, R).
 
     The sensor's own link is left out (Gazebo's ray sensor ignores the link it is on). Parts
-    fixed on the base are cast once; the arm's once per distinct arm configuration, those
-    of a batch of configurations whose sphere never reaches a level scan's plane not at all.
+    fixed on the base are cast once (``fixed_m``: :func:`fixed_ranges`, when the caller
+    keeps it); the arm's once per distinct arm configuration, those of a batch of
+    configurations whose sphere never reaches a level scan's plane not at all.
 
     Args:
         shape: The robot's parts.
@@ -111,18 +129,16 @@ def own_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: Fl
         directions: Ray directions in the base frame, shape (R, 3).
         q: The moving joints' positions at each scan, shape (scans, J).
         parts_to_base: ``shape.transforms_to_base(q)`` when the caller has it already.
+        fixed_m: :func:`fixed_ranges` of these rays, when the caller has it already.
     """
     keep = np.array([p.link != sensor_link for p in shape.parts], dtype=bool)
-    fixed = shape.fixed() & keep
     moving = ~shape.fixed() & keep
     origin = np.broadcast_to(transform_sensor_to_base[:3, 3], directions.shape)
     parts = shape.parts
-    out = np.full((len(q), len(directions)), np.inf)
-    if fixed.any():
-        placed = parts_to_base[:1] if parts_to_base is not None and len(q) else \
-            shape.transforms_to_base(q[:1] if len(q) else np.zeros((1, len(shape.joints))))
-        out[:] = cast_parts([p for p, f in zip(parts, fixed, strict=True) if f],
-                            placed[:, fixed], origin, directions)
+    if fixed_m is None:
+        fixed_m = fixed_ranges(shape, sensor_link, transform_sensor_to_base, directions)
+    out = np.empty((len(q), len(directions)))
+    out[:] = fixed_m
     if moving.any() and len(q):
         distinct, first, index = np.unique(q, axis=0, return_index=True, return_inverse=True)
         moved = [p for p, m in zip(parts, moving, strict=True) if m]

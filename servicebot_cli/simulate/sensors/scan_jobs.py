@@ -50,12 +50,15 @@ class ScanCaster:
         self.mounted, self.shape, self.base_height_m = mounted, shape, base_height_m
         self.solids, self.meshes, self.noise_m, self.period_s = solids, meshes, noise_m, period_s
         self.rays = lidar.ray_directions(mounted.spec, mounted.transform_sensor_to_base)
+        self.fixed_m: FloatArray | None = None  # the parts fixed on the base: cast once
 
     def __call__(self, job: ScanJob) -> lidar.Scans:
         """The job's scans: the world and the robot's own links (the arm where it is)."""
         spec, mount = self.mounted.spec, self.mounted.transform_sensor_to_base
+        if self.fixed_m is None:
+            self.fixed_m = lidar.fixed_ranges(self.shape, self.mounted.link, mount, self.rays)
         own = lidar.own_ranges(self.shape, self.mounted.link, mount, self.rays, job.arm_q_rad,
-                               job.parts_to_base)
+                               job.parts_to_base, self.fixed_m)
         return lidar.scan(spec, mount, self.base_height_m, job.truth, job.times_s,
                           self.solids, self.meshes, self.noise_m, own_m=own,
                           period_s=self.period_s)

@@ -3,7 +3,8 @@ r"""Rays against the robot's own collision parts, posed differently in each batc
 The LIDAR and the camera see the robot they stand on. A ray :math:`o + t d` is moved into
 each part's frame (:math:`R^T (o - c)`, :math:`R^T d`) and intersected in closed form: the
 slab method for boxes, a quadratic and two caps for cylinders, a quadratic for spheres, and
-Moller-Trumbore against every triangle of a mesh. Only the rays through a part's bounding
+Moller-Trumbore against the triangles of a mesh (for a level fan of rays from one origin,
+the LIDAR's, only those that cross its plane). Only the rays through a part's bounding
 sphere are intersected with it. A ray that starts inside a part does not see it, as with
 Gazebo's ray sensor inside its own link (for a mesh: its nearest triangle faces away, so it
 leaves the mesh).
@@ -108,6 +109,9 @@ def mesh_entry(o: list[FloatArray], d: list[FloatArray], vertices_m: FloatArray,
     faces away starts inside and enters nothing.
     """
     origins, directions = np.column_stack(o), np.column_stack(d)
+    faces = faces[_crossing_the_rays_plane(origins, directions, vertices_m, faces)]
+    if not len(faces) or not len(origins):
+        return np.full(len(origins), np.inf)
     v0 = vertices_m[faces[:, 0]]
     e1, e2 = vertices_m[faces[:, 1]] - v0, vertices_m[faces[:, 2]] - v0
     out = np.full(len(origins), np.inf)
@@ -130,3 +134,32 @@ def mesh_entry(o: list[FloatArray], d: list[FloatArray], vertices_m: FloatArray,
         entering = det[rows, nearest] > 0
         out[rays] = np.where(entering, t[rows, nearest], np.inf)
     return out
+
+
+def _crossing_the_rays_plane(origins: FloatArray, directions: FloatArray,
+                             vertices_m: FloatArray, faces: IntArray) -> npt.NDArray[np.bool_]:
+    """The triangles a fan of rays may meet.
+
+    Where the rays share an origin and lie in one plane (a level LIDAR scan): those with
+    corners on both sides of it, or on it: a triangle wholly on one side of the plane meets
+    none of its rays. Anything else (rays from different origins, or not in one plane)
+    keeps every triangle.
+    """
+    keep = np.ones(len(faces), dtype=bool)
+    if len(origins) < 2 or np.any(origins != origins[0]):
+        return keep
+    cross = np.cross(directions[0], directions)
+    widest = int(np.argmax(np.einsum("ij,ij->i", cross, cross)))
+    normal = cross[widest]
+    length = float(np.linalg.norm(normal))
+    if length < 1e-6:  # the rays are (anti)parallel: no plane of theirs
+        return keep
+    normal = normal / length
+    if np.abs(directions @ normal).max() > 1e-12:  # not in one plane
+        return keep
+    side = (vertices_m - origins[0]) @ normal  # signed distance of each vertex to the plane
+    margin = 1e-9 * (1.0 + float(np.abs(side).max(initial=0.0)))
+    corners = side[faces]
+    crossing: npt.NDArray[np.bool_] = (corners.min(axis=1) <= margin) \
+        & (corners.max(axis=1) >= -margin)
+    return crossing
