@@ -14,8 +14,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from servicebot_cli.check import mesh_readers
 from servicebot_cli.common.library_logs import captured
+from servicebot_cli.description import mesh_readers
 
 if TYPE_CHECKING:
     from servicebot_cli.check.mesh_store import MeshStore

@@ -7,8 +7,8 @@ import xml.etree.ElementTree as ET
 import pytest
 import trimesh
 
-from servicebot_cli.check.collada_xml import parse_collada
 from servicebot_cli.check.meshes import MeshError, load_mesh
+from servicebot_cli.description.collada_xml import parse_collada
 from tests.check.corpus import erd_root
 
 
@@ -80,7 +80,7 @@ def test_malformed_collada_says_what_elementtree_says(tmp_path):
 @pytest.mark.parametrize("before", ["", "<!-- <a> -->\n", "<!-- a comment -->\n"])
 def test_a_doctype_after_a_comment_still_goes_to_elementtree(before):
     """Only the prolog is searched for a DOCTYPE; an element-like comment there widens it."""
-    from servicebot_cli.check.collada_xml import _with_lxml
+    from servicebot_cli.description.collada_xml import _with_lxml
 
     text = (f'<?xml version="1.0"?>\n{before}<!DOCTYPE COLLADA [<!ENTITY n "1 2 3">]>\n'
             '<COLLADA><float_array>&n;</float_array></COLLADA>').encode()

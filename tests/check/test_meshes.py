@@ -101,7 +101,7 @@ OBJ_SHAPES = {
 @pytest.mark.parametrize("text", OBJ_SHAPES.values(), ids=OBJ_SHAPES.keys())
 def test_obj_corners_and_vertices_are_trimeshs(tmp_path, text):
     """The one-pass OBJ reader, held against trimesh on the forms OBJ files take."""
-    from servicebot_cli.check.mesh_readers import read_obj
+    from servicebot_cli.description.mesh_readers import read_obj
 
     path = tmp_path / "shape.obj"
     path.write_bytes(text)
@@ -114,7 +114,7 @@ def test_obj_corners_and_vertices_are_trimeshs(tmp_path, text):
 
 def test_obj_negative_indices_count_back_from_the_vertices_read_so_far():
     """As the OBJ format says (trimesh counts back from the last vertex of the file)."""
-    from servicebot_cli.check.mesh_readers import read_obj
+    from servicebot_cli.description.mesh_readers import read_obj
 
     text = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nv 0 0 5\nf -4 -3 -1\n"
     assert read_obj(text).tolist() == [[[0, 0, 0], [1, 0, 0], [0, 1, 0]],
@@ -122,7 +122,7 @@ def test_obj_negative_indices_count_back_from_the_vertices_read_so_far():
 
 
 def test_indented_obj_lines_count():
-    from servicebot_cli.check.mesh_readers import read_obj
+    from servicebot_cli.description.mesh_readers import read_obj
 
     flat = OBJ_SHAPES["a pentagon"]
     indented = b"".join(b"  " + line if k % 2 else b"\t" + line
@@ -157,7 +157,7 @@ def _collada(meter: str) -> bytes:
 @pytest.mark.parametrize("meter", ["1", "0.001", "-2"])
 def test_collada_bounds_of_placed_and_scaled_parts_are_the_triangles_bounds(meter):
     """An identity node, a moved and turned one, and units of any sign: the same box both ways."""
-    from servicebot_cli.check.mesh_readers import bounds, read_dae, read_dae_bounds
+    from servicebot_cli.description.mesh_readers import bounds, read_dae, read_dae_bounds
 
     data = _collada(meter)
     count, lower, upper = read_dae_bounds(data)
@@ -170,8 +170,8 @@ def test_collada_bounds_of_placed_and_scaled_parts_are_the_triangles_bounds(mete
 
 
 def _soup_and_indexed(text: bytes, with_mass: bool):
-    from servicebot_cli.check.mesh_readers import read_obj, read_obj_indexed
     from servicebot_cli.check.meshes import summarise, summarise_indexed
+    from servicebot_cli.description.mesh_readers import read_obj, read_obj_indexed
 
     return summarise(read_obj(text), with_mass), \
         summarise_indexed(*read_obj_indexed(text), with_mass=with_mass)

@@ -15,7 +15,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from servicebot_cli.check.number_text import NumberListError, _as_json, numbers
+from servicebot_cli.description.number_text import NumberListError, _as_json, numbers
 from tests.check.corpus import erd_root, pybullet_urdfs
 
 

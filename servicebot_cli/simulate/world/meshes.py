@@ -1,4 +1,4 @@
-"""Mesh files loaded with trimesh: obstacles placed in the world, and links' collision meshes.
+"""Mesh files: obstacles placed in the world (trimesh), and links' collision meshes.
 
 A mesh obstacle (a room, a shelf) is placed with its pose and scale. LIDAR rays hit it through
 trimesh (Embree when ``embreex`` is installed); the robot's links touch its surface through
@@ -85,11 +85,58 @@ def link_mesh_reader(resolver: PackageResolver, base_dir: Path) -> MeshReader:
 def _load_triangles(path: Path) -> tuple[FloatArray, IntArray]:
     """Vertices (V, 3) and triangles (F, 3) of a mesh file.
 
+    STL, OBJ and COLLADA are read by the fast readers (COLLADA's ``<unit meter>`` applied, as
+    Gazebo and RViz apply it; trimesh leaves it out); other formats by trimesh.
+
     Raises:
-        MeshUnreadable: Missing, unreadable or empty.
+        MeshUnreadable: Missing, unreadable, empty, or with coordinates that are not finite.
     """
     if not path.is_file():
         raise MeshUnreadable(f"{path} is not a file")
+    reader = _FAST_READERS.get(path.suffix.lower())
+    if reader is None:
+        vertices, faces = _with_trimesh(path)
+    else:
+        from servicebot_cli.description import mesh_readers
+
+        try:
+            vertices, faces = reader(path.read_bytes())
+        except (OSError, mesh_readers.MeshFormatError, ValueError, IndexError) as exc:
+            raise MeshUnreadable(f"cannot read {path}: {exc}") from None
+    if not len(faces):
+        raise MeshUnreadable(f"{path} has no triangles")
+    if not np.all(np.isfinite(vertices)):
+        raise MeshUnreadable(f"{path} has coordinates that are not finite")
+    return vertices, faces
+
+
+def _soup(triangles: FloatArray) -> tuple[FloatArray, IntArray]:
+    """Triangles (n, 3, 3) as a vertex per corner and the faces that use them."""
+    return triangles.reshape(-1, 3), np.arange(3 * len(triangles), dtype=np.int64).reshape(-1, 3)
+
+
+def _read_stl(data: bytes) -> tuple[FloatArray, IntArray]:
+    from servicebot_cli.description.mesh_readers import read_stl
+
+    return _soup(read_stl(data))
+
+
+def _read_obj(data: bytes) -> tuple[FloatArray, IntArray]:
+    from servicebot_cli.description.mesh_readers import read_obj_indexed
+
+    return read_obj_indexed(data)
+
+
+def _read_dae(data: bytes) -> tuple[FloatArray, IntArray]:
+    from servicebot_cli.description.mesh_readers import read_dae
+
+    return _soup(read_dae(data))
+
+
+_FAST_READERS = {".stl": _read_stl, ".obj": _read_obj, ".dae": _read_dae}
+
+
+def _with_trimesh(path: Path) -> tuple[FloatArray, IntArray]:
     import trimesh
 
     try:
@@ -97,7 +144,7 @@ def _load_triangles(path: Path) -> tuple[FloatArray, IntArray]:
             mesh = trimesh.load(path, force="mesh")
     except Exception as exc:  # trimesh raises many types for unreadable files
         raise MeshUnreadable(f"trimesh cannot read {path}: {exc}") from None
-    if not isinstance(mesh, trimesh.Trimesh) or not len(mesh.faces):
+    if not isinstance(mesh, trimesh.Trimesh):
         raise MeshUnreadable(f"{path} has no triangles")
     return (np.asarray(mesh.vertices, dtype=np.float64),
             np.asarray(mesh.faces, dtype=np.int64))

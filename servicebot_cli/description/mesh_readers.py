@@ -1,9 +1,11 @@
 """Fast readers for the common mesh formats: STL (binary and ASCII), OBJ and COLLADA.
 
-Each returns the triangles as an ``(n, 3, 3)`` float array in the file's own length unit
-times COLLADA's ``<unit meter>``. Loading trimesh costs most of a second, so these cover
-the formats robot descriptions use; anything else goes through trimesh (see :mod:`meshes`).
-A test compares them with trimesh on every mesh of the example-robot-data corpus.
+Each returns the triangles as an ``(n, 3, 3)`` float array (an OBJ also as its vertex
+table and faces) in the file's own length unit times COLLADA's ``<unit meter>``, as Assimp
+(Gazebo's and RViz's reader) applies it. Loading trimesh costs most of a second, so these
+cover the formats robot descriptions use, for ``check`` and for the simulator's link
+shapes; anything else goes through trimesh. A test compares them with trimesh on every
+mesh of the example-robot-data corpus.
 """
 
 from __future__ import annotations
@@ -14,8 +16,8 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.check import number_text
-from servicebot_cli.check.collada_xml import ColladaXmlError, parse_collada
+from servicebot_cli.description import number_text
+from servicebot_cli.description.collada_xml import ColladaXmlError, parse_collada
 
 FloatArray = npt.NDArray[np.float64]
 _IDENTITY = np.eye(4)
