@@ -20,6 +20,7 @@ from servicebot_cli.check.urdf_schema import EXTENSIONS, SPEC, TOP_LEVEL
 _NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
 _NON_FINITE = re.compile(r"[+-]?(?:nan|inf|infinity)", re.IGNORECASE)
 _VERSION = re.compile(r"(\d+)\.(\d+)")
+_C_SPACES = " \t\n\r\f\v"  # what istringstream skips; not NBSP or other Unicode blanks
 MAX_LINKS = 20_000
 """Most links (or joints) checked; more is refused (SB015)."""
 
@@ -159,7 +160,7 @@ def _number(element: ET.Element, key: str, value: str, count: int) -> Iterator[I
     ``istringstream >> double`` and then wants the stream at its end (unitree's R1.urdf has
     ``izz=" 9e-06"``, which it loads).
     """
-    parts = [value.lstrip()] if count == 1 else value.split()
+    parts = [value.lstrip(_C_SPACES)] if count == 1 else value.split()
     where = f"<{element.tag}{_named(element)} {key}=\"{value}\">"
     if len(parts) != count:
         yield Issue("SB013", f"{where}: expected {count} numbers, found {len(parts)}", element)

@@ -41,3 +41,12 @@ def test_blanks_after_a_number_are_refused_as_urdfdom_refuses_them(run, tmp_path
     assert check_urdf_drops(path)
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB01")
     assert [f["code"] for f in findings(result.stdout)] == ["SB013"]
+
+
+@pytest.mark.parametrize("izz", ["\u00a09e-06", "\u20039e-06"])
+def test_a_unicode_blank_before_a_number_is_refused_as_urdfdom_refuses_it(run, tmp_path, izz):
+    # istringstream skips only the C locale's blanks: a no-break space stops it
+    path = _write(tmp_path, izz)
+    assert check_urdf_drops(path)
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB01")
+    assert [f["code"] for f in findings(result.stdout)] == ["SB013"]
