@@ -77,7 +77,8 @@ def _hardware(block: Ros2Control) -> Iterator[Issue]:
     judged.
     """
     for key, value in block.hardware_params:
-        if key in _PORT_KEYS and not value.strip().isdigit() and not _PORT_RE.fullmatch(value):
+        if key in _PORT_KEYS and not _ascii_digits(value.strip()) \
+                and not _PORT_RE.fullmatch(value):
             yield Issue("SB510", f"ros2_control '{block.name}': {key} '{value}' is not a serial "
                         "device path", block.element, fix=f"e.g. <param name=\"{key}\">"
                         "/dev/ttyUSB0</param>")
@@ -88,7 +89,12 @@ def _hardware(block: Ros2Control) -> Iterator[Issue]:
 
 
 def _is_baud_rate(value: str) -> bool:
-    return value.isdigit() and (int(value) in BAUD_RATES or int(value) >= CUSTOM_BAUD_FROM)
+    return _ascii_digits(value) and (int(value) in BAUD_RATES or int(value) >= CUSTOM_BAUD_FROM)
+
+
+def _ascii_digits(value: str) -> bool:
+    """``0``-``9`` only: str.isdigit() also takes '²' (which int() refuses) and '٣'."""
+    return value.isascii() and value.isdigit()
 
 
 def _joint(item: ControlJoint, joints: dict[str, Joint], block: Ros2Control) -> Iterator[Issue]:

@@ -32,3 +32,11 @@ def test_a_dynamixel_bus_rate_above_1_mbaud_is_not_a_typo(run, tmp_path):
         assert _sb510(run, tmp_path, "/dev/ttyUSB0", rate) == [], rate
     (message,) = _sb510(run, tmp_path, "/dev/ttyUSB0", "115201")
     assert "baud_rate '115201' is not a standard baud rate" in message
+
+
+def test_digits_other_than_0_to_9_are_no_port_and_no_rate(run, tmp_path):
+    """'²' and '٣' are digits to str.isdigit(); int() refuses the first (no internal error)."""
+    (message,) = _sb510(run, tmp_path, "/dev/ttyUSB0", "²")
+    assert "baud_rate '²' is not a standard baud rate" in message
+    (message,) = _sb510(run, tmp_path, "٣")
+    assert "port '٣' is not a serial device path" in message
