@@ -20,19 +20,27 @@ if TYPE_CHECKING:
 
 _VERTICAL = 0.99  # |cos| between an axis and the root's z that counts as vertical
 _LEVEL = 0.1  # |cos| between a cylinder's axis and the root's z that counts as horizontal
+_ON_THE_FLOOR_M = 0.01  # a wheel's lowest point within this of the lowest wheel's
 
 
 def refuse_steered_wheels(robot: RobotDescription) -> None:
     """Refuse a base whose wheels a revolute joint steers about the vertical.
 
     A steering joint is revolute, turns about the root link's z (at the zero configuration)
-    and carries a cylinder lying on its side, a wheel, on its link or the next one (a
-    steering hinge and its wheel joint, as pybullet's racecar has them).
+    and carries a wheel on its link or the next one (a steering hinge and its wheel joint,
+    as pybullet's racecar has them): a cylinder lying on its side whose lowest point is as
+    low as the lowest wheel's, on the floor. A turret or an arm's waist carrying a
+    horizontal cylinder higher up steers nothing.
 
     Raises:
         DescriptionError: Naming the first steering joint and its wheel.
     """
     world = link_transforms(robot)
+    lowest = {name: bottom for name in world
+              if (bottom := _wheel_bottom(robot, name, world[name])) is not None}
+    if not lowest:
+        return
+    floor_m = min(lowest.values())
     for joint in robot.joints:
         if joint.type != "revolute" or joint.child not in world:
             continue
@@ -44,8 +52,8 @@ def refuse_steered_wheels(robot: RobotDescription) -> None:
         if abs(float((rotation @ axis)[2])) / norm < _VERTICAL:
             continue
         below = [joint.child, *(j.child for j in robot.joints if j.parent == joint.child)]
-        wheel = next((name for name in below if name in world and _lies_on_side(
-            robot, name, world[name][:3, :3])), None)
+        wheel = next((name for name in below
+                      if name in lowest and lowest[name] <= floor_m + _ON_THE_FLOOR_M), None)
         if wheel is not None:
             raise DescriptionError(
                 f"{robot.display}: not a differential drive: joint '{joint.name}' steers "
@@ -53,9 +61,17 @@ def refuse_steered_wheels(robot: RobotDescription) -> None:
                 "cannot turn in place); simulate drives differential-drive bases only")
 
 
-def _lies_on_side(robot: RobotDescription, link: str, rotation: np.ndarray) -> bool:
-    """True when ``link`` carries a cylinder whose axis is horizontal (``rotation``: to root)."""
-    shapes = robot.link(link)
-    return any(shape.geometry.kind == "cylinder"
-               and abs(float((rotation @ pose_matrix(shape.origin)[:3, 2])[2])) < _LEVEL
-               for shape in (*shapes.collisions, *shapes.visuals))
+def _wheel_bottom(robot: RobotDescription, link: str, pose: np.ndarray) -> float | None:
+    """Height of the lowest point of ``link``'s cylinders lying on their side, or None.
+
+    ``pose`` is the link's ``transform_link_to_root``.
+    """
+    bottoms = []
+    for shape in (*robot.link(link).collisions, *robot.link(link).visuals):
+        geometry = shape.geometry
+        if geometry.kind != "cylinder" or geometry.radius is None:
+            continue
+        placed = pose @ pose_matrix(shape.origin)
+        if abs(float(placed[2, 2])) < _LEVEL:  # its axis is horizontal
+            bottoms.append(float(placed[2, 3]) - geometry.radius)
+    return min(bottoms) if bottoms else None

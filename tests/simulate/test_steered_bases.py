@@ -37,3 +37,23 @@ def test_its_wheels_still_show_in_inspect():
     result = run_servicebot("inspect", CARLIKEBOT, "--section", "totals", env=NO_ROS)
     assert result.returncode == 0, result.stderr
     assert "wheel radius" in result.stdout
+
+
+def test_an_arm_waist_carrying_a_cylinder_on_its_side_steers_no_wheel(tmp_path):
+    """A mobile manipulator: the waist turns about the vertical, and the link after it is a
+    horizontal cylinder, high above the floor. It is no steered wheel: the run goes on."""
+    from tests.conftest import SIM_URDF
+
+    text = SIM_URDF.read_text()
+    start = text.index('<link name="arm_link2">')
+    end = text.index("</link>", start)
+    link2 = text[start:end].replace('<origin rpy="0 0 0" xyz="0.15 0 0"/>',
+                                    '<origin rpy="0 1.5708 0" xyz="0.15 0 0"/>').replace(
+        '<box size="0.3 0.1 0.1"/>', '<cylinder length="0.3" radius="0.05"/>')
+    assert "cylinder" in link2 and "1.5708" in link2
+    robot = tmp_path / "cylinder_arm.urdf"
+    robot.write_text(text[:start] + link2 + text[end:])
+    result = run_servicebot("simulate", robot, "--headless", "--duration-s", "5",
+                            "--format", "json")
+    assert result.returncode in (0, 1), result.stderr  # 1: an expectation, never a refusal
+    assert "not a differential drive" not in result.stderr
