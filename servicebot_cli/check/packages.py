@@ -67,6 +67,9 @@ class PackageSearch:
             path = probe.resolve_uri(uri, base_dir)
         except PackageNotFound as exc:
             return Resolved(None, name, None, str(exc))
+        if not name and probe.found:  # package:///: an absolute path, or NAME as Pinocchio
+            [(name, location)] = probe.found.items()  # reads it: the one the probe found
+            return Resolved(path, name, location)
         return Resolved(path, name, probe.found.get(name))
 
     def locate(self, name: str, directory: Path) -> PackageLocation | None:

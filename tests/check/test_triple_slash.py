@@ -1,0 +1,25 @@
+"""package:/// references: an absolute path, or a package as Pinocchio reads them; either
+way a warning that ROS would not find them (SB409), never a missing mesh."""
+
+from __future__ import annotations
+
+import trimesh
+
+from tests.check.helpers import findings
+
+URDF = ('<robot name="r"><link name="base"><visual><geometry><mesh filename="{}"/>'
+        "</geometry></visual></link></robot>")
+
+
+def test_package_triple_slash_and_a_package_name_warns_that_ros_would_not_find_it(run, tmp_path):
+    meshes = tmp_path / "pkgA" / "meshes"
+    meshes.mkdir(parents=True)
+    trimesh.creation.box((0.1, 0.1, 0.1)).export(meshes / "m.stl")
+    robot = tmp_path / "robot.urdf"
+    for reference in ("package:///pkgA/meshes/m.stl", f"package://{meshes / 'm.stl'}"):
+        robot.write_text(URDF.format(reference))
+        result = run("check", robot, "--format", "json", "--isolated",
+                     "--package", f"pkgA={tmp_path / 'pkgA'}")
+        found = findings(result.stdout)
+        assert [f["code"] for f in found] == ["SB409"], (reference, found)
+        assert "would not find it" in found[0]["message"]
