@@ -9,11 +9,9 @@ what it said before, and entity expansion keeps expat's limits.
 
 from __future__ import annotations
 
-import re
 import xml.etree.ElementTree as ET
 from typing import cast
 
-_ELEMENT_START = re.compile(rb"<[A-Za-z_:]")
 _ROOT_END = b"</COLLADA>"
 
 
@@ -48,13 +46,31 @@ def _parsed(data: bytes) -> ET.Element:
         raise ColladaXmlError(str(exc)) from None
 
 
+def _declares_doctype(data: bytes) -> bool:
+    """Whether the prolog (declarations, comments and blanks before the root) holds a DOCTYPE.
+
+    A prolog that does not end as XML says is taken to hold one (ElementTree then judges).
+    """
+    at = 3 if data.startswith(b"\xef\xbb\xbf") else 0  # a UTF-8 byte order mark
+    while True:
+        while at < len(data) and data[at] in b" \t\r\n":
+            at += 1
+        if data.startswith(b"<!DOCTYPE", at):
+            return True
+        for opening, closing in ((b"<?", b"?>"), (b"<!--", b"-->")):
+            if data.startswith(opening, at):
+                end = data.find(closing, at + len(opening))
+                if end < 0:
+                    return True
+                at = end + len(closing)
+                break
+        else:
+            return not data.startswith(b"<", at)  # the root element starts: no DOCTYPE
+
+
 def _with_lxml(data: bytes) -> ET.Element | None:
     """The tree lxml builds (ElementTree's interface), or None when it is not sure of it."""
-    start = _ELEMENT_START.search(data)  # a DOCTYPE stands before the root element,
-    prolog = data[:start.start()] if start else data
-    if b"<!--" in prolog or b"<![CDATA[" in prolog:  # unless that "<a" was in a comment
-        prolog = data
-    if b"<!DOCTYPE" in prolog:
+    if _declares_doctype(data):
         return None
     try:
         from lxml import etree

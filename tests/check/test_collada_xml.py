@@ -87,3 +87,13 @@ def test_a_doctype_after_a_comment_still_goes_to_elementtree(before):
     assert _with_lxml(text) is None
     assert _with_lxml(text.replace(b"<!DOCTYPE COLLADA [<!ENTITY n \"1 2 3\">]>\n", b"")
                       .replace(b"&n;", b"1 2 3")) is not None
+
+
+def test_a_processing_instruction_holding_an_element_start_hides_no_doctype():
+    from servicebot_cli.description.collada_xml import _with_lxml
+
+    text = (b'<?note <a?><!DOCTYPE COLLADA [<!ENTITY n "0 0 0 1 0 0 0 1 0">]>'
+            b"<COLLADA><x>&n;</x></COLLADA>")
+    assert _with_lxml(text) is None
+    assert parse_collada(text).find("x").text == "0 0 0 1 0 0 0 1 0"
+    assert _with_lxml(b"\xef\xbb\xbf<?xml version='1.0'?>\n<!-- c -->\n<COLLADA/>") is not None
