@@ -191,8 +191,12 @@ def mass_properties(triangles: np.ndarray) -> MassProperties:
 
 
 def _xyz(values: np.ndarray) -> tuple[float, float, float]:
-    """A 3-vector as three floats."""
-    x, y, z = (float(v) for v in values)
+    """A 3-vector as three floats, a zero always +0.0.
+
+    The least of 0.0 and -0.0 is whichever comes first, so a bound's sign of zero would
+    depend on the order the vertices are read in.
+    """
+    x, y, z = (float(v) + 0.0 for v in values)
     return x, y, z
 
 

@@ -186,14 +186,17 @@ CUBE_OBJ = (b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0
     CUBE_OBJ + b"v 9 9 9\n",
     CUBE_OBJ.replace(b"f 4 1 5 8\n", b""),  # one face left out: open
     CUBE_OBJ + b"v 0 0 0\nv 1 0 0\n",  # unused duplicates of used vertices
-], ids=["closed cube", "an unused vertex outside", "an open box", "unused duplicates"])
+    # a mesh whose upper z is 0.0 among the corners and -0.0 in the vertex table
+    (erd_root() / "robots" / "alex_description" / "meshes" / "PsyonicRight.obj").read_bytes(),
+], ids=["closed cube", "an unused vertex outside", "an open box", "unused duplicates",
+        "PsyonicRight.obj"])
 def test_the_vertex_table_summary_is_the_triangles_summary(text):
     """Closedness welded on the vertex table, bounds over the used vertices: the same
     summary, to the bit, as from the triangles themselves."""
     for with_mass in (False, True):
         soup, indexed = _soup_and_indexed(text, with_mass)
-        assert (soup.triangles, soup.lower, soup.upper, soup.closed) == \
-            (indexed.triangles, indexed.lower, indexed.upper, indexed.closed)
+        assert repr((soup.triangles, soup.lower, soup.upper, soup.closed)) == \
+            repr((indexed.triangles, indexed.lower, indexed.upper, indexed.closed))  # -0.0
         assert (soup.mass is None) == (indexed.mass is None)
         if soup.mass is not None:
             assert soup.mass.volume == indexed.mass.volume
