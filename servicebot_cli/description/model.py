@@ -6,14 +6,10 @@ captured here and folded into one error line instead of spilling onto the termin
 
 from __future__ import annotations
 
-import contextlib
-import os
-import sys
-import tempfile
-from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.common.native_stderr import captured_fd2
 
 if TYPE_CHECKING:
     import pinocchio as pin
@@ -21,23 +17,6 @@ if TYPE_CHECKING:
 BASES = ("fixed", "planar", "free")
 """Root joints: ``fixed`` (the root link is the world), ``planar`` (x, y, yaw on the floor),
 ``free`` (a 6-DoF floating base)."""
-
-
-@contextlib.contextmanager
-def _captured_stderr_fd() -> Iterator[list[str]]:
-    """Redirect fd 2 into a list of lines while the block runs."""
-    lines: list[str] = []
-    sys.stderr.flush()
-    with tempfile.TemporaryFile() as sink:
-        saved = os.dup(2)
-        os.dup2(sink.fileno(), 2)
-        try:
-            yield lines
-        finally:
-            os.dup2(saved, 2)
-            os.close(saved)
-            sink.seek(0)
-            lines.extend(sink.read().decode("utf-8", "replace").splitlines())
 
 
 def build_model(xml_text: str, display: str, base: str = "fixed") -> pin.Model:
@@ -56,7 +35,7 @@ def build_model(xml_text: str, display: str, base: str = "fixed") -> pin.Model:
     root_joint = {"fixed": None, "planar": pin.JointModelPlanar, "free": pin.JointModelFreeFlyer}[
         base
     ]
-    with _captured_stderr_fd() as noise:
+    with captured_fd2() as noise:
         try:
             if root_joint is None:
                 return pin.buildModelFromXML(xml_text)

@@ -191,7 +191,7 @@ def _geometry(robot: RobotDescription, model: pin.Model,
         return f"filename={match.group(1)}{path}{match.group(1)}"
 
     xml = re.sub(r"filename\s*=\s*([\"'])(.*?)\1", resolved, robot.xml_text)
-    from servicebot_cli.kinematics.native_stderr import captured_fd2
+    from servicebot_cli.common.native_stderr import captured_fd2
 
     try:
         with captured_fd2():  # urdfdom's words on what it skips (check reports those)
