@@ -20,6 +20,20 @@ if TYPE_CHECKING:
 
     from servicebot_cli.description.robot import RobotDescription
 
+REALWORLD_SRC = Path(__file__).resolve().parents[1] / "realworld" / "ws" / "src"
+DIFFBOT = REALWORLD_SRC / "example_2" / "description" / "urdf" / "diffbot.urdf.xacro"
+"""ros2_control_demos' diffbot: a differential drive with no arm and no sensor."""
+NO_ROS = {"ROS_PACKAGE_PATH": "", "AMENT_PREFIX_PATH": ""}
+"""No ROS sourced: the packages are found from the files' own workspace."""
+DRIVE_ONLY = """\
+duration_s: 12
+initial_pose: {x_m: 0, y_m: 0, yaw_rad: 0}
+cmd_vel:
+  - {duration_s: 6, linear_m_s: 0.1}
+  - {duration_s: 6, angular_rad_s: 0.3}
+"""
+"""A scenario of the base alone: 6 s ahead at 0.1 m/s, 6 s turning at 0.3 rad/s."""
+
 
 def body() -> SimRobot:
     return sim_robot(load(RobotSource.bundled("sim")))

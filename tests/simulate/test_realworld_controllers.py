@@ -11,24 +11,15 @@ import json
 
 import pytest
 
-from tests.conftest import REPO, run_servicebot
+from tests.conftest import run_servicebot
+from tests.simulate.helpers import DIFFBOT, DRIVE_ONLY, NO_ROS, REALWORLD_SRC
 
-EXAMPLE = REPO / "tests" / "realworld" / "ws" / "src" / "example_2"
-DIFFBOT = EXAMPLE / "description" / "urdf" / "diffbot.urdf.xacro"
-CONTROLLERS = EXAMPLE / "bringup" / "config" / "diffbot_controllers.yaml"
-NO_ROS = {"ROS_PACKAGE_PATH": "", "AMENT_PREFIX_PATH": ""}
-DRIVE = """\
-duration_s: 12
-initial_pose: {x_m: 0, y_m: 0, yaw_rad: 0}
-cmd_vel:
-  - {duration_s: 6, linear_m_s: 0.1}
-  - {duration_s: 6, angular_rad_s: 0.3}
-"""
+CONTROLLERS = REALWORLD_SRC / "example_2" / "bringup" / "config" / "diffbot_controllers.yaml"
 
 
 def _summary(tmp_path, *options: object) -> dict:
     scenario = tmp_path / "drive.yaml"
-    scenario.write_text(DRIVE)
+    scenario.write_text(DRIVE_ONLY)
     result = run_servicebot("simulate", DIFFBOT, "--headless", "-s", scenario, "--format",
                             "json", *options, env=NO_ROS)
     assert result.returncode == 0, result.stderr

@@ -14,19 +14,11 @@ from pathlib import Path
 
 import pytest
 
-from tests.conftest import REPO, assert_one_line_error, run_servicebot
+from tests.conftest import assert_one_line_error, run_servicebot
+from tests.simulate.helpers import DIFFBOT, DRIVE_ONLY, NO_ROS, REALWORLD_SRC
 
-SRC = REPO / "tests" / "realworld" / "ws" / "src"
+SRC = REALWORLD_SRC
 TURTLEBOT3 = SRC / "turtlebot3_description" / "urdf" / "turtlebot3_burger.urdf.xacro"
-DIFFBOT = SRC / "example_2" / "description" / "urdf" / "diffbot.urdf.xacro"
-NO_ROS = {"ROS_PACKAGE_PATH": "", "AMENT_PREFIX_PATH": ""}
-DRIVE_ONLY = """\
-duration_s: 12
-initial_pose: {x_m: 0, y_m: 0, yaw_rad: 0}
-cmd_vel:
-  - {duration_s: 6, linear_m_s: 0.1}
-  - {duration_s: 6, angular_rad_s: 0.3}
-"""
 
 
 def test_turtlebot3_runs_the_built_in_scenario_without_its_arm_goal():
