@@ -53,6 +53,10 @@ FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.int64]
 PIECE_S = 30.0
 """Simulated seconds per piece: long enough for numpy to work in bulk, short for memory."""
+AHEAD = 2
+"""Pieces the simulator may run ahead of the worker doing their pose work: the worker's
+first piece is its slowest (the first clearance search), and the simulator no longer waits
+for it after its second piece."""
 WHOLE_RUN_FRAME_BYTES = 2_000_000_000
 """At most this many bytes of camera frames in a run computed in one piece."""
 
@@ -131,13 +135,16 @@ def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[So
     firsts = range(0, run.ticks, step)
     poses = Worker(run.from_poses, forked=len(firsts) > 1 and second_core(),
                    name="simulation's worker")
+    # forked: a piece's pose work is done while the next pieces run, up to AHEAD of them
+    # (one with camera frames, which are most of a piece's memory)
+    ahead = 0 if poses.pid is None else 1 if run.images is not None else AHEAD
     try:
-        begun: list[SimResult] = []  # forked: a piece's pose work is done while the next runs
+        begun: list[SimResult] = []
         for first in firsts:
             begun.append(run.piece(range(first, min(first + step, run.ticks)), poses))
             if first == firsts[-1]:
                 poses.no_more_jobs()
-            if len(begun) > (1 if poses.pid is not None else 0):
+            if len(begun) > ahead:
                 yield run.finish(begun.pop(0), poses)
         while begun:
             yield run.finish(begun.pop(0), poses)
