@@ -109,16 +109,25 @@ def _ros_plugin(sensor: Sensor) -> Plugin | None:
     return sensor.plugins[0] if sensor.plugins else None
 
 
-def _resolve(plugin: Plugin, default: str) -> str:
-    """A Gazebo ROS plugin topic: remapped, then put in the plugin's namespace."""
+def _resolve(plugin: Plugin, default: str, ros1: str = "topicName", within: str = "") -> str:
+    """A Gazebo ROS plugin topic: remapped, then put in the plugin's namespace.
+
+    A ROS 1 plugin (gazebo_ros_pkgs before ROS 2, as TurtleBot3's URDF still writes them)
+    names its topic in ``ros1`` (``<topicName>``; under ``within``, a camera's name) and
+    its namespace in ``<robotNamespace>``.
+    """
     topic = default
     for rule in params_all(plugin.params, "ros/remapping"):
         source, _, target = rule.partition(":=")
         if source.strip() in (default, default.removeprefix("~/")):
             topic = target.strip()
+    legacy = (param(plugin.params, ros1) or "").strip()
+    if legacy and topic == default:
+        topic = f"{within}/{legacy}" if within and not legacy.startswith("/") else legacy
     if topic.startswith("~/"):
         topic = f"{plugin.name}/{topic[2:]}"
-    namespace = (param(plugin.params, "ros/namespace") or "").strip("/")
+    namespace = (param(plugin.params, "ros/namespace")
+                 or param(plugin.params, "robotNamespace") or "").strip("/")
     if namespace and not topic.startswith("/"):
         topic = f"{namespace}/{topic}"
     return topic
@@ -126,7 +135,8 @@ def _resolve(plugin: Plugin, default: str) -> str:
 
 def _frame(sensor: Sensor) -> str | None:
     plugin = _ros_plugin(sensor)
-    named = param(plugin.params, "frame_name") if plugin else None
+    named = (param(plugin.params, "frame_name") or param(plugin.params, "frameName")) \
+        if plugin else None
     return named or param(sensor.params, "frame_id") or sensor.reference
 
 
@@ -175,8 +185,9 @@ def camera_spec(sensor: Sensor) -> CameraSpec:
     image_topic = info_topic = param(p, "topic")
     if plugin is not None:
         name = param(plugin.params, "camera_name") or sensor.name
-        image_topic = _resolve(plugin, f"{name}/image_raw")
-        info_topic = _resolve(plugin, f"{name}/camera_info")
+        name = param(plugin.params, "cameraName") or name
+        image_topic = _resolve(plugin, f"{name}/image_raw", "imageTopicName", name)
+        info_topic = _resolve(plugin, f"{name}/camera_info", "cameraInfoTopicName", name)
     return CameraSpec(
         width_px=_int(p, "camera/image/width"),
         height_px=_int(p, "camera/image/height"),

@@ -72,7 +72,7 @@ def test_turtlebot3_plot_and_bag_are_written_quietly_and_read_back(tmp_path):
     with Reader(Path(bag)) as reader:
         for connection, _, raw in reader.messages():
             last[connection.topic] = store.deserialize_cdr(raw, connection.msgtype)
-    scan = last["/gazebo_ros_lds_lfcd_controller/out"]
+    scan = last["/scan"]  # the plugin's <topicName>
     assert scan.header.frame_id == "base_scan"
     assert len(scan.ranges) == 360
     assert (scan.range_min, scan.range_max) == pytest.approx((0.12, 3.5))
