@@ -16,6 +16,7 @@ from typing import Any
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.common.inputs import display_path, read_input_text
 from servicebot_cli.description.extensions import param
+from servicebot_cli.description.ros_parameters import controller_types, node_parameters
 
 DEFAULT_NAME = "controllers.yaml"
 
@@ -90,34 +91,23 @@ def read_controllers(path: Path, found_by: str) -> Controllers:
 def parse_controllers(document: Any, file: str, found_by: str) -> Controllers:
     """The controllers in a parsed YAML ``document``.
 
-    A controller's ``type`` is under ``controller_manager`` (Humble) or in the controller's
-    own ``ros__parameters`` (ros2_control since Jazzy); the manager's come first.
+    Nodes and types are read as ros2_control reads them
+    (:mod:`~servicebot_cli.description.ros_parameters`): under namespaces too, a type under
+    ``controller_manager`` or in the controller's own ``ros__parameters``.
 
     Raises:
         ControllersError: No ``controller_manager: ros__parameters`` mapping and no
             controller that names its own type.
     """
-    manager = _params_of(document, "controller_manager")
-    types = {name: value["type"] for name, value in (manager or {}).items()
-             if isinstance(value, dict) and isinstance(value.get("type"), str)}
-    for name in document if isinstance(document, dict) else ():
-        own = _params_of(document, name) if name != "controller_manager" else None
-        if own is not None and isinstance(own.get("type"), str):
-            types.setdefault(name, own["type"])
-    if manager is None and not types:
+    nodes = node_parameters(document)
+    types = controller_types(nodes)
+    if "controller_manager" not in nodes and not types:
         raise ControllersError(
             f"{file}: no 'controller_manager: ros__parameters:' mapping; is this a "
             "ros2_control controller configuration?"
         )
-    controllers = [Controller(name, kind, _params_of(document, name) or {})
-                   for name, kind in types.items()]
+    controllers = [Controller(name, kind, nodes.get(name, {})) for name, kind in types.items()]
     return Controllers(file, found_by, tuple(controllers))
-
-
-def _params_of(document: Any, node: str) -> dict[str, Any] | None:
-    section = document.get(node) if isinstance(document, dict) else None
-    params = section.get("ros__parameters") if isinstance(section, dict) else None
-    return params if isinstance(params, dict) else None
 
 
 def find_controllers(description: Path, plugins: tuple[Any, ...],

@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.description.ros_parameters import controller_types, node_parameters
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -74,12 +75,10 @@ def read_controllers_file(path: Path | None) -> ControllersFile:
         raise ControllersFileError(f"{path}: cannot read the controllers file: {exc}") from None
     if not isinstance(document, dict):
         raise ControllersFileError(f"{path}: expected a mapping of controllers")
-    manager = _parameters(document.get("controller_manager"))
-    name = next((key for key, value in manager.items()
-                 if isinstance(value, dict) and value.get("type") == DIFF_DRIVE), None) \
-        or next((key for key, value in document.items()  # ros2_control since Jazzy
-                 if _parameters(value).get("type") == DIFF_DRIVE), None)
-    params = _flat(_parameters(document.get(name))) if name else {}
+    nodes = node_parameters(document)
+    manager = nodes.get("controller_manager", {})
+    name = next((n for n, kind in controller_types(nodes).items() if kind == DIFF_DRIVE), None)
+    params = _flat(nodes.get(name, {})) if name else {}
     values: dict[str, Any] = {}
     if "update_rate" in manager:
         values["update_rate_hz"] = _number(path, "update_rate", manager["update_rate"])
@@ -121,12 +120,6 @@ def _limits(path: Path, params: Mapping[str, Any], prefix: str, axis: str,
         if low is not None:
             out[f"min_{axis}_{kind}_{suffix}"] = _number(path, f"{prefix}.min_{kind}", low)
     return out
-
-
-def _parameters(section: Any) -> dict[str, Any]:
-    if isinstance(section, dict) and isinstance(section.get("ros__parameters"), dict):
-        return dict(section["ros__parameters"])
-    return {}
 
 
 def _flat(mapping: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:

@@ -1,0 +1,53 @@
+"""Controllers files in the layouts ros2_control reads, the same for inspect and simulate:
+nodes under namespaces (``/**:``) or keyed by a path, types declared in the controller's own
+parameters (Jazzy)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import yaml
+
+from servicebot_cli.description.ros_parameters import controller_types, node_parameters
+from servicebot_cli.inspect.controllers import parse_controllers
+from servicebot_cli.simulate.controllers.config import read_controllers_file
+
+NAMESPACED = """\
+/**:
+  controller_manager:
+    ros__parameters:
+      update_rate: 40
+      joint_state_broadcaster:
+        type: joint_state_broadcaster/JointStateBroadcaster
+  base_controller:
+    ros__parameters:
+      type: diff_drive_controller/DiffDriveController
+      wheel_separation: 0.233
+      linear:
+        x:
+          max_velocity: 0.3
+/robot1/tool_controller:
+  ros__parameters:
+    type: forward_command_controller/ForwardCommandController
+"""
+
+
+def test_nodes_under_namespaces_and_paths_and_their_types():
+    nodes = node_parameters(yaml.safe_load(NAMESPACED))
+    assert list(nodes) == ["controller_manager", "base_controller", "tool_controller"]
+    assert controller_types(nodes) == {
+        "joint_state_broadcaster": "joint_state_broadcaster/JointStateBroadcaster",
+        "base_controller": "diff_drive_controller/DiffDriveController",
+        "tool_controller": "forward_command_controller/ForwardCommandController"}
+
+
+def test_inspect_and_simulate_read_the_same_controllers(tmp_path: Path):
+    path = tmp_path / "control.yaml"
+    path.write_text(NAMESPACED)
+    listed = parse_controllers(yaml.safe_load(NAMESPACED), str(path), "--controllers")
+    assert [c.name for c in listed.controllers] == [
+        "joint_state_broadcaster", "base_controller", "tool_controller"]
+    read = read_controllers_file(path)
+    assert read.name == "base_controller"
+    assert read.values["update_rate_hz"] == 40
+    assert read.values["max_linear_velocity_m_s"] == 0.3
