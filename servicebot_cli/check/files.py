@@ -16,6 +16,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 from servicebot_cli.description.install_layout import installed_source
+from servicebot_cli.description.loader import without_comments
 from servicebot_cli.description.packages import holding_package
 from servicebot_cli.description.robot import is_xacro_name
 
@@ -25,7 +26,6 @@ SKIPPED_DIRS = {"build", "install", "log", "node_modules", "__pycache__", "site-
 _ROBOT_TAG = re.compile(rb"<robot\b[^>]*>", re.DOTALL)
 _XACRO_ROOT = re.compile(rb"<[\w.:-]+\b[^>]*\bxmlns:xacro\s*=", re.DOTALL)
 _MACRO_BLOCK = re.compile(rb"<xacro:macro\b.*?</xacro:macro>", re.DOTALL)
-_COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
 _CONTENT = re.compile(rb"<(?:link|joint|xacro:(?!include\b|property\b|arg\b|macro\b)[\w.-]+)\b")
 _INCLUDE = re.compile(rb"<xacro:include\b[^>]*?\bfilename\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
 _FIND = re.compile(r"^\$\(find\s+([^)\s]+)\s*\)/*(.*)$")
@@ -51,7 +51,7 @@ def is_fragment(path: Path) -> bool:
     """
     try:
         with path.open("rb") as handle:
-            head = _COMMENT.sub(b"", handle.read(_HEAD_BYTES))
+            head = without_comments(handle.read(_HEAD_BYTES))
     except OSError:
         return False  # reading it again will report the problem
     match = _ROBOT_TAG.search(head)
@@ -146,7 +146,7 @@ def _include_targets(path: Path) -> list[str]:
         return []
     try:
         with path.open("rb") as handle:
-            text = _COMMENT.sub(b"", handle.read(_HEAD_BYTES))
+            text = without_comments(handle.read(_HEAD_BYTES))
     except OSError:
         return []
     targets = ((double or single).decode("utf-8", "replace").strip()

@@ -89,9 +89,10 @@ def needs_xacro(data: bytes) -> bool:
     to xacro (navigation2_tutorials' ``sam_bot_description.urdf``, which its launch file
     expands with ``Command(['xacro ', model])``).
     """
-    if b"${" not in data or not uses_xacro(data):
+    if b"${" not in data or not _xacro_words(data):
         return False
-    return b"${" in _COMMENT.sub(b"", data)
+    text = without_comments(data)
+    return b"${" in text and _xacro_words(text)
 
 
 def uses_xacro(data: bytes) -> bool:
@@ -100,10 +101,16 @@ def uses_xacro(data: bytes) -> bool:
     A URDF xacro wrote keeps the comments of its source, and those may hold commented-out
     xacro (unitree_ros' ``a1.urdf``: ``<!-- <xacro:property name="trunk_mass" ...``).
     """
-    if b"<xacro:" not in data and b"$(arg " not in data:
-        return False
-    text = _COMMENT.sub(b"", data)
-    return b"<xacro:" in text or b"$(arg " in text
+    return _xacro_words(data) and _xacro_words(without_comments(data))
+
+
+def _xacro_words(data: bytes) -> bool:
+    return b"<xacro:" in data or b"$(arg " in data
+
+
+def without_comments(data: bytes) -> bytes:
+    """``data`` with its XML comments left out."""
+    return _COMMENT.sub(b"", data)
 
 
 def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDescription:
