@@ -22,8 +22,6 @@ if TYPE_CHECKING:
 
 LARGEST_COORDINATE = 1e9
 """Meshes with coordinates beyond this (in the file's units) get no mass properties."""
-_READERS = {".stl": mesh_readers.read_stl, ".obj": mesh_readers.read_obj,
-            ".dae": mesh_readers.read_dae}
 
 
 class MeshError(Exception):
@@ -74,13 +72,13 @@ def load_mesh(path: Path, with_mass: bool = False) -> MeshInfo:
         data = path.read_bytes()
     except OSError as exc:
         raise MeshError(f"cannot read: {exc.strerror or exc}") from None
-    reader = _READERS.get(path.suffix.lower())
+    suffix = path.suffix.lower()
     try:
-        if reader is mesh_readers.read_dae and not with_mass:
+        if suffix == ".dae" and not with_mass:
             return _bounds_only(*mesh_readers.read_dae_bounds(data))
-        if reader is mesh_readers.read_obj:
-            return summarise_indexed(*mesh_readers.read_obj_indexed(data), with_mass)
-        triangles = reader(data) if reader else _with_trimesh(path)
+        if suffix in mesh_readers.SUFFIXES:
+            return summarise_indexed(*mesh_readers.read_indexed(suffix, data), with_mass)
+        triangles = _with_trimesh(path)
     except (mesh_readers.MeshFormatError, ValueError, IndexError) as exc:
         raise MeshError(str(exc) or type(exc).__name__) from None
     if not np.all(np.isfinite(triangles)):

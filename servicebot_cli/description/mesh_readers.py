@@ -30,6 +30,28 @@ class MeshFormatError(ValueError):
     """The file is not a readable mesh of its format."""
 
 
+SUFFIXES = (".stl", ".obj", ".dae")
+"""The formats these readers read (any case); others are left to trimesh."""
+
+
+def read_indexed(suffix: str, data: bytes) -> tuple[FloatArray, IntArray]:
+    """A mesh's vertices (V, 3) and its triangles as rows of them (F, 3), by file suffix.
+
+    An OBJ gives its vertex table; STL and COLLADA a vertex per triangle corner.
+
+    Raises:
+        MeshFormatError: Not a readable mesh of its format.
+        ValueError: ``suffix`` is none of :data:`SUFFIXES`.
+    """
+    kind = suffix.lower()
+    if kind == ".obj":
+        return read_obj_indexed(data)
+    if kind not in (".stl", ".dae"):
+        raise ValueError(f"no fast reader for '{suffix}' files")
+    triangles = read_stl(data) if kind == ".stl" else read_dae(data)
+    return triangles.reshape(-1, 3), np.arange(3 * len(triangles), dtype=np.int64).reshape(-1, 3)
+
+
 def read_stl(data: bytes) -> FloatArray:
     """Triangles of a binary or ASCII STL."""
     if len(data) >= 84:

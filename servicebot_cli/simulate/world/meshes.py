@@ -93,47 +93,20 @@ def _load_triangles(path: Path) -> tuple[FloatArray, IntArray]:
     """
     if not path.is_file():
         raise MeshUnreadable(f"{path} is not a file")
-    reader = _FAST_READERS.get(path.suffix.lower())
-    if reader is None:
-        vertices, faces = _with_trimesh(path)
-    else:
-        from servicebot_cli.description import mesh_readers
+    from servicebot_cli.description import mesh_readers
 
+    if path.suffix.lower() in mesh_readers.SUFFIXES:
         try:
-            vertices, faces = reader(path.read_bytes())
+            vertices, faces = mesh_readers.read_indexed(path.suffix, path.read_bytes())
         except (OSError, mesh_readers.MeshFormatError, ValueError, IndexError) as exc:
             raise MeshUnreadable(f"cannot read {path}: {exc}") from None
+    else:
+        vertices, faces = _with_trimesh(path)
     if not len(faces):
         raise MeshUnreadable(f"{path} has no triangles")
     if not np.all(np.isfinite(vertices)):
         raise MeshUnreadable(f"{path} has coordinates that are not finite")
     return vertices, faces
-
-
-def _soup(triangles: FloatArray) -> tuple[FloatArray, IntArray]:
-    """Triangles (n, 3, 3) as a vertex per corner and the faces that use them."""
-    return triangles.reshape(-1, 3), np.arange(3 * len(triangles), dtype=np.int64).reshape(-1, 3)
-
-
-def _read_stl(data: bytes) -> tuple[FloatArray, IntArray]:
-    from servicebot_cli.description.mesh_readers import read_stl
-
-    return _soup(read_stl(data))
-
-
-def _read_obj(data: bytes) -> tuple[FloatArray, IntArray]:
-    from servicebot_cli.description.mesh_readers import read_obj_indexed
-
-    return read_obj_indexed(data)
-
-
-def _read_dae(data: bytes) -> tuple[FloatArray, IntArray]:
-    from servicebot_cli.description.mesh_readers import read_dae
-
-    return _soup(read_dae(data))
-
-
-_FAST_READERS = {".stl": _read_stl, ".obj": _read_obj, ".dae": _read_dae}
 
 
 def _with_trimesh(path: Path) -> tuple[FloatArray, IntArray]:
