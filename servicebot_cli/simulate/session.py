@@ -92,7 +92,9 @@ class SimulateReport:
 
     ``result`` is the whole run when it was asked to be kept, else None; ``live_track`` what
     the live window plays, when it was asked for. ``unmet`` holds each expectation the
-    summary does not meet, with the value it has (None when the field has none).
+    summary does not meet, with the value it has (None when the field has none). ``notes``
+    are lines for stderr: the built-in scenario's arm goal left out, collision shapes the
+    simulator could not use.
     """
 
     summary: Summary
@@ -149,7 +151,7 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
                            check_points=not request.allow_collisions)
     unmet = tuple((e, e.value(report.summary)) for e in request.expectations
                   if not e.holds(report.summary))
-    return dataclasses.replace(report, unmet=unmet, notes=notes)
+    return dataclasses.replace(report, unmet=unmet, notes=(*notes, *report.notes))
 
 
 def default_arm_for(scenario: Scenario,
@@ -263,7 +265,9 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
 
         track = next(w.track for w in writers if isinstance(w, LiveWriter))
     return SimulateReport(summary, clock() - start, last if keep_run else None,
-                          live_track=track)
+                          live_track=track, notes=tuple(
+                              f"note: the simulator's collision shape of link {skipped}"
+                              for skipped in body.shape.skipped))
 
 
 def _load_modules(outputs: Outputs, *, camera_images: bool) -> None:

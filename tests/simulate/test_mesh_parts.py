@@ -149,3 +149,23 @@ def test_a_mesh_that_cannot_be_read_is_left_out_with_a_note(tmp_path, content):
     assert note.startswith("bumper: mesh 'bumper.stl' left out: ")
     assert ("no triangles" if content else "is not a file") in note
     assert math.isfinite(body.base_height_m)
+
+
+def test_the_command_says_which_collision_shapes_it_left_out(tmp_path):
+    """A link mesh with a NaN vertex is no part of the simulated robot, and stderr says so."""
+    from tests.conftest import SIM_URDF, run_servicebot
+
+    (tmp_path / "bad.obj").write_bytes(b"v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n")
+    start = SIM_URDF.read_text().index('<link name="arm_link2">')
+    text = SIM_URDF.read_text()
+    box = text.index('<box size="0.3 0.1 0.1"/>', text.index("<collision>", start))
+    robot = tmp_path / "robot.urdf"
+    robot.write_text(text[:box] + '<mesh filename="bad.obj"/>'
+                     + text[box + len('<box size="0.3 0.1 0.1"/>'):])
+    (tmp_path / "controllers.yaml").write_text(
+        (SIM_URDF.parent / "controllers.yaml").read_text())
+    result = run_servicebot("simulate", robot, "--headless", "--duration-s", "2")
+    assert result.returncode == 0, result.stderr
+    assert ("note: the simulator's collision shape of link arm_link2: mesh 'bad.obj' left out"
+            in result.stderr)
+    assert "not finite" in result.stderr
