@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from servicebot_cli.kinematics.transforms import rpy_matrix
+from tests.check.corpus import erd_root
 from tests.check.helpers import FIXTURES, findings
 
 WHEEL = np.diag([0.00135833333, 0.00245, 0.00135833333])  # 1 kg, r 0.07, l 0.04, axle along y
@@ -77,3 +78,18 @@ def test_a_closed_mesh_is_a_solid_too(run, tmp_path):
     (finding,) = [f for f in findings(run("check", wrong, "--format", "json").stdout)
                   if f["code"] == "SB301"]
     assert "closed mesh" in finding["message"] and "ixx=0.00166667" in finding["fix"]
+
+
+
+def test_a_product_of_inertia_that_is_only_rounding_is_written_as_0(run):
+    # alex's nub.obj: a closed mesh whose sums leave products such as 1.3e-21 beside 1e-4
+    robot = erd_root() / "robots" / "alex_description" / "urdf" / "alex_nub_hands.urdf"
+    result = run("check", robot, "--format", "json", "--package",
+                 f"example-robot-data={erd_root()}")
+    fixes = [f["fix"] for f in findings(result.stdout) if f["code"] == "SB301"]
+    assert fixes
+    for fix in fixes:
+        values = {k: float(v) for k, v in re.findall(r"(i[xyz]{2})=(\S+)", fix)}
+        largest = max(abs(values[k]) for k in ("ixx", "iyy", "izz"))
+        products = [values.get(k, 0.0) for k in ("ixy", "ixz", "iyz")]
+        assert all(v == 0 or abs(v) > 1e-9 * largest for v in products), fix
