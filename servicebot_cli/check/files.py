@@ -94,7 +94,12 @@ def _robot_files(directory: Path) -> Iterator[Path]:
 
 
 def included_by(paths: list[Path]) -> set[Path]:
-    """Which of ``paths`` another of them includes with ``<xacro:include filename>``.
+    """Which of ``paths`` another of them includes with ``<xacro:include filename>``."""
+    return set(includers(paths))
+
+
+def includers(paths: list[Path]) -> dict[Path, Path]:
+    """Each of ``paths`` another of them includes, and the first of them that includes it.
 
     A filename is read as xacro reads it, through :mod:`install_layout`: relative to the
     including file, or ``$(find PKG)/REL`` under the directory of package PKG (a package
@@ -104,13 +109,13 @@ def included_by(paths: list[Path]) -> set[Path]:
     """
     by_location = {_location(path): path for path in paths}
     packages = _packages(paths)
-    included: set[Path] = set()
+    included: dict[Path, Path] = {}
     for path in paths:
         for target in _include_targets(path):
             for named in _named(target, path, packages):
                 found = by_location.get(_location(named))
                 if found is not None and found != path:
-                    included.add(found)
+                    included.setdefault(found, path)
     return included
 
 

@@ -133,8 +133,25 @@ def _sources(targets: UrdfTargets) -> list[tuple[RobotSource, bool]]:
 
 
 def _check_urdfs(targets: UrdfTargets, settings: Settings) -> list[FileReport]:
-    """A report per description; a file found in a directory that cannot be read is SB001."""
-    sources = _sources(targets)
+    """A report per description; a file found in a directory that cannot be read is SB001.
+
+    A xacro include named on the command line gets its SB018 note instead of a check.
+    """
+    from servicebot_cli.check.named_includes import include_reports
+
+    every = _sources(targets)
+    includes = include_reports(every, settings)
+    sources = [source for index, source in enumerate(every) if index not in includes]
+    checked = iter(_checked(sources, targets, settings))
+    return [includes[index] if index in includes else next(checked)
+            for index in range(len(every))]
+
+
+def _checked(sources: list[tuple[RobotSource, bool]], targets: UrdfTargets,
+             settings: Settings) -> list[FileReport]:
+    """The report of each of ``sources``, checked serially or by worker processes."""
+    if not sources:
+        return []
     jobs = min(targets.jobs or workers.available_cores(), len(sources))
     if jobs > 1:
         outcomes: Iterable[workers.Outcome] = workers.check_in_workers(

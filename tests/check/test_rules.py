@@ -8,7 +8,7 @@ from servicebot_cli.check.catalogue import RULES
 from servicebot_cli.check.findings import Severity
 from tests.check.helpers import FIXTURES, findings, fixture
 
-FILE_LEVEL = {"SB002", "SB017", "SB702"}  # about the whole file: no line to point at
+FILE_LEVEL = {"SB002", "SB017", "SB018", "SB702"}  # about the whole file: no line to point at
 # Defects that imply another: a loop gives a link two parents, a negative mass leaves the
 # moving link massless, a mesh in millimetres has an inertia 10^6 too small for its size.
 COMPANIONS = {"SB104": {"SB107"}, "SB107": {"SB106"}, "SB302": {"SB303"}, "SB404": {"SB301"},
