@@ -9,6 +9,7 @@ reports come back to the parent, which renders them as a serial run does.
 
 from __future__ import annotations
 
+import itertools
 import os
 import signal
 from collections.abc import Iterator, Sequence
@@ -26,7 +27,8 @@ from servicebot_cli.description.loader import RobotSource
 from servicebot_cli.description.packages import PackageResolver
 
 _RUNS_PER_WORKER = 4
-_LONGEST_RUN = 8  # files: a directory's heavy robots spread over the workers
+_LONGEST_RUN = 8  # files: long runs leave a worker idle at the end
+_WHOLE_DIRECTORY = 16  # files of one directory kept in one run, sharing its meshes
 
 
 def available_cores() -> int:
@@ -96,11 +98,35 @@ def _check_run(run: Sequence[tuple[RobotSource, bool]]) -> list[Outcome]:
     return [check_one(source, named, _Worker.settings, _Worker.env) for source, named in run]
 
 
-def _runs(sources: Sequence[tuple[RobotSource, bool]],
-          jobs: int) -> Iterator[Sequence[tuple[RobotSource, bool]]]:
+def runs(sources: Sequence[tuple[RobotSource, bool]],
+         jobs: int) -> Iterator[Sequence[tuple[RobotSource, bool]]]:
+    """Contiguous runs of a few files (four per worker, at most eight), for ``jobs`` workers.
+
+    A directory of a few files is kept whole, so a run may hold up to sixteen.
+
+    Files of one directory share meshes (a robot's variants): split over two workers, each
+    would read them. A directory of more than :data:`_WHOLE_DIRECTORY` files is cut.
+    """
     size = min(_LONGEST_RUN, max(1, -(-len(sources) // (jobs * _RUNS_PER_WORKER))))
-    for start in range(0, len(sources), size):
-        yield sources[start:start + size]
+    run: list[tuple[RobotSource, bool]] = []
+    for _, group in itertools.groupby(sources, key=lambda item: item[0].path.parent):
+        files = list(group)
+        if len(files) > _WHOLE_DIRECTORY:
+            for start in range(0, len(files), size):
+                run += files[start:start + size]
+                if len(run) >= size:
+                    yield run
+                    run = []
+            continue
+        if run and len(run) + len(files) > size:
+            yield run
+            run = []
+        run += files
+        if len(run) >= size:
+            yield run
+            run = []
+    if run:
+        yield run
 
 
 def check_in_workers(sources: Sequence[tuple[RobotSource, bool]], settings: Settings,
@@ -113,7 +139,7 @@ def check_in_workers(sources: Sequence[tuple[RobotSource, bool]], settings: Sett
     context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
     pool = context.Pool(jobs, initializer=_start, initargs=(settings, packages, mesh_cache))
     try:
-        for outcomes in pool.imap(_check_run, _runs(sources, jobs)):
+        for outcomes in pool.imap(_check_run, runs(sources, jobs)):
             yield from outcomes
         pool.close()
     finally:
