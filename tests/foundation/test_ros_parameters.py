@@ -51,3 +51,35 @@ def test_inspect_and_simulate_read_the_same_controllers(tmp_path: Path):
     assert read.name == "base_controller"
     assert read.values["update_rate_hz"] == 40
     assert read.values["max_linear_velocity_m_s"] == 0.3
+
+
+TWO_TYPES = """\
+controller_manager:
+  ros__parameters:
+    arm_controller:
+      type: vendor_controllers/ArmController
+    joint_state_broadcaster:
+      type: joint_state_broadcaster/JointStateBroadcaster
+arm_controller:
+  ros__parameters:
+    type: joint_trajectory_controller/JointTrajectoryController
+    joints: [arm_joint_1]
+"""
+
+
+def test_a_controllers_own_type_wins_over_the_managers_as_the_spawner_sets_it():
+    types = controller_types(node_parameters(yaml.safe_load(TWO_TYPES)))
+    assert types == {"arm_controller": "joint_trajectory_controller/JointTrajectoryController",
+                     "joint_state_broadcaster": "joint_state_broadcaster/JointStateBroadcaster"}
+    assert list(types) == ["arm_controller", "joint_state_broadcaster"]
+
+
+def test_inspect_lists_the_type_check_controllers_reads(run, tmp_path: Path):
+    path = tmp_path / "controllers.yaml"
+    path.write_text(TWO_TYPES.replace("arm_joint_1", "no_such_joint"))
+    listed = parse_controllers(yaml.safe_load(path.read_text()), str(path), "--controllers")
+    arm = next(c for c in listed.controllers if c.name == "arm_controller")
+    assert arm.type == "joint_trajectory_controller/JointTrajectoryController"
+    # a ros2_controllers type names URDF joints (a vendor's need not): check looks for it
+    checked = run("check", "controllers", path)
+    assert "no_such_joint" in checked.stdout + checked.stderr
