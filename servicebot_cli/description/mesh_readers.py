@@ -78,13 +78,6 @@ _OBJ_FACE = re.compile(rb"\n[ \t]*f[ \t]([^\r\n]*)")
 _OBJ_FIRST_LINE = re.compile(rb"[ \t]*([vf])[ \t]([^\r\n]*)")
 
 
-def read_obj(data: bytes) -> FloatArray:
-    """Triangles of a Wavefront OBJ (polygons fan-triangulated; negative indices allowed)."""
-    vertices, faces = read_obj_indexed(data)
-    triangles: FloatArray = vertices[faces] if len(faces) else np.zeros((0, 3, 3))
-    return triangles
-
-
 def read_obj_indexed(data: bytes) -> tuple[FloatArray, IntArray]:
     """A Wavefront OBJ's vertex table (V, 3) and triangles as rows of it (F, 3), from 0.
 
