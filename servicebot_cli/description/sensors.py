@@ -3,10 +3,21 @@
 Reads both Gazebo Classic (``<ray>``, ``libgazebo_ros_*`` plugins, ``<ros><remapping>``)
 and gz-sim (``<lidar>``, ``<topic>``) spellings. Missing values are None, never guessed,
 so ``check`` can tell absent from wrong and the simulator can apply Gazebo's defaults.
+
+A sensor's topics come from its Gazebo ROS plugin when it has one (a plugin whose file or
+parameters are ROS's: ``libgazebo_ros_ray_sensor.so``, ``<ros>``, ``<topicName>``); other
+plugins inside a sensor (gz-sim systems, a placeholder) say nothing about topics. Without one,
+a gz-sim sensor publishes on its ``<topic>`` made absolute (gz-transport puts a relative name
+in the root namespace), and ros_gz_bridge gives the ROS topic the same name unless its
+configuration renames it. A gz camera's info goes beside its image: ``<topic>``'s parent
+``/camera_info`` (gz-sensors ``CameraSensor::AdvertiseInfo``), unless
+``<camera><camera_info_topic>`` names it; its frame is ``<frame_id>``, ``<gz_frame_id>`` or
+(Fortress) ``<ignition_frame_id>``.
 """
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from servicebot_cli.description.elements import parse_float
@@ -105,8 +116,44 @@ def _noise(params: Params, prefix: str) -> NoiseSpec | None:
     )
 
 
-def _ros_plugin(sensor: Sensor) -> Plugin | None:
-    return sensor.plugins[0] if sensor.plugins else None
+_ROS1_KEYS = frozenset(("topicName", "frameName", "robotNamespace", "frame_name", "cameraName",
+                        "camera_name", "imageTopicName", "cameraInfoTopicName", "output_type"))
+_GZ_FRAME_KEYS = ("ignition_frame_id", "gz_frame_id", "frame_id")
+"""gz-sensors' frame tags, weakest first: Fortress's, Garden's, SDF 1.10's ``<frame_id>``."""
+
+
+def is_ros_plugin(plugin: Plugin) -> bool:
+    """Whether ``plugin`` is a Gazebo ROS wrapper: ``ros`` in its file name or ROS parameters."""
+    words = set(re.split(r"[^a-z0-9]+", plugin.filename.lower()))
+    return "ros" in words or any(key.startswith("ros/") or key in _ROS1_KEYS
+                                 for key, _ in plugin.params)
+
+
+def ros_plugin(sensor: Sensor) -> Plugin | None:
+    """The sensor's Gazebo ROS plugin, the first of its plugins that is one; else None."""
+    return next((p for p in sensor.plugins if is_ros_plugin(p)), None)
+
+
+
+def gz_topic(sensor: Sensor) -> str | None:
+    """The sensor's gz-transport ``<topic>``, absolute (``camera/image`` -> ``/camera/image``).
+
+    None when the sensor has a ROS plugin (its topics are the plugin's) or no ``<topic>``.
+    """
+    text = (param(sensor.params, "topic") or "").strip()
+    if not text or ros_plugin(sensor) is not None:
+        return None
+    return "/" + "/".join(part for part in text.split("/") if part)
+
+
+def topic_origin(sensor: Sensor) -> str:
+    """How the sensor's topic names were found, for a reader who must find them on a robot."""
+    plugin = ros_plugin(sensor)
+    if plugin is not None:
+        return f"Gazebo ROS plugin {plugin.filename or plugin.name}"
+    if gz_topic(sensor):
+        return "gz <topic>, absolute; ros_gz_bridge keeps it"
+    return "no ROS plugin, no <topic>"
 
 
 def _resolve(plugin: Plugin, default: str, ros1: str = "topicName", within: str = "") -> str:
@@ -134,17 +181,18 @@ def _resolve(plugin: Plugin, default: str, ros1: str = "topicName", within: str 
 
 
 def _frame(sensor: Sensor) -> str | None:
-    plugin = _ros_plugin(sensor)
+    plugin = ros_plugin(sensor)
     named = (param(plugin.params, "frame_name") or param(plugin.params, "frameName")) \
         if plugin else None
-    return named or param(sensor.params, "frame_id") or sensor.reference
+    gz_named = [param(sensor.params, key) for key in _GZ_FRAME_KEYS]
+    return named or next((n for n in reversed(gz_named) if n), None) or sensor.reference
 
 
 def lidar_spec(sensor: Sensor) -> LidarSpec:
     """The LIDAR view of a ``ray``/``gpu_ray``/``lidar``/``gpu_lidar`` sensor."""
     p = sensor.params
     root = "lidar" if any(k.startswith("lidar/") for k, _ in p) else "ray"
-    plugin = _ros_plugin(sensor)
+    plugin = ros_plugin(sensor)
     return LidarSpec(
         samples=_int(p, f"{root}/scan/horizontal/samples"),
         resolution=_float(p, f"{root}/scan/horizontal/resolution"),
@@ -156,7 +204,7 @@ def lidar_spec(sensor: Sensor) -> LidarSpec:
         update_rate_hz=sensor.update_rate_hz,
         noise=_noise(p, f"{root}/noise"),
         frame=_frame(sensor),
-        topic=_resolve(plugin, "~/out") if plugin else param(p, "topic"),
+        topic=_resolve(plugin, "~/out") if plugin else gz_topic(sensor),
     )
 
 
@@ -168,21 +216,21 @@ def imu_spec(sensor: Sensor) -> ImuSpec:
         x, y, z = (_noise(p, f"imu/{quantity}/{axis}/noise") for axis in "xyz")
         return (x, y, z)
 
-    plugin = _ros_plugin(sensor)
+    plugin = ros_plugin(sensor)
     return ImuSpec(
         update_rate_hz=sensor.update_rate_hz,
         angular_velocity_noise=axes("angular_velocity"),
         linear_acceleration_noise=axes("linear_acceleration"),
         frame=_frame(sensor),
-        topic=_resolve(plugin, "~/out") if plugin else param(p, "topic"),
+        topic=_resolve(plugin, "~/out") if plugin else gz_topic(sensor),
     )
 
 
 def camera_spec(sensor: Sensor) -> CameraSpec:
     """The camera view of a ``camera`` sensor."""
     p = sensor.params
-    plugin = _ros_plugin(sensor)
-    image_topic = info_topic = param(p, "topic")
+    plugin = ros_plugin(sensor)
+    image_topic, info_topic = _gz_camera_topics(sensor)
     if plugin is not None:
         name = param(plugin.params, "camera_name") or sensor.name
         name = param(plugin.params, "cameraName") or name
@@ -201,3 +249,19 @@ def camera_spec(sensor: Sensor) -> CameraSpec:
         image_topic=image_topic,
         info_topic=info_topic,
     )
+
+
+def _gz_camera_topics(sensor: Sensor) -> tuple[str | None, str | None]:
+    """A gz camera's image and camera_info topics (None, None without a gz ``<topic>``).
+
+    An ``rgbd_camera`` publishes ``TOPIC/image`` and ``TOPIC/camera_info``; the others their
+    image on ``TOPIC`` and the info beside it, unless ``<camera_info_topic>`` names it.
+    """
+    topic = gz_topic(sensor)
+    if topic is None:
+        return None, None
+    if sensor.type == "rgbd_camera":
+        return f"{topic}/image", f"{topic}/camera_info"
+    named = (param(sensor.params, "camera/camera_info_topic") or "").strip()
+    parent = topic.rsplit("/", 1)[0]
+    return topic, ("/" + named.lstrip("/") if named else f"{parent}/camera_info")

@@ -16,9 +16,14 @@ from servicebot_cli.description.sensors import (
     ImuSpec,
     LidarSpec,
     camera_spec,
+    gz_topic,
     imu_spec,
     lidar_spec,
+    ros_plugin,
+    topic_origin,
 )
+
+GPU_LIDAR_TYPES = ("gpu_ray", "gpu_lidar")
 
 
 @dataclass(frozen=True)
@@ -39,6 +44,7 @@ class SensorInfo:
         plugin: The ROS plugin's file (``libgazebo_ros_ray_sensor.so``), if any.
         frame: The frame its messages are stamped with.
         topics: What it publishes.
+        topics_from: How the topic names were found (the ROS plugin, or gz-sim's ``<topic>``).
     """
 
     name: str
@@ -52,6 +58,7 @@ class SensorInfo:
     lidar: LidarSpec | None = None
     camera: CameraSpec | None = None
     imu: ImuSpec | None = None
+    topics_from: str | None = None
 
 
 def _message(name: str) -> str:
@@ -62,14 +69,18 @@ def _message(name: str) -> str:
 
 def sensor_info(sensor: Sensor) -> SensorInfo:
     """The summary of ``sensor``."""
-    plugin = sensor.plugins[0] if sensor.plugins else None
+    plugin = ros_plugin(sensor)
     base = SensorInfo(sensor.name, sensor.type, "other", sensor.reference,
                       sensor.update_rate_hz, plugin.filename if plugin else None,
-                      sensor.reference, ())
+                      sensor.reference, (), topics_from=topic_origin(sensor))
     if sensor.type in LIDAR_TYPES:
         spec = lidar_spec(sensor)
         output = param(plugin.params, "output_type") if plugin else None
-        topics = _present((spec.topic, _message(output or "sensor_msgs/LaserScan")))
+        # gz-sensors' GPU lidar also publishes its points beside the scan
+        points = f"{spec.topic}/points" if gz_topic(sensor) and sensor.type in GPU_LIDAR_TYPES \
+            else None
+        topics = _present((spec.topic, _message(output or "sensor_msgs/LaserScan")),
+                          (points, "sensor_msgs/msg/PointCloud2"))
         return replace(base, kind="lidar", frame=spec.frame, lidar=spec, topics=topics)
     if sensor.type in CAMERA_TYPES:
         cam = camera_spec(sensor)
@@ -92,7 +103,7 @@ def _other_topics(sensor: Sensor) -> tuple[Topic, ...]:
     """Topics of a sensor without a typed view: remapping targets, else ``<topic>``."""
     targets = [rule.partition(":=")[2].strip() for plugin in sensor.plugins
                for rule in params_all(plugin.params, "ros/remapping")]
-    topic = param(sensor.params, "topic")
+    topic = gz_topic(sensor)
     names = [t for t in targets if t] or ([topic] if topic else [])
     return tuple(Topic(name, None) for name in names)
 

@@ -32,6 +32,8 @@ def sensors_tables(sensors: tuple[SensorInfo, ...]) -> list[Table]:
 
 def _details(s: SensorInfo) -> list[tuple[str, str]]:
     rows = [("plugin", s.plugin or "-"), ("frame", s.frame or "-")]
+    if s.topics and s.plugin is None and s.topics_from:
+        rows.append(("topics from", s.topics_from))
     if s.lidar is not None:
         lidar = s.lidar
         rows += [("scan", f"{lidar.samples} samples over "
@@ -41,7 +43,9 @@ def _details(s: SensorInfo) -> list[tuple[str, str]]:
                  ("noise", d.noise(lidar.noise, "m"))]
     if s.camera is not None:
         cam = s.camera
-        rows += [("image", f"{cam.width_px} x {cam.height_px} {cam.image_format or ''}".strip()),
+        size = "-" if cam.width_px is None or cam.height_px is None \
+            else f"{cam.width_px} x {cam.height_px}"
+        rows += [("image", f"{size} {cam.image_format or ''}".strip()),
                  ("horizontal field of view", d.quantity(cam.horizontal_fov_rad, "rad")),
                  ("clip", f"{d.span(cam.near_clip_m, cam.far_clip_m)} m"),
                  ("noise", d.noise(cam.noise))]
