@@ -156,7 +156,7 @@ def topic_origin(sensor: Sensor) -> str:
     return "no ROS plugin, no <topic>"
 
 
-def _resolve(plugin: Plugin, default: str, ros1: str = "topicName", within: str = "") -> str:
+def plugin_topic(plugin: Plugin, default: str, ros1: str = "topicName", within: str = "") -> str:
     """A Gazebo ROS plugin topic: remapped, then put in the plugin's namespace.
 
     A ROS 1 plugin (gazebo_ros_pkgs before ROS 2, as TurtleBot3's URDF still writes them)
@@ -204,7 +204,7 @@ def lidar_spec(sensor: Sensor) -> LidarSpec:
         update_rate_hz=sensor.update_rate_hz,
         noise=_noise(p, f"{root}/noise"),
         frame=_frame(sensor),
-        topic=_resolve(plugin, "~/out") if plugin else gz_topic(sensor),
+        topic=plugin_topic(plugin, "~/out") if plugin else gz_topic(sensor),
     )
 
 
@@ -222,7 +222,7 @@ def imu_spec(sensor: Sensor) -> ImuSpec:
         angular_velocity_noise=axes("angular_velocity"),
         linear_acceleration_noise=axes("linear_acceleration"),
         frame=_frame(sensor),
-        topic=_resolve(plugin, "~/out") if plugin else gz_topic(sensor),
+        topic=plugin_topic(plugin, "~/out") if plugin else gz_topic(sensor),
     )
 
 
@@ -234,8 +234,8 @@ def camera_spec(sensor: Sensor) -> CameraSpec:
     if plugin is not None:
         name = param(plugin.params, "camera_name") or sensor.name
         name = param(plugin.params, "cameraName") or name
-        image_topic = _resolve(plugin, f"{name}/image_raw", "imageTopicName", name)
-        info_topic = _resolve(plugin, f"{name}/camera_info", "cameraInfoTopicName", name)
+        image_topic = plugin_topic(plugin, f"{name}/image_raw", "imageTopicName", name)
+        info_topic = plugin_topic(plugin, f"{name}/camera_info", "cameraInfoTopicName", name)
     return CameraSpec(
         width_px=_int(p, "camera/image/width"),
         height_px=_int(p, "camera/image/height"),

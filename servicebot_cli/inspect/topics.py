@@ -1,8 +1,10 @@
 """The topics a robot consumes and publishes, and where each one comes from.
 
-Sensors publish what their Gazebo ROS plugins say. Controllers consume and publish what their
-type does in ROS 2 Humble (``~/`` is the controller's own namespace). Hardware parameters
-that name a serial port are listed as a device, since the motors are reached through it.
+Sensors publish what their Gazebo ROS plugins (or gz-sim ``<topic>``) say. Controllers consume
+and publish what their type does in ROS 2 Humble (``~/`` is the controller's own namespace).
+Model-level Gazebo plugins that drive the base or publish joint states give theirs
+(:mod:`servicebot_cli.inspect.model_plugins`). Hardware parameters that name a serial port are
+listed as a device, since the motors are reached through it.
 """
 
 from __future__ import annotations
@@ -10,8 +12,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from servicebot_cli.description.extensions import Plugin
 from servicebot_cli.inspect.controllers import Controller, Controllers
-from servicebot_cli.inspect.plugins import HardwareInfo
+from servicebot_cli.inspect.model_plugins import model_plugin_rows
+from servicebot_cli.inspect.plugins import HardwareInfo, PluginInfo
 from servicebot_cli.inspect.sensors import SensorInfo
 
 _PORT_KEYS = ("port", "serial_port", "device", "serial_device", "device_name")
@@ -119,9 +123,28 @@ def device_topics(hardware: tuple[HardwareInfo, ...]) -> list[TopicInfo]:
     return rows
 
 
+def plugin_topics(plugins: tuple[PluginInfo, ...]) -> list[TopicInfo]:
+    """What the model-level Gazebo plugins of a known kind consume and publish."""
+    rows = []
+    for info in plugins:
+        if info.attached_to != "model":
+            continue
+        plugin = Plugin(info.name, info.filename, tuple((p.name, p.value) for p in info.params))
+        source = f"Gazebo plugin {info.filename or info.name} (model)"
+        rows += [TopicInfo(direction, "topic", name, message, info.name or info.filename,
+                           source, note)
+                 for direction, name, message, note in model_plugin_rows(plugin)]
+    return rows
+
+
 def topics_info(sensors: tuple[SensorInfo, ...], hardware: tuple[HardwareInfo, ...],
-                controllers: Controllers | None) -> tuple[TopicInfo, ...]:
-    """Inputs first, then outputs; within each, controllers, devices, then sensors."""
-    rows = (controller_topics(controllers) if controllers else []) + device_topics(hardware) \
-        + sensor_topics(sensors)
+                controllers: Controllers | None,
+                gazebo: tuple[PluginInfo, ...] = ()) -> tuple[TopicInfo, ...]:
+    """Inputs first, then outputs; within each, controllers, plugins, devices, then sensors.
+
+    ``gazebo``: the description's Gazebo plugins (``PluginsInfo.gazebo``); the model-level
+    ones that drive the base or publish joint states add their topics.
+    """
+    rows = (controller_topics(controllers) if controllers else []) + plugin_topics(gazebo) \
+        + device_topics(hardware) + sensor_topics(sensors)
     return tuple(sorted(rows, key=lambda r: r.direction != "in"))

@@ -1,0 +1,125 @@
+"""Topics of model-level Gazebo plugins that drive the base or publish joint states.
+
+Gazebo Classic's ROS 2 plugins (gazebo_ros_pkgs) name relative topics in their node's
+``<ros><namespace>``, renamed by ``<ros><remapping>``; their ROS 1 ancestors use
+``<commandTopic>``, ``<odometryTopic>``, ``<topicName>`` and ``<robotNamespace>``:
+
+- ``gazebo_ros_diff_drive``: consumes ``cmd_vel``; publishes ``odom`` only with
+  ``<publish_odom>true`` and ``/tf`` only with ``<publish_odom_tf>`` or ``<publish_wheel_tf>``
+  (all three default to false in ROS 2, true in ROS 1);
+- ``gazebo_ros_planar_move``: ``cmd_vel`` in, ``odom`` and ``/tf`` out (both default true);
+- ``gazebo_ros_joint_state_publisher``: ``joint_states`` out.
+
+gz-sim systems publish gz-transport topics, which ros_gz_bridge shows under the same name:
+
+- ``DiffDrive``: consumes ``<topic>`` (default ``/model/MODEL/cmd_vel``), publishes
+  ``<odom_topic>`` (``/model/MODEL/odometry``) and ``<tf_topic>`` (``/model/MODEL/tf``);
+- ``OdometryPublisher``: ``<odom_topic>`` (``/model/MODEL/odometry``), ``<tf_topic>``
+  (``/model/MODEL/pose``);
+- ``JointStatePublisher``: ``<topic>`` (default ``/world/WORLD/model/MODEL/joint_state``).
+
+MODEL is the name the robot is spawned with and WORLD the world's, neither of which the
+description knows.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from servicebot_cli.description.extensions import Plugin, param
+from servicebot_cli.description.sensors import plugin_topic
+
+Row = tuple[str, str, str, str | None]
+"""direction, topic, message type, note."""
+
+TWIST, ODOMETRY = "geometry_msgs/msg/Twist", "nav_msgs/msg/Odometry"
+TF, JOINT_STATE = "tf2_msgs/msg/TFMessage", "sensor_msgs/msg/JointState"
+GZ_NOTE = "gz topic (ros_gz_bridge keeps the name unless configured otherwise)"
+MODEL_NOTE = GZ_NOTE + "; MODEL: the name the robot is spawned with"
+
+
+def _flag(plugin: Plugin, key: str, default: bool) -> bool:
+    text = (param(plugin.params, key) or "").strip().lower()
+    return default if not text else text in ("1", "true")
+
+
+def _absolute(topic: str) -> str:
+    return "/" + "/".join(part for part in topic.split("/") if part)
+
+
+def _ros1(plugin: Plugin) -> bool:
+    return not any(key.startswith("ros/") for key, _ in plugin.params) and any(
+        key in ("commandTopic", "odometryTopic", "robotNamespace", "topicName")
+        for key, _ in plugin.params)
+
+
+def _classic_drive(plugin: Plugin, odom_default: bool, tf_default: bool) -> list[Row]:
+    ros1 = _ros1(plugin)
+    odom_on, tf_on = (True, True) if ros1 else (odom_default, tf_default)
+    rows: list[Row] = [("in", _absolute(plugin_topic(plugin, "cmd_vel", "commandTopic")),
+                        TWIST, None)]
+    if _flag(plugin, "publish_odom", odom_on) and _flag(plugin, "publishOdom", True):
+        rows.append(("out", _absolute(plugin_topic(plugin, "odom", "odometryTopic")),
+                     ODOMETRY, None))
+    if (_flag(plugin, "publish_odom_tf", tf_on) or _flag(plugin, "publish_wheel_tf", False)) \
+            and _flag(plugin, "publishTf", True):
+        rows.append(("out", "/tf", TF, None))
+    return rows
+
+
+def _diff_drive(plugin: Plugin) -> list[Row]:
+    return _classic_drive(plugin, odom_default=False, tf_default=False)
+
+
+def _planar_move(plugin: Plugin) -> list[Row]:
+    return _classic_drive(plugin, odom_default=True, tf_default=True)
+
+
+def _joint_states(plugin: Plugin) -> list[Row]:
+    return [("out", _absolute(plugin_topic(plugin, "joint_states")), JOINT_STATE, None)]
+
+
+def _gz(plugin: Plugin, key: str, default: str) -> tuple[str, str]:
+    text = (param(plugin.params, key) or "").strip()
+    return (_absolute(text), GZ_NOTE) if text else (default, MODEL_NOTE)
+
+
+def _gz_diff_drive(plugin: Plugin) -> list[Row]:
+    rows: list[Row] = []
+    for direction, key, default, message in (
+            ("in", "topic", "/model/MODEL/cmd_vel", TWIST),
+            ("out", "odom_topic", "/model/MODEL/odometry", ODOMETRY),
+            ("out", "tf_topic", "/model/MODEL/tf", TF)):
+        topic, note = _gz(plugin, key, default)
+        rows.append((direction, topic, message, note))
+    return rows
+
+
+def _gz_odometry(plugin: Plugin) -> list[Row]:
+    odom, odom_note = _gz(plugin, "odom_topic", "/model/MODEL/odometry")
+    tf, tf_note = _gz(plugin, "tf_topic", "/model/MODEL/pose")
+    return [("out", odom, ODOMETRY, odom_note), ("out", tf, TF, tf_note)]
+
+
+def _gz_joint_states(plugin: Plugin) -> list[Row]:
+    topic, note = _gz(plugin, "topic", "/world/WORLD/model/MODEL/joint_state")
+    return [("out", topic, JOINT_STATE, note.replace("MODEL:", "WORLD, MODEL: the world's and"))]
+
+
+_KNOWN: tuple[tuple[tuple[str, ...], Callable[[Plugin], list[Row]]], ...] = (
+    (("gazebo_ros_diff_drive", "gazebo_ros_skid_steer_drive"), _diff_drive),
+    (("gazebo_ros_planar_move",), _planar_move),
+    (("gazebo_ros_joint_state_publisher",), _joint_states),
+    (("diff-drive-system", "::DiffDrive"), _gz_diff_drive),
+    (("odometry-publisher-system", "::OdometryPublisher"), _gz_odometry),
+    (("joint-state-publisher-system", "::JointStatePublisher"), _gz_joint_states),
+)
+
+
+def model_plugin_rows(plugin: Plugin) -> list[Row]:
+    """What a known model-level plugin consumes and publishes; [] for any other plugin."""
+    for needles, derive in _KNOWN:
+        if any(plugin.name.endswith(n) if n.startswith("::") else n in plugin.filename
+               for n in needles):
+            return derive(plugin)
+    return []

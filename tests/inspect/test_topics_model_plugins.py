@@ -1,0 +1,53 @@
+"""Topics of model-level Gazebo plugins, read from real descriptions with no ROS set.
+
+sam_bot (Nav2's tutorial, ``tests/fixtures/sam_bot_description``) is driven by Gazebo
+Classic's ``libgazebo_ros_diff_drive.so`` in the ``/demo`` namespace; Leo Rover
+(``tests/fixtures/leo_description``) by gz-sim's DiffDrive and JointStatePublisher systems.
+Neither has ros2_control, so without the plugins the robot would seem to take no command.
+The expected names are those the plugins' sources document (gazebo_ros_pkgs' ROS 2
+``gazebo_ros_diff_drive.cpp``, gz-sim's ``DiffDrive.cc`` and ``JointStatePublisher.cc``).
+"""
+
+from __future__ import annotations
+
+from servicebot_cli.description.loader import RobotSource, load
+from servicebot_cli.inspect.plugins import plugins_info
+from servicebot_cli.inspect.sensors import sensors_info
+from servicebot_cli.inspect.topics import topics_info
+from tests.conftest import REPO
+
+FIXTURES = REPO / "tests" / "fixtures"
+SAM_BOT = FIXTURES / "sam_bot_description" / "src" / "description" / "sam_bot_description.urdf"
+LEO = FIXTURES / "leo_description" / "urdf" / "leo_sim.urdf.xacro"
+
+
+def _plugin_topics(path):
+    robot = load(RobotSource.of(path))
+    plugins = plugins_info(robot.gazebo, robot.sensors, robot.ros2_control)
+    rows = topics_info(sensors_info(robot.sensors), plugins.ros2_control, None, plugins.gazebo)
+    return [(t.direction, t.name, t.message, t.provider) for t in rows
+            if t.source.startswith("Gazebo plugin")], rows
+
+
+def test_sam_bot_diff_drive_plugin_topics_are_in_its_namespace(monkeypatch):
+    monkeypatch.setenv("ROS_PACKAGE_PATH", "")
+    rows, _ = _plugin_topics(SAM_BOT)
+    assert rows == [
+        ("in", "/demo/cmd_vel", "geometry_msgs/msg/Twist", "diff_drive"),
+        ("out", "/demo/odom", "nav_msgs/msg/Odometry", "diff_drive"),  # <publish_odom>true
+        ("out", "/tf", "tf2_msgs/msg/TFMessage", "diff_drive"),  # <publish_wheel_tf>true
+    ]
+
+
+def test_leo_gz_systems_topics_are_their_gz_topics(monkeypatch):
+    monkeypatch.setenv("ROS_PACKAGE_PATH", "")
+    rows, everything = _plugin_topics(LEO)
+    drive, joints = "ignition::gazebo::systems::DiffDrive", \
+        "ignition::gazebo::systems::JointStatePublisher"
+    assert ("in", "/cmd_vel", "geometry_msgs/msg/Twist", drive) in rows
+    assert ("out", "/odom", "nav_msgs/msg/Odometry", drive) in rows
+    assert ("out", "/tf", "tf2_msgs/msg/TFMessage", drive) in rows
+    assert ("out", "/joint_states", "sensor_msgs/msg/JointState", joints) in rows
+    assert everything[0].direction == "in"  # inputs first
+    assert all("ros_gz_bridge" in (t.note or "") for t in everything
+               if t.source.startswith("Gazebo plugin"))
