@@ -82,12 +82,14 @@ URDF_RULES: tuple[Rule, ...] = (
          "xacro warns about deprecated syntax (for example a macro call without the xacro: "
          "prefix or an unused argument); newer xacro versions refuse it.",
          "Follow xacro's advice in the message."),
-    Rule("SB018", "xacro-include", N, "A xacro include was named: checked through its includers",
+    Rule("SB018", "xacro-include", N, "A xacro include: checked through its includers",
          "A xacro file that only defines macros or properties, or holds parts of a robot that "
-         "another file includes, is no robot alone: a directory walk leaves it out, and named "
-         "on the command line (`servicebot check urdf $(git ls-files '*.xacro')`) it gets "
-         "this note instead of the errors a robot without a name or links would get. The "
-         "files that include it are checked, with it, as the robot.",
+         "another file includes, or whose links all hang from one link it does not define "
+         "(an end effector sent as a URDF fragment), is no robot alone. A directory walk "
+         "leaves the first two out; named on the command line (`servicebot check urdf "
+         "$(git ls-files '*.xacro')`), or a part found in a directory, it gets this note "
+         "instead of the errors a robot without a name, links or root would get. The files "
+         "that include it are checked, with it, as the robot.",
          "Nothing to fix: name a file that includes it (or its directory) to check it."),
     # -- tree and names --------------------------------------------------------------------------
     Rule("SB101", "duplicate-link", E, "Two links have the same name",

@@ -67,6 +67,10 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv) -> File
         return _report(source.display, place_issues(None, [issue], settings))
     from servicebot_cli.check import packages
 
+    part = _part_of_another(robot, source)
+    if part is not None:
+        return _report(source.display, place_issues(robot, [part], settings),
+                       packages.used(robot, env.search))
     ahead = _model_ahead(robot, settings, env)
     try:
         findings = place_issues(robot, _issues(robot, settings, env), settings)
@@ -75,6 +79,21 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv) -> File
     finally:
         if ahead is not None:
             ahead.close()  # at once when no verdict was asked for
+
+
+def _part_of_another(robot: RobotDescription, source: RobotSource) -> Issue | None:
+    """SB018 for a xacro part that hangs from a link of the robot that includes it."""
+    from servicebot_cli.check.fragments import external_parent
+    from servicebot_cli.description.robot import is_xacro_name
+
+    if not is_xacro_name(source.path):
+        return None
+    parent = external_parent(robot)
+    if parent is None:
+        return None
+    return Issue("SB018", f"a part of another robot: every link hangs from '{parent}', which "
+                 "it does not define; checked through the files that include it, not alone",
+                 where=(robot.display, 0, 0))
 
 
 def _model_ahead(robot: RobotDescription, settings: Settings, env: CheckEnv) -> ModelAhead | None:
