@@ -26,19 +26,26 @@ class Intrinsics:
     d: tuple[float, ...] = (0.0, 0.0, 0.0, 0.0, 0.0)
 
 
+SDF_WIDTH_PX, SDF_HEIGHT_PX, SDF_HORIZONTAL_FOV_RAD = 320, 240, 1.047
+"""SDF's defaults for ``<camera>``'s ``<image><width>``, ``<height>`` and ``<horizontal_fov>``,
+which Gazebo (Classic and gz-sim) uses when a description leaves them out."""
+
+
 def intrinsics(spec: CameraSpec) -> Intrinsics:
-    """Intrinsics of ``spec``.
+    """Intrinsics of ``spec``; a size or field of view it leaves out is SDF's default.
 
     Raises:
-        DescriptionError: Missing width, height or field of view.
+        DescriptionError: A size that is not positive, or a field of view not in (0, pi).
     """
-    if not spec.width_px or not spec.height_px or not spec.horizontal_fov_rad:
-        raise DescriptionError("the camera sensor needs <width>, <height> and <horizontal_fov>")
-    if not 0.0 < spec.horizontal_fov_rad < math.pi:
-        raise DescriptionError(
-            f"camera horizontal_fov {spec.horizontal_fov_rad:g} rad is not in (0, pi)")
-    f = spec.width_px / (2.0 * math.tan(spec.horizontal_fov_rad / 2.0))
-    cx, cy = (spec.width_px + 1) / 2.0, (spec.height_px + 1) / 2.0
-    return Intrinsics(spec.width_px, spec.height_px,
+    width = SDF_WIDTH_PX if spec.width_px is None else spec.width_px
+    height = SDF_HEIGHT_PX if spec.height_px is None else spec.height_px
+    fov = SDF_HORIZONTAL_FOV_RAD if spec.horizontal_fov_rad is None else spec.horizontal_fov_rad
+    if width <= 0 or height <= 0:
+        raise DescriptionError(f"camera image {width} x {height} px is not a positive size")
+    if not 0.0 < fov < math.pi:
+        raise DescriptionError(f"camera horizontal_fov {fov:g} rad is not in (0, pi)")
+    f = width / (2.0 * math.tan(fov / 2.0))
+    cx, cy = (width + 1) / 2.0, (height + 1) / 2.0
+    return Intrinsics(width, height,
                       (f, 0.0, cx, 0.0, f, cy, 0.0, 0.0, 1.0),
                       (f, 0.0, cx, 0.0, 0.0, f, cy, 0.0, 0.0, 0.0, 1.0, 0.0))
