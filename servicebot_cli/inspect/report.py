@@ -152,7 +152,7 @@ def _topics(robot: RobotDescription, sensors: tuple[SensorInfo, ...], plugins: P
         controllers_file=controllers.file if controllers else None,
         controllers_found_by=controllers.found_by if controllers else None,
         controllers=controllers.controllers if controllers else (),
-        topics=topics_info(sensors, plugins.ros2_control, controllers),
+        topics=topics_info(sensors, plugins.ros2_control, controllers, plugins.gazebo),
         notes=notes,
     )
 

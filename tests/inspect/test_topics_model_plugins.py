@@ -10,6 +10,8 @@ The expected names are those the plugins' sources document (gazebo_ros_pkgs' ROS
 
 from __future__ import annotations
 
+import json
+
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.inspect.plugins import plugins_info
 from servicebot_cli.inspect.sensors import sensors_info
@@ -51,3 +53,13 @@ def test_leo_gz_systems_topics_are_their_gz_topics(monkeypatch):
     assert everything[0].direction == "in"  # inputs first
     assert all("ros_gz_bridge" in (t.note or "") for t in everything
                if t.source.startswith("Gazebo plugin"))
+
+
+def test_the_topics_section_lists_the_plugins_topics(run, monkeypatch):
+    monkeypatch.setenv("ROS_PACKAGE_PATH", "")
+    result = run("inspect", SAM_BOT, "--section", "topics", "--format", "json")
+    assert result.exit_code == 0, result.output
+    topics = json.loads(result.stdout)["topics"]["topics"]
+    assert {"direction": "in", "name": "/demo/cmd_vel"}.items() <= next(
+        t for t in topics if t["name"] == "/demo/cmd_vel").items()
+    assert any(t["name"] == "/demo/odom" and t["direction"] == "out" for t in topics)
