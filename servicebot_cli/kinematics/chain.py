@@ -60,6 +60,29 @@ class Reach:
         return distance - self.radius_m
 
 
+def _frame_names_unique(model: pin.Model) -> pin.Model:
+    """``model``, or a copy whose joint frames named like a link are renamed ``NAME (joint)``.
+
+    URDF lets a joint and a link share a name (baxter's fixed joint ``left_hand`` holds link
+    ``left_hand``), and Pinocchio then has two frames of that name; ``buildReducedModel``
+    looks a locked joint's frames up by name alone and raises on them. Link frames, which
+    every lookup here uses, keep their names.
+    """
+    import pinocchio as pin
+
+    links = {frame.name for frame in model.frames if frame.type == pin.FrameType.BODY}
+    clashing = [index for index, frame in enumerate(model.frames)
+                if frame.type != pin.FrameType.BODY and frame.name in links]
+    if not clashing:
+        return model
+    renamed = pin.Model(model)
+    for index in clashing:
+        frame = renamed.frames[index]
+        frame.name = f"{frame.name} (joint)"
+        renamed.frames[index] = frame
+    return renamed
+
+
 class Chain:
     """The joints that move ``frame``, as a reduced model.
 
@@ -93,7 +116,8 @@ class Chain:
                                "choose a frame on the arm, or add --with-base")
         lock = [j for j in range(1, model.njoints) if j not in keep]
         self.full_nq = model.nq
-        self.model = pin.buildReducedModel(model, lock, pin.neutral(model)) if lock else model
+        self.model = (pin.buildReducedModel(_frame_names_unique(model), lock, pin.neutral(model))
+                      if lock else model)
         self.data = self.model.createData()
         self.frame = frame_id(self.model, frame, known)
         self.frame_name = frame
