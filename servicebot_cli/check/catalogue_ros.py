@@ -14,8 +14,10 @@ ROS_RULES = (
          "apply.",
          "Use the suggested name."),
     Rule("SB502", "sensor-parameter", E, "A sensor parameter out of range",
-         "samples > 0, min_angle < max_angle, 0 < range min < range max, update_rate > 0, "
-         "image width and height > 0, clip near < far, noise stddev >= 0.",
+         "samples > 0, min_angle < max_angle, 0 < range min < range max (a Gazebo Classic "
+         "\"ray\" sensor may start at range min 0; a GPU lidar's range min is a camera's "
+         "near clip, which must be positive), update_rate > 0, image width and height > 0, "
+         "clip near < far, noise stddev >= 0.",
          "Write the sensor's real values."),
     Rule("SB503", "mixed-gazebo", W, "Gazebo Classic and gz-sim plugins in one file",
          "libgazebo_ros_* plugins load only in Gazebo Classic, gz-sim-* (ignition-gazebo-*) "

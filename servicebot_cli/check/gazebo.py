@@ -17,6 +17,10 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 _CLASSIC = ("libgazebo_ros", "gazebo_ros")
+# Gazebo Classic casts a "ray" sensor's rays in the physics engine: range min 0 (sdformat's
+# default) starts them at the sensor (pepper's sonars). A GPU lidar's range min is its
+# camera's near clip, which OGRE refuses at 0.
+_CPU_RAYS = ("ray",)
 _GZ_SIM = ("gz-sim", "libgz-sim", "ignition-gazebo", "libignition-gazebo", "gz::sim")
 
 
@@ -60,8 +64,9 @@ def _lidar(sensor: Sensor) -> Iterator[str]:
     if low is not None and high is not None and not low < high:
         yield f"min_angle {low:g} rad must be below max_angle {high:g} rad"
     near, far = lidar.min_range_m, lidar.max_range_m
-    if near is not None and not near > 0:
-        yield f"range min {near:g} m must be positive"
+    if near is not None and not (near >= 0 if sensor.type in _CPU_RAYS else near > 0):
+        yield (f"range min {near:g} m must not be negative" if sensor.type in _CPU_RAYS
+               else f"range min {near:g} m must be positive")
     if near is not None and far is not None and not near < far:
         yield f"range min {near:g} m must be below range max {far:g} m"
     yield from _noise(lidar.noise)
