@@ -162,7 +162,7 @@ def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> T
     from servicebot_cli.inspect import totals as t
     from servicebot_cli.inspect.geometry import mesh_library
     from servicebot_cli.inspect.poses import link_transforms
-    from servicebot_cli.kinematics.drive_geometry import drive_geometry
+    from servicebot_cli.kinematics.drive_geometry import chassis_joints, drive_geometry
 
     notes: list[str] = []
     try:
@@ -171,16 +171,17 @@ def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> T
         drive = None
         notes.append(str(exc).split(": ", 1)[-1])
     wheels = {w.joint for w in drive.wheels} if drive else set()
+    chassis = frozenset(chassis_joints(robot, sorted(wheels)))
     zero = link_transforms(robot)
     posed = link_transforms(robot, request.configuration, clamp=request.clamp)
     meshes = mesh_library(robot, request.resolver or PackageResolver.from_environment())
     mass, centre = t.mass_and_centre(robot, posed)
     box = t.box_of(robot, posed, meshes)
-    arm = [j for j in robot.movable_joints if j.name not in wheels]
+    arm = [j for j in robot.movable_joints if j.name not in wheels and j.name not in chassis]
     notes.extend(meshes.problems)
     return t.Totals(
         frame=robot.root_link, configuration_rad_or_m=dict(request.configuration),
-        dof=t.dof_of(robot, wheels),
+        dof=t.dof_of(robot, wheels, chassis),
         mass_kg=mass, centre_of_mass_m=centre, bounding_box_m=box,
         arm=t.arm_reach(tree, arm, zero), drive=t.drive_info(drive) if drive else None,
         notes=tuple(notes),

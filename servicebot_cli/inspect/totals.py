@@ -26,11 +26,20 @@ _PARALLEL = 0.999  # |cos| between a segment and a joint axis that counts as "al
 
 @dataclass(frozen=True)
 class Dof:
-    """Degrees of freedom: the drive wheels and every other movable joint (the arm)."""
+    """Degrees of freedom: the drive wheels, the rest of the running gear, everything else.
+
+    Attributes:
+        total: Every movable joint's degrees of freedom.
+        wheels: The drive wheels'.
+        arm: The rest: an arm, a lift, a head.
+        chassis: Passive casters (MiR's four swivels and wheels), suspension and steering
+            joints that carry wheels (Leo Rover's rockers): neither drive nor arm.
+    """
 
     total: int
     wheels: int
     arm: int
+    chassis: int = 0
 
 
 @dataclass(frozen=True)
@@ -166,12 +175,15 @@ def drive_info(drive: DriveGeometry) -> DriveInfo:
     )
 
 
-def dof_of(robot: RobotDescription, wheel_joints: set[str]) -> Dof:
-    """Degrees of freedom, split into drive wheels and the rest."""
+def dof_of(robot: RobotDescription, wheel_joints: set[str],
+           chassis_joints: frozenset[str] = frozenset()) -> Dof:
+    """Degrees of freedom, split into drive wheels, the rest of the running gear, the rest."""
     movable = [j for j in robot.joints if j.movable]
     wheels = sum(DOF[j.type] for j in movable if j.name in wheel_joints)
+    chassis = sum(DOF[j.type] for j in movable
+                  if j.name in chassis_joints and j.name not in wheel_joints)
     total = sum(DOF[j.type] for j in movable)
-    return Dof(total, wheels, total - wheels)
+    return Dof(total, wheels, total - wheels - chassis, chassis)
 
 
 def box_of(robot: RobotDescription, transforms: Mapping[str, FloatArray],

@@ -8,6 +8,7 @@ left, on -y right. Nothing here is a constant: change the URDF and the numbers f
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -21,6 +22,7 @@ from servicebot_cli.kinematics.transforms import pose_matrix
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
+_ONE_AXIS = ("revolute", "continuous", "prismatic")
 _PARALLEL = 0.99  # |cos| of the angle between axes that counts as parallel (about 8 degrees)
 
 
@@ -92,8 +94,11 @@ def drive_geometry(robot: RobotDescription) -> DriveGeometry:
     world = _link_transforms(robot)
     wheels: list[Wheel] = []
     left_out: dict[str, list[str]] = {}
+    swivel_of = _swivels_above(robot, world)
     for joint in robot.joints:
-        wheel = _as_wheel(robot, joint, world)
+        swivel = swivel_of.get(joint.name)
+        wheel = (_as_wheel(robot, joint, world) if swivel is None
+                 else f"on a caster: '{swivel}' swivels it about the vertical")
         if isinstance(wheel, Wheel):
             wheels.append(wheel)
         elif wheel is not None:
@@ -114,6 +119,54 @@ def drive_geometry(robot: RobotDescription) -> DriveGeometry:
         track_m=float(left_y - right_y),
         max_wheel_speed_rad_s=min(w.velocity_limit_rad_s for w in wheels),
     )
+
+
+def chassis_joints(robot: RobotDescription, wheels: Sequence[str] = ()) -> tuple[str, ...]:
+    """The movable joints of the running gear other than the drive ``wheels``, URDF order.
+
+    Passive casters: a swivel, a continuous joint about the vertical (the root link's z) with
+    a continuous joint below it, the caster wheel (MiR's ``fl_caster_rotation_joint`` over
+    ``fl_caster_wheel_joint``); and the one-axis joints that carry a drive wheel or a caster,
+    a suspension (Leo Rover's rockers) or a steering joint. None of them is part of an arm.
+    """
+    below = _swivels_above(robot, _link_transforms(robot))
+    gear = set(below.values()) | set(below)
+    by_child = {joint.child: joint for joint in robot.joints}
+    for name in (*wheels, *gear):
+        joint = next((j for j in robot.joints if j.name == name), None)
+        above = by_child.get(joint.parent) if joint is not None else None
+        while above is not None and above.name not in gear:
+            if above.type in _ONE_AXIS:
+                gear.add(above.name)
+            above = by_child.get(above.parent)
+    return tuple(j.name for j in robot.joints if j.name in gear and j.name not in wheels)
+
+
+def _swivels_above(robot: RobotDescription, world: dict[str, np.ndarray]) -> dict[str, str]:
+    """For each joint below a caster swivel, the nearest such swivel above it."""
+    by_child = {joint.child: joint for joint in robot.joints}
+    found: dict[str, str] = {}
+    for joint in robot.joints:
+        if joint.type != "continuous":
+            continue
+        seen: set[str] = set()
+        above = by_child.get(joint.parent)
+        while above is not None and above.name not in seen:
+            seen.add(above.name)
+            if above.type == "continuous" and _vertical(above, world):
+                found[joint.name] = above.name
+                break
+            above = by_child.get(above.parent)
+    return found
+
+
+def _vertical(joint: Joint, world: dict[str, np.ndarray]) -> bool:
+    """Whether ``joint`` turns about the root link's z at the zero configuration."""
+    axis = np.array(joint.axis, dtype=float)
+    norm = float(np.linalg.norm(axis))
+    if joint.child not in world or not math.isfinite(norm) or norm == 0:
+        return False
+    return abs(float((world[joint.child][:3, :3] @ (axis / norm))[2])) >= _PARALLEL
 
 
 def _why_not_wheels(robot: RobotDescription, left_out: dict[str, list[str]]) -> str:
