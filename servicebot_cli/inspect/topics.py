@@ -3,7 +3,7 @@
 Sensors publish what their Gazebo ROS plugins (or gz-sim ``<topic>``) say. Controllers consume
 and publish what their type does in ROS 2 Humble (``~/`` is the controller's own namespace).
 Model-level Gazebo plugins that drive the base or publish joint states give theirs
-(:mod:`servicebot_cli.inspect.model_plugins`). Hardware parameters that name a serial port are
+(:mod:`servicebot_cli.description.model_plugins`). Hardware parameters that name a serial port are
 listed as a device, since the motors are reached through it.
 """
 
@@ -13,8 +13,8 @@ from dataclasses import dataclass
 from typing import Any
 
 from servicebot_cli.description.extensions import Plugin
+from servicebot_cli.description.model_plugins import model_plugin_rows
 from servicebot_cli.inspect.controllers import Controller, Controllers
-from servicebot_cli.inspect.model_plugins import model_plugin_rows
 from servicebot_cli.inspect.plugins import HardwareInfo, PluginInfo
 from servicebot_cli.inspect.sensors import SensorInfo
 

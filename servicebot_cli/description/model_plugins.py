@@ -116,10 +116,23 @@ _KNOWN: tuple[tuple[tuple[str, ...], Callable[[Plugin], list[Row]]], ...] = (
 )
 
 
+DIFF_DRIVES = {"gazebo_ros_diff_drive": "classic", "gazebo_ros_skid_steer_drive": "classic",
+               "diff-drive-system": "gz", "::DiffDrive": "gz"}
+"""The plugins that drive a differential base, by kind: Gazebo Classic's or gz-sim's."""
+
+
+def diff_drive_kind(plugin: Plugin) -> str | None:
+    """``classic`` or ``gz`` for a plugin of :data:`DIFF_DRIVES`; None for any other."""
+    return next((kind for needle, kind in DIFF_DRIVES.items() if _is(plugin, needle)), None)
+
+
+def _is(plugin: Plugin, needle: str) -> bool:
+    return plugin.name.endswith(needle) if needle.startswith("::") else needle in plugin.filename
+
+
 def model_plugin_rows(plugin: Plugin) -> list[Row]:
     """What a known model-level plugin consumes and publishes; [] for any other plugin."""
     for needles, derive in _KNOWN:
-        if any(plugin.name.endswith(n) if n.startswith("::") else n in plugin.filename
-               for n in needles):
+        if any(_is(plugin, n) for n in needles):
             return derive(plugin)
     return []
