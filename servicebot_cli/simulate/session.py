@@ -222,13 +222,10 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
             trajectory point in collision (``check_points``), or an output that cannot be
             written.
     """
-    from servicebot_cli.simulate.controllers.config import (
-        find_controllers_file,
-        read_controllers_file,
-    )
+    from servicebot_cli.simulate.controllers.plugin_drive import controllers_for
     from servicebot_cli.simulate.controllers.resolve import resolve
 
-    controllers_file = read_controllers_file(find_controllers_file(robot, controllers))
+    controllers_file = controllers_for(robot, controllers)
     scenario = resolve(scenario, controllers_file)
     from servicebot_cli.simulate import simulator
     from servicebot_cli.simulate.bag.ros_messages import odom_topic, publishers

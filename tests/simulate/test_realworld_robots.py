@@ -77,7 +77,7 @@ def test_turtlebot3_plot_and_bag_are_written_quietly_and_read_back(tmp_path):
     assert len(scan.ranges) == 360
     assert (scan.range_min, scan.range_max) == pytest.approx((0.12, 3.5))
     assert list(last["/joint_states"].name) == ["wheel_left_joint", "wheel_right_joint"]
-    assert last["/diff_controller/odom"].child_frame_id == "base_footprint"
+    assert last["/odom"].child_frame_id == "base_footprint"  # its diff drive plugin's topic
 
 
 def test_an_arm_goal_for_a_robot_with_only_wheels_says_so(tmp_path):

@@ -68,7 +68,12 @@ def absolute(topic: str | None, fallback: str) -> str:
 
 
 def odom_topic(controllers: ControllersFile) -> str:
-    """Where the diff-drive controller of ``controllers`` publishes odometry (``~/odom``)."""
+    """Where the diff-drive controller of ``controllers`` publishes odometry (``~/odom``).
+
+    A Gazebo drive plugin's topic when the plugin drives the base.
+    """
+    if controllers.odom_topic:
+        return controllers.odom_topic
     return f"/{controllers.name}/odom" if controllers.name else ODOM_TOPIC
 
 

@@ -1,8 +1,10 @@
 """diff_drive_controller's parameters from a ros2_control controllers file.
 
 Which file: ``--controllers FILE`` when given; else the one the ``gazebo_ros2_control``
-plugin's ``<parameters>`` names (relative to the description); else ``controllers.yaml``
-beside the description; else none (the simulator's defaults). In the file, the controller
+plugin's ``<parameters>`` names (relative to the description); else, when a Gazebo
+diff-drive plugin drives the base, none: the plugin's parameters are the controller's
+(:mod:`.plugin_drive`); else ``controllers.yaml`` beside the description; else none (the
+simulator's defaults). In the file, the controller
 whose ``type`` is ``diff_drive_controller/DiffDriveController`` under ``controller_manager``
 (or, since Jazzy, in its own ``ros__parameters``) gives its ``ros__parameters``;
 ``controller_manager``'s ``update_rate`` is the control rate. Pure apart from reading the
@@ -39,10 +41,23 @@ class ControllersFile:
     values: Mapping[str, Any]
     name: str | None = None
     """The diff-drive controller's name (its topics are ``/NAME/...``); None without one."""
+    source: str | None = None
+    """Where the values come from, when not from ``path`` (a Gazebo drive plugin)."""
+    odom_topic: str | None = None
+    """Where odometry is published, when not ``/NAME/odom``."""
+
+    @property
+    def label(self) -> str:
+        """Where the values come from, for the summary."""
+        return self.source or str(self.path)
 
 
-def find_controllers_file(robot: RobotDescription, explicit: str | None) -> Path | None:
-    """The controllers file to read (see the module docstring), None when there is none."""
+def find_controllers_file(robot: RobotDescription, explicit: str | None,
+                          beside: bool = True) -> Path | None:
+    """The controllers file to read (see the module docstring), None when there is none.
+
+    ``beside``: also ``controllers.yaml`` beside the description.
+    """
     if explicit is not None:
         return Path(explicit)
     base = robot.path.parent
@@ -54,8 +69,8 @@ def find_controllers_file(robot: RobotDescription, explicit: str | None) -> Path
                     path = named if named.is_absolute() else base / named
                     if path.is_file():
                         return path
-    beside = base / "controllers.yaml"
-    return beside if beside.is_file() else None
+    near = base / "controllers.yaml"
+    return near if beside and near.is_file() else None
 
 
 def read_controllers_file(path: Path | None) -> ControllersFile:

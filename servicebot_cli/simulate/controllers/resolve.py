@@ -35,7 +35,7 @@ def resolve(scenario: Scenario, file: ControllersFile) -> Scenario:
         elif name in scenario.controller_given:
             origin[name] = SCENARIO
         elif name in from_file:
-            origin[name] = str(file.path)
+            origin[name] = file.label
         else:
             origin[name] = DEFAULT
     mirrored = {}

@@ -1,0 +1,122 @@
+"""The controller of a base that a Gazebo diff-drive plugin drives, with no ros2_control.
+
+sam_bot (Nav2's tutorial) and Leo Rover drive their base with a model-level plugin, not
+diff_drive_controller; the simulator then publishes odometry where that plugin does, at its
+rate, with its limits and covariances:
+
+- Gazebo Classic's ``gazebo_ros_diff_drive`` (ROS 2; gazebo_ros_pkgs' source): the plugin
+  commands the wheels and publishes odometry once per ``<update_rate>`` (default 100 Hz; ROS 1:
+  ``<updateRate>``), the odometry's rate here (the simulator's control loop stays its own:
+  Gazebo's sensors do not wait for the plugin); the odometry's pose and twist covariances
+  are ``<covariance_x>``, ``<covariance_y>`` and ``<covariance_yaw>`` (defaults 1e-5, 1e-5,
+  1e-3) with 1e12 for z, roll and pitch.
+- gz-sim's ``DiffDrive`` system (gz-sim's ``DiffDrive.cc``): commands the wheels at every
+  physics step and publishes odometry at ``<odom_publish_frequency>`` (default 50 Hz); its
+  speed limiter takes ``<max_velocity>``, ``<max_acceleration>`` and ``<max_jerk>`` (and their
+  ``min_``) for both axes, overridden per axis by ``<max_linear_velocity>``,
+  ``<max_angular_acceleration>``, and so on.
+
+The odometry topic is the one ``inspect`` lists for the plugin (its ROS namespace and
+remapping; a gz ``<odom_topic>``, else ``/model/MODEL/odometry`` with MODEL the robot's
+name, the name it is usually spawned with). Pure.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+from servicebot_cli.description.extensions import Plugin, param
+from servicebot_cli.description.model_plugins import ODOMETRY, diff_drive_kind, model_plugin_rows
+from servicebot_cli.simulate.controllers.config import (
+    ControllersFile,
+    ControllersFileError,
+    find_controllers_file,
+    read_controllers_file,
+)
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.robot import RobotDescription
+
+_UNKNOWN_AXES = 1e12  # z, roll and pitch: what the classic plugin writes for them
+_GZ_LIMITS = (("velocity", "m_s", "rad_s"), ("acceleration", "m_s2", "rad_s2"),
+              ("jerk", "m_s3", "rad_s3"))
+
+
+def controllers_for(robot: RobotDescription, explicit: str | None) -> ControllersFile:
+    """The controller a run of ``robot`` uses, as :mod:`.config` says which.
+
+    Raises:
+        ControllersFileError: An unreadable file, or a parameter that is not a number.
+    """
+    named = find_controllers_file(robot, explicit, beside=False)
+    plugin = drive_plugin(robot) if named is None else None
+    if plugin is not None:
+        return read_drive_plugin(robot, plugin)
+    return read_controllers_file(named or find_controllers_file(robot, None))
+
+
+def drive_plugin(robot: RobotDescription) -> Plugin | None:
+    """The first model-level Gazebo plugin that drives a differential base, or None."""
+    return next((plugin for block in robot.gazebo if block.reference is None
+                 for plugin in block.plugins if diff_drive_kind(plugin)), None)
+
+
+def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFile:
+    """The scenario fields ``plugin`` sets, and where it publishes odometry.
+
+    Raises:
+        ControllersFileError: A parameter that is not a finite number.
+    """
+    label = f"Gazebo plugin {plugin.filename or plugin.name}"
+    where = f"{robot.display}: {label}"
+    values: dict[str, Any] = {}
+    if diff_drive_kind(plugin) == "classic":
+        rate = _number(plugin, where, "update_rate", "updateRate", default=100.0)
+        if rate > 0:  # 0: every physics step, as often as the control loop runs
+            values["publish_rate_hz"] = rate
+        x, y, yaw = (_number(plugin, where, f"covariance_{axis}", default=default)
+                     for axis, default in (("x", 1e-5), ("y", 1e-5), ("yaw", 1e-3)))
+        diagonal = (x, y, _UNKNOWN_AXES, _UNKNOWN_AXES, _UNKNOWN_AXES, yaw)
+        values["pose_covariance_diagonal"] = values["twist_covariance_diagonal"] = diagonal
+    else:
+        rate = _number(plugin, where, "odom_publish_frequency", default=50.0)
+        if rate > 0:
+            values["publish_rate_hz"] = rate
+        values.update(_gz_limits(plugin, where))
+    topic = next((name for direction, name, message, _ in model_plugin_rows(plugin)
+                  if direction == "out" and message == ODOMETRY), None)
+    if topic is not None:
+        topic = topic.replace("/MODEL/", f"/{robot.name}/")
+    return ControllersFile(None, values, None, source=label, odom_topic=topic)
+
+
+def _gz_limits(plugin: Plugin, where: str) -> dict[str, float]:
+    """The speed limiter's bounds: both axes' first, then each axis's own."""
+    out: dict[str, float] = {}
+    for kind, linear, angular in _GZ_LIMITS:
+        for bound in ("max", "min"):
+            both = _number(plugin, where, f"{bound}_{kind}")
+            for axis, unit in (("linear", linear), ("angular", angular)):
+                own = _number(plugin, where, f"{bound}_{axis}_{kind}")
+                value = own if not math.isnan(own) else both
+                if not math.isnan(value):
+                    out[f"{bound}_{axis}_{kind}_{unit}"] = value
+    return out
+
+
+def _number(plugin: Plugin, where: str, *keys: str, default: float = math.nan) -> float:
+    """The parameter under the first of ``keys`` the plugin has; ``default`` without one."""
+    for key in keys:
+        text = param(plugin.params, key)
+        if text is None or not text.strip():
+            continue
+        try:
+            value = float(text)
+        except ValueError:
+            value = math.nan
+        if not math.isfinite(value):
+            raise ControllersFileError(
+                f"{where}: <{key}>: expected a finite number, got {text.strip()!r}")
+        return value
+    return default

@@ -1,0 +1,104 @@
+"""A base that a Gazebo diff-drive plugin drives: odometry where, how often and how sure the
+plugin says, read back from the bag by rosbags (a reader that shares no code with ours).
+
+Real descriptions, no ROS set: Nav2's sam_bot (Gazebo Classic's ROS 2 plugin in /demo,
+default 100 Hz), TurtleBot3 (the ROS 1 plugin, ``<updateRate>30``) and Leo Rover (gz-sim's
+DiffDrive system, ``<odom_publish_frequency>20``, acceleration limits). The numbers the
+plugins default to are those of their sources (gazebo_ros_pkgs, gz-sim).
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from tests.conftest import REPO, assert_one_line_error, run_servicebot
+from tests.simulate.helpers import NO_ROS, REALWORLD_SRC
+
+FIXTURES = REPO / "tests" / "fixtures"
+SAM_BOT = FIXTURES / "sam_bot_description" / "src" / "description" / "sam_bot_description.urdf"
+LEO = FIXTURES / "leo_description" / "urdf" / "leo_sim.urdf.xacro"
+TURTLEBOT3 = REALWORLD_SRC / "turtlebot3_description" / "urdf" / "turtlebot3_burger.urdf.xacro"
+PLUGIN = "Gazebo plugin libgazebo_ros_diff_drive.so"
+
+
+def _run(robot: Path, tmp_path: Path, *extra: str) -> tuple[dict, dict[str, list]]:
+    from rosbags.rosbag2 import Reader
+    from rosbags.typesys import Stores, get_typestore
+
+    bag = tmp_path / "bag"
+    result = run_servicebot("simulate", robot, "--headless", "--duration-s", "10", "--bag", bag,
+                            "--format", "json", *extra, env=NO_ROS)
+    assert result.returncode == 0, result.stderr
+    store = get_typestore(Stores.ROS2_HUMBLE)
+    messages: dict[str, list] = {}
+    with Reader(bag) as reader:
+        for connection, _, raw in reader.messages():
+            messages.setdefault(connection.topic, []).append(
+                store.deserialize_cdr(raw, connection.msgtype))
+    return json.loads(result.stdout), messages
+
+
+def test_sam_bot_odometry_is_the_classic_plugins_in_its_namespace(tmp_path):
+    pytest.importorskip("rosbags")
+    summary, messages = _run(SAM_BOT, tmp_path)
+    assert "/diff_controller/odom" not in messages
+    odometry = messages["/demo/odom"]
+    assert len(odometry) == 1000  # 10 s at <update_rate>'s default, 100 Hz
+    pose = list(odometry[-1].pose.covariance)
+    assert (pose[0], pose[7], pose[14], pose[35]) == (1e-5, 1e-5, 1e12, 1e-3)
+    assert list(odometry[-1].twist.covariance) == pose
+    assert summary["controller"]["publish_rate_hz"] == {"value": 100.0, "source": PLUGIN}
+    assert summary["controller"]["update_rate_hz"]["source"] == "default"
+
+
+def test_turtlebot3_odometry_is_its_ros1_plugins_odometry_topic_at_its_update_rate(tmp_path):
+    pytest.importorskip("rosbags")
+    summary, messages = _run(TURTLEBOT3, tmp_path)
+    assert len(messages["/odom"]) == 300  # <updateRate>30</updateRate>
+    assert len(messages["/imu"]) == 1000  # the IMU's 200 Hz, at most once a control tick
+    assert summary["controller"]["publish_rate_hz"] == {"value": 30.0, "source": PLUGIN}
+
+
+def test_leo_odometry_and_limits_are_the_gz_diff_drive_systems(tmp_path):
+    pytest.importorskip("rosbags")
+    summary, messages = _run(LEO, tmp_path)
+    assert len(messages["/odom"]) == 200  # <odom_publish_frequency>20
+    source = "Gazebo plugin libignition-gazebo-diff-drive-system.so"
+    controller = summary["controller"]
+    assert controller["max_linear_acceleration_m_s2"] == {"value": 2.5, "source": source}
+    assert controller["min_angular_acceleration_rad_s2"] == {"value": -3.0, "source": source}
+    assert controller["max_linear_velocity_m_s"] == {"value": None, "source": "default"}
+
+
+def test_a_controllers_file_given_wins_over_the_plugin(tmp_path):
+    pytest.importorskip("rosbags")
+    controllers = tmp_path / "controllers.yaml"
+    controllers.write_text("controller_manager:\n  ros__parameters:\n    update_rate: 50\n"
+                           "    base:\n      type: diff_drive_controller/DiffDriveController\n"
+                           "base:\n  ros__parameters:\n    publish_rate: 10.0\n")
+    summary, messages = _run(SAM_BOT, tmp_path, "--controllers", str(controllers))
+    assert len(messages["/base/odom"]) == 100 and "/demo/odom" not in messages
+    assert summary["controller"]["publish_rate_hz"] == {"value": 10.0,
+                                                        "source": str(controllers)}
+
+
+def test_the_bundled_robot_keeps_its_controllers_file(run):
+    result = run("simulate", "--headless", "--duration-s", "1", "--format", "json")
+    assert result.exit_code == 0, result.output
+    controller = json.loads(result.stdout)["controller"]
+    assert controller["max_linear_acceleration_m_s2"]["value"] == 0.05
+    assert controller["max_linear_acceleration_m_s2"]["source"].endswith(
+        "robots/controllers.yaml")
+
+
+def test_a_plugin_number_that_is_not_one_is_one_error_line(tmp_path):
+    robot = tmp_path / "sam_bot.urdf"
+    robot.write_text(SAM_BOT.read_text().replace(
+        "<publish_odom>true</publish_odom>",
+        "<publish_odom>true</publish_odom><update_rate>fast</update_rate>"))
+    result = run_servicebot("simulate", robot, "--headless", "--duration-s", "1", env=NO_ROS)
+    line = assert_one_line_error(result, 2, "<update_rate>", "'fast'")
+    assert str(robot) in line
