@@ -222,7 +222,7 @@ def end_effector(result: SimResult, joint_positions: FloatArray | None) -> EndEf
     data = model.createData()
     pin.framesForwardKinematics(model, data, q)
     # Pinocchio's data.oMf[i] is transform_frame_to_world; the floor is base_height_m below.
-    position = np.array(data.oMf[model.getFrameId(tip)].translation)
+    position = np.array(data.oMf[model.getFrameId(tip, pin.BODY)].translation)
     position[2] += body.base_height_m
     return {"frame": tip, "position_m": position.tolist()}
 

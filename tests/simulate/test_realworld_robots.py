@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.conftest import assert_one_line_error, run_servicebot
+from tests.conftest import REPO, assert_one_line_error, run_servicebot
 from tests.simulate.helpers import DIFFBOT, DRIVE_ONLY, NO_ROS, REALWORLD_SRC
 
 SRC = REALWORLD_SRC
@@ -87,3 +87,15 @@ def test_an_arm_goal_for_a_robot_with_only_wheels_says_so(tmp_path):
     result = run_servicebot("simulate", TURTLEBOT3, "--headless", "-s", scenario, env=NO_ROS)
     assert_one_line_error(result, 2, f"{scenario}:7: arm.joint_names[0]: unknown arm joint: "
                           "'shoulder'; turtlebot3_burger has no movable joints but its wheels")
+
+
+def test_an_arm_tip_that_a_joint_shares_its_name_with_ends_the_run(tmp_path):
+    # baxter's fixed joints are named as their child links: Pinocchio then holds two frames
+    # of that name, and the summary's end effector must ask for the link's
+    robot = tmp_path / "same_name.urdf"
+    robot.write_text((REPO / "robots" / "service_robot.urdf.xml").read_text().replace(
+        '<joint name="arm_tool_joint" type="fixed">', '<joint name="arm_tool_link" type="fixed">'))
+    result = run_servicebot("simulate", robot, "--headless", "--duration-s", "2",
+                            "--format", "json", env=NO_ROS)
+    assert result.returncode == 0, result.stderr
+    assert json.loads(result.stdout)["end_effector"]["frame"] == "arm_tool_link"
