@@ -129,11 +129,14 @@ def motor_map(robot: RobotDescription) -> MotorMap:
     """The wheel and arm motors of ``robot`` with their URDF limits.
 
     Raises:
-        DescriptionError: Not a differential drive, or a wheel without a velocity limit.
+        DescriptionError: Not a differential drive (steered wheels too), or a wheel without a
+            velocity limit.
     """
     from servicebot_cli.kinematics.drive_geometry import drive_geometry
+    from servicebot_cli.kinematics.steering import refuse_steered_wheels
 
     geometry = drive_geometry(robot)
+    refuse_steered_wheels(robot)
     wheels = geometry.wheels
     unlimited = [w.joint for w in wheels if not math.isfinite(w.velocity_limit_rad_s)]
     if unlimited:

@@ -28,9 +28,9 @@ from servicebot_cli.description.sensors import (
     lidar_spec,
 )
 from servicebot_cli.kinematics.drive_geometry import DriveGeometry, drive_geometry
+from servicebot_cli.kinematics.steering import refuse_steered_wheels
 from servicebot_cli.kinematics.transforms import pose_matrix
 from servicebot_cli.simulate.shape import RobotShape, robot_shape
-from servicebot_cli.simulate.steering import refuse_steered_wheels
 
 if TYPE_CHECKING:
     import pinocchio as pin

@@ -1,8 +1,9 @@
-"""A car-like base is refused by simulate, naming its steering joint and wheel.
+"""A car-like base is refused by simulate and drive, naming its steering joint and wheel.
 
 ros2_control_demos' carlikebot steers its front wheels with revolute joints about the
 vertical; pybullet's racecar puts each wheel's spin joint below a steering hinge. Their rear
-wheels passed as a differential drive, and the run turned them in place.
+wheels passed as a differential drive: the run turned them in place, and drive sent the
+rear motors opposite speeds to turn.
 """
 
 from __future__ import annotations
@@ -57,3 +58,14 @@ def test_an_arm_waist_carrying_a_cylinder_on_its_side_steers_no_wheel(tmp_path):
                             "--format", "json")
     assert result.returncode in (0, 1), result.stderr  # 1: an expectation, never a refusal
     assert "not a differential drive" not in result.stderr
+
+
+@pytest.mark.parametrize("command", [
+    ("drive", "--dry-run", "--protocol", "arduino", "--ticks-per-rev", "3436", "--baud",
+     "57600", "--linear", "0.1", "--angular", "0.3", "--duration-s", "1"),
+    ("emulate", "--protocol", "arduino", "--ticks-per-rev", "3436", "--baud", "57600"),
+])
+def test_drive_and_emulate_refuse_it_too(command):
+    result = run_servicebot(command[0], CARLIKEBOT, *command[1:], env=NO_ROS)
+    assert_one_line_error(result, 2, "joint 'virtual_front_wheel_joint' steers the wheel",
+                          "differential-drive bases only")

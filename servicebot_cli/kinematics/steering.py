@@ -1,8 +1,9 @@
-"""Steered wheels: a car-like base that the differential-drive simulator must not drive.
+"""Steered wheels: a car-like base, which simulate and drive must not run as a differential drive.
 
 A wheel that a revolute joint turns about the vertical is steered (ros2_control_demos'
 carlikebot, an Ackermann base). Its rear wheels still look like a differential drive, but
-the base cannot turn in place, so a run of it as one would be wrong, not approximate.
+the base cannot turn in place: a run of it as one would be wrong, not approximate, and
+``drive`` would send its rear motors opposite speeds to turn.
 """
 
 from __future__ import annotations
@@ -58,7 +59,8 @@ def refuse_steered_wheels(robot: RobotDescription) -> None:
             raise DescriptionError(
                 f"{robot.display}: not a differential drive: joint '{joint.name}' steers "
                 f"the wheel on link '{wheel}' about the vertical (a car-like base, which "
-                "cannot turn in place); simulate drives differential-drive bases only")
+                "cannot turn in place); servicebot simulates and drives differential-drive "
+                "bases only")
 
 
 def _wheel_bottom(robot: RobotDescription, link: str, pose: np.ndarray) -> float | None:
