@@ -155,10 +155,15 @@ class PackageResolver:
             if location is None:
                 raise PackageNotFound(f"package '{name}' not found; looked in "
                                       f"{self._searched(base_dir)}")
-            self.found.setdefault(name, location)
             from servicebot_cli.description.install_layout import installed_source
 
-            return Path(installed_source(str(location.path / rel)))
+            path = Path(installed_source(str(location.path / rel)))
+            if not path.exists():
+                elsewhere = self._holding_elsewhere(name, rel, base_dir, location)
+                if elsewhere is not None:
+                    location, path = elsewhere, elsewhere.path / rel
+            self.found.setdefault(name, location)
+            return path
         if uri.startswith("file://"):
             return Path(unquote(urlparse(uri).path))
         path = Path(uri).expanduser()
@@ -228,6 +233,23 @@ class PackageResolver:
             if ancestor.name == name:
                 return PackageLocation(name, ancestor, f"the directory {_short(ancestor)} "
                                        "above the file", ros_finds_it=False)
+        return None
+
+    def _holding_elsewhere(self, name: str, rel: str, base_dir: Path,
+                           first: PackageLocation) -> PackageLocation | None:
+        """Where a loader that looks for the file itself finds ``rel`` that ``first`` lacks.
+
+        Gazebo (its model paths) and yourdfpy try each directory called NAME until the file
+        is there, so a source tree whose package is assembled at build time (icub-models:
+        ``iCub_manual/package.xml`` is named ``iCub``, the meshes are under ``iCub/``)
+        still loads. ROS would look only in ``first``.
+        """
+        for other in (self._loader_location(name, base_dir),
+                      self._relative_location(name, rel, base_dir)):
+            if other is not None and other.path != first.path and (other.path / rel).exists():
+                return PackageLocation(
+                    name, other.path, f"{other.how}, which holds '{rel}' where the package "
+                    f"found by {first.how} does not", ros_finds_it=False)
         return None
 
     def _relative_location(self, name: str, rel: str, base_dir: Path) -> PackageLocation | None:
