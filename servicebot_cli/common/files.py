@@ -8,6 +8,7 @@ temporary file, so nothing half-written is ever left behind.
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import shutil
 import signal
@@ -44,6 +45,12 @@ def atomic_output(
     target = Path(path)
     if target.is_dir():
         raise OutputError(f"{target}: is a directory; give a file name to write")
+    if target.exists() and not target.is_file():
+        # A device, FIFO or socket (/dev/null, /dev/stdout, a named pipe): written in place
+        # as a shell's ``>`` would. Renaming a file over it would replace the device itself.
+        with _in_place(target, mode, open_kwargs) as handle:
+            yield handle
+        return
     if make_parents and str(target.parent):
         try:
             target.parent.mkdir(parents=True, exist_ok=True)
@@ -66,9 +73,22 @@ def atomic_output(
         os.chmod(tmp_name, 0o644 & ~_umask())
         os.replace(tmp_name, target)
     except OSError as exc:
-        raise OutputError(f"{target}: cannot write: {exc.strerror or exc}") from None
+        raise _cannot_write(target, directory, exc) from None
     finally:
         _remove(tmp_name)
+
+
+@contextlib.contextmanager
+def _in_place(target: Path, mode: str, open_kwargs: dict[str, Any]) -> Iterator[IO[Any]]:
+    """``target``, a file that is not a regular one, opened for writing as it is."""
+    if "b" not in mode:
+        open_kwargs.setdefault("encoding", "utf-8")
+        open_kwargs.setdefault("newline", "\n")
+    try:
+        with open(target, mode, **open_kwargs) as handle:
+            yield handle
+    except OSError as exc:
+        raise _cannot_write(target, target.parent, exc) from None
 
 
 @contextlib.contextmanager
@@ -155,6 +175,9 @@ def _parent(target: Path) -> Path:
 def _cannot_write(target: Path, directory: Path, exc: OSError) -> OutputError:
     if isinstance(exc, PermissionError):
         return OutputError(f"{target}: permission denied writing in '{directory}'")
+    if exc.errno in (errno.ENOSPC, errno.EDQUOT):
+        return OutputError(f"{target}: cannot write: {exc.strerror}; free some space or "
+                           "write somewhere else")
     return OutputError(f"{target}: cannot write: {exc.strerror or exc}")
 
 

@@ -1,0 +1,49 @@
+"""Outputs and inputs that are not regular files: devices, named pipes, symbolic links to them.
+
+An output that is a device or a FIFO (``/dev/null``, ``/dev/full``, a named pipe) is written
+as a shell's ``>`` writes it; renaming a temporary file over it would replace the device
+itself (as root, ``/dev/full`` became a regular file holding a check report).
+"""
+
+from __future__ import annotations
+
+import os
+import stat
+from pathlib import Path
+
+import pytest
+
+from tests.conftest import assert_one_line_error, run_servicebot
+
+
+def test_an_output_that_is_a_named_pipe_is_written_into_not_replaced(tmp_path: Path) -> None:
+    fifo = tmp_path / "report.json"
+    os.mkfifo(fifo)
+    reader = os.open(fifo, os.O_RDONLY | os.O_NONBLOCK)  # a reader, so the writer's open returns
+    try:
+        result = run_servicebot("check", "--format", "json", "--output", fifo)
+        assert result.returncode == 0, result.stderr
+        assert stat.S_ISFIFO(fifo.lstat().st_mode), "the named pipe was replaced"
+        assert b'"format_version"' in os.read(reader, 1 << 16)
+    finally:
+        os.close(reader)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["report.json"]
+
+
+def test_an_output_linked_to_a_device_writes_to_the_device(tmp_path: Path) -> None:
+    link = tmp_path / "report.json"
+    link.symlink_to(os.devnull)
+    result = run_servicebot("check", "--output", link)
+    assert result.returncode == 0, result.stderr
+    assert link.is_symlink() and stat.S_ISCHR(link.stat().st_mode)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["report.json"]
+
+
+@pytest.mark.skipif(not Path("/dev/full").is_char_device(), reason="no /dev/full")
+def test_a_full_disk_is_one_error_line(tmp_path: Path) -> None:
+    link = tmp_path / "report.json"
+    link.symlink_to("/dev/full")
+    result = run_servicebot("check", "--output", link)
+    assert_one_line_error(result, 2, "report.json: cannot write: No space left on device",
+                          "free some space")
+    assert stat.S_ISCHR(Path("/dev/full").stat().st_mode)
