@@ -1,7 +1,8 @@
 """The differential-drive geometry a URDF implies: which joints are wheels, radius, track.
 
-A wheel is a continuous joint whose child link carries a cylinder turning about the joint's
-axis, with that axis horizontal and across the robot (the root link's y). Wheels on +y are
+A wheel is a continuous joint (or a revolute one with endless limits) whose child link
+carries a cylinder turning about the joint's axis, or a sphere, with that axis horizontal and
+across the robot (the root link's y). Wheels on +y are
 left, on -y right. Nothing here is a constant: change the URDF and the numbers follow.
 """
 
@@ -24,6 +25,7 @@ if TYPE_CHECKING:
 
 _ONE_AXIS = ("revolute", "continuous", "prismatic")
 _PARALLEL = 0.99  # |cos| of the angle between axes that counts as parallel (about 8 degrees)
+_ENDLESS_RAD = 1e3  # revolute limits beyond this each way bound no wheel
 
 
 @dataclass(frozen=True)
@@ -173,7 +175,7 @@ def _why_not_wheels(robot: RobotDescription, left_out: dict[str, list[str]]) -> 
     """Why the continuous joints are not wheels, joints grouped by reason (three at most)."""
     if not left_out:
         return "it has no continuous joint" if not any(
-            j.type == "continuous" for j in robot.joints) else "no other continuous joint is one"
+            turns_freely(j) for j in robot.joints) else "no other continuous joint is one"
     reasons = [f"{', '.join(joints)} {'turns' if len(joints) == 1 else 'turn'} {reason}"
                for reason, joints in left_out.items()]
     return "; ".join(reasons[:3]) + ("; ..." if len(reasons) > 3 else "")
@@ -184,23 +186,42 @@ def _link_transforms(robot: RobotDescription) -> dict[str, np.ndarray]:
     return link_transforms(robot)
 
 
+def turns_freely(joint: Joint) -> bool:
+    """A continuous joint, or a revolute one whose limits bound nothing a wheel does.
+
+    Exporters write an endless wheel as revolute with limits of 1e16 rad (neobotix's
+    MP-400); more than :data:`_ENDLESS_RAD` each way is endless.
+    """
+    if joint.type == "continuous":
+        return True
+    limits = joint.limits
+    return joint.type == "revolute" and limits is not None and limits.lower is not None \
+        and limits.upper is not None and limits.lower <= -_ENDLESS_RAD \
+        and limits.upper >= _ENDLESS_RAD
+
+
 def _as_wheel(robot: RobotDescription, joint: Joint,
               world: dict[str, np.ndarray]) -> Wheel | str | None:
-    """The wheel ``joint`` drives; why it is not one (a continuous joint); or None."""
-    if joint.type != "continuous" or joint.child not in world or joint.parent not in world:
+    """The wheel ``joint`` drives; why it is not one (a joint that turns freely); or None.
+
+    Its radius is that of a cylinder about the joint axis, else of a sphere (a ball turns
+    about any axis: neobotix's wheels collide as spheres).
+    """
+    if not turns_freely(joint) or joint.child not in world or joint.parent not in world:
         return None
     link = robot.link(joint.child)
-    cylinder = next(
-        (s for s in (*link.collisions, *link.visuals) if s.geometry.kind == "cylinder"), None
-    )
-    if cylinder is None or not cylinder.geometry.radius:
-        return (f"but link '{link.name}' has no <cylinder> collision or visual to take its "
-                "radius from")
+    shapes = (*link.collisions, *link.visuals)
+    round_shape = next((s for s in shapes if s.geometry.kind == "cylinder"), None) \
+        or next((s for s in shapes if s.geometry.kind == "sphere"), None)
+    if round_shape is None or not round_shape.geometry.radius:
+        return (f"but link '{link.name}' has no <cylinder> or <sphere> collision or visual to "
+                "take its radius from")
     axis = np.array(joint.axis, dtype=float)
     if not np.all(np.isfinite(axis)) or np.linalg.norm(axis) == 0:
         return "about a zero axis"
     axis /= np.linalg.norm(axis)
-    if abs(float(axis @ _cylinder_axis(cylinder))) < _PARALLEL:
+    if round_shape.geometry.kind == "cylinder" \
+            and abs(float(axis @ _cylinder_axis(round_shape))) < _PARALLEL:
         return f"about an axis that is not the axis of the cylinder on '{link.name}'"
     transform = world[joint.child]
     axis_in_root = transform[:3, :3] @ axis
@@ -213,7 +234,7 @@ def _as_wheel(robot: RobotDescription, joint: Joint,
     return Wheel(
         joint=joint.name,
         side="left" if position[1] > 0 else "right",
-        radius_m=float(cylinder.geometry.radius),
+        radius_m=float(round_shape.geometry.radius),
         position_m=(float(position[0]), float(position[1]), float(position[2])),
         axis_sign=1 if axis_in_root[1] > 0 else -1,
         velocity_limit_rad_s=float(limit),

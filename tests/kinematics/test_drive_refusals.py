@@ -28,14 +28,15 @@ def test_wheels_turning_about_x_are_named_with_their_axis():
     assert why.startswith("right_front_wheel_joint, right_back_wheel_joint, "
                           "left_front_wheel_joint, left_back_wheel_joint turn about (1 0 0) in "
                           "base_link, not across the robot (its y")
-    assert "head_swivel turns but link 'head' has no <cylinder>" in why
+    # the head is a sphere, round about any axis, but it turns about the vertical
+    assert "head_swivel turns about (0 0 1) in base_link, not across the robot" in why
 
 
 def test_continuous_joints_without_a_cylinder_are_named_with_their_link():
     why = _refusal(SRC / "example_1" / "description" / "urdf" / "rrbot.urdf.xacro")
-    assert why == ("joint1 turns but link 'link1' has no <cylinder> collision or visual to take "
-                   "its radius from; joint2 turns but link 'link2' has no <cylinder> collision "
-                   "or visual to take its radius from")
+    assert why == ("joint1 turns but link 'link1' has no <cylinder> or <sphere> collision or "
+                   "visual to take its radius from; joint2 turns but link 'link2' has no "
+                   "<cylinder> or <sphere> collision or visual to take its radius from")
 
 
 def test_an_arm_without_continuous_joints_says_so():
