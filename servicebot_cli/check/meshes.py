@@ -16,6 +16,7 @@ import numpy as np
 
 from servicebot_cli.common.library_logs import captured
 from servicebot_cli.description import mesh_readers
+from servicebot_cli.description.safe_xml import declaration_first
 
 if TYPE_CHECKING:
     from servicebot_cli.check.mesh_store import MeshStore
@@ -73,6 +74,8 @@ def load_mesh(path: Path, with_mass: bool = False) -> MeshInfo:
     except OSError as exc:
         raise MeshError(f"cannot read: {exc.strerror or exc}") from None
     suffix = path.suffix.lower()
+    if suffix == ".dae":
+        data = declaration_first(data)
     try:
         if suffix == ".dae" and not with_mass:
             return _bounds_only(*mesh_readers.read_dae_bounds(data))

@@ -15,6 +15,7 @@ from xml.parsers import expat
 from servicebot_cli.common.errors import UnsafeXmlError, XmlError
 
 _BAD_DECLARATION = expat.errors.XML_ERROR_XML_DECL
+_MISPLACED_DECLARATION = expat.errors.XML_ERROR_MISPLACED_XML_PI
 
 MAX_BYTES = 32 * 1024 * 1024
 """Largest description accepted [bytes]; real URDFs are well under 1 MB."""
@@ -54,7 +55,8 @@ class XmlDocument:
 
 
 def parse_xml(
-    data: bytes, filename: str, *, max_bytes: int = MAX_BYTES, max_elements: int = MAX_ELEMENTS
+    data: bytes, filename: str, *, max_bytes: int = MAX_BYTES, max_elements: int = MAX_ELEMENTS,
+    blanks_before_declaration: bool = True,
 ) -> XmlDocument:
     """Parse ``data`` strictly and safely.
 
@@ -63,6 +65,9 @@ def parse_xml(
         filename: Display name used in error messages.
         max_bytes: Refuse larger input [bytes].
         max_elements: Refuse documents with more elements.
+        blanks_before_declaration: Accept blank lines or spaces before ``<?xml ...?>``, as
+            tinyxml2 (urdfdom, Gazebo, MuJoCo) does; False to refuse them, as expat (xacro)
+            does.
 
     Raises:
         XmlError: Empty, too large, not UTF-8, or not well-formed; with line and column.
@@ -80,6 +85,12 @@ def parse_xml(
     try:
         return _Builder(filename, max_elements).parse(text)
     except XmlError as exc:
+        blanks = len(text) - len(text.lstrip(" \t\r\n"))
+        if (blanks and blanks_before_declaration and exc.reason.endswith(_MISPLACED_DECLARATION)
+                and _declaration_end(text[blanks:])):
+            # tinyxml2 skips blanks before the declaration; expat refuses them (doosan's
+            # H2017_2_2.dae, a URDF written with a blank first line)
+            return _reparsed(text, blanks, filename, max_elements)
         declaration = _declaration_end(text)
         if not (declaration and exc.line == 1 and exc.reason.endswith(_BAD_DECLARATION)):
             raise
@@ -89,12 +100,38 @@ def parse_xml(
         return _Builder(filename, max_elements).parse(" " * declaration + text[declaration:])
 
 
+def _reparsed(text: str, blanks: int, filename: str, max_elements: int) -> XmlDocument:
+    """``text`` parsed with the declaration after its ``blanks`` leading blanks blanked out.
+
+    Every other character keeps its line and column.
+    """
+    end = blanks + _declaration_end(text[blanks:])
+    declaration = "".join(c if c in "\r\n" else " " for c in text[blanks:end])
+    return _Builder(filename, max_elements).parse(text[:blanks] + declaration + text[end:])
+
+
 def _declaration_end(text: str) -> int:
     """Where the ``<?xml ...?>`` that opens ``text`` ends, or 0 when it has none."""
     if not text.startswith("<?xml") or text[5:6] not in (" ", "\t", "\r", "\n"):
         return 0
     end = text.find("?>")
     return 0 if end < 0 or "<" in text[1:end] else end + 2
+
+
+def declaration_first(data: bytes) -> bytes:
+    """``data`` (a COLLADA file) with an ``<?xml ...?>`` that follows blank lines moved before them.
+
+    Assimp (RViz, Gazebo, MoveIt) and tinyxml2 skip blanks before the declaration; expat and
+    libxml2 refuse them (doosan-robot2's ``H2017_2_2.dae`` opens with a blank line). Moving
+    the declaration keeps every later line and column where it was.
+    """
+    body = data.lstrip(b" \t\r\n")
+    if len(body) == len(data) or not body.startswith(b"<?xml"):
+        return data
+    end = body.find(b"?>")
+    if end < 0 or b"\n" in body[:end]:
+        return data
+    return body[:end + 2] + data[:len(data) - len(body)] + body[end + 2:]
 
 
 def _decode(data: bytes, filename: str) -> str:

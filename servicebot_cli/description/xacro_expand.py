@@ -192,7 +192,7 @@ class _Tracer:
             xacro.filestack.pop()  # as xacro does: the failing file is not "being processed"
             raise xacro.XacroException(f"{exc.strerror}: {filename}", exc=exc) from None
         display = filename or path
-        text = parse_xml(data, display).text
+        text = parse_xml(data, display, blanks_before_declaration=False).text
         self.files.append(display)
         self.known_args.update(_ARG_USE_RE.findall(text))
         builder = _PositionBuilder(self, display)

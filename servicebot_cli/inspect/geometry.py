@@ -8,17 +8,19 @@ measured vertex by vertex. A mesh that cannot be found or read is reported, not 
 
 from __future__ import annotations
 
+import io
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.description.elements import Shape
+from servicebot_cli.description.safe_xml import declaration_first
 from servicebot_cli.kinematics.transforms import pose_matrix
 
 if TYPE_CHECKING:
@@ -83,7 +85,7 @@ class MeshLibrary:
 
         try:
             with captured() as said:
-                loaded = trimesh.load(str(path), force="mesh")
+                loaded = _load_with_trimesh(trimesh, path)
             self.problems.extend(f"mesh {filename}: {line}" for line in dict.fromkeys(said))
             if not isinstance(loaded, trimesh.Trimesh):
                 raise TypeError(f"not a triangle mesh but a {type(loaded).__name__}")
@@ -100,6 +102,21 @@ class MeshLibrary:
                                  f"finite numbers within {FAR_M:g} (check reports it)")
             return None
         return Mesh(vertices, faces)
+
+
+def _load_with_trimesh(trimesh: Any, path: Path) -> Any:
+    """``trimesh.load`` of ``path``, as Assimp reads it.
+
+    A COLLADA file whose ``<?xml ...?>`` follows blank lines (Assimp reads it, lxml refuses
+    it) is read with the declaration moved first.
+    """
+    if path.suffix.lower() == ".dae":
+        data = path.read_bytes()
+        fixed = declaration_first(data)
+        if fixed is not data:
+            return trimesh.load(io.BytesIO(fixed), file_type="dae", force="mesh",
+                                resolver=trimesh.resolvers.FilePathResolver(str(path)))
+    return trimesh.load(str(path), force="mesh")
 
 
 def mesh_library(robot: RobotDescription, resolver: PackageResolver) -> MeshLibrary:
