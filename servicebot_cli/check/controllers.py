@@ -46,14 +46,30 @@ def check(text: str, display: str, robot: RobotDescription) -> Iterator[Issue]:
         return
     sections = _sections(root)
     if not sections:
-        yield Issue("SB601", "no controller sections (NAME: ros__parameters: ...) found",
-                    where=(display, 1, 1))
+        ros1 = _ros1_controllers(root)
+        found = (f"a ROS 1 ros_control file ('{ros1}: type: ...' with no ros__parameters), "
+                 "which ros2_control does not read; ") if ros1 else ""
+        yield Issue("SB601", f"{found}no controller sections (NAME: ros__parameters: ...) "
+                    "found", where=(display, 1, 1),
+                    fix="check ROS 2 controllers files only, or port this one: each "
+                        "controller's parameters under NAME: ros__parameters:" if ros1 else None)
         return
     checker = _Checker(display, robot, frozenset(sections))
     types = _types(sections)
     for name, params in sections.items():
         if name != "controller_manager" and _names_joints(types.get(name)):
             yield from checker.section(name, params)
+
+
+def _ros1_controllers(root: yaml.Node | None) -> str | None:
+    """The first controller a ROS 1 file declares (``NAME: {type: pkg/Class}``), or None."""
+    if not isinstance(root, yaml.MappingNode):
+        return None
+    for key, value in root.value:
+        kind = _get(value, "type")
+        if isinstance(kind, yaml.ScalarNode) and "/" in str(kind.value):
+            return str(key.value)
+    return None
 
 
 def _sections(root: yaml.Node | None, depth: int = 0) -> dict[str, yaml.MappingNode]:

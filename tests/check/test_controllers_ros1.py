@@ -1,0 +1,29 @@
+"""A ROS 1 ros_control controllers file (MiR's ``diffdrive_controller.yaml`` layout) given to
+``check controllers`` is named as such, with what to do, not only "no sections"."""
+
+from __future__ import annotations
+
+ROS1 = """\
+mobile_base_controller:
+  type        : "diff_drive_controller/DiffDriveController"
+  left_wheel  : 'left_wheel_joint'
+  right_wheel : 'right_wheel_joint'
+  publish_rate: 41.2
+"""
+
+
+def test_a_ros1_controllers_file_is_named_as_one(run, tmp_path):
+    path = tmp_path / "diffdrive_controller.yaml"
+    path.write_text(ROS1)
+    result = run("check", "controllers", path, "--robot", "sim")
+    assert result.exit_code == 1
+    assert "SB601" in result.stdout
+    assert "a ROS 1 ros_control file ('mobile_base_controller: type: ...'" in result.stdout
+    assert "fix: check ROS 2 controllers files only, or port this one" in result.stdout
+
+
+def test_a_file_of_no_controllers_keeps_the_plain_message(run, tmp_path):
+    path = tmp_path / "other.yaml"
+    path.write_text("costmap:\n  width: 10\n")
+    result = run("check", "controllers", path, "--robot", "sim")
+    assert "no controller sections" in result.stdout and "ROS 1" not in result.stdout
