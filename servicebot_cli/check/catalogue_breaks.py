@@ -66,8 +66,8 @@ BREAKS: dict[str, str] = {
              "and MuJoCo's compiler refuse the file",
     "SB403": "MuJoCo refuses a mesh without faces and Pinocchio's collision geometry (hpp-fcl) "
              "cannot be built; Gazebo collides with nothing there",
-    "SB405": "Gazebo (sdformat), MuJoCo and Pinocchio's collision geometry (hpp-fcl) refuse "
-             "zero or negative sizes; urdfdom accepts them",
+    "SB405": "MuJoCo refuses a zero or negative collision size; Pinocchio's collision "
+             "geometry (coal) keeps a negative box as it is; urdfdom accepts them",
     "SB406": _URDFDOM + " ('Unknown geometry type')",
     "SB501": "Gazebo (sdformat's URDF conversion) drops the block silently: its friction, "
              "sensor or plugin is lost",

@@ -254,7 +254,9 @@ URDF_RULES: tuple[Rule, ...] = (
          "wrong unit: a mesh in millimetres is 1000 times too large.",
          "Set <mesh scale=\"0.001 0.001 0.001\"> or export in metres."),
     Rule("SB405", "non-positive-size", E, "A primitive with a zero or negative size",
-         "Box sizes, cylinder radius and length, and sphere radius must be positive.",
+         "Box sizes, cylinder radius and length, and sphere radius must be positive. A "
+         "visual of zero size only draws nothing (upkie_description marks its frames with "
+         "<box size=\"0 0 0\"/>): a warning.",
          "Write the real size in metres."),
     Rule("SB406", "unknown-geometry", E, "A <geometry> with no shape or an unknown one",
          "URDF geometry is one of box, cylinder, sphere or mesh.",

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 from servicebot_cli.check import values
 from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound, RemoteMesh
-from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.packages import FileTally
 
 if TYPE_CHECKING:
@@ -53,12 +53,18 @@ def _shape(robot: RobotDescription, link: Link, kind: str, shape: Shape,
         yield Issue("SB407", f"the {where} is a capsule, which only pybullet and Drake read",
                     found[0])
         return
-    yield from _sizes(found[0], where)
+    yield from _sizes(found[0], where, visual=kind == "visual")
     if found[0].tag == "mesh" and shape.geometry.filename and env.load_meshes:
         yield from _mesh(robot, shape, found[0], where, env, tally)
 
 
-def _sizes(element: ET.Element, where: str) -> Iterator[Issue]:
+def _sizes(element: ET.Element, where: str, visual: bool = False) -> Iterator[Issue]:
+    """SB405: zero or negative sizes, a zero scale.
+
+    A visual of zero size (upkie_description's ``<box size="0 0 0"/>`` marking a virtual
+    link, a frame) draws nothing, and every consumer reads it (MuJoCo drops URDF visuals,
+    Pinocchio keeps an empty box): a warning. A collision of zero size MuJoCo refuses.
+    """
     for key in ("size", "radius", "length", "scale"):
         values = []
         for text in (element.get(key) or "").split():
@@ -67,7 +73,11 @@ def _sizes(element: ET.Element, where: str) -> Iterator[Issue]:
             except ValueError:
                 return  # SB013 reports it
         bad = [v for v in values if math.isfinite(v) and (v == 0 if key == "scale" else v <= 0)]
-        if bad:
+        if bad and visual and key != "scale" and not any(bad):
+            yield Issue("SB405", f"<{element.tag} {key}=\"{element.get(key)}\"> of the {where}: "
+                        "a visual of zero size draws nothing (a collision this size MuJoCo "
+                        "refuses)", element, severity=Severity.WARNING)
+        elif bad:
             yield Issue("SB405", f"<{element.tag} {key}=\"{element.get(key)}\"> of the {where}: "
                         "sizes must be positive" + (" (scale 0 flattens it)" if key == "scale"
                                                     else ""), element)
