@@ -60,27 +60,37 @@ class Reach:
         return distance - self.radius_m
 
 
-def _frame_names_unique(model: pin.Model) -> pin.Model:
-    """``model``, or a copy whose joint frames named like a link are renamed ``NAME (joint)``.
+_LINK_SUFFIX = " (link)"
+
+
+def _reduced(model: pin.Model, lock: list[int]) -> pin.Model:
+    """``pin.buildReducedModel`` of ``model`` with the joints ``lock`` locked at neutral.
 
     URDF lets a joint and a link share a name (baxter's fixed joint ``left_hand`` holds link
-    ``left_hand``), and Pinocchio then has two frames of that name; ``buildReducedModel``
-    looks a locked joint's frames up by name alone and raises on them. Link frames, which
-    every lookup here uses, keep their names.
+    ``left_hand``; nao's joint ``LAnklePitch`` moves link ``LAnklePitch``), and Pinocchio then
+    has two frames of that name; ``buildReducedModel`` looks frames up by name alone and
+    raises on them. The link frames of such names are renamed in a copy while it reduces,
+    and named back after: a joint's own frame must keep the joint's name, which it finds
+    its frame by.
     """
     import pinocchio as pin
 
-    links = {frame.name for frame in model.frames if frame.type == pin.FrameType.BODY}
+    others = {frame.name for frame in model.frames if frame.type != pin.FrameType.BODY}
     clashing = [index for index, frame in enumerate(model.frames)
-                if frame.type != pin.FrameType.BODY and frame.name in links]
+                if frame.type == pin.FrameType.BODY and frame.name in others]
     if not clashing:
-        return model
+        return pin.buildReducedModel(model, lock, pin.neutral(model))
     renamed = pin.Model(model)
     for index in clashing:
         frame = renamed.frames[index]
-        frame.name = f"{frame.name} (joint)"
+        frame.name += _LINK_SUFFIX
         renamed.frames[index] = frame
-    return renamed
+    reduced = pin.buildReducedModel(renamed, lock, pin.neutral(model))
+    for index, frame in enumerate(reduced.frames):
+        if frame.type == pin.FrameType.BODY and frame.name.endswith(_LINK_SUFFIX):
+            frame.name = frame.name[:-len(_LINK_SUFFIX)]
+            reduced.frames[index] = frame
+    return reduced
 
 
 class Chain:
@@ -108,16 +118,13 @@ class Chain:
             frame: The frame to move.
             known: Every link name, for suggestions.
         """
-        import pinocchio as pin
-
         keep = set(moving_joints(model, frame_id(model, frame, known)))
         if not keep:
             raise NothingMoves(f"frame '{frame}' is fixed to the root: no joint moves it; "
                                "choose a frame on the arm, or add --with-base")
         lock = [j for j in range(1, model.njoints) if j not in keep]
         self.full_nq = model.nq
-        self.model = (pin.buildReducedModel(_frame_names_unique(model), lock, pin.neutral(model))
-                      if lock else model)
+        self.model = _reduced(model, lock) if lock else model
         self.data = self.model.createData()
         self.frame = frame_id(self.model, frame, known)
         self.frame_name = frame

@@ -53,3 +53,20 @@ def test_ik_solves_an_arm_beside_a_locked_arm_with_such_names(run, tmp_path):
     assert result.exit_code == 0, result.stderr
     answer = json.loads(result.stdout)
     assert np.isfinite(answer["position_error_m"]) and answer["position_error_m"] < 1e-4
+
+
+def test_a_moving_joint_named_like_its_link_on_the_locked_arm(run, tmp_path):
+    # nao names each revolute joint as the link it moves (LAnklePitch moves LAnklePitch);
+    # the joint's own frame must keep its name while the other arm is locked
+    robot = tmp_path / "nao_like.urdf"
+    arms = f'{_arm("left", 0.3)}{_arm("right", -0.3)}'
+    for side in ("left", "right"):
+        arms = arms.replace(f'name="{side}_e0"', f'name="{side}_lower"')
+    robot.write_text(f'<robot name="nao_like"><link name="torso"/>{arms}</robot>\n')
+    for frame in ("left_gripper", "right_gripper", "left_lower"):
+        result = run("ik", robot, "-f", frame, "--position", "0.3", "0.3", "0.5",
+                     "--format", "json")
+        assert result.exit_code in (0, 1), result.stderr
+        assert "internal error" not in result.stderr
+    result = run("fk", robot, "-f", "left_gripper", "-j", "left_lower=0.5", "--format", "json")
+    assert result.exit_code == 0, result.stderr
