@@ -32,7 +32,10 @@ URDF_RULES: tuple[Rule, ...] = (
          "Remove the DOCTYPE; use xacro properties for repeated values."),
     Rule("SB006", "xacro-failed", E, "xacro cannot expand the file",
          "An unknown macro or property, a bad expression, a missing argument or include. The "
-         "position is the xacro element being expanded when it failed.",
+         "position is the xacro element being expanded when it failed. A file found in a "
+         "directory walk that only lacks an argument it gives no default (launch files pass "
+         "it: universal_robot's ur.xacro reads $(arg robot_model)) is a warning; named, an "
+         "error.",
          "Fix the xacro source at the reported line, or pass the missing NAME:=VALUE."),
     Rule("SB007", "package-not-found", W, "A $(find PKG) names a package that is nowhere",
          "Packages resolve as ROS finds them, with no ROS installed (the search is listed "

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import re
 
-from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.common.errors import (
     DescriptionError,
     PackageNotFound,
@@ -19,10 +19,18 @@ from servicebot_cli.common.errors import (
 
 _WHERE = re.compile(r"^(?P<file>.+?):(?P<line>\d+)(?::(?P<column>\d+))?: (?P<rest>.*)$", re.DOTALL)
 _LIMITS = ("limit for a robot description", "elements; refused", "deep; refused")
+_UNDEFINED_ARG = re.compile(r"Undefined substitution argument (\S+)$")
 
 
-def issue_of(error: DescriptionError, display: str) -> Issue:
-    """The issue for an error raised while reading ``display``."""
+def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Issue:
+    """The issue for an error raised while reading ``display``.
+
+    ``walked``: the file was found in a directory, not named. A xacro file that reads an
+    argument it gives no default (``$(arg robot_model)`` in universal_robot's ``ur.xacro``,
+    ``$(arg enable_crane)`` in talos_description) is expanded by its launch file, which
+    passes it; a walk passes none, so its SB006 is a warning there, and an error when the
+    file is named without the argument.
+    """
     if isinstance(error, XmlError):
         where = (error.file, error.line, error.column)
         if isinstance(error, UnsafeXmlError):
@@ -38,7 +46,15 @@ def issue_of(error: DescriptionError, display: str) -> Issue:
         return Issue("SB001", text, where=(file, line, column))
     if any(limit in text for limit in _LIMITS):
         return Issue("SB015", text, where=(file, line, column))
-    return Issue("SB006", text.removeprefix("xacro: "), where=(file, line, column))
+    text = text.removeprefix("xacro: ")
+    undefined = _UNDEFINED_ARG.search(text)
+    if walked and undefined is not None:
+        name = undefined[1]
+        return Issue("SB006", f"{text}: the file reads {name} with no default, as a launch file "
+                     "passes it; a directory walk passes none, so it is not checked here",
+                     where=(file, line, column), severity=Severity.WARNING,
+                     fix=f"check it by name with {name}:=VALUE (and its other arguments)")
+    return Issue("SB006", text, where=(file, line, column))
 
 
 def _xml_code(reason: str) -> str:

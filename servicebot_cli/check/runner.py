@@ -45,8 +45,9 @@ class FileReport:
     packages: Mapping[str, PackageLocation | None] = field(default_factory=dict)
 
 
-def check_source(source: RobotSource, settings: Settings, env: CheckEnv) -> FileReport:
-    """Check one description.
+def check_source(source: RobotSource, settings: Settings, env: CheckEnv,
+                 named: bool = True) -> FileReport:
+    """Check one description; ``named``: the user named it (else a directory walk found it).
 
     Raises:
         DescriptionError: The file itself cannot be read (missing, a directory, permission).
@@ -63,7 +64,7 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv) -> File
     except DescriptionError as exc:
         if _unreadable(exc, source):
             raise
-        issue = read_errors.issue_of(exc, source.display)
+        issue = read_errors.issue_of(exc, source.display, walked=not named)
         return _report(source.display, place_issues(None, [issue], settings))
     from servicebot_cli.check import packages
 

@@ -89,7 +89,7 @@ def env_for(packages: tuple[tuple[str, str], ...], settings: Settings,
 def check_one(source: RobotSource, named: bool, settings: Settings, env: CheckEnv) -> Outcome:
     """The report of one file, or why the loader refused it."""
     try:
-        return check_source(source, settings, env)
+        return check_source(source, settings, env, named)
     except DescriptionError as exc:
         return Refused(source.display, str(exc), named)
 

@@ -1,0 +1,72 @@
+"""A xacro file that reads an argument it gives no default, as launch files call it.
+
+universal_robot's ROS 1 ``ur_description/urdf/ur.xacro`` opens with
+``<robot name="$(arg robot_model)_robot">``; its ``load_ur.launch`` passes
+``robot_model:=...``, and so do talos_description's launch files for ``enable_crane``.
+Named on the command line without the argument, xacro refuses it: an error (SB006). Found
+in a directory walk, which passes no argument, it cannot be checked: a warning, so that a
+walk of such a package is not failed by files its users always expand with arguments.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from tests.check.helpers import findings
+
+NO_ROS = {"ROS_PACKAGE_PATH": "", "AMENT_PREFIX_PATH": ""}
+TEMPLATE = """<?xml version="1.0"?>
+<robot xmlns:xacro="http://wiki.ros.org/xacro" name="$(arg robot_model)_robot">
+  <xacro:arg name="safety_limits" default="false"/>
+  <link name="base_link"/>
+</robot>
+"""
+BROKEN = """<?xml version="1.0"?>
+<robot xmlns:xacro="http://wiki.ros.org/xacro" name="arm">
+  <link name="${base}_link"/>
+</robot>
+"""
+
+
+def _package(root: Path) -> Path:
+    urdf = root / "ur_description" / "urdf"
+    urdf.mkdir(parents=True)
+    (root / "ur_description" / "package.xml").write_text(
+        "<package><name>ur_description</name><version>1.0.0</version></package>\n")
+    (urdf / "ur.xacro").write_text(TEMPLATE)
+    return urdf / "ur.xacro"
+
+
+def _sb006(run, *args: object) -> tuple[int, list[dict]]:
+    result = run("check", *args, "--format", "json", "--isolated", env=NO_ROS)
+    json.loads(result.stdout)
+    return result.exit_code, [f for f in findings(result.stdout) if f["code"] == "SB006"]
+
+
+def test_in_a_walk_a_missing_launch_argument_is_a_warning(run, tmp_path):
+    _package(tmp_path)
+    exit_code, found = _sb006(run, tmp_path)
+    assert exit_code == 0
+    assert [f["severity"] for f in found] == ["warning"]
+    assert "robot_model" in found[0]["message"] and found[0]["line"] == 2
+    assert "robot_model:=VALUE" in found[0]["fix"]
+
+
+def test_named_without_the_argument_it_is_an_error(run, tmp_path):
+    exit_code, found = _sb006(run, _package(tmp_path))
+    assert exit_code == 1
+    assert [f["severity"] for f in found] == ["error"]
+
+
+def test_named_with_the_argument_it_is_checked(run, tmp_path):
+    exit_code, found = _sb006(run, _package(tmp_path), "robot_model:=ur5")
+    assert (exit_code, found) == (0, [])
+
+
+def test_in_a_walk_other_xacro_failures_stay_errors(run, tmp_path):
+    _package(tmp_path)
+    (tmp_path / "ur_description" / "urdf" / "broken.urdf.xacro").write_text(BROKEN)
+    exit_code, found = _sb006(run, tmp_path)
+    assert exit_code == 1
+    assert sorted(f["severity"] for f in found) == ["error", "warning"]
