@@ -44,6 +44,10 @@ def check(text: str, display: str, robot: RobotDescription) -> Iterator[Issue]:
         problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
         yield Issue("SB601", f"not valid YAML: {problem}", where=where)
         return
+    except RecursionError:  # PyYAML's composer recurses once per level of nesting
+        yield Issue("SB601", "not valid YAML: lists and mappings nested too deep to read",
+                    where=(display, 0, 0))
+        return
     sections = _sections(root)
     if not sections:
         ros1 = _ros1_controllers(root)

@@ -85,6 +85,9 @@ def read_controllers(path: Path, found_by: str) -> Controllers:
         line = f":{where.line + 1}" if where is not None else ""
         raise ControllersError(f"{path}{line}: not valid YAML; fix the file or give "
                                "another with --controllers") from None
+    except RecursionError:  # PyYAML's composer recurses once per level of nesting
+        raise ControllersError(f"{path}: lists and mappings nested too deep to read; is it "
+                               "a controllers file? Give another with --controllers") from None
     return parse_controllers(document, display_path(path), found_by)
 
 

@@ -27,6 +27,11 @@ Scalar: TypeAlias = "str | int | float | bool | None | bytes | datetime.date"
 Value: TypeAlias = "dict[str, Value] | list[Value] | Scalar"
 """A document or any value inside one."""
 
+MAX_DEPTH = 100
+"""Deepest nesting of lists and mappings read; a scenario needs five or six levels."""
+MAX_VALUES = 1_000_000
+"""Most values a document may hold once YAML aliases are expanded (``*name`` repeats)."""
+
 
 class ScenarioError(ServicebotError):
     """A scenario file that cannot be read, parsed or validated; names the file and line."""
@@ -110,32 +115,71 @@ def _parse_yaml(text: str, display: str) -> Located:
         raise ScenarioError(f"{display}{line}: not valid YAML: {exc.problem}") from None
     except yaml.YAMLError as exc:
         raise ScenarioError(f"{display}: not valid YAML: {exc}") from None
+    except RecursionError:  # PyYAML's own composer, where libyaml is not built
+        raise ScenarioError(f"{display}: lists and mappings nested over {MAX_DEPTH} deep; "
+                            "is it the right file?") from None
     positions: Positions = {}
     if node is None:
         return Located({}, positions, display)
-    constructor = _yaml_loader()(text)
-    return Located(_yaml_value(node, (), positions, constructor, display), positions, display)
+    walk = _YamlWalk(_yaml_loader()(text), display)
+    return Located(walk.value(node, (), positions), positions, display)
 
 
-def _yaml_value(node: Node, path: Path, positions: Positions, constructor: SafeLoader,
-                display: str) -> Value:
+class _YamlWalk:
+    """Composed YAML nodes to plain values, bounded: aliases (``*name``) share nodes.
+
+    An alias inside the value it names would recurse forever, and aliases of aliases
+    (YAML's billion laughs) expand exponentially; both are refused with their line.
+    """
+
+    def __init__(self, constructor: SafeLoader, display: str) -> None:
+        self.constructor, self.display = constructor, display
+        self.count = 0
+        self.open: set[int] = set()  # ids of the collections being walked
+
+    def value(self, node: Node, path: Path, positions: Positions) -> Value:
+        line = node.start_mark.line + 1
+        self.count += 1
+        if self.count > MAX_VALUES:
+            raise ScenarioError(f"{self.display}:{line}: {dotted(path) or 'document'}: aliases "
+                                f"(*name) expand the document past {MAX_VALUES} values; write "
+                                "out what they repeat")
+        if len(path) > MAX_DEPTH:
+            raise ScenarioError(f"{self.display}:{line}: {dotted(path)}: lists and mappings "
+                                f"nested over {MAX_DEPTH} deep; is it the right file?")
+        if id(node) in self.open:
+            raise ScenarioError(f"{self.display}:{line}: {dotted(path) or 'document'}: an alias "
+                                "(*name) inside the value it names repeats forever; write the "
+                                "value out")
+        self.open.add(id(node))
+        try:
+            return _yaml_value(node, path, positions, self)
+        finally:
+            self.open.discard(id(node))
+
+
+def _yaml_value(node: Node, path: Path, positions: Positions, walk: _YamlWalk) -> Value:
     import yaml
 
+    constructor, display = walk.constructor, walk.display
     positions[path] = (node.start_mark.line + 1, node.start_mark.column + 1)
     if isinstance(node, yaml.MappingNode):
         result: dict[str, Value] = {}
         for key_node, value_node in node.value:
+            if not isinstance(key_node, yaml.ScalarNode):
+                raise ScenarioError(
+                    f"{display}:{key_node.start_mark.line + 1}: {dotted(path) or 'document'}: "
+                    "a key that is a list or mapping; keys are names")
             key = str(constructor.construct_object(key_node, deep=True))
             if key in result:
                 raise ScenarioError(
                     f"{display}:{key_node.start_mark.line + 1}: {dotted((*path, key))}: "
                     "given twice; keep one"
                 )
-            result[key] = _yaml_value(value_node, (*path, key), positions, constructor, display)
+            result[key] = walk.value(value_node, (*path, key), positions)
         return result
     if isinstance(node, yaml.SequenceNode):
-        return [_yaml_value(item, (*path, i), positions, constructor, display)
-                for i, item in enumerate(node.value)]
+        return [walk.value(item, (*path, i), positions) for i, item in enumerate(node.value)]
     line = node.start_mark.line + 1
     try:
         scalar: Scalar = constructor.construct_object(node, deep=True)
@@ -182,6 +226,8 @@ class _JsonParser:
         column = self.pos - (self.text.rfind("\n", 0, self.pos) + 1) + 1
         self.positions[path] = (line, column)
         char = self.text[self.pos:self.pos + 1]
+        if len(path) >= MAX_DEPTH and char in "{[":
+            self.fail(f"lists and objects nested over {MAX_DEPTH} deep; is it the right file?")
         if char == "{":
             return self.object(path)
         if char == "[":
