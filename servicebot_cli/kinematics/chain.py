@@ -226,7 +226,8 @@ def _on_axis(model: pin.Model, data: pin.Data, q: FloatArray, joint: int, child:
     """True when ``child``'s origin lies on ``joint``'s axis of rotation."""
     import pinocchio as pin
 
-    motion = pin.computeJointJacobian(model, data, q, joint)[:, model.joints[joint].idx_v]
+    jacobian = np.reshape(pin.computeJointJacobian(model, data, q, joint), (6, model.nv))
+    motion = jacobian[:, model.joints[joint].idx_v]
     axis = motion[3:]
     if np.linalg.norm(axis) < 0.5:  # prismatic: the child moves along with it
         return False
@@ -239,7 +240,9 @@ def _prismatic_travel(model: pin.Model, joint: int) -> float:
     import pinocchio as pin
 
     data = model.createData()
-    motion = pin.computeJointJacobian(model, data, pin.neutral(model), joint)
+    # (6, nv); a model of one degree of freedom gets it back as a (6,) array
+    motion = np.reshape(pin.computeJointJacobian(model, data, pin.neutral(model), joint),
+                        (6, model.nv))
     if np.linalg.norm(motion[3:, model.joints[joint].idx_v]) > 0.5:
         return 0.0
     i = model.joints[joint].idx_q

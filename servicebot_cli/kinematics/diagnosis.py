@@ -92,7 +92,8 @@ def _plane(chain: Chain) -> tuple[FloatArray, FloatArray] | None:
     pin.computeJointJacobians(model, data, q)
     pin.updateFramePlacements(model, data)
     # Columns: the frame's linear [m/unit] and angular velocity [rad/unit] per joint.
-    jacobian = pin.getFrameJacobian(model, data, chain.frame, pin.LOCAL_WORLD_ALIGNED)
+    jacobian = np.reshape(pin.getFrameJacobian(model, data, chain.frame,
+                                               pin.LOCAL_WORLD_ALIGNED), (6, model.nv))
     turning = [column[3:] for column in jacobian.T if np.linalg.norm(column[3:]) > 0.5]
     if not turning:
         return None
