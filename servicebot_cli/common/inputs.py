@@ -68,9 +68,21 @@ def read_input_bytes(path: Path, display: str, *, kind: str,
             raise IsADirectoryError
         size = path.stat().st_size
         if max_bytes is not None and size > max_bytes:
-            raise error(f"{display}: file is {size / 1e6:.1f} MB, over the "
-                        f"{max_bytes / 1e6:.0f} MB limit; is it the right file?")
-        return path.read_bytes()
+            raise _too_large(display, size, max_bytes, error)
+        if max_bytes is None:
+            return path.read_bytes()
+        with path.open("rb") as handle:  # a device or a pipe has no size: read to the limit
+            data = handle.read(max_bytes + 1)
+        if len(data) > max_bytes:
+            raise _too_large(display, None, max_bytes, error)
+        return data
+
+
+def _too_large(display: str, size: int | None, max_bytes: int,
+               error: type[ServicebotError]) -> ServicebotError:
+    what = f"file is {size / 1e6:.1f} MB" if size is not None else "holds more"
+    return error(f"{display}: {what}, over the {max_bytes / 1e6:.0f} MB limit; is it the "
+                 "right file?")
 
 
 def read_input_text(path: str, *, kind: str, error: type[ServicebotError] = ServicebotError,
@@ -82,7 +94,9 @@ def read_input_text(path: str, *, kind: str, error: type[ServicebotError] = Serv
     """
     display = "<stdin>" if path == STDIN else path
     if path == STDIN:
-        data = sys.stdin.buffer.read()
+        data = sys.stdin.buffer.read(-1 if max_bytes is None else max_bytes + 1)
+        if max_bytes is not None and len(data) > max_bytes:
+            raise _too_large(display, None, max_bytes, error)
     else:
         data = read_input_bytes(Path(path), display, kind=kind, error=error, max_bytes=max_bytes)
     try:

@@ -8,6 +8,7 @@ itself (as root, ``/dev/full`` became a regular file holding a check report).
 from __future__ import annotations
 
 import os
+import resource
 import stat
 from pathlib import Path
 
@@ -47,3 +48,26 @@ def test_a_full_disk_is_one_error_line(tmp_path: Path) -> None:
     assert_one_line_error(result, 2, "report.json: cannot write: No space left on device",
                           "free some space")
     assert stat.S_ISCHR(Path("/dev/full").stat().st_mode)
+
+
+def _memory_capped() -> None:
+    """Run the child with 3 GB of address space: an endless read fails instead of the machine."""
+    resource.setrlimit(resource.RLIMIT_AS, (3 << 30, 3 << 30))
+
+
+@pytest.mark.parametrize(("args", "needle"), [
+    (["fk", "/dev/zero"], "/dev/zero: holds more, over the 34 MB limit"),
+    (["simulate", "--headless", "-s", "/dev/zero"], "/dev/zero: holds more, over the 10 MB"),
+    (["sweep", "/dev/zero"], "/dev/zero: holds more, over the 1 MB limit"),
+])
+@pytest.mark.skipif(not Path("/dev/zero").is_char_device(), reason="no /dev/zero")
+def test_an_input_without_end_is_read_to_the_limit_only(args: list[str], needle: str) -> None:
+    result = run_servicebot(*args, timeout=60, preexec_fn=_memory_capped)
+    assert_one_line_error(result, 2, needle, "is it the right file?")
+
+
+def test_standard_input_without_end_is_read_to_the_limit_only() -> None:
+    with open("/dev/zero", "rb") as zeros:
+        result = run_servicebot("simulate", "--headless", "-s", "-", stdin=zeros, timeout=60,
+                                preexec_fn=_memory_capped)
+    assert_one_line_error(result, 2, "<stdin>: holds more, over the 10 MB limit")
