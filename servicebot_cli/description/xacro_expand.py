@@ -29,8 +29,15 @@ from xml.parsers import expat
 from servicebot_cli.common.errors import DescriptionError, PackageNotFound, XacroError, XmlError
 from servicebot_cli.description.install_layout import installed_source
 from servicebot_cli.description.packages import PackageResolver
-from servicebot_cli.description.safe_xml import parse_xml
+from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
 from servicebot_cli.description.sources import SourceRef
+from servicebot_cli.description.xacro_limits import (
+    GUARDS,
+    ExpansionTooLarge,
+    MacroBudget,
+    bounded_eval_text,
+    guarded_safe_eval,
+)
 
 _SRC_ATTR = "servicebot-src"
 _VIA_ATTR = "servicebot-via"
@@ -161,13 +168,19 @@ class _Tracer:
         saved = {name: getattr(xacro, name) for name in names}
         saved_find = subst._eval_find
         saved_spec = xacro.abs_filename_spec
+        saved_eval = xacro.safe_eval, xacro.eval_text
         xacro.parse = self._parse
+        # bounded: a file cannot ask for more than a machine has (see xacro_limits)
+        xacro.safe_eval = guarded_safe_eval(xacro.XacroException)
+        xacro.eval_text = bounded_eval_text(xacro.eval_text)
+        xacro._global_symbols.update(GUARDS)
         # load_yaml opens what abs_filename_spec names: a file of a source package found
         # where the package's install rules put it
         xacro.abs_filename_spec = lambda spec: installed_source(saved_spec(spec))
         for name in names[1:]:
             setattr(xacro, name, self._tracking(saved[name]))
-        xacro.handle_macro_call = self._tracking(self._macro_call(saved["handle_macro_call"]))
+        xacro.handle_macro_call = self._tracking(
+            self._macro_call(MacroBudget().wrap(saved["handle_macro_call"])))
         subst._eval_find = lambda pkg: str(self.resolver.find(pkg))
         captured = io.StringIO()
         try:
@@ -178,6 +191,9 @@ class _Tracer:
                 setattr(xacro, name, fn)
             subst._eval_find = saved_find
             xacro.abs_filename_spec = saved_spec
+            xacro.safe_eval, xacro.eval_text = saved_eval
+            for name in GUARDS:
+                xacro._global_symbols.pop(name, None)
 
     def _parse(self, inp: str | xml.dom.minidom.Document | None,
                filename: str | None = None) -> xml.dom.minidom.Document:
@@ -187,10 +203,15 @@ class _Tracer:
             return xml.dom.minidom.parseString(inp) if isinstance(inp, str) else inp
         path = installed_source(os.path.join(xacro.root_dir, filename or ""))
         try:
-            data = Path(path).read_bytes()
+            with open(path, "rb") as handle:  # a device has no end: read to the limit only
+                data = handle.read(MAX_BYTES + 1)
         except OSError as exc:
             xacro.filestack.pop()  # as xacro does: the failing file is not "being processed"
             raise xacro.XacroException(f"{exc.strerror}: {filename}", exc=exc) from None
+        if len(data) > MAX_BYTES:
+            xacro.filestack.pop()
+            raise xacro.XacroException(f"'{filename}' holds over {MAX_BYTES >> 20} MiB, the "
+                                       "limit for a description; is it the right file?")
         display = filename or path
         text = parse_xml(data, display, blanks_before_declaration=False).text
         self.files.append(display)
@@ -261,7 +282,8 @@ class _Tracer:
 
         # A deliberate error (xacro.fatal in the file, or xacro's own checks) says it all;
         # the "when evaluating expression" context only helps for Python errors.
-        shown = inner if isinstance(inner, xacro.XacroException) and inner.exc is None else exc
+        deliberate = isinstance(inner, xacro.XacroException) and inner.exc is None
+        shown = inner if deliberate or isinstance(inner, ExpansionTooLarge) else exc
         message = " ".join(str(shown).split()) or type(exc).__name__
         return XacroError(f"{where}: xacro: {message}")
 
