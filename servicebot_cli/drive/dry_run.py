@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 from servicebot_cli.drive.motors import MotorMap
 from servicebot_cli.drive.plan import Plan
+from servicebot_cli.drive.request import BadOption
 from servicebot_cli.drive.session.commander import Commander, HostLink
 from servicebot_cli.drive.shaping import WheelShaper
 
@@ -70,9 +71,22 @@ class DryRun:
     frames: tuple[PlannedFrame, ...]
 
 
+MAX_FRAMES = 1_000_000
+"""Most frames a dry run lists (14 hours at 20 Hz): each is held, then printed."""
+
+
 def dry_run(plan: Plan, link: HostLink, motors: MotorMap, max_accel_rad_s2: float,
             rate_hz: float) -> DryRun:
-    """The frames a run of ``plan`` at ``rate_hz`` would send."""
+    """The frames a run of ``plan`` at ``rate_hz`` would send.
+
+    Raises:
+        BadOption: The plan has more than :data:`MAX_FRAMES` frames.
+    """
+    ticks = plan.duration_s * rate_hz
+    if ticks > MAX_FRAMES:
+        raise BadOption("--dry-run", f"the plan lasts {plan.duration_s:g} s, {ticks:.3g} frames "
+                        f"at {rate_hz:g} Hz, over the {MAX_FRAMES} a dry run lists; shorten "
+                        "its durations")
     frames = tuple(planned_frames(plan, link, motors, max_accel_rad_s2, rate_hz))
     return DryRun(link.name, rate_hz, plan.duration_s, link.has_arm, frames)
 
