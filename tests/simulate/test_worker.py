@@ -18,7 +18,7 @@ import pytest
 
 from servicebot_cli.common import forked as worker_module
 from servicebot_cli.common.errors import ExitCode, ServicebotError
-from servicebot_cli.common.forked import Worker, WorkerEnded, second_core
+from servicebot_cli.common.forked import PIPE_BYTES, Worker, WorkerEnded, second_core
 from tests.processes import children, reaped
 
 pytestmark = pytest.mark.skipif(not hasattr(os, "fork"), reason="the worker is forked")
@@ -335,3 +335,20 @@ def test_a_run_of_several_pieces_with_a_second_core_forks_its_worker_and_reaps_i
     [worker] = set(children(os.getpid())) - before
     pieces.close()
     assert reaped(worker)
+
+
+@pytest.mark.skipif(not hasattr(__import__("fcntl"), "F_GETPIPE_SZ"), reason="Linux pipes only")
+def test_its_pipes_hold_a_whole_piece_so_submitting_never_waits_on_its_reader():
+    import fcntl
+
+    limit = int(Path("/proc/sys/fs/pipe-max-size").read_text())
+    worker = Worker(lambda job: job, forked=True)
+    try:
+        assert worker._jobs is not None and worker._results is not None
+        for pipe in (worker._jobs, worker._results):
+            size = fcntl.fcntl(pipe.fileno(), fcntl.F_GETPIPE_SZ)
+            assert size == min(PIPE_BYTES, limit) and size > 219_000  # a default piece's job
+        worker.submit(7)
+        assert worker.result() == 7
+    finally:
+        worker.close()
