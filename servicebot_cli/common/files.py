@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import IO, Any
 
 from servicebot_cli.common.errors import ServicebotError
-from servicebot_cli.common.signals import ENDING_SIGNALS, SignalsHeld
+from servicebot_cli.common.signals import ENDING_SIGNALS, SignalsHeld, raise_lost
 
 
 class OutputError(ServicebotError):
@@ -70,6 +70,7 @@ def atomic_output(
         _release(held)  # a signal that came meanwhile raises here, inside the try
         with os.fdopen(fd, mode, **open_kwargs) as handle:
             yield handle
+        raise_lost()  # a signal that numpy swallowed still keeps the file out
         os.chmod(tmp_name, 0o644 & ~_umask())
         os.replace(tmp_name, target)
     except OSError as exc:
@@ -113,6 +114,7 @@ def atomic_directory(path: str | os.PathLike[str]) -> Iterator[Path]:
     try:
         _release(held)
         yield temporary
+        raise_lost()
         os.chmod(temporary, 0o755 & ~_umask())
         os.rename(temporary, target)
     except OSError as exc:

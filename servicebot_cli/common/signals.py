@@ -36,10 +36,15 @@ class EndedBySignal(BaseException):
 
 
 class _Deferral:
-    """How many blocks hold signals back now, and the first signal that came meanwhile."""
+    """Signals held back and raised.
+
+    How many blocks hold signals back now, the first signal that came meanwhile, and the
+    signal last raised as an exception (until the exception is seen leaving the block).
+    """
 
     depth = 0
     pending: int | None = None
+    raised: int | None = None
 
 
 def _raise(signum: int, frame: FrameType | None) -> None:
@@ -50,9 +55,21 @@ def _raise(signum: int, frame: FrameType | None) -> None:
 
 
 def _raise_for(signum: int) -> None:
+    _Deferral.raised = signum
     if signum == signal.SIGINT:
         raise KeyboardInterrupt
     raise EndedBySignal(signum)
+
+
+def raise_lost() -> None:
+    """Raise again a signal whose exception never left :func:`signals_as_exceptions`' block.
+
+    A handler's exception raised while numpy runs Python code inside one of its loops can
+    be cleared there, and the run would go on as if no signal had come. Outputs call this
+    before they go in place, so such a run still ends by its signal and leaves nothing.
+    """
+    if _Deferral.raised is not None:
+        _raise_for(_Deferral.raised)
 
 
 class SignalsHeld:
@@ -94,8 +111,16 @@ def signals_as_exceptions() -> Iterator[None]:
         return
     previous = {signum: signal.signal(signum, _raise)
                 for signum in (signal.SIGINT, *ENDING_SIGNALS)}
+    _Deferral.raised = None
     try:
         yield
+    except BaseException:
+        _Deferral.raised = None  # it left the block: seen
+        raise
+    else:
+        lost, _Deferral.raised = _Deferral.raised, None
+        if lost is not None:  # a library swallowed it: the run still ends by it
+            _raise_for(lost)
     finally:
         for signum, handler in previous.items():
             signal.signal(signum, handler)
