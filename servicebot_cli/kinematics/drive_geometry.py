@@ -26,6 +26,7 @@ if TYPE_CHECKING:
 _ONE_AXIS = ("revolute", "continuous", "prismatic")
 _PARALLEL = 0.99  # |cos| of the angle between axes that counts as parallel (about 8 degrees)
 _ENDLESS_RAD = 1e3  # revolute limits beyond this each way bound no wheel
+_BALL_CASTER = "on the centre line: a ball caster, not a drive wheel"
 
 
 @dataclass(frozen=True)
@@ -109,8 +110,9 @@ def drive_geometry(robot: RobotDescription) -> DriveGeometry:
     if not sides["left"] or not sides["right"]:
         found = ", ".join(f"{w.joint} ({w.side})" for w in wheels) or "none"
         raise DescriptionError(
-            f"{robot.display}: not a differential drive: needs continuous wheel joints on both "
-            f"sides with a cylinder about the joint axis (found: {found}); "
+            f"{robot.display}: not a differential drive: needs wheel joints that turn freely "
+            "(continuous, or revolute with endless limits) on both sides, with a cylinder "
+            f"about the joint axis or a sphere (found: {found}); "
             + _why_not_wheels(robot, left_out)
         )
     left_y = np.mean([w.position_m[1] for w in sides["left"]])
@@ -126,39 +128,99 @@ def drive_geometry(robot: RobotDescription) -> DriveGeometry:
 def chassis_joints(robot: RobotDescription, wheels: Sequence[str] = ()) -> tuple[str, ...]:
     """The movable joints of the running gear other than the drive ``wheels``, URDF order.
 
-    Passive casters: a swivel, a continuous joint about the vertical (the root link's z) with
-    a continuous joint below it, the caster wheel (MiR's ``fl_caster_rotation_joint`` over
-    ``fl_caster_wheel_joint``); and the one-axis joints that carry a drive wheel or a caster,
-    a suspension (Leo Rover's rockers) or a steering joint. None of them is part of an arm.
+    Passive casters (:func:`_swivels_above`; a ball on the centre line), and the one-axis
+    joints above a drive wheel or a caster that carry wheels of one side only: a suspension
+    (Leo Rover's rockers) or a steering joint. A joint that carries both sides' wheels (a
+    virtual planar base above the whole robot) is not running gear, nor is anything above
+    it. None of them is an arm.
     """
-    below = _swivels_above(robot, _link_transforms(robot))
-    gear = set(below.values()) | set(below)
+    world = _link_transforms(robot)
+    below = _swivels_above(robot, world)
+    gear = set(below.values()) | set(below) | {
+        joint.name for joint in robot.joints
+        if _as_wheel(robot, joint, world) == _BALL_CASTER}
     by_child = {joint.child: joint for joint in robot.joints}
+    side = _wheel_sides(robot, wheels)
     for name in (*wheels, *gear):
         joint = next((j for j in robot.joints if j.name == name), None)
         above = by_child.get(joint.parent) if joint is not None else None
         while above is not None and above.name not in gear:
+            if len({side[w] for w in _wheels_below(robot, above, side)}) > 1:
+                break  # it carries both sides: the base itself moves
             if above.type in _ONE_AXIS:
                 gear.add(above.name)
             above = by_child.get(above.parent)
     return tuple(j.name for j in robot.joints if j.name in gear and j.name not in wheels)
 
 
+def _wheel_sides(robot: RobotDescription, wheels: Sequence[str]) -> dict[str, str]:
+    """Each drive wheel's side (its joint's child on +y of the root: left)."""
+    world = _link_transforms(robot)
+    by_name = {joint.name: joint for joint in robot.joints}
+    sides = {}
+    for name in wheels:
+        child = by_name[name].child if name in by_name else None
+        if child is not None and child in world:
+            sides[name] = "left" if world[child][1, 3] > 0 else "right"
+    return sides
+
+
+def _wheels_below(robot: RobotDescription, joint: Joint, side: dict[str, str]) -> list[str]:
+    """The drive wheels of ``side`` in the subtree ``joint`` carries (itself included)."""
+    children: dict[str, list[Joint]] = {}
+    for each in robot.joints:
+        if each.parent is not None:
+            children.setdefault(each.parent, []).append(each)
+    found: list[str] = []
+    stack, seen = [joint], set()
+    while stack:
+        current = stack.pop()
+        if current.name in seen:
+            continue
+        seen.add(current.name)
+        if current.name in side:
+            found.append(current.name)
+        stack += children.get(current.child or "", [])
+    return found
+
+
 def _swivels_above(robot: RobotDescription, world: dict[str, np.ndarray]) -> dict[str, str]:
-    """For each joint below a caster swivel, the nearest such swivel above it."""
+    """Passive casters: each caster wheel joint, and the swivel it turns on.
+
+    A swivel turns freely about the vertical (the root link's z), on a link fixed to the
+    root link; its child link is the parent of the caster wheel's joint, which turns freely
+    and carries a round shape (MiR's ``fl_caster_rotation_joint`` over
+    ``fl_caster_wheel_joint``). An arm's waist carries no wheel; a virtual yaw joint above
+    the whole base stands on a moving link.
+    """
     by_child = {joint.child: joint for joint in robot.joints}
+    on_root = _fixed_to_root(robot)
     found: dict[str, str] = {}
     for joint in robot.joints:
-        if joint.type != "continuous":
+        swivel = by_child.get(joint.parent) if joint.parent is not None else None
+        if joint.child is None or not turns_freely(joint) or swivel is None \
+                or not turns_freely(swivel) or swivel.parent not in on_root \
+                or not _vertical(swivel, world):
             continue
-        seen: set[str] = set()
-        above = by_child.get(joint.parent)
-        while above is not None and above.name not in seen:
-            seen.add(above.name)
-            if above.type == "continuous" and _vertical(above, world):
-                found[joint.name] = above.name
-                break
-            above = by_child.get(above.parent)
+        link = robot.link(joint.child)
+        if any(s.geometry.kind in ("cylinder", "sphere")
+               for s in (*link.collisions, *link.visuals)):
+            found[joint.name] = swivel.name
+    return found
+
+
+def _fixed_to_root(robot: RobotDescription) -> set[str]:
+    """The root link and the links fixed to it."""
+    fixed: dict[str, list[str]] = {}
+    for joint in robot.joints:
+        if joint.type == "fixed" and joint.parent is not None and joint.child is not None:
+            fixed.setdefault(joint.parent, []).append(joint.child)
+    found, stack = set(), [robot.root_link] if robot.root_link else []
+    while stack:
+        link = stack.pop()
+        if link not in found:
+            found.add(link)
+            stack += fixed.get(link, [])
     return found
 
 
@@ -230,6 +292,8 @@ def _as_wheel(robot: RobotDescription, joint: Joint,
         return (f"about ({shown}) in {robot.root_link}, not across the robot (its y, with x "
                 "forward as REP 103 has it)")
     position = transform[:3, 3]
+    if round_shape.geometry.kind == "sphere" and abs(position[1]) <= round_shape.geometry.radius:
+        return _BALL_CASTER
     limit = joint.limits.velocity if joint.limits and joint.limits.velocity else math.inf
     return Wheel(
         joint=joint.name,

@@ -101,3 +101,58 @@ def test_rockers_that_carry_the_wheels_are_running_gear_not_an_arm(run, tmp_path
     totals = json.loads(result.stdout)["totals"]
     assert totals["dof"] == {"total": 6, "wheels": 4, "arm": 0, "chassis": 2}
     assert totals["arm"] is None
+
+
+def _joint(name: str, kind: str, parent: str, child: str, xyz: str, axis: str) -> str:
+    limit = '<limit lower="-2" upper="2" effort="10" velocity="1"/>' if kind != "continuous" \
+        else '<limit effort="10" velocity="10"/>'
+    return (f'<joint name="{name}" type="{kind}"><parent link="{parent}"/>'
+            f'<child link="{child}"/><origin xyz="{xyz}"/><axis xyz="{axis}"/>{limit}</joint>')
+
+
+def _totals(run, tmp_path, body: str) -> dict:
+    path = tmp_path / "robot.urdf"
+    path.write_text(f'<robot name="r">{body}</robot>\n')
+    result = run("inspect", path, "--section", "totals", "--format", "json")
+    assert result.exit_code == 0, result.stderr
+    totals: dict = json.loads(result.stdout)["totals"]
+    return totals
+
+
+def test_an_arm_with_a_waist_and_a_continuous_elbow_is_an_arm(run, tmp_path):
+    # Kinova's layout: a continuous joint about z, then others; no wheel anywhere
+    links = "".join(_link(n) for n in ("base", "l1", "l2", "l3", "l4"))
+    joints = (_joint("joint_1", "continuous", "base", "l1", "0 0 0.15", "0 0 1")
+              + _joint("joint_2", "revolute", "l1", "l2", "0 0 0.1", "0 1 0")
+              + _joint("joint_3", "continuous", "l2", "l3", "0 0 0.2", "0 0 1")
+              + _joint("joint_4", "revolute", "l3", "l4", "0 0 0.2", "0 1 0"))
+    totals = _totals(run, tmp_path, links + joints)
+    assert totals["dof"] == {"total": 4, "wheels": 0, "arm": 4, "chassis": 0}
+
+
+def test_a_virtual_planar_base_above_the_robot_is_neither_caster_nor_suspension(run, tmp_path):
+    wheels = "".join(
+        _link(f"{side}_wheel", 0.1)
+        + _joint(f"{side}_wheel_joint", "continuous", "base_link", f"{side}_wheel",
+                 f"0 {y} 0.1", "0 1 0") for side, y in (("left", 0.2), ("right", -0.2)))
+    virtual = (_link("odom") + _link("yaw_link") + _link("base_link")
+               + _joint("base_x", "prismatic", "odom", "yaw_link", "0 0 0", "1 0 0")
+               + _joint("base_theta", "continuous", "yaw_link", "base_link", "0 0 0", "0 0 1"))
+    totals = _totals(run, tmp_path, virtual + wheels)
+    assert totals["drive"]["left"] == ["left_wheel_joint"]
+    assert totals["drive"]["track_m"] == pytest.approx(0.4)
+    assert totals["dof"]["chassis"] == 0
+
+
+def test_a_ball_caster_on_the_centre_line_is_no_drive_wheel(run, tmp_path):
+    wheels = "".join(
+        _link(f"{side}_wheel", 0.1)
+        + _joint(f"{side}_wheel_joint", "continuous", "base_link", f"{side}_wheel",
+                 f"0 {y} 0.1", "0 1 0") for side, y in (("left", 0.2), ("right", -0.2)))
+    ball = ('<link name="ball"><collision><geometry><sphere radius="0.05"/></geometry>'
+            '</collision></link>'
+            + _joint("ball_joint", "continuous", "base_link", "ball", "-0.3 0 0.05", "0 1 0"))
+    totals = _totals(run, tmp_path, _link("base_link") + wheels + ball)
+    assert totals["drive"]["right"] == ["right_wheel_joint"]
+    assert totals["drive"]["wheel_radius_m"] == pytest.approx(0.1)
+    assert totals["dof"] == {"total": 3, "wheels": 2, "arm": 0, "chassis": 1}
