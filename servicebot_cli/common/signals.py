@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import contextlib
 import signal
+import sys
 import threading
 from collections.abc import Iterator
 from types import FrameType
@@ -67,8 +68,10 @@ def raise_lost() -> None:
     A handler's exception raised while numpy runs Python code inside one of its loops can
     be cleared there, and the run would go on as if no signal had come. Outputs call this
     before they go in place, so such a run still ends by its signal and leaves nothing.
+    While an exception is on its way out (the signal's own, or another), nothing is raised:
+    what a clean-up writes then (``sweep``'s table of the finished runs) is its to write.
     """
-    if _Deferral.raised is not None:
+    if _Deferral.raised is not None and sys.exc_info()[1] is None:
         _raise_for(_Deferral.raised)
 
 

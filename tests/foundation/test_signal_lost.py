@@ -57,3 +57,16 @@ def test_a_swallowed_signal_ends_the_block_even_with_no_output(tmp_path):
     done = subprocess.run([sys.executable, "-c", script, str(tmp_path / "x")], cwd=REPO,
                           capture_output=True, text=True, timeout=60)
     assert done.stdout.strip() == "written\nended: EndedBySignal", done.stdout + done.stderr
+
+
+def test_what_a_clean_up_writes_while_the_signal_goes_out_is_written(tmp_path):
+    # sweep writes the table of its finished runs on its way out of a Ctrl-C
+    script = SCRIPT.replace("signal.SIG)", "signal.SIGTERM)").replace(
+        "        except BaseException:\n            pass  # a library clears it\n"
+        "        with OUTPUT(target) as out:\n            WRITE\n",
+        "        except BaseException:\n            with atomic_output(target) as out:\n"
+        "                out.write('finished runs')\n            raise\n")
+    done = subprocess.run([sys.executable, "-c", script, str(tmp_path / "runs.csv")], cwd=REPO,
+                          capture_output=True, text=True, timeout=60)
+    assert done.stdout.strip() == "ended: EndedBySignal", done.stdout + done.stderr
+    assert (tmp_path / "runs.csv").read_text() == "finished runs"
