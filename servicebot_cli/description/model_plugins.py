@@ -47,14 +47,33 @@ def _absolute(topic: str) -> str:
     return "/" + "/".join(part for part in topic.split("/") if part)
 
 
-def _ros1(plugin: Plugin) -> bool:
+_ROS1_KEYS = frozenset((
+    "commandTopic", "odometryTopic", "robotNamespace", "topicName", "leftJoint", "rightJoint",
+    "wheelSeparation", "wheelDiameter", "updateRate", "publishOdomTF", "publishWheelTF",
+    "publishTf", "odometryFrame", "robotBaseFrame", "odometrySource", "wheelAcceleration",
+    "wheelTorque", "legacyMode", "publishWheelJointState"))
+"""Parameters only gazebo_ros_pkgs' ROS 1 plugins read (camelCase), defaults or not."""
+
+
+def ros1_plugin(plugin: Plugin) -> bool:
+    """Whether ``plugin`` is written for gazebo_ros_pkgs' ROS 1 plugins (no ``<ros>`` block)."""
     return not any(key.startswith("ros/") for key, _ in plugin.params) and any(
-        key in ("commandTopic", "odometryTopic", "robotNamespace", "topicName")
-        for key, _ in plugin.params)
+        key in _ROS1_KEYS for key, _ in plugin.params)
+
+
+def publishes_odom_tf(plugin: Plugin) -> bool:
+    """Whether a Classic diff-drive plugin broadcasts odom -> base on /tf.
+
+    ROS 2: ``<publish_odom_tf>`` (default false); ROS 1: ``<publishOdomTF>`` (default true)
+    and ``<publishTf>`` (default true).
+    """
+    if ros1_plugin(plugin):
+        return _flag(plugin, "publishOdomTF", True) and _flag(plugin, "publishTf", True)
+    return _flag(plugin, "publish_odom_tf", False)
 
 
 def _classic_drive(plugin: Plugin, odom_default: bool, tf_default: bool) -> list[Row]:
-    ros1 = _ros1(plugin)
+    ros1 = ros1_plugin(plugin)
     odom_on, tf_on = (True, True) if ros1 else (odom_default, tf_default)
     rows: list[Row] = [("in", _absolute(plugin_topic(plugin, "cmd_vel", "commandTopic")),
                         TWIST, None)]

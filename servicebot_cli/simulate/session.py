@@ -254,7 +254,8 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
         stack.enter_context(contextlib.closing(pieces))  # its worker stopped whatever happens
         summary, last, writers = _write_pieces(
             pieces,
-            outputs, publishers(body, scenario.camera, odom_topic(controllers_file)),
+            outputs, publishers(body, scenario.camera, odom_topic(controllers_file),
+                                controllers_file.odom_tf),
             stack, bar.advance if bar else None, live)
     track = None
     if live:

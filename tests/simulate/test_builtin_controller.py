@@ -35,3 +35,18 @@ def test_a_controllers_file_given_is_not_overridden_by_the_built_in_scenario(run
     assert controller["max_linear_acceleration_m_s2"] == {"value": 0.5,
                                                           "source": str(controllers)}
     assert summary["messages"]["/base/odom"] == 20
+
+
+def test_enable_odom_tf_false_broadcasts_no_odom_to_base(run, tmp_path):
+    controllers = tmp_path / "controllers.yaml"
+    base = ("controller_manager:\n  ros__parameters:\n    base:\n"
+            "      type: diff_drive_controller/DiffDriveController\n"
+            "base:\n  ros__parameters:\n    publish_rate: 10.0\n")
+    counts = []
+    for extra in ("", "    enable_odom_tf: false\n"):
+        controllers.write_text(base + extra)
+        result = run("simulate", "--headless", "--duration-s", "2", "--format", "json",
+                     "--controllers", controllers)
+        assert result.exit_code == 0, result.output
+        counts.append(json.loads(result.stdout)["messages"]["/tf"])
+    assert counts[0] - counts[1] == 20  # the odometry's 10 Hz over 2 s, and only those

@@ -102,3 +102,57 @@ def test_a_plugin_number_that_is_not_one_is_one_error_line(tmp_path):
     result = run_servicebot("simulate", robot, "--headless", "--duration-s", "1", env=NO_ROS)
     line = assert_one_line_error(result, 2, "<update_rate>", "'fast'")
     assert str(robot) in line
+
+
+def _sam_bot_with(tmp_path: Path, old: str, new: str) -> Path:
+    robot = tmp_path / "sam_bot.urdf"
+    text = SAM_BOT.read_text()
+    assert old in text
+    robot.write_text(text.replace(old, new))
+    return robot
+
+
+def test_sam_bots_plugin_broadcasts_no_odom_tf_and_holds_commands(tmp_path):
+    pytest.importorskip("rosbags")
+    summary, messages = _run(SAM_BOT, tmp_path)  # <publish_odom_tf>false</publish_odom_tf>
+    frames = {t.child_frame_id for m in messages["/tf"] for t in m.transforms}
+    assert "base_link" not in frames and frames  # the wheels' joint transforms only
+    assert summary["controller"]["cmd_vel_timeout_s"] == {"value": None, "source": PLUGIN}
+
+
+def test_with_publish_odom_tf_the_plugin_broadcasts_odom_to_base(tmp_path):
+    pytest.importorskip("rosbags")
+    robot = _sam_bot_with(tmp_path, "<publish_odom_tf>false", "<publish_odom_tf>true")
+    _, messages = _run(robot, tmp_path)
+    parents = {(t.header.frame_id, t.child_frame_id) for m in messages["/tf"]
+               for t in m.transforms}
+    assert ("odom", "base_link") in parents
+
+
+def test_without_publish_odom_no_odometry_is_published_anywhere(tmp_path):
+    pytest.importorskip("rosbags")
+    robot = _sam_bot_with(tmp_path, "<publish_odom>true</publish_odom>", "")
+    summary, messages = _run(robot, tmp_path)
+    assert not [t for t in messages if "odom" in t]
+    assert summary["odometry_drift"]["final_position_m"] >= 0  # the summary still has it
+
+
+def test_a_ros1_plugin_on_its_default_topics_is_read_as_ros1(run, tmp_path):
+    # TurtleBot3's plugin without <commandTopic> and <odometryTopic>: ROS 1 defaults
+    source = TURTLEBOT3.parent / "turtlebot3_burger.gazebo.xacro"
+    text = source.read_text()
+    for tag in ("<commandTopic>cmd_vel</commandTopic>", "<odometryTopic>odom</odometryTopic>"):
+        assert tag in text
+        text = text.replace(tag, "")
+    package = tmp_path / "turtlebot3_description"
+    (package / "urdf").mkdir(parents=True)
+    for name in ("package.xml",):
+        (package / name).write_text((TURTLEBOT3.parents[1] / name).read_text())
+    for path in TURTLEBOT3.parent.iterdir():
+        (package / "urdf" / path.name).write_text(path.read_text())
+    (package / "urdf" / source.name).write_text(text)
+    result = run("inspect", package / "urdf" / TURTLEBOT3.name, "--section", "topics",
+                 "--format", "json")
+    assert result.exit_code == 0, result.stderr
+    names = {t["name"] for t in json.loads(result.stdout)["topics"]["topics"]}
+    assert {"/cmd_vel", "/odom", "/tf"} <= names

@@ -67,35 +67,41 @@ def absolute(topic: str | None, fallback: str) -> str:
     return name if name.startswith("/") else f"/{name}"
 
 
-def odom_topic(controllers: ControllersFile) -> str:
+def odom_topic(controllers: ControllersFile) -> str | None:
     """Where the diff-drive controller of ``controllers`` publishes odometry (``~/odom``).
 
-    A Gazebo drive plugin's topic when the plugin drives the base.
+    A Gazebo drive plugin's topic when the plugin drives the base; None when it publishes
+    none.
     """
+    if not controllers.publishes_odometry:
+        return None
     if controllers.odom_topic:
         return controllers.odom_topic
     return f"/{controllers.name}/odom" if controllers.name else ODOM_TOPIC
 
 
 def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
-               odom_topic: str = ODOM_TOPIC) -> list[Publisher]:
+               odom_topic: str | None = ODOM_TOPIC, odom_tf: bool = True) -> list[Publisher]:
     """Every publisher of a run of ``body``: latched topics and the clock first.
 
     Camera images only when ``images`` are on; odometry on ``odom_topic`` (the diff-drive
-    controller's ``~/odom``). Messages with equal stamps are in this order in a bag.
+    controller's ``~/odom``; None: none) and odom -> base on /tf when ``odom_tf``. Messages
+    with equal stamps are in this order in a bag.
     """
     out = [Publisher(DESCRIPTION_TOPIC, "std_msgs/msg/String", qos.ROBOT_DESCRIPTION, _once,
                      _robot_description),
            Publisher(TF_STATIC_TOPIC, TF_TYPE, qos.STATIC_TF, _once, tf_static),
-           Publisher(CLOCK_TOPIC, "rosgraph_msgs/msg/Clock", qos.CLOCK, _tick_times, _clock),
-           Publisher(odom_topic, "nav_msgs/msg/Odometry", qos.SYSTEM_DEFAULTS,
-                     lambda r: r.odometry.times_s, _odometry),
-           Publisher(TF_TOPIC, TF_TYPE, qos.SYSTEM_DEFAULTS, lambda r: r.odometry.times_s,
-                     tf_base),
-           Publisher(TF_TOPIC, TF_TYPE, qos.DYNAMIC_TF, lambda r: r.joints.times_s,
-                     JointTransforms()),
-           Publisher(JOINT_STATES_TOPIC, "sensor_msgs/msg/JointState", qos.SYSTEM_DEFAULTS,
-                     lambda r: r.joints.times_s, _joint_states)]
+           Publisher(CLOCK_TOPIC, "rosgraph_msgs/msg/Clock", qos.CLOCK, _tick_times, _clock)]
+    if odom_topic is not None:
+        out.append(Publisher(odom_topic, "nav_msgs/msg/Odometry", qos.SYSTEM_DEFAULTS,
+                             lambda r: r.odometry.times_s, _odometry))
+    if odom_tf:
+        out.append(Publisher(TF_TOPIC, TF_TYPE, qos.SYSTEM_DEFAULTS,
+                             lambda r: r.odometry.times_s, tf_base))
+    out += [Publisher(TF_TOPIC, TF_TYPE, qos.DYNAMIC_TF, lambda r: r.joints.times_s,
+                      JointTransforms()),
+            Publisher(JOINT_STATES_TOPIC, "sensor_msgs/msg/JointState", qos.SYSTEM_DEFAULTS,
+                      lambda r: r.joints.times_s, _joint_states)]
     if body.lidar is not None:
         out.append(Publisher(absolute(body.lidar.spec.topic, "scan"),
                              "sensor_msgs/msg/LaserScan", qos.SENSOR_DATA,

@@ -45,6 +45,11 @@ class ControllersFile:
     """Where the values come from, when not from ``path`` (a Gazebo drive plugin)."""
     odom_topic: str | None = None
     """Where odometry is published, when not ``/NAME/odom``."""
+    publishes_odometry: bool = True
+    """False when the base's controller publishes no Odometry (a Classic diff-drive plugin
+    without ``<publish_odom>true``)."""
+    odom_tf: bool = True
+    """Whether odom -> base is broadcast on /tf (diff_drive_controller's ``enable_odom_tf``)."""
 
     @property
     def label(self) -> str:
@@ -110,7 +115,7 @@ def read_controllers_file(path: Path | None) -> ControllersFile:
             if not isinstance(diagonal, list) or len(diagonal) != 6:
                 raise ControllersFileError(f"{path}: {name}.{key}: expected 6 numbers")
             values[key] = tuple(_number(path, key, v) for v in diagonal)
-    return ControllersFile(path, values, name)
+    return ControllersFile(path, values, name, odom_tf=params.get("enable_odom_tf") is not False)
 
 
 def _limits(path: Path, params: Mapping[str, Any], prefix: str, axis: str,

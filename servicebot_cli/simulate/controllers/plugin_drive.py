@@ -9,14 +9,17 @@ rate, with its limits and covariances:
   ``<updateRate>``), the odometry's rate here (the simulator's control loop stays its own:
   Gazebo's sensors do not wait for the plugin); the odometry's pose and twist covariances
   are ``<covariance_x>``, ``<covariance_y>`` and ``<covariance_yaw>`` (defaults 1e-5, 1e-5,
-  1e-3) with 1e12 for z, roll and pitch.
+  1e-3) with 1e12 for z, roll and pitch. It publishes odometry only with
+  ``<publish_odom>true`` and odom -> base on /tf only with ``<publish_odom_tf>true`` (ROS 1:
+  both by default).
 - gz-sim's ``DiffDrive`` system (gz-sim's ``DiffDrive.cc``): commands the wheels at every
   physics step and publishes odometry at ``<odom_publish_frequency>`` (default 50 Hz); its
   speed limiter takes ``<max_velocity>``, ``<max_acceleration>`` and ``<max_jerk>`` (and their
   ``min_``) for both axes, overridden per axis by ``<max_linear_velocity>``,
   ``<max_angular_acceleration>``, and so on.
 
-The odometry topic is the one ``inspect`` lists for the plugin (its ROS namespace and
+Neither plugin times a command out: the last one holds until the next. The odometry topic
+is the one ``inspect`` lists for the plugin (its ROS namespace and
 remapping; a gz ``<odom_topic>``, else ``/model/MODEL/odometry`` with MODEL the robot's
 name, the name it is usually spawned with). Pure.
 """
@@ -27,7 +30,12 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from servicebot_cli.description.extensions import Plugin, param
-from servicebot_cli.description.model_plugins import ODOMETRY, diff_drive_kind, model_plugin_rows
+from servicebot_cli.description.model_plugins import (
+    ODOMETRY,
+    diff_drive_kind,
+    model_plugin_rows,
+    publishes_odom_tf,
+)
 from servicebot_cli.simulate.controllers.config import (
     ControllersFile,
     ControllersFileError,
@@ -70,8 +78,9 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
     """
     label = f"Gazebo plugin {plugin.filename or plugin.name}"
     where = f"{robot.display}: {label}"
-    values: dict[str, Any] = {}
-    if diff_drive_kind(plugin) == "classic":
+    values: dict[str, Any] = {"cmd_vel_timeout_s": math.inf}  # neither plugin has one
+    classic = diff_drive_kind(plugin) == "classic"
+    if classic:
         rate = _number(plugin, where, "update_rate", "updateRate", default=100.0)
         if rate > 0:  # 0: every physics step, as often as the control loop runs
             values["publish_rate_hz"] = rate
@@ -88,7 +97,9 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
                   if direction == "out" and message == ODOMETRY), None)
     if topic is not None:
         topic = topic.replace("/MODEL/", f"/{robot.name}/")
-    return ControllersFile(None, values, None, source=label, odom_topic=topic)
+    return ControllersFile(None, values, None, source=label, odom_topic=topic,
+                           publishes_odometry=topic is not None,
+                           odom_tf=publishes_odom_tf(plugin) if classic else True)
 
 
 def _gz_limits(plugin: Plugin, where: str) -> dict[str, float]:
