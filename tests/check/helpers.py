@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import struct
 from pathlib import Path
 from typing import Any
 
@@ -24,3 +25,14 @@ def findings(stdout: str) -> list[dict[str, Any]]:
 def codes(stdout: str) -> set[str]:
     """The codes found by a ``--format json`` run."""
     return {f["code"] for f in findings(stdout)}
+
+
+def tetrahedron_stl(size: float) -> bytes:
+    """A binary STL of a closed tetrahedron with legs of ``size`` along the axes."""
+    corners = [(0, 0, 0), (size, 0, 0), (0, size, 0), (0, 0, size)]
+    faces = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
+    data = b"\0" * 80 + struct.pack("<I", len(faces))
+    for face in faces:
+        data += struct.pack("<3f", 0, 0, 0)
+        data += b"".join(struct.pack("<3f", *corners[i]) for i in face) + b"\0\0"
+    return data

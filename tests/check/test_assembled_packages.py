@@ -11,10 +11,9 @@ ROS would not find them (SB409), not 1282 missing meshes.
 from __future__ import annotations
 
 import json
-import struct
 from pathlib import Path
 
-from tests.check.helpers import findings
+from tests.check.helpers import findings, tetrahedron_stl
 
 NO_ROS = {"ROS_PACKAGE_PATH": "", "AMENT_PREFIX_PATH": ""}
 
@@ -29,16 +28,6 @@ MODEL = """<?xml version="1.0" ?>
 """
 
 
-def _tetrahedron_stl(size: float) -> bytes:
-    corners = [(0, 0, 0), (size, 0, 0), (0, size, 0), (0, 0, size)]
-    faces = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
-    data = b"\0" * 80 + struct.pack("<I", len(faces))
-    for face in faces:
-        data += struct.pack("<3f", 0, 0, 0)
-        data += b"".join(struct.pack("<3f", *corners[i]) for i in face) + b"\0\0"
-    return data
-
-
 def _icub_models(root: Path, mesh: str) -> Path:
     repo = root / "src" / "icub-models"
     (repo / "iCub_manual").mkdir(parents=True)
@@ -46,7 +35,7 @@ def _icub_models(root: Path, mesh: str) -> Path:
         '<package format="2"><name>iCub</name><version>1.0.0</version></package>\n')
     meshes = repo / "iCub" / "meshes" / "simmechanics"
     meshes.mkdir(parents=True)
-    (meshes / "sim_root_link.stl").write_bytes(_tetrahedron_stl(0.1))
+    (meshes / "sim_root_link.stl").write_bytes(tetrahedron_stl(0.1))
     model = repo / "iCub" / "robots" / "iCubGenova09" / "model.urdf"
     model.parent.mkdir(parents=True)
     model.write_text(MODEL.format(mesh=mesh))

@@ -7,7 +7,6 @@ a property test mutates real URDFs (attributes, numbers, elements) and checks ev
 from __future__ import annotations
 
 import random
-import struct
 import warnings
 import xml.etree.ElementTree as ET
 
@@ -21,7 +20,7 @@ from servicebot_cli.check.settings import Settings
 from servicebot_cli.description.loader import RobotSource
 from servicebot_cli.description.packages import PackageResolver
 from tests.check.corpus import check_urdf_drops, erd_root, erd_urdfs
-from tests.check.helpers import codes
+from tests.check.helpers import codes, tetrahedron_stl
 from tests.conftest import REAL_URDF
 from tests.mutants import mutate
 
@@ -40,16 +39,6 @@ ROBOT = """<robot name="r">
 </robot>
 """
 BOX = '<box size="1 1 1"/>'
-
-
-def _tetrahedron_stl(size: float) -> bytes:
-    corners = [(0, 0, 0), (size, 0, 0), (0, size, 0), (0, 0, size)]
-    faces = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
-    data = b"\0" * 80 + struct.pack("<I", len(faces))
-    for face in faces:
-        data += struct.pack("<3f", 0, 0, 0)
-        data += b"".join(struct.pack("<3f", *corners[i]) for i in face) + b"\0\0"
-    return data
 
 
 CASES = [
@@ -71,7 +60,7 @@ CASES = [
 def test_bad_values_are_errors_where_urdfdom_drops_the_shape(run, tmp_path, origin, geometry,
                                                               code):
     """check_urdf exits 0 on these, but urdfdom drops the shape: the robot changes."""
-    (tmp_path / "m.stl").write_bytes(_tetrahedron_stl(0.1))
+    (tmp_path / "m.stl").write_bytes(tetrahedron_stl(0.1))
     path = tmp_path / "robot.urdf"
     path.write_text(ROBOT.format(origin=origin, geometry=geometry))
     result = run("check", path, "--format", "json", "--isolated")
@@ -83,7 +72,7 @@ def test_bad_values_are_errors_where_urdfdom_drops_the_shape(run, tmp_path, orig
 
 
 def test_a_mesh_with_huge_coordinates_is_a_size_warning(run, tmp_path):
-    (tmp_path / "m.stl").write_bytes(_tetrahedron_stl(1e30))
+    (tmp_path / "m.stl").write_bytes(tetrahedron_stl(1e30))
     path = tmp_path / "robot.urdf"
     path.write_text(ROBOT.format(origin="", geometry='<mesh filename="m.stl"/>'))
     result = run("check", path, "--format", "json", "--isolated")
