@@ -119,6 +119,27 @@ def includers(paths: list[Path]) -> dict[Path, Path]:
     return included
 
 
+def includer_nearby(path: Path) -> Path | None:
+    """A robot file of ``path``'s package that includes ``path``, or None.
+
+    The package is the nearest one at or above ``path`` (its robot files, found as
+    :func:`walk` finds them, includes too); a file in no package is looked for beside it,
+    in its own directory only, so that a file in ``/tmp`` does not walk all of it.
+    """
+    holder = holding_package(path.parent.absolute())
+    if holder is not None:
+        around = list(_robot_files(holder[1]))
+    else:
+        try:
+            around = sorted(entry for entry in path.parent.iterdir()
+                            if is_robot_file(entry) and entry.is_file())
+        except OSError:
+            return None
+    here = _location(path)
+    others = [other for other in around if _location(other) != here]
+    return includers([*others, path]).get(path)
+
+
 def _location(path: Path | str) -> str:
     return os.path.normpath(os.path.abspath(path))
 

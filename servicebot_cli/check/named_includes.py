@@ -4,8 +4,9 @@
 macro libraries and parts too. A directory walk leaves those out (:mod:`files`); named, each
 gets SB018, an info finding that says it is an include, checked through the files that
 include it, instead of the SB009/SB109 errors a check of it alone would give. Only xacro
-files are includes here, and only well-formed ones: a ``.urdf`` is a robot, and a broken
-file is still checked, so that its defect is reported.
+files are includes here, and only ones xacro can read: a ``.urdf`` is a robot, and a broken
+file (malformed, or with blank lines before its ``<?xml ...?>``) is still checked, so that
+its defect is reported.
 """
 
 from __future__ import annotations
@@ -48,9 +49,13 @@ def include_reports(sources: Sequence[tuple[RobotSource, bool]],
 
 
 def _well_formed(path: Path) -> bool:
-    """Whether ``path`` is safe, well-formed XML; else checking it reports why."""
+    """Whether ``path`` is safe, well-formed XML as xacro reads it; else checking it reports why.
+
+    Blank lines before ``<?xml ...?>`` are refused, as xacro (expat) refuses them: such an
+    include is checked, and gets the SB004 that xacro's refusal is.
+    """
     try:
-        parse_xml(path.read_bytes(), str(path))
+        parse_xml(path.read_bytes(), str(path), blanks_before_declaration=False)
     except (OSError, ServicebotError):
         return False
     return True

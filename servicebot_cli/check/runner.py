@@ -83,18 +83,25 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv,
 
 
 def _part_of_another(robot: RobotDescription, source: RobotSource) -> Issue | None:
-    """SB018 for a xacro part that hangs from a link of the robot that includes it."""
-    from servicebot_cli.check.fragments import external_parent
+    """SB018 for a xacro part that hangs from a link of the robot that includes it.
+
+    Only with evidence that it is one (:func:`fragments.part_evidence`); a robot file that
+    merely lacks its root's parent is checked, and fails with SB103.
+    """
+    from servicebot_cli.check.fragments import external_parent, part_evidence
     from servicebot_cli.description.robot import is_xacro_name
 
-    if not is_xacro_name(source.path):
+    if not is_xacro_name(source.path) or not source.path.is_file():
         return None
     parent = external_parent(robot)
     if parent is None:
         return None
-    return Issue("SB018", f"a part of another robot: every link hangs from '{parent}', which "
-                 "it does not define; checked through the files that include it, not alone",
-                 where=(robot.display, 0, 0))
+    why = part_evidence(source.path, parent)
+    if why is None:
+        return None
+    return Issue("SB018", f"a part of another robot ({why}): every link hangs from "
+                 f"'{parent}', which it does not define; checked through the files that "
+                 "include it, not alone", where=(robot.display, 0, 0))
 
 
 def _model_ahead(robot: RobotDescription, settings: Settings, env: CheckEnv) -> ModelAhead | None:

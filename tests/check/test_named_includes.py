@@ -62,3 +62,14 @@ def test_a_named_robot_xacro_not_included_is_checked(run, tmp_path):
     result = run("check", "urdf", robot, "--format", "json", "--isolated")
     assert result.exit_code == 1
     assert _by_file(result.stdout)["robot.urdf.xacro"][0] == "SB101"
+
+
+def test_a_named_include_with_blank_lines_before_its_declaration_fails_as_xacro_does(
+        run, tmp_path):
+    # xacro (expat) refuses blank lines before <?xml ...?>: no SB018 note, the SB004 error
+    library = tmp_path / "parts.xacro"
+    library.write_text(f'\n\n<?xml version="1.0"?>\n<robot {XACRO_NS}><xacro:macro name="m">'
+                       '<link name="a"/></xacro:macro></robot>\n')
+    result = run("check", "urdf", library, "--format", "json", "--isolated")
+    assert result.exit_code == 1, result.stdout
+    assert _by_file(result.stdout)["parts.xacro"] == ["SB004"]

@@ -46,3 +46,78 @@ def test_a_part_with_two_missing_parents_or_as_urdf_still_fails(run, tmp_path):
         result = run("check", "urdf", path, "--format", "json", "--isolated")
         assert result.exit_code == 1, path
         assert "SB103" in {f["code"] for f in findings(result.stdout)}
+
+
+INERTIAL = ('<inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" '
+            'ixz="0" iyz="0"/></inertial>')
+ARM = (f'<link name="base_link">{INERTIAL}</link><link name="link1">{INERTIAL}</link>'
+       '<joint name="j1" type="revolute"><parent link="base_link"/><child link="link1"/>'
+       '<axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>')
+
+
+def _assert_broken_robot(run, target) -> None:
+    result = run("check", "urdf", target, "--format", "json", "--isolated")
+    assert result.exit_code == 1, result.stdout
+    found = {f["code"] for f in findings(result.stdout)}
+    assert "SB103" in found and "SB018" not in found, found
+
+
+def test_a_robot_joined_to_a_world_it_does_not_define_fails_named_and_walked(run, tmp_path):
+    # the shape of a part (no root of its own, one missing parent) is no evidence of one:
+    # nothing includes this file, and simulate refuses it
+    robot = tmp_path / "arm" / "arm.urdf.xacro"
+    robot.parent.mkdir()
+    robot.write_text(f'<?xml version="1.0"?>\n<robot name="arm" {XACRO_NS}>\n'
+                     '<joint name="world_joint" type="fixed"><parent link="world"/>'
+                     f'<child link="base_link"/></joint>\n{ARM}\n</robot>\n')
+    _assert_broken_robot(run, robot)
+    _assert_broken_robot(run, robot.parent)
+
+
+def test_a_robot_whose_root_link_is_in_a_false_condition_fails(run, tmp_path):
+    robot = tmp_path / "robot.urdf.xacro"
+    robot.write_text(f'<robot name="r" {XACRO_NS}><xacro:arg name="with_base" default="false"/>'
+                     '<xacro:if value="$(arg with_base)"><link name="base"/></xacro:if>'
+                     f'<link name="a">{INERTIAL}</link><joint name="j" type="fixed">'
+                     '<parent link="base"/><child link="a"/></joint></robot>\n')
+    _assert_broken_robot(run, robot)
+
+
+def test_a_robot_built_by_a_macro_it_hands_its_missing_parent_fails(run, tmp_path):
+    (tmp_path / "arm.xacro").write_text(
+        f'<robot {XACRO_NS}><xacro:macro name="arm" params="parent">{ARM}'
+        '<joint name="mount" type="fixed"><parent link="${parent}"/><child link="base_link"/>'
+        '</joint></xacro:macro></robot>\n')
+    for parent in ("world", "table"):
+        robot = tmp_path / f"on_{parent}.urdf.xacro"
+        robot.write_text(f'<robot name="r" {XACRO_NS}><xacro:include filename="arm.xacro"/>'
+                         f'<xacro:arm parent="{parent}"/></robot>\n')
+        _assert_broken_robot(run, robot)
+
+
+def test_a_part_that_a_file_of_its_package_includes_is_a_part(run, tmp_path):
+    # stretch's stretch_gripper_with_puller.xacro: a named <robot> hung from link_wrist_yaw,
+    # included by the robot file of its package; named alone, or found in a walk of urdf/
+    package = tmp_path / "stretch_like"
+    (package / "urdf" / "parts").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="3"><name>stretch_like</name><version>0.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">m</maintainer>'
+        '<license>BSD</license></package>\n')
+    gripper = package / "urdf" / "parts" / "gripper.xacro"
+    gripper.write_text(f'<robot name="gripper" {XACRO_NS}><link name="finger">{INERTIAL}</link>'
+                       '<joint name="mount" type="fixed"><parent link="link_wrist_yaw"/>'
+                       '<child link="finger"/></joint></robot>\n')
+    robot = package / "urdf" / "robot.urdf.xacro"
+    robot.write_text(f'<robot name="r" {XACRO_NS}><link name="link_wrist_yaw">{INERTIAL}'
+                     '</link><xacro:include filename="$(find stretch_like)/urdf/parts/'
+                     'gripper.xacro"/></robot>\n')
+    for target in (gripper, gripper.parent):
+        result = run("check", "urdf", target, "--format", "json", "--isolated")
+        assert result.exit_code == 0, result.stdout
+        (only,) = findings(result.stdout)
+        assert only["code"] == "SB018", only
+        assert f"(included by {robot})" in only["message"]
+        assert "every link hangs from 'link_wrist_yaw'" in only["message"]
+    result = run("check", "urdf", robot, "--format", "json", "--isolated")
+    assert "SB018" not in {f["code"] for f in findings(result.stdout)}
