@@ -3,6 +3,20 @@
 Data goes to a temporary file beside the target, then ``os.replace`` puts it in place.
 An error or an interruption (Ctrl-C, SIGTERM turned into an exception) removes the
 temporary file, so nothing half-written is ever left behind.
+
+Targets that are not plain files are written in place, opened for writing as a shell's
+``>`` opens them, because renaming a file over them would replace the thing itself (as
+root, ``/dev/null`` or the ``/dev/stdout`` link would become a regular file): a device, a
+FIFO or a socket; a path under ``/dev`` or ``/proc/*/fd``, or a symbolic link whose chain
+passes through one (``--output /dev/stdout > out.txt``: the link resolves to the regular
+file ``out.txt``, which the shell holds open, and its output lands there); and a symbolic
+link to something that is not a regular file at the time (a device, a FIFO, nothing yet).
+
+A symbolic link to a regular file (through ordinary links only) is followed: the file it
+resolves to is replaced atomically, beside itself, and the link stays. ``xacro -o``,
+``cp`` and ``>`` all write through such a link into the file it names; replacing the link
+with a regular file of its own, as this module once did, left the linked file stale and
+broke the link (a report kept in a shared directory, a dotfiles-style layout).
 """
 
 from __future__ import annotations
@@ -10,6 +24,7 @@ from __future__ import annotations
 import contextlib
 import errno
 import os
+import re
 import shutil
 import signal
 import tempfile
@@ -45,12 +60,15 @@ def atomic_output(
     target = Path(path)
     if target.is_dir():
         raise OutputError(f"{target}: is a directory; give a file name to write")
-    if target.exists() and not target.is_file():
-        # A device, FIFO or socket (/dev/null, /dev/stdout, a named pipe): written in place
-        # as a shell's ``>`` would. Renaming a file over it would replace the device itself.
+    if _written_in_place(target):
+        # A device, FIFO or socket (/dev/null, /dev/stdout, a named pipe), or a link to one:
+        # written in place as a shell's ``>`` would. Renaming a file over it would replace
+        # the device, or the link, itself.
         with _in_place(target, mode, open_kwargs) as handle:
             yield handle
         return
+    if target.is_symlink():
+        target = Path(os.path.realpath(target))  # a regular file: replaced, the link kept
     if make_parents and str(target.parent):
         try:
             target.parent.mkdir(parents=True, exist_ok=True)
@@ -77,6 +95,44 @@ def atomic_output(
         raise _cannot_write(target, directory, exc) from None
     finally:
         _remove(tmp_name)
+
+
+_FD_DIR = re.compile(r"^/proc/[^/]+/(?:task/[^/]+/)?fd(?:/|$)")
+_MAX_HOPS = 40  # as the kernel's limit of links followed in one lookup
+
+
+def _written_in_place(target: Path) -> bool:
+    """Whether ``target`` is to be opened and written as it is, not replaced (module doc)."""
+    if any(_special(hop) for hop in _link_chain(target)):
+        return True
+    if target.is_symlink():
+        return not target.is_file()  # to a device, a FIFO, nothing yet (or a loop)
+    return target.exists() and not target.is_file()
+
+
+def _link_chain(target: Path) -> list[str]:
+    """``target`` and each path its symbolic links lead to, in order, absolute.
+
+    Each hop is also given with its directory resolved, so that a link reached through a
+    linked directory (``/dev/fd/1``, ``x/fds/1`` with ``fds -> /proc/self/fd``) is seen for
+    where it is.
+    """
+    hops: list[str] = []
+    current = os.path.abspath(target)
+    for _ in range(_MAX_HOPS):
+        hops += [current, os.path.join(os.path.realpath(os.path.dirname(current)),
+                                       os.path.basename(current))]
+        try:
+            link = os.readlink(current)
+        except OSError:
+            break  # not a link (or nothing there): the chain ends
+        current = os.path.normpath(os.path.join(os.path.dirname(current), link))
+    return hops
+
+
+def _special(path: str) -> bool:
+    """A path under ``/dev`` or a ``/proc/*/fd`` directory: a device or an open file's link."""
+    return path == "/dev" or path.startswith("/dev/") or _FD_DIR.match(path) is not None
 
 
 @contextlib.contextmanager
