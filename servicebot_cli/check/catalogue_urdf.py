@@ -88,7 +88,9 @@ URDF_RULES: tuple[Rule, ...] = (
     Rule("SB018", "xacro-include", N, "A xacro include: checked through its includers",
          "A xacro file that only defines macros or properties, or holds parts of a robot that "
          "another file includes, or whose links all hang from one link it does not define "
-         "(an end effector sent as a URDF fragment), is no robot alone. A directory walk "
+         "(an end effector sent as a URDF fragment) with evidence that it is a part (a file "
+         "of its package includes it, or it only calls macros it includes and the missing "
+         "link is not world, map or odom), is no robot alone. A directory walk "
          "leaves the first two out; named on the command line (`servicebot check urdf "
          "$(git ls-files '*.xacro')`), or a part found in a directory, it gets this note "
          "instead of the errors a robot without a name, links or root would get. The files "
