@@ -140,12 +140,17 @@ def chassis_joints(robot: RobotDescription, wheels: Sequence[str] = ()) -> tuple
         joint.name for joint in robot.joints
         if _as_wheel(robot, joint, world) == _BALL_CASTER}
     by_child = {joint.child: joint for joint in robot.joints}
-    side = _wheel_sides(robot, wheels)
+    by_name = {joint.name: joint for joint in robot.joints}
+    children: dict[str, list[Joint]] = {}
+    for each in robot.joints:
+        if each.parent is not None:
+            children.setdefault(each.parent, []).append(each)
+    side = _wheel_sides(by_name, wheels, world)
     for name in (*wheels, *gear):
-        joint = next((j for j in robot.joints if j.name == name), None)
+        joint = by_name.get(name)
         above = by_child.get(joint.parent) if joint is not None else None
         while above is not None and above.name not in gear:
-            if len({side[w] for w in _wheels_below(robot, above, side)}) > 1:
+            if len({side[w] for w in _wheels_below(above, side, children)}) > 1:
                 break  # it carries both sides: the base itself moves
             if above.type in _ONE_AXIS:
                 gear.add(above.name)
@@ -153,10 +158,9 @@ def chassis_joints(robot: RobotDescription, wheels: Sequence[str] = ()) -> tuple
     return tuple(j.name for j in robot.joints if j.name in gear and j.name not in wheels)
 
 
-def _wheel_sides(robot: RobotDescription, wheels: Sequence[str]) -> dict[str, str]:
+def _wheel_sides(by_name: dict[str, Joint], wheels: Sequence[str],
+                 world: dict[str, np.ndarray]) -> dict[str, str]:
     """Each drive wheel's side (its joint's child on +y of the root: left)."""
-    world = _link_transforms(robot)
-    by_name = {joint.name: joint for joint in robot.joints}
     sides = {}
     for name in wheels:
         child = by_name[name].child if name in by_name else None
@@ -165,12 +169,12 @@ def _wheel_sides(robot: RobotDescription, wheels: Sequence[str]) -> dict[str, st
     return sides
 
 
-def _wheels_below(robot: RobotDescription, joint: Joint, side: dict[str, str]) -> list[str]:
-    """The drive wheels of ``side`` in the subtree ``joint`` carries (itself included)."""
-    children: dict[str, list[Joint]] = {}
-    for each in robot.joints:
-        if each.parent is not None:
-            children.setdefault(each.parent, []).append(each)
+def _wheels_below(joint: Joint, side: dict[str, str],
+                  children: dict[str, list[Joint]]) -> list[str]:
+    """The drive wheels of ``side`` in the subtree ``joint`` carries (itself included).
+
+    ``children``: each link's child joints.
+    """
     found: list[str] = []
     stack, seen = [joint], set()
     while stack:
