@@ -57,12 +57,8 @@ class ControllersFile:
         return self.source or str(self.path)
 
 
-def find_controllers_file(robot: RobotDescription, explicit: str | None,
-                          beside: bool = True) -> Path | None:
-    """The controllers file to read (see the module docstring), None when there is none.
-
-    ``beside``: also ``controllers.yaml`` beside the description.
-    """
+def named_controllers_file(robot: RobotDescription, explicit: str | None) -> Path | None:
+    """``explicit``, else the file gazebo_ros2_control's ``<parameters>`` names, else None."""
     if explicit is not None:
         return Path(explicit)
     base = robot.path.parent
@@ -74,8 +70,13 @@ def find_controllers_file(robot: RobotDescription, explicit: str | None,
                     path = named if named.is_absolute() else base / named
                     if path.is_file():
                         return path
-    near = base / "controllers.yaml"
-    return near if beside and near.is_file() else None
+    return None
+
+
+def controllers_beside(robot: RobotDescription) -> Path | None:
+    """``controllers.yaml`` beside the description, if there is one."""
+    near = robot.path.parent / "controllers.yaml"
+    return near if near.is_file() else None
 
 
 def read_controllers_file(path: Path | None) -> ControllersFile:

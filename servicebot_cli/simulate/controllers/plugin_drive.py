@@ -39,7 +39,8 @@ from servicebot_cli.description.model_plugins import (
 from servicebot_cli.simulate.controllers.config import (
     ControllersFile,
     ControllersFileError,
-    find_controllers_file,
+    controllers_beside,
+    named_controllers_file,
     read_controllers_file,
 )
 
@@ -57,11 +58,11 @@ def controllers_for(robot: RobotDescription, explicit: str | None) -> Controller
     Raises:
         ControllersFileError: An unreadable file, or a parameter that is not a number.
     """
-    named = find_controllers_file(robot, explicit, beside=False)
+    named = named_controllers_file(robot, explicit)
     plugin = drive_plugin(robot) if named is None else None
     if plugin is not None:
         return read_drive_plugin(robot, plugin)
-    return read_controllers_file(named or find_controllers_file(robot, None))
+    return read_controllers_file(named or controllers_beside(robot))
 
 
 def drive_plugin(robot: RobotDescription) -> Plugin | None:
@@ -103,21 +104,31 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
 
 
 def _gz_limits(plugin: Plugin, where: str) -> dict[str, float]:
-    """The speed limiter's bounds: both axes' first, then each axis's own."""
+    """The speed limiter's bounds: each axis's own, else those for both axes."""
     out: dict[str, float] = {}
     for kind, linear, angular in _GZ_LIMITS:
         for bound in ("max", "min"):
-            both = _number(plugin, where, f"{bound}_{kind}")
+            both = _given(plugin, where, f"{bound}_{kind}")
             for axis, unit in (("linear", linear), ("angular", angular)):
-                own = _number(plugin, where, f"{bound}_{axis}_{kind}")
-                value = own if not math.isnan(own) else both
-                if not math.isnan(value):
+                own = _given(plugin, where, f"{bound}_{axis}_{kind}")
+                value = own if own is not None else both
+                if value is not None:
                     out[f"{bound}_{axis}_{kind}_{unit}"] = value
     return out
 
 
-def _number(plugin: Plugin, where: str, *keys: str, default: float = math.nan) -> float:
+def _number(plugin: Plugin, where: str, *keys: str, default: float) -> float:
     """The parameter under the first of ``keys`` the plugin has; ``default`` without one."""
+    value = _given(plugin, where, *keys)
+    return default if value is None else value
+
+
+def _given(plugin: Plugin, where: str, *keys: str) -> float | None:
+    """The parameter under the first of ``keys`` the plugin has, or None.
+
+    Raises:
+        ControllersFileError: It is not a finite number.
+    """
     for key in keys:
         text = param(plugin.params, key)
         if text is None or not text.strip():
@@ -130,4 +141,4 @@ def _number(plugin: Plugin, where: str, *keys: str, default: float = math.nan) -
             raise ControllersFileError(
                 f"{where}: <{key}>: expected a finite number, got {text.strip()!r}")
         return value
-    return default
+    return None
