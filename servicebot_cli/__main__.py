@@ -1,5 +1,5 @@
 """Allow ``python -m servicebot_cli``."""
 
-from servicebot_cli.cli import main
+from servicebot_cli.cli import entry
 
-main(prog_name="servicebot")
+entry()
