@@ -6,7 +6,9 @@ Gazebo Classic's ROS 2 plugins (gazebo_ros_pkgs) name relative topics in their n
 
 - ``gazebo_ros_diff_drive``: consumes ``cmd_vel``; publishes ``odom`` only with
   ``<publish_odom>true`` and ``/tf`` only with ``<publish_odom_tf>`` or ``<publish_wheel_tf>``
-  (all three default to false in ROS 2, true in ROS 1);
+  (all three default to false). The ROS 1 plugin publishes ``odom`` unless
+  ``<publishTf>false``, odom -> base on ``/tf`` unless ``<publishTf>`` or ``<publishOdomTF>``
+  is false, and the wheels on ``/tf`` with ``<publishWheelTF>true``;
 - ``gazebo_ros_planar_move``: ``cmd_vel`` in, ``odom`` and ``/tf`` out (both default true);
 - ``gazebo_ros_joint_state_publisher``: ``joint_states`` out.
 
@@ -61,27 +63,40 @@ def ros1_plugin(plugin: Plugin) -> bool:
         key in _ROS1_KEYS for key, _ in plugin.params)
 
 
-def publishes_odom_tf(plugin: Plugin) -> bool:
-    """Whether a Classic diff-drive plugin broadcasts odom -> base on /tf.
+def publishes_odometry(plugin: Plugin, default: bool = False) -> bool:
+    """Whether a Classic drive plugin publishes Odometry.
 
-    ROS 2: ``<publish_odom_tf>`` (default false); ROS 1: ``<publishOdomTF>`` (default true)
-    and ``<publishTf>`` (default true).
+    ROS 2: ``<publish_odom>`` (``default``: false for diff drive, true for planar move);
+    ROS 1: ``<publishTf>`` (default true), which gates the whole odometry publication.
+    """
+    if ros1_plugin(plugin):
+        return _flag(plugin, "publishTf", True)
+    return _flag(plugin, "publish_odom", default)
+
+
+def publishes_odom_tf(plugin: Plugin, default: bool = False) -> bool:
+    """Whether a Classic drive plugin broadcasts odom -> base on /tf.
+
+    ROS 2: ``<publish_odom_tf>`` (``default``: false for diff drive, true for planar move);
+    ROS 1: ``<publishOdomTF>`` (default true) and ``<publishTf>`` (default true).
     """
     if ros1_plugin(plugin):
         return _flag(plugin, "publishOdomTF", True) and _flag(plugin, "publishTf", True)
-    return _flag(plugin, "publish_odom_tf", False)
+    return _flag(plugin, "publish_odom_tf", default)
+
+
+def _publishes_wheel_tf(plugin: Plugin) -> bool:
+    """``<publish_wheel_tf>`` (ROS 1: ``<publishWheelTF>``, not gated by ``<publishTf>``)."""
+    return _flag(plugin, "publishWheelTF" if ros1_plugin(plugin) else "publish_wheel_tf", False)
 
 
 def _classic_drive(plugin: Plugin, odom_default: bool, tf_default: bool) -> list[Row]:
-    ros1 = ros1_plugin(plugin)
-    odom_on, tf_on = (True, True) if ros1 else (odom_default, tf_default)
     rows: list[Row] = [("in", _absolute(plugin_topic(plugin, "cmd_vel", "commandTopic")),
                         TWIST, None)]
-    if _flag(plugin, "publish_odom", odom_on) and _flag(plugin, "publishOdom", True):
+    if publishes_odometry(plugin, odom_default):
         rows.append(("out", _absolute(plugin_topic(plugin, "odom", "odometryTopic")),
                      ODOMETRY, None))
-    if (_flag(plugin, "publish_odom_tf", tf_on) or _flag(plugin, "publish_wheel_tf", False)) \
-            and _flag(plugin, "publishTf", True):
+    if publishes_odom_tf(plugin, tf_default) or _publishes_wheel_tf(plugin):
         rows.append(("out", "/tf", TF, None))
     return rows
 
