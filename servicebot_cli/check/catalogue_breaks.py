@@ -79,7 +79,10 @@ BREAKS: dict[str, str] = {
     "SB507": "ros2_control's resource manager refuses an interface exported twice",
     "SB509": "the controller manager cannot load a component without a plugin",
     "SB510": "the hardware component fails to open its port when it is activated",
-    "SB511": "ros2_control and gazebo_ros_control refuse a transmission of a missing joint",
+    "SB511": "with gazebo_ros_control in the file, its DefaultRobotHWSim does not start (no "
+             "controller runs); in <ros2_control>, ros2_control's component parser refuses the "
+             "component (the controller manager, gazebo_ros2_control and gz_ros2_control do not "
+             "start)",
     "SB601": "the controller manager refuses parameters that are not valid YAML",
     "SB602": "the controller fails to configure: the joint's interfaces do not exist",
     "SB603": "diff_drive_controller accepts it and drives at the wrong speed and odometry",

@@ -49,9 +49,18 @@ ROS_RULES = (
          "network port number, and a baud rate a standard one (9600, 115200, ...) or, from "
          "1 Mbaud, any rate a USB adapter takes (Dynamixel buses run at 4.5 or 6.25 Mbaud).",
          "Write a device path and a standard baud rate."),
-    Rule("SB511", "transmission-unknown-joint", E,
+    Rule("SB511", "transmission-unknown-joint", W,
          "<transmission> names a joint that does not exist",
-         "The transmission loader fails or silently skips it.", "Use the suggested name."),
+         "An error where a reader of transmissions in the file refuses it: ROS 1's "
+         "gazebo_ros_control plugin (libgazebo_ros_control.so, default robotSimType) parses "
+         "top-level <transmission>s, and its DefaultRobotHWSim fails to start on a "
+         "single-joint transmission with a <hardwareInterface> whose joint is not in the "
+         "model; ros2_control (and gazebo_ros2_control, gz_ros2_control) refuses a "
+         "<ros2_control> component whose nested <transmission> names a joint that is not one "
+         "of the component's <joint>s. A warning otherwise: ros2_control, urdfdom, KDL and "
+         "sdformat ignore top-level <transmission>s, so motor or actuator transmissions meant "
+         "for a robot's own hardware interface (NASA Valkyrie's) break nothing they read.",
+         "Use the suggested name, or remove the transmission."),
     # -- controller configuration ----------------------------------------------------------------
     Rule("SB601", "controllers-yaml", E, "The controllers YAML cannot be read",
          "Not YAML, or not the shape of a ros2_control parameters file "

@@ -1,4 +1,4 @@
-"""ros2_control and transmission rules (SB504-SB511)."""
+"""ros2_control rules (SB504-SB510); transmissions (SB511) are in :mod:`transmissions`."""
 
 from __future__ import annotations
 
@@ -30,7 +30,7 @@ _PORT_RE = re.compile(r"(/dev/\S+|COM\d+|(socket|rfc2217|loop|spy|hwgrep)://\S*)
 
 
 def check(robot: RobotDescription) -> Iterator[Issue]:
-    """Every ros2_control and transmission issue of ``robot``."""
+    """Every ros2_control issue of ``robot``."""
     joints = {j.name: j for j in robot.joints}
     owner: dict[tuple[str, str, str], str] = {}
     for block in robot.ros2_control:
@@ -42,13 +42,6 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
         for item in block.joints:
             yield from _joint(item, joints, block)
             yield from _twice(item, block, owner)
-    names = list(joints)
-    for transmission in robot.transmissions:
-        for name in transmission.joints:
-            if name not in joints:
-                hint = str(NameNotFound.for_name(name, names)).split("; ", 1)[-1]
-                yield Issue("SB511", f"transmission '{transmission.name}' names joint '{name}', "
-                            f"which does not exist; {hint}", transmission.element)
 
 
 def _twice(item: ControlJoint, block: Ros2Control,

@@ -142,7 +142,7 @@ def _unreadable(exc: DescriptionError, source: RobotSource) -> bool:
 
 def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Iterator[Issue]:
     """Every rule family but the model, skipping families with no selected rule."""
-    from servicebot_cli.check import gazebo, geometry, inertia, joints, ros2_control
+    from servicebot_cli.check import gazebo, geometry, inertia, joints, ros2_control, transmissions
 
     for warning in robot.warnings:
         yield Issue("SB017", warning, where=(robot.display, 0, 0))
@@ -157,6 +157,7 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
         ("SB2", lambda: joints.check(robot)), ("SB3", lambda: inertia.check(robot, env)),
         ("SB4", lambda: geometry.check(robot, env)), ("SB50", lambda: gazebo.check(robot)),
         ("SB5", lambda: ros2_control.check(robot)),
+        ("SB511", lambda: transmissions.check(robot)),
     ]
     for prefix, family in families:
         if any(wanted(code) for code in RULES if code.startswith(prefix)):
