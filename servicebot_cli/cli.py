@@ -12,7 +12,6 @@ import errno
 import importlib
 import os
 import sys
-import traceback
 from typing import Any, NoReturn
 
 import click
@@ -132,6 +131,8 @@ def _internal(exc: Exception) -> str:
 def _fail(ctx: click.Context, message: str, code: int, debug: bool) -> NoReturn:
     """One ``Error:`` line (none for an empty message), the traceback with --debug, the code."""
     if debug:
+        import traceback  # only here: about 2 ms of every command's start otherwise
+
         traceback.print_exc(file=sys.stderr)
     if message.strip():
         click.echo(f"Error: {' '.join(message.split())}", err=True)

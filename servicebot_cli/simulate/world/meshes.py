@@ -14,7 +14,6 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.common.library_logs import captured
 from servicebot_cli.kinematics.transforms import rpy_matrix
 from servicebot_cli.simulate.scenario.definition import Scenario
 from servicebot_cli.simulate.scenario.located import Located
@@ -39,6 +38,8 @@ def load_meshes(scenario: Scenario, base_dir: Path) -> list[Mesh]:
     if not scenario.world.meshes:
         return []
     import trimesh
+
+    from servicebot_cli.common.library_logs import captured  # logging: only with meshes
 
     located = scenario.source or Located({}, {}, scenario.name)
     meshes: list[Mesh] = []
@@ -111,6 +112,8 @@ def _load_triangles(path: Path) -> tuple[FloatArray, IntArray]:
 
 def _with_trimesh(path: Path) -> tuple[FloatArray, IntArray]:
     import trimesh
+
+    from servicebot_cli.common.library_logs import captured  # logging: only with meshes
 
     try:
         with captured():  # texture chatter: only the geometry matters here
