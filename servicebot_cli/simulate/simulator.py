@@ -186,7 +186,8 @@ class _Run:
         self.transforms = TransformMemo(body.shape)  # the parts at a piece's configurations
         arm_q0 = check_scenario(body, scenario, solids, meshes, self.tester)
         geometry, ctrl, start = body.geometry, scenario.controller, scenario.initial_pose
-        self.planner = WheelPlanner(scenario.cmd_vel, ctrl, geometry, scenario.duration_s)
+        self.planner = WheelPlanner(scenario.cmd_vel, ctrl, geometry, scenario.duration_s,
+                                    scenario.speed_limiter)
         self.dt_s, self.ticks = self.planner.dt_s, self.planner.ticks
         self.arm = _arm_motion(body, scenario, arm_q0, self.dt_s)
         self.motion = blocking.BlockedMotion((start.x_m, start.y_m, start.yaw_rad), self.dt_s,

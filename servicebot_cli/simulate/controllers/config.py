@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING, Any
 
 from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.description.ros_parameters import controller_types, node_parameters
+from servicebot_cli.simulate.controllers.limiter import DIFF_DRIVE_CONTROLLER
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -50,6 +51,8 @@ class ControllersFile:
     without ``<publish_odom>true``)."""
     odom_tf: bool = True
     """Whether odom -> base is broadcast on /tf (diff_drive_controller's ``enable_odom_tf``)."""
+    speed_limiter: str = DIFF_DRIVE_CONTROLLER
+    """Whose speed limiter applies the limits: ``diff_drive_controller`` or ``gz-math``."""
 
     @property
     def label(self) -> str:

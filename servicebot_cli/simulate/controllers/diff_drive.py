@@ -10,6 +10,7 @@ and the wheel speeds are saturated at the URDF's velocity limit: both sides scal
 Commands are piecewise constant, so the sequential part (rate limiting) only steps tick by
 tick while a value is ramping; constant stretches are filled in one numpy operation. A run is
 planned a stretch of ticks at a time (:class:`WheelPlanner`); the limiter's state carries over.
+A base that gz-sim's DiffDrive system drives runs gz-math's limiter instead (:mod:`.limiter`).
 """
 
 from __future__ import annotations
@@ -22,7 +23,11 @@ import numpy.typing as npt
 
 from servicebot_cli.kinematics import diff_drive
 from servicebot_cli.kinematics.drive_geometry import DriveGeometry
-from servicebot_cli.simulate.controllers.limiter import AxisLimits, Limiter
+from servicebot_cli.simulate.controllers.limiter import (
+    DIFF_DRIVE_CONTROLLER,
+    AxisLimits,
+    Limiter,
+)
 from servicebot_cli.simulate.scenario.definition import CmdVel, Controller
 
 FloatArray = npt.NDArray[np.float64]
@@ -78,17 +83,18 @@ class WheelPlanner:
     """Wheel speeds of a run of ``duration_s``, planned a stretch of ticks at a time."""
 
     def __init__(self, segments: Sequence[CmdVel], controller: Controller,
-                 geometry: DriveGeometry, duration_s: float) -> None:
+                 geometry: DriveGeometry, duration_s: float,
+                 limiter: str = DIFF_DRIVE_CONTROLLER) -> None:
         c = controller
         self.segments, self.controller, self.geometry = segments, controller, geometry
         self.dt_s = 1.0 / c.update_rate_hz
         self.ticks = tick_count(controller, duration_s)
-        self.linear = Limiter(AxisLimits.mirrored(
-            c.min_linear_velocity_m_s, c.max_linear_velocity_m_s,
+        self.linear = Limiter(AxisLimits.of(
+            limiter, c.min_linear_velocity_m_s, c.max_linear_velocity_m_s,
             c.min_linear_acceleration_m_s2, c.max_linear_acceleration_m_s2,
             c.min_linear_jerk_m_s3, c.max_linear_jerk_m_s3), self.dt_s)
-        self.angular = Limiter(AxisLimits.mirrored(
-            c.min_angular_velocity_rad_s, c.max_angular_velocity_rad_s,
+        self.angular = Limiter(AxisLimits.of(
+            limiter, c.min_angular_velocity_rad_s, c.max_angular_velocity_rad_s,
             c.min_angular_acceleration_rad_s2, c.max_angular_acceleration_rad_s2,
             c.min_angular_jerk_rad_s3, c.max_angular_jerk_rad_s3), self.dt_s)
 

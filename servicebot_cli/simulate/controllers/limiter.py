@@ -9,7 +9,10 @@ sent before, :math:`v_0` and :math:`v_1` (already limited), in this order:
    v &\leftarrow v_0 + \mathrm{clamp}(v - v_0, a_{min} \Delta t, a_{max} \Delta t) \\
    v &\leftarrow \mathrm{clamp}(v, v_{min}, v_{max})
 
-(ros2_controllers' ``SpeedLimiter::limit``; a limit that is off is infinite). Because the
+(ros2_controllers' ``SpeedLimiter::limit``; a limit that is off is infinite). gz-sim's DiffDrive
+system runs gz-math's ``SpeedLimiter`` instead (gz-math ``src/SpeedLimiter.cc``): the same three
+clamps, but the jerk bound is :math:`j \Delta t^2` (no factor 2) and an unset minimum stays
+:math:`-\infty` (:meth:`AxisLimits.gz`). Because the
 ramp starts from the last *limited* command, a command far above the velocity limit stops
 as soon as the limit allows, instead of ramping down from the unlimited value.
 While the command and the output hold still, whole stretches are filled at once.
@@ -25,6 +28,8 @@ import numpy as np
 import numpy.typing as npt
 
 FloatArray = npt.NDArray[np.float64]
+DIFF_DRIVE_CONTROLLER, GZ_MATH = "diff_drive_controller", "gz-math"
+"""Whose speed limiter a base runs: ros2_controllers' or gz-math's (gz-sim's DiffDrive)."""
 
 
 @dataclass(frozen=True)
@@ -37,6 +42,8 @@ class AxisLimits:
     max_acceleration: float = math.inf
     min_jerk: float = -math.inf
     max_jerk: float = math.inf
+    jerk_dt2: float = 2.0
+    r"""The jerk bounds' factor of :math:`\Delta t^2`: 2 in ros2_controllers, 1 in gz-math."""
 
     @classmethod
     def mirrored(cls, min_velocity: float, max_velocity: float, min_acceleration: float,
@@ -49,13 +56,30 @@ class AxisLimits:
                    low(min_acceleration, max_acceleration), max_acceleration,
                    low(min_jerk, max_jerk), max_jerk)
 
+    @classmethod
+    def gz(cls, min_velocity: float, max_velocity: float, min_acceleration: float,
+           max_acceleration: float, min_jerk: float, max_jerk: float) -> AxisLimits:
+        """gz-math's limits: an unset minimum stays -inf, whatever the maximum.
+
+        gz-math's ``SpeedLimiter`` starts every bound at +-infinity and gz-sim's
+        ``DiffDrive::Configure`` only calls ``SetMin*`` for a ``<min_*>`` tag it finds.
+        """
+        return cls(min_velocity, max_velocity, min_acceleration, max_acceleration,
+                   min_jerk, max_jerk, jerk_dt2=1.0)
+
+    @classmethod
+    def of(cls, limiter: str, *bounds: float) -> AxisLimits:
+        """``bounds`` (min, max of velocity, acceleration, jerk) as ``limiter`` reads them."""
+        min_v, max_v, min_a, max_a, min_j, max_j = bounds
+        make = cls.gz if limiter == GZ_MATH else cls.mirrored
+        return make(min_v, max_v, min_a, max_a, min_j, max_j)
+
     def step(self, v: float, v0: float, v1: float, dt_s: float) -> float:
         """One tick of the limiter: the command ``v`` after ``v0`` and ``v1`` were sent."""
         if math.isfinite(self.min_jerk) or math.isfinite(self.max_jerk):
             dv0 = v0 - v1
-            two_dt2 = 2.0 * dt_s * dt_s
-            v = v0 + dv0 + min(max(v - v0 - dv0, self.min_jerk * two_dt2),
-                               self.max_jerk * two_dt2)
+            dt2 = self.jerk_dt2 * dt_s * dt_s
+            v = v0 + dv0 + min(max(v - v0 - dv0, self.min_jerk * dt2), self.max_jerk * dt2)
         v = v0 + min(max(v - v0, self.min_acceleration * dt_s), self.max_acceleration * dt_s)
         return min(max(v, self.min_velocity), self.max_velocity)
 

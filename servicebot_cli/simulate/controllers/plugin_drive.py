@@ -16,7 +16,8 @@ rate, with its limits and covariances:
   physics step and publishes odometry at ``<odom_publish_frequency>`` (default 50 Hz); its
   speed limiter takes ``<max_velocity>``, ``<max_acceleration>`` and ``<max_jerk>`` (and their
   ``min_``) for both axes, overridden per axis by ``<max_linear_velocity>``,
-  ``<max_angular_acceleration>``, and so on.
+  ``<max_angular_acceleration>``, and so on; a minimum it is not given stays unbounded
+  (gz-math's ``SpeedLimiter``, not diff_drive_controller's mirror).
 
 Neither plugin times a command out: the last one holds until the next. The odometry topic
 is the one ``inspect`` lists for the plugin (its ROS namespace and
@@ -43,6 +44,7 @@ from servicebot_cli.simulate.controllers.config import (
     named_controllers_file,
     read_controllers_file,
 )
+from servicebot_cli.simulate.controllers.limiter import DIFF_DRIVE_CONTROLLER, GZ_MATH
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -100,7 +102,8 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
         topic = topic.replace("/MODEL/", f"/{robot.name}/")
     return ControllersFile(None, values, None, source=label, odom_topic=topic,
                            publishes_odometry=topic is not None,
-                           odom_tf=publishes_odom_tf(plugin) if classic else True)
+                           odom_tf=publishes_odom_tf(plugin) if classic else True,
+                           speed_limiter=DIFF_DRIVE_CONTROLLER if classic else GZ_MATH)
 
 
 def _gz_limits(plugin: Plugin, where: str) -> dict[str, float]:

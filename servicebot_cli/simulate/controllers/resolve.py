@@ -2,7 +2,8 @@
 
 Each later source overrides the earlier ones field by field, and every field remembers where
 its value came from, for the summary. As diff_drive_controller does, a minimum limit left
-unset mirrors its maximum (``min_acceleration = -max_acceleration``); a maximum the scenario
+unset mirrors its maximum (``min_acceleration = -max_acceleration``), but not under gz-sim's
+DiffDrive system, whose gz-math limiter leaves it unbounded; a maximum the scenario
 or the command line sets replaces the file's pair of limits. Odometry and joint states are
 published at most at the control rate (a controllers file's ``update_rate`` of 30 Hz with
 the default 50 Hz streams).
@@ -14,6 +15,7 @@ import dataclasses
 import math
 
 from servicebot_cli.simulate.controllers.config import ControllersFile
+from servicebot_cli.simulate.controllers.limiter import GZ_MATH
 from servicebot_cli.simulate.scenario.definition import Controller, Scenario
 
 DEFAULT = "default"
@@ -39,7 +41,7 @@ def resolve(scenario: Scenario, file: ControllersFile) -> Scenario:
         else:
             origin[name] = DEFAULT
     mirrored = {}
-    for name in origin:
+    for name in origin if file.speed_limiter != GZ_MATH else ():
         if name.startswith("min_") and origin[name] == DEFAULT:
             high = getattr(controller, "max_" + name[4:])
             if math.isfinite(high):
@@ -54,4 +56,5 @@ def resolve(scenario: Scenario, file: ControllersFile) -> Scenario:
     rates = dataclasses.replace(
         scenario.rates, joint_states_hz=min(scenario.rates.joint_states_hz, control_hz))
     return dataclasses.replace(scenario, controller=controller, rates=rates,
-                               controller_from=tuple(origin.items()))
+                               controller_from=tuple(origin.items()),
+                               speed_limiter=file.speed_limiter)

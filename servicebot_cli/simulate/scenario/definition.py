@@ -188,6 +188,8 @@ class Scenario:
     """The controller fields the command line sets (they override the scenario)."""
     controller_from: tuple[tuple[str, str], ...] = ()
     """Each controller field and where its value came from, once resolved."""
+    speed_limiter: str = "diff_drive_controller"
+    """Whose speed limiter the base runs (``gz-math`` under gz-sim's DiffDrive), once resolved."""
 
 
 def load_scenario(path: str | FsPath | None) -> Scenario:
