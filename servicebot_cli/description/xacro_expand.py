@@ -31,6 +31,7 @@ from servicebot_cli.description.install_layout import installed_source
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
 from servicebot_cli.description.sources import SourceRef
+from servicebot_cli.description.xacro_calls import bare_macro_calls
 from servicebot_cli.description.xacro_limits import (
     GUARDS,
     ExpansionTooLarge,
@@ -91,13 +92,15 @@ def expand(
             raise
         except Exception as exc:  # xacro raises bare Python errors from expressions, too
             raise tracer.error(exc, xacro.filestack) from None
+    bare = bare_macro_calls(doc, tracer.macros, tracer.ref_of)
     origins = tracer.take_origins(doc)
     _add_banner(doc, Path(display).name, given)
     return Expansion(
         xml_text=doc.toprettyxml(indent="  "),
         origins=tuple(origins),
         files=tuple(tracer.files),
-        warnings=_warning_lines(captured.getvalue()) + _unread_args(display, given, tracer),
+        warnings=(_warning_lines(captured.getvalue()) + bare
+                  + _unread_args(display, given, tracer)),
     )
 
 
@@ -139,6 +142,7 @@ class _Tracer:
         self.failed_at: int | None = None
         self.files: list[str] = []
         self.known_args: set[str] = set()
+        self.macros: dict[str, SourceRef] = {}  # where each macro is defined, by name
 
     def record(self, node: xml.dom.minidom.Element, file: str, line: int, column: int) -> None:
         self.refs.append(SourceRef(file, line, column))
@@ -148,8 +152,15 @@ class _Tracer:
             self.keep.append(node)
             if node.tagName == "xacro:arg" and node.getAttribute("name"):
                 self.known_args.add(node.getAttribute("name"))
+            elif node.tagName == "xacro:macro" and node.getAttribute("name"):
+                self.macros.setdefault(node.getAttribute("name"), self.refs[index])
         else:
             node.setAttribute(_SRC_ATTR, str(index))
+
+    def ref_of(self, node: object) -> SourceRef | None:
+        """Where ``node`` was written, if it was read from a file."""
+        index = self.index_of(node)
+        return None if index is None else self.refs[index]
 
     def index_of(self, node: object) -> int | None:
         if isinstance(node, xml.dom.minidom.Element):

@@ -1,0 +1,47 @@
+"""Macro calls written without ``xacro:``, which xacro leaves in the URDF as they are.
+
+xacro expands ``<xacro:wheel .../>``. ROS 1 Melodic's xacro also took a bare ``<wheel .../>``
+(with a deprecation warning); Noetic's and ROS 2's leave it untouched, and every URDF reader
+skips an element it does not know: the wheel is silently missing. Descriptions written for
+Melodic (Robotnik's rbkairos) still do this.
+"""
+
+from __future__ import annotations
+
+import xml.dom.minidom
+from collections.abc import Callable, Mapping
+
+from servicebot_cli.description.sources import SourceRef
+
+URDF_TOP_LEVEL = frozenset({"link", "joint", "material", "transmission", "gazebo",
+                            "ros2_control"})
+"""Elements a robot's readers know at the top: a macro of that name is not called by them."""
+
+
+def bare_macro_calls(doc: xml.dom.minidom.Document, macros: Mapping[str, SourceRef],
+                     origin: Callable[[xml.dom.minidom.Element], SourceRef | None]
+                     ) -> tuple[str, ...]:
+    """A warning per element under ``<robot>`` named like one of ``macros`` without ``xacro:``.
+
+    Args:
+        doc: The expanded document.
+        macros: Where each macro the files define is defined, by name.
+        origin: Where an element of ``doc`` was written, when known.
+    """
+    warnings: list[str] = []
+    robot = doc.documentElement
+    for node in robot.childNodes if robot is not None else ():
+        if not isinstance(node, xml.dom.minidom.Element):
+            continue
+        name = node.tagName
+        defined = macros.get(name)
+        if defined is None or name in URDF_TOP_LEVEL:
+            continue
+        written = origin(node)
+        where = written.location() if written is not None else defined.file
+        warnings.append(
+            f"{where}: <{name}> is not a macro call: xacro expands <xacro:{name}> (macro "
+            f"'{name}' of {defined.location()}), so it leaves <{name}> in the URDF, where every "
+            f"reader skips it (only ROS 1 Melodic's xacro took the bare name); write "
+            f"<xacro:{name} .../>")
+    return tuple(warnings)
