@@ -22,6 +22,11 @@ gz-sim systems publish gz-transport topics, which ros_gz_bridge shows under the 
 
 MODEL is the name the robot is spawned with and WORLD the world's, neither of which the
 description knows.
+
+Their odometry's frames (:func:`odometry_frames`) are ``<odometry_frame>`` and
+``<robot_base_frame>`` (ROS 1: ``<odometryFrame>``, ``<robotBaseFrame>``), by default ``odom``
+and ``base_footprint``; gz-sim's DiffDrive's ``<frame_id>`` and ``<child_frame_id>``, by
+default ``MODEL/odom`` and ``MODEL/`` its canonical link, which ros_gz_bridge keeps.
 """
 
 from __future__ import annotations
@@ -99,6 +104,27 @@ def _classic_drive(plugin: Plugin, odom_default: bool, tf_default: bool) -> list
     if publishes_odom_tf(plugin, tf_default) or _publishes_wheel_tf(plugin):
         rows.append(("out", "/tf", TF, None))
     return rows
+
+
+def odometry_frames(plugin: Plugin, model: str, root_link: str) -> tuple[str, str]:
+    """The frame and child frame of a drive plugin's odometry, and of its odom -> base tf.
+
+    ``model`` is the name the robot is spawned with and ``root_link`` its first link (gz-sim's
+    canonical link). gazebo_ros_pkgs' ROS 2 plugins use their tags as written; the ROS 1 ones
+    pass them through ``tf::resolve`` with no ``tf_prefix``, which drops a leading ``/``.
+    """
+    if diff_drive_kind(plugin) == "gz":
+        return (_text(plugin, "frame_id") or f"{model}/odom",
+                _text(plugin, "child_frame_id") or f"{model}/{root_link}")
+    if ros1_plugin(plugin):
+        return ((_text(plugin, "odometryFrame") or "odom").lstrip("/"),
+                (_text(plugin, "robotBaseFrame") or "base_footprint").lstrip("/"))
+    return (_text(plugin, "odometry_frame") or "odom",
+            _text(plugin, "robot_base_frame") or "base_footprint")
+
+
+def _text(plugin: Plugin, key: str) -> str:
+    return (param(plugin.params, key) or "").strip()
 
 
 def _diff_drive(plugin: Plugin) -> list[Row]:

@@ -228,7 +228,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
     controllers_file = controllers_for(robot, controllers)
     scenario = resolve(scenario, controllers_file)
     from servicebot_cli.simulate import simulator
-    from servicebot_cli.simulate.bag.ros_messages import odom_topic, publishers
+    from servicebot_cli.simulate.bag.ros_messages import odom_frames, odom_topic, publishers
     from servicebot_cli.simulate.body import sim_robot
     from servicebot_cli.simulate.controllers.diff_drive import tick_count
     from servicebot_cli.simulate.files.progress import Progress
@@ -255,7 +255,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
         summary, last, writers = _write_pieces(
             pieces,
             outputs, publishers(body, scenario.camera, odom_topic(controllers_file),
-                                controllers_file.odom_tf),
+                                controllers_file.odom_tf, odom_frames(controllers_file, body)),
             stack, bar.advance if bar else None, live)
     track = None
     if live:

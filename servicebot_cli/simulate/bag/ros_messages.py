@@ -4,7 +4,8 @@ Topics follow the robot's documentation: the sensors' topics as their Gazebo plu
 them (``scan``, ``imu/data``, ``pi_camera/camera_info``; with images ``pi_camera/image_raw``
 (rgb8) and, with depth, ``pi_camera/depth/image_raw`` (32FC1), as gazebo_ros_camera names
 them), ``/CONTROLLER/odom`` (the controllers file's diff drive; ``/diff_controller/odom``
-without one) and ``/tf`` (odom -> base) as diff_drive_controller publishes them,
+without one) and ``/tf`` (odom -> base) as diff_drive_controller publishes them, in its
+``odom_frame_id`` and ``base_frame_id`` (or a Gazebo drive plugin's frames),
 ``/joint_states`` as joint_state_broadcaster, ``/tf`` for movable joints, ``/tf_static`` for
 fixed ones and ``/robot_description`` (the URDF, once) as robot_state_publisher, and
 ``/clock`` at every control tick as gazebo_ros publishes simulated time. Header stamps are
@@ -15,6 +16,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 import numpy.typing as npt
@@ -80,12 +82,19 @@ def odom_topic(controllers: ControllersFile) -> str | None:
     return f"/{controllers.name}/odom" if controllers.name else ODOM_TOPIC
 
 
+def odom_frames(controllers: ControllersFile, body: SimRobot) -> tuple[str, str]:
+    """The frames of the odometry and of odom -> base: the controller's, else odom and root."""
+    return controllers.odom_frame or ODOM_FRAME, controllers.base_frame or body.root_link
+
+
 def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
-               odom_topic: str | None = ODOM_TOPIC, odom_tf: bool = True) -> list[Publisher]:
+               odom_topic: str | None = ODOM_TOPIC, odom_tf: bool = True,
+               frames: tuple[str, str] | None = None) -> list[Publisher]:
     """Every publisher of a run of ``body``: latched topics and the clock first.
 
     Camera images only when ``images`` are on; odometry on ``odom_topic`` (the diff-drive
-    controller's ``~/odom``; None: none) and odom -> base on /tf when ``odom_tf``. Messages
+    controller's ``~/odom``; None: none) and odom -> base on /tf when ``odom_tf``, both in
+    ``frames`` (odometry frame, base frame; None: ``odom`` and the root link). Messages
     with equal stamps are in this order in a bag.
     """
     out = [Publisher(DESCRIPTION_TOPIC, "std_msgs/msg/String", qos.ROBOT_DESCRIPTION, _once,
@@ -94,10 +103,10 @@ def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
            Publisher(CLOCK_TOPIC, "rosgraph_msgs/msg/Clock", qos.CLOCK, _tick_times, _clock)]
     if odom_topic is not None:
         out.append(Publisher(odom_topic, "nav_msgs/msg/Odometry", qos.SYSTEM_DEFAULTS,
-                             lambda r: r.odometry.times_s, _odometry))
+                             lambda r: r.odometry.times_s, partial(_odometry, frames=frames)))
     if odom_tf:
         out.append(Publisher(TF_TOPIC, TF_TYPE, qos.SYSTEM_DEFAULTS,
-                             lambda r: r.odometry.times_s, tf_base))
+                             lambda r: r.odometry.times_s, partial(tf_base, frames=frames)))
     out += [Publisher(TF_TOPIC, TF_TYPE, qos.DYNAMIC_TF, lambda r: r.joints.times_s,
                       JointTransforms()),
             Publisher(JOINT_STATES_TOPIC, "sensor_msgs/msg/JointState", qos.SYSTEM_DEFAULTS,
@@ -208,11 +217,12 @@ def _imu(result: SimResult) -> ByteRows:
         "linear_acceleration_covariance": np.diag(imu.linear_acceleration_variance).ravel()})
 
 
-def _odometry(result: SimResult) -> ByteRows:
+def _odometry(result: SimResult, frames: tuple[str, str] | None = None) -> ByteRows:
     odom = result.odometry
+    parent, child = frames or (ODOM_FRAME, result.body.root_link)
     layout = cdr.Layout()
-    layout.header(ODOM_FRAME)
-    layout.string(result.body.root_link)
+    layout.header(parent)
+    layout.string(child)
     for name, count in (("position", 3), ("orientation", 4), ("pose_covariance", 36),
                         ("linear", 3), ("angular", 3), ("twist_covariance", 36)):
         layout.field(name, "<f8", count)

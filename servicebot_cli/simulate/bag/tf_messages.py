@@ -57,11 +57,16 @@ def tf_messages(frames: list[tuple[str, str]], times: FloatArray,
     return cdr.rows(records)
 
 
-def tf_base(result: SimResult) -> ByteRows:
-    """The base in ``odom``, as the drive controller publishes it with its odometry."""
+def tf_base(result: SimResult, frames: tuple[str, str] | None = None) -> ByteRows:
+    """The base in ``odom``, as the drive controller publishes it with its odometry.
+
+    ``frames`` are the controller's odometry frame and base frame; None: ``odom`` and the
+    root link.
+    """
     odom = result.odometry
     zeros = np.zeros_like(odom.x_m)
-    return tf_messages([(ODOM_FRAME, result.body.root_link)], odom.times_s,
+    parent, child = frames or (ODOM_FRAME, result.body.root_link)
+    return tf_messages([(parent, child)], odom.times_s,
                         [np.column_stack((odom.x_m, odom.y_m, zeros))],
                         [rotations.yaw(odom.yaw_rad)])
 

@@ -53,6 +53,10 @@ class ControllersFile:
     """Whether odom -> base is broadcast on /tf (diff_drive_controller's ``enable_odom_tf``)."""
     speed_limiter: str = DIFF_DRIVE_CONTROLLER
     """Whose speed limiter applies the limits: ``diff_drive_controller`` or ``gz-math``."""
+    odom_frame: str | None = None
+    """The odometry's ``header.frame_id`` and the odom tf's parent; None: ``odom``."""
+    base_frame: str | None = None
+    """The odometry's ``child_frame_id`` and the odom tf's child; None: the root link."""
 
     @property
     def label(self) -> str:
@@ -119,7 +123,30 @@ def read_controllers_file(path: Path | None) -> ControllersFile:
             if not isinstance(diagonal, list) or len(diagonal) != 6:
                 raise ControllersFileError(f"{path}: {name}.{key}: expected 6 numbers")
             values[key] = tuple(_number(path, key, v) for v in diagonal)
-    return ControllersFile(path, values, name, odom_tf=params.get("enable_odom_tf") is not False)
+    odom_frame, base_frame = _frames(path, params) if name else (None, None)
+    return ControllersFile(path, values, name, odom_tf=params.get("enable_odom_tf") is not False,
+                           odom_frame=odom_frame, base_frame=base_frame)
+
+
+def _frames(path: Path, params: Mapping[str, Any]) -> tuple[str, str]:
+    """``odom_frame_id`` (default ``odom``) and ``base_frame_id`` (``base_link``), prefixed.
+
+    diff_drive_controller puts ``tf_frame_prefix`` before both (``~`` is the controller's
+    namespace, taken as the root; a trailing ``/`` added, a leading one dropped), unless
+    ``tf_frame_prefix_enable`` is false; an empty prefix is the namespace's, none at the root.
+    """
+    frames = []
+    for key, default in (("odom_frame_id", "odom"), ("base_frame_id", "base_link")):
+        value = params.get(key, default)
+        if not isinstance(value, str):
+            raise ControllersFileError(f"{path}: {key}: expected a frame name, got {value!r}")
+        frames.append(value)
+    prefix = params.get("tf_frame_prefix", "")
+    if params.get("tf_frame_prefix_enable") is not False and isinstance(prefix, str) and prefix:
+        prefix = prefix.replace("~", "/", 1)
+        prefix = (prefix if prefix.endswith("/") else prefix + "/").removeprefix("/")
+        frames = [prefix + frame for frame in frames]
+    return frames[0], frames[1]
 
 
 def _limits(path: Path, params: Mapping[str, Any], prefix: str, axis: str,

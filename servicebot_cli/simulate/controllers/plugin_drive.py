@@ -35,6 +35,7 @@ from servicebot_cli.description.model_plugins import (
     ODOMETRY,
     diff_drive_kind,
     model_plugin_rows,
+    odometry_frames,
     publishes_odom_tf,
 )
 from servicebot_cli.simulate.controllers.config import (
@@ -100,7 +101,9 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
                   if direction == "out" and message == ODOMETRY), None)
     if topic is not None:
         topic = topic.replace("/MODEL/", f"/{robot.name}/")
+    odom_frame, base_frame = odometry_frames(plugin, robot.name, robot.root_link or "base_link")
     return ControllersFile(None, values, None, source=label, odom_topic=topic,
+                           odom_frame=odom_frame, base_frame=base_frame,
                            publishes_odometry=topic is not None,
                            odom_tf=publishes_odom_tf(plugin) if classic else True,
                            speed_limiter=DIFF_DRIVE_CONTROLLER if classic else GZ_MATH)
