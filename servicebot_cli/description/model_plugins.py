@@ -1,7 +1,8 @@
 """Topics of model-level Gazebo plugins that drive the base or publish joint states.
 
 Gazebo Classic's ROS 2 plugins (gazebo_ros_pkgs) name relative topics in their node's
-``<ros><namespace>``, renamed by ``<ros><remapping>``; their ROS 1 ancestors use
+``<ros><namespace>``, renamed by ``<ros><remapping>`` and ``<ros><argument>`` rules
+(:mod:`.ros_names`); their ROS 1 ancestors use
 ``<commandTopic>``, ``<odometryTopic>``, ``<topicName>`` and ``<robotNamespace>``:
 
 - ``gazebo_ros_diff_drive``: consumes ``cmd_vel``; publishes ``odom`` only with

@@ -21,7 +21,8 @@ import re
 from dataclasses import dataclass
 
 from servicebot_cli.description.elements import parse_float
-from servicebot_cli.description.extensions import Params, Plugin, Sensor, param, params_all
+from servicebot_cli.description.extensions import Params, Plugin, Sensor, param
+from servicebot_cli.description.ros_names import PluginNode
 
 LIDAR_TYPES = ("ray", "gpu_ray", "lidar", "gpu_lidar")
 CAMERA_TYPES = ("camera", "depth", "depth_camera", "rgbd_camera", "wideanglecamera")
@@ -159,25 +160,25 @@ def topic_origin(sensor: Sensor) -> str:
 def plugin_topic(plugin: Plugin, default: str, ros1: str = "topicName", within: str = "") -> str:
     """A Gazebo ROS plugin topic: remapped, then put in the plugin's namespace.
 
-    A ROS 1 plugin (gazebo_ros_pkgs before ROS 2, as TurtleBot3's URDF still writes them)
-    names its topic in ``ros1`` (``<topicName>``; under ``within``, a camera's name) and
-    its namespace in ``<robotNamespace>``.
+    A ROS 2 plugin's node resolves ``default`` as rcl does (:mod:`.ros_names`: its
+    ``<ros><namespace>``, ``<ros><argument>`` and ``<ros><remapping>`` rules). A ROS 1 plugin
+    (gazebo_ros_pkgs before ROS 2, as TurtleBot3's URDF still writes them) names its topic in
+    ``ros1`` (``<topicName>``; under ``within``, a camera's name) and its namespace in
+    ``<robotNamespace>``. The name has no leading ``/`` unless one was written absolute.
     """
-    topic = default
-    for rule in params_all(plugin.params, "ros/remapping"):
-        source, _, target = rule.partition(":=")
-        if source.strip() in (default, default.removeprefix("~/")):
-            topic = target.strip()
+    node = PluginNode.of(plugin)
+    topic = node.remapped(default)
     legacy = (param(plugin.params, ros1) or "").strip()
-    if legacy and topic == default:
+    if topic is None and legacy:
         topic = f"{within}/{legacy}" if within and not legacy.startswith("/") else legacy
-    if topic.startswith("~/"):
-        topic = f"{plugin.name}/{topic[2:]}"
-    namespace = (param(plugin.params, "ros/namespace")
-                 or param(plugin.params, "robotNamespace") or "").strip("/")
-    if namespace and not topic.startswith("/"):
-        topic = f"{namespace}/{topic}"
-    return topic
+        if topic.startswith("~/"):
+            topic = f"{plugin.name}/{topic[2:]}"
+        namespace = (param(plugin.params, "ros/namespace")
+                     or param(plugin.params, "robotNamespace") or "").strip("/")
+        return f"{namespace}/{topic}" if namespace and not topic.startswith("/") else topic
+    written = default if topic is None else topic
+    full = node.expand(written)
+    return full if written.startswith("/") else full[1:]
 
 
 def _frame(sensor: Sensor) -> str | None:

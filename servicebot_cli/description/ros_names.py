@@ -1,0 +1,101 @@
+"""ROS 2 names of a gazebo_ros plugin's node: its namespace, name expansion and remapping.
+
+gazebo_ros's ``Node::Get`` (``gazebo_ros/src/node.cpp``) names the node after the plugin's
+``name`` attribute, puts it in ``<ros><namespace>`` (made absolute; ``/`` without one) and
+hands rcl each ``<ros><argument>`` as a command-line argument, then ``--ros-args`` and
+``-r RULE`` for each ``<ros><remapping>``. rcl (``arguments.c``, ``remap.c``) reads a bare
+``match:=replacement`` argument as a remap rule in its deprecated form (still accepted);
+after ``--ros-args`` a rule follows ``-r`` or ``--remap``. To resolve a topic name rcl
+expands it to a fully qualified name (``/x`` as is, ``~/x`` under ``NAMESPACE/NODE``, ``x``
+under ``NAMESPACE``); the first rule whose match, expanded alike, equals it wins (a rule
+written ``node:match:=replacement`` counts only for that node), and its replacement is
+expanded the same way. ``__ns:=`` and ``__node:=`` rules rename the node's namespace and name.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from servicebot_cli.description.extensions import Plugin, param, params_all
+
+Rule = tuple[str | None, str, str]
+"""A remap rule: the node it is for (None: any), its match and its replacement."""
+
+
+def _rule(text: str) -> Rule | None:
+    """``[node:]match:=replacement``; None for anything else (rcl ignores it with a warning)."""
+    left, sep, replacement = text.strip().partition(":=")
+    if not sep or not left or not replacement or any(c.isspace() for c in text.strip()):
+        return None
+    node, colon, match = left.partition(":")
+    return (node, match, replacement) if colon else (None, left, replacement)
+
+
+def _argument_rules(arguments: tuple[str, ...]) -> list[Rule]:
+    """The remap rules among the node's arguments, in order."""
+    rules: list[Rule] = []
+    ros_args = expect_rule = False
+    for token in (a.strip() for a in arguments):
+        if expect_rule:
+            expect_rule = False
+            rule = _rule(token)
+        elif token == "--ros-args" or (ros_args and token == "--"):
+            ros_args = token == "--ros-args"
+            continue
+        elif ros_args:
+            expect_rule = token in ("-r", "--remap")
+            continue
+        else:
+            rule = _rule(token)
+        if rule is not None:
+            rules.append(rule)
+    return rules
+
+
+@dataclass(frozen=True)
+class PluginNode:
+    """A gazebo_ros plugin's ROS 2 node.
+
+    Attributes:
+        name: The node's name (the plugin's ``name``, unless a ``__node:=`` rule renames it).
+        namespace: Absolute, ``/`` at the root.
+        rules: Its topic remap rules, in the order rcl tries them.
+    """
+
+    name: str
+    namespace: str
+    rules: tuple[Rule, ...]
+
+    @classmethod
+    def of(cls, plugin: Plugin) -> PluginNode:
+        """The node gazebo_ros makes for ``plugin``."""
+        namespace = (param(plugin.params, "ros/namespace") or "").strip()
+        rules = _argument_rules(params_all(plugin.params, "ros/argument")) + [
+            rule for text in params_all(plugin.params, "ros/remapping")
+            if (rule := _rule(text)) is not None]
+        name, topic_rules = plugin.name, []
+        for node, match, replacement in rules:
+            if node not in (None, plugin.name):
+                continue
+            if match == "__node":
+                name = replacement
+            elif match == "__ns":
+                namespace = replacement
+            else:
+                topic_rules.append((node, match, replacement))
+        namespace = "/" + namespace.strip("/")
+        return cls(name, namespace, tuple(topic_rules))
+
+    def expand(self, name: str) -> str:
+        """The fully qualified name of ``name`` in this node (``~/out`` -> ``/ns/node/out``)."""
+        if name.startswith("/"):
+            return name
+        if name == "~" or name.startswith("~/"):
+            name = f"{self.name}{name[1:]}"
+        return f"{self.namespace.rstrip('/')}/{name}"
+
+    def remapped(self, name: str) -> str | None:
+        """The replacement, as written, of the first rule matching ``name``; None: no rule."""
+        full = self.expand(name)
+        return next((replacement for node, match, replacement in self.rules
+                     if node in (None, self.name) and self.expand(match) == full), None)
