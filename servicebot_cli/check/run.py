@@ -168,11 +168,12 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
     """A report per URDF the controllers YAML is checked against."""
     from servicebot_cli.check import controllers
     from servicebot_cli.common.inputs import display_path, read_input_text
+    from servicebot_cli.description.ros_parameters import MAX_PARAMETERS_BYTES
 
     yaml_path = Path(targets.yaml_file) if targets.yaml_file else bundled_file(CONTROLLERS_YAML)
     display = targets.yaml_file or display_path(yaml_path)
     text = read_input_text(str(yaml_path), kind="a ros2_control controllers YAML",
-                           error=DescriptionError)
+                           error=DescriptionError, max_bytes=MAX_PARAMETERS_BYTES)
     sources = targets.urdfs or tuple(RobotSource.bundled(name) for name in BUNDLED_ROBOTS)
     reports = []
     for source in sources:

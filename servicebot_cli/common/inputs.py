@@ -1,9 +1,10 @@
 """Reading the user's input files: one policy, one-line errors.
 
 Robot descriptions, scenarios, batch files, drive scripts and controller YAML files all fail
-the same ways (missing, a directory, unreadable, too big, not UTF-8); each failure becomes
-one line that names the file and says what to give instead. ``-`` means standard input
-where a command allows it.
+the same ways (missing, a directory, unreadable, too big, empty, not UTF-8: UTF-16, binary or
+Latin-1); each failure becomes one line that names the file and says what to give instead.
+``-`` means standard input where a command allows it. Text is decoded by
+:mod:`~servicebot_cli.common.text_decoding`.
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ from pathlib import Path
 from typing import IO
 
 from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.common.text_decoding import NotUtf8, decode_utf8
 
 STDIN = "-"
 
@@ -86,11 +88,19 @@ def _too_large(display: str, size: int | None, max_bytes: int,
 
 
 def read_input_text(path: str, *, kind: str, error: type[ServicebotError] = ServicebotError,
-                    max_bytes: int | None = None) -> str:
+                    max_bytes: int | None = None, allow_empty: bool = True) -> str:
     """The UTF-8 text of the user's file ``path``, or of standard input for ``-``.
 
+    Args:
+        path: The file, or ``-``.
+        kind: What the user should give instead, e.g. ``"a ros2_control controllers YAML"``.
+        error: The error class raised.
+        max_bytes: Refuse larger files without reading them [bytes].
+        allow_empty: False to refuse a file that holds nothing but blanks.
+
     Raises:
-        error: As :func:`read_input_bytes`, or the bytes are not UTF-8.
+        error: As :func:`read_input_bytes`, or the bytes are not UTF-8 text (UTF-16, binary,
+            Latin-1...), or the file is empty and ``allow_empty`` is False.
     """
     display = "<stdin>" if path == STDIN else path
     if path == STDIN:
@@ -100,10 +110,22 @@ def read_input_text(path: str, *, kind: str, error: type[ServicebotError] = Serv
     else:
         data = read_input_bytes(Path(path), display, kind=kind, error=error, max_bytes=max_bytes)
     try:
-        return data.decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        line = data[: exc.start].count(b"\n") + 1
-        raise error(f"{display}:{line}: not UTF-8 text; save it as UTF-8") from None
+        text = decode_utf8(data)
+    except NotUtf8 as exc:
+        raise error(not_text_message(display, exc, kind)) from None
+    if not allow_empty and not text.strip():
+        raise error(f"{display}: file is empty; give {kind}")
+    return text
+
+
+def not_text_message(display: str, problem: NotUtf8, kind: str) -> str:
+    """One line for a file ``display`` that is not UTF-8 text: what it is and what to do."""
+    if problem.binary:
+        return f"{display}: {problem.what}, not text; give {kind}"
+    if problem.line:
+        return (f"{display}:{problem.line}:{problem.column}: not UTF-8 text ({problem.what}); "
+                "save it as UTF-8")
+    return f"{display}: {problem.what}, not UTF-8; save it as UTF-8"
 
 
 def open_input_text(path: str, *, kind: str,

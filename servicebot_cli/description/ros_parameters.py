@@ -14,6 +14,10 @@ from typing import Any
 NAMESPACE_DEPTH = 3
 """Namespaces looked through above a node's own key."""
 
+MAX_PARAMETERS_BYTES = 10_000_000
+"""A parameters file larger than this is not read [bytes]: real ones are a few kB, and a
+device such as /dev/zero never ends."""
+
 
 def node_parameters(document: Any, depth: int = 0) -> dict[str, dict[str, Any]]:
     """Each node's ``ros__parameters`` by node name (a path's last part), in file order.

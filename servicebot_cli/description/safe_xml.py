@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from xml.parsers import expat
 
 from servicebot_cli.common.errors import UnsafeXmlError, XmlError
+from servicebot_cli.common.text_decoding import NotUtf8, decode_utf8
 
 _BAD_DECLARATION = expat.errors.XML_ERROR_XML_DECL
 _MISPLACED_DECLARATION = expat.errors.XML_ERROR_MISPLACED_XML_PI
@@ -135,18 +136,17 @@ def declaration_first(data: bytes) -> bytes:
 
 
 def _decode(data: bytes, filename: str) -> str:
+    """``data`` as text; every reason it is not starts with ``invalid UTF-8`` (SB003)."""
     try:
-        return data.decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        before = data[: exc.start]
-        line = before.count(b"\n") + 1
-        column = exc.start - (before.rfind(b"\n") + 1) + 1
-        raise XmlError(
-            filename,
-            f"invalid UTF-8 (byte 0x{data[exc.start]:02x}); save the file as UTF-8",
-            line,
-            column,
-        ) from None
+        return decode_utf8(data)
+    except NotUtf8 as exc:
+        if exc.binary:
+            reason = f"invalid UTF-8: {exc.what}, not text; is it the right file?"
+        elif exc.line:
+            reason = f"invalid UTF-8 ({exc.what}); save the file as UTF-8"
+        else:
+            reason = f"invalid UTF-8: {exc.what}; save the file as UTF-8"
+        raise XmlError(filename, reason, exc.line, exc.column) from None
 
 
 class _Builder:

@@ -16,7 +16,11 @@ from typing import Any
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.common.inputs import display_path, read_input_text
 from servicebot_cli.description.extensions import param
-from servicebot_cli.description.ros_parameters import controller_types, node_parameters
+from servicebot_cli.description.ros_parameters import (
+    MAX_PARAMETERS_BYTES,
+    controller_types,
+    node_parameters,
+)
 
 DEFAULT_NAME = "controllers.yaml"
 
@@ -77,7 +81,8 @@ def read_controllers(path: Path, found_by: str) -> Controllers:
     import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
     text = read_input_text(str(path), kind="a ros2_control controllers YAML (--controllers)",
-                           error=ControllersError)
+                           error=ControllersError, max_bytes=MAX_PARAMETERS_BYTES,
+                           allow_empty=False)
     try:
         document = yaml.safe_load(text)
     except yaml.YAMLError as exc:

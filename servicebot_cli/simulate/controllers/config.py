@@ -20,7 +20,12 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from servicebot_cli.common.errors import ServicebotError
-from servicebot_cli.description.ros_parameters import controller_types, node_parameters
+from servicebot_cli.common.inputs import read_input_text
+from servicebot_cli.description.ros_parameters import (
+    MAX_PARAMETERS_BYTES,
+    controller_types,
+    node_parameters,
+)
 from servicebot_cli.simulate.controllers.limiter import DIFF_DRIVE_CONTROLLER
 
 if TYPE_CHECKING:
@@ -96,11 +101,17 @@ def read_controllers_file(path: Path | None) -> ControllersFile:
         return ControllersFile(None, {})
     import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
+    text = read_input_text(str(path), kind="a ros2_control controllers YAML (--controllers)",
+                           error=ControllersFileError, max_bytes=MAX_PARAMETERS_BYTES,
+                           allow_empty=False)
     try:
-        document = yaml.load(path.read_text(encoding="utf-8"),  # libyaml's safe loader if built
+        document = yaml.load(text,  # libyaml's safe loader if built
                              Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
-    except (OSError, UnicodeDecodeError, yaml.YAMLError) as exc:
-        raise ControllersFileError(f"{path}: cannot read the controllers file: {exc}") from None
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        line = f":{mark.line + 1}" if mark is not None else ""
+        raise ControllersFileError(f"{path}{line}: not valid YAML; fix the file or give "
+                                   "another with --controllers") from None
     if not isinstance(document, dict):
         raise ControllersFileError(f"{path}: expected a mapping of controllers")
     nodes = node_parameters(document)
