@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.kinematics.lm_kernel import PRISMATIC, REVOLUTE
+from servicebot_cli.kinematics.lm_pose import PRISMATIC, REVOLUTE
 
 if TYPE_CHECKING:
     from servicebot_cli.kinematics.chain import Chain

@@ -16,7 +16,7 @@ import pytest
 
 from servicebot_cli.description.joint_space import JointSpace
 from servicebot_cli.description.loader import RobotSource, load
-from servicebot_cli.kinematics import lm_kernel
+from servicebot_cli.kinematics import lm_pose
 from servicebot_cli.kinematics.chain import Chain
 from servicebot_cli.kinematics.chain_arrays import chain_arrays
 from servicebot_cli.kinematics.frames import link_names
@@ -30,8 +30,8 @@ FULL = ("roll", "pitch", "yaw")
 
 def kernel_pose(arrays, theta):
     pose, jacobian = np.empty((3, 4)), np.empty((6, arrays.size))
-    lm_kernel.tool_pose(arrays.frames, arrays.axes, arrays.kinds, theta, pose, jacobian,
-                        np.empty((3, 3)))
+    lm_pose.tool_pose(arrays.frames, arrays.axes, arrays.kinds, theta, pose, jacobian,
+                      np.empty((3, 3)))
     return pose, jacobian
 
 
@@ -79,8 +79,8 @@ def test_rotation_error_is_log3_at_every_angle(angle):
         start = pin.exp3(rng.normal(size=3))
         target = np.hstack([pin.exp3(axis * angle) @ start, np.zeros((3, 1))])
         out = np.zeros(6)
-        got = lm_kernel.rotation_error(target, np.hstack([start, np.zeros((3, 1))]), out,
-                                       np.empty((3, 3)))
+        got = lm_pose.rotation_error(target, np.hstack([start, np.zeros((3, 1))]), out,
+                                     np.empty((3, 3)))
         assert got == pytest.approx(angle, abs=1e-12)
         # at pi the axis' sign is a free choice: both turns are the same rotation
         expected = axis * angle
