@@ -18,9 +18,11 @@ URDF_RULES: tuple[Rule, ...] = (
          "An empty file (or one holding only whitespace) describes no robot.",
          "Write a <robot name=\"...\"> element with at least one <link>."),
     Rule("SB003", "invalid-utf8", E, "The file is not valid UTF-8",
-         "URDF and xacro files are read as UTF-8; a byte that is not UTF-8 usually means the "
-         "file was saved as Latin-1 or Windows-1252.",
-         "Save the file as UTF-8."),
+         "URDF and xacro files are read as UTF-8 (a UTF-8 byte-order mark is fine); a byte "
+         "that is not UTF-8 usually means the file was saved as Latin-1 or Windows-1252, a "
+         "UTF-16 byte-order mark or NUL bytes that it was saved as UTF-16 (Windows editors' "
+         "\"Unicode\"). An image or archive is said to be one: the wrong file was named.",
+         "Save the file as UTF-8, or name the description instead."),
     Rule("SB004", "malformed-xml", E, "The XML is not well-formed",
          "A strict parser stops at the first error and reports its line and column; nothing "
          "is guessed or recovered, since a recovering parser silently drops elements.",

@@ -48,6 +48,11 @@ def check(text: str, display: str, robot: RobotDescription) -> Iterator[Issue]:
         yield Issue("SB601", "not valid YAML: lists and mappings nested too deep to read",
                     where=(display, 0, 0))
         return
+    if root is None:
+        yield Issue("SB601", "the file holds no YAML (it is empty, or only comments)",
+                    where=(display, 0, 0),
+                    fix="write each controller's parameters under NAME: ros__parameters:")
+        return
     sections = _sections(root)
     if not sections:
         ros1 = _ros1_controllers(root)

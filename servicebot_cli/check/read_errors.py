@@ -18,7 +18,8 @@ from servicebot_cli.common.errors import (
 )
 
 _WHERE = re.compile(r"^(?P<file>.+?):(?P<line>\d+)(?::(?P<column>\d+))?: (?P<rest>.*)$", re.DOTALL)
-_LIMITS = ("limit for a robot description", "elements; refused", "deep; refused")
+_LIMITS = ("limit for a robot description", "elements; refused", "deep; refused",
+           "MB limit; is it the right file?")  # the last: a device read to the limit
 _UNDEFINED_ARG = re.compile(r"Undefined substitution argument (\S+)$")
 
 

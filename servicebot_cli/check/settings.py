@@ -23,7 +23,10 @@ from typing import TypeAlias
 from servicebot_cli.check.catalogue import RULES, matches, rule, valid_pattern
 from servicebot_cli.check.findings import Severity
 from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.common.inputs import read_input_text
 
+MAX_SETTINGS_BYTES = 10_000_000
+"""A settings file larger than this is not read [bytes] (a pyproject.toml is a few kB)."""
 _KEYS = ("select", "ignore", "strict", "inertia-factor", "severity")
 
 TomlValue: TypeAlias = (str | int | float | bool | date | datetime | time
@@ -102,9 +105,11 @@ def load_settings(path: Path | None) -> Settings:
         import tomllib
     else:  # pragma: no cover - exercised on Python 3.10 only
         import tomli as tomllib
+    text = read_input_text(str(path), kind="a pyproject.toml (--config FILE), or --isolated",
+                           error=SettingsError, max_bytes=MAX_SETTINGS_BYTES)
     try:
-        document = tomllib.loads(path.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
+        document = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
         raise SettingsError(f"{path}: cannot read settings: {exc}") from None
     table = _child(_child(document, "tool"), "servicebot").get("check")
     if table is None:
