@@ -178,7 +178,9 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
     reports = []
     for source in sources:
         robot = read_description(source)
-        issues = controllers.check(text, display, robot)
+        issues = list(controllers.check(text, display, robot))
+        if any(issue.code == "SB601" for issue in issues):  # the YAML itself, whatever robot
+            return [FileReport(display, tuple(place_issues(robot, issues, settings)))]
         reports.append(FileReport(f"{display} against {source.display}",
                                   tuple(place_issues(robot, issues, settings))))
     return reports

@@ -7,6 +7,7 @@ being checked; never a codec's message or an internal error.
 from __future__ import annotations
 
 import codecs
+import json
 from pathlib import Path
 
 import pytest
@@ -58,3 +59,17 @@ def test_a_device_that_never_ends_is_read_to_a_limit(run):
                           "/dev/zero: holds more, over the 10 MB limit")
     result = run("check", "urdf", "/dev/zero", "--format", "json")
     assert [f["code"] for f in findings(result.stdout)] == ["SB015"]
+
+
+def test_a_file_that_is_no_controllers_yaml_is_one_finding_against_every_robot(run, tmp_path):
+    # without --urdf the file is checked against both bundled robots; what is wrong with the
+    # YAML itself is said once, not once per robot
+    path = tmp_path / "controllers.yaml"
+    path.write_text("# only a comment\n")
+    checked = run("check", "controllers", path, "--format", "json")
+    document = json.loads(checked.stdout)
+    assert [f["code"] for f in findings(checked.stdout)] == ["SB601"]
+    assert [file["file"] for file in document["files"]] == [str(path)]
+    assert checked.exit_code == 1
+    fine = run("check", "controllers", "--format", "json")  # the bundled file: both robots
+    assert len(json.loads(fine.stdout)["files"]) == 2
