@@ -1,13 +1,10 @@
 r"""Inverse kinematics: joint values that put a frame at a target.
 
-Levenberg-Marquardt (damped least squares) on the frame Jacobian. Each iteration solves
-
-.. math:: \Delta q = J^T (J J^T + \lambda I)^{-1} e, \quad \lambda = w \|e\|^2 + \bar w
-
-(or the equivalent :math:`(J^T J + \lambda I)^{-1} J^T e` when J has more rows than
-columns), the error-dependent damping of Sugihara (2011): large steps far away, Gauss-Newton
-close in. Steps are capped, and joint limits are enforced after every step by projection,
-so no iterate, and no result, ever leaves them; continuous joints turn freely and wrap.
+Levenberg-Marquardt (damped least squares) on the frame Jacobian, with the error-dependent
+damping of Sugihara (2011): large steps far away, Gauss-Newton close in (one attempt:
+:class:`~servicebot_cli.kinematics.pin_descent.Descent`). Steps are capped, and joint limits
+are enforced after every step by projection, so no iterate, and no result, ever leaves them;
+continuous joints turn freely and wrap.
 
 An answer is checked for collisions when the solver has a check (see
 :mod:`~servicebot_cli.kinematics.collisions`); a colliding one does not count, and the search
@@ -32,6 +29,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.kinematics.compiled_search import CompiledSearch
+from servicebot_cli.kinematics.pin_descent import Descent
 from servicebot_cli.kinematics.residuals import Residual, residual_for
 
 if TYPE_CHECKING:
@@ -41,11 +39,6 @@ if TYPE_CHECKING:
 FloatArray = npt.NDArray[np.float64]
 Errors = tuple[float, float | None]
 """Position error [m] and orientation error [rad] (None: position only)."""
-
-_DAMPING = 1e-2  # w: damping per squared error
-_DAMPING_FLOOR = 1e-9  # w-bar: keeps the system positive definite at singularities
-_MAX_STEP = 2.0  # largest step norm [rad or m]
-_STALL_RATIO = 0.8  # an attempt stalls when ||e||^2 fell less than this in two iterations
 
 
 @dataclass(frozen=True)
@@ -112,6 +105,24 @@ class IkResult:
     stopped: bool = False
 
 
+@dataclass
+class _Tally:
+    """What a solve's attempts found so far.
+
+    The best try that did not converge (chain ``q``, squared error), converged answers free
+    of collisions (``q``, errors), the first in collision (and the pair), iterations,
+    attempts, and whether ``stop`` ended the search.
+    """
+
+    best_q: FloatArray
+    best_err2: float = math.inf
+    found: list[tuple[FloatArray, Errors]] = field(default_factory=list)
+    blocked: tuple[FloatArray, Errors, Contact] | None = None
+    iterations: int = 0
+    attempts: int = 0
+    stopped: bool = False
+
+
 class IkSolver:
     """Solves IK for one chain; reuse it for many targets (batch mode warm-starts)."""
 
@@ -127,17 +138,11 @@ class IkSolver:
         loop is readied (compiled the first time on a machine) by the first solve that needs
         it, and ``on_compiled`` hears how many seconds that took.
         """
-        import eigenpy
-        import pinocchio as pin
-
         self.chain = chain
         self.collisions = collisions
         self.settings = settings or IkSettings()
-        sizes = range(1, 10 + chain.model.nv)
-        self._factor = {n: eigenpy.LLT(np.eye(n)) for n in sizes}
-        self._eye = {n: np.eye(n) for n in sizes}
-        self._integrate = None if chain.vector_space else pin.integrate
-        self._gate2 = 1.5 * (self.settings.tolerance_m ** 2 + self.settings.tolerance_rad ** 2)
+        self._descent = Descent(chain, self.settings.tolerance_m, self.settings.tolerance_rad,
+                                self.settings.max_iterations)
         self._compiled = CompiledSearch.build(chain, self.settings.tolerance_m,
                                               self.settings.tolerance_rad,
                                               self.settings.max_iterations,
@@ -177,58 +182,76 @@ class IkSolver:
             stop: Asked between attempts (after the first): True ends the search, which
                 then returns its best try (a deadline: see ``IkProblem.timeout_s``).
         """
-        chain, settings = self.chain, self.settings
-        fast = self.compiled_for(target)
-        residual = None if fast else residual_for(chain, target.position_m, target.rotation,
-                                                  target.axes)
+        chain = self.chain
+        residual = None if self.compiled_for(target) else residual_for(
+            chain, target.position_m, target.rotation, target.axes)
         start = chain.clamp(chain.to_chain(seed))  # a fresh array: results stay in limits
-        found: list[tuple[FloatArray, Errors]] = []  # q, its errors
-        blocked: tuple[FloatArray, Errors, Contact] | None = None
-        best_q, best_err2 = start, math.inf
-        iterations = attempts = 0
+        tally = _Tally(start)
+        self._search(tally, residual, start, target, seed, rng, stop)
+        if not tally.found and tally.blocked is None:  # settle the best try into its minimum
+            failed = self._settle_best(tally, residual, target, seed)
+            if failed is not None:
+                return failed
+        return self._answer(tally, start, seed)
+
+    def _search(self, tally: _Tally, residual: Residual | None, start: FloatArray,
+                target: IkTarget, seed: FloatArray, rng: np.random.Generator,
+                stop: Callable[[], bool] | None) -> None:
+        """Attempts into ``tally`` until enough solutions, the last attempt, or ``stop``."""
+        settings = self.settings
         # beyond the reach sphere no restart can help: one attempt gives the best try
         limit = 1 if self.out_of_reach(target) else settings.max_attempts
-        stopped = False
-        while attempts < limit and len(found) < settings.solutions:
-            if attempts and stop is not None and stop():
-                stopped = True
+        while tally.attempts < limit and len(tally.found) < settings.solutions:
+            if tally.attempts and stop is not None and stop():
+                tally.stopped = True
                 break
-            q, err2, made, used, errors = self._attempts(residual, start, attempts, limit,
-                                                         target, rng)
-            attempts, iterations = attempts + made, iterations + used
+            q, err2, made, used, errors = self._attempts(residual, start, tally.attempts,
+                                                         limit, target, rng)
+            tally.attempts, tally.iterations = tally.attempts + made, tally.iterations + used
             if errors is not None:
                 contact = self._contact(q, seed)
                 if contact is None:
-                    found.append((q, errors))
-                elif blocked is None:
-                    blocked = (q, errors, contact)
-            elif err2 < best_err2:
-                best_q, best_err2 = q, err2
+                    tally.found.append((q, errors))
+                elif tally.blocked is None:
+                    tally.blocked = (q, errors, contact)
+            elif err2 < tally.best_err2:
+                tally.best_q, tally.best_err2 = q, err2
+
+    def _settle_best(self, tally: _Tally, residual: Residual | None, target: IkTarget,
+                     seed: FloatArray) -> IkResult | None:
+        """Settle the best try into its local minimum; the failed result, or None.
+
+        None: it converged there after all (a slow descent cut short as a stall), free.
+        """
+        chain = self.chain
+        residual = residual or residual_for(chain, target.position_m, target.rotation,
+                                            target.axes)
+        best_q, used, settled = self._descent.settle(residual, tally.best_q.copy())
+        tally.iterations += used
+        if residual.last_q is not best_q:
+            residual.reset(best_q)
+            residual.evaluate(best_q)
+        errors = residual.errors()
         contact = None
-        if not found and blocked is None:  # settle the best try into its local minimum
-            residual = residual or residual_for(chain, target.position_m, target.rotation,
-                                                target.axes)
-            best_q, used, settled = self._settle(residual, best_q.copy())
-            iterations += used
-            if residual.last_q is not best_q:
-                residual.reset(best_q)
-                residual.evaluate(best_q)
-            errors = residual.errors()
-            if settled:  # a slow descent, cut short as a stall, that does converge
-                contact = self._contact(best_q, seed)
-                if contact is None:
-                    found.append((best_q, errors))
-            if not found:
-                return IkResult(chain.to_full(best_q, seed), False, *errors, iterations,
-                                attempts, 0, contact, stopped)
+        if settled:
+            contact = self._contact(best_q, seed)
+            if contact is None:
+                tally.found.append((best_q, errors))
+                return None
+        return IkResult(chain.to_full(best_q, seed), False, *errors, tally.iterations,
+                        tally.attempts, 0, contact, tally.stopped)
+
+    def _answer(self, tally: _Tally, start: FloatArray, seed: FloatArray) -> IkResult:
+        """The answer nearest ``start`` of those found; else the best try, in collision."""
+        found, contact = tally.found, None
         if found:
             best_q, (position_error, orientation_error) = found[0] if len(found) == 1 else min(
                 found, key=lambda item: self._distance(start, item[0]))
-        elif blocked is not None:  # reached, but only through a collision: the best try
-            best_q, (position_error, orientation_error), contact = blocked
-        return IkResult(chain.to_full(best_q, seed), bool(found), position_error,
-                        orientation_error, iterations, attempts, len(found), contact,
-                        stopped and not found)
+        elif tally.blocked is not None:  # reached, but only through a collision: the best try
+            best_q, (position_error, orientation_error), contact = tally.blocked
+        return IkResult(self.chain.to_full(best_q, seed), bool(found), position_error,
+                        orientation_error, tally.iterations, tally.attempts, len(found),
+                        contact, tally.stopped and not found)
 
     def _attempts(self, residual: Residual | None, start: FloatArray, made: int, limit: int,
                   target: IkTarget, rng: np.random.Generator
@@ -252,7 +275,7 @@ class IkSolver:
         hold_base = chain.base_nq > 0 and made == 0
         q0 = start if made < (2 if chain.base_nq else 1) else chain.random_q(
             rng, target.position_m)
-        q, err2, used, converged = self._descend(residual, q0.copy(), hold_base)
+        q, err2, used, converged = self._descent.descend(residual, q0.copy(), hold_base)
         # the residual still holds this q's state (and free angles)
         return q, err2, 1, used, residual.errors() if converged else None
 
@@ -273,105 +296,3 @@ class IkSolver:
         import pinocchio as pin
 
         return float(np.linalg.norm(pin.difference(self.chain.model, start, q)))
-
-    def _descend(self, residual: Residual, q: FloatArray,
-                 hold_base: bool) -> tuple[FloatArray, float, int, bool]:
-        """One attempt: damped least-squares steps from ``q`` until converged or stalled.
-
-        It stalls when the squared error fell by less than :data:`_STALL_RATIO` in two
-        iterations. Steps are not checked for progress: that is what makes an attempt cheap.
-
-        Returns:
-            The best ``q`` of the attempt, its squared error, iterations used, and success.
-        """
-        evaluate, within = residual.evaluate, self._within
-        step_of, move = self._step, self._move
-        residual.reset(q)
-        gate2 = self._gate2
-        earlier = previous = math.inf
-        best_q, best_err2 = q, math.inf
-        for iteration in range(1, self.settings.max_iterations + 1):
-            error, jacobian = evaluate(q)
-            if hold_base:
-                jacobian[:, :3] = 0.0  # planar base: x, y, yaw stay where they are
-            err2 = error.dot(error)
-            if err2 < best_err2:
-                best_q, best_err2 = q, err2
-                if err2 <= gate2 and within(residual):
-                    return q, err2, iteration, True
-            if err2 > _STALL_RATIO * earlier:
-                break
-            earlier, previous = previous, err2
-            q = move(q, step_of(jacobian, error, _DAMPING * err2 + _DAMPING_FLOOR), residual)
-        return best_q, float(best_err2), iteration, False
-
-    def _settle(self, residual: Residual, q: FloatArray) -> tuple[FloatArray, int, bool]:
-        """Levenberg-Marquardt with step acceptance from ``q`` into the nearest minimum.
-
-        Only for solves that failed: a step that does not lower the error is undone and the
-        damping raised, so the error never grows and the best residual is a true one.
-
-        Returns:
-            The settled ``q``, iterations used, and whether it met the tolerance after all.
-        """
-        residual.reset(q)
-        error, jacobian = residual.evaluate(q)
-        err2 = error.dot(error)
-        damping = _DAMPING * err2 + _DAMPING_FLOOR
-        for iteration in range(1, self.settings.max_iterations + 1):
-            step = self._step(jacobian, error, damping)
-            candidate = self._move(q, step, residual)
-            new_error, new_jacobian = residual.evaluate(candidate)
-            new2 = new_error.dot(new_error)
-            if new2 < err2:
-                if new2 <= self._gate2 and self._within(residual):
-                    return candidate, iteration, True
-                done = err2 - new2 <= 1e-12 * err2
-                q, error, jacobian, err2 = candidate, new_error, new_jacobian, new2
-                damping = max(damping / 3, _DAMPING_FLOOR)
-                if done:
-                    break
-            else:
-                extra = residual.extra
-                if extra:
-                    residual.shift(-step[-extra:])
-                damping *= 4
-                if damping > 1e9:
-                    break
-        return q, iteration, False
-
-    def _step(self, jacobian: FloatArray, error: FloatArray, damping: float) -> FloatArray:
-        """The damped least-squares step, capped at :data:`_MAX_STEP`."""
-        rows, cols = jacobian.shape
-        step: FloatArray
-        if rows <= cols:
-            factor = self._factor[rows]
-            factor.compute(np.dot(jacobian, jacobian.T) + damping * self._eye[rows])
-            step = jacobian.T.dot(factor.solve(error))
-        else:
-            factor = self._factor[cols]
-            factor.compute(np.dot(jacobian.T, jacobian) + damping * self._eye[cols])
-            step = factor.solve(jacobian.T.dot(error)).reshape(cols)  # (1, 1) for one joint
-        size2 = step.dot(step)
-        if size2 > _MAX_STEP * _MAX_STEP:
-            step *= _MAX_STEP / math.sqrt(size2)
-        return step
-
-    def _move(self, q: FloatArray, step: FloatArray, residual: Residual) -> FloatArray:
-        """``q`` moved by the joints' part of ``step``, projected into the limits.
-
-        The rest of ``step`` moves the residual's own unknowns (free angles).
-        """
-        extra = residual.extra
-        if extra:
-            residual.shift(step[-extra:])
-            step = step[:-extra]
-        q = q + step if self._integrate is None else self._integrate(self.chain.model, q, step)
-        np.maximum(q, self.chain.lower, out=q)
-        np.minimum(q, self.chain.upper, out=q)
-        return q
-
-    def _within(self, residual: Residual) -> bool:
-        position, orientation = residual.errors()
-        return position <= self.settings.tolerance_m and (
-            orientation is None or orientation <= self.settings.tolerance_rad)
