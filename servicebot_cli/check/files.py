@@ -79,12 +79,12 @@ def walk(directory: Path) -> Iterator[Path]:
     yield from (path for path in found if path not in included)
 
 
-def holds_robot_files(directory: Path) -> bool:
-    """Whether ``directory`` holds robot files at all, includes too.
+def robot_file_count(directory: Path) -> int:
+    """How many robot files ``directory`` holds, includes too.
 
     pal_urdf_utils holds only xacro libraries: nothing to check alone, and nothing wrong.
     """
-    return next(_robot_files(directory), None) is not None
+    return sum(1 for _ in _robot_files(directory))
 
 
 def _robot_files(directory: Path) -> Iterator[Path]:

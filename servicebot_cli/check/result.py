@@ -15,10 +15,13 @@ class CheckResult:
     Attributes:
         reports: One per file.
         strict: Warnings fail the run.
+        includes_only: Each named directory that holds only xacro includes (macro
+            libraries, parts of robots), with how many: nothing in it is a robot alone.
     """
 
     reports: tuple[FileReport, ...]
     strict: bool = False
+    includes_only: tuple[tuple[str, int], ...] = ()
 
     @property
     def findings(self) -> tuple[Finding, ...]:
@@ -48,7 +51,10 @@ class CheckResult:
         verdict = "failed" if self.failed else "passed"
         if self.strict:
             verdict += " (strict: warnings fail)"
-        return f"{files} checked: {', '.join(parts)}; {verdict}"
+        aside = "".join(f" ({directory} holds only xacro includes, {_plural(count, 'file')}, "
+                        "checked through the robot files that include them)"
+                        for directory, count in self.includes_only)
+        return f"{files} checked{aside}: {', '.join(parts)}; {verdict}"
 
 
 def _plural(n: int, word: str) -> str:

@@ -105,15 +105,19 @@ def run(request: CheckRequest) -> CheckResult:
         DescriptionError: A file the user named cannot be read at all (exit 2).
     """
     settings = settings_of(request.settings)
-    if isinstance(request.targets, UrdfTargets):
-        reports = _check_urdfs(request.targets, settings)
-    else:
-        reports = _check_controllers(request.targets, settings)
-    return CheckResult(tuple(reports), settings.strict)
+    if not isinstance(request.targets, UrdfTargets):
+        return CheckResult(tuple(_check_controllers(request.targets, settings)), settings.strict)
+    includes_only: list[tuple[str, int]] = []
+    reports = _check_urdfs(_sources(request.targets, includes_only), request.targets, settings)
+    return CheckResult(tuple(reports), settings.strict, tuple(includes_only))
 
 
-def _sources(targets: UrdfTargets) -> list[tuple[RobotSource, bool]]:
-    """Each source to check, and whether the user named it (else it was found in a directory)."""
+def _sources(targets: UrdfTargets,
+             includes_only: list[tuple[str, int]]) -> list[tuple[RobotSource, bool]]:
+    """Each source to check, and whether the user named it (else it was found in a directory).
+
+    A named directory that holds only xacro includes is added to ``includes_only``.
+    """
     if not targets.paths:
         return [(targets.default or RobotSource.bundled(), True)]
     found: list[tuple[RobotSource, bool]] = []
@@ -123,23 +127,26 @@ def _sources(targets: UrdfTargets) -> list[tuple[RobotSource, bool]]:
             found.append((RobotSource(path, name, targets.xacro_args, targets.packages), True))
             continue
         inside = list(files.walk(path))
-        if not inside and not files.holds_robot_files(path):
-            raise DescriptionError(f"{name}: is a directory with no robot files "
-                                   f"({', '.join('*' + s for s in files.SUFFIXES)})")
+        if not inside:
+            held = files.robot_file_count(path)
+            if not held:
+                raise DescriptionError(f"{name}: is a directory with no robot files "
+                                       f"({', '.join('*' + s for s in files.SUFFIXES)})")
+            includes_only.append((name, held))
         for file in inside:
             args = targets.xacro_args if is_xacro_name(file) else ()
             found.append((RobotSource(file, str(file), args, targets.packages), False))
     return found
 
 
-def _check_urdfs(targets: UrdfTargets, settings: Settings) -> list[FileReport]:
+def _check_urdfs(every: list[tuple[RobotSource, bool]], targets: UrdfTargets,
+                 settings: Settings) -> list[FileReport]:
     """A report per description; a file found in a directory that cannot be read is SB001.
 
     A xacro include named on the command line gets its SB018 note instead of a check.
     """
     from servicebot_cli.check.named_includes import include_reports
 
-    every = _sources(targets)
     includes = include_reports(every, settings)
     sources = [source for index, source in enumerate(every) if index not in includes]
     checked = iter(_checked(sources, targets, settings))

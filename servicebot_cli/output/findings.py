@@ -106,6 +106,9 @@ def json_text(result: CheckResult) -> str:
             "info": result.count(Severity.INFO),
             "strict": result.strict,
             "failed": result.failed,
+            **({"includes_only": [{"directory": directory, "files": count}
+                                  for directory, count in result.includes_only]}
+               if result.includes_only else {}),
         },
     })
 

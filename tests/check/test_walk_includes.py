@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 from servicebot_cli.check.files import walk
@@ -81,7 +82,11 @@ def test_a_directory_of_includes_only_passes_with_nothing_to_check(run, tmp_path
                                      '<xacro:property name="grey" value="0.5"/></robot>',
     })
     result = run("check", "urdf", tmp_path, "--isolated")
-    assert result.exit_code == 0 and "0 files checked" in result.stdout, result.output
+    assert result.exit_code == 0, result.output
+    assert (f"0 files checked ({tmp_path} holds only xacro includes, 2 files, checked through "
+            "the robot files that include them): 0 errors") in result.stdout
+    summary = json.loads(run("check", "urdf", tmp_path, "--isolated", "--format", "json").stdout)
+    assert summary["summary"]["includes_only"] == [{"directory": str(tmp_path), "files": 2}]
     empty = tmp_path / "empty"
     empty.mkdir()
     assert run("check", "urdf", empty, "--isolated").exit_code == 2
