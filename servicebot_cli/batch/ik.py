@@ -13,7 +13,8 @@ from servicebot_cli.batch.ik_chunks import stream_csv
 from servicebot_cli.batch.ik_rows import IkBatch
 from servicebot_cli.batch.policy import OnError
 from servicebot_cli.batch.stream import BatchSummary, RowSink, Warn, stream
-from servicebot_cli.kinematics.ik import Clock, IkProblem, IkSession, compile_note
+from servicebot_cli.kinematics.ik_problem import IkProblem
+from servicebot_cli.kinematics.ik_session import Clock, IkSession, compile_note
 from servicebot_cli.kinematics.targets import parse_axes
 
 

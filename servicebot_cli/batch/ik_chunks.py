@@ -34,7 +34,7 @@ from servicebot_cli.batch.stream import (
     write_results,
 )
 from servicebot_cli.common.errors import ServicebotError
-from servicebot_cli.kinematics.ik import IkOutcome
+from servicebot_cli.kinematics.ik_outcome import IkOutcome
 from servicebot_cli.kinematics.inverse import IkTarget
 from servicebot_cli.kinematics.target_table import TargetLayout, table_targets, target_layout
 

@@ -23,7 +23,8 @@ import numpy.typing as npt
 from servicebot_cli.batch.reading import Row
 from servicebot_cli.batch.stream import RowKind
 from servicebot_cli.common.errors import ServicebotError
-from servicebot_cli.kinematics.ik import IkOutcome, IkSession
+from servicebot_cli.kinematics.ik_outcome import IkOutcome
+from servicebot_cli.kinematics.ik_session import IkSession
 from servicebot_cli.kinematics.inverse import IkTarget
 from servicebot_cli.kinematics.json_types import JsonObject
 from servicebot_cli.kinematics.targets import TARGET_KEYS, BadTarget, row_target
@@ -122,8 +123,8 @@ class IkBatch:
             qs: Full configurations.
 
         Returns:
-            Shape (len(qs), joints), the values :func:`~servicebot_cli.kinematics.ik.outcome_values`
-            gives, bit for bit.
+            Shape (len(qs), joints), the values
+            :func:`~servicebot_cli.kinematics.ik_outcome.outcome_values` gives, bit for bit.
         """
         space = self.session.space
         if "continuous" in space.types:  # atan2 of (cos, sin), one configuration at a time

@@ -141,7 +141,7 @@ def ik(ctx: click.Context, robot_args: RobotArgs, frame: str | None,
     refuse_with(ctx, "--srdf", "--allow-collisions", present=allow_collisions,
                 why="which checks no pair")
     from servicebot_cli.common.errors import AnswerIsNo
-    from servicebot_cli.kinematics.ik import CollisionOptions, IkProblem
+    from servicebot_cli.kinematics.ik_problem import CollisionOptions, IkProblem
     from servicebot_cli.kinematics.inverse import IkSettings
     from servicebot_cli.output import ik_report
 

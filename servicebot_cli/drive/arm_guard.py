@@ -152,7 +152,7 @@ def arm_guard(robot: RobotDescription, source: RobotSource, srdf: str | None,
     if not any(step.arm for step in steps):
         return None
     from servicebot_cli.kinematics.arm_collisions import arm_collisions
-    from servicebot_cli.kinematics.ik import CollisionOptions
+    from servicebot_cli.kinematics.ik_problem import CollisionOptions
 
     collisions = arm_collisions(robot, source, CollisionOptions(True, srdf), motors.arm_joints)
     return None if collisions is None else ArmGuard(steps, motors, collisions, where)

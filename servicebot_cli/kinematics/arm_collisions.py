@@ -1,6 +1,6 @@
 r"""``ik``'s collision check on the joints of an arm: configurations and joint-space segments.
 
-The check is :func:`~servicebot_cli.kinematics.ik.collision_check` with the arm's joints as
+The check is :func:`~servicebot_cli.kinematics.ik_session.collision_check` with the arm's joints as
 the moving ones, so it leaves out the pairs ``ik`` leaves out (adjacent links, links fixed
 together, pairs that always touch, an SRDF's ``<disable_collisions>``) and has the same
 floor. Every other joint stands at its neutral position (a wheel turned about its axis is
@@ -28,7 +28,8 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.kinematics.collisions import CollisionCheck, Contact
-from servicebot_cli.kinematics.ik import CollisionOptions, collision_check
+from servicebot_cli.kinematics.ik_problem import CollisionOptions
+from servicebot_cli.kinematics.ik_session import collision_check
 
 if TYPE_CHECKING:
     import pinocchio as pin

@@ -1,92 +1,23 @@
 """``ik`` as one call: a request in, the answer (or the best try and why) out. No click.
 
 Nothing is printed. The command turns its options into an :class:`IkRequest`; :func:`run`
-loads the robot (through the shared loader), builds the solver and solves;
-``output.ik_report`` renders the :class:`IkAnswer`. Batch mode (``--targets``) builds the
-same :class:`IkSession` from the same :class:`IkProblem` (see ``batch.ik``). The clock is
+builds an :class:`~servicebot_cli.kinematics.ik_session.IkSession` (which loads the robot
+through the shared loader and builds the solver) and solves; ``output.ik_report`` renders
+the :class:`IkAnswer`. Batch mode (``--targets``) builds the same session from the same
+:class:`~servicebot_cli.kinematics.ik_problem.IkProblem` (see ``batch.ik``). The clock is
 passed in: solve times are measured around the pure solver.
 """
 
 from __future__ import annotations
 
-import math
-from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
-import numpy as np
-import numpy.typing as npt
-
-from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.description.joint_space import JointSpace
-from servicebot_cli.description.loader import RobotSource, load
-from servicebot_cli.description.robot import RobotDescription
-from servicebot_cli.kinematics.chain import Chain
-from servicebot_cli.kinematics.collisions import CollisionCheck, build_check
-from servicebot_cli.kinematics.diagnosis import collision_hint, hint, timeout_hint
-from servicebot_cli.kinematics.drive_geometry import drive_geometry
-from servicebot_cli.kinematics.frames import link_names, pick_frame
-from servicebot_cli.kinematics.inverse import IkResult, IkSettings, IkSolver, IkTarget
-from servicebot_cli.kinematics.json_types import JsonObject
-from servicebot_cli.kinematics.series import series_search, solve_leading
-from servicebot_cli.kinematics.srdf import robot_disabled_pairs
-from servicebot_cli.kinematics.target_frame import TargetFrame
+from servicebot_cli.kinematics.ik_outcome import IkOutcome
+from servicebot_cli.kinematics.ik_problem import IkProblem
+from servicebot_cli.kinematics.ik_session import Clock, IkSession
+from servicebot_cli.kinematics.inverse import IkTarget
 from servicebot_cli.kinematics.targets import make_target, parse_axes
-from servicebot_cli.kinematics.user_joints import clamped_user_vector, user_values
-
-if TYPE_CHECKING:
-    import pinocchio as pin
-
-FloatArray = npt.NDArray[np.float64]
-Clock = Callable[[], float]
-"""Seconds from an arbitrary origin (``time.perf_counter``)."""
-
-
-@dataclass(frozen=True)
-class CollisionOptions:
-    """Which answers count as collisions.
-
-    Attributes:
-        check: Refuse answers whose links intersect each other or the floor.
-        srdf: An SRDF whose ``<disable_collisions>`` pairs are not checked; None: none.
-    """
-
-    check: bool = True
-    srdf: str | None = None
-
-
-@dataclass(frozen=True)
-class IkProblem:
-    """What every solve of one command shares.
-
-    Attributes:
-        robot: The description to load.
-        frame: The frame to move; None: the arm's tool frame.
-        start: ``(name, value)`` pairs to start from, in the user's units; other joints
-            start at zero, or their nearest limit.
-        seed: Seed of the random restarts; None: a fresh one each run.
-        with_base: Also move a planar mobile base.
-        settings: Tolerances and effort.
-        deg: Angles in degrees, in and out.
-        clamp: Clamp start values outside their limits instead of refusing them.
-        collisions: Which answers count as collisions.
-        timeout_s: Seconds a solve may search before it returns its best try; None: until
-            its attempts are made.
-        relative_to: The link targets are given in, where it stands at the start
-            configuration; None: the root link.
-    """
-
-    robot: RobotSource
-    frame: str | None = None
-    start: tuple[tuple[str, float], ...] = ()
-    seed: int | None = None
-    with_base: bool = False
-    settings: IkSettings = field(default_factory=IkSettings)
-    deg: bool = False
-    clamp: bool = False
-    collisions: CollisionOptions = field(default_factory=CollisionOptions)
-    timeout_s: float | None = None
-    relative_to: str | None = None
 
 
 @dataclass(frozen=True)
@@ -112,153 +43,6 @@ class IkRequest:
 
     problem: IkProblem
     target: TargetSpec
-
-
-@dataclass(frozen=True)
-class IkOutcome:
-    """One solve: the solver's result, how long it took, and why it failed.
-
-    Attributes:
-        result: The answer or the best try.
-        elapsed_s: Solve time [s].
-        hint: Why the target was not reached; None when it was.
-    """
-
-    result: IkResult
-    elapsed_s: float
-    hint: str | None
-
-    @property
-    def success(self) -> bool:
-        """The target was reached."""
-        return self.result.success
-
-
-class IkSession:
-    """The model, solver, start configuration and random generator of one command.
-
-    Attributes:
-        robot: The description.
-        space: Joint space solved on (with the planar base for ``with_base``).
-        solver: The IK solver for the chain of the frame.
-        start: Full configuration to start from.
-        deg: Angles in degrees for the user.
-        notes: Lines for stderr: the frame picked, start values clamped.
-    """
-
-    def __init__(self, problem: IkProblem, clock: Clock, *, compiled: bool = False,
-                 on_compiled: Callable[[float], None] | None = None) -> None:
-        """Load the robot and build everything a solve needs.
-
-        With ``compiled``, attempts run in the compiled loop where it can (see
-        :class:`~servicebot_cli.kinematics.inverse.IkSolver`): worth it for many targets,
-        since the first process on a machine compiles it (seconds) at its first solve, and
-        ``on_compiled`` then hears how many seconds that took.
-
-        Raises:
-            DescriptionError: The robot cannot be loaded.
-            FrameNotFound: The frame is not a link.
-            JointNotFound, OutOfLimits: A bad start value (without ``clamp``).
-        """
-        robot = load(problem.robot)
-        frame, note = pick_frame(robot, problem.frame)
-        model = robot.model_with_base("planar") if problem.with_base else robot.model
-        space = JointSpace.of(model, robot.movable_joints) if problem.with_base \
-            else robot.joint_space
-        chain = Chain(model, space, frame, link_names(robot))
-        values, clamped = clamped_user_vector(
-            space, problem.start, deg=problem.deg, clamp=problem.clamp,
-            fixed=[j.name for j in robot.joints if not j.movable])
-        # a start is a starting point: joints it does not name start inside their limits
-        self.robot: RobotDescription = robot
-        self.space = space
-        check = collision_check(robot, model, problem.robot, problem.collisions, chain.names)
-        self.solver = IkSolver(chain, problem.settings, check, compiled=compiled,
-                             on_compiled=on_compiled)
-        self.start: FloatArray = space.to_q(space.clamped(values))
-        self.deg = problem.deg
-        self.notes = (*((note,) if note else ()), *(c.note() for c in clamped))
-        self.target_frame = None if problem.relative_to is None else TargetFrame.at(
-            model, self.start, problem.relative_to, link_names(robot))
-        self._rng = np.random.default_rng(problem.seed)
-        self._clock = clock
-        self._timeout_s = problem.timeout_s
-
-    @property
-    def frame(self) -> str:
-        """The frame solved for."""
-        return self.solver.chain.frame_name
-
-    @property
-    def relative_to(self) -> str:
-        """The frame targets are given in."""
-        return self.robot.root_link or "" if self.target_frame is None else \
-            self.target_frame.name
-
-    def in_root(self, target: IkTarget) -> IkTarget:
-        """``target``, given in :attr:`relative_to`, in the frame :meth:`solve` takes.
-
-        Raises:
-            BadTarget: Orientation angles left free in a turned ``relative_to`` frame.
-        """
-        return target if self.target_frame is None else self.target_frame.to_root(target)
-
-    def solve(self, target: IkTarget, start: FloatArray) -> IkOutcome:
-        """Solve for ``target`` from ``start``; with a hint when it was not reached.
-
-        ``target`` is in the root link's frame (see :meth:`in_root`).
-        """
-        clock, timeout_s = self._clock, self._timeout_s
-        begin = clock()
-        stop = None if timeout_s is None else lambda: clock() - begin > timeout_s
-        result = self.solver.solve(target, start, self._rng, stop)
-        elapsed_s = clock() - begin
-        why = None if result.success else collision_hint(result.contact) if result.contact \
-            else timeout_hint(timeout_s, result.attempts) if result.stopped and timeout_s \
-            else hint(self.solver, target, start, self._rng)
-        return IkOutcome(result, elapsed_s, why)
-
-    def solve_series(self, targets: Sequence[IkTarget], start: FloatArray) -> list[IkOutcome]:
-        """:meth:`solve` each target in turn, each from the last success.
-
-        The first starts from ``start``. The outcomes are the same, with runs of targets
-        solved in one compiled call where the settings allow it (see
-        :mod:`~servicebot_cli.kinematics.series`).
-
-        A target solved in such a run is given its share of the run's time as ``elapsed_s``.
-        """
-        compiled = None if self._timeout_s is not None else series_search(self.solver,
-                                                                            self._rng)
-        if compiled is None:
-            return self._one_by_one(targets, start)
-        outcomes: list[IkOutcome] = []
-        while len(outcomes) < len(targets):
-            begin = self._clock()
-            results = solve_leading(self.solver, compiled, targets[len(outcomes):], start,
-                                    self._rng)
-            share_s = (self._clock() - begin) / max(1, len(results))
-            outcomes.extend(IkOutcome(result, share_s, None) for result in results)
-            if results:
-                start = results[-1].q
-            if len(outcomes) < len(targets):
-                outcome = self.solve(targets[len(outcomes)], start)
-                outcomes.append(outcome)
-                if outcome.success:
-                    start = outcome.result.q
-        return outcomes
-
-    def _one_by_one(self, targets: Sequence[IkTarget], start: FloatArray) -> list[IkOutcome]:
-        outcomes = []
-        for target in targets:
-            outcome = self.solve(target, start)
-            if outcome.success:
-                start = outcome.result.q
-            outcomes.append(outcome)
-        return outcomes
-
-    def values(self, outcome: IkOutcome) -> JsonObject:
-        """``outcome`` as JSON values in the user's units (see :func:`outcome_values`)."""
-        return outcome_values(self.space, outcome, self.deg)
 
 
 @dataclass(frozen=True)
@@ -291,46 +75,6 @@ class IkAnswer:
         return self.outcome.success
 
 
-_COMPILED_S = 1.0  # the compiled loop takes longer than this to be ready only when compiled
-
-
-def compile_note(ready_s: float) -> tuple[str, ...]:
-    """A line for stderr when the compiled loop had to be compiled, which happens once."""
-    if ready_s < _COMPILED_S:
-        return ()
-    return (f"compiled the IK loop in {ready_s:.1f} s; later runs load it from numba's cache",)
-
-
-def collision_check(robot: RobotDescription, model: pin.Model, source: RobotSource,
-                    options: CollisionOptions, moving: tuple[str, ...]) -> CollisionCheck | None:
-    """The collision check ``options`` ask for on ``model``, of the pairs ``moving`` moves.
-
-    None when turned off.
-
-    Raises:
-        BadSrdf: An unreadable SRDF, or one that names a link the robot does not have.
-        CollisionSetupError: A collision mesh that cannot be read.
-    """
-    if not options.check:
-        return None
-    disabled = robot_disabled_pairs(options.srdf, robot)
-    return build_check(robot, model, source.resolver(), disabled=disabled, moving=moving,
-                       floor=is_mobile(robot))
-
-
-def is_mobile(robot: RobotDescription) -> bool:
-    """Whether ``robot`` stands on wheels, and so on a floor its links must stay above.
-
-    A fixed arm has no floor: it may be mounted on a table, a pedestal or a wall, and reach
-    below its base plane.
-    """
-    try:
-        drive_geometry(robot)
-    except DescriptionError:
-        return False
-    return True
-
-
 def run(request: IkRequest, *, clock: Clock) -> IkAnswer:
     """Solve one target, from the request's start configuration.
 
@@ -348,28 +92,3 @@ def run(request: IkRequest, *, clock: Clock) -> IkAnswer:
                     session.space, session.solve(session.in_root(target), session.start),
                     problem.deg,
                     session.notes)
-
-
-def base_pose(space: JointSpace, q: FloatArray) -> tuple[float, float, float] | None:
-    """Where a planar base stands in ``q``: ``x`` [m], ``y`` [m], ``yaw`` [rad]; None without."""
-    if not space.base_nq:
-        return None
-    return float(q[0]), float(q[1]), math.atan2(q[3], q[2])
-
-
-def outcome_values(space: JointSpace, outcome: IkOutcome, deg: bool) -> JsonObject:
-    """A solve as JSON values: joints (and base) in the user's units, errors, effort, hint."""
-    result = outcome.result
-    pose = base_pose(space, result.q)
-    base: JsonObject | None = None
-    if pose is not None:
-        x, y, yaw = pose
-        base = {"x_m": x, "y_m": y,
-                f"yaw_{'deg' if deg else 'rad'}": math.degrees(yaw) if deg else yaw}
-    return {"success": result.success,
-            "joints": user_values(space, space.from_q(result.q), deg=deg),
-            "base": base, "position_error_m": result.position_error_m,
-            "orientation_error_rad": result.orientation_error_rad,
-            "iterations": result.iterations, "attempts": result.attempts,
-            "solutions": result.solutions, "solve_time_s": outcome.elapsed_s,
-            "hint": outcome.hint}

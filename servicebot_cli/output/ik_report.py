@@ -20,7 +20,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from servicebot_cli.common.jsonable import dumps
-from servicebot_cli.kinematics.ik import IkAnswer, base_pose, outcome_values
+from servicebot_cli.kinematics.ik import IkAnswer
+from servicebot_cli.kinematics.ik_outcome import base_pose, outcome_values
 from servicebot_cli.kinematics.rotations import rpy_from_matrix
 from servicebot_cli.kinematics.user_joints import angular, user_values
 from servicebot_cli.output.table import format_number, table

@@ -51,7 +51,7 @@ def fk_csv(result: FkResult) -> str:
 
 def ik_csv(answer: IkAnswer) -> str:
     """An ``ik`` answer: one row, the joints (and base) in the user's units."""
-    from servicebot_cli.kinematics.ik import outcome_values
+    from servicebot_cli.kinematics.ik_outcome import outcome_values
 
     values = outcome_values(answer.space, answer.outcome, answer.deg)
     row: dict[str, JsonValue] = {"success": values["success"]}

@@ -12,14 +12,9 @@ import pytest
 
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.kinematics.collisions import FLOOR, Contact, build_check
-from servicebot_cli.kinematics.ik import (
-    CollisionOptions,
-    IkProblem,
-    IkRequest,
-    TargetSpec,
-    is_mobile,
-    run,
-)
+from servicebot_cli.kinematics.ik import IkRequest, TargetSpec, run
+from servicebot_cli.kinematics.ik_problem import CollisionOptions, IkProblem
+from servicebot_cli.kinematics.ik_session import is_mobile
 from tests.conftest import SIM_URDF, assert_one_line_error
 from tests.kinematics.robots import UR5
 

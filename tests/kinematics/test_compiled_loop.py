@@ -20,7 +20,7 @@ from servicebot_cli.kinematics import lm_pose
 from servicebot_cli.kinematics.chain import Chain
 from servicebot_cli.kinematics.chain_arrays import chain_arrays
 from servicebot_cli.kinematics.frames import link_names
-from servicebot_cli.kinematics.ik import compile_note
+from servicebot_cli.kinematics.ik_session import compile_note
 from servicebot_cli.kinematics.inverse import IkSettings, IkSolver, IkTarget
 from tests.conftest import REPO, SIM_URDF
 from tests.kinematics.robots import ARMS, robot_and_chain, tool_pose

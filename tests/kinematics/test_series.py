@@ -15,7 +15,8 @@ import pytest
 
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.kinematics import series
-from servicebot_cli.kinematics.ik import CollisionOptions, IkProblem, IkSession
+from servicebot_cli.kinematics.ik_problem import CollisionOptions, IkProblem
+from servicebot_cli.kinematics.ik_session import IkSession
 from servicebot_cli.kinematics.inverse import IkSettings, IkTarget
 from tests.kinematics.robots import ARMS, random_values, tool_pose
 

@@ -13,7 +13,8 @@ import json
 import numpy as np
 
 from servicebot_cli.description.loader import RobotSource
-from servicebot_cli.kinematics.ik import IkProblem, IkSession
+from servicebot_cli.kinematics.ik_problem import IkProblem
+from servicebot_cli.kinematics.ik_session import IkSession
 from servicebot_cli.kinematics.inverse import IkSettings, IkTarget
 from servicebot_cli.kinematics.rotations import matrix_from_rpy
 from tests.conftest import SIM_URDF, assert_one_line_error
