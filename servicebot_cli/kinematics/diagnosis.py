@@ -11,7 +11,8 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.kinematics.chain import Chain
-from servicebot_cli.kinematics.collisions import FLOOR, Contact
+from servicebot_cli.kinematics.collision_floor import FLOOR
+from servicebot_cli.kinematics.collisions import Contact
 from servicebot_cli.kinematics.inverse import IkSolver, IkTarget
 
 FloatArray = npt.NDArray[np.float64]

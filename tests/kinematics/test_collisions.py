@@ -11,7 +11,8 @@ import pinocchio as pin
 import pytest
 
 from servicebot_cli.description.loader import RobotSource, load
-from servicebot_cli.kinematics.collisions import FLOOR, Contact, build_check
+from servicebot_cli.kinematics.collision_floor import FLOOR
+from servicebot_cli.kinematics.collisions import Contact, build_check
 from servicebot_cli.kinematics.ik import IkRequest, TargetSpec, run
 from servicebot_cli.kinematics.ik_problem import CollisionOptions, IkProblem
 from servicebot_cli.kinematics.ik_session import is_mobile
