@@ -162,7 +162,8 @@ def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> T
     from servicebot_cli.inspect import totals as t
     from servicebot_cli.inspect.geometry import mesh_library
     from servicebot_cli.inspect.poses import link_transforms
-    from servicebot_cli.kinematics.drive_geometry import chassis_joints, drive_geometry
+    from servicebot_cli.kinematics.drive_geometry import drive_geometry
+    from servicebot_cli.kinematics.running_gear import chassis_joints
 
     notes: list[str] = []
     try:
