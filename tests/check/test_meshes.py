@@ -101,7 +101,7 @@ OBJ_SHAPES = {
 
 def _obj_triangles(text: bytes) -> np.ndarray:
     """The OBJ's triangles (n, 3, 3), from its vertex table and faces."""
-    from servicebot_cli.description.mesh_readers import read_obj_indexed
+    from servicebot_cli.description.mesh_obj import read_obj_indexed
 
     vertices, faces = read_obj_indexed(text)
     return vertices[faces] if len(faces) else np.zeros((0, 3, 3))
@@ -159,7 +159,8 @@ def _collada(meter: str) -> bytes:
 @pytest.mark.parametrize("meter", ["1", "0.001", "-2"])
 def test_collada_bounds_of_placed_and_scaled_parts_are_the_triangles_bounds(meter):
     """An identity node, a moved and turned one, and units of any sign: the same box both ways."""
-    from servicebot_cli.description.mesh_readers import bounds, read_dae, read_dae_bounds
+    from servicebot_cli.description.mesh_arrays import bounds
+    from servicebot_cli.description.mesh_collada import read_dae, read_dae_bounds
 
     data = _collada(meter)
     count, lower, upper = read_dae_bounds(data)
@@ -173,7 +174,7 @@ def test_collada_bounds_of_placed_and_scaled_parts_are_the_triangles_bounds(mete
 
 def _soup_and_indexed(text: bytes, with_mass: bool):
     from servicebot_cli.check.meshes import summarise, summarise_indexed
-    from servicebot_cli.description.mesh_readers import read_obj_indexed
+    from servicebot_cli.description.mesh_obj import read_obj_indexed
 
     return summarise(_obj_triangles(text), with_mass), \
         summarise_indexed(*read_obj_indexed(text), with_mass=with_mass)
