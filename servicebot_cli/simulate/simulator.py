@@ -187,7 +187,7 @@ class _Run:
         arm_q0 = check_scenario(body, scenario, solids, meshes, self.tester)
         geometry, ctrl, start = body.geometry, scenario.controller, scenario.initial_pose
         self.planner = WheelPlanner(scenario.cmd_vel, ctrl, geometry, scenario.duration_s,
-                                    scenario.speed_limiter)
+                                    scenario.speed_limiter, scenario.classic_drive)
         self.dt_s, self.ticks = self.planner.dt_s, self.planner.ticks
         self.arm = _arm_motion(body, scenario, arm_q0, self.dt_s)
         self.motion = blocking.BlockedMotion((start.x_m, start.y_m, start.yaw_rad), self.dt_s,
@@ -249,13 +249,18 @@ class _Run:
                              if "scan" in self.clocks else None))
         sides = self._wheel_angles(plan)
         odom_path, odom_before = self.odometer.advance(first, plan.left_rad_s, plan.right_rad_s)
+        odom_times = self.clocks["odometry"].take(stop)
+        drive = self.scenario.classic_drive
+        odom = odometry.in_world(truth, odom_times, self.twist_before, body.base_height_m) \
+            if drive is not None and drive.world_odometry else \
+            odometry.published(odom_path, odom_times, odom_before)
         names, positions = _joint_positions(body, sides, arm_q)
         camera_times = self.clocks["camera"].take(stop) if "camera" in self.clocks \
             else np.zeros(0)
         piece = SimResult(
             body, self.scenario, self.seed, self.solids, [o.name for o in self.tester.world],
             plan, truth, contacts, [],
-            sides, odometry.published(odom_path, self.clocks["odometry"].take(stop), odom_before),
+            sides, odom,
             joint_states.at_times(names, positions, self.dt_s,
                                   self.clocks["joints"].take(stop), first),
             arm_q, NO_CLEARANCE, None,

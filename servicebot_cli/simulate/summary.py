@@ -99,8 +99,14 @@ def _pose(x: float, y: float, yaw: float) -> Pose:
 
 
 def odometry_in_world(result: SimResult) -> tuple[FloatArray, FloatArray, FloatArray]:
-    """The odometry estimate moved into the world frame (odom starts at the initial pose)."""
+    """The odometry estimate in the world frame.
+
+    Dead reckoning's ``odom`` frame starts at the initial pose; odometry from the world
+    (Gazebo Classic's WORLD source) is in the world already.
+    """
     start, odom = result.scenario.initial_pose, result.odometry
+    if odom.in_world:
+        return odom.x_m, odom.y_m, odom.yaw_rad
     c, s = math.cos(start.yaw_rad), math.sin(start.yaw_rad)
     return (start.x_m + c * odom.x_m - s * odom.y_m, start.y_m + s * odom.x_m + c * odom.y_m,
             start.yaw_rad + odom.yaw_rad)

@@ -227,13 +227,14 @@ def _odometry(result: SimResult, frames: tuple[str, str] | None = None) -> ByteR
                         ("linear", 3), ("angular", 3), ("twist_covariance", 36)):
         layout.field(name, "<f8", count)
     zeros = np.zeros_like(odom.x_m)
+    lateral = zeros if odom.lateral_m_s is None else odom.lateral_m_s
     controller = result.scenario.controller  # the diagonals diff_drive_controller publishes
     return _serialize(layout, odom.times_s, {
         "pose_covariance": np.diag(controller.pose_covariance_diagonal).ravel(),
         "twist_covariance": np.diag(controller.twist_covariance_diagonal).ravel(),
-        "position": np.column_stack((odom.x_m, odom.y_m, zeros)),
+        "position": np.column_stack((odom.x_m, odom.y_m, zeros + odom.z_m)),
         "orientation": rotations.yaw(odom.yaw_rad),
-        "linear": np.column_stack((odom.linear_m_s, zeros, zeros)),
+        "linear": np.column_stack((odom.linear_m_s, lateral, zeros)),
         "angular": np.column_stack((zeros, zeros, odom.angular_rad_s))})
 
 

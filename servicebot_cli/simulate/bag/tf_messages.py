@@ -67,7 +67,7 @@ def tf_base(result: SimResult, frames: tuple[str, str] | None = None) -> ByteRow
     zeros = np.zeros_like(odom.x_m)
     parent, child = frames or (ODOM_FRAME, result.body.root_link)
     return tf_messages([(parent, child)], odom.times_s,
-                        [np.column_stack((odom.x_m, odom.y_m, zeros))],
+                        [np.column_stack((odom.x_m, odom.y_m, zeros + odom.z_m))],
                         [rotations.yaw(odom.yaw_rad)])
 
 

@@ -26,6 +26,7 @@ from servicebot_cli.description.ros_parameters import (
     controller_types,
     node_parameters,
 )
+from servicebot_cli.simulate.controllers.classic_drive import ClassicDrive
 from servicebot_cli.simulate.controllers.limiter import DIFF_DRIVE_CONTROLLER
 
 if TYPE_CHECKING:
@@ -62,6 +63,8 @@ class ControllersFile:
     """The odometry's ``header.frame_id`` and the odom tf's parent; None: ``odom``."""
     base_frame: str | None = None
     """The odometry's ``child_frame_id`` and the odom tf's child; None: the root link."""
+    classic_drive: ClassicDrive | None = None
+    """Gazebo Classic's diff-drive plugin's odometry source and wheel ramp, when it drives."""
 
     @property
     def label(self) -> str:

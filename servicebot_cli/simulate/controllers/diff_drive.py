@@ -10,7 +10,9 @@ and the wheel speeds are saturated at the URDF's velocity limit: both sides scal
 Commands are piecewise constant, so the sequential part (rate limiting) only steps tick by
 tick while a value is ramping; constant stretches are filled in one numpy operation. A run is
 planned a stretch of ticks at a time (:class:`WheelPlanner`); the limiter's state carries over.
-A base that gz-sim's DiffDrive system drives runs gz-math's limiter instead (:mod:`.limiter`).
+A base that gz-sim's DiffDrive system drives runs gz-math's limiter instead (:mod:`.limiter`);
+one that Gazebo Classic's diff-drive plugin drives with a wheel acceleration limit has its
+wheel speeds ramped as the plugin does (:mod:`.classic_drive`).
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ import numpy.typing as npt
 
 from servicebot_cli.kinematics import diff_drive
 from servicebot_cli.kinematics.drive_geometry import DriveGeometry
+from servicebot_cli.simulate.controllers.classic_drive import ClassicDrive, WheelRamp
 from servicebot_cli.simulate.controllers.limiter import (
     DIFF_DRIVE_CONTROLLER,
     AxisLimits,
@@ -84,7 +87,8 @@ class WheelPlanner:
 
     def __init__(self, segments: Sequence[CmdVel], controller: Controller,
                  geometry: DriveGeometry, duration_s: float,
-                 limiter: str = DIFF_DRIVE_CONTROLLER) -> None:
+                 limiter: str = DIFF_DRIVE_CONTROLLER,
+                 classic_drive: ClassicDrive | None = None) -> None:
         c = controller
         self.segments, self.controller, self.geometry = segments, controller, geometry
         self.dt_s = 1.0 / c.update_rate_hz
@@ -97,6 +101,9 @@ class WheelPlanner:
             limiter, c.min_angular_velocity_rad_s, c.max_angular_velocity_rad_s,
             c.min_angular_acceleration_rad_s2, c.max_angular_acceleration_rad_s2,
             c.min_angular_jerk_rad_s3, c.max_angular_jerk_rad_s3), self.dt_s)
+        self.ramp = None
+        if classic_drive is not None and classic_drive.wheel_acceleration_m_s2 > 0:
+            self.ramp = WheelRamp(classic_drive, self.dt_s, geometry.wheel_radius_m)
 
     def plan(self, ticks: range) -> WheelPlan:
         """The plan of ``ticks``, which must follow the ticks planned before."""
@@ -104,6 +111,12 @@ class WheelPlanner:
                                              self.controller.cmd_vel_timeout_s)
         linear, angular = self.linear.run(target_v), self.angular.run(target_w)
         left, right = _saturated_wheels(linear, angular, self.controller, self.geometry)
+        if self.ramp is not None:  # the plugin's wheels ramp: the twist is what they make
+            left, right = self.ramp.run(ticks.start, left, right)
+            linear, angular = (np.asarray(v, float) for v in diff_drive.body_twist(
+                left, right,  # type: ignore[arg-type]  # plain arithmetic on arrays
+                wheel_radius_m=self.geometry.wheel_radius_m,
+                track_m=self.geometry.track_m * self.controller.wheel_separation_multiplier))
         return WheelPlan(self.dt_s, target_v, target_w, linear, angular, left, right)
 
 

@@ -9,7 +9,8 @@ rate, with its limits and covariances:
   ``<updateRate>``), the odometry's rate here (the simulator's control loop stays its own:
   Gazebo's sensors do not wait for the plugin); the odometry's pose and twist covariances
   are ``<covariance_x>``, ``<covariance_y>`` and ``<covariance_yaw>`` (defaults 1e-5, 1e-5,
-  1e-3) with 1e12 for z, roll and pitch. It publishes odometry only with
+  1e-3) with 1e12 for z, roll and pitch; its odometry source and wheel acceleration are
+  :mod:`.classic_drive`'s. It publishes odometry only with
   ``<publish_odom>true`` and odom -> base on /tf only with ``<publish_odom_tf>true`` (ROS 1:
   both by default).
 - gz-sim's ``DiffDrive`` system (gz-sim's ``DiffDrive.cc``): commands the wheels at every
@@ -37,7 +38,9 @@ from servicebot_cli.description.model_plugins import (
     model_plugin_rows,
     odometry_frames,
     publishes_odom_tf,
+    ros1_plugin,
 )
+from servicebot_cli.simulate.controllers.classic_drive import ClassicDrive, world_source
 from servicebot_cli.simulate.controllers.config import (
     ControllersFile,
     ControllersFileError,
@@ -83,6 +86,7 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
     label = f"Gazebo plugin {plugin.filename or plugin.name}"
     where = f"{robot.display}: {label}"
     values: dict[str, Any] = {"cmd_vel_timeout_s": math.inf}  # neither plugin has one
+    classic_drive = None
     classic = diff_drive_kind(plugin) == "classic"
     if classic:
         rate = _number(plugin, where, "update_rate", "updateRate", default=100.0)
@@ -92,6 +96,7 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
                      for axis, default in (("x", 1e-5), ("y", 1e-5), ("yaw", 1e-3)))
         diagonal = (x, y, _UNKNOWN_AXES, _UNKNOWN_AXES, _UNKNOWN_AXES, yaw)
         values["pose_covariance_diagonal"] = values["twist_covariance_diagonal"] = diagonal
+        classic_drive = _classic_drive(plugin, where, rate)
     else:
         rate = _number(plugin, where, "odom_publish_frequency", default=50.0)
         if rate > 0:
@@ -106,7 +111,22 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
                            odom_frame=odom_frame, base_frame=base_frame,
                            publishes_odometry=topic is not None,
                            odom_tf=publishes_odom_tf(plugin) if classic else True,
-                           speed_limiter=DIFF_DRIVE_CONTROLLER if classic else GZ_MATH)
+                           speed_limiter=DIFF_DRIVE_CONTROLLER if classic else GZ_MATH,
+                           classic_drive=classic_drive)
+
+
+def _classic_drive(plugin: Plugin, where: str, rate_hz: float) -> ClassicDrive:
+    """The Classic plugin's odometry source and wheel limits (:mod:`.classic_drive`)."""
+    ros1 = ros1_plugin(plugin)
+    source = param(plugin.params, "odometrySource" if ros1 else "odometry_source")
+    return ClassicDrive(
+        world_odometry=world_source(source, ros1=ros1),
+        wheel_acceleration_m_s2=_number(
+            plugin, where, "wheelAcceleration" if ros1 else "max_wheel_acceleration",
+            default=0.0),
+        wheel_torque_nm=_number(plugin, where, "wheelTorque" if ros1 else "max_wheel_torque",
+                                default=5.0),
+        update_rate_hz=rate_hz, ros1=ros1)
 
 
 def _gz_limits(plugin: Plugin, where: str) -> dict[str, float]:

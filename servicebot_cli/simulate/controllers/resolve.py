@@ -57,4 +57,5 @@ def resolve(scenario: Scenario, file: ControllersFile) -> Scenario:
         scenario.rates, joint_states_hz=min(scenario.rates.joint_states_hz, control_hz))
     return dataclasses.replace(scenario, controller=controller, rates=rates,
                                controller_from=tuple(origin.items()),
-                               speed_limiter=file.speed_limiter)
+                               speed_limiter=file.speed_limiter,
+                               classic_drive=file.classic_drive)

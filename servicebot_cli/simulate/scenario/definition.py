@@ -11,12 +11,16 @@ import dataclasses
 import math
 from dataclasses import dataclass, field
 from pathlib import Path as FsPath
+from typing import TYPE_CHECKING
 
 from servicebot_cli.common.inputs import read_input_text
 from servicebot_cli.simulate.scenario.camera import CameraImages, read_camera
 from servicebot_cli.simulate.scenario.colour import Color, read_color
 from servicebot_cli.simulate.scenario.located import Located, Path, ScenarioError, parse
 from servicebot_cli.simulate.scenario.schema import Reader
+
+if TYPE_CHECKING:
+    from servicebot_cli.simulate.controllers.classic_drive import ClassicDrive
 
 DEFAULT_SCENARIO = FsPath(__file__).with_name("default_scenario.yaml")
 SATURATIONS = ("keep-curvature", "per-wheel")
@@ -190,6 +194,8 @@ class Scenario:
     """Each controller field and where its value came from, once resolved."""
     speed_limiter: str = "diff_drive_controller"
     """Whose speed limiter the base runs (``gz-math`` under gz-sim's DiffDrive), once resolved."""
+    classic_drive: ClassicDrive | None = None
+    """Gazebo Classic's diff-drive plugin, when it drives the base, once resolved."""
 
 
 def load_scenario(path: str | FsPath | None) -> Scenario:

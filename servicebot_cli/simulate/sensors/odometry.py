@@ -4,6 +4,9 @@ Each control tick the controller reads how far the left and right wheels turned,
 into a body twist with its own ``wheel_separation * multiplier`` and wheel radius, and
 integrates the arc exactly. The floor's slip is unknown to it, so with slip configured (or a
 multiplier that does not match the floor) the odometry drifts from the ground truth.
+
+Gazebo Classic's diff-drive plugin with its default ``odometry_source`` (WORLD) publishes the
+ground truth instead (:func:`in_world`; gazebo_ros_pkgs' ``UpdateOdometryWorld``).
 """
 
 from __future__ import annotations
@@ -21,7 +24,12 @@ FloatArray = npt.NDArray[np.float64]
 
 @dataclass(frozen=True)
 class Odometry:
-    """Odometry messages: pose in the ``odom`` frame (starts at zero) and body twist."""
+    """Odometry messages: pose in the ``odom`` frame and body twist.
+
+    Dead reckoning starts at zero; odometry from the world (``in_world``) is the base's pose
+    in the world, at the height ``z_m`` of its origin, with a sideways speed
+    ``lateral_m_s`` (None: zero).
+    """
 
     times_s: FloatArray
     x_m: FloatArray
@@ -29,6 +37,9 @@ class Odometry:
     yaw_rad: FloatArray
     linear_m_s: FloatArray
     angular_rad_s: FloatArray
+    in_world: bool = False
+    z_m: float = 0.0
+    lateral_m_s: FloatArray | None = None
 
 
 class Odometer:
@@ -74,3 +85,21 @@ def published(path: motion.Path2D, times_s: FloatArray,
     linear = np.concatenate(([first_v], path.linear_m_s))
     angular = np.concatenate(([first_w], path.angular_rad_s))
     return Odometry(times_s, path.x_m[k], path.y_m[k], path.yaw_rad[k], linear[k], angular[k])
+
+
+def in_world(truth: motion.Path2D, times_s: FloatArray, before: tuple[float, float],
+             height_m: float) -> Odometry:
+    """Gazebo Classic's WORLD odometry at ``times_s``: the model's true pose and velocity.
+
+    The pose is the base's in the world at the latest tick start, at ``height_m`` (its
+    origin's height); the twist is the world velocity of the tick before (``before`` for
+    ``truth``'s first tick), turned into the base frame as the plugin does it, with the
+    heading as a C ``float``: ``x = cosf(yaw) vx + sinf(yaw) vy``,
+    ``y = cosf(yaw) vy - sinf(yaw) vx``.
+    """
+    seen = published(truth, times_s, before)
+    yaw = np.asarray(np.remainder(seen.yaw_rad + np.pi, 2 * np.pi) - np.pi, np.float32)
+    c, s = np.cos(yaw).astype(float), np.sin(yaw).astype(float)
+    vx, vy = seen.linear_m_s * np.cos(seen.yaw_rad), seen.linear_m_s * np.sin(seen.yaw_rad)
+    return Odometry(times_s, seen.x_m, seen.y_m, seen.yaw_rad, c * vx + s * vy,
+                    seen.angular_rad_s, in_world=True, z_m=height_m, lateral_m_s=c * vy - s * vx)
