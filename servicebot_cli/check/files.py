@@ -17,7 +17,7 @@ from pathlib import Path
 
 from servicebot_cli.description.install_layout import installed_source
 from servicebot_cli.description.loader import without_comments
-from servicebot_cli.description.packages import holding_package
+from servicebot_cli.description.package_dirs import holding_package
 from servicebot_cli.description.robot import is_xacro_name
 
 SUFFIXES = (".urdf", ".urdf.xml", ".xacro")

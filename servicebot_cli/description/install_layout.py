@@ -15,7 +15,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 
-from servicebot_cli.description.packages import holding_package
+from servicebot_cli.description.package_dirs import holding_package
 
 _COMMENT = re.compile(r"#[^\n]*")
 _INSTALL = re.compile(r"\binstall\s*\(([^)]*)\)", re.IGNORECASE)

@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 
 from servicebot_cli.description.install_layout import directory_rules
-from servicebot_cli.description.packages import package_name
+from servicebot_cli.description.package_dirs import package_name
 from tests.check.corpus import check_urdf_commands
 from tests.check.helpers import findings
 from tests.conftest import REPO

@@ -1,0 +1,91 @@
+"""ROS packages on disk: package.xml names, the holding package, workspaces, crawling.
+
+These are the pieces :class:`~servicebot_cli.description.packages.PackageResolver` searches
+with: a package is a directory with a ``package.xml``, named by its ``<name>``; a workspace
+is found as colcon finds it, and crawled as colcon crawls it.
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+import re
+from pathlib import Path
+
+_NAME_RE = re.compile(rb"<name>\s*([^<\s]+)\s*</name>")
+_CRAWL_DEPTH = 8  # src/<group>/<repo>/<pkg> and deeper vendored trees, and still instant
+_SKIP_DIRS = {"build", "install", "log", "node_modules", "__pycache__", "site-packages"}
+_IGNORE_MARKERS = ("COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE")
+_CRAWL_BUDGET = 5000  # directories visited under one root: a home directory stays instant
+
+
+def holding_package(directory: Path) -> tuple[str, Path] | None:
+    """The name and directory of the nearest package at or above ``directory``."""
+    for ancestor in (directory, *directory.parents):
+        name = package_name(ancestor)
+        if name is not None:
+            return name, ancestor
+    return None
+
+
+def workspace_root(directory: Path) -> Path | None:
+    """Where the packages of ``directory``'s workspace are looked for.
+
+    The colcon workspace (the directory whose ``src/`` holds ``directory``), else the
+    repository root (the nearest directory with ``.git``), else the directory above the
+    package that holds ``directory``; None when there is none of these.
+    """
+    ancestors = (directory, *directory.parents)
+    for ancestor in ancestors:
+        if ancestor.name == "src" and ancestor.parent != ancestor:
+            return ancestor.parent
+    for ancestor in ancestors:
+        if (ancestor / ".git").exists():
+            return ancestor
+    holder = holding_package(directory)
+    return None if holder is None else holder[1].parent
+
+
+def package_name(directory: Path) -> str | None:
+    """The package's ``<name>`` if ``directory`` holds a package.xml, else None."""
+    manifest = directory / "package.xml"
+    try:
+        head = manifest.read_bytes()[:65536]
+    except OSError:
+        return None
+    match = _NAME_RE.search(head)
+    return match.group(1).decode("utf-8", "replace") if match else directory.name
+
+
+@functools.lru_cache(maxsize=64)
+def packages_under(root: Path) -> dict[str, Path]:
+    """Every package at or under ``root`` by name, nearest first; packages do not nest.
+
+    Hidden directories, build products and trees marked ``COLCON_IGNORE``, ``AMENT_IGNORE``
+    or ``CATKIN_IGNORE`` are skipped, as colcon skips them. Cached for the process.
+    """
+    found: dict[str, Path] = {}
+    frontier = [root]
+    budget = _CRAWL_BUDGET
+    for _ in range(_CRAWL_DEPTH):
+        next_frontier: list[Path] = []
+        for directory in frontier:
+            budget -= 1
+            if budget < 0:
+                return found
+            if any((directory / marker).exists() for marker in _IGNORE_MARKERS):
+                continue
+            name = package_name(directory)
+            if name is not None:
+                found.setdefault(name, directory)
+                continue
+            try:
+                children = sorted(os.scandir(directory), key=lambda e: e.name)
+            except OSError:
+                continue
+            next_frontier.extend(
+                Path(entry.path) for entry in children
+                if entry.is_dir() and not entry.name.startswith(".")
+                and entry.name not in _SKIP_DIRS)
+        frontier = next_frontier
+    return found
