@@ -137,11 +137,17 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
 
 def _mount(robot: RobotDescription, types: tuple[str, ...], read: Callable[[Sensor], SpecT],
            placement: Placement) -> Mounted[SpecT] | None:
-    """The first sensor of ``types``; of ray sensors, the one with the most rays.
+    """The first sensor of ``types``; of ray sensors, the published one with the most rays.
 
-    A Create 3 base (TurtleBot 4) declares one-ray cliff and IR sensors before its LIDAR.
+    A Create 3 base (TurtleBot 4) declares one-ray cliff and IR sensors before its LIDAR. A
+    ray sensor is published on ROS only through a Gazebo ROS plugin (Classic) or gz-sim's
+    ``<topic>`` (:func:`~servicebot_cli.description.sensors.lidar_spec`'s topic, what
+    ``inspect --section topics`` lists); one without either, a kobuki's cliff sensor, publishes
+    nothing, so it is not the LIDAR whose scans the run publishes.
     """
     found = [s for s in robot.sensors if s.type in types and s.reference]
+    if types == LIDAR_TYPES:
+        found = [s for s in found if lidar_spec(s).topic is not None]
     if not found:
         return None
     sensor = max(found, key=_rays) if types == LIDAR_TYPES else found[0]
