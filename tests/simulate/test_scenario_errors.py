@@ -99,6 +99,16 @@ def test_bad_field(run, tmp_path, name, text, line, message):
     assert f"{path}{line}" in error
 
 
+@pytest.mark.parametrize(("name", "text"), [("run.yaml", ""), ("run.yaml", "# to do\n"),
+                                          ("run.json", "{}"), ("run.yaml", "{}\n")])
+def test_a_scenario_file_with_nothing_in_it_says_so(run, tmp_path, name, text):
+    path = tmp_path / name
+    path.write_text(text)
+    assert_one_line_error(run("simulate", "--headless", "-s", path), 2,
+                          f"{path}: holds no scenario (it is empty, or only comments)",
+                          "servicebot simulate --print-scenario")
+
+
 def test_missing_scenario_file(run, tmp_path):
     assert_one_line_error(run("simulate", "--headless", "-s", tmp_path / "nope.yaml"), 2,
                           "no such file")

@@ -209,6 +209,9 @@ def load_scenario(path: str | FsPath | None) -> Scenario:
     text = read_input_text(str(file), kind="a YAML or JSON scenario, or none for the built-in "
                            "one", error=ScenarioError, max_bytes=MAX_SCENARIO_BYTES)
     located = parse(text, display, json_syntax=file.suffix.lower() == ".json")
+    if located.value in (None, {}):
+        raise ScenarioError(f"{display}: holds no scenario (it is empty, or only comments); "
+                            "start from 'servicebot simulate --print-scenario'")
     return read_scenario(located, name="default" if path is None else file.stem)
 
 
