@@ -31,13 +31,11 @@ def test_lidar_ranges_against_a_wall_match_the_geometry():
     measured = scans.ranges_m[:, facing]
     finite = np.isfinite(expected)
     error = measured[:, finite] - expected[finite]
-    # gaussian noise (stddev from the URDF) then rounding to the resolution
+    # gaussian noise (stddev from the URDF), never rounded to the range resolution
     assert abs(error.mean()) < 0.003
-    assert error.std() == pytest.approx(math.hypot(LIDAR.noise.stddev,
-                                                   LIDAR.range_resolution_m / math.sqrt(12)),
-                                        rel=0.15)
+    assert error.std() == pytest.approx(LIDAR.noise.stddev, rel=0.1)
     quanta = measured[:, finite] / LIDAR.range_resolution_m
-    np.testing.assert_allclose(quanta, np.round(quanta), atol=1e-6)
+    assert np.mean(np.abs(quanta - np.round(quanta)) > 1e-3) > 0.9
     assert np.all(np.isinf(measured[:, ~finite]))
     behind = scans.ranges_m[:, ~facing]
     # nothing behind but the robot's own arm_base_link, 0.23 m back, 24 rays wide
@@ -54,15 +52,18 @@ def test_lidar_does_not_see_a_box_below_its_scan_plane():
     assert ahead[1] == pytest.approx(1.3 - LIDAR_X, abs=0.05)
 
 
-def test_lidar_readings_follow_rep_117():
-    spec = LidarSpec(4, 1.0, 0.0, 1.0, 0.12, 12.0, 0.015, 10.0,
-                     NoiseSpec("gaussian", 0.0, 0.0), "lidar_link", "scan")
-    values = readings(np.array([[0.05, 1.0071, 11.999, 30.0]]), spec,
-                      Noise(spec.noise, np.random.default_rng(0)))
-    assert values[0, 0] == -np.inf  # closer than min
-    assert values[0, 1] == pytest.approx(1.005)  # rounded to the resolution
-    assert values[0, 2] == 12.0  # clipped to max
-    assert values[0, 3] == np.inf  # beyond max
+def test_lidar_readings_follow_rep_117_as_gazebo_does():
+    spec = LidarSpec(6, 1.0, 0.0, 1.0, 0.12, 12.0, 0.015, 10.0,
+                     NoiseSpec("gaussian", 0.0, 0.0, bias_mean=0.01), "lidar_link", "scan")
+    rng = np.random.default_rng(0)
+    values = readings(np.array([[0.05, 0.12, 1.0071, 11.995, 12.0, 30.0]]), spec,
+                      Noise(spec.noise, rng))
+    bias = Noise(spec.noise, np.random.default_rng(0)).bias
+    assert abs(bias) == pytest.approx(0.01)
+    assert values[0, 0] == values[0, 1] == -np.inf  # at or closer than min
+    assert values[0, 2] == 1.0071 + bias  # noisy, not rounded to the resolution
+    assert values[0, 3] == min(11.995 + bias, 12.0)  # noisy, then clamped to max
+    assert values[0, 4] == values[0, 5] == np.inf  # at or beyond max
 
 
 def test_imu_at_rest_reads_gravity_with_the_urdf_noise():

@@ -2,9 +2,11 @@
 
 Rays leave the sensor frame at the scan angles (Gazebo spaces ``samples`` rays evenly from
 ``min_angle`` to ``max_angle``, both included) and are cast against the floor and every
-obstacle. Returns closer than ``min`` read -inf and those beyond ``max`` (or none) +inf, as
-REP 117 and ``sensor_msgs/LaserScan`` say; the others get the gaussian noise, are clipped into
-``[min, max]`` and rounded to the range resolution.
+obstacle. Returns at or closer than ``min`` read -inf and those at or beyond ``max`` (or
+none) +inf, as REP 117 and ``sensor_msgs/LaserScan`` say; the others get the gaussian noise
+and are clamped into ``[min, max]``, as Gazebo Classic's ray sensors (``RaySensor.cc``,
+``GpuRaySensor.cc``) and gz-sensors' ``Lidar::ApplyNoise`` do. ``<range><resolution>`` is
+not applied: neither quantises ranges (gz-sensors only reports ``RangeResolution()``).
 """
 
 from __future__ import annotations
@@ -176,14 +178,16 @@ def raycast_batch() -> int:
 
 
 def readings(true_m: FloatArray, spec: LidarSpec, noise_m: noise.Noise) -> FloatArray:
-    """What the sensor reports for true ranges: noise, clipping, resolution, +-inf."""
+    """What the sensor reports for true ranges: +-inf outside ``(min, max)``, else noisy.
+
+    A true range at or beyond ``max`` is +inf, at or within ``min`` -inf; any other gets the
+    noise, then is clamped into ``[min, max]``. The noise is drawn for every ray, so the
+    seeded stream does not depend on what the rays meet.
+    """
     low = spec.min_range_m if spec.min_range_m is not None else 0.0
     high = spec.max_range_m if spec.max_range_m is not None else np.inf
     noisy = noise_m.add(true_m)
     with np.errstate(invalid="ignore"):
         values = np.clip(noisy, low, high)
-        if spec.range_resolution_m:
-            values = np.round(values / spec.range_resolution_m) * spec.range_resolution_m
-            values = np.clip(values, low, high)
-    values = np.where(true_m > high, np.inf, values)
-    return np.where(true_m < low, -np.inf, values)
+    values = np.where(true_m >= high, np.inf, values)
+    return np.where(true_m <= low, -np.inf, values)
