@@ -2,9 +2,10 @@
 
 A URDF does not say which controllers run, but the controller configuration does. It is
 found, in this order: the file given with ``--controllers``, the ``<parameters>`` of a
-``gazebo_ros2_control`` plugin (relative to the description), ``controllers.yaml`` beside
-the description. The topics each known controller type offers are documented ROS 2 Humble
-behaviour, written down here once.
+``gazebo_ros2_control`` or ``gz_ros2_control`` plugin (relative to the description; several
+are merged as ROS merges ``--params-file`` arguments, later values winning),
+``controllers.yaml`` beside the description. The topics each known controller type offers
+are documented ROS 2 Humble behaviour, written down here once.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ from typing import Any
 
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.common.inputs import display_path, read_input_text
-from servicebot_cli.description.extensions import param
+from servicebot_cli.description.parameter_files import merged_parameters, parameter_files
 from servicebot_cli.description.ros_parameters import (
     MAX_PARAMETERS_BYTES,
     controller_types,
@@ -53,22 +54,22 @@ class Controllers:
     controllers: tuple[Controller, ...]
 
 
-def candidate_files(description: Path, plugins: tuple[Any, ...]) -> list[tuple[Path, str]]:
+def candidate_files(description: Path,
+                    plugins: tuple[Any, ...]) -> list[tuple[tuple[Path, ...], str]]:
     """Where the controller configuration may be, best first, with how each was found.
+
+    A ros2_control Gazebo plugin's ``<parameters>`` are one candidate, all its files
+    together (:func:`~servicebot_cli.description.parameter_files.parameter_files`).
 
     Args:
         description: The description file (its directory anchors relative paths).
         plugins: The description's Gazebo plugins.
     """
-    directory = description.parent
-    found: list[tuple[Path, str]] = []
-    for plugin in plugins:
-        named = param(plugin.params, "parameters")
-        if "gazebo_ros2_control" in plugin.filename and named:
-            path = Path(named).expanduser()
-            found.append((path if path.is_absolute() else directory / path,
-                          "gazebo_ros2_control"))
-    found.append((directory / DEFAULT_NAME, "beside"))
+    found: list[tuple[tuple[Path, ...], str]] = []
+    named = parameter_files(plugins, description.parent)
+    if named:
+        found.append((named, "gazebo_ros2_control"))
+    found.append(((description.parent / DEFAULT_NAME,), "beside"))
     return found
 
 
@@ -78,13 +79,34 @@ def read_controllers(path: Path, found_by: str) -> Controllers:
     Raises:
         ControllersError: Unreadable, not YAML, or without ``controller_manager``.
     """
+    return read_controllers_files((path,), found_by)
+
+
+def read_controllers_files(paths: tuple[Path, ...], found_by: str) -> Controllers:
+    """Read ros2_control parameter files, later ones overriding earlier ones, as ROS does.
+
+    Raises:
+        ControllersError: One is unreadable or not YAML, or together they have no
+            ``controller_manager``.
+    """
+    documents = [_document(path) for path in paths]
+    document = documents[0] if len(documents) == 1 else merged_parameters(documents)
+    return parse_controllers(document, " + ".join(display_path(p) for p in paths), found_by)
+
+
+def _document(path: Path) -> Any:
+    """One YAML file, parsed.
+
+    Raises:
+        ControllersError: Unreadable or not YAML.
+    """
     import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
     text = read_input_text(str(path), kind="a ros2_control controllers YAML (--controllers)",
                            error=ControllersError, max_bytes=MAX_PARAMETERS_BYTES,
                            allow_empty=False)
     try:
-        document = yaml.safe_load(text)
+        return yaml.safe_load(text)
     except yaml.YAMLError as exc:
         where = getattr(exc, "problem_mark", None)
         line = f":{where.line + 1}" if where is not None else ""
@@ -93,7 +115,6 @@ def read_controllers(path: Path, found_by: str) -> Controllers:
     except RecursionError:  # PyYAML's composer recurses once per level of nesting
         raise ControllersError(f"{path}: lists and mappings nested too deep to read; is it "
                                "a controllers file? Give another with --controllers") from None
-    return parse_controllers(document, display_path(path), found_by)
 
 
 def parse_controllers(document: Any, file: str, found_by: str) -> Controllers:
@@ -133,13 +154,16 @@ def find_controllers(description: Path, plugins: tuple[Any, ...],
     if explicit is not None:
         return read_controllers(explicit, "--controllers"), ()
     notes = []
-    for path, found_by in candidate_files(description, plugins):
-        if not path.is_file():
-            if found_by != "beside":
-                notes.append(f"gazebo_ros2_control names {path}, which does not exist")
+    for paths, found_by in candidate_files(description, plugins):
+        missing = [path for path in paths if not path.is_file()]
+        if found_by != "beside":
+            notes += [f"gazebo_ros2_control names {path}, which does not exist"
+                      for path in missing]
+        present = tuple(path for path in paths if path not in missing)
+        if not present:
             continue
         try:
-            return read_controllers(path, found_by), tuple(notes)
+            return read_controllers_files(present, found_by), tuple(notes)
         except ControllersError as exc:
             notes.append(str(exc))
     notes.append("no controller configuration found (looked for controllers.yaml beside "

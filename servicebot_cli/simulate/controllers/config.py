@@ -1,7 +1,8 @@
 """diff_drive_controller's parameters from a ros2_control controllers file.
 
-Which file: ``--controllers FILE`` when given; else the one the ``gazebo_ros2_control``
-plugin's ``<parameters>`` names (relative to the description); else, when a Gazebo
+Which file: ``--controllers FILE`` when given; else those the ``gazebo_ros2_control`` (or
+``gz_ros2_control``) plugin's ``<parameters>`` name (relative to the description; several
+are merged as ROS merges them, later values winning); else, when a Gazebo
 diff-drive plugin drives the base, none: the plugin's parameters are the controller's
 (:mod:`.plugin_drive`); else ``controllers.yaml`` beside the description; else none (the
 simulator's defaults). In the file, the controller
@@ -21,6 +22,7 @@ from typing import TYPE_CHECKING, Any
 
 from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.common.inputs import read_input_text
+from servicebot_cli.description.parameter_files import merged_parameters, parameter_files
 from servicebot_cli.description.ros_parameters import (
     MAX_PARAMETERS_BYTES,
     controller_types,
@@ -72,20 +74,17 @@ class ControllersFile:
         return self.source or str(self.path)
 
 
-def named_controllers_file(robot: RobotDescription, explicit: str | None) -> Path | None:
-    """``explicit``, else the file gazebo_ros2_control's ``<parameters>`` names, else None."""
+def named_controllers_file(robot: RobotDescription,
+                           explicit: str | None) -> tuple[Path, ...] | None:
+    """``explicit``, else the files a ros2_control plugin's ``<parameters>`` name, else None.
+
+    Of the plugin's files (all of them, in order: :mod:`~servicebot_cli.description.
+    parameter_files`), those that exist; None when none does.
+    """
     if explicit is not None:
-        return Path(explicit)
-    base = robot.path.parent
-    for plugin in robot.plugins:
-        if "gazebo_ros2_control" in plugin.filename or "gazebo_ros2_control" in plugin.name:
-            for key, text in plugin.params:
-                if key == "parameters" and text and not text.startswith("$("):
-                    named = Path(text.strip().removeprefix("file://"))
-                    path = named if named.is_absolute() else base / named
-                    if path.is_file():
-                        return path
-    return None
+        return (Path(explicit),)
+    named = tuple(p for p in parameter_files(robot.plugins, robot.path.parent) if p.is_file())
+    return named or None
 
 
 def controllers_beside(robot: RobotDescription) -> Path | None:
@@ -94,52 +93,70 @@ def controllers_beside(robot: RobotDescription) -> Path | None:
     return near if near.is_file() else None
 
 
-def read_controllers_file(path: Path | None) -> ControllersFile:
+def read_controllers_file(path: Path | tuple[Path, ...] | None) -> ControllersFile:
     """The scenario fields the diff-drive controller in ``path`` sets.
+
+    Several files are read in order, later values overriding earlier ones, as ROS reads
+    several ``--params-file`` (:func:`~servicebot_cli.description.parameter_files.
+    merged_parameters`).
 
     Raises:
         ControllersFileError: Unreadable, not YAML, or a parameter that is not a number.
     """
-    if path is None:
+    paths = (path,) if isinstance(path, Path) else path or ()
+    if not paths:
         return ControllersFile(None, {})
-    import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
-
-    text = read_input_text(str(path), kind="a ros2_control controllers YAML (--controllers)",
-                           error=ControllersFileError, max_bytes=MAX_PARAMETERS_BYTES,
-                           allow_empty=False)
-    try:
-        document = yaml.load(text,  # libyaml's safe loader if built
-                             Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        line = f":{mark.line + 1}" if mark is not None else ""
-        raise ControllersFileError(f"{path}{line}: not valid YAML; fix the file or give "
-                                   "another with --controllers") from None
-    if not isinstance(document, dict):
-        raise ControllersFileError(f"{path}: expected a mapping of controllers")
+    documents = [_document(p) for p in paths]
+    document = documents[0] if len(documents) == 1 else merged_parameters(documents)
+    for p, one in zip(paths, documents, strict=True):
+        if not isinstance(one, dict):
+            raise ControllersFileError(f"{p}: expected a mapping of controllers")
+    where = paths[-1]
+    label = None if len(paths) == 1 else " + ".join(str(p) for p in paths)
     nodes = node_parameters(document)
     manager = nodes.get("controller_manager", {})
     name = next((n for n, kind in controller_types(nodes).items() if kind == DIFF_DRIVE), None)
     params = _flat(nodes.get(name, {})) if name else {}
     values: dict[str, Any] = {}
     if "update_rate" in manager:
-        values["update_rate_hz"] = _number(path, "update_rate", manager["update_rate"])
+        values["update_rate_hz"] = _number(where, "update_rate", manager["update_rate"])
     for key, field in (("publish_rate", "publish_rate_hz"),
                        ("cmd_vel_timeout", "cmd_vel_timeout_s"),
                        ("wheel_separation_multiplier", "wheel_separation_multiplier")):
         if key in params:
-            values[field] = _number(path, key, params[key])
+            values[field] = _number(where, key, params[key])
     for prefix, axis, unit in _AXES:
-        values.update(_limits(path, params, prefix, axis, unit))
+        values.update(_limits(where, params, prefix, axis, unit))
     for key in ("pose_covariance_diagonal", "twist_covariance_diagonal"):
         if key in params:
             diagonal = params[key]
             if not isinstance(diagonal, list) or len(diagonal) != 6:
-                raise ControllersFileError(f"{path}: {name}.{key}: expected 6 numbers")
-            values[key] = tuple(_number(path, key, v) for v in diagonal)
-    odom_frame, base_frame = _frames(path, params) if name else (None, None)
-    return ControllersFile(path, values, name, odom_tf=params.get("enable_odom_tf") is not False,
-                           odom_frame=odom_frame, base_frame=base_frame)
+                raise ControllersFileError(f"{where}: {name}.{key}: expected 6 numbers")
+            values[key] = tuple(_number(where, key, v) for v in diagonal)
+    odom_frame, base_frame = _frames(where, params) if name else (None, None)
+    return ControllersFile(where, values, name, odom_tf=params.get("enable_odom_tf") is not False,
+                           odom_frame=odom_frame, base_frame=base_frame, source=label)
+
+
+def _document(path: Path) -> Any:
+    """One controllers file, parsed.
+
+    Raises:
+        ControllersFileError: Unreadable or not YAML.
+    """
+    import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
+
+    text = read_input_text(str(path), kind="a ros2_control controllers YAML (--controllers)",
+                           error=ControllersFileError, max_bytes=MAX_PARAMETERS_BYTES,
+                           allow_empty=False)
+    try:
+        return yaml.load(text,  # libyaml's safe loader if built
+                         Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        line = f":{mark.line + 1}" if mark is not None else ""
+        raise ControllersFileError(f"{path}{line}: not valid YAML; fix the file or give "
+                                   "another with --controllers") from None
 
 
 def _frames(path: Path, params: Mapping[str, Any]) -> tuple[str, str]:
