@@ -56,7 +56,7 @@ def decode_utf8(data: bytes) -> str:
         text = data.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
         raise _diagnosis(data, exc.start) from None
-    if "\0" in text[:_SNIFF_BYTES]:
+    if b"\0" in data[:_SNIFF_BYTES]:  # the same bytes _diagnosis looks at
         raise _diagnosis(data, None)
     return text
 

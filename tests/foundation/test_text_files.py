@@ -60,6 +60,18 @@ def test_a_latin1_byte_is_placed_and_named():
     assert problem.what == "byte 0xe9, '\u00e9' in Latin-1"
 
 
+@pytest.mark.parametrize("before", [
+    "\u00e9" * 5000,  # the NUL is within 8192 characters but past byte 8192
+    "\ufeff" + "a" * 8188,  # a byte-order mark, then the NUL at bytes 8191 to 8193
+])
+def test_a_nul_byte_after_multibyte_text_is_told_not_an_internal_error(run, tmp_path, before):
+    nul = tmp_path / "nul.urdf"
+    nul.write_bytes(f"<robot name='r'><!-- {before} -->\0<link name='a'/></robot>".encode())
+    result = run("check", "urdf", nul, "--format", "json")
+    assert result.exit_code == 1, result.output  # a finding, whatever the reader says
+    assert [f["code"] for f in findings(result.stdout)] in (["SB003"], ["SB004"])
+
+
 def test_utf8_with_a_byte_order_mark_is_utf8():
     assert decode_utf8(codecs.BOM_UTF8 + "a: \u00e9\n".encode()) == "a: \u00e9\n"
 
