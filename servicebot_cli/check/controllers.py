@@ -36,38 +36,52 @@ _NAMESPACE_DEPTH = 3
 
 def check(text: str, display: str, robot: RobotDescription) -> Iterator[Issue]:
     """Every issue of the controllers YAML ``text`` (shown as ``display``) against ``robot``."""
+    found = _sections_or_problem(text, display)
+    if isinstance(found, Issue):
+        yield found
+        return
+    checker = _Checker(display, robot, frozenset(found))
+    types = _types(found)
+    for name, params in found.items():
+        if name != "controller_manager" and _names_joints(types.get(name)):
+            yield from checker.section(name, params)
+
+
+def file_problem(text: str, display: str) -> Issue | None:
+    """What makes ``text`` no controllers file at all, whatever the robot (SB601), or None.
+
+    Not YAML, empty, or without a ``NAME: ros__parameters:`` section.
+    """
+    found = _sections_or_problem(text, display)
+    return found if isinstance(found, Issue) else None
+
+
+def _sections_or_problem(text: str, display: str) -> dict[str, yaml.MappingNode] | Issue:
+    """The controller sections of ``text``, or the SB601 issue that leaves it none."""
     try:
         root = yaml.compose(text, Loader=yaml.SafeLoader)
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         where = (display, mark.line + 1, mark.column + 1) if mark else (display, 0, 0)
         problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
-        yield Issue("SB601", f"not valid YAML: {problem}", where=where)
-        return
+        return Issue("SB601", f"not valid YAML: {problem}", where=where)
     except RecursionError:  # PyYAML's composer recurses once per level of nesting
-        yield Issue("SB601", "not valid YAML: lists and mappings nested too deep to read",
-                    where=(display, 0, 0))
-        return
+        return Issue("SB601", "not valid YAML: lists and mappings nested too deep to read",
+                     where=(display, 0, 0))
     if root is None:
-        yield Issue("SB601", "the file holds no YAML (it is empty, or only comments)",
-                    where=(display, 0, 0),
-                    fix="write each controller's parameters under NAME: ros__parameters:")
-        return
+        return Issue("SB601", "the file holds no YAML (it is empty, or only comments)",
+                     where=(display, 0, 0),
+                     fix="write each controller's parameters under NAME: ros__parameters:")
     sections = _sections(root)
     if not sections:
         ros1 = _ros1_controllers(root)
         found = (f"a ROS 1 ros_control file ('{ros1}: type: ...' with no ros__parameters), "
                  "which ros2_control does not read; ") if ros1 else ""
-        yield Issue("SB601", f"{found}no controller sections (NAME: ros__parameters: ...) "
-                    "found", where=(display, 1, 1),
-                    fix="check ROS 2 controllers files only, or port this one: each "
-                        "controller's parameters under NAME: ros__parameters:" if ros1 else None)
-        return
-    checker = _Checker(display, robot, frozenset(sections))
-    types = _types(sections)
-    for name, params in sections.items():
-        if name != "controller_manager" and _names_joints(types.get(name)):
-            yield from checker.section(name, params)
+        return Issue("SB601", f"{found}no controller sections (NAME: ros__parameters: ...) "
+                     "found", where=(display, 1, 1),
+                     fix="check ROS 2 controllers files only, or port this one: each "
+                         "controller's parameters under NAME: ros__parameters:" if ros1 else None)
+    return sections
 
 
 def _ros1_controllers(root: yaml.Node | None) -> str | None:

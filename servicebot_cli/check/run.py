@@ -182,12 +182,14 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
     text = read_input_text(str(yaml_path), kind="a ros2_control controllers YAML",
                            error=DescriptionError, max_bytes=MAX_PARAMETERS_BYTES)
     sources = targets.urdfs or tuple(RobotSource.bundled(name) for name in BUNDLED_ROBOTS)
+    problem = controllers.file_problem(text, display)
+    if problem is not None:  # the YAML itself, the same against every robot: said once
+        robot = read_description(sources[0])
+        return [FileReport(display, tuple(place_issues(robot, [problem], settings)))]
     reports = []
     for source in sources:
         robot = read_description(source)
-        issues = list(controllers.check(text, display, robot))
-        if any(issue.code == "SB601" for issue in issues):  # the YAML itself, whatever robot
-            return [FileReport(display, tuple(place_issues(robot, issues, settings)))]
+        issues = controllers.check(text, display, robot)
         reports.append(FileReport(f"{display} against {source.display}",
                                   tuple(place_issues(robot, issues, settings))))
     return reports

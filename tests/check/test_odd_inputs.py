@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from tests.check.helpers import findings
-from tests.conftest import SIM_URDF, assert_one_line_error
+from tests.conftest import ROBOTS, SIM_URDF, assert_one_line_error
 
 SETTINGS = '[tool.servicebot.check]\n# r\u00e9glages\nstrict = true\n'
 
@@ -73,3 +73,22 @@ def test_a_file_that_is_no_controllers_yaml_is_one_finding_against_every_robot(r
     assert checked.exit_code == 1
     fine = run("check", "controllers", "--format", "json")  # the bundled file: both robots
     assert len(json.loads(fine.stdout)["files"]) == 2
+
+
+def test_a_bad_item_of_one_controller_does_not_hide_the_other_robots(run, tmp_path):
+    # SB601 also flags one controller's bad joints list: the file is still checked against
+    # every robot named
+    real = tmp_path / "real.urdf"
+    real.write_text(SIM_URDF.read_text().replace('name="arm_link3_to_link4"',
+                                                  'name="arm_wrist"'))
+    yaml_text = (ROBOTS / "controllers.yaml").read_text()
+    assert "arm_link3_to_link4" in yaml_text
+    path = tmp_path / "controllers.yaml"
+    path.write_text(yaml_text.replace("- arm_link3_to_link4",
+                                      "- arm_link3_to_link4\n      - [oops]"))
+    checked = run("check", "controllers", path, "--urdf", SIM_URDF, "--urdf", real,
+                  "--format", "json")
+    files = json.loads(checked.stdout)["files"]
+    assert len(files) == 2
+    against_real = [f["code"] for f in files[1]["findings"]]
+    assert "SB601" in against_real and "SB602" in against_real
