@@ -187,9 +187,13 @@ def entry() -> NoReturn:
 
 
 def _flushed(code: int) -> int:
-    """Flush stdout and stderr; a stdout that cannot take the rest is one error line."""
+    """Flush stdout and stderr; a stdout that cannot take the rest is one error line.
+
+    A stream the shell closed (``>&-``) is None: nothing to flush.
+    """
     try:
-        sys.stdout.flush()
+        if sys.stdout is not None:
+            sys.stdout.flush()
     except BrokenPipeError:
         pass  # the reader went away (| head), as in ServicebotGroup.invoke
     except OSError as exc:
@@ -199,7 +203,8 @@ def _flushed(code: int) -> int:
     except ValueError:
         pass  # closed by the command
     try:
-        sys.stderr.flush()
+        if sys.stderr is not None:
+            sys.stderr.flush()
     except (OSError, ValueError):
         pass
     return int(code)

@@ -68,3 +68,12 @@ def test_a_full_stdout_is_one_error_line(args: tuple[str, ...]) -> None:
     result.stdout = ""  # it went to /dev/full
     assert_one_line_error(result, 2, "standard output: cannot write: No space left on device",
                           "free some space")
+
+
+@pytest.mark.parametrize("closed", ["stdout", "stderr"])
+def test_a_stream_the_shell_closed_is_no_error(closed: str) -> None:
+    """``servicebot --version >&-``: Python sets a closed stream to None; nothing to flush."""
+    done = subprocess.run(f"'{sys.executable}' -m servicebot_cli --version "
+                          f"{'>&-' if closed == 'stdout' else '2>&-'}", shell=True,
+                          capture_output=closed == "stderr", text=True, timeout=60)
+    assert done.returncode == 0
