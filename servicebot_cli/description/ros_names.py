@@ -73,18 +73,12 @@ class PluginNode:
         rules = _argument_rules(params_all(plugin.params, "ros/argument")) + [
             rule for text in params_all(plugin.params, "ros/remapping")
             if (rule := _rule(text)) is not None]
-        name, topic_rules = plugin.name, []
-        for node, match, replacement in rules:
-            if node not in (None, plugin.name):
-                continue
-            if match == "__node":
-                name = replacement
-            elif match == "__ns":
-                namespace = replacement
-            else:
-                topic_rules.append((node, match, replacement))
-        namespace = "/" + namespace.strip("/")
-        return cls(name, namespace, tuple(topic_rules))
+        renames = {match: replacement for node, match, replacement in reversed(rules)
+                   if match in ("__node", "__ns") and node in (None, plugin.name)}
+        name = renames.get("__node", plugin.name)  # the first rule for each wins, as in rcl
+        namespace = "/" + renames.get("__ns", namespace).strip("/")
+        topic_rules = tuple(rule for rule in rules if rule[1] not in ("__node", "__ns"))
+        return cls(name, namespace, topic_rules)  # a node's own rules: by its new name
 
     def expand(self, name: str) -> str:
         """The fully qualified name of ``name`` in this node (``~/out`` -> ``/ns/node/out``)."""

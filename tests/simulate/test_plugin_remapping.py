@@ -60,3 +60,16 @@ def test_the_drive_plugins_odometry_follows_an_argument_rule(tmp_path):
 def test_a_rule_for_another_node_is_not_this_ones(tmp_path):
     robot = edited(SAM_BOT, tmp_path, (SCAN_RULE, "<remapping>other:~/out:=nope</remapping>"))
     assert sensor_topics(robot)["scan/out"] == "lidar"  # the plugin is named scan
+
+
+def test_a_renamed_node_takes_the_rules_for_its_new_name(tmp_path):
+    # rcl renames the node first (__node:=), then matches node-specific rules to that name
+    robot = edited(SAM_BOT, tmp_path, (SCAN_RULE, "<argument>__node:=lidar2</argument>"
+                                       "<remapping>lidar2:~/out:=scan2</remapping>"))
+    assert sensor_topics(robot)["scan2"] == "lidar"
+
+
+def test_the_first_rename_of_a_node_wins(tmp_path):
+    robot = edited(SAM_BOT, tmp_path, (SCAN_RULE, "<argument>__node:=first</argument>"
+                                       "<argument>__node:=second</argument>"))
+    assert sensor_topics(robot)["first/out"] == "lidar"
