@@ -11,7 +11,10 @@ Gazebo Classic's ROS 2 plugins (gazebo_ros_pkgs) name relative topics in their n
   ``<publishTf>false``, odom -> base on ``/tf`` unless ``<publishTf>`` or ``<publishOdomTF>``
   is false, and the wheels on ``/tf`` with ``<publishWheelTF>true``;
 - ``gazebo_ros_planar_move``: ``cmd_vel`` in, ``odom`` and ``/tf`` out (both default true);
-- ``gazebo_ros_joint_state_publisher``: ``joint_states`` out.
+- ``gazebo_ros_joint_state_publisher``: ``joint_states`` out;
+- ``gazebo_ros_imu`` (ROS 1 only, a model plugin: ROS 2 has the sensor plugin instead):
+  ``<topicName>`` out (default ``/default_imu``), stamped ``<frameName>`` (default
+  ``<bodyName>``), the link it measures.
 
 gz-sim systems publish gz-transport topics, which ros_gz_bridge shows under the same name:
 
@@ -42,6 +45,7 @@ Row = tuple[str, str, str, str | None]
 
 TWIST, ODOMETRY = "geometry_msgs/msg/Twist", "nav_msgs/msg/Odometry"
 TF, JOINT_STATE = "tf2_msgs/msg/TFMessage", "sensor_msgs/msg/JointState"
+IMU = "sensor_msgs/msg/Imu"
 GZ_NOTE = "gz topic (ros_gz_bridge keeps the name unless configured otherwise)"
 MODEL_NOTE = GZ_NOTE + "; MODEL: the name the robot is spawned with"
 
@@ -140,6 +144,21 @@ def _joint_states(plugin: Plugin) -> list[Row]:
     return [("out", _absolute(plugin_topic(plugin, "joint_states")), JOINT_STATE, None)]
 
 
+def _imu(plugin: Plugin) -> list[Row]:
+    return [("out", _absolute(plugin_topic(plugin, "/default_imu")), IMU, None)]
+
+
+def model_imu(plugin: Plugin) -> tuple[str, str, str] | None:
+    """A ROS 1 ``gazebo_ros_imu`` model plugin's link, topic and frame; None for others.
+
+    None too without ``<bodyName>``, which the plugin cannot run without.
+    """
+    body = _text(plugin, "bodyName")
+    if "gazebo_ros_imu.so" not in plugin.filename or not body:
+        return None
+    return body, _imu(plugin)[0][1], _text(plugin, "frameName") or body
+
+
 def _gz(plugin: Plugin, key: str, default: str) -> tuple[str, str]:
     text = (param(plugin.params, key) or "").strip()
     return (_absolute(text), GZ_NOTE) if text else (default, MODEL_NOTE)
@@ -171,6 +190,7 @@ _KNOWN: tuple[tuple[tuple[str, ...], Callable[[Plugin], list[Row]]], ...] = (
     (("gazebo_ros_diff_drive", "gazebo_ros_skid_steer_drive"), _diff_drive),
     (("gazebo_ros_planar_move",), _planar_move),
     (("gazebo_ros_joint_state_publisher",), _joint_states),
+    (("gazebo_ros_imu.so",), _imu),
     (("diff-drive-system", "::DiffDrive"), _gz_diff_drive),
     (("odometry-publisher-system", "::OdometryPublisher"), _gz_odometry),
     (("joint-state-publisher-system", "::JointStatePublisher"), _gz_joint_states),

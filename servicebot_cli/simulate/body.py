@@ -9,7 +9,7 @@ shapes of every link. Nothing is a constant of the bundled robot.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Generic, TypeVar
 
 import numpy as np
@@ -17,6 +17,7 @@ import numpy.typing as npt
 
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.description.joint_space import JointSpace
+from servicebot_cli.description.model_plugins import model_imu
 from servicebot_cli.description.sensors import (
     CAMERA_TYPES,
     LIDAR_TYPES,
@@ -128,34 +129,67 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
         arm_joints=arm_joints,
         base_height_m=height,
         shape=_shape(robot, arm_joints, resolver),
-        lidar=_mount(robot, LIDAR_TYPES, lidar_spec, placement),
-        imu=_mount(robot, ("imu",), imu_spec, placement),
-        camera=_mount(robot, CAMERA_TYPES, camera_spec, placement),
+        lidar=_mount(robot, LIDAR_TYPES, _published_lidar, placement),
+        imu=_mount(robot, ("imu",), _imu_reader(robot), placement),
+        camera=_mount(robot, CAMERA_TYPES, _published_camera, placement),
         disabled_pairs=tuple(disabled_pairs), resolver=resolver,
     )
 
 
-def _mount(robot: RobotDescription, types: tuple[str, ...], read: Callable[[Sensor], SpecT],
-           placement: Placement) -> Mounted[SpecT] | None:
-    """The first sensor of ``types``; of ray sensors, the published one with the most rays.
+def _mount(robot: RobotDescription, types: tuple[str, ...],
+           read: Callable[[Sensor], SpecT | None], placement: Placement) -> Mounted[SpecT] | None:
+    """The first published sensor of ``types``; of ray sensors, the one with the most rays.
 
-    A Create 3 base (TurtleBot 4) declares one-ray cliff and IR sensors before its LIDAR. A
-    ray sensor is published on ROS only through a Gazebo ROS plugin (Classic) or gz-sim's
-    ``<topic>`` (:func:`~servicebot_cli.description.sensors.lidar_spec`'s topic, what
-    ``inspect --section topics`` lists); one without either, a kobuki's cliff sensor, publishes
-    nothing, so it is not the LIDAR whose scans the run publishes.
+    ``read`` gives a sensor's spec, None when nothing publishes it on ROS. A Create 3 base
+    (TurtleBot 4) declares one-ray cliff and IR sensors before its LIDAR.
     """
-    found = [s for s in robot.sensors if s.type in types and s.reference]
-    if types == LIDAR_TYPES:
-        found = [s for s in found if lidar_spec(s).topic is not None]
+    found = [(s, spec) for s in robot.sensors if s.type in types and s.reference
+             for spec in [read(s)] if spec is not None]
     if not found:
         return None
-    sensor = max(found, key=_rays) if types == LIDAR_TYPES else found[0]
-    if sensor.reference is None:
-        return None
+    sensor, spec = max(found, key=lambda f: _rays(f[0])) if types == LIDAR_TYPES else found[0]
+    assert sensor.reference is not None  # found keeps referenced sensors only
     robot.require_frame(sensor.reference)
     transform = placement(sensor.reference) @ pose_matrix(sensor.pose)
-    return Mounted(read(sensor), transform, sensor.reference)
+    return Mounted(spec, transform, sensor.reference)
+
+
+def _published_lidar(sensor: Sensor) -> LidarSpec | None:
+    """A ray sensor's spec if it publishes (a Gazebo ROS plugin or gz-sim's ``<topic>``).
+
+    Gazebo Classic publishes a ray sensor on ROS only through a ROS plugin (gazebo_ros_pkgs'
+    ``gazebo_ros_ray_sensor``); a kobuki's cliff sensor, with none, publishes nothing.
+    """
+    spec = lidar_spec(sensor)
+    return spec if spec.topic is not None else None
+
+
+def _published_camera(sensor: Sensor) -> CameraSpec | None:
+    """A camera's spec if it publishes: a ``gazebo_ros_camera`` plugin or gz-sim's ``<topic>``."""
+    spec = camera_spec(sensor)
+    return spec if spec.image_topic is not None or spec.info_topic is not None else None
+
+
+def _imu_reader(robot: RobotDescription) -> Callable[[Sensor], ImuSpec | None]:
+    """An IMU's spec if it publishes, on the topic and frame of what publishes it.
+
+    Its own ROS plugin (``gazebo_ros_imu_sensor``) or gz-sim's ``<topic>``; else a ROS 1
+    ``gazebo_ros_imu`` model plugin whose ``<bodyName>`` is the sensor's link (TurtleBot3's).
+    Gazebo Classic publishes nothing on ROS for an IMU with neither.
+    """
+    bodies = {found[0]: found[1:] for block in robot.gazebo if block.reference is None
+              for plugin in block.plugins for found in [model_imu(plugin)] if found}
+
+    def read(sensor: Sensor) -> ImuSpec | None:
+        spec = imu_spec(sensor)
+        if spec.topic is not None:
+            return spec
+        if sensor.reference in bodies:
+            topic, frame = bodies[sensor.reference]
+            return replace(spec, topic=topic, frame=frame)
+        return None
+
+    return read
 
 
 def _rays(sensor: Sensor) -> int:
