@@ -10,7 +10,7 @@ the rows of one byte array.
 from __future__ import annotations
 
 import struct
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 import numpy as np
 import numpy.typing as npt
@@ -111,3 +111,13 @@ def rows(records: npt.NDArray[np.void]) -> npt.NDArray[np.uint8]:
     A view on ``records`` (their bytes between fields included), not a copy.
     """
     return records.view(np.uint8).reshape(len(records), records.dtype.itemsize)
+
+
+def serialize(layout: Layout, times_s: npt.NDArray[np.float64],
+              fill: Mapping[str, npt.NDArray[np.float64] | float]) -> npt.NDArray[np.uint8]:
+    """Messages of ``layout`` stamped ``times_s`` [s], each field of ``fill`` set: their rows."""
+    records = layout.records(len(times_s))
+    set_stamps(records, times_s)
+    for name, values in fill.items():
+        records[name] = values
+    return rows(records)

@@ -14,14 +14,14 @@ simulated time; each publisher offers the QoS its ROS node does. ``/tf`` has two
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import partial
 
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.simulate.bag import cdr, qos
+from servicebot_cli.simulate.bag import camera_messages, cdr, qos
 from servicebot_cli.simulate.bag import quaternions as rotations
 from servicebot_cli.simulate.bag.byte_rows import ByteRows
 from servicebot_cli.simulate.bag.tf_messages import ODOM_FRAME, JointTransforms, tf_base, tf_static
@@ -122,14 +122,14 @@ def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
     if body.camera is not None:
         out.append(Publisher(absolute(body.camera.spec.info_topic, "camera_info"),
                              "sensor_msgs/msg/CameraInfo", qos.SENSOR_DATA,
-                             lambda r: r.camera_times_s, _camera_info))
+                             lambda r: r.camera_times_s, camera_messages.camera_info))
         if images.enabled:
             image_topic = absolute(body.camera.spec.image_topic, "image_raw")
             out.append(Publisher(image_topic, IMAGE_TYPE, qos.SENSOR_DATA,
-                                 lambda r: r.camera_times_s, _colour_images))
+                                 lambda r: r.camera_times_s, camera_messages.colour_images))
             if images.depth:
                 out.append(Publisher(depth_topic(image_topic), IMAGE_TYPE, qos.SENSOR_DATA,
-                                     lambda r: r.camera_times_s, _depth_images))
+                                     lambda r: r.camera_times_s, camera_messages.depth_images))
     return out
 
 
@@ -157,21 +157,12 @@ def _tick_times(result: SimResult) -> FloatArray:
                      dtype=np.float64) * result.plan.dt_s
 
 
-def _serialize(layout: cdr.Layout, times: FloatArray,
-               fill: Mapping[str, FloatArray | float]) -> ByteRows:
-    records = layout.records(len(times))
-    cdr.set_stamps(records, times)
-    for name, values in fill.items():
-        records[name] = values
-    return cdr.rows(records)
-
-
 def _clock(result: SimResult) -> ByteRows:
     """Simulated time at every control tick, from 0 to the end of the run."""
     layout = cdr.Layout()
     layout.field("sec", "<i4")
     layout.field("nanosec", "<u4")
-    return _serialize(layout, _tick_times(result), {})
+    return cdr.serialize(layout, _tick_times(result), {})
 
 
 def _robot_description(result: SimResult) -> ByteRows:
@@ -193,7 +184,7 @@ def _scan(result: SimResult) -> ByteRows:
     layout.sequence("ranges", "<f4", rays)
     layout.sequence("intensities", "<f4", 0)
     step = (scans.angles_rad[-1] - scans.angles_rad[0]) / max(rays - 1, 1)
-    return _serialize(layout, scans.times_s, {
+    return cdr.serialize(layout, scans.times_s, {
         "angle_min": scans.angles_rad[0], "angle_max": scans.angles_rad[-1],
         "angle_increment": step, "time_increment": 0.0, "scan_time": scans.period_s,
         "range_min": spec.min_range_m or 0.0, "range_max": spec.max_range_m or np.inf,
@@ -209,7 +200,7 @@ def _imu(result: SimResult) -> ByteRows:
                         ("angular_velocity", 3), ("angular_velocity_covariance", 9),
                         ("linear_acceleration", 3), ("linear_acceleration_covariance", 9)):
         layout.field(name, "<f8", count)
-    return _serialize(layout, imu.times_s, {
+    return cdr.serialize(layout, imu.times_s, {
         "orientation": imu.orientation_xyzw,
         "angular_velocity": imu.angular_velocity_rad_s,
         "angular_velocity_covariance": np.diag(imu.angular_velocity_variance).ravel(),
@@ -229,7 +220,7 @@ def _odometry(result: SimResult, frames: tuple[str, str] | None = None) -> ByteR
     zeros = np.zeros_like(odom.x_m)
     lateral = zeros if odom.lateral_m_s is None else odom.lateral_m_s
     controller = result.scenario.controller  # the diagonals diff_drive_controller publishes
-    return _serialize(layout, odom.times_s, {
+    return cdr.serialize(layout, odom.times_s, {
         "pose_covariance": np.diag(controller.pose_covariance_diagonal).ravel(),
         "twist_covariance": np.diag(controller.twist_covariance_diagonal).ravel(),
         "position": np.column_stack((odom.x_m, odom.y_m, zeros + odom.z_m)),
@@ -246,52 +237,5 @@ def _joint_states(result: SimResult) -> ByteRows:
     layout.sequence("position", "<f8", len(joints.names))
     layout.sequence("velocity", "<f8", len(joints.names))
     layout.sequence("effort", "<f8", 0)
-    return _serialize(layout, joints.times_s,
+    return cdr.serialize(layout, joints.times_s,
                       {"position": joints.positions, "velocity": joints.velocities})
-
-
-def _camera_info(result: SimResult) -> ByteRows:
-    camera, spec = result.camera, result.body.camera
-    assert camera is not None and spec is not None
-    layout = cdr.Layout()
-    layout.header(spec.spec.frame or result.body.root_link)
-    layout.constant("<I", camera.height_px)
-    layout.constant("<I", camera.width_px)
-    layout.string(camera.distortion_model)
-    layout.sequence("d", "<f8", len(camera.d))
-    for name, count in (("k", 9), ("r", 9), ("p", 12)):
-        layout.field(name, "<f8", count)
-    for _ in range(6):  # binning_x, binning_y, roi x_offset, y_offset, height, width
-        layout.constant("<I", 0)
-    layout.constant("<B", 0)  # roi.do_rectify
-    return _serialize(layout, result.camera_times_s, {
-        "d": np.array(camera.d), "k": np.array(camera.k),
-        "r": np.eye(3).ravel(), "p": np.array(camera.p)})
-
-
-def _colour_images(result: SimResult) -> ByteRows:
-    """``rgb8`` images: 3 bytes a pixel, rows top to bottom."""
-    return _images(result, "rgb8", 3, [f.rgb.reshape(-1) for f in result.frames])
-
-
-def _depth_images(result: SimResult) -> ByteRows:
-    """``32FC1`` depth images [m] along the optical axis, little-endian float32."""
-    return _images(result, "32FC1", 4,
-                   [f.depth_m.astype("<f4").reshape(-1).view(np.uint8) for f in result.frames])
-
-
-def _images(result: SimResult, encoding: str, pixel_bytes: int,
-            data: list[npt.NDArray[np.uint8]]) -> ByteRows:
-    camera, mounted = result.camera, result.body.camera
-    assert camera is not None and mounted is not None
-    if not data:
-        return np.zeros((0, 0), dtype=np.uint8)
-    layout = cdr.Layout()
-    layout.header(mounted.spec.frame or result.body.root_link)
-    layout.constant("<I", camera.height_px)
-    layout.constant("<I", camera.width_px)
-    layout.string(encoding)
-    layout.constant("<B", 0)  # is_bigendian
-    layout.constant("<I", pixel_bytes * camera.width_px)  # step: bytes a row
-    layout.sequence("data", "u1", pixel_bytes * camera.width_px * camera.height_px)
-    return _serialize(layout, result.camera_times_s, {"data": np.stack(data)})
