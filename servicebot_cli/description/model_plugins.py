@@ -7,9 +7,10 @@ Gazebo Classic's ROS 2 plugins (gazebo_ros_pkgs) name relative topics in their n
 
 - ``gazebo_ros_diff_drive``: consumes ``cmd_vel``; publishes ``odom`` only with
   ``<publish_odom>true`` and ``/tf`` only with ``<publish_odom_tf>`` or ``<publish_wheel_tf>``
-  (all three default to false). The ROS 1 plugin publishes ``odom`` unless
-  ``<publishTf>false``, odom -> base on ``/tf`` unless ``<publishTf>`` or ``<publishOdomTF>``
-  is false, and the wheels on ``/tf`` with ``<publishWheelTF>true``;
+  (all three default to false), and no joint states. The ROS 1 plugin publishes ``odom``
+  unless ``<publishTf>false``, odom -> base on ``/tf`` unless ``<publishTf>`` or
+  ``<publishOdomTF>`` is false, the wheels on ``/tf`` with ``<publishWheelTF>true`` and their
+  joint states on ``joint_states`` with ``<publishWheelJointState>true``;
 - ``gazebo_ros_planar_move``: ``cmd_vel`` in, ``odom`` and ``/tf`` out (both default true);
 - ``gazebo_ros_joint_state_publisher``: ``joint_states`` out;
 - ``gazebo_ros_imu`` (ROS 1 only, a model plugin: ROS 2 has the sensor plugin instead):
@@ -133,7 +134,11 @@ def _text(plugin: Plugin, key: str) -> str:
 
 
 def _diff_drive(plugin: Plugin) -> list[Row]:
-    return _classic_drive(plugin, odom_default=False, tf_default=False)
+    rows = _classic_drive(plugin, odom_default=False, tf_default=False)
+    if "gazebo_ros_diff_drive" in plugin.filename and ros1_plugin(plugin) \
+            and _flag(plugin, "publishWheelJointState", False):  # not skid steer's
+        rows += _joint_states(plugin)
+    return rows
 
 
 def _planar_move(plugin: Plugin) -> list[Row]:

@@ -222,10 +222,12 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
             trajectory point in collision (``check_points``), or an output that cannot be
             written.
     """
+    from servicebot_cli.simulate.controllers.joint_state_topics import joint_state_topics
     from servicebot_cli.simulate.controllers.plugin_drive import controllers_for
     from servicebot_cli.simulate.controllers.resolve import resolve
 
     controllers_file = controllers_for(robot, controllers)
+    joint_states = joint_state_topics(robot, controllers_file)
     scenario = resolve(scenario, controllers_file)
     from servicebot_cli.simulate import simulator
     from servicebot_cli.simulate.bag.ros_messages import odom_frames, odom_topic, publishers
@@ -255,7 +257,8 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
         summary, last, writers = _write_pieces(
             pieces,
             outputs, publishers(body, scenario.camera, odom_topic(controllers_file),
-                                controllers_file.odom_tf, odom_frames(controllers_file, body)),
+                                controllers_file.odom_tf, odom_frames(controllers_file, body),
+                                joint_states.topics),
             stack, bar.advance if bar else None, live)
     track = None
     if live:
@@ -263,7 +266,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
 
         track = next(w.track for w in writers if isinstance(w, LiveWriter))
     return SimulateReport(summary, clock() - start, last if keep_run else None,
-                          live_track=track, notes=tuple(
+                          live_track=track, notes=joint_states.notes + tuple(
                               f"note: the simulator's collision shape of link {skipped}"
                               for skipped in body.shape.skipped))
 

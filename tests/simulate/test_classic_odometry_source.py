@@ -86,15 +86,16 @@ def test_turtlebot3s_ros1_odometry_source(tmp_path, source, world):
 
 
 def _wheel_speeds(robot: Path, tmp_path: Path, joint: str) -> list[tuple[float, float]]:
-    """(time [s], speed [rad/s]) of ``joint`` over 1 s ahead at 0.2 m/s."""
+    """(time [s], speed [rad/s]) of ``joint`` over 1 s ahead at 0.2 m/s, from --out's CSV.
+
+    Not from the bag: sam_bot has no joint-state publisher, so its bag has no joint states.
+    """
     scenario = tmp_path / "ahead.yaml"
     scenario.write_text("duration_s: 1\ncmd_vel: [{start_s: 0, duration_s: 1, linear_m_s: 0.2}]\n")
-    messages = bag_messages(robot, tmp_path, "-s", scenario, duration_s="1")
-    out = []
-    for m in messages["/joint_states"]:
-        stamp = m.header.stamp.sec + m.header.stamp.nanosec * 1e-9
-        out.append((stamp, m.velocity[list(m.name).index(joint)]))
-    return out
+    bag_messages(robot, tmp_path, "-s", scenario, "--out", tmp_path / "out", duration_s="1")
+    with (tmp_path / "out" / "joint_states.csv").open(newline="") as f:
+        return [(float(row["time_s"]), float(row[f"{joint}_rad_s"]))
+                for row in csv.DictReader(f)]
 
 
 def test_sam_bots_wheels_ramp_at_its_max_wheel_acceleration(tmp_path):

@@ -27,7 +27,8 @@ def test_turtlebot3_without_publish_odom_tf_lists_and_broadcasts_no_odom_tf(tmp_
     pytest.importorskip("rosbags")
     robot = edited(TURTLEBOT3, tmp_path, ("<publishOdomTF>true", "<publishOdomTF>false"),
                    file=TURTLEBOT3_GAZEBO)
-    assert plugin_topics(robot, TB3_PLUGIN) == {"/cmd_vel": "in", "/odom": "out"}
+    assert plugin_topics(robot, TB3_PLUGIN) == {"/cmd_vel": "in", "/odom": "out",
+                                                "/joint_states": "out"}
     messages = bag_messages(robot, tmp_path)
     assert messages["/odom"]
     assert not {pair for pair in tf_pairs(messages) if pair[0] == "odom"}
@@ -36,14 +37,16 @@ def test_turtlebot3_without_publish_odom_tf_lists_and_broadcasts_no_odom_tf(tmp_
 def test_turtlebot3_with_publish_wheel_tf_alone_still_lists_tf(tmp_path):
     robot = edited(TURTLEBOT3, tmp_path, ("<publishOdomTF>true", "<publishOdomTF>false"),
                    ("<publishWheelTF>false", "<publishWheelTF>true"), file=TURTLEBOT3_GAZEBO)
-    assert plugin_topics(robot, TB3_PLUGIN) == {"/cmd_vel": "in", "/odom": "out", "/tf": "out"}
+    assert plugin_topics(robot, TB3_PLUGIN) == {"/cmd_vel": "in", "/odom": "out", "/tf": "out",
+                                                "/joint_states": "out"}
 
 
 def test_turtlebot3_without_publish_tf_publishes_no_odometry_at_all(tmp_path):
     pytest.importorskip("rosbags")
     robot = edited(TURTLEBOT3, tmp_path, ("<publishTf>true", "<publishTf>false"),
                    file=TURTLEBOT3_GAZEBO)
-    assert plugin_topics(robot, TB3_PLUGIN) == {"/cmd_vel": "in"}
+    # <publishWheelJointState> is not gated by <publishTf>
+    assert plugin_topics(robot, TB3_PLUGIN) == {"/cmd_vel": "in", "/joint_states": "out"}
     messages = bag_messages(robot, tmp_path)
     assert not [topic for topic in messages if "odom" in topic]
     assert not {pair for pair in tf_pairs(messages) if pair[0] == "odom"}

@@ -3,11 +3,12 @@
 Topics follow the robot's documentation: the sensors' topics as their Gazebo plugins resolve
 them (``scan``, ``imu/data``, ``pi_camera/camera_info``; with images ``pi_camera/image_raw``
 (rgb8) and, with depth, ``pi_camera/depth/image_raw`` (32FC1), as gazebo_ros_camera names
-them), ``/CONTROLLER/odom`` (the controllers file's diff drive; ``/diff_controller/odom``
-without one) and ``/tf`` (odom -> base) as diff_drive_controller publishes them, in its
-``odom_frame_id`` and ``base_frame_id`` (or a Gazebo drive plugin's frames),
-``/joint_states`` as joint_state_broadcaster, ``/tf`` for movable joints, ``/tf_static`` for
-fixed ones and ``/robot_description`` (the URDF, once) as robot_state_publisher, and
+them), ``/CONTROLLER/odom`` (the controllers file's diff drive) and ``/tf`` (odom -> base)
+as diff_drive_controller publishes them, in its ``odom_frame_id`` and ``base_frame_id`` (or
+a Gazebo drive plugin's topic and frames; none when nothing configured publishes odometry),
+``/joint_states`` where a joint_state_broadcaster or a Gazebo plugin publishes them,
+``/tf`` for movable joints (with joint states), ``/tf_static`` for fixed ones and
+``/robot_description`` (the URDF, once) as robot_state_publisher, and
 ``/clock`` at every control tick as gazebo_ros publishes simulated time. Header stamps are
 simulated time; each publisher offers the QoS its ROS node does. ``/tf`` has two publishers.
 """
@@ -89,13 +90,15 @@ def odom_frames(controllers: ControllersFile, body: SimRobot) -> tuple[str, str]
 
 def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
                odom_topic: str | None = ODOM_TOPIC, odom_tf: bool = True,
-               frames: tuple[str, str] | None = None) -> list[Publisher]:
+               frames: tuple[str, str] | None = None,
+               joint_states: Sequence[str] = (JOINT_STATES_TOPIC,)) -> list[Publisher]:
     """Every publisher of a run of ``body``: latched topics and the clock first.
 
     Camera images only when ``images`` are on; odometry on ``odom_topic`` (the diff-drive
     controller's ``~/odom``; None: none) and odom -> base on /tf when ``odom_tf``, both in
-    ``frames`` (odometry frame, base frame; None: ``odom`` and the root link). Messages
-    with equal stamps are in this order in a bag.
+    ``frames`` (odometry frame, base frame; None: ``odom`` and the root link); joint states
+    on each of ``joint_states`` and, from them, the movable joints on /tf (none without).
+    Messages with equal stamps are in this order in a bag.
     """
     out = [Publisher(DESCRIPTION_TOPIC, "std_msgs/msg/String", qos.ROBOT_DESCRIPTION, _once,
                      _robot_description),
@@ -107,10 +110,11 @@ def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
     if odom_tf:
         out.append(Publisher(TF_TOPIC, TF_TYPE, qos.SYSTEM_DEFAULTS,
                              lambda r: r.odometry.times_s, partial(tf_base, frames=frames)))
-    out += [Publisher(TF_TOPIC, TF_TYPE, qos.DYNAMIC_TF, lambda r: r.joints.times_s,
-                      JointTransforms()),
-            Publisher(JOINT_STATES_TOPIC, "sensor_msgs/msg/JointState", qos.SYSTEM_DEFAULTS,
-                      lambda r: r.joints.times_s, _joint_states)]
+    if joint_states:  # robot_state_publisher's transforms come from joint states
+        out.append(Publisher(TF_TOPIC, TF_TYPE, qos.DYNAMIC_TF, lambda r: r.joints.times_s,
+                             JointTransforms()))
+    out += [Publisher(topic, "sensor_msgs/msg/JointState", qos.SYSTEM_DEFAULTS,
+                      lambda r: r.joints.times_s, _joint_states) for topic in joint_states]
     if body.lidar is not None:
         out.append(Publisher(absolute(body.lidar.spec.topic, "scan"),
                              "sensor_msgs/msg/LaserScan", qos.SENSOR_DATA,

@@ -8,8 +8,10 @@ diff-drive plugin drives the base, none: the plugin's parameters are the control
 simulator's defaults). In the file, the controller
 whose ``type`` is ``diff_drive_controller/DiffDriveController`` under ``controller_manager``
 (or, since Jazzy, in its own ``ros__parameters``) gives its ``ros__parameters``;
-``controller_manager``'s ``update_rate`` is the control rate. Pure apart from reading the
-one file.
+``controller_manager``'s ``update_rate`` is the control rate. What the file configures is
+what publishes: odometry (and odom -> base on /tf) only from a diff-drive controller, joint
+states only from a ``joint_state_broadcaster/JointStateBroadcaster``; with no file, neither.
+Pure apart from reading the one file.
 """
 
 from __future__ import annotations
@@ -35,6 +37,7 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 DIFF_DRIVE = "diff_drive_controller/DiffDriveController"
+JOINT_STATE_BROADCASTER = "joint_state_broadcaster/JointStateBroadcaster"
 _AXES = (("linear.x", "linear", "m_s"), ("angular.z", "angular", "rad_s"))
 
 
@@ -56,7 +59,7 @@ class ControllersFile:
     """Where odometry is published, when not ``/NAME/odom``."""
     publishes_odometry: bool = True
     """False when the base's controller publishes no Odometry (a Classic diff-drive plugin
-    without ``<publish_odom>true``)."""
+    without ``<publish_odom>true``, a controllers file without a diff drive, or none)."""
     odom_tf: bool = True
     """Whether odom -> base is broadcast on /tf (diff_drive_controller's ``enable_odom_tf``)."""
     speed_limiter: str = DIFF_DRIVE_CONTROLLER
@@ -67,6 +70,8 @@ class ControllersFile:
     """The odometry's ``child_frame_id`` and the odom tf's child; None: the root link."""
     classic_drive: ClassicDrive | None = None
     """Gazebo Classic's diff-drive plugin's odometry source and wheel ramp, when it drives."""
+    joint_state_topics: tuple[str, ...] = ()
+    """Where the file's joint_state_broadcasters publish (none: no broadcaster)."""
 
     @property
     def label(self) -> str:
@@ -104,8 +109,8 @@ def read_controllers_file(path: Path | tuple[Path, ...] | None) -> ControllersFi
         ControllersFileError: Unreadable, not YAML, or a parameter that is not a number.
     """
     paths = (path,) if isinstance(path, Path) else path or ()
-    if not paths:
-        return ControllersFile(None, {})
+    if not paths:  # nothing is configured: no controller publishes
+        return ControllersFile(None, {}, publishes_odometry=False, odom_tf=False)
     documents = [_document(p) for p in paths]
     document = documents[0] if len(documents) == 1 else merged_parameters(documents)
     for p, one in zip(paths, documents, strict=True):
@@ -134,8 +139,21 @@ def read_controllers_file(path: Path | tuple[Path, ...] | None) -> ControllersFi
                 raise ControllersFileError(f"{where}: {name}.{key}: expected 6 numbers")
             values[key] = tuple(_number(where, key, v) for v in diagonal)
     odom_frame, base_frame = _frames(where, params) if name else (None, None)
-    return ControllersFile(where, values, name, odom_tf=params.get("enable_odom_tf") is not False,
-                           odom_frame=odom_frame, base_frame=base_frame, source=label)
+    return ControllersFile(where, values, name, source=label, publishes_odometry=bool(name),
+                           odom_tf=bool(name) and params.get("enable_odom_tf") is not False,
+                           odom_frame=odom_frame, base_frame=base_frame,
+                           joint_state_topics=_broadcaster_topics(nodes))
+
+
+def _broadcaster_topics(nodes: Mapping[str, Any]) -> tuple[str, ...]:
+    """Where each joint_state_broadcaster publishes: ``/joint_states``, else ``~/joint_states``.
+
+    ``~/`` (the controller's namespace, at the root here) with ``use_local_topics: true``.
+    """
+    return tuple(f"/{name}/joint_states" if _flat(nodes.get(name, {})).get("use_local_topics")
+                 is True else "/joint_states"
+                 for name, kind in controller_types(dict(nodes)).items()
+                 if kind == JOINT_STATE_BROADCASTER)
 
 
 def _document(path: Path) -> Any:
