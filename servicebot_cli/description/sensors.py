@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 from servicebot_cli.description.elements import parse_float
 from servicebot_cli.description.extensions import Params, Plugin, Sensor, param
+from servicebot_cli.description.ray_output import RayOutput, ray_output
 from servicebot_cli.description.ros_names import PluginNode
 
 LIDAR_TYPES = ("ray", "gpu_ray", "lidar", "gpu_lidar")
@@ -52,6 +53,10 @@ class LidarSpec:
         min_range_m, max_range_m: Valid range; returns outside it are reported as out of range.
         range_resolution_m: Quantisation of the ranges.
         update_rate_hz: Scans per second.
+        vertical_samples, vertical_min_angle_rad, vertical_max_angle_rad: Rings of rays and
+            their span in inclination (None where not written: one level ring).
+        output: What its ROS plugin (or gz-sim's ``<topic>``) publishes
+            (:mod:`.ray_output`); None when nothing does, and then ``topic`` is None too.
     """
 
     samples: int | None
@@ -65,6 +70,10 @@ class LidarSpec:
     noise: NoiseSpec | None
     frame: str | None
     topic: str | None
+    vertical_samples: int | None = None
+    vertical_min_angle_rad: float | None = None
+    vertical_max_angle_rad: float | None = None
+    output: RayOutput | None = None
 
 
 @dataclass(frozen=True)
@@ -194,6 +203,8 @@ def lidar_spec(sensor: Sensor) -> LidarSpec:
     p = sensor.params
     root = "lidar" if any(k.startswith("lidar/") for k, _ in p) else "ray"
     plugin = ros_plugin(sensor)
+    output = ray_output(plugin)
+    topic = plugin_topic(plugin, "~/out") if plugin else gz_topic(sensor)
     return LidarSpec(
         samples=_int(p, f"{root}/scan/horizontal/samples"),
         resolution=_float(p, f"{root}/scan/horizontal/resolution"),
@@ -205,7 +216,11 @@ def lidar_spec(sensor: Sensor) -> LidarSpec:
         update_rate_hz=sensor.update_rate_hz,
         noise=_noise(p, f"{root}/noise"),
         frame=_frame(sensor),
-        topic=plugin_topic(plugin, "~/out") if plugin else gz_topic(sensor),
+        topic=topic if output is not None else None,
+        vertical_samples=_int(p, f"{root}/scan/vertical/samples"),
+        vertical_min_angle_rad=_float(p, f"{root}/scan/vertical/min_angle"),
+        vertical_max_angle_rad=_float(p, f"{root}/scan/vertical/max_angle"),
+        output=output if topic is not None else None,
     )
 
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
-from servicebot_cli.description.extensions import Sensor, param, params_all
+from servicebot_cli.description.extensions import Sensor, params_all
 from servicebot_cli.description.sensors import (
     CAMERA_TYPES,
     LIDAR_TYPES,
@@ -61,12 +61,6 @@ class SensorInfo:
     topics_from: str | None = None
 
 
-def _message(name: str) -> str:
-    """``sensor_msgs/LaserScan`` in the ROS 2 spelling ``sensor_msgs/msg/LaserScan``."""
-    package, _, rest = name.partition("/")
-    return name if not rest or rest.startswith("msg/") else f"{package}/msg/{rest}"
-
-
 def sensor_info(sensor: Sensor) -> SensorInfo:
     """The summary of ``sensor``."""
     plugin = ros_plugin(sensor)
@@ -75,11 +69,10 @@ def sensor_info(sensor: Sensor) -> SensorInfo:
                       sensor.reference, (), topics_from=topic_origin(sensor))
     if sensor.type in LIDAR_TYPES:
         spec = lidar_spec(sensor)
-        output = param(plugin.params, "output_type") if plugin else None
         # gz-sensors' GPU lidar also publishes its points beside the scan
         points = f"{spec.topic}/points" if gz_topic(sensor) and sensor.type in GPU_LIDAR_TYPES \
             else None
-        topics = _present((spec.topic, _message(output or "sensor_msgs/LaserScan")),
+        topics = _present((spec.topic, spec.output.message if spec.output else ""),
                           (points, "sensor_msgs/msg/PointCloud2"))
         return replace(base, kind="lidar", frame=spec.frame, lidar=spec, topics=topics)
     if sensor.type in CAMERA_TYPES:

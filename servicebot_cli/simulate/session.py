@@ -230,6 +230,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
     joint_states = joint_state_topics(robot, controllers_file)
     scenario = resolve(scenario, controllers_file)
     from servicebot_cli.simulate import simulator
+    from servicebot_cli.simulate.bag.ray_messages import unpublished_note
     from servicebot_cli.simulate.bag.ros_messages import odom_frames, odom_topic, publishers
     from servicebot_cli.simulate.body import sim_robot
     from servicebot_cli.simulate.controllers.diff_drive import tick_count
@@ -268,7 +269,9 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
     return SimulateReport(summary, clock() - start, last if keep_run else None,
                           live_track=track, notes=joint_states.notes + tuple(
                               f"note: the simulator's collision shape of link {skipped}"
-                              for skipped in body.shape.skipped))
+                              for skipped in body.shape.skipped) + tuple(
+                              filter(None, [unpublished_note(body.lidar.spec) if body.lidar
+                                            else None])))
 
 
 def _load_modules(outputs: Outputs, *, camera_images: bool) -> None:

@@ -38,6 +38,10 @@ class Payloads:
     def __len__(self) -> int:
         return len(self.block)
 
+    def part(self, start: int, stop: int) -> Payloads:
+        """Messages ``start`` to ``stop`` (excluded), on the same blocks."""
+        return Payloads(self.blocks, self.block[start:stop], self.row[start:stop])
+
     def sizes(self) -> IntArray:
         """Bytes of each message."""
         widths = np.array([b.shape[1] for b in self.blocks], dtype=np.int64)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import struct
 from collections.abc import Mapping, Sequence
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -114,7 +115,7 @@ def rows(records: npt.NDArray[np.void]) -> npt.NDArray[np.uint8]:
 
 
 def serialize(layout: Layout, times_s: npt.NDArray[np.float64],
-              fill: Mapping[str, npt.NDArray[np.float64] | float]) -> npt.NDArray[np.uint8]:
+              fill: Mapping[str, npt.NDArray[Any] | float]) -> npt.NDArray[np.uint8]:
     """Messages of ``layout`` stamped ``times_s`` [s], each field of ``fill`` set: their rows."""
     records = layout.records(len(times_s))
     set_stamps(records, times_s)

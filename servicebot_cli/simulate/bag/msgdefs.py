@@ -133,6 +133,45 @@ _FIELDS: dict[str, str] = {
     "std_msgs/msg/String": (
         'string data\n'
     ),
+    "sensor_msgs/msg/Range": (
+        'uint8 ULTRASOUND=0\n'
+        'uint8 INFRARED=1\n'
+        'std_msgs/Header header\n'
+        'uint8 radiation_type\n'
+        'float32 field_of_view\n'
+        'float32 min_range\n'
+        'float32 max_range\n'
+        'float32 range\n'
+    ),
+    "sensor_msgs/msg/PointCloud2": (
+        'std_msgs/Header header\n'
+        'uint32 height\n'
+        'uint32 width\n'
+        'sensor_msgs/PointField[] fields\n'
+        'bool is_bigendian\n'
+        'uint32 point_step\n'
+        'uint32 row_step\n'
+        'uint8[] data\n'
+        'bool is_dense\n'
+    ),
+    "sensor_msgs/PointField": "".join(
+        f"uint8 {name}={code}\n" for code, name in enumerate(
+            ("INT8", "UINT8", "INT16", "UINT16", "INT32", "UINT32", "FLOAT32", "FLOAT64"), 1))
+    + 'string name\nuint32 offset\nuint8 datatype\nuint32 count\n',
+    "sensor_msgs/msg/PointCloud": (
+        'std_msgs/Header header\n'
+        'geometry_msgs/Point32[] points\n'
+        'sensor_msgs/ChannelFloat32[] channels\n'
+    ),
+    "geometry_msgs/Point32": (
+        'float32 x\n'
+        'float32 y\n'
+        'float32 z\n'
+    ),
+    "sensor_msgs/ChannelFloat32": (
+        'string name\n'
+        'float32[] values\n'
+    ),
 }
 
 # The types each published type uses, in the order rosbag2 lists them.
@@ -183,6 +222,21 @@ _USES: dict[str, tuple[str, ...]] = {
         "builtin_interfaces/Time",
     ),
     "std_msgs/msg/String": (),
+    "sensor_msgs/msg/Range": (
+        "std_msgs/Header",
+        "builtin_interfaces/Time",
+    ),
+    "sensor_msgs/msg/PointCloud2": (
+        "std_msgs/Header",
+        "builtin_interfaces/Time",
+        "sensor_msgs/PointField",
+    ),
+    "sensor_msgs/msg/PointCloud": (
+        "std_msgs/Header",
+        "builtin_interfaces/Time",
+        "geometry_msgs/Point32",
+        "sensor_msgs/ChannelFloat32",
+    ),
 }
 
 

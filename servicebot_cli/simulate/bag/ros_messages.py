@@ -1,7 +1,8 @@
 """A run's messages as serialized ROS 2 messages on the robot's topics, a piece at a time.
 
 Topics follow the robot's documentation: the sensors' topics as their Gazebo plugins resolve
-them (``scan``, ``imu/data``, ``pi_camera/camera_info``; with images ``pi_camera/image_raw``
+them, a ray sensor's in the type its plugin names (:mod:`.ray_messages`), (``scan``,
+``imu/data``, ``pi_camera/camera_info``; with images ``pi_camera/image_raw``
 (rgb8) and, with depth, ``pi_camera/depth/image_raw`` (32FC1), as gazebo_ros_camera names
 them), ``/CONTROLLER/odom`` (the controllers file's diff drive) and ``/tf`` (odom -> base)
 as diff_drive_controller publishes them, in its ``odom_frame_id`` and ``base_frame_id`` (or
@@ -22,9 +23,9 @@ from functools import partial
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.simulate.bag import camera_messages, cdr, qos
+from servicebot_cli.simulate.bag import camera_messages, cdr, qos, ray_messages
 from servicebot_cli.simulate.bag import quaternions as rotations
-from servicebot_cli.simulate.bag.byte_rows import ByteRows
+from servicebot_cli.simulate.bag.byte_rows import ByteRows, Payloads
 from servicebot_cli.simulate.bag.tf_messages import ODOM_FRAME, JointTransforms, tf_base, tf_static
 from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.controllers.config import ControllersFile
@@ -45,14 +46,14 @@ class Publisher:
     """One ROS node's messages on one topic, and the QoS the node offers.
 
     ``times`` gives a piece's message stamps [s] and ``serialize`` their CDR payloads, one
-    row of bytes per message (a publisher's messages all have one size).
+    row of bytes per message (rows of a few sizes for a point cloud, in order).
     """
 
     topic: str
     type: str
     qos: qos.Qos
     times: Callable[[SimResult], FloatArray]
-    serialize: Callable[[SimResult], ByteRows]
+    serialize: Callable[[SimResult], ByteRows | Payloads]
 
 
 @dataclass(frozen=True)
@@ -115,10 +116,10 @@ def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
                              JointTransforms()))
     out += [Publisher(topic, "sensor_msgs/msg/JointState", qos.SYSTEM_DEFAULTS,
                       lambda r: r.joints.times_s, _joint_states) for topic in joint_states]
-    if body.lidar is not None:
-        out.append(Publisher(absolute(body.lidar.spec.topic, "scan"),
-                             "sensor_msgs/msg/LaserScan", qos.SENSOR_DATA,
-                             lambda r: r.scans.times_s if r.scans else np.zeros(0), _scan))
+    if body.lidar is not None and ray_messages.unpublished_note(body.lidar.spec) is None:
+        message, serialize = ray_messages.serializer_for(body.lidar.spec)
+        out.append(Publisher(absolute(body.lidar.spec.topic, "scan"), message, qos.SENSOR_DATA,
+                             lambda r: r.scans.times_s if r.scans else np.zeros(0), serialize))
     if body.imu is not None:
         out.append(Publisher(absolute(body.imu.spec.topic, "imu"), "sensor_msgs/msg/Imu",
                              qos.SENSOR_DATA,
@@ -174,25 +175,6 @@ def _robot_description(result: SimResult) -> ByteRows:
     layout = cdr.Layout()
     layout.string(result.body.robot.xml_text)
     return cdr.rows(layout.records(len(_once(result))))
-
-
-def _scan(result: SimResult) -> ByteRows:
-    scans = result.scans
-    assert scans is not None
-    spec, rays = scans.spec, len(scans.angles_rad)
-    layout = cdr.Layout()
-    layout.header(spec.frame or result.body.root_link)
-    for name in ("angle_min", "angle_max", "angle_increment", "time_increment", "scan_time",
-                 "range_min", "range_max"):
-        layout.field(name, "<f4")
-    layout.sequence("ranges", "<f4", rays)
-    layout.sequence("intensities", "<f4", 0)
-    step = (scans.angles_rad[-1] - scans.angles_rad[0]) / max(rays - 1, 1)
-    return cdr.serialize(layout, scans.times_s, {
-        "angle_min": scans.angles_rad[0], "angle_max": scans.angles_rad[-1],
-        "angle_increment": step, "time_increment": 0.0, "scan_time": scans.period_s,
-        "range_min": spec.min_range_m or 0.0, "range_max": spec.max_range_m or np.inf,
-        "ranges": scans.ranges_m.astype(np.float32)})
 
 
 def _imu(result: SimResult) -> ByteRows:

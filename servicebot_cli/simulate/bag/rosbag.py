@@ -64,14 +64,15 @@ class BagWriter:
         self.end_ns = 0
         # messages waiting for their turn, in the order they came: blocks of one publisher's
         # messages (its index, their stamps [ns] in time order, their payloads as rows)
-        self.waiting: list[tuple[int, IntArray, ByteRows]] = []
+        self.waiting: list[tuple[int, IntArray, Payloads]] = []
 
     def add(self, piece: SimResult) -> None:
         """Take a piece's messages; write those no later piece can precede."""
         for index, publisher in enumerate(self.publishers):
             times = publisher.times(piece)
             if len(times):
-                self.waiting.append((index, stamps_ns(times), publisher.serialize(piece)))
+                self.waiting.append((index, stamps_ns(times),
+                                     _as_payloads(publisher.serialize(piece))))
         if piece.last:
             self._write(None)
             return
@@ -88,9 +89,9 @@ class BagWriter:
         ready, kept = [], []
         for publisher, times, rows in self.waiting:  # each block's ready messages lead it
             count = len(times) if before_ns is None else int(np.searchsorted(times, before_ns))
-            ready.append((publisher, times[:count], rows[:count]))
+            ready.append((publisher, times[:count], rows.part(0, count)))
             if count < len(times):
-                kept.append((publisher, times[count:], rows[count:]))
+                kept.append((publisher, times[count:], rows.part(count, len(times))))
         self.waiting = kept
         counts = [len(times) for _, times, _ in ready]
         if not sum(counts):
@@ -98,9 +99,13 @@ class BagWriter:
         stamp = np.concatenate([times for _, times, _ in ready])
         source = np.repeat([publisher for publisher, _, _ in ready], counts)
         order = np.lexsort((np.arange(len(stamp)), source, stamp))
-        payloads = Payloads([rows for _, _, rows in ready],
-                            np.repeat(np.arange(len(ready)), counts)[order],
-                            np.concatenate([np.arange(n) for n in counts])[order])
+        blocks: list[ByteRows] = []
+        block = []
+        for _, _, rows in ready:
+            block.append(rows.block + len(blocks))
+            blocks += rows.blocks
+        payloads = Payloads(blocks, np.concatenate(block)[order],
+                            np.concatenate([rows.row for _, _, rows in ready])[order])
         channels, stamps = self.channel[source[order]], stamp[order]
         sequences = np.empty(len(stamps), dtype=np.int64)
         for channel in np.flatnonzero(np.bincount(channels)).tolist():
@@ -119,6 +124,14 @@ class BagWriter:
         (self.directory / "metadata.yaml").write_text(
             _metadata(self.file_name, self.topics, counts, self.start_ns or 0, self.end_ns),
             encoding="utf-8")
+
+
+def _as_payloads(rows: ByteRows | Payloads) -> Payloads:
+    """Messages of one size as :class:`Payloads` of one block."""
+    if isinstance(rows, Payloads):
+        return rows
+    return Payloads([rows], np.zeros(len(rows), dtype=np.int64),
+                    np.arange(len(rows), dtype=np.int64))
 
 
 def _channel(topic: Topic) -> Channel:

@@ -99,8 +99,10 @@ def tables(result: SimResult) -> dict[str, Table]:
     }
     if result.scans is not None:
         scans = result.scans
-        out["scan.csv"] = _table(("time_s", *(f"range_m@{a:.6f}rad" for a in scans.angles_rad)),
-                                 (scans.times_s, *scans.ranges_m.T))
+        up = scans.inclinations_rad  # several rings: each ray's inclination too
+        names = [f"range_m@{a:.6f}rad" for a in scans.angles_rad] if up is None else \
+            [f"range_m@{a:.6f}rad@{e:.6f}rad" for a, e in zip(scans.angles_rad, up, strict=True)]
+        out["scan.csv"] = _table(("time_s", *names), (scans.times_s, *scans.ranges_m.T))
     if result.imu is not None:
         imu = result.imu
         out["imu.csv"] = _table(

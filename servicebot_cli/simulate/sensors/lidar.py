@@ -1,12 +1,13 @@
 """The LIDAR: rays cast in 3D from the sensor's pose against the world, as Gazebo's ray sensor.
 
 Rays leave the sensor frame at the scan angles (Gazebo spaces ``samples`` rays evenly from
-``min_angle`` to ``max_angle``, both included) and are cast against the floor and every
-obstacle. Returns at or closer than ``min`` read -inf and those at or beyond ``max`` (or
-none) +inf, as REP 117 and ``sensor_msgs/LaserScan`` say; the others get the gaussian noise
-and are clamped into ``[min, max]``, as Gazebo Classic's ray sensors (``RaySensor.cc``,
-``GpuRaySensor.cc``) and gz-sensors' ``Lidar::ApplyNoise`` do. ``<range><resolution>`` is
-not applied: neither quantises ranges (gz-sensors only reports ``RangeResolution()``).
+``min_angle`` to ``max_angle``, both included), in each ring of ``<vertical>`` samples (one
+level ring without), and are cast against the floor and every obstacle. Returns at or
+closer than ``min`` read -inf and those at or beyond ``max`` (or none) +inf, as REP 117 and
+``sensor_msgs/LaserScan`` say; the others get the gaussian noise and are clamped into
+``[min, max]``, as Gazebo Classic's ray sensors (``RaySensor.cc``, ``GpuRaySensor.cc``) and
+gz-sensors' ``Lidar::ApplyNoise`` do. ``<range><resolution>`` is not applied: neither
+quantises ranges (gz-sensors only reports ``RangeResolution()``).
 """
 
 from __future__ import annotations
@@ -32,7 +33,11 @@ RAYS_PER_BATCH = 32_768  # keeps each batch's temporaries in cache
 
 @dataclass(frozen=True)
 class Scans:
-    """LaserScan data: ``ranges`` (scans, samples) [m] at ``times_s``, and sensor poses."""
+    """Scan data: ``ranges`` (scans, rays) [m] at ``times_s``, and sensor poses.
+
+    A ray's azimuth is ``angles_rad`` and, with several rings, its inclination
+    ``inclinations_rad`` (None: one level ring), both (rays,), ring after ring.
+    """
 
     spec: LidarSpec
     times_s: FloatArray
@@ -41,6 +46,7 @@ class Scans:
     origin_m: FloatArray  # sensor position in the world per scan, (scans, 3)
     yaw_rad: FloatArray  # sensor heading in the world per scan
     period_s: float = 0.0  # between scans (0 for a run of one scan)
+    inclinations_rad: FloatArray | None = None
 
 
 def scan_angles(spec: LidarSpec) -> FloatArray:
@@ -53,6 +59,39 @@ def scan_angles(spec: LidarSpec) -> FloatArray:
     return np.linspace(spec.min_angle_rad, spec.max_angle_rad, spec.samples)
 
 
+def vertical_angles(spec: LidarSpec) -> FloatArray:
+    """Each ring's inclination [rad]: ``<vertical>`` samples from min to max, else one, level.
+
+    The rings are spaced as the scan's rays, both ends included (Gazebo's
+    ``vertical_angle_step``, (max - min) / (samples - 1)).
+    """
+    count = spec.vertical_samples or 1
+    if count <= 1:
+        return np.zeros(1)
+    return np.linspace(spec.vertical_min_angle_rad or 0.0, spec.vertical_max_angle_rad or 0.0,
+                       count)
+
+
+def ray_angles(spec: LidarSpec) -> tuple[FloatArray, FloatArray | None]:
+    """Each ray's azimuth and inclination [rad], ring after ring as Gazebo orders its ranges.
+
+    The inclination is None for one level ring (every ray's is 0).
+    """
+    azimuth, rings = scan_angles(spec), vertical_angles(spec)
+    if len(rings) == 1:
+        return azimuth, None
+    return np.tile(azimuth, len(rings)), np.repeat(rings, len(azimuth))
+
+
+def _local_directions(spec: LidarSpec) -> FloatArray:
+    """Each ray's unit direction in the sensor frame, shape (3, R)."""
+    azimuth, inclination = ray_angles(spec)
+    if inclination is None:
+        return np.vstack((np.cos(azimuth), np.sin(azimuth), np.zeros_like(azimuth)))
+    flat = np.cos(inclination)
+    return np.vstack((flat * np.cos(azimuth), flat * np.sin(azimuth), np.sin(inclination)))
+
+
 def scan(spec: LidarSpec, transform_sensor_to_base: FloatArray, base_height_m: float,
          path: Path2D, times_s: FloatArray, solids: Sequence[Solid], meshes: Sequence[raycast.Mesh],
          noise_m: noise.Noise, own_m: FloatArray | None = None, period_s: float = 0.0) -> Scans:
@@ -60,10 +99,9 @@ def scan(spec: LidarSpec, transform_sensor_to_base: FloatArray, base_height_m: f
 
     ``noise_m`` is the range noise of the run (its bias drawn once).
     """
-    angles = scan_angles(spec)
+    angles, inclinations = ray_angles(spec)
     x, y, yaw = pose_at(path, times_s)
-    local_dirs = transform_sensor_to_base[:3, :3] @ np.vstack(
-        (np.cos(angles), np.sin(angles), np.zeros_like(angles)))  # (3, R) in the base frame
+    local_dirs = transform_sensor_to_base[:3, :3] @ _local_directions(spec)  # (3, R), base
     offset = transform_sensor_to_base[:3, 3]
     c, s = np.cos(yaw), np.sin(yaw)
     origins = np.column_stack((x + c * offset[0] - s * offset[1],
@@ -87,14 +125,13 @@ def scan(spec: LidarSpec, transform_sensor_to_base: FloatArray, base_height_m: f
             np.minimum(true[start:stop], own_m[start:stop], out=true[start:stop])
     sensor_yaw = yaw + np.arctan2(transform_sensor_to_base[1, 0], transform_sensor_to_base[0, 0])
     return Scans(spec, times_s, angles, readings(true, spec, noise_m), origins, sensor_yaw,
-                 period_s)
+                 period_s, inclinations)
 
 
 def ray_directions(spec: LidarSpec, transform_sensor_to_base: FloatArray) -> FloatArray:
     """Each ray's unit direction in the base frame, shape (R, 3)."""
-    angles = scan_angles(spec)
-    local = np.column_stack((np.cos(angles), np.sin(angles), np.zeros_like(angles)))
-    return np.asarray(local @ transform_sensor_to_base[:3, :3].T, dtype=np.float64)
+    return np.asarray(_local_directions(spec).T @ transform_sensor_to_base[:3, :3].T,
+                      dtype=np.float64)
 
 
 def fixed_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: FloatArray,

@@ -1,0 +1,76 @@
+"""What a ray sensor publishes on ROS: the message type its Gazebo ROS plugin names.
+
+gazebo_ros_pkgs' ROS 2 ``gazebo_ros_ray_sensor`` (``gazebo_plugins/src/
+gazebo_ros_ray_sensor.cpp``) publishes on ``~/out`` the ``<output_type>`` it is given:
+``sensor_msgs/LaserScan``, ``sensor_msgs/PointCloud``, ``sensor_msgs/PointCloud2`` or
+``sensor_msgs/Range``; without one, PointCloud2. Any other type is an error: the plugin
+publishes nothing. For Range, ``<radiation_type>`` is ``ultrasound`` or ``infrared`` (the
+default); any other is an error too, and nothing is published. ``<min_intensity>`` (default 0)
+floors the intensities of scans and clouds.
+
+gazebo_ros_pkgs' ROS 1 plugins publish one type each: ``gazebo_ros_laser`` and
+``gazebo_ros_gpu_laser`` LaserScan, ``gazebo_ros_block_laser`` PointCloud, ``gazebo_ros_range``
+Range. Another ROS plugin publishes its ``<output_type>`` when it names one, else LaserScan.
+gz-sim's lidars publish LaserScan on their ``<topic>`` (ros_gz_bridge keeps the type).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from servicebot_cli.description.elements import parse_float
+from servicebot_cli.description.extensions import Plugin, param
+
+LASER_SCAN = "sensor_msgs/msg/LaserScan"
+POINT_CLOUD = "sensor_msgs/msg/PointCloud"
+POINT_CLOUD2 = "sensor_msgs/msg/PointCloud2"
+RANGE = "sensor_msgs/msg/Range"
+ULTRASOUND, INFRARED = 0, 1
+"""``sensor_msgs/Range``'s ``radiation_type`` values."""
+
+_ROS2_TYPES = {"sensor_msgs/LaserScan": LASER_SCAN, "sensor_msgs/PointCloud": POINT_CLOUD,
+               "sensor_msgs/PointCloud2": POINT_CLOUD2, "sensor_msgs/Range": RANGE}
+_ROS1_TYPES = (("gazebo_ros_block_laser", POINT_CLOUD), ("gazebo_ros_range", RANGE),
+               ("gazebo_ros_laser", LASER_SCAN), ("gazebo_ros_gpu_laser", LASER_SCAN))
+_RADIATION = {"": INFRARED, "infrared": INFRARED, "ultrasound": ULTRASOUND}
+
+
+@dataclass(frozen=True)
+class RayOutput:
+    """A ray sensor's ROS output.
+
+    Attributes:
+        message: Its type, ROS 2 spelling (``sensor_msgs/msg/PointCloud2``).
+        ray_sensor: Whether the ROS 2 ``gazebo_ros_ray_sensor`` publishes it, converting the
+            scan as its ``gazebo_ros/conversions/sensor_msgs.hpp`` does.
+        radiation_type: Range's :data:`ULTRASOUND` or :data:`INFRARED`.
+        min_intensity: The floor of the published intensities.
+    """
+
+    message: str
+    ray_sensor: bool = False
+    radiation_type: int = INFRARED
+    min_intensity: float = 0.0
+
+
+def ray_output(plugin: Plugin | None) -> RayOutput | None:
+    """What ``plugin`` (None: gz-sim's ``<topic>``) publishes; None when it publishes nothing."""
+    if plugin is None:
+        return RayOutput(LASER_SCAN)
+    written = (param(plugin.params, "output_type") or "").strip()
+    if "gazebo_ros_ray_sensor" not in plugin.filename:
+        own = next((kind for name, kind in _ROS1_TYPES if name in plugin.filename), None)
+        return RayOutput(own or _ros2_spelling(written or "sensor_msgs/LaserScan"))
+    message = _ROS2_TYPES.get(written) if written else POINT_CLOUD2
+    radiation = _RADIATION.get((param(plugin.params, "radiation_type") or "").strip())
+    if message is None or (message == RANGE and radiation is None):
+        return None
+    floor = parse_float(param(plugin.params, "min_intensity"))
+    return RayOutput(message, True, INFRARED if radiation is None else radiation,
+                     0.0 if floor is None else floor)
+
+
+def _ros2_spelling(name: str) -> str:
+    """``sensor_msgs/LaserScan`` in the ROS 2 spelling ``sensor_msgs/msg/LaserScan``."""
+    package, _, rest = name.partition("/")
+    return name if not rest or rest.startswith("msg/") else f"{package}/msg/{rest}"

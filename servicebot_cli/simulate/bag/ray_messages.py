@@ -1,0 +1,201 @@
+"""A ray sensor's scans as the message its plugin names: LaserScan, PointCloud2, PointCloud, Range.
+
+The ROS 2 ``gazebo_ros_ray_sensor`` converts each Gazebo scan (``gazebo_ros/conversions/
+sensor_msgs.hpp``), stamped in the plugin's frame:
+
+- *LaserScan*: one ring of ranges; with several vertical rings, the middle one (ring
+  ``rings // 2``). Its other fields are those servicebot has always written (``scan_time``
+  the scan period, no intensities).
+- *PointCloud2*: every ring's rays with a finite range, in order, as points in the sensor
+  frame, ``x = r cos(i) cos(a)``, ``y = r cos(i) sin(a)``, ``z = r sin(i)`` (azimuth ``a``
+  from the horizontal ``min_angle``, inclination ``i`` from the vertical one), with fields
+  ``x``, ``y``, ``z`` and ``intensity``, float32, 16 bytes a point; height 1, dense.
+- *PointCloud*: the same points, and one ``intensity`` channel.
+- *Range*: the least range over every ray (float32's largest when none is less), the field
+  of view the larger of the horizontal and vertical spans, and ``<radiation_type>``.
+
+A kinematic world has no laser retro-reflectors: every ray's intensity is 0, raised to
+``<min_intensity>`` as the plugin does. A cloud's size follows its points, so its messages
+are grouped by size (:class:`~.byte_rows.Payloads`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.description.ray_output import LASER_SCAN, POINT_CLOUD, POINT_CLOUD2, RANGE
+from servicebot_cli.description.sensors import LidarSpec
+from servicebot_cli.simulate.bag import cdr
+from servicebot_cli.simulate.bag.byte_rows import ByteRows, Payloads
+from servicebot_cli.simulate.sensors.lidar import Scans, vertical_angles
+from servicebot_cli.simulate.simulator import SimResult
+
+FloatArray = npt.NDArray[np.float64]
+Fill = Callable[[npt.NDArray[np.bool_], int], Mapping[str, npt.NDArray[Any] | float]]
+"""The fields of the messages of the scans a mask selects, each with this many points."""
+FLOAT32, FLOAT32_MAX = 7, float(np.finfo(np.float32).max)
+CLOUD_FIELDS = ("x", "y", "z", "intensity")
+POINT_BYTES = 4 * len(CLOUD_FIELDS)
+
+
+def unpublished_note(spec: LidarSpec) -> str | None:
+    """Why the run cannot write ``spec``'s messages, as a stderr note; None when it can.
+
+    LaserScan from any plugin; the other types as the ROS 2 ray sensor plugin converts them.
+    """
+    output = spec.output
+    if output is None or output.message == LASER_SCAN or output.ray_sensor:
+        return None
+    return (f"note: /{(spec.topic or '').lstrip('/')} ({output.message}) is not published: "
+            "the simulator writes that type only as gazebo_ros_ray_sensor converts a scan")
+
+
+def serializer_for(spec: LidarSpec) -> tuple[str, Callable[[SimResult], ByteRows | Payloads]]:
+    """The message type of ``spec``'s scans and the function that serializes a piece's."""
+    message = spec.output.message if spec.output else LASER_SCAN
+    serializers: dict[str, Callable[[SimResult], ByteRows | Payloads]] = {
+        POINT_CLOUD2: point_cloud2, POINT_CLOUD: point_cloud, RANGE: range_message}
+    return message, serializers.get(message, laser_scan)
+
+
+def _scans(result: SimResult) -> Scans:
+    assert result.scans is not None  # only a body with a LIDAR has a scan publisher
+    return result.scans
+
+
+def _frame(result: SimResult) -> str:
+    return _scans(result).spec.frame or result.body.root_link
+
+
+def laser_scan(result: SimResult) -> ByteRows:
+    """LaserScan of the middle ring (the only one of a level scan)."""
+    scans = _scans(result)
+    spec, rings = scans.spec, len(vertical_angles(scans.spec))
+    rays = len(scans.angles_rad) // rings
+    start = (rings // 2) * rays
+    angles, ranges = scans.angles_rad[start:start + rays], scans.ranges_m[:, start:start + rays]
+    layout = cdr.Layout()
+    layout.header(_frame(result))
+    for name in ("angle_min", "angle_max", "angle_increment", "time_increment", "scan_time",
+                 "range_min", "range_max"):
+        layout.field(name, "<f4")
+    layout.sequence("ranges", "<f4", rays)
+    layout.sequence("intensities", "<f4", 0)
+    step = (angles[-1] - angles[0]) / max(rays - 1, 1)
+    return cdr.serialize(layout, scans.times_s, {
+        "angle_min": angles[0], "angle_max": angles[-1],
+        "angle_increment": step, "time_increment": 0.0, "scan_time": scans.period_s,
+        "range_min": spec.min_range_m or 0.0, "range_max": spec.max_range_m or np.inf,
+        "ranges": ranges.astype(np.float32)})
+
+
+def range_message(result: SimResult) -> ByteRows:
+    """Range: the least range over all rays, as the plugin's conversion takes it."""
+    scans = _scans(result)
+    spec = scans.spec
+    horizontal = (spec.max_angle_rad or 0.0) - (spec.min_angle_rad or 0.0)
+    vertical = (spec.vertical_max_angle_rad or 0.0) - (spec.vertical_min_angle_rad or 0.0)
+    least = np.where(np.isnan(scans.ranges_m), np.inf, scans.ranges_m).min(axis=1, initial=np.inf)
+    layout = cdr.Layout()
+    layout.header(_frame(result))
+    layout.constant("<B", spec.output.radiation_type if spec.output else 1)
+    layout.constant("<f", max(horizontal, vertical))
+    layout.constant("<f", spec.min_range_m or 0.0)
+    layout.constant("<f", spec.max_range_m if spec.max_range_m is not None else np.inf)
+    layout.field("range", "<f4")
+    return cdr.serialize(layout, scans.times_s, {"range": np.minimum(least, FLOAT32_MAX)})
+
+
+def _points(scans: Scans) -> tuple[FloatArray, npt.NDArray[np.bool_]]:
+    """Each ray's point in the sensor frame, (scans, rays, 3), and which ones are finite.
+
+    The inclination is the ring's; a single ring's is the vertical ``min_angle`` (default 0),
+    as the conversion takes it.
+    """
+    spec, r = scans.spec, scans.ranges_m
+    azimuth = scans.angles_rad
+    inclination = scans.inclinations_rad if scans.inclinations_rad is not None else \
+        np.full_like(azimuth, spec.vertical_min_angle_rad or 0.0)
+    flat = np.cos(inclination)
+    points = np.stack((r * flat * np.cos(azimuth), r * flat * np.sin(azimuth),
+                       r * np.sin(inclination)), axis=-1)
+    return points, np.isfinite(r)
+
+
+def _intensity(scans: Scans) -> float:
+    """Every point's intensity: Gazebo's 0, floored at ``<min_intensity>``."""
+    return max(0.0, scans.spec.output.min_intensity if scans.spec.output else 0.0)
+
+
+def point_cloud2(result: SimResult) -> Payloads:
+    """PointCloud2 of every finite ray, x, y, z and intensity as float32."""
+    scans = _scans(result)
+    points, finite = _points(scans)
+    cloud = np.concatenate((points, np.full(points.shape[:2] + (1,), _intensity(scans))),
+                           axis=-1).astype("<f4")
+
+    def layout(count: int) -> cdr.Layout:
+        out = cdr.Layout()
+        out.header(_frame(result))
+        out.constant("<I", 1)  # height: one unordered row
+        out.constant("<I", count)  # width
+        out.constant("<I", len(CLOUD_FIELDS))
+        for index, name in enumerate(CLOUD_FIELDS):
+            out.string(name)
+            out.constant("<I", 4 * index)  # offset
+            out.constant("<B", FLOAT32)
+            out.constant("<I", 1)  # count
+        out.constant("<B", 0)  # is_bigendian
+        out.constant("<I", POINT_BYTES)  # point_step
+        out.constant("<I", POINT_BYTES * count)  # row_step
+        out.sequence("data", "u1", POINT_BYTES * count)
+        out.constant("<B", 1)  # is_dense
+        return out
+
+    return _by_size(scans.times_s, finite, layout, lambda keep, count: {
+        "data": cloud[keep].reshape(-1, len(CLOUD_FIELDS) * count).view(np.uint8)})
+
+
+def point_cloud(result: SimResult) -> Payloads:
+    """PointCloud of every finite ray, and its ``intensity`` channel."""
+    scans = _scans(result)
+    points, finite = _points(scans)
+
+    def layout(count: int) -> cdr.Layout:
+        out = cdr.Layout()
+        out.header(_frame(result))
+        out.constant("<I", count)
+        if count:
+            out.field("points", "<f4", 3 * count)
+        out.constant("<I", 1)  # one channel
+        out.string("intensity")
+        out.sequence("values", "<f4", count)
+        return out
+
+    return _by_size(scans.times_s, finite, layout, lambda keep, count: {
+        "points": points[keep].reshape(-1, 3 * count), "values": _intensity(scans)})
+
+
+def _by_size(times_s: FloatArray, finite: npt.NDArray[np.bool_],
+             layout: Callable[[int], cdr.Layout], fill: Fill) -> Payloads:
+    """Each scan's message, those of one point count serialized together.
+
+    ``layout(count)`` is the layout of a message of ``count`` points, ``fill(keep, count)``
+    its fields' values for the scans ``keep`` selects (rows of ``finite``).
+    """
+    counts = finite.sum(axis=1)
+    sizes, block = np.unique(counts, return_inverse=True)
+    row = np.zeros(len(counts), dtype=np.int64)
+    blocks = []
+    for index, count in enumerate(sizes.tolist()):
+        mine = np.flatnonzero(block == index)
+        row[mine] = np.arange(len(mine))
+        keep = np.zeros_like(finite)
+        keep[mine] = finite[mine]
+        values = fill(keep, count) if count else {}
+        blocks.append(cdr.serialize(layout(count), times_s[mine], values))
+    return Payloads(blocks, block.reshape(-1).astype(np.int64), row)
