@@ -44,7 +44,7 @@ def _rows(columns: Sequence[npt.ArrayLike]) -> str:
         return ""
     distinct, which = np.unique(np.ascontiguousarray(matrix).reshape(-1).view(np.int64),
                                 return_inverse=True)
-    text = distinct.view(np.float64).astype(str).astype(np.bytes_)  # in C, ASCII
+    text = _shortest_text(distinct.view(np.float64))
     table = np.frombuffer(text.tobytes(), dtype=np.uint8).reshape(len(text), -1)
     lengths = np.char.str_len(text).astype(np.uint8)[which.reshape(-1)]  # at most 24
     sizes = lengths + np.int64(1)  # each cell and its separator
@@ -57,6 +57,28 @@ def _rows(columns: Sequence[npt.ArrayLike]) -> str:
         cells = order[ends[length] - counts[length]:ends[length]]
         place_rows(out, starts[cells], table[cell_text[cells], :length])
     return out.tobytes().decode("ascii")
+
+
+def _shortest_text(values: npt.NDArray[np.float64]) -> npt.NDArray[np.bytes_]:
+    """Each number in numpy's shortest round-trip form (``str``), as ASCII bytes.
+
+    orjson writes the same shortest digits (Ryu) about six times as fast as numpy, and in
+    the same form for zero and for 1e-4 <= |x| < 1e16; numpy writes the others (exponents,
+    NaN, infinities). A LIDAR's ranges are all distinct numbers: 648,000 in the default run.
+    """
+    import orjson
+
+    size = np.abs(values)
+    plain = (values == 0) | ((size >= 1e-4) & (size < 1e16))  # False for NaN and infinities
+    fast = np.array(orjson.dumps(np.ascontiguousarray(values[plain]),
+                                 option=orjson.OPT_SERIALIZE_NUMPY)[1:-1].split(b","),
+                    dtype=np.bytes_) if plain.any() else np.zeros(0, dtype=np.bytes_)
+    if plain.all():
+        return fast
+    slow = values[~plain].astype(str).astype(np.bytes_)
+    out = np.zeros(len(values), dtype=np.result_type(fast, slow))
+    out[plain], out[~plain] = fast, slow
+    return out
 
 
 def _table(header: Sequence[str], columns: Sequence[npt.ArrayLike]) -> Table:
