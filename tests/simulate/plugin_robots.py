@@ -63,6 +63,12 @@ def sensor_topics(robot: Path) -> dict[str, str]:
 def bag_messages(robot: Path, tmp_path: Path, *extra: str,
                  duration_s: str = "2") -> dict[str, list]:
     """Every message of a headless run of ``robot``, by topic, read back by rosbags."""
+    return run_with_bag(robot, tmp_path, *extra, duration_s=duration_s)[1]
+
+
+def run_with_bag(robot: Path, tmp_path: Path, *extra: str,
+                 duration_s: str = "2") -> tuple[str, dict[str, list]]:
+    """A headless run of ``robot``: its stdout and every message of its bag, by topic."""
     from rosbags.rosbag2 import Reader
     from rosbags.typesys import Stores, get_typestore
 
@@ -76,7 +82,7 @@ def bag_messages(robot: Path, tmp_path: Path, *extra: str,
         for connection, _, raw in reader.messages():
             messages.setdefault(connection.topic, []).append(
                 store.deserialize_cdr(raw, connection.msgtype))
-    return messages
+    return result.stdout, messages
 
 
 def tf_pairs(messages: dict[str, list]) -> set[tuple[str, str]]:

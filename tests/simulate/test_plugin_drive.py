@@ -16,6 +16,7 @@ import pytest
 
 from tests.conftest import REPO, assert_one_line_error, run_servicebot
 from tests.simulate.helpers import NO_ROS, REALWORLD_SRC
+from tests.simulate.plugin_robots import run_with_bag
 
 FIXTURES = REPO / "tests" / "fixtures"
 SAM_BOT = FIXTURES / "sam_bot_description" / "src" / "description" / "sam_bot_description.urdf"
@@ -25,20 +26,9 @@ PLUGIN = "Gazebo plugin libgazebo_ros_diff_drive.so"
 
 
 def _run(robot: Path, tmp_path: Path, *extra: str) -> tuple[dict, dict[str, list]]:
-    from rosbags.rosbag2 import Reader
-    from rosbags.typesys import Stores, get_typestore
-
-    bag = tmp_path / "bag"
-    result = run_servicebot("simulate", robot, "--headless", "--duration-s", "10", "--bag", bag,
-                            "--format", "json", *extra, env=NO_ROS)
-    assert result.returncode == 0, result.stderr
-    store = get_typestore(Stores.ROS2_HUMBLE)
-    messages: dict[str, list] = {}
-    with Reader(bag) as reader:
-        for connection, _, raw in reader.messages():
-            messages.setdefault(connection.topic, []).append(
-                store.deserialize_cdr(raw, connection.msgtype))
-    return json.loads(result.stdout), messages
+    stdout, messages = run_with_bag(robot, tmp_path, "--format", "json", *extra,
+                                    duration_s="10")
+    return json.loads(stdout), messages
 
 
 def test_sam_bot_odometry_is_the_classic_plugins_in_its_namespace(tmp_path):
