@@ -9,7 +9,11 @@ Jazzy). ``check controllers`` reads the same layout from YAML nodes, for their l
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
+
+from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.common.inputs import read_input_text
 
 NAMESPACE_DEPTH = 3
 """Namespaces looked through above a node's own key."""
@@ -17,6 +21,31 @@ NAMESPACE_DEPTH = 3
 MAX_PARAMETERS_BYTES = 10_000_000
 """A parameters file larger than this is not read [bytes]: real ones are a few kB, and a
 device such as /dev/zero never ends."""
+
+
+def read_parameters_file(path: Path, error: type[ServicebotError]) -> Any:
+    """One controllers (parameters) file, parsed; given with ``--controllers`` or found.
+
+    Raises:
+        error: Unreadable, empty, not YAML, or nested too deep to read (with the line).
+    """
+    import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
+
+    text = read_input_text(str(path), kind="a ros2_control controllers YAML (--controllers)",
+                           error=error, max_bytes=MAX_PARAMETERS_BYTES, allow_empty=False)
+    try:
+        return yaml.load(text,  # libyaml's safe loader if built
+                         Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+    except yaml.YAMLError as exc:
+        if "nesting depth" not in str(getattr(exc, "problem", "")):  # libyaml's own bound
+            mark = getattr(exc, "problem_mark", None)
+            line = f":{mark.line + 1}" if mark is not None else ""
+            raise error(f"{path}{line}: not valid YAML; fix the file or give another with "
+                        "--controllers") from None
+    except RecursionError:  # PyYAML's own composer recurses once per level of nesting
+        pass
+    raise error(f"{path}: lists and mappings nested too deep to read; is it a controllers "
+                "file? Give another with --controllers")
 
 
 def node_parameters(document: Any, depth: int = 0) -> dict[str, dict[str, Any]]:

@@ -15,12 +15,12 @@ from pathlib import Path
 from typing import Any
 
 from servicebot_cli.common.errors import DescriptionError
-from servicebot_cli.common.inputs import display_path, read_input_text
+from servicebot_cli.common.inputs import display_path
 from servicebot_cli.description.parameter_files import merged_parameters, parameter_files
 from servicebot_cli.description.ros_parameters import (
-    MAX_PARAMETERS_BYTES,
     controller_types,
     node_parameters,
+    read_parameters_file,
 )
 
 DEFAULT_NAME = "controllers.yaml"
@@ -100,21 +100,7 @@ def _document(path: Path) -> Any:
     Raises:
         ControllersError: Unreadable or not YAML.
     """
-    import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
-
-    text = read_input_text(str(path), kind="a ros2_control controllers YAML (--controllers)",
-                           error=ControllersError, max_bytes=MAX_PARAMETERS_BYTES,
-                           allow_empty=False)
-    try:
-        return yaml.safe_load(text)
-    except yaml.YAMLError as exc:
-        where = getattr(exc, "problem_mark", None)
-        line = f":{where.line + 1}" if where is not None else ""
-        raise ControllersError(f"{path}{line}: not valid YAML; fix the file or give "
-                               "another with --controllers") from None
-    except RecursionError:  # PyYAML's composer recurses once per level of nesting
-        raise ControllersError(f"{path}: lists and mappings nested too deep to read; is it "
-                               "a controllers file? Give another with --controllers") from None
+    return read_parameters_file(path, ControllersError)
 
 
 def parse_controllers(document: Any, file: str, found_by: str) -> Controllers:

@@ -23,12 +23,11 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from servicebot_cli.common.errors import ServicebotError
-from servicebot_cli.common.inputs import read_input_text
 from servicebot_cli.description.parameter_files import merged_parameters, parameter_files
 from servicebot_cli.description.ros_parameters import (
-    MAX_PARAMETERS_BYTES,
     controller_types,
     node_parameters,
+    read_parameters_file,
 )
 from servicebot_cli.simulate.controllers.classic_drive import ClassicDrive
 from servicebot_cli.simulate.controllers.limiter import DIFF_DRIVE_CONTROLLER
@@ -162,19 +161,7 @@ def _document(path: Path) -> Any:
     Raises:
         ControllersFileError: Unreadable or not YAML.
     """
-    import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
-
-    text = read_input_text(str(path), kind="a ros2_control controllers YAML (--controllers)",
-                           error=ControllersFileError, max_bytes=MAX_PARAMETERS_BYTES,
-                           allow_empty=False)
-    try:
-        return yaml.load(text,  # libyaml's safe loader if built
-                         Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        line = f":{mark.line + 1}" if mark is not None else ""
-        raise ControllersFileError(f"{path}{line}: not valid YAML; fix the file or give "
-                                   "another with --controllers") from None
+    return read_parameters_file(path, ControllersFileError)
 
 
 def _frames(path: Path, params: Mapping[str, Any]) -> tuple[str, str]:
