@@ -53,11 +53,15 @@ def plugin_topics(robot: Path, provider: str) -> dict[str, str]:
 
 def sensor_topics(robot: Path) -> dict[str, str]:
     """``inspect --section topics``: every published topic, name -> provider."""
+    return {t["name"]: t["provider"] for t in listed_topics(robot) if t["direction"] == "out"}
+
+
+def listed_topics(robot: Path) -> list[dict]:
+    """``inspect --section topics --format json``: every topic's record."""
     result = run_servicebot("inspect", robot, "--section", "topics", "--format", "json",
                             env=NO_ROS)
     assert result.returncode == 0, result.stderr
-    return {t["name"]: t["provider"] for t in json.loads(result.stdout)["topics"]["topics"]
-            if t["direction"] == "out"}
+    return list(json.loads(result.stdout)["topics"]["topics"])
 
 
 def bag_messages(robot: Path, tmp_path: Path, *extra: str,

@@ -23,6 +23,7 @@ from tests.simulate.plugin_robots import (
     TURTLEBOT3_GAZEBO,
     bag_messages,
     edited,
+    listed_topics,
 )
 
 OUTPUT = "<output_type>sensor_msgs/LaserScan</output_type>"
@@ -37,11 +38,7 @@ def _output(tmp_path: Path, text: str, *more: tuple[str, str]) -> Path:
 
 def _listed(robot: Path) -> dict[str, str]:
     """``inspect --section topics``: the lidar's topics and their types."""
-    result = run_servicebot("inspect", robot, "--section", "topics", "--format", "json",
-                            env=NO_ROS)
-    assert result.returncode == 0, result.stderr
-    return {t["name"]: t["message"] for t in json.loads(result.stdout)["topics"]["topics"]
-            if t["provider"] == "lidar"}
+    return {t["name"]: t["message"] for t in listed_topics(robot) if t["provider"] == "lidar"}
 
 
 def _scans(tmp_path: Path) -> list:

@@ -50,16 +50,42 @@ class Payloads:
     @classmethod
     def of(cls, payloads: Sequence[bytes]) -> Payloads:
         """``payloads`` as rows: one block per distinct size."""
-        lengths = np.fromiter(map(len, payloads), dtype=np.int64, count=len(payloads))
-        sizes, block = np.unique(lengths, return_inverse=True)
-        row = np.zeros(len(payloads), dtype=np.int64)
+        groups = SizeGroups.of(np.fromiter(map(len, payloads), dtype=np.int64,
+                                           count=len(payloads)))
         blocks = []
-        for index, size in enumerate(sizes.tolist()):
-            mine = np.flatnonzero(block == index)
-            row[mine] = np.arange(len(mine))
+        for size, mine in zip(groups.sizes, groups.members, strict=True):
             data = b"".join([payloads[k] for k in mine.tolist()])
             blocks.append(np.frombuffer(data, dtype=np.uint8).reshape(len(mine), size))
-        return cls(blocks, block.reshape(-1).astype(np.int64), row)
+        return cls(blocks, groups.block, groups.row)
+
+
+@dataclass(frozen=True)
+class SizeGroups:
+    """Messages grouped by size, as :class:`Payloads` keeps them.
+
+    Attributes:
+        sizes: The distinct sizes, ascending.
+        members: The messages of each size, in order.
+        block: Each message's group (an index into ``sizes``).
+        row: Each message's row within its group.
+    """
+
+    sizes: list[int]
+    members: list[IntArray]
+    block: IntArray
+    row: IntArray
+
+    @classmethod
+    def of(cls, sizes_each: IntArray) -> SizeGroups:
+        """The groups of messages of sizes ``sizes_each``."""
+        sizes, block = np.unique(sizes_each, return_inverse=True)
+        row = np.zeros(len(sizes_each), dtype=np.int64)
+        members = []
+        for index in range(len(sizes)):
+            mine = np.flatnonzero(block == index)
+            row[mine] = np.arange(len(mine))
+            members.append(mine)
+        return cls(sizes.tolist(), members, block.reshape(-1).astype(np.int64), row)
 
 
 def after_prefixes(prefixes: ByteRows, payloads: Payloads, offsets: IntArray) -> ByteRows:

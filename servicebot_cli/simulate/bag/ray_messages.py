@@ -30,7 +30,7 @@ import numpy.typing as npt
 from servicebot_cli.description.ray_output import LASER_SCAN, POINT_CLOUD, POINT_CLOUD2, RANGE
 from servicebot_cli.description.sensors import LidarSpec
 from servicebot_cli.simulate.bag import cdr
-from servicebot_cli.simulate.bag.byte_rows import ByteRows, Payloads
+from servicebot_cli.simulate.bag.byte_rows import ByteRows, Payloads, SizeGroups
 from servicebot_cli.simulate.sensors.lidar import Scans, vertical_angles
 from servicebot_cli.simulate.simulator import SimResult
 
@@ -187,15 +187,11 @@ def _by_size(times_s: FloatArray, finite: npt.NDArray[np.bool_],
     ``layout(count)`` is the layout of a message of ``count`` points, ``fill(keep, count)``
     its fields' values for the scans ``keep`` selects (rows of ``finite``).
     """
-    counts = finite.sum(axis=1)
-    sizes, block = np.unique(counts, return_inverse=True)
-    row = np.zeros(len(counts), dtype=np.int64)
+    groups = SizeGroups.of(finite.sum(axis=1))
     blocks = []
-    for index, count in enumerate(sizes.tolist()):
-        mine = np.flatnonzero(block == index)
-        row[mine] = np.arange(len(mine))
+    for count, mine in zip(groups.sizes, groups.members, strict=True):
         keep = np.zeros_like(finite)
         keep[mine] = finite[mine]
         values = fill(keep, count) if count else {}
         blocks.append(cdr.serialize(layout(count), times_s[mine], values))
-    return Payloads(blocks, block.reshape(-1).astype(np.int64), row)
+    return Payloads(blocks, groups.block, groups.row)
