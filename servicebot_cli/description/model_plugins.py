@@ -38,7 +38,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from servicebot_cli.description.extensions import Plugin, param
+from servicebot_cli.description.extensions import Plugin, param, params_all
 from servicebot_cli.description.sensors import plugin_topic
 
 Row = tuple[str, str, str, str | None]
@@ -99,6 +99,29 @@ def publishes_odom_tf(plugin: Plugin, default: bool = False) -> bool:
 def _publishes_wheel_tf(plugin: Plugin) -> bool:
     """``<publish_wheel_tf>`` (ROS 1: ``<publishWheelTF>``, not gated by ``<publishTf>``)."""
     return _flag(plugin, "publishWheelTF" if ros1_plugin(plugin) else "publish_wheel_tf", False)
+
+
+def wheel_tf_joints(plugin: Plugin) -> tuple[str, ...]:
+    """The joints whose parent -> child transforms a Classic diff drive puts on ``/tf``.
+
+    With ``<publish_wheel_tf>true`` (ROS 1: ``<publishWheelTF>``), one TFMessage per joint,
+    each pair's right joint before its left, pairs in document order (ROS 2 repeats
+    ``<left_joint>``/``<right_joint>`` for ``<num_wheel_pairs>``, and loads nothing when the
+    counts differ; ROS 1 has one ``<leftJoint>``/``<rightJoint>`` pair); none without.
+    """
+    if "gazebo_ros_diff_drive" not in plugin.filename or not _publishes_wheel_tf(plugin):
+        return ()
+    if ros1_plugin(plugin):
+        return ((param(plugin.params, "rightJoint") or "right_joint").strip(),
+                (param(plugin.params, "leftJoint") or "left_joint").strip())
+    lefts, rights = (params_all(plugin.params, key) for key in ("left_joint", "right_joint"))
+    try:
+        pairs = max(1, int(_text(plugin, "num_wheel_pairs") or 1))
+    except ValueError:
+        return ()
+    if not len(lefts) == len(rights) == pairs:
+        return ()
+    return tuple(name.strip() for pair in zip(rights, lefts, strict=True) for name in pair)
 
 
 def _classic_drive(plugin: Plugin, odom_default: bool, tf_default: bool) -> list[Row]:

@@ -259,7 +259,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
             pieces,
             outputs, publishers(body, scenario.camera, odom_topic(controllers_file),
                                 controllers_file.odom_tf, odom_frames(controllers_file, body),
-                                joint_states.topics),
+                                joint_states.topics, controllers_file.wheel_tf_joints),
             stack, bar.advance if bar else None, live)
     track = None
     if live:

@@ -105,8 +105,10 @@ def _sam_bot_with(tmp_path: Path, old: str, new: str) -> Path:
 def test_sam_bots_plugin_broadcasts_no_odom_tf_and_holds_commands(tmp_path):
     pytest.importorskip("rosbags")
     summary, messages = _run(SAM_BOT, tmp_path)  # <publish_odom_tf>false</publish_odom_tf>
-    # no odom -> base, and no joint states for robot_state_publisher to make transforms of
-    assert "/tf" not in messages and "/joint_states" not in messages
+    # no odom -> base and no joint states: on /tf only the wheels <publish_wheel_tf> sends
+    assert "/joint_states" not in messages
+    assert {t.child_frame_id for m in messages["/tf"] for t in m.transforms} == {
+        "drivewhl_l_link", "drivewhl_r_link"}
     assert summary["controller"]["cmd_vel_timeout_s"] == {"value": None, "source": PLUGIN}
 
 

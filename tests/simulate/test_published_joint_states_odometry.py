@@ -17,7 +17,15 @@ import pytest
 
 from tests.conftest import run_servicebot
 from tests.simulate.helpers import DIFFBOT, NO_ROS, REALWORLD_SRC
-from tests.simulate.plugin_robots import MP_400, SAM_BOT, TURTLEBOT3, bag_messages
+from tests.simulate.plugin_robots import (
+    MP_400,
+    SAM_BOT,
+    TURTLEBOT3,
+    TURTLEBOT3_GAZEBO,
+    bag_messages,
+    edited,
+    tf_pairs,
+)
 
 ODOMETRY, JOINT_STATE = "nav_msgs/msg/Odometry", "sensor_msgs/msg/JointState"
 DIFFBOT_CONTROLLERS = REALWORLD_SRC / "example_2" / "bringup" / "config" / \
@@ -70,12 +78,59 @@ def test_a_controllers_file_without_a_broadcaster_publishes_no_joint_states(tmp_
     assert {t.child_frame_id for m in messages["/tf"] for t in m.transforms} == {"base_link"}
 
 
-@pytest.mark.parametrize(("robot", "odometry", "joints"), [
-    (SAM_BOT, {"/demo/odom"}, set()),  # Nav2 runs joint_state_publisher beside, not Gazebo
-    (MP_400, {"/odom"}, {"/joint_states"}),  # gazebo_ros_joint_state_publisher
-    (TURTLEBOT3, {"/odom"}, {"/joint_states"}),  # <publishWheelJointState>true
+SAM_WHEELS = {("base_link", "drivewhl_l_link"), ("base_link", "drivewhl_r_link")}
+TB3_WHEELS = {("base_link", "wheel_left_link"), ("base_link", "wheel_right_link")}
+MP_400_WHEELS = {("base_link", "mp_400_fixed_wheel_left_link"),
+                 ("base_link", "mp_400_fixed_wheel_right_link")}
+
+
+@pytest.mark.parametrize(("robot", "odometry", "joints", "tf"), [
+    # Nav2 runs joint_state_publisher beside, not Gazebo; the plugin's <publish_wheel_tf>
+    (SAM_BOT, {"/demo/odom"}, set(), SAM_WHEELS),  # (repro: lost in 14cf5e0)
+    # gazebo_ros_joint_state_publisher's joints through robot_state_publisher, and the
+    # plugin's <publish_wheel_tf> from base_footprint, which Gazebo merges base_link into
+    (MP_400, {"/odom"}, {"/joint_states"}, MP_400_WHEELS | {("odom", "base_footprint")} | {
+        ("base_footprint", child) for _, child in MP_400_WHEELS}),
+    (TURTLEBOT3, {"/odom"}, {"/joint_states"},  # <publishWheelJointState>true
+     TB3_WHEELS | {("odom", "base_footprint")}),
 ], ids=["sam_bot", "mp_400", "turtlebot3"])
-def test_gazebo_plugins_publish_what_inspect_lists(tmp_path, robot, odometry, joints):
+def test_gazebo_plugins_publish_what_inspect_lists(tmp_path, robot, odometry, joints, tf):
     pytest.importorskip("rosbags")
-    assert _bagged(bag_messages(robot, tmp_path)) == _listed(robot) == {
-        ODOMETRY: odometry, JOINT_STATE: joints}
+    messages = bag_messages(robot, tmp_path)
+    assert _bagged(messages) == _listed(robot) == {ODOMETRY: odometry, JOINT_STATE: joints}
+    assert tf_pairs(messages) == tf
+
+
+def test_the_diff_drive_plugin_puts_its_wheels_on_tf_at_its_rate(tmp_path):
+    """ROS 2 ``PublishWheelsTf``: right then left, one transform a message, each update."""
+    pytest.importorskip("rosbags")
+    messages = bag_messages(SAM_BOT, tmp_path)
+    wheels = [m.transforms for m in messages["/tf"]]
+    assert all(len(t) == 1 for t in wheels)
+    assert [t[0].child_frame_id for t in wheels[:4]] == [
+        "drivewhl_r_link", "drivewhl_l_link"] * 2
+    stamps = [t[0].header.stamp.sec + t[0].header.stamp.nanosec * 1e-9 for t in wheels[::2]]
+    odometry = [m.header.stamp.sec + m.header.stamp.nanosec * 1e-9
+                for m in messages["/demo/odom"]]
+    assert stamps == odometry  # at <update_rate> (100 Hz), with the odometry
+    assert wheels[0][0].transform.translation.y == pytest.approx(-0.18)  # -(0.3/2 + 0.03)
+
+
+def test_the_ros1_diff_drive_puts_wheels_on_tf_without_joint_states(tmp_path):
+    """<publishWheelTF>true, <publishWheelJointState>false: the wheels from Gazebo's
+    base_footprint, into which it merges base_link (fixed joint)."""
+    pytest.importorskip("rosbags")
+    robot = edited(TURTLEBOT3, tmp_path,
+                   ("<publishWheelTF>false</publishWheelTF>",
+                    "<publishWheelTF>true</publishWheelTF>"),
+                   ("<publishWheelJointState>true</publishWheelJointState>",
+                    "<publishWheelJointState>false</publishWheelJointState>"),
+                   file=TURTLEBOT3_GAZEBO)
+    messages = bag_messages(robot, tmp_path)
+    assert "/joint_states" not in messages
+    assert tf_pairs(messages) == {("odom", "base_footprint"),
+                                  ("base_footprint", "wheel_left_link"),
+                                  ("base_footprint", "wheel_right_link")}
+    left = next(m.transforms[0] for m in messages["/tf"]
+                if m.transforms[0].child_frame_id == "wheel_left_link")
+    assert left.transform.translation.z == pytest.approx(0.023 + 0.010)  # base_joint's too

@@ -8,7 +8,8 @@ them), ``/CONTROLLER/odom`` (the controllers file's diff drive) and ``/tf`` (odo
 as diff_drive_controller publishes them, in its ``odom_frame_id`` and ``base_frame_id`` (or
 a Gazebo drive plugin's topic and frames; none when nothing configured publishes odometry),
 ``/joint_states`` where a joint_state_broadcaster or a Gazebo plugin publishes them,
-``/tf`` for movable joints (with joint states), ``/tf_static`` for fixed ones and
+``/tf`` for movable joints (with joint states), the wheels on ``/tf`` where a Gazebo drive
+plugin puts them there itself, ``/tf_static`` for fixed ones and
 ``/robot_description`` (the URDF, once) as robot_state_publisher, and
 ``/clock`` at every control tick as gazebo_ros publishes simulated time. Header stamps are
 simulated time; each publisher offers the QoS its ROS node does. ``/tf`` has two publishers.
@@ -26,7 +27,13 @@ import numpy.typing as npt
 from servicebot_cli.simulate.bag import camera_messages, cdr, qos, ray_messages
 from servicebot_cli.simulate.bag import quaternions as rotations
 from servicebot_cli.simulate.bag.byte_rows import ByteRows, Payloads
-from servicebot_cli.simulate.bag.tf_messages import ODOM_FRAME, JointTransforms, tf_base, tf_static
+from servicebot_cli.simulate.bag.tf_messages import (
+    ODOM_FRAME,
+    JointTransforms,
+    WheelTransform,
+    tf_base,
+    tf_static,
+)
 from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.controllers.config import ControllersFile
 from servicebot_cli.simulate.scenario.camera import CameraImages
@@ -92,13 +99,15 @@ def odom_frames(controllers: ControllersFile, body: SimRobot) -> tuple[str, str]
 def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
                odom_topic: str | None = ODOM_TOPIC, odom_tf: bool = True,
                frames: tuple[str, str] | None = None,
-               joint_states: Sequence[str] = (JOINT_STATES_TOPIC,)) -> list[Publisher]:
+               joint_states: Sequence[str] = (JOINT_STATES_TOPIC,),
+               wheel_tf: Sequence[str] = ()) -> list[Publisher]:
     """Every publisher of a run of ``body``: latched topics and the clock first.
 
     Camera images only when ``images`` are on; odometry on ``odom_topic`` (the diff-drive
     controller's ``~/odom``; None: none) and odom -> base on /tf when ``odom_tf``, both in
     ``frames`` (odometry frame, base frame; None: ``odom`` and the root link); joint states
-    on each of ``joint_states`` and, from them, the movable joints on /tf (none without).
+    on each of ``joint_states`` and, from them, the movable joints on /tf (none without);
+    the ``wheel_tf`` joints on /tf at the odometry's times (a Gazebo drive plugin's).
     Messages with equal stamps are in this order in a bag.
     """
     out = [Publisher(DESCRIPTION_TOPIC, "std_msgs/msg/String", qos.ROBOT_DESCRIPTION, _once,
@@ -108,6 +117,8 @@ def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
     if odom_topic is not None:
         out.append(Publisher(odom_topic, "nav_msgs/msg/Odometry", qos.SYSTEM_DEFAULTS,
                              lambda r: r.odometry.times_s, partial(_odometry, frames=frames)))
+    out += [Publisher(TF_TOPIC, TF_TYPE, qos.DYNAMIC_TF, lambda r: r.odometry.times_s,
+                      WheelTransform(joint)) for joint in wheel_tf]
     if odom_tf:
         out.append(Publisher(TF_TOPIC, TF_TYPE, qos.SYSTEM_DEFAULTS,
                              lambda r: r.odometry.times_s, partial(tf_base, frames=frames)))

@@ -1,7 +1,8 @@
 """``/tf`` and ``/tf_static`` (tf2_msgs/TFMessage) of a run, a piece at a time.
 
 The base in ``odom`` as diff_drive_controller publishes it, every movable joint's transform
-and every fixed joint's (once, latched) as robot_state_publisher does.
+and every fixed joint's (once, latched) as robot_state_publisher does, and the wheels' as
+Gazebo's diff-drive plugin does.
 """
 
 from __future__ import annotations
@@ -17,10 +18,12 @@ from servicebot_cli.kinematics.transforms import rpy_matrix
 from servicebot_cli.simulate.bag import cdr
 from servicebot_cli.simulate.bag import quaternions as rotations
 from servicebot_cli.simulate.bag.byte_rows import ByteRows
+from servicebot_cli.simulate.sensors import joint_states
 from servicebot_cli.simulate.simulator import SimResult
 
 if TYPE_CHECKING:
     from servicebot_cli.description.elements import Joint
+    from servicebot_cli.description.robot import RobotDescription
 
 FloatArray = npt.NDArray[np.float64]
 ODOM_FRAME = "odom"
@@ -98,6 +101,26 @@ class _MovingJoint:
                    rotation @ axis if joint.type == "prismatic" else None,
                    quaternion_from_matrix(rotation))
 
+    @classmethod
+    def in_gazebo(cls, robot: RobotDescription, joint: Joint) -> _MovingJoint:
+        """``joint`` from the link Gazebo merges its parent into, as Gazebo's model has it.
+
+        Converting a URDF, Gazebo merges every link hanging from a fixed joint into that
+        joint's parent (TurtleBot3's ``base_link`` into ``base_footprint``); the joint's parent
+        is then that link, and its origin carries the fixed joints' offsets.
+        """
+        by_child = {j.child: j for j in robot.joints}
+        parent, rotation = joint.parent or "", rpy_matrix(*joint.origin.rpy)
+        offset = np.array(joint.origin.xyz, float)
+        while (up := by_child.get(parent)) is not None and up.type == "fixed":
+            above = rpy_matrix(*up.origin.rpy)
+            offset, rotation = above @ offset + np.array(up.origin.xyz, float), above @ rotation
+            parent = up.parent or ""
+        axis = np.array(joint.axis, float) / np.linalg.norm(joint.axis)
+        return cls((parent, joint.child or ""), offset, axis,
+                   rotation @ axis if joint.type == "prismatic" else None,
+                   quaternion_from_matrix(rotation))
+
 
 class JointTransforms:
     """Every movable joint's transform, as robot_state_publisher sends them.
@@ -115,17 +138,48 @@ class JointTransforms:
         if tuple(joints.names) != self.names or not self.joints:
             self.names = tuple(joints.names)
             self.joints = [_MovingJoint.of(result.body.robot.joint(n)) for n in self.names]
-        q = joints.positions  # (samples, joints)
-        slides = np.array([j.slide is not None for j in self.joints], dtype=bool)
-        turns = rotations.about_axis(np.array([j.axis for j in self.joints]).reshape(-1, 3),
-                                     np.where(slides, 0.0, q))
-        quaternions = rotations.multiply(np.array([j.fixed for j in self.joints]).reshape(-1, 4),
-                                         turns)  # (samples, joints, 4)
-        translations = [j.offset_m + (np.zeros((len(q), 3)) if j.slide is None
-                                      else q[:, i, None] * j.slide)
-                        for i, j in enumerate(self.joints)]
-        return tf_messages([j.frames for j in self.joints], joints.times_s, translations,
-                            [quaternions[:, i] for i in range(len(self.joints))])
+        return _joint_messages(self.joints, joints.times_s, joints.positions)
+
+
+def _joint_messages(moving: list[_MovingJoint], times_s: FloatArray, q: FloatArray) -> ByteRows:
+    """One TFMessage of all ``moving`` joints per sample, at ``q`` (samples, joints)."""
+    slides = np.array([j.slide is not None for j in moving], dtype=bool)
+    turns = rotations.about_axis(np.array([j.axis for j in moving]).reshape(-1, 3),
+                                 np.where(slides, 0.0, q))
+    quaternions = rotations.multiply(np.array([j.fixed for j in moving]).reshape(-1, 4),
+                                     turns)  # (samples, joints, 4)
+    translations = [j.offset_m + (np.zeros((len(q), 3)) if j.slide is None
+                                  else q[:, i, None] * j.slide)
+                    for i, j in enumerate(moving)]
+    return tf_messages([j.frames for j in moving], times_s, translations,
+                        [quaternions[:, i] for i in range(len(moving))])
+
+
+@dataclass(frozen=True)
+class WheelTransform:
+    """A drive wheel's parent -> wheel transform, as Gazebo's diff-drive plugin sends it.
+
+    ``gazebo_ros_diff_drive`` (``<publish_wheel_tf>``, ROS 1 ``<publishWheelTF>``) sends one
+    transform per wheel joint at each of its updates, the odometry's times, stamped with
+    simulated time: from the joint's parent link in Gazebo's model (fixed joints merged:
+    :meth:`_MovingJoint.in_gazebo`) to its child link, the wheel's pose in the model's frame
+    at its angle then (the same as from the parent for a wheel on the root link; the
+    simulator's wheels are).
+    """
+
+    joint: str
+
+    def __call__(self, result: SimResult) -> ByteRows:
+        """The piece's messages, one an odometry time."""
+        times = result.odometry.times_s
+        wheel = next((w for w in result.body.geometry.wheels if w.joint == self.joint), None)
+        angles = np.zeros(len(result.wheel_angles_rad)) if wheel is None else \
+            wheel.axis_sign * result.wheel_angles_rad[:, 0 if wheel.side == "left" else 1]
+        sampled = joint_states.at_times((self.joint,), angles[:, None], result.plan.dt_s, times,
+                                        result.first_tick)
+        robot = result.body.robot
+        return _joint_messages([_MovingJoint.in_gazebo(robot, robot.joint(self.joint))], times,
+                               sampled.positions)
 
 
 def tf_static(result: SimResult) -> ByteRows:

@@ -71,6 +71,8 @@ class ControllersFile:
     """Gazebo Classic's diff-drive plugin's odometry source and wheel ramp, when it drives."""
     joint_state_topics: tuple[str, ...] = ()
     """Where the file's joint_state_broadcasters publish (none: no broadcaster)."""
+    wheel_tf_joints: tuple[str, ...] = ()
+    """The wheel joints a Gazebo drive plugin puts on /tf itself, in its order (none: none)."""
 
     @property
     def label(self) -> str:

@@ -12,7 +12,9 @@ rate, with its limits and covariances:
   1e-3) with 1e12 for z, roll and pitch; its odometry source and wheel acceleration are
   :mod:`.classic_drive`'s. It publishes odometry only with
   ``<publish_odom>true`` and odom -> base on /tf only with ``<publish_odom_tf>true`` (ROS 1:
-  both by default).
+  both by default). With ``<publish_wheel_tf>true`` (ROS 1: ``<publishWheelTF>``) it puts
+  each wheel's parent -> wheel transform on /tf at the same rate, whether or not anything
+  publishes joint states.
 - gz-sim's ``DiffDrive`` system (gz-sim's ``DiffDrive.cc``): commands the wheels at every
   physics step and publishes odometry at ``<odom_publish_frequency>`` (default 50 Hz); its
   speed limiter takes ``<max_velocity>``, ``<max_acceleration>`` and ``<max_jerk>`` (and their
@@ -39,6 +41,7 @@ from servicebot_cli.description.model_plugins import (
     odometry_frames,
     publishes_odom_tf,
     ros1_plugin,
+    wheel_tf_joints,
 )
 from servicebot_cli.simulate.controllers.classic_drive import ClassicDrive, world_source
 from servicebot_cli.simulate.controllers.config import (
@@ -112,7 +115,15 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
                            publishes_odometry=topic is not None,
                            odom_tf=publishes_odom_tf(plugin) if classic else True,
                            speed_limiter=DIFF_DRIVE_CONTROLLER if classic else GZ_MATH,
-                           classic_drive=classic_drive)
+                           classic_drive=classic_drive,
+                           wheel_tf_joints=_wheel_tf(robot, plugin))
+
+
+def _wheel_tf(robot: RobotDescription, plugin: Plugin) -> tuple[str, ...]:
+    """The plugin's wheel joints on /tf; none when one is not a movable joint (it fails to load)."""
+    movable = {j.name for j in robot.joints if j.type != "fixed"}
+    joints = wheel_tf_joints(plugin)
+    return joints if movable.issuperset(joints) else ()
 
 
 def _classic_drive(plugin: Plugin, where: str, rate_hz: float) -> ClassicDrive:
