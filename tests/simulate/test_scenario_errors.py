@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from tests.conftest import assert_one_line_error
+from tests.conftest import assert_one_line_error, run_servicebot
+from tests.simulate.helpers import NO_ROS
+from tests.simulate.plugin_robots import SAM_BOT, edited
 
 YAML_CASES = [
     ("duration_s: fast\n", ":1:", "duration_s: expected a number, got 'fast'"),
@@ -152,3 +154,16 @@ def test_a_scenario_that_cannot_be_what_was_meant_is_refused(run, tmp_path, text
 def test_bad_camera_options_are_refused_before_the_run(run, args, code, needle):
     assert_one_line_error(run("simulate", "--headless", "--duration-s", "1", *args), code,
                           needle)
+
+
+def test_camera_images_of_a_camera_nothing_publishes_say_what_to_add(tmp_path):
+    """sam_bot without its gazebo_ros_camera plugin: the sensor is there, nothing publishes it."""
+    text = SAM_BOT.read_text()
+    start = text.index('<plugin name="depth_camera_controller"')
+    plugin = text[start:text.index("</plugin>", start) + len("</plugin>")]
+    robot = edited(SAM_BOT, tmp_path, (plugin, ""))
+    result = run_servicebot("simulate", robot, "--headless", "--duration-s", "1",
+                            "--camera-scale", "0.125", env=NO_ROS)
+    line = assert_one_line_error(result, 2, "nothing publishes camera sensor 'depth_camera'",
+                                 "add a gazebo_ros_camera plugin")
+    assert "has no camera sensor" not in line

@@ -13,6 +13,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.common.errors import NameNotFound
+from servicebot_cli.description.sensors import CAMERA_TYPES
 from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.scenario.definition import Scenario
 from servicebot_cli.simulate.scenario.located import Located, ScenarioError
@@ -123,7 +124,7 @@ def _check_camera(body: SimRobot, scenario: Scenario) -> None:
         return
     cli = images.from_cli
     if body.camera is None:
-        message = f"camera images asked, but {body.robot.display} has no camera sensor"
+        message = f"camera images asked, but {_no_camera(body)}"
         if cli:
             raise ScenarioError(f"--camera-scale/--camera-rate-hz/--camera-depth: {message}")
         raise _error(scenario, ("camera",), message)
@@ -133,6 +134,18 @@ def _check_camera(body: SimRobot, scenario: Scenario) -> None:
         if "rate_hz" in cli:
             raise ScenarioError(f"--camera-rate-hz: {message}")
         raise _error(scenario, ("camera", "rate_hz"), message)
+
+
+def _no_camera(body: SimRobot) -> str:
+    """Why a run has no camera: no camera sensor, or one that nothing publishes."""
+    robot = body.robot
+    unpublished = next((s for s in robot.sensors if s.type in CAMERA_TYPES), None)
+    if unpublished is None:
+        return f"{robot.display} has no camera sensor"
+    return (f"nothing publishes camera sensor '{unpublished.name}' (link "
+            f"{unpublished.reference}) of {robot.display}; "
+            f"add a gazebo_ros_camera plugin (libgazebo_ros_camera.so) to its <sensor>, "
+            f"or a <topic> for gz-sim")
 
 
 def camera_rate_limit(body: SimRobot, scenario: Scenario) -> tuple[float, str]:
