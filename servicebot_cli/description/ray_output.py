@@ -10,7 +10,8 @@ floors the intensities of scans and clouds.
 
 gazebo_ros_pkgs' ROS 1 plugins publish one type each: ``gazebo_ros_laser`` and
 ``gazebo_ros_gpu_laser`` LaserScan, ``gazebo_ros_block_laser`` PointCloud, ``gazebo_ros_range``
-Range. Another ROS plugin publishes its ``<output_type>`` when it names one, else LaserScan.
+Range; the two laser plugins copy every vertical ring's ranges into their LaserScan.
+Another ROS plugin publishes its ``<output_type>`` when it names one, else LaserScan.
 gz-sim's lidars publish LaserScan on their ``<topic>`` (ros_gz_bridge keeps the type).
 """
 
@@ -32,6 +33,7 @@ _ROS2_TYPES = {"sensor_msgs/LaserScan": LASER_SCAN, "sensor_msgs/PointCloud": PO
                "sensor_msgs/PointCloud2": POINT_CLOUD2, "sensor_msgs/Range": RANGE}
 _ROS1_TYPES = (("gazebo_ros_block_laser", POINT_CLOUD), ("gazebo_ros_range", RANGE),
                ("gazebo_ros_laser", LASER_SCAN), ("gazebo_ros_gpu_laser", LASER_SCAN))
+_ROS1_LASERS = ("gazebo_ros_laser", "gazebo_ros_gpu_laser")
 _RADIATION = {"": INFRARED, "infrared": INFRARED, "ultrasound": ULTRASOUND}
 
 
@@ -45,12 +47,16 @@ class RayOutput:
             scan as its ``gazebo_ros/conversions/sensor_msgs.hpp`` does.
         radiation_type: Range's :data:`ULTRASOUND` or :data:`INFRARED`.
         min_intensity: The floor of the published intensities.
+        every_ring: Whether a LaserScan holds every vertical ring's ranges, ring after ring
+            (ROS 1 ``gazebo_ros_laser`` and ``gazebo_ros_gpu_laser`` copy the whole Gazebo
+            scan), not only the middle ring (ROS 2's conversion, ros_gz_bridge).
     """
 
     message: str
     ray_sensor: bool = False
     radiation_type: int = INFRARED
     min_intensity: float = 0.0
+    every_ring: bool = False
 
 
 def ray_output(plugin: Plugin | None) -> RayOutput | None:
@@ -60,7 +66,8 @@ def ray_output(plugin: Plugin | None) -> RayOutput | None:
     written = (param(plugin.params, "output_type") or "").strip()
     if "gazebo_ros_ray_sensor" not in plugin.filename:
         own = next((kind for name, kind in _ROS1_TYPES if name in plugin.filename), None)
-        return RayOutput(own or _ros2_spelling(written or "sensor_msgs/LaserScan"))
+        return RayOutput(own or _ros2_spelling(written or "sensor_msgs/LaserScan"),
+                         every_ring=any(name in plugin.filename for name in _ROS1_LASERS))
     message = _ROS2_TYPES.get(written) if written else POINT_CLOUD2
     radiation = _RADIATION.get((param(plugin.params, "radiation_type") or "").strip())
     if message is None or (message == RANGE and radiation is None):

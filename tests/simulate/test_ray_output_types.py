@@ -148,3 +148,23 @@ def test_a_ros1_range_plugin_is_listed_as_range_and_not_written(tmp_path):
                             env=NO_ROS)
     assert result.returncode == 0, result.stderr
     assert "note: /scan (sensor_msgs/msg/Range) is not published" in result.stderr
+
+
+@pytest.mark.parametrize("plugin", ["libgazebo_ros_laser.so", "libgazebo_ros_gpu_laser.so"])
+def test_ros1_laser_plugins_put_every_ring_in_their_laserscan(tmp_path, plugin):
+    """noetic gazebo_ros_laser.cpp copies all of Gazebo's ranges and intensities, scan_time 0."""
+    pytest.importorskip("rosbags")
+    rings = ("</horizontal>\n        </scan>",
+             "</horizontal>\n          <vertical><samples>3</samples><min_angle>-0.2"
+             "</min_angle><max_angle>0.2</max_angle></vertical>\n        </scan>")
+    robot = edited(TURTLEBOT3, tmp_path, rings, ("libgazebo_ros_laser.so", plugin),
+                   file=TURTLEBOT3_GAZEBO)
+    scan = bag_messages(robot, tmp_path)["/scan"][-1]
+    assert len(scan.ranges) == len(scan.intensities) == 3 * 360
+    assert scan.scan_time == 0.0
+    assert (scan.angle_min, scan.angle_max) == (0.0, pytest.approx(6.28319))
+    (tmp_path / "level").mkdir()
+    level = bag_messages(TURTLEBOT3, tmp_path / "level")["/scan"][-1]
+    middle, flat = np.array(scan.ranges[360:720]), np.array(level.ranges)
+    both = np.isfinite(middle) & np.isfinite(flat)
+    assert both.any() and middle[both] == pytest.approx(flat[both], abs=0.06)

@@ -4,7 +4,7 @@ The ROS 2 ``gazebo_ros_ray_sensor`` converts each Gazebo scan (``gazebo_ros/conv
 sensor_msgs.hpp``), stamped in the plugin's frame:
 
 - *LaserScan*: one ring of ranges; with several vertical rings, the middle one (ring
-  ``rings // 2``). Its other fields are those servicebot has always written (``scan_time``
+  ``rings // 2``; ROS 1's laser plugins: every ring, :func:`laser_scan`). Its other fields are those servicebot has always written (``scan_time``
   the scan period, no intensities).
 - *PointCloud2*: every ring's rays with a finite range, in order, as points in the sensor
   frame, ``x = r cos(i) cos(a)``, ``y = r cos(i) sin(a)``, ``z = r sin(i)`` (azimuth ``a``
@@ -72,23 +72,30 @@ def _frame(result: SimResult) -> str:
 
 
 def laser_scan(result: SimResult) -> ByteRows:
-    """LaserScan of the middle ring (the only one of a level scan)."""
+    """LaserScan of the middle ring (the only one of a level scan), or of every ring.
+
+    ROS 1's ``gazebo_ros_laser`` and ``gazebo_ros_gpu_laser`` copy all of Gazebo's ranges,
+    ring after ring, and its intensities (0 here), with ``scan_time`` 0.
+    """
     scans = _scans(result)
     spec, rings = scans.spec, len(vertical_angles(scans.spec))
     rays = len(scans.angles_rad) // rings
-    start = (rings // 2) * rays
-    angles, ranges = scans.angles_rad[start:start + rays], scans.ranges_m[:, start:start + rays]
+    every = spec.output is not None and spec.output.every_ring
+    start = 0 if every else (rings // 2) * rays
+    angles = scans.angles_rad[start:start + rays]
+    ranges = scans.ranges_m if every else scans.ranges_m[:, start:start + rays]
     layout = cdr.Layout()
     layout.header(_frame(result))
     for name in ("angle_min", "angle_max", "angle_increment", "time_increment", "scan_time",
                  "range_min", "range_max"):
         layout.field(name, "<f4")
-    layout.sequence("ranges", "<f4", rays)
-    layout.sequence("intensities", "<f4", 0)
+    layout.sequence("ranges", "<f4", ranges.shape[1])
+    layout.sequence("intensities", "<f4", ranges.shape[1] if every else 0)
     step = (angles[-1] - angles[0]) / max(rays - 1, 1)
     return cdr.serialize(layout, scans.times_s, {
         "angle_min": angles[0], "angle_max": angles[-1],
-        "angle_increment": step, "time_increment": 0.0, "scan_time": scans.period_s,
+        "angle_increment": step, "time_increment": 0.0,
+        "scan_time": 0.0 if every else scans.period_s,
         "range_min": spec.min_range_m or 0.0, "range_max": spec.max_range_m or np.inf,
         "ranges": ranges.astype(np.float32)})
 
