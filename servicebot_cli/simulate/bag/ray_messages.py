@@ -4,8 +4,9 @@ The ROS 2 ``gazebo_ros_ray_sensor`` converts each Gazebo scan (``gazebo_ros/conv
 sensor_msgs.hpp``), stamped in the plugin's frame:
 
 - *LaserScan*: one ring of ranges; with several vertical rings, the middle one (ring
-  ``rings // 2``; ROS 1's laser plugins: every ring, :func:`laser_scan`). Its other fields are those servicebot has always written (``scan_time``
-  the scan period, no intensities).
+  ``rings // 2``; ROS 1's laser plugins: every ring, :func:`laser_scan`). Its other
+  fields are those servicebot has always written (``scan_time`` the scan period, no
+  intensities).
 - *PointCloud2*: every ring's rays with a finite range, in order, as points in the sensor
   frame, ``x = r cos(i) cos(a)``, ``y = r cos(i) sin(a)``, ``z = r sin(i)`` (azimuth ``a``
   from the horizontal ``min_angle``, inclination ``i`` from the vertical one), with fields
