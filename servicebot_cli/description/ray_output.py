@@ -3,9 +3,10 @@
 gazebo_ros_pkgs' ROS 2 ``gazebo_ros_ray_sensor`` (``gazebo_plugins/src/
 gazebo_ros_ray_sensor.cpp``) publishes on ``~/out`` the ``<output_type>`` it is given:
 ``sensor_msgs/LaserScan``, ``sensor_msgs/PointCloud``, ``sensor_msgs/PointCloud2`` or
-``sensor_msgs/Range``; without one, PointCloud2. Any other type is an error: the plugin
-publishes nothing. For Range, ``<radiation_type>`` is ``ultrasound`` or ``infrared`` (the
-default); any other is an error too, and nothing is published. ``<min_intensity>`` (default 0)
+``sensor_msgs/Range``; without one, PointCloud2. Any other type, an empty
+``<output_type/>`` too, is an error: the plugin publishes nothing. For Range,
+``<radiation_type>`` is ``ultrasound`` or ``infrared`` (the default when absent); any other,
+or an empty one, is an error too, and nothing is published. ``<min_intensity>`` (default 0)
 floors the intensities of scans and clouds.
 
 gazebo_ros_pkgs' ROS 1 plugins publish one type each: ``gazebo_ros_laser`` and
@@ -34,7 +35,7 @@ _ROS2_TYPES = {"sensor_msgs/LaserScan": LASER_SCAN, "sensor_msgs/PointCloud": PO
 _ROS1_TYPES = (("gazebo_ros_block_laser", POINT_CLOUD), ("gazebo_ros_range", RANGE),
                ("gazebo_ros_laser", LASER_SCAN), ("gazebo_ros_gpu_laser", LASER_SCAN))
 _ROS1_LASERS = ("gazebo_ros_laser", "gazebo_ros_gpu_laser")
-_RADIATION = {"": INFRARED, "infrared": INFRARED, "ultrasound": ULTRASOUND}
+_RADIATION = {"infrared": INFRARED, "ultrasound": ULTRASOUND}
 
 
 @dataclass(frozen=True)
@@ -68,8 +69,9 @@ def ray_output(plugin: Plugin | None) -> RayOutput | None:
         own = next((kind for name, kind in _ROS1_TYPES if name in plugin.filename), None)
         return RayOutput(own or _ros2_spelling(written or "sensor_msgs/LaserScan"),
                          every_ring=any(name in plugin.filename for name in _ROS1_LASERS))
-    message = _ROS2_TYPES.get(written) if written else POINT_CLOUD2
-    radiation = _RADIATION.get((param(plugin.params, "radiation_type") or "").strip())
+    given, kind = (param(plugin.params, key) for key in ("output_type", "radiation_type"))
+    message = POINT_CLOUD2 if given is None else _ROS2_TYPES.get(written)  # empty: invalid
+    radiation = INFRARED if kind is None else _RADIATION.get(kind.strip())
     if message is None or (message == RANGE and radiation is None):
         return None
     floor = parse_float(param(plugin.params, "min_intensity"))

@@ -112,7 +112,9 @@ def test_range_is_the_least_ray_with_the_radiation_type_given(tmp_path):
 
 @pytest.mark.parametrize("text", [
     "<output_type>sensor_msgs/Image</output_type>",
-    "<output_type>sensor_msgs/Range</output_type><radiation_type>radar</radiation_type>"])
+    "<output_type>sensor_msgs/Range</output_type><radiation_type>radar</radiation_type>",
+    "<output_type></output_type>",  # empty: the plugin logs it invalid
+    "<output_type>sensor_msgs/Range</output_type><radiation_type/>"])
 def test_an_output_the_plugin_refuses_publishes_nothing(tmp_path, text):
     pytest.importorskip("rosbags")
     robot = _output(tmp_path, text)
