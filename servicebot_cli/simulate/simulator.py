@@ -251,7 +251,8 @@ class _Run:
         odom_path, odom_before = self.odometer.advance(first, plan.left_rad_s, plan.right_rad_s)
         odom_times = self.clocks["odometry"].take(stop)
         drive = self.scenario.classic_drive
-        odom = odometry.in_world(truth, odom_times, self.twist_before, body.base_height_m) \
+        odom = odometry.at_rest(odom_times) if drive is not None and not drive.updates_odometry \
+            else odometry.in_world(truth, odom_times, self.twist_before, body.base_height_m) \
             if drive is not None and drive.world_odometry else \
             odometry.published(odom_path, odom_times, odom_before)
         names, positions = _joint_positions(body, sides, arm_q)

@@ -74,6 +74,24 @@ def test_sam_bot_with_odometry_source_encoder_integrates_its_wheels(tmp_path):
     assert last.x > travelled**0.5 + 0.5  # the wheels turned on at the wall
 
 
+@pytest.mark.parametrize("source", ["2", "-1"])
+def test_sam_bot_with_another_odometry_source_never_updates_its_odometry(tmp_path, source):
+    """ROS 2 updates odometry for ENCODER (0) and WORLD (1) only; any other publishes its
+    untouched message: the origin, heading 0, at rest (with the covariances it sets)."""
+    pytest.importorskip("rosbags")
+    robot = edited(SAM_BOT, tmp_path, ("<publish_odom>true</publish_odom>",
+                                       "<publish_odom>true</publish_odom>"
+                                       f"<odometry_source>{source}</odometry_source>"))
+    odometry, _ = _into_a_wall(robot, tmp_path)
+    assert len(odometry) > 100
+    for message in (odometry[0], odometry[100], odometry[-1]):
+        pose, twist = message.pose.pose, message.twist.twist
+        assert (pose.position.x, pose.position.y, pose.position.z) == (0.0, 0.0, 0.0)
+        assert (pose.orientation.z, pose.orientation.w) == (0.0, 1.0)
+        assert (twist.linear.x, twist.linear.y, twist.angular.z) == (0.0, 0.0, 0.0)
+        assert message.pose.covariance[0] == pytest.approx(1e-5)
+
+
 @pytest.mark.parametrize(("source", "world"), [(None, True), (TB3_SOURCE, False)])
 def test_turtlebot3s_ros1_odometry_source(tmp_path, source, world):
     pytest.importorskip("rosbags")

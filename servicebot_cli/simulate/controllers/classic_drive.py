@@ -39,6 +39,8 @@ class ClassicDrive:
 
     Attributes:
         world_odometry: Odometry is the ground truth (``odometry_source`` WORLD).
+        updates_odometry: False when ``odometry_source`` is neither ENCODER nor WORLD: the
+            plugin publishes its odometry at the origin and at rest.
         wheel_acceleration_m_s2: Bound on each wheel's surface acceleration; 0: none.
         wheel_torque_nm: The motors' force cap (reported only: no dynamics here).
         update_rate_hz: How often the plugin commands the wheels; 0: every step.
@@ -47,10 +49,26 @@ class ClassicDrive:
     """
 
     world_odometry: bool = True
+    updates_odometry: bool = True
     wheel_acceleration_m_s2: float = 0.0
     wheel_torque_nm: float = 5.0
     update_rate_hz: float = 100.0
     ros1: bool = False
+
+
+def updates_odometry(text: str | None, *, ros1: bool) -> bool:
+    """Whether ``<odometry_source>`` selects ENCODER (0) or WORLD (1), the two the plugin updates.
+
+    ROS 2 casts any other integer to its source enum and then updates neither: its odometry
+    stays the message it started as, at the origin and at rest. ROS 1 maps unknown text to
+    WORLD (:func:`world_source`).
+    """
+    if ros1:
+        return True
+    try:
+        return int((text or "1").strip() or "1") in (0, 1)
+    except ValueError:
+        return True  # sdformat cannot read it as an int: the default, 1
 
 
 def world_source(text: str | None, *, ros1: bool) -> bool:

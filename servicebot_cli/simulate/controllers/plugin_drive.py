@@ -43,7 +43,11 @@ from servicebot_cli.description.model_plugins import (
     ros1_plugin,
     wheel_tf_joints,
 )
-from servicebot_cli.simulate.controllers.classic_drive import ClassicDrive, world_source
+from servicebot_cli.simulate.controllers.classic_drive import (
+    ClassicDrive,
+    updates_odometry,
+    world_source,
+)
 from servicebot_cli.simulate.controllers.config import (
     ControllersFile,
     ControllersFileError,
@@ -132,6 +136,7 @@ def _classic_drive(plugin: Plugin, where: str, rate_hz: float) -> ClassicDrive:
     source = param(plugin.params, "odometrySource" if ros1 else "odometry_source")
     return ClassicDrive(
         world_odometry=world_source(source, ros1=ros1),
+        updates_odometry=updates_odometry(source, ros1=ros1),
         wheel_acceleration_m_s2=_number(
             plugin, where, "wheelAcceleration" if ros1 else "max_wheel_acceleration",
             default=0.0),

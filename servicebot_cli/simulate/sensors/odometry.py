@@ -87,6 +87,16 @@ def published(path: motion.Path2D, times_s: FloatArray,
     return Odometry(times_s, path.x_m[k], path.y_m[k], path.yaw_rad[k], linear[k], angular[k])
 
 
+def at_rest(times_s: FloatArray) -> Odometry:
+    """Odometry never updated: at the origin, heading 0, at rest, at ``times_s``.
+
+    What Gazebo Classic's ROS 2 diff drive publishes with an ``<odometry_source>`` that is
+    neither ENCODER (0) nor WORLD (1): it updates neither, and sends its initial message.
+    """
+    zeros = np.zeros_like(times_s)
+    return Odometry(times_s, zeros, zeros, zeros, zeros, zeros)
+
+
 def in_world(truth: motion.Path2D, times_s: FloatArray, before: tuple[float, float],
              height_m: float) -> Odometry:
     """Gazebo Classic's WORLD odometry at ``times_s``: the model's true pose and velocity.
