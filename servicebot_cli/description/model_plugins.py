@@ -38,8 +38,9 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from servicebot_cli.description.elements import parse_float
 from servicebot_cli.description.extensions import Plugin, param, params_all
-from servicebot_cli.description.sensors import plugin_topic
+from servicebot_cli.description.sensors import ImuSpec, NoiseSpec, plugin_topic
 
 Row = tuple[str, str, str, str | None]
 """direction, topic, message type, note."""
@@ -173,18 +174,32 @@ def _joint_states(plugin: Plugin) -> list[Row]:
 
 
 def _imu(plugin: Plugin) -> list[Row]:
+    if param(plugin.params, "topicName") == "":  # written empty: the plugin advertises none
+        return []
     return [("out", _absolute(plugin_topic(plugin, "/default_imu")), IMU, None)]
 
 
-def model_imu(plugin: Plugin) -> tuple[str, str, str] | None:
-    """A ROS 1 ``gazebo_ros_imu`` model plugin's link, topic and frame; None for others.
+def model_imu(plugin: Plugin) -> tuple[str, ImuSpec] | None:
+    """A ROS 1 ``gazebo_ros_imu`` model plugin's link and the IMU it publishes; None for others.
 
-    None too without ``<bodyName>``, which the plugin cannot run without.
+    As noetic ``gazebo_ros_imu.cpp`` reads its tags: ``<topicName>`` (default
+    ``/default_imu``; written empty, it publishes nothing: None), ``<frameName>`` (default
+    ``<bodyName>``), ``<updateRate>`` (default 0: every step), ``<gaussianNoise>`` (default 0:
+    that standard deviation on each axis of the angular velocity and the acceleration, its
+    square on all three covariance diagonals, the orientation's too). It measures its link
+    itself: no ``<sensor type="imu">`` is needed. None too without ``<bodyName>``, which the
+    plugin cannot run without.
     """
     body = _text(plugin, "bodyName")
-    if "gazebo_ros_imu.so" not in plugin.filename or not body:
+    rows = _imu(plugin) if "gazebo_ros_imu.so" in plugin.filename and body else []
+    if not rows:
         return None
-    return body, _imu(plugin)[0][1], _text(plugin, "frameName") or body
+    rate = parse_float(param(plugin.params, "updateRate")) or 0.0
+    sigma = parse_float(param(plugin.params, "gaussianNoise")) or 0.0
+    axis = NoiseSpec("gaussian", 0.0, sigma) if sigma > 0 else None
+    return body, ImuSpec(rate if rate > 0 else None, (axis, axis, axis), (axis, axis, axis),
+                         _text(plugin, "frameName") or body, rows[0][1],
+                         orientation_variance=sigma**2)
 
 
 def _gz(plugin: Plugin, key: str, default: str) -> tuple[str, str]:

@@ -85,6 +85,8 @@ class ImuSpec:
     linear_acceleration_noise: tuple[NoiseSpec | None, NoiseSpec | None, NoiseSpec | None]
     frame: str | None
     topic: str | None
+    orientation_variance: float = 0.0
+    """The orientation covariance's diagonal [rad^2] (ROS 1 ``gazebo_ros_imu``'s noise)."""
 
 
 @dataclass(frozen=True)

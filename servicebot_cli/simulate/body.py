@@ -9,7 +9,7 @@ shapes of every link. Nothing is a constant of the bundled robot.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Generic, TypeVar
 
 import numpy as np
@@ -130,7 +130,7 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
         base_height_m=height,
         shape=_shape(robot, arm_joints, resolver),
         lidar=_mount(robot, LIDAR_TYPES, _published_lidar, placement),
-        imu=_mount(robot, ("imu",), _imu_reader(robot), placement),
+        imu=_mount(robot, ("imu",), _published_imu, placement) or _model_imu(robot, placement),
         camera=_mount(robot, CAMERA_TYPES, _published_camera, placement),
         disabled_pairs=tuple(disabled_pairs), resolver=resolver,
     )
@@ -170,26 +170,29 @@ def _published_camera(sensor: Sensor) -> CameraSpec | None:
     return spec if spec.image_topic is not None or spec.info_topic is not None else None
 
 
-def _imu_reader(robot: RobotDescription) -> Callable[[Sensor], ImuSpec | None]:
-    """An IMU's spec if it publishes, on the topic and frame of what publishes it.
+def _published_imu(sensor: Sensor) -> ImuSpec | None:
+    """An IMU sensor's spec if it publishes: its own ROS plugin or gz-sim's ``<topic>``.
 
-    Its own ROS plugin (``gazebo_ros_imu_sensor``) or gz-sim's ``<topic>``; else a ROS 1
-    ``gazebo_ros_imu`` model plugin whose ``<bodyName>`` is the sensor's link (TurtleBot3's).
-    Gazebo Classic publishes nothing on ROS for an IMU with neither.
+    Gazebo Classic publishes nothing on ROS for an IMU sensor without a plugin.
     """
-    bodies = {found[0]: found[1:] for block in robot.gazebo if block.reference is None
-              for plugin in block.plugins for found in [model_imu(plugin)] if found}
+    spec = imu_spec(sensor)
+    return spec if spec.topic is not None else None
 
-    def read(sensor: Sensor) -> ImuSpec | None:
-        spec = imu_spec(sensor)
-        if spec.topic is not None:
-            return spec
-        if sensor.reference in bodies:
-            topic, frame = bodies[sensor.reference]
-            return replace(spec, topic=topic, frame=frame)
+
+def _model_imu(robot: RobotDescription, placement: Placement) -> Mounted[ImuSpec] | None:
+    """The first ROS 1 ``gazebo_ros_imu`` model plugin's IMU, at its ``<bodyName>`` link.
+
+    The plugin measures its link itself (TurtleBot3's ``imu_link``), sensor or not; a link
+    that is not in the model stops it (nothing is published).
+    """
+    links = {link.name for link in robot.links}
+    found = next((found for block in robot.gazebo if block.reference is None
+                  for plugin in block.plugins for found in [model_imu(plugin)]
+                  if found and found[0] in links), None)
+    if found is None:
         return None
-
-    return read
+    link, spec = found
+    return Mounted(spec, placement(link), link)
 
 
 def _rays(sensor: Sensor) -> int:

@@ -16,7 +16,13 @@ import pytest
 
 from tests.conftest import run_servicebot
 from tests.simulate.helpers import NO_ROS
-from tests.simulate.plugin_robots import SAM_BOT, TURTLEBOT3, bag_messages, edited
+from tests.simulate.plugin_robots import (
+    SAM_BOT,
+    TURTLEBOT3,
+    TURTLEBOT3_GAZEBO,
+    bag_messages,
+    edited,
+)
 
 IMU, CAMERA_INFO = "sensor_msgs/msg/Imu", "sensor_msgs/msg/CameraInfo"
 NO_IMU_PLUGIN = (('<plugin filename="libgazebo_ros_imu_sensor.so" name="imu_plugin">',
@@ -72,3 +78,43 @@ def test_turtlebot3s_imu_is_its_ros1_model_plugins_topic_and_frame(tmp_path):
     messages = bag_messages(TURTLEBOT3, tmp_path)
     assert _bagged(messages, "__Imu") == _listed(TURTLEBOT3, IMU) == {"/imu"}
     assert messages["/imu"][-1].header.frame_id == "imu_link"  # <frameName>
+
+
+TB3_IMU_SENSOR = ('<sensor type="imu" name="imu">\n      <always_on>true</always_on>\n'
+                  '      <visualize>$(arg imu_visual)</visualize>\n    </sensor>', "")
+
+
+def test_turtlebot3s_imu_plugin_publishes_with_no_imu_sensor(tmp_path):
+    """noetic gazebo_ros_imu.cpp measures its <bodyName> link itself: no sensor needed."""
+    pytest.importorskip("rosbags")
+    robot = edited(TURTLEBOT3, tmp_path, TB3_IMU_SENSOR, file=TURTLEBOT3_GAZEBO)
+    messages = bag_messages(robot, tmp_path)
+    assert _bagged(messages, "__Imu") == _listed(robot, IMU) == {"/imu"}
+    assert messages["/imu"][-1].header.frame_id == "imu_link"
+
+
+def test_the_imu_plugins_rate_noise_and_frame_are_its_own(tmp_path):
+    """<updateRate>, <frameName>, <gaussianNoise> (its square on all three covariances)."""
+    pytest.importorskip("rosbags")
+    robot = edited(TURTLEBOT3, tmp_path, TB3_IMU_SENSOR,
+                   ("<frameName>imu_link</frameName>", "<frameName>imu_frame</frameName>"),
+                   ("<gaussianNoise>0.0</gaussianNoise>", "<gaussianNoise>0.1</gaussianNoise>"),
+                   ("<updateRate>0</updateRate>", "<updateRate>20</updateRate>"),
+                   file=TURTLEBOT3_GAZEBO)
+    imu = bag_messages(robot, tmp_path)["/imu"]
+    assert len(imu) == pytest.approx(2 * 20, abs=1)  # 2 s at 20 Hz
+    assert imu[-1].header.frame_id == "imu_frame"
+    for covariance in (imu[-1].orientation_covariance, imu[-1].angular_velocity_covariance,
+                       imu[-1].linear_acceleration_covariance):
+        assert list(covariance) == pytest.approx([0.01, 0, 0, 0, 0.01, 0, 0, 0, 0.01])
+    rates = [m.angular_velocity.x for m in imu]
+    assert max(rates) - min(rates) > 0.05  # noisy, standing still
+
+
+def test_an_imu_plugin_with_an_empty_topic_publishes_nothing(tmp_path):
+    """``<topicName></topicName>``: the plugin advertises nothing (noetic gazebo_ros_imu)."""
+    pytest.importorskip("rosbags")
+    robot = edited(TURTLEBOT3, tmp_path, ("<topicName>imu</topicName>",
+                                          "<topicName></topicName>"), file=TURTLEBOT3_GAZEBO)
+    assert _listed(robot, IMU) == set()
+    assert _bagged(bag_messages(robot, tmp_path), "__Imu") == set()

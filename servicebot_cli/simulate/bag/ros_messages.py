@@ -197,7 +197,9 @@ def _imu(result: SimResult) -> ByteRows:
                         ("angular_velocity", 3), ("angular_velocity_covariance", 9),
                         ("linear_acceleration", 3), ("linear_acceleration_covariance", 9)):
         layout.field(name, "<f8", count)
+    variance = imu.spec.orientation_variance
     return cdr.serialize(layout, imu.times_s, {
+        **({"orientation_covariance": np.diag([variance] * 3).ravel()} if variance else {}),
         "orientation": imu.orientation_xyzw,
         "angular_velocity": imu.angular_velocity_rad_s,
         "angular_velocity_covariance": np.diag(imu.angular_velocity_variance).ravel(),
