@@ -228,7 +228,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
 
     controllers_file = controllers_for(robot, controllers)
     joint_states = joint_state_topics(robot, controllers_file)
-    scenario = resolve(scenario, controllers_file)
+    scenario = joint_states.timed(resolve(scenario, controllers_file))
     from servicebot_cli.simulate import simulator
     from servicebot_cli.simulate.bag.ray_messages import unpublished_note
     from servicebot_cli.simulate.bag.ros_messages import odom_frames, odom_topic, publishers
@@ -256,7 +256,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
                                   meshes=meshes, piece_s=piece_s)
         stack.enter_context(contextlib.closing(pieces))  # its worker stopped whatever happens
         summary, last, writers = _write_pieces(
-            pieces,
+            joint_states.narrowed(pieces),
             outputs, publishers(body, scenario.camera, odom_topic(controllers_file),
                                 controllers_file.odom_tf, odom_frames(controllers_file, body),
                                 joint_states.topics, controllers_file.wheel_tf_joints),

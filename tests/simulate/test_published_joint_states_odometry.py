@@ -134,3 +134,39 @@ def test_the_ros1_diff_drive_puts_wheels_on_tf_without_joint_states(tmp_path):
     left = next(m.transforms[0] for m in messages["/tf"]
                 if m.transforms[0].child_frame_id == "wheel_left_link")
     assert left.transform.translation.z == pytest.approx(0.023 + 0.010)  # base_joint's too
+
+
+MP_400_JOINTS = ("<joint_name>mp_400_fixed_wheel_left_joint</joint_name>\n"
+                 "        <joint_name>mp_400_fixed_wheel_right_joint</joint_name>")
+
+
+@pytest.mark.parametrize(("joints", "rate_hz"), [
+    (("mp_400_fixed_wheel_right_joint", "mp_400_fixed_wheel_left_joint"), 20),
+    (("mp_400_fixed_wheel_left_joint",), 10),
+], ids=["reordered", "subset"])
+def test_the_joint_state_publisher_sends_its_joints_in_order_at_its_rate(tmp_path, joints,
+                                                                         rate_hz):
+    """ros2 gazebo_ros_joint_state_publisher.cpp: its <joint_name>s, that order, <update_rate>."""
+    pytest.importorskip("rosbags")
+    names = "".join(f"<joint_name>{n}</joint_name>" for n in joints)
+    robot = edited(MP_400, tmp_path,
+                   (MP_400_JOINTS, f"{names}<update_rate>{rate_hz}</update_rate>"))
+    out = tmp_path / "out"
+    messages = bag_messages(robot, tmp_path, "--out", out)
+    states = messages["/joint_states"]
+    assert {tuple(m.name) for m in states} == {joints}
+    assert len(states) == pytest.approx(2 * rate_hz, abs=1)  # 2 s
+    header = (out / "joint_states.csv").read_text().splitlines()[0].split(",")
+    assert header == ["time_s", *(f"{n}_{unit}" for unit in ("rad", "rad_s") for n in joints)]
+    assert (out / "joint_states.csv").read_text().count("\n") - 1 == len(states)
+    moving = {t.child_frame_id for m in messages["/tf"] for t in m.transforms
+              if t.header.frame_id == "base_link"}  # robot_state_publisher's, from them
+    assert moving == {n.replace("_joint", "_link") for n in joints}
+
+
+def test_the_joint_state_publisher_runs_at_100_hz_by_default(tmp_path):
+    pytest.importorskip("rosbags")
+    states = bag_messages(MP_400, tmp_path)["/joint_states"]
+    assert len(states) == pytest.approx(200, abs=1)
+    assert tuple(states[0].name) == ("mp_400_fixed_wheel_left_joint",
+                                     "mp_400_fixed_wheel_right_joint")
