@@ -8,7 +8,6 @@ import only Click and light helpers at the top, so ``--help`` and shell completi
 from __future__ import annotations
 
 import atexit
-import errno
 import importlib
 import os
 import sys
@@ -17,7 +16,7 @@ from typing import Any, NoReturn
 import click
 
 from servicebot_cli import __version__
-from servicebot_cli.common.errors import ExitCode, ServicebotError
+from servicebot_cli.common.errors import NO_ROOM, ExitCode, ServicebotError, no_room
 from servicebot_cli.common.signals import EndedBySignal, signals_as_exceptions
 
 
@@ -101,7 +100,7 @@ class ServicebotGroup(click.Group):
             sys.stderr.close()  # the reader went away (| head): nothing left to say
             ctx.exit(ExitCode.OK)
         except OSError as exc:
-            if exc.errno not in _FULL:
+            if exc.errno not in NO_ROOM:
                 _fail(ctx, _internal(exc), ExitCode.INTERNAL, debug)
             _fail(ctx, _no_room(exc), ExitCode.USAGE, debug)
         except KeyboardInterrupt:
@@ -112,14 +111,9 @@ class ServicebotGroup(click.Group):
             _fail(ctx, _internal(exc), ExitCode.INTERNAL, debug)
 
 
-_FULL = (errno.ENOSPC, errno.EDQUOT, errno.EFBIG)
-"""A write refused for want of room: the user's disk or file, never a bug."""
-
-
 def _no_room(exc: OSError) -> str:
-    """The line for a write refused for want of room."""
-    return (f"{exc.filename or 'standard output'}: cannot write: {exc.strerror}; free some "
-            "space or write to another file")
+    """The line for a write refused for want of room: to a named file, else to stdout."""
+    return no_room(exc.filename or "standard output", exc)
 
 
 def _internal(exc: Exception) -> str:
@@ -171,7 +165,7 @@ def entry() -> NoReturn:
     except SystemExit as exc:
         code = exc.code
     except OSError as exc:  # the group's own help or version, written to a full disk
-        if exc.errno not in _FULL:
+        if exc.errno not in NO_ROOM:
             raise
         print(f"Error: {_no_room(exc)}", file=sys.stderr)
         code = ExitCode.USAGE

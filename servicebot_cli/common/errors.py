@@ -7,6 +7,7 @@ Each class carries its exit code, so a new error never needs a new ``except`` cl
 from __future__ import annotations
 
 import difflib
+import errno
 from collections.abc import Iterable
 from enum import IntEnum
 
@@ -135,3 +136,12 @@ class LinkLost(LinkError):
     """The link stopped answering during a run."""
 
     exit_code = ExitCode.LINK_LOST
+
+
+NO_ROOM = (errno.ENOSPC, errno.EDQUOT, errno.EFBIG)
+"""errno of a write refused for want of room (disk, quota, file size limit): never a bug."""
+
+
+def no_room(target: object, exc: OSError) -> str:
+    """The line for a write to ``target`` refused for want of room."""
+    return f"{target}: cannot write: {exc.strerror}; free some space or write somewhere else"

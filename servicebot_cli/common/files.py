@@ -22,7 +22,6 @@ broke the link (a report kept in a shared directory, a dotfiles-style layout).
 from __future__ import annotations
 
 import contextlib
-import errno
 import os
 import re
 import shutil
@@ -33,7 +32,7 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import IO, Any
 
-from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.common.errors import NO_ROOM, ServicebotError, no_room
 from servicebot_cli.common.signals import ENDING_SIGNALS, SignalsHeld, raise_lost
 
 
@@ -233,9 +232,8 @@ def _parent(target: Path) -> Path:
 def _cannot_write(target: Path, directory: Path, exc: OSError) -> OutputError:
     if isinstance(exc, PermissionError):
         return OutputError(f"{target}: permission denied writing in '{directory}'")
-    if exc.errno in (errno.ENOSPC, errno.EDQUOT):
-        return OutputError(f"{target}: cannot write: {exc.strerror}; free some space or "
-                           "write somewhere else")
+    if exc.errno in NO_ROOM:
+        return OutputError(no_room(target, exc))
     return OutputError(f"{target}: cannot write: {exc.strerror or exc}")
 
 
