@@ -34,12 +34,9 @@ ROS2_CONTROLLERS = frozenset((
 _NAMESPACE_DEPTH = 3
 
 
-def check(text: str, display: str, robot: RobotDescription) -> Iterator[Issue]:
-    """Every issue of the controllers YAML ``text`` (shown as ``display``) against ``robot``."""
-    found = _sections_or_problem(text, display)
-    if isinstance(found, Issue):
-        yield found
-        return
+def check(found: dict[str, yaml.MappingNode], display: str,
+          robot: RobotDescription) -> Iterator[Issue]:
+    """Every issue of the controller sections ``found`` (of file ``display``) against ``robot``."""
     checker = _Checker(display, robot, frozenset(found))
     types = _types(found)
     for name, params in found.items():
@@ -47,17 +44,12 @@ def check(text: str, display: str, robot: RobotDescription) -> Iterator[Issue]:
             yield from checker.section(name, params)
 
 
-def file_problem(text: str, display: str) -> Issue | None:
-    """What makes ``text`` no controllers file at all, whatever the robot (SB601), or None.
+def sections(text: str, display: str) -> dict[str, yaml.MappingNode] | Issue:
+    """The controller sections of ``text``, read once for every robot it is checked against.
 
-    Not YAML, empty, or without a ``NAME: ros__parameters:`` section.
+    Or the SB601 issue that makes ``text`` no controllers file at all, whatever the robot:
+    not YAML, empty, or without a ``NAME: ros__parameters:`` section.
     """
-    found = _sections_or_problem(text, display)
-    return found if isinstance(found, Issue) else None
-
-
-def _sections_or_problem(text: str, display: str) -> dict[str, yaml.MappingNode] | Issue:
-    """The controller sections of ``text``, or the SB601 issue that leaves it none."""
     try:
         root = yaml.compose(text, Loader=yaml.SafeLoader)
     except yaml.YAMLError as exc:

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from servicebot_cli.check import files, model_ahead, workers
+from servicebot_cli.check.findings import Issue
 from servicebot_cli.check.result import CheckResult
 from servicebot_cli.check.runner import FileReport, place_issues
 from servicebot_cli.check.settings import Settings, find_pyproject, load_settings
@@ -182,14 +183,14 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
     text = read_input_text(str(yaml_path), kind="a ros2_control controllers YAML",
                            error=DescriptionError, max_bytes=MAX_PARAMETERS_BYTES)
     sources = targets.urdfs or tuple(RobotSource.bundled(name) for name in BUNDLED_ROBOTS)
-    problem = controllers.file_problem(text, display)
-    if problem is not None:  # the YAML itself, the same against every robot: said once
+    found = controllers.sections(text, display)
+    if isinstance(found, Issue):  # the YAML itself, the same against every robot: said once
         robot = read_description(sources[0])
-        return [FileReport(display, tuple(place_issues(robot, [problem], settings)))]
+        return [FileReport(display, tuple(place_issues(robot, [found], settings)))]
     reports = []
     for source in sources:
         robot = read_description(source)
-        issues = controllers.check(text, display, robot)
+        issues = controllers.check(found, display, robot)
         reports.append(FileReport(f"{display} against {source.display}",
                                   tuple(place_issues(robot, issues, settings))))
     return reports
