@@ -27,6 +27,7 @@ from servicebot_cli.description.sensors import CameraSpec, ImuSpec, LidarSpec
 from servicebot_cli.kinematics import diff_drive
 from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.controllers.arm_trajectory import ArmLimits, ArmMotion
+from servicebot_cli.simulate.controllers.classic_drive import ENCODER, NEITHER, WORLD
 from servicebot_cli.simulate.controllers.diff_drive import WheelPlan, WheelPlanner
 from servicebot_cli.simulate.pose_work import FromPoses, PoseJob, PoseWork
 from servicebot_cli.simulate.scenario.definition import Scenario
@@ -250,11 +251,14 @@ class _Run:
         sides = self._wheel_angles(plan)
         odom_path, odom_before = self.odometer.advance(first, plan.left_rad_s, plan.right_rad_s)
         odom_times = self.clocks["odometry"].take(stop)
-        drive = self.scenario.classic_drive
-        odom = odometry.at_rest(odom_times) if drive is not None and not drive.updates_odometry \
-            else odometry.in_world(truth, odom_times, self.twist_before, body.base_height_m) \
-            if drive is not None and drive.world_odometry else \
-            odometry.published(odom_path, odom_times, odom_before)
+        source = self.scenario.classic_drive.odometry_source if self.scenario.classic_drive \
+            else ENCODER  # diff_drive_controller and gz-sim integrate the wheels
+        if source == WORLD:
+            odom = odometry.in_world(truth, odom_times, self.twist_before, body.base_height_m)
+        elif source == NEITHER:
+            odom = odometry.at_rest(odom_times)
+        else:
+            odom = odometry.published(odom_path, odom_times, odom_before)
         names, positions = _joint_positions(body, sides, arm_q)
         camera_times = self.clocks["camera"].take(stop) if "camera" in self.clocks \
             else np.zeros(0)

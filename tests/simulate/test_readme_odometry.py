@@ -9,15 +9,15 @@ from __future__ import annotations
 
 import re
 
-from servicebot_cli.simulate.controllers.classic_drive import ClassicDrive, world_source
+from servicebot_cli.simulate.controllers.classic_drive import WORLD, ClassicDrive, odometry_source
 from tests.conftest import REPO
 
 README = re.sub(r"\s+", " ", (REPO / "README.md").read_text())
 
 
 def test_the_readme_says_a_classic_plugins_default_odometry_is_the_true_pose():
-    assert ClassicDrive().world_odometry  # the plugin's default, WORLD
-    assert world_source(None, ros1=False) and world_source(None, ros1=True)
+    assert ClassicDrive().odometry_source == WORLD  # the plugin's default
+    assert odometry_source(None, ros1=False) == odometry_source(None, ros1=True) == WORLD
     assert "Odometry is dead reckoning" not in README
     assert ("Classic `gazebo_ros_diff_drive` with its default odometry source, WORLD "
             "(`<odometry_source>` 1, ROS 1 `<odometrySource>world`), publishes the true pose"

@@ -31,6 +31,8 @@ import numpy.typing as npt
 FloatArray = npt.NDArray[np.float64]
 REACHED_M_S = 0.01
 """A wheel this close to its wanted surface speed [m/s] gets it exactly (the plugin's 0.01)."""
+ENCODER, WORLD, NEITHER = "encoder", "world", "neither"
+"""The odometry sources of :func:`odometry_source`."""
 
 
 @dataclass(frozen=True)
@@ -38,9 +40,8 @@ class ClassicDrive:
     """What the Classic diff-drive plugin does beyond diff_drive_controller's parameters.
 
     Attributes:
-        world_odometry: Odometry is the ground truth (``odometry_source`` WORLD).
-        updates_odometry: False when ``odometry_source`` is neither ENCODER nor WORLD: the
-            plugin publishes its odometry at the origin and at rest.
+        odometry_source: :data:`ENCODER`, :data:`WORLD`, or :data:`NEITHER` (a ROS 2
+            ``odometry_source`` that is neither: the plugin never updates its odometry).
         wheel_acceleration_m_s2: Bound on each wheel's surface acceleration; 0: none.
         wheel_torque_nm: The motors' force cap (reported only: no dynamics here).
         update_rate_hz: How often the plugin commands the wheels; 0: every step.
@@ -48,38 +49,29 @@ class ClassicDrive:
             clock advances by whole periods, after more than one has passed).
     """
 
-    world_odometry: bool = True
-    updates_odometry: bool = True
+    odometry_source: str = WORLD
     wheel_acceleration_m_s2: float = 0.0
     wheel_torque_nm: float = 5.0
     update_rate_hz: float = 100.0
     ros1: bool = False
 
 
-def updates_odometry(text: str | None, *, ros1: bool) -> bool:
-    """Whether ``<odometry_source>`` selects ENCODER (0) or WORLD (1), the two the plugin updates.
+def odometry_source(text: str | None, *, ros1: bool) -> str:
+    """What ``<odometry_source>`` (ROS 1: ``<odometrySource>``) text selects.
 
-    ROS 2 casts any other integer to its source enum and then updates neither: its odometry
-    stays the message it started as, at the origin and at rest. ROS 1 maps unknown text to
-    WORLD (:func:`world_source`).
+    ROS 2 reads an integer, 0 ENCODER and 1 WORLD (also when sdformat cannot read it as an
+    integer: the default, 1); it casts any other integer to its source enum and then updates
+    neither, so its odometry stays the message it started as, at the origin and at rest.
+    ROS 1 reads ``encoder``; any other text keeps the default, WORLD.
     """
-    if ros1:
-        return True
-    try:
-        return int((text or "1").strip() or "1") in (0, 1)
-    except ValueError:
-        return True  # sdformat cannot read it as an int: the default, 1
-
-
-def world_source(text: str | None, *, ros1: bool) -> bool:
-    """Whether ``<odometry_source>`` (ROS 1: ``<odometrySource>``) text selects WORLD."""
     value = (text or "").strip()
     if ros1:
-        return value != "encoder"  # "world", and any other text, keeps the default WORLD
+        return ENCODER if value == "encoder" else WORLD
     try:
-        return int(value) != 0 if value else True
+        number = int(value) if value else 1
     except ValueError:
-        return True  # sdformat cannot read it as an int: the default, 1
+        return WORLD
+    return ENCODER if number == 0 else WORLD if number == 1 else NEITHER
 
 
 class WheelRamp:

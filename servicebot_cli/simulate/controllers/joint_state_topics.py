@@ -96,7 +96,7 @@ def _publisher_joints(robot: RobotDescription, plugin: Plugin) -> tuple[tuple[st
     Its joints in the order written, those the model has (it skips the others; Gazebo merges
     away fixed joints); its rate 100 Hz by default.
     """
-    movable = {j.name for j in robot.joints if j.type != "fixed"}
+    movable = {j.name for j in robot.movable_joints}
     names = tuple(n for n in params_all(plugin.params, "joint_name") if n in movable)
     rate = parse_float(param(plugin.params, "update_rate"))
     return names, 100.0 if rate is None else rate

@@ -43,11 +43,7 @@ from servicebot_cli.description.model_plugins import (
     ros1_plugin,
     wheel_tf_joints,
 )
-from servicebot_cli.simulate.controllers.classic_drive import (
-    ClassicDrive,
-    updates_odometry,
-    world_source,
-)
+from servicebot_cli.simulate.controllers.classic_drive import ClassicDrive, odometry_source
 from servicebot_cli.simulate.controllers.config import (
     ControllersFile,
     ControllersFileError,
@@ -125,7 +121,7 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
 
 def _wheel_tf(robot: RobotDescription, plugin: Plugin) -> tuple[str, ...]:
     """The plugin's wheel joints on /tf; none when one is not a movable joint (it fails to load)."""
-    movable = {j.name for j in robot.joints if j.type != "fixed"}
+    movable = {j.name for j in robot.movable_joints}
     joints = wheel_tf_joints(plugin)
     return joints if movable.issuperset(joints) else ()
 
@@ -135,8 +131,7 @@ def _classic_drive(plugin: Plugin, where: str, rate_hz: float) -> ClassicDrive:
     ros1 = ros1_plugin(plugin)
     source = param(plugin.params, "odometrySource" if ros1 else "odometry_source")
     return ClassicDrive(
-        world_odometry=world_source(source, ros1=ros1),
-        updates_odometry=updates_odometry(source, ros1=ros1),
+        odometry_source=odometry_source(source, ros1=ros1),
         wheel_acceleration_m_s2=_number(
             plugin, where, "wheelAcceleration" if ros1 else "max_wheel_acceleration",
             default=0.0),
