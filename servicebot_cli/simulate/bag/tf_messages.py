@@ -95,9 +95,15 @@ class _MovingJoint:
     @classmethod
     def of(cls, joint: Joint) -> _MovingJoint:
         """The constants of URDF joint ``joint``."""
+        return cls._placed(joint, joint.parent or "", np.array(joint.origin.xyz, float),
+                           rpy_matrix(*joint.origin.rpy))
+
+    @classmethod
+    def _placed(cls, joint: Joint, parent: str, offset_m: FloatArray,
+                rotation: FloatArray) -> _MovingJoint:
+        """``joint`` moving its child from ``parent``: its origin there (offset, rotation)."""
         axis = np.array(joint.axis, float) / np.linalg.norm(joint.axis)
-        rotation = rpy_matrix(*joint.origin.rpy)
-        return cls((joint.parent or "", joint.child or ""), np.array(joint.origin.xyz), axis,
+        return cls((parent, joint.child or ""), offset_m, axis,
                    rotation @ axis if joint.type == "prismatic" else None,
                    quaternion_from_matrix(rotation))
 
@@ -116,10 +122,7 @@ class _MovingJoint:
             above = rpy_matrix(*up.origin.rpy)
             offset, rotation = above @ offset + np.array(up.origin.xyz, float), above @ rotation
             parent = up.parent or ""
-        axis = np.array(joint.axis, float) / np.linalg.norm(joint.axis)
-        return cls((parent, joint.child or ""), offset, axis,
-                   rotation @ axis if joint.type == "prismatic" else None,
-                   quaternion_from_matrix(rotation))
+        return cls._placed(joint, parent, offset, rotation)
 
 
 class JointTransforms:
@@ -155,7 +158,6 @@ def _joint_messages(moving: list[_MovingJoint], times_s: FloatArray, q: FloatArr
                         [quaternions[:, i] for i in range(len(moving))])
 
 
-@dataclass(frozen=True)
 class WheelTransform:
     """A drive wheel's parent -> wheel transform, as Gazebo's diff-drive plugin sends it.
 
@@ -164,22 +166,30 @@ class WheelTransform:
     simulated time: from the joint's parent link in Gazebo's model (fixed joints merged:
     :meth:`_MovingJoint.in_gazebo`) to its child link, the wheel's pose in the model's frame
     at its angle then (the same as from the parent for a wheel on the root link; the
-    simulator's wheels are).
+    simulator's wheels are). The joint's constants and its wheel are found at the first
+    piece, for every piece of the run.
     """
 
-    joint: str
+    def __init__(self, joint: str) -> None:
+        self.joint = joint
+        self.moving: _MovingJoint | None = None
+        self.side: tuple[int, int] | None = None  # its wheel angles' column and sign
 
     def __call__(self, result: SimResult) -> ByteRows:
         """The piece's messages, one an odometry time."""
+        if self.moving is None:
+            robot = result.body.robot
+            self.moving = _MovingJoint.in_gazebo(robot, robot.joint(self.joint))
+            wheel = next((w for w in result.body.geometry.wheels if w.joint == self.joint),
+                         None)
+            self.side = None if wheel is None else \
+                (0 if wheel.side == "left" else 1, wheel.axis_sign)
         times = result.odometry.times_s
-        wheel = next((w for w in result.body.geometry.wheels if w.joint == self.joint), None)
-        angles = np.zeros(len(result.wheel_angles_rad)) if wheel is None else \
-            wheel.axis_sign * result.wheel_angles_rad[:, 0 if wheel.side == "left" else 1]
+        angles = np.zeros(len(result.wheel_angles_rad)) if self.side is None else \
+            self.side[1] * result.wheel_angles_rad[:, self.side[0]]
         sampled = joint_states.at_times((self.joint,), angles[:, None], result.plan.dt_s, times,
                                         result.first_tick)
-        robot = result.body.robot
-        return _joint_messages([_MovingJoint.in_gazebo(robot, robot.joint(self.joint))], times,
-                               sampled.positions)
+        return _joint_messages([self.moving], times, sampled.positions)
 
 
 def tf_static(result: SimResult) -> ByteRows:
