@@ -25,11 +25,21 @@ NOT_URDF_SUFFIXES = (".srdf.xacro",)
 SKIPPED_DIRS = {"build", "install", "log", "node_modules", "__pycache__", "site-packages"}
 _ROBOT_TAG = re.compile(rb"<robot\b[^>]*>", re.DOTALL)
 _XACRO_ROOT = re.compile(rb"<[\w.:-]+\b[^>]*\bxmlns:xacro\s*=", re.DOTALL)
-_MACRO_BLOCK = re.compile(rb"<xacro:macro\b.*?</xacro:macro>", re.DOTALL)
+MACRO_BLOCK = re.compile(rb"<xacro:macro\b.*?</xacro:macro>", re.DOTALL)
+"""A ``<xacro:macro>`` definition, to leave out what only runs where the macro is called."""
 _CONTENT = re.compile(rb"<(?:link|joint|xacro:(?!include\b|property\b|arg\b|macro\b)[\w.-]+)\b")
 _INCLUDE = re.compile(rb"<xacro:include\b[^>]*?\bfilename\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
 _FIND = re.compile(r"^\$\(find\s+([^)\s]+)\s*\)/*(.*)$")
 _HEAD_BYTES = 1 << 20
+
+
+def head_without_comments(path: Path) -> bytes | None:
+    """The first MiB of ``path`` with its XML comments removed; None: it cannot be read."""
+    try:
+        with path.open("rb") as handle:
+            return without_comments(handle.read(_HEAD_BYTES))
+    except OSError:
+        return None
 
 
 def is_robot_file(path: Path) -> bool:
@@ -49,10 +59,8 @@ def is_fragment(path: Path) -> bool:
     ``common_properties.urdf.xacro``), and, when it defines no macro, no include either
     (``robot.urdf.xacro`` may only include its parts).
     """
-    try:
-        with path.open("rb") as handle:
-            head = without_comments(handle.read(_HEAD_BYTES))
-    except OSError:
+    head = head_without_comments(path)
+    if head is None:
         return False  # reading it again will report the problem
     match = _ROBOT_TAG.search(head)
     xacro = is_xacro_name(path)
@@ -62,7 +70,7 @@ def is_fragment(path: Path) -> bool:
         return xacro or b"<link" not in head or b"<xacro:" in head
     if not xacro:
         return False
-    outside = _MACRO_BLOCK.sub(b"", head)
+    outside = MACRO_BLOCK.sub(b"", head)
     if _CONTENT.search(outside) is not None:
         return False
     return outside != head or _INCLUDE.search(head) is None
@@ -170,10 +178,8 @@ def _include_targets(path: Path) -> list[str]:
     """The filenames of the ``<xacro:include>`` elements of a xacro file (comments removed)."""
     if not is_xacro_name(path):
         return []
-    try:
-        with path.open("rb") as handle:
-            text = without_comments(handle.read(_HEAD_BYTES))
-    except OSError:
+    text = head_without_comments(path)
+    if text is None:
         return []
     targets = ((double or single).decode("utf-8", "replace").strip()
                for double, single in _INCLUDE.findall(text))

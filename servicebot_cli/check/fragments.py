@@ -33,11 +33,9 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
-_MACRO_BLOCK = re.compile(rb"<xacro:macro\b.*?</xacro:macro>", re.DOTALL)
 _OWN_CONTENT = re.compile(rb"<(?:link|joint)\b")
 _MACRO_CALL = re.compile(rb"<xacro:(?!include\b|property\b|arg\b|macro\b|if\b|unless\b)[\w.-]+\b")
 _ROOT_FRAMES = {"world", "map", "odom"}
-_HEAD_BYTES = 1 << 20
 
 
 def external_parent(robot: RobotDescription) -> str | None:
@@ -73,13 +71,11 @@ def part_evidence(path: Path, parent: str) -> str | None:
 
 def _only_macro_calls(path: Path, parent: str) -> bool:
     """Whether ``path`` holds only macro calls and never writes ``parent`` itself."""
-    from servicebot_cli.description.loader import without_comments
+    from servicebot_cli.check import files
 
-    try:
-        with path.open("rb") as handle:
-            text = without_comments(handle.read(_HEAD_BYTES))
-    except OSError:
+    text = files.head_without_comments(path)
+    if text is None:
         return False
-    outside = _MACRO_BLOCK.sub(b"", text)
+    outside = files.MACRO_BLOCK.sub(b"", text)
     return (_OWN_CONTENT.search(outside) is None and _MACRO_CALL.search(outside) is not None
             and parent.encode() not in text)
