@@ -108,20 +108,21 @@ def run(request: CheckRequest) -> CheckResult:
     settings = settings_of(request.settings)
     if not isinstance(request.targets, UrdfTargets):
         return CheckResult(tuple(_check_controllers(request.targets, settings)), settings.strict)
-    includes_only: list[tuple[str, int]] = []
-    reports = _check_urdfs(_sources(request.targets, includes_only), request.targets, settings)
-    return CheckResult(tuple(reports), settings.strict, tuple(includes_only))
+    sources, includes_only = _sources(request.targets)
+    reports = _check_urdfs(sources, request.targets, settings)
+    return CheckResult(tuple(reports), settings.strict, includes_only)
 
 
-def _sources(targets: UrdfTargets,
-             includes_only: list[tuple[str, int]]) -> list[tuple[RobotSource, bool]]:
+def _sources(targets: UrdfTargets) -> tuple[list[tuple[RobotSource, bool]],
+                                            tuple[tuple[str, int], ...]]:
     """Each source to check, and whether the user named it (else it was found in a directory).
 
-    A named directory that holds only xacro includes is added to ``includes_only``.
+    Also each named directory that holds only xacro includes, with how many.
     """
     if not targets.paths:
-        return [(targets.default or RobotSource.bundled(), True)]
+        return [(targets.default or RobotSource.bundled(), True)], ()
     found: list[tuple[RobotSource, bool]] = []
+    includes_only: list[tuple[str, int]] = []
     for name in targets.paths:
         path = Path(name)
         if not path.is_dir():
@@ -137,7 +138,7 @@ def _sources(targets: UrdfTargets,
         for file in inside:
             args = targets.xacro_args if is_xacro_name(file) else ()
             found.append((RobotSource(file, str(file), args, targets.packages), False))
-    return found
+    return found, tuple(includes_only)
 
 
 def _check_urdfs(every: list[tuple[RobotSource, bool]], targets: UrdfTargets,
