@@ -121,7 +121,8 @@ def read_controllers_file(path: Path | tuple[Path, ...] | None) -> ControllersFi
     label = None if len(paths) == 1 else " + ".join(str(p) for p in paths)
     nodes = node_parameters(document)
     manager = nodes.get("controller_manager", {})
-    name = next((n for n, kind in controller_types(nodes).items() if kind == DIFF_DRIVE), None)
+    types = controller_types(nodes)
+    name = next((n for n, kind in types.items() if kind == DIFF_DRIVE), None)
     params = _flat(nodes.get(name, {})) if name else {}
     values: dict[str, Any] = {}
     if "update_rate" in manager:
@@ -143,17 +144,18 @@ def read_controllers_file(path: Path | tuple[Path, ...] | None) -> ControllersFi
     return ControllersFile(where, values, name, source=label, publishes_odometry=bool(name),
                            odom_tf=bool(name) and params.get("enable_odom_tf") is not False,
                            odom_frame=odom_frame, base_frame=base_frame,
-                           joint_state_topics=_broadcaster_topics(nodes))
+                           joint_state_topics=_broadcaster_topics(nodes, types))
 
 
-def _broadcaster_topics(nodes: Mapping[str, Any]) -> tuple[str, ...]:
+def _broadcaster_topics(nodes: Mapping[str, Any],
+                        types: Mapping[str, str]) -> tuple[str, ...]:
     """Where each joint_state_broadcaster publishes: ``/joint_states``, else ``~/joint_states``.
 
     ``~/`` (the controller's namespace, at the root here) with ``use_local_topics: true``.
     """
     return tuple(f"/{name}/joint_states" if _flat(nodes.get(name, {})).get("use_local_topics")
                  is True else "/joint_states"
-                 for name, kind in controller_types(dict(nodes)).items()
+                 for name, kind in types.items()
                  if kind == JOINT_STATE_BROADCASTER)
 
 
