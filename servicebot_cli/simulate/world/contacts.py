@@ -44,19 +44,42 @@ class Obstacle:
 
     Attributes:
         name: How events name it (``wall 1``, ``mesh 2``).
-        geometry: Its Coal collision geometry.
-        transform: Its Coal pose in the world.
         kind: ``box``, ``cylinder`` or ``mesh``.
         center_m, rotation, half_m: The solid (for a mesh: its axis-aligned bounding box).
+        mesh: A mesh obstacle's triangles, placed in the world.
     """
 
     name: str
-    geometry: object
-    transform: object
     kind: str
     center_m: FloatArray
     rotation: FloatArray
     half_m: FloatArray
+    mesh: Mesh | None = None
+
+    @functools.cached_property
+    def geometry(self) -> object:
+        """Its Coal collision geometry, made when a test first needs it.
+
+        Most runs need none: the bounds clear every pair, and a process that tests no pair
+        never imports Coal.
+        """
+        import coal  # ships no type information: see pyproject's mypy overrides
+
+        if self.mesh is not None:
+            return _bvh(coal, np.asarray(self.mesh.vertices, dtype=np.float64),
+                        np.asarray(self.mesh.faces, dtype=np.int64))
+        if self.kind == "box":
+            return coal.Box(*(2 * self.half_m))
+        return coal.Cylinder(float(self.half_m[0]), 2 * float(self.half_m[2]))
+
+    @functools.cached_property
+    def transform(self) -> object:
+        """Its Coal pose in the world (a mesh's triangles are placed already)."""
+        import coal
+
+        if self.mesh is not None:
+            return coal.Transform3s()
+        return coal.Transform3s(self.rotation, self.center_m)
 
     def point_distance_xyz(self, points: list[FloatArray]) -> FloatArray:
         """Distance from points, given as x, y and z arrays of one shape, to the obstacle.
@@ -78,22 +101,14 @@ class Obstacle:
 
 
 def obstacles(solids: Sequence[Solid], meshes: Sequence[Mesh] = ()) -> list[Obstacle]:
-    """Coal objects for the world's solids and placed meshes (trimesh), in that order."""
-    import coal  # ships no type information: see pyproject's mypy overrides
-
-    out = []
-    for solid in solids:
-        geometry = (coal.Box(*(2 * solid.half_m)) if solid.kind == "box"
-                    else coal.Cylinder(float(solid.half_m[0]), 2 * float(solid.half_m[2])))
-        out.append(Obstacle(solid.name, geometry, coal.Transform3s(solid.rotation,
-                                                                   solid.center_m),
-                            solid.kind, solid.center_m, solid.rotation, solid.half_m))
+    """The world's solids and placed meshes (trimesh), in that order."""
+    out = [Obstacle(solid.name, solid.kind, solid.center_m, solid.rotation, solid.half_m)
+           for solid in solids]
     for i, mesh in enumerate(meshes, 1):
         vertices = np.asarray(mesh.vertices, dtype=np.float64)
-        model = _bvh(coal, vertices, np.asarray(mesh.faces, dtype=np.int64))
         low, high = vertices.min(axis=0), vertices.max(axis=0)
-        out.append(Obstacle(f"mesh {i}", model, coal.Transform3s(), "mesh", (low + high) / 2,
-                            np.eye(3), (high - low) / 2))
+        out.append(Obstacle(f"mesh {i}", "mesh", (low + high) / 2, np.eye(3), (high - low) / 2,
+                            mesh))
     return out
 
 
@@ -220,10 +235,14 @@ class Tester:
     def __init__(self, shape: RobotShape, world: Sequence[Obstacle]) -> None:
         self.shape = shape
         self.world = list(world)
-        self.geometries = [part_geometry(p) for p in shape.parts]
         self.radius_m = np.array([p.radius_m for p in shape.parts])
         self.half_m = np.array([p.half_m for p in shape.parts]).reshape(-1, 3)
         self.groups = part_groups(shape)
+
+    @functools.cached_property
+    def geometries(self) -> list[object]:
+        """Each part's Coal geometry, made when a test first needs one."""
+        return [part_geometry(p) for p in self.shape.parts]
 
     def near(self, posed: Placed, below: float) -> tuple[FloatArray, FloatArray]:
         """Each part's centre (P, S, 3), and which groups may hold a part bound below ``below``.
