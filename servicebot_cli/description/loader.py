@@ -155,8 +155,11 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
 _LOADED: dict[tuple[object, ...], RobotDescription] = {}
 
 
-def load(source: RobotSource) -> RobotDescription:
+def load(source: RobotSource, *, build_model: bool = True) -> RobotDescription:
     """The validated description for ``source``, loaded once per process.
+
+    Without ``build_model`` the description is checked up to Pinocchio, which the caller
+    then builds (``simulate`` in a forked process meanwhile).
 
     Raises:
         DescriptionError: Anything :func:`read_description` raises, a root that is not a
@@ -173,9 +176,11 @@ def load(source: RobotSource) -> RobotDescription:
             )
         if not robot.name:
             raise DescriptionError(f"{source.display}: <robot> has no name attribute; add one")
-        robot.model  # noqa: B018 -- building the model is the validation
         _LOADED[key] = robot
-    return _LOADED[key]
+    robot = _LOADED[key]
+    if build_model:
+        robot.model  # noqa: B018 -- building the model is the validation (once: it is kept)
+    return robot
 
 
 def _mtime(path: Path) -> float:

@@ -8,6 +8,7 @@ shapes of every link. Nothing is a constant of the bundled robot.
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Generic, TypeVar
@@ -31,6 +32,7 @@ from servicebot_cli.description.sensors import (
 from servicebot_cli.kinematics.drive_geometry import DriveGeometry, drive_geometry
 from servicebot_cli.kinematics.steering import refuse_steered_wheels
 from servicebot_cli.kinematics.transforms import pose_matrix
+from servicebot_cli.simulate.model_facts import FactsAhead, description_first
 from servicebot_cli.simulate.shape import RobotShape, robot_shape
 
 if TYPE_CHECKING:
@@ -98,37 +100,38 @@ class SimRobot:
 
 
 def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = None,
-              disabled_pairs: Sequence[tuple[str, str]] = ()) -> SimRobot:
+              disabled_pairs: Sequence[tuple[str, str]] = (),
+              facts: FactsAhead | None = None) -> SimRobot:
     """Read what the simulator needs from ``robot``.
 
     ``resolver`` finds ``package://`` collision meshes (default: the environment's and the
-    file's workspace); ``disabled_pairs`` are left out of the self-contact check.
+    file's workspace); ``disabled_pairs`` are left out of the self-contact check; ``facts``
+    brings the model's facts when they are being worked out already (else they are now).
 
     Raises:
-        DescriptionError: Not a differential drive (steered wheels too), or no collision
-            shape on the base.
+        DescriptionError: Pinocchio cannot build the description, not a differential drive
+            (steered wheels too), or no collision shape on the base.
     """
-    import pinocchio as pin
-
-    geometry = drive_geometry(robot)
-    refuse_steered_wheels(robot)
-    model = robot.model_with_base("planar")
-    space = JointSpace.of(model, robot.movable_joints)
-    data = model.createData()
-    pin.framesForwardKinematics(model, data, space.neutral())
-    wheels = {w.joint for w in geometry.wheels}
-    arm_joints = tuple(n for n in space.names if n not in wheels)
+    with FactsAhead(robot) if facts is None else contextlib.nullcontext(facts) as ahead:
+        with description_first(ahead):
+            geometry = drive_geometry(robot)
+            refuse_steered_wheels(robot)
+        space = ahead.result().joint_space
+        wheels = {w.joint for w in geometry.wheels}
+        arm_joints = tuple(n for n in space.names if n not in wheels)
+        with description_first(ahead):
+            shape = _shape(robot, arm_joints, resolver)
+        placements = ahead.result().placements
     height = float(np.mean([w.radius_m - w.position_m[2] for w in geometry.wheels]))
 
     def placement(link: str) -> FloatArray:
-        # Pinocchio's data.oMf[i] is transform_frame_to_world; the base sits at the origin.
-        return np.array(data.oMf[model.getFrameId(link, pin.BODY)].homogeneous)
+        return placements[link]
 
     return SimRobot(
         robot=robot, geometry=geometry, joint_space=space,
         arm_joints=arm_joints,
         base_height_m=height,
-        shape=_shape(robot, arm_joints, resolver),
+        shape=shape,
         lidar=_mount(robot, LIDAR_TYPES, _published_lidar, placement),
         imu=_mount(robot, ("imu",), _published_imu, placement) or _model_imu(robot, placement),
         camera=_mount(robot, CAMERA_TYPES, _published_camera, placement),

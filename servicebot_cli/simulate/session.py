@@ -27,6 +27,7 @@ if TYPE_CHECKING:
     from servicebot_cli.simulate.bag.ros_messages import Publisher
     from servicebot_cli.simulate.expectations import Expectation
     from servicebot_cli.simulate.files.live import LiveTrack
+    from servicebot_cli.simulate.model_facts import FactsAhead
     from servicebot_cli.simulate.simulator import SimResult
     from servicebot_cli.simulate.summary import Summary
 
@@ -125,10 +126,18 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
             written.
     """
     from servicebot_cli.description.loader import load
-    from servicebot_cli.simulate.scenario.definition import load_scenario
+    from servicebot_cli.simulate.model_facts import FactsAhead, description_first
 
-    robot = load(request.robot)
+    robot = load(request.robot, build_model=False)
+    with FactsAhead(robot) as facts, description_first(facts):
+        return _run_loaded(request, robot, facts, stderr, clock)
+
+
+def _run_loaded(request: SimulateRequest, robot: RobotDescription, facts: FactsAhead,
+                stderr: TextIO | None, clock: Callable[[], float]) -> SimulateReport:
+    """:func:`run` once the robot is read, its model's ``facts`` being worked out."""
     from servicebot_cli.kinematics.srdf import robot_disabled_pairs
+    from servicebot_cli.simulate.scenario.definition import load_scenario
 
     disabled = robot_disabled_pairs(request.srdf, robot)
     scenario = with_overrides(load_scenario(request.scenario_file), request.overrides)
@@ -148,7 +157,7 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
                            clock=clock, controllers=request.overrides.controllers_file,
                            live=request.live_window, resolver=request.robot.resolver(),
                            disabled_pairs=disabled,
-                           check_points=not request.allow_collisions)
+                           check_points=not request.allow_collisions, facts=facts)
     unmet = tuple((e, e.value(report.summary)) for e in request.expectations
                   if not e.holds(report.summary))
     return dataclasses.replace(report, unmet=unmet, notes=(*notes, *report.notes))
@@ -206,7 +215,8 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
                   keep_run: bool = False, live: bool = False,
                   resolver: PackageResolver | None = None,
                   disabled_pairs: tuple[tuple[str, str], ...] = (),
-                  check_points: bool = False) -> SimulateReport:
+                  check_points: bool = False,
+                  facts: FactsAhead | None = None) -> SimulateReport:
     """Run ``scenario`` on a loaded robot and write ``outputs``; the wall time excludes loading.
 
     The controller's parameters come from the controllers file (``controllers``, else the
@@ -215,7 +225,8 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
     one piece kept in the report with ``keep_run``; the outputs are the same bytes either way.
     ``live`` gathers the live window's track as the run goes. ``resolver`` finds the robot's
     collision meshes; ``disabled_pairs`` are never checked for self contact; with
-    ``check_points`` a trajectory point in collision is refused before the run.
+    ``check_points`` a trajectory point in collision is refused before the run. ``facts``
+    brings the robot's model facts when they are being worked out already.
 
     Raises:
         ServicebotError: Bad scenario for this robot, an unreadable controllers file, a
@@ -240,7 +251,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
 
     _load_modules(outputs, camera_images=scenario.camera.enabled)
     start = clock()
-    body = sim_robot(robot, resolver=resolver, disabled_pairs=disabled_pairs)
+    body = sim_robot(robot, resolver=resolver, disabled_pairs=disabled_pairs, facts=facts)
     if check_points:
         from servicebot_cli.simulate.scenario.world_check import check_arm_points
 

@@ -14,6 +14,7 @@ from typing import TypedDict
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.kinematics.transforms import planar_matrix
 from servicebot_cli.simulate.bag.ros_messages import Publisher
 from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.simulator import SimResult
@@ -210,26 +211,23 @@ def _collision(contact: Contact) -> Collision:
 def end_effector(result: SimResult, joint_positions: FloatArray | None) -> EndEffector | None:
     """World position of the arm's last frame in the final configuration of the whole robot.
 
-    One Pinocchio configuration holds the planar base (x, y, cos, sin of yaw, from the last
-    piece ``result``), every wheel and every arm joint (the last joint state published, in
-    URDF order; all zero when none was).
+    The base's pose is the last piece's (``result``); the arm joints are at the last joint
+    state published (``joint_positions``, URDF order; all zero when none was). The frame is
+    placed by the robot's shape, as every link the run poses (the same chain as Pinocchio's
+    forward kinematics: a test holds them together).
     """
-    import pinocchio as pin
-
     body = result.body
     tip = _arm_tip(body)
     if tip is None:
         return None
-    model, space = body.model, body.joint_space
-    q = space.to_q(joint_positions if joint_positions is not None
-                   else np.zeros(len(space.names)))
-    yaw = result.truth.yaw_rad[-1]
-    q[:4] = (result.truth.x_m[-1], result.truth.y_m[-1], math.cos(yaw), math.sin(yaw))
-    data = model.createData()
-    pin.framesForwardKinematics(model, data, q)
-    # Pinocchio's data.oMf[i] is transform_frame_to_world; the floor is base_height_m below.
-    position = np.array(data.oMf[model.getFrameId(tip, pin.BODY)].translation)
-    position[2] += body.base_height_m
+    space = body.joint_space
+    values = (joint_positions if joint_positions is not None
+              else np.zeros(len(space.names)))
+    arm = np.array([[values[space.names.index(name)] for name in body.shape.joints]])
+    tip_to_base = body.shape.link_to_base(arm, tip)[0]
+    base_to_world = planar_matrix(result.truth.x_m[-1], result.truth.y_m[-1],
+                                  result.truth.yaw_rad[-1], body.base_height_m)
+    position = (base_to_world @ tip_to_base)[:3, 3]
     return {"frame": tip, "position_m": position.tolist()}
 
 

@@ -256,9 +256,11 @@ def _files(root: Path) -> dict[str, bytes]:
             if p.is_file()}
 
 
-def _wait_for_worker(process: subprocess.Popen[bytes]) -> int:
+def _wait_for_worker(process: subprocess.Popen[bytes], cwd: Path) -> int:
+    """The run's worker: its child once the outputs are begun in ``cwd`` (the process that
+    builds the model ahead is gone by then)."""
     deadline = time.monotonic() + 120
-    while not (found := children(process.pid)):
+    while not (any(cwd.iterdir()) and (found := children(process.pid))):
         assert process.poll() is None, "the run ended before its worker was seen"
         assert time.monotonic() < deadline, "no worker process came"
         time.sleep(0.002)
@@ -291,7 +293,7 @@ def test_on_one_core_the_run_writes_the_same_bytes_as_with_its_worker(tmp_path):
 @pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads /proc")
 def test_a_run_whose_worker_is_killed_fails_and_leaves_nothing(tmp_path):
     process = _simulate(tmp_path, "--duration-s", "3600", "--bag", "B", "--out", "O")
-    child = _wait_for_worker(process)
+    child = _wait_for_worker(process, tmp_path)
     os.kill(child, signal.SIGKILL)
     _, stderr = process.communicate(timeout=120)
     assert process.returncode == 1, stderr.decode()
@@ -308,7 +310,7 @@ def test_a_run_whose_worker_is_killed_fails_and_leaves_nothing(tmp_path):
 def test_a_run_ended_by_a_signal_stops_its_worker(tmp_path, signum, code, group):
     """To the run alone (a CI job cancelled) or to its whole group (Ctrl-C, a closed terminal)."""
     process = _simulate(tmp_path, "--duration-s", "3600", "--bag", "B")
-    child = _wait_for_worker(process)
+    child = _wait_for_worker(process, tmp_path)
     if group:
         os.killpg(process.pid, signum)
     else:

@@ -1,0 +1,134 @@
+"""What the simulator reads from the Pinocchio model, worked out while the rest is loaded.
+
+The simulator needs three things of the shared model: that it builds (the validation every
+command's loading does), the joint space of the planar-base model, and where each link sits
+on the base in the neutral configuration (the sensors' mounts). Importing Pinocchio and
+building the models take about 60 ms, a seventh of a default run from a cold process. With a
+second core, a forked process (:mod:`~servicebot_cli.common.forked`) works them out while the
+parent reads the scenario, the controllers and the robot's shape; only arrays come back.
+Without one, they are worked out in-process when first asked for.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import sys
+from collections.abc import Iterator
+from dataclasses import dataclass
+from functools import partial
+from types import TracebackType
+from typing import TYPE_CHECKING
+
+import numpy as np
+import numpy.typing as npt
+
+from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.common.forked import Worker, second_core
+from servicebot_cli.description.joint_space import JointSpace
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.robot import RobotDescription
+
+FloatArray = npt.NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class ModelFacts:
+    """The model's facts the simulator uses.
+
+    Attributes:
+        joint_space: Movable joints of the planar-base model (one Pinocchio configuration).
+        placements: Each link's ``transform_link_to_base`` (4, 4) in the neutral
+            configuration, with the base at the origin.
+    """
+
+    joint_space: JointSpace
+    placements: dict[str, FloatArray]
+
+
+def model_facts(robot: RobotDescription) -> ModelFacts:
+    """Build ``robot``'s models and read the facts from them.
+
+    Raises:
+        DescriptionError: Pinocchio cannot build the description.
+    """
+    import pinocchio as pin
+
+    robot.model  # noqa: B018 -- the fixed-base model: loading's validation, its error first
+    model = robot.model_with_base("planar")
+    space = JointSpace.of(model, robot.movable_joints)
+    data = model.createData()
+    pin.framesForwardKinematics(model, data, space.neutral())
+    # Pinocchio's data.oMf[i] is transform_frame_to_world; the base sits at the origin.
+    placements = {frame.name: np.array(data.oMf[i].homogeneous)
+                  for i, frame in enumerate(model.frames) if frame.type == pin.BODY}
+    return ModelFacts(space, placements)
+
+
+class FactsAhead:
+    """:func:`model_facts` of a robot, begun now in a forked process when that saves time.
+
+    Forked (``fork`` None) only when Pinocchio is not imported yet (else building is quick)
+    and a second core is free. :meth:`result` gives the facts (or raises the description's
+    error, each time it is asked); :meth:`close` stops the process whatever happened.
+    """
+
+    def __init__(self, robot: RobotDescription, *, fork: bool | None = None) -> None:
+        forked = ("pinocchio" not in sys.modules and second_core()) if fork is None else fork
+        self._facts: ModelFacts | None = None
+        self._error: Exception | None = None
+        try:
+            self._worker: Worker[None, ModelFacts] = Worker(
+                partial(_job, robot), forked=forked, name="model-building")
+        except OSError:  # no process to be had: in-process, when asked
+            self._worker = Worker(partial(_job, robot), forked=False)
+        self._worker.submit(None)
+        self._worker.no_more_jobs()
+
+    def result(self) -> ModelFacts:
+        """The facts, waited for the first time.
+
+        Raises:
+            DescriptionError: Pinocchio cannot build the description.
+            WorkerEnded: The process was killed from outside.
+        """
+        if self._facts is None:
+            if self._error is not None:
+                raise self._error
+            try:
+                self._facts = self._worker.result()
+            except Exception as exc:  # the same error each time it is asked for
+                self._error = exc
+                raise
+            finally:
+                self._worker.close(finished=self._error is None)
+        return self._facts
+
+    def close(self) -> None:
+        """Stop the process if it still runs (an error elsewhere came first)."""
+        self._worker.close(finished=self._facts is not None or self._error is not None)
+
+    def __enter__(self) -> FactsAhead:
+        return self
+
+    def __exit__(self, kind: type[BaseException] | None, error: BaseException | None,
+                 traceback: TracebackType | None) -> None:
+        self.close()
+
+
+@contextlib.contextmanager
+def description_first(ahead: FactsAhead) -> Iterator[None]:
+    """A user's error raised inside comes after the description's own, if it has one.
+
+    Loading builds the model before anything else is read; so the model's error is the one
+    reported when both are wrong, whichever step finds its own error first.
+    """
+    try:
+        yield
+    except ServicebotError:
+        ahead.result()
+        raise
+
+
+def _job(robot: RobotDescription, _job: None) -> ModelFacts:
+    return model_facts(robot)

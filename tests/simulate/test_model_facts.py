@@ -1,0 +1,129 @@
+"""The model's facts ``simulate`` reads, worked out by a forked process meanwhile.
+
+The forked process must give the bits the in-process one gives, its error must be the one
+reported when the scenario is wrong too (as when the model is built first), and the
+command's own process must then never import Pinocchio. The end effector, placed by the
+robot's shape, must be where Pinocchio's forward kinematics puts it.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+
+import numpy as np
+import pinocchio as pin
+import pytest
+
+from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.common.forked import WorkerEnded, second_core
+from servicebot_cli.description.loader import RobotSource, load, read_description
+from servicebot_cli.simulate.model_facts import FactsAhead, model_facts
+from servicebot_cli.simulate.scenario.definition import load_scenario
+from servicebot_cli.simulate.session import Outputs, run_and_write
+from servicebot_cli.simulate.summary import _arm_tip
+from tests.check.helpers import fixture
+from tests.conftest import assert_one_line_error, run_servicebot
+from tests.processes import reaped
+
+REFUSED = fixture("SB701")  # a URDF Pinocchio refuses
+
+
+def test_forked_facts_are_the_in_process_bits():
+    robot = read_description(RobotSource.bundled())
+    ahead = FactsAhead(robot, fork=True)
+    pid = ahead._worker.pid
+    assert pid is not None
+    forked = ahead.result()
+    assert reaped(pid)
+    here = model_facts(read_description(RobotSource.bundled()))
+    assert forked.joint_space.names == here.joint_space.names
+    assert forked.joint_space.idx_q == here.joint_space.idx_q
+    assert np.array_equal(forked.joint_space.lower, here.joint_space.lower, equal_nan=True)
+    assert forked.placements.keys() == here.placements.keys()
+    assert "lidar_link" in forked.placements
+    for link, placement in here.placements.items():
+        assert np.array_equal(forked.placements[link], placement), link
+
+
+def test_a_refused_model_is_pinocchios_error_from_the_forked_process():
+    robot = read_description(RobotSource(REFUSED, REFUSED.name))
+    with pytest.raises(DescriptionError) as here:
+        model_facts(robot)
+    with FactsAhead(robot, fork=True) as ahead, pytest.raises(DescriptionError) as forked:
+        ahead.result()
+    assert str(forked.value) == str(here.value)
+    assert "not a valid URDF" in str(here.value)
+
+
+def test_a_stopped_worker_is_reaped():
+    ahead = FactsAhead(read_description(RobotSource.bundled()), fork=True)
+    pid = ahead._worker.pid
+    ahead.close()
+    assert pid is not None and reaped(pid)
+
+
+def test_the_model_error_comes_before_the_scenario_error(tmp_path):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("duration_s: -1\n")
+    for scenario in ([], ["-s", bad]):
+        result = run_servicebot("simulate", REFUSED, "--headless", *scenario)
+        assert_one_line_error(result, 2, "not a valid URDF")
+
+
+@pytest.mark.skipif(not second_core(), reason="one core: the facts are worked out in-process")
+def test_the_command_process_imports_neither_pinocchio_nor_coal(tmp_path):
+    # the built-in scenario's pieces go to a forked worker, and no contact needs Coal here
+    script = (
+        "import sys\n"
+        "from servicebot_cli.description.loader import RobotSource\n"
+        "from servicebot_cli.simulate.session import SimulateRequest, run\n"
+        "report = run(SimulateRequest(RobotSource.bundled()))\n"
+        "print(report.summary['end_effector']['frame'], "
+        "[m for m in ('pinocchio', 'coal') if m in sys.modules])\n"
+    )
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                          timeout=120, cwd=tmp_path, check=True)
+    assert done.stdout.split() == ["arm_tool_link", "[]"]
+
+
+def test_the_end_effector_is_where_pinocchio_puts_it():
+    robot = load(RobotSource.bundled())
+    scenario = load_scenario(None)
+    report = run_and_write(robot, scenario, seed=0, outputs=Outputs(), scenario_dir=".",
+                           keep_run=True)
+    result = report.result
+    assert result is not None
+    body = result.body
+    tip = _arm_tip(body)
+    effector = report.summary["end_effector"]
+    assert effector is not None and effector["frame"] == tip
+    positions = dict(zip(body.arm_joints, result.arm_positions_rad[-1], strict=True))
+    space = body.joint_space
+    q = space.to_q(np.array([positions.get(n, 0.0) for n in space.names]))
+    yaw = result.truth.yaw_rad[-1]
+    q[:4] = (result.truth.x_m[-1], result.truth.y_m[-1], np.cos(yaw), np.sin(yaw))
+    model = robot.model_with_base("planar")
+    data = model.createData()
+    pin.framesForwardKinematics(model, data, q)
+    expected = np.array(data.oMf[model.getFrameId(tip, pin.BODY)].translation)
+    expected[2] += body.base_height_m
+    assert np.allclose(effector["position_m"], expected, rtol=0, atol=1e-12)
+    assert np.linalg.norm(expected) > 0.3  # the arm's tip, not the base's origin
+
+
+def test_a_killed_worker_is_one_error_each_time_it_is_asked():
+    ahead = FactsAhead(read_description(RobotSource.bundled()), fork=True)
+    pid = ahead._worker.pid
+    assert pid is not None
+    os.kill(pid, signal.SIGKILL)  # long before Pinocchio is imported
+    errors = []
+    for _ in range(2):
+        with pytest.raises(WorkerEnded) as caught:
+            ahead.result()
+        errors.append(caught.value)
+    assert errors[0] is errors[1] and "model-building process" in str(errors[0])
+    ahead.close()
+    assert reaped(pid)
