@@ -176,11 +176,35 @@ def load(source: RobotSource, *, build_model: bool = True) -> RobotDescription:
             )
         if not robot.name:
             raise DescriptionError(f"{source.display}: <robot> has no name attribute; add one")
+        _refuse_second_parents(robot)
         _LOADED[key] = robot
     robot = _LOADED[key]
     if build_model:
         robot.model  # noqa: B018 -- building the model is the validation (once: it is kept)
     return robot
+
+
+def _refuse_second_parents(robot: RobotDescription) -> None:
+    """Refuse a link that is the child of two joints: a loop, or a second parent.
+
+    urdfdom leaves the check to its users: Pinocchio builds such a robot with one of the
+    joints silently gone, and crashes on a loop.
+
+    Raises:
+        DescriptionError: The first such link.
+    """
+    links = {link.name for link in robot.links}
+    first: dict[str, str] = {}
+    for joint in robot.joints:
+        child = joint.child
+        if not child or child not in links or joint.parent not in links:
+            continue  # a missing link is urdfdom's own error
+        if child in first:
+            raise DescriptionError(
+                f"{robot.display}: not a valid URDF: link '{child}' is the child of joints "
+                f"'{first[child]}' and '{joint.name}'; a URDF is a tree, each link with one "
+                f"parent joint (run 'servicebot check {robot.display}' for details)")
+        first[child] = joint.name
 
 
 def _mtime(path: Path) -> float:

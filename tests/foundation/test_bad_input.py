@@ -12,7 +12,7 @@ import pytest
 
 from servicebot_cli.common.errors import UnsafeXmlError, XmlError
 from servicebot_cli.description.safe_xml import parse_xml
-from tests.conftest import SIM_URDF, XACRO_SOURCE, assert_one_line_error
+from tests.conftest import SIM_URDF, XACRO_SOURCE, assert_one_line_error, run_servicebot
 
 COMMANDS = ["check", "inspect", "fk", "ik", "simulate", "drive", "emulate", "expand"]
 # check reports a malformed file as a finding (exit 1); every other command refuses it (exit 2)
@@ -181,3 +181,19 @@ def test_missing_option_value_points_at_the_subcommand_help(run):
 def test_unknown_option_is_one_line(run):
     assert_one_line_error(run("fk", "--no-such-option"), 2, "No such option",
                           "servicebot fk --help")
+
+
+TREE_FIXTURES = Path(__file__).parents[1] / "check" / "fixtures"
+
+
+@pytest.mark.parametrize("command", [c for c in LOADING_COMMANDS if c != "expand"])
+@pytest.mark.parametrize(("name", "link", "joints"), [
+    ("SB106_two_parents.urdf", "tool", "'tool_on_base' and 'tool_on_arm'"),
+    ("SB107_kinematic_loop.urdf", "arm", "'shoulder' and 'closure'")])
+def test_a_link_with_two_parent_joints_is_refused_before_pinocchio(command, name, link, joints):
+    """Pinocchio drops one of the joints silently, and a loop crashes it (a real process: a
+    crash would end the test run otherwise)."""
+    result = run_servicebot(command, TREE_FIXTURES / name, *NEEDS.get(command, ()),
+                            *(["--headless"] if command == "simulate" else []))
+    assert_one_line_error(result, 2, f"link '{link}' is the child of joints {joints}",
+                          "a URDF is a tree")
