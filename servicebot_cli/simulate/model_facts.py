@@ -1,12 +1,13 @@
 """What the simulator reads from the Pinocchio model, worked out while the rest is loaded.
 
 The simulator needs three things of the shared model: that it builds (the validation every
-command's loading does), the joint space of the planar-base model, and where each link sits
-on the base in the neutral configuration (the sensors' mounts). Importing Pinocchio and
-building the models take about 60 ms, a seventh of a default run from a cold process. With a
-second core, a forked process (:mod:`~servicebot_cli.common.forked`) works them out while the
-parent reads the scenario, the controllers and the robot's shape; only arrays come back.
-Without one, they are worked out in-process when first asked for.
+command's loading does, here with the planar base the simulator uses), the joint space of
+that model, and where each link sits on the base in the neutral configuration (the sensors'
+mounts). Importing Pinocchio and building the model take about 60 ms, a seventh of a default
+run from a cold process. With a second core, a forked process
+(:mod:`~servicebot_cli.common.forked`) works them out while the parent reads the scenario,
+the controllers and the robot's shape; only arrays come back. Without one, they are worked
+out in-process when first asked for.
 """
 
 from __future__ import annotations
@@ -47,15 +48,14 @@ class ModelFacts:
 
 
 def model_facts(robot: RobotDescription) -> ModelFacts:
-    """Build ``robot``'s models and read the facts from them.
+    """Build ``robot``'s planar-base model and read the facts from it.
 
     Raises:
         DescriptionError: Pinocchio cannot build the description.
     """
     import pinocchio as pin
 
-    robot.model  # noqa: B018 -- the fixed-base model: loading's validation, its error first
-    model = robot.model_with_base("planar")
+    model = robot.model_with_base("planar")  # refused as the fixed-base one of loading is
     space = JointSpace.of(model, robot.movable_joints)
     data = model.createData()
     pin.framesForwardKinematics(model, data, space.neutral())
