@@ -65,11 +65,14 @@ class Worker(Generic[J, R]):
             calls stays there: the caller's copy must not be used while the worker lives.
         forked: Do the jobs in a forked process (else in-process, when taken).
         name: What the process is, for the error when it ends early ("the NAME process").
+        prepare: Work the first job would do that needs no job (imports, caches), done by a
+            forked process as soon as it starts, while it waits for that job. Its errors
+            are left for the job to meet.
     """
 
     def __init__(self, function: Callable[[J], R], *, forked: bool,
-                 name: str = "worker") -> None:
-        self._function, self.name = function, name
+                 name: str = "worker", prepare: Callable[[], object] | None = None) -> None:
+        self._function, self.name, self._prepare = function, name, prepare
         self._waiting: list[J] = []  # in-process: the jobs whose results are not taken
         self.pid: int | None = None
         self._jobs: IO[bytes] | None = None
@@ -95,7 +98,7 @@ class Worker(Generic[J, R]):
                 try:
                     os.close(jobs_write)
                     os.close(results_read)
-                    _serve(self._function, jobs_read, results_write)
+                    _serve(self._function, jobs_read, results_write, self._prepare)
                     code = 0
                 finally:
                     os._exit(code)
@@ -213,12 +216,14 @@ def _widen(fd: int) -> None:
         return
 
 
-def _serve(function: Callable[[Any], Any], jobs_fd: int, results_fd: int) -> None:
+def _serve(function: Callable[[Any], Any], jobs_fd: int, results_fd: int,
+           prepare: Callable[[], object] | None = None) -> None:
     """The worker process: each job read, the function's result (or error) written back.
 
-    A thread reads the jobs and another writes the results, so that neither pipe waits on
-    the other process while this one works: the parent never waits to hand over a job,
-    and the next job is begun while the parent has not taken the last result yet.
+    ``prepare`` is done first, while the first job is on its way. A thread reads the jobs
+    and another writes the results, so that neither pipe waits on the other process while
+    this one works: the parent never waits to hand over a job, and the next job is begun
+    while the parent has not taken the last result yet.
     """
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     for ending in ENDING_SIGNALS:  # not the parent's handlers: it stops the worker
@@ -229,6 +234,11 @@ def _serve(function: Callable[[Any], Any], jobs_fd: int, results_fd: int) -> Non
     writer = threading.Thread(target=_write_results, args=(results_fd, results), daemon=True)
     writer.start()
     try:
+        if prepare is not None:
+            try:
+                prepare()
+            except Exception:  # noqa: BLE001,S110 -- the job meets it again, and says so
+                pass
         while (job := jobs.get()) is not _END:
             try:
                 answer: tuple[bool, Any] = (True, function(job[0]))

@@ -72,6 +72,14 @@ class PoseWork:
         self.clearance = clearance
         self.transforms = TransformMemo(shape)
 
+    def prepare(self) -> None:
+        """Make the Coal objects the clearance will measure with, before the first job."""
+        tester = self.clearance.tester
+        if tester.world:
+            for obstacle in tester.world:
+                _ = obstacle.geometry, obstacle.transform
+            _ = tester.geometries
+
     def __call__(self, job: PoseJob) -> FromPoses:
         """The piece's scans, its self contacts and the clearance record.
 

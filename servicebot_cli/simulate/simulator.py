@@ -135,7 +135,7 @@ def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[So
         _refuse_frames_beyond_memory(run.clocks["camera"].count * run.images.frame_bytes)
     firsts = range(0, run.ticks, step)
     poses = Worker(run.from_poses, forked=len(firsts) > 1 and second_core(),
-                   name="simulation's worker")
+                   name="simulation's worker", prepare=run.from_poses.prepare)
     # forked: a piece's pose work is done while the next pieces run, up to AHEAD of them
     # (one with camera frames, which are most of a piece's memory)
     ahead = 0 if poses.pid is None else 1 if run.images is not None else AHEAD

@@ -65,6 +65,39 @@ def test_an_in_process_worker_does_each_job_when_its_result_is_taken():
     worker.close(finished=True)
 
 
+class _Prepared:
+    """A function whose ``prepare`` leaves a mark the jobs read (or fails, if told to)."""
+
+    def __init__(self, fail: bool = False) -> None:
+        self.fail, self.mark = fail, None
+
+    def prepare(self) -> None:
+        if self.fail:
+            raise OSError("no cache to warm")
+        self.mark = os.getpid()
+
+    def __call__(self, job: int) -> tuple[int, int | None, int]:
+        return os.getpid(), self.mark, job + 1
+
+
+def test_a_forked_worker_prepares_in_its_own_process_before_the_first_job():
+    function = _Prepared()
+    work = Worker(function, forked=True, prepare=function.prepare)
+    work.submit(1)
+    pid, mark, value = work.result()
+    work.close(finished=True)
+    assert (pid, mark, value) == (pid, pid, 2) and pid != os.getpid()
+    assert function.mark is None  # the parent's copy is untouched
+
+
+def test_a_prepare_that_fails_leaves_the_jobs_to_run():
+    function = _Prepared(fail=True)
+    work = Worker(function, forked=True, prepare=function.prepare)
+    work.submit(1)
+    assert work.result()[1:] == (None, 2)
+    work.close(finished=True)
+
+
 def test_an_error_in_the_worker_is_raised_in_the_parent_and_the_worker_reaped():
     worker: Worker[int, tuple[int, int, int]] = Worker(_Counter(), forked=True)
     pid = worker.pid
