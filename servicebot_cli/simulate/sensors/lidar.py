@@ -49,11 +49,24 @@ class Scans:
     inclinations_rad: FloatArray | None = None
 
 
-def scan_angles(spec: LidarSpec) -> FloatArray:
-    """Bearing of each ray in the sensor frame [rad]."""
+def cast_problem(spec: LidarSpec) -> str | None:
+    """Why the simulator cannot cast ``spec``'s rays; None when it can."""
     if not spec.samples or spec.samples < 1 or spec.min_angle_rad is None \
             or spec.max_angle_rad is None:
-        raise DescriptionError("the LIDAR sensor needs <samples>, <min_angle> and <max_angle>")
+        return "it needs a whole <samples> of at least 1, <min_angle> and <max_angle>"
+    return None
+
+
+def scan_angles(spec: LidarSpec) -> FloatArray:
+    """Bearing of each ray in the sensor frame [rad].
+
+    Raises:
+        DescriptionError: :func:`cast_problem` has a problem with ``spec``.
+    """
+    problem = cast_problem(spec)
+    if problem is not None or not spec.samples or spec.min_angle_rad is None \
+            or spec.max_angle_rad is None:
+        raise DescriptionError(f"the ray sensor on {spec.frame}: {problem}")
     if spec.samples == 1:
         return np.array([spec.min_angle_rad])
     return np.linspace(spec.min_angle_rad, spec.max_angle_rad, spec.samples)

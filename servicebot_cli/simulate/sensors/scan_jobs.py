@@ -1,10 +1,11 @@
-"""The LIDAR's scans of a piece as a job: what they depend on, and the caster that keeps the noise.
+"""A ray sensor's scans of a piece as a job: what they depend on, the caster keeping the noise.
 
 A piece's scans depend only on its poses (the base's path, the arm at each scan) and on the
 range noise's generator, which carries on from piece to piece. :class:`ScanCaster` holds
-the generator and everything fixed for the run, so that it can cast the pieces' scans in
-another process (:mod:`servicebot_cli.simulate.pose_work`); cast in order, in whichever
-process, they give the same bits.
+one ray sensor's generator (a LIDAR's, a sonar's, a cliff sensor's) and everything fixed for
+the run, so that it can cast the pieces' scans in another process
+(:mod:`servicebot_cli.simulate.pose_work`); cast in order, in whichever process, they give
+the same bits.
 """
 
 from __future__ import annotations
