@@ -82,7 +82,9 @@ class PoseWork:
         """
         self.transforms.clear()
         parts = self.transforms(job.arm_q_rad)  # (n+1, S, 4, 4) at the tick boundaries
-        scans = tuple(caster(_scan_job(job, times_s, parts))
+        jobs: dict[bytes, ScanJob] = {}  # sensors at one rate share their job
+        scans = tuple(caster(jobs.get(times_s.tobytes()) or jobs.setdefault(
+                          times_s.tobytes(), _scan_job(job, times_s, parts)))
                       for caster, times_s in zip(self.casters, job.scan_times_s, strict=True))
         contacts = self.self_contacts.advance(job.first_tick, job.arm_q_rad, parts) \
             if self.self_contacts else []

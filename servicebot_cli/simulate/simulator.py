@@ -37,7 +37,7 @@ from servicebot_cli.simulate.self_contact import SelfContact, SelfContactWatch
 from servicebot_cli.simulate.sensors import camera_info, imu, joint_states, lidar, odometry
 from servicebot_cli.simulate.sensors.noise import Noise, stream_rng
 from servicebot_cli.simulate.sensors.sample import SampleClock, sample_count
-from servicebot_cli.simulate.sensors.scan_jobs import ScanCaster
+from servicebot_cli.simulate.sensors.scan_jobs import ScanCaster, fixed_ranges_of
 from servicebot_cli.simulate.shape_memo import TransformMemo
 from servicebot_cli.simulate.world import blocking, motion
 from servicebot_cli.simulate.world.clearance import Closest
@@ -206,10 +206,11 @@ class _Run:
             "joints": SampleClock(scenario.rates.joint_states_hz, duration, self.dt_s)}
         self.scan_clocks = [SampleClock(_rate(mounted.spec, scenario), duration, self.dt_s)
                             for mounted in body.ray_sensors]
+        fixed = fixed_ranges_of(body.ray_sensors, body.shape)
         casters = tuple(
             ScanCaster(mounted, body.shape, body.base_height_m, solids, meshes,
                        Noise(mounted.spec.noise, stream_rng(seed, scan_stream(index, mounted))),
-                       clock.period_s)
+                       clock.period_s, fixed[index])
             for index, (mounted, clock) in enumerate(zip(body.ray_sensors, self.scan_clocks,
                                                          strict=True)))
         self.from_poses = PoseWork(

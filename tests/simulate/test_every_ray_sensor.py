@@ -156,3 +156,24 @@ def test_more_ray_sensors_leave_the_lidar_scans_as_they_were(three_sensors, tmp_
     assert set(alone) == set(messages) - {"/sonar_front", "/ir_rear"}
     assert [m.ranges.tolist() for m in alone["/scan"]] == \
         [m.ranges.tolist() for m in messages["/scan"]]
+
+
+def test_sensors_on_bare_links_cast_the_base_together_as_each_alone(tmp_path):
+    from servicebot_cli.description.loader import RobotSource, load
+    from servicebot_cli.simulate.body import sim_robot
+    from servicebot_cli.simulate.sensors import lidar
+    from servicebot_cli.simulate.sensors.scan_jobs import fixed_ranges_of
+
+    # the rear sensor looks across the base: its rays meet the base box and the wheels
+    body = sim_robot(load(RobotSource.of(_robot(tmp_path, SONAR, IR.replace(
+        'xyz="-0.22 0 0" rpy="0 0 3.141592653589793"', 'xyz="0.22 0 0" rpy="0 0 3.14"')))))
+    assert [m.link for m in body.ray_sensors] == ["lidar_link", "sonar_front_link",
+                                                  "ir_rear_link"]
+    together = fixed_ranges_of(body.ray_sensors, body.shape)
+    assert together[0] is None  # the LIDAR's link holds a part: cast on its own
+    for mounted, fixed in zip(body.ray_sensors[1:], together[1:], strict=True):
+        rays = lidar.ray_directions(mounted.spec, mounted.transform_sensor_to_base)
+        alone = lidar.fixed_ranges(body.shape, mounted.link, mounted.transform_sensor_to_base,
+                                   rays)
+        np.testing.assert_array_equal(fixed, alone)
+    assert np.isfinite(together[2]).all()  # the turned one's rays all meet the base
