@@ -9,7 +9,7 @@ shapes of every link. Nothing is a constant of the bundled robot.
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Generic, TypeVar
 
@@ -33,6 +33,7 @@ from servicebot_cli.kinematics.drive_geometry import DriveGeometry, drive_geomet
 from servicebot_cli.kinematics.steering import refuse_steered_wheels
 from servicebot_cli.kinematics.transforms import pose_matrix
 from servicebot_cli.simulate.model_facts import FactsAhead, description_first
+from servicebot_cli.simulate.sensors.lidar import cast_problem
 from servicebot_cli.simulate.shape import RobotShape, robot_shape
 
 if TYPE_CHECKING:
@@ -69,7 +70,9 @@ class SimRobot:
         arm_joints: Movable joints that are not wheels, URDF order.
         base_height_m: Height of the root link's origin above the floor (wheels touching it).
         shape: Every link's collision parts, posed by the arm joints.
-        lidar, imu, camera: Mounted sensors, None where the URDF has none.
+        ray_sensors: Every published ray sensor (LIDARs, sonars, cliff and IR range
+            sensors), the one with the most rays first (the LIDAR), then in URDF order.
+        imu, camera: Mounted sensors, None where the URDF has none.
         disabled_pairs: Link pairs the self-contact check leaves out (an SRDF's
             ``<disable_collisions>``, as ``ik --srdf``).
         resolver: Finds the ``package://`` collision meshes (the shape's and the self-contact
@@ -82,7 +85,7 @@ class SimRobot:
     arm_joints: tuple[str, ...]
     base_height_m: float
     shape: RobotShape
-    lidar: Mounted[LidarSpec] | None
+    ray_sensors: tuple[Mounted[LidarSpec], ...]
     imu: Mounted[ImuSpec] | None
     camera: Mounted[CameraSpec] | None
     disabled_pairs: tuple[tuple[str, str], ...] = ()
@@ -132,7 +135,7 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
         arm_joints=arm_joints,
         base_height_m=height,
         shape=shape,
-        lidar=_mount(robot, LIDAR_TYPES, _published_lidar, placement),
+        ray_sensors=_mount_rays(robot, placement),
         imu=_mount(robot, ("imu",), _published_imu, placement) or _model_imu(robot, placement),
         camera=_mount(robot, CAMERA_TYPES, _published_camera, placement),
         disabled_pairs=tuple(disabled_pairs), resolver=resolver,
@@ -141,20 +144,52 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
 
 def _mount(robot: RobotDescription, types: tuple[str, ...],
            read: Callable[[Sensor], SpecT | None], placement: Placement) -> Mounted[SpecT] | None:
-    """The first published sensor of ``types``; of ray sensors, the one with the most rays.
+    """The first published sensor of ``types``, None without one.
 
-    ``read`` gives a sensor's spec, None when nothing publishes it on ROS. A Create 3 base
-    (TurtleBot 4) declares one-ray cliff and IR sensors before its LIDAR.
+    ``read`` gives a sensor's spec, None when nothing publishes it on ROS.
     """
-    found = [(s, spec) for s in robot.sensors if s.type in types and s.reference
-             for spec in [read(s)] if spec is not None]
-    if not found:
-        return None
-    sensor, spec = max(found, key=lambda f: _rays(f[0])) if types == LIDAR_TYPES else found[0]
-    assert sensor.reference is not None  # found keeps referenced sensors only
+    found = next(_published(robot, types, read), None)
+    return _placed(robot, *found, placement) if found else None
+
+
+def _mount_rays(robot: RobotDescription, placement: Placement) -> tuple[Mounted[LidarSpec], ...]:
+    """Every published ray sensor, the one with the most rays first, then in URDF order.
+
+    A Create 3 base (TurtleBot 4) declares one-ray cliff and IR sensors before its LIDAR;
+    the LIDAR comes first, so it keeps the noise stream and the ``scan.csv`` it always had.
+    """
+    found = sorted(((sensor, spec) for sensor, spec in _published(robot, LIDAR_TYPES,
+                                                                   _published_lidar)
+                    if cast_problem(spec) is None),
+                   key=lambda f: -(f[1].samples or 0))  # stable: URDF order among equals
+    return tuple(_placed(robot, sensor, spec, placement) for sensor, spec in found)
+
+
+def uncast_ray_notes(robot: RobotDescription) -> tuple[str, ...]:
+    """A stderr note for each published ray sensor the simulator cannot cast (left out)."""
+    return tuple(f"note: /{(spec.topic or '').lstrip('/')} (ray sensor '{sensor.name}') is "
+                 f"not simulated: {problem}"
+                 for sensor, spec in _published(robot, LIDAR_TYPES, _published_lidar)
+                 for problem in [cast_problem(spec)] if problem is not None)
+
+
+def _published(robot: RobotDescription, types: tuple[str, ...],
+               read: Callable[[Sensor], SpecT | None]) -> Iterator[tuple[Sensor, SpecT]]:
+    """Each sensor of ``types`` on a link that ``read`` says publishes, and its spec."""
+    return ((s, spec) for s in robot.sensors if s.type in types and s.reference
+            for spec in [read(s)] if spec is not None)
+
+
+def _placed(robot: RobotDescription, sensor: Sensor, spec: SpecT,
+            placement: Placement) -> Mounted[SpecT]:
+    """``sensor`` at its pose on its link.
+
+    Raises:
+        DescriptionError: Its link is not in the robot.
+    """
+    assert sensor.reference is not None  # _published keeps sensors on a link only
     robot.require_frame(sensor.reference)
-    transform = placement(sensor.reference) @ pose_matrix(sensor.pose)
-    return Mounted(spec, transform, sensor.reference)
+    return Mounted(spec, placement(sensor.reference) @ pose_matrix(sensor.pose), sensor.reference)
 
 
 def _published_lidar(sensor: Sensor) -> LidarSpec | None:
@@ -196,11 +231,6 @@ def _model_imu(robot: RobotDescription, placement: Placement) -> Mounted[ImuSpec
         return None
     link, spec = found
     return Mounted(spec, placement(link), link)
-
-
-def _rays(sensor: Sensor) -> int:
-    """Horizontal rays of a ray sensor (0 when it does not say)."""
-    return lidar_spec(sensor).samples or 0
 
 
 def _shape(robot: RobotDescription, arm_joints: tuple[str, ...],

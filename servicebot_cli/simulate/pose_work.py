@@ -1,8 +1,9 @@
-"""What a piece computes from its poses alone: LIDAR scans, self contact and clearance.
+"""What a piece computes from its poses alone: ray sensors' scans, self contact, clearance.
 
 Once a piece's ground truth is known (the base's path, the arm at each tick boundary),
 these three depend on nothing else of it, and each carries its state from piece to piece
-(the scan noise's generator, the self-contact events under way, the clearance record).
+(each ray sensor's noise generator, the self-contact events under way, the clearance
+record).
 The parts are placed once per piece for all three.
 :class:`PoseWork` holds that state and everything fixed for the run, so the pieces' jobs
 can be done in another process (:mod:`servicebot_cli.common.forked`) while the simulator
@@ -32,13 +33,13 @@ FloatArray = npt.NDArray[np.float64]
 class PoseJob:
     """A piece's poses: ``truth`` and ``arm_q_rad`` (n+1, J) at its tick boundaries.
 
-    ``scan_times_s`` are the piece's scans (None without a LIDAR).
+    ``scan_times_s`` are the piece's scans, one array per ray sensor (none without).
     """
 
     first_tick: int
     truth: Path2D
     arm_q_rad: FloatArray
-    scan_times_s: FloatArray | None
+    scan_times_s: tuple[FloatArray, ...]
 
 
 @dataclass(frozen=True, eq=False)
@@ -46,12 +47,12 @@ class FromPoses:
     """What a piece's poses give.
 
     Attributes:
-        scans: The piece's LIDAR scans, None without a LIDAR.
+        scans: The piece's scans, one per ray sensor (none without).
         self_contacts: The self contacts that began in the piece.
         closest: The clearance record over the piece and the pieces before it.
     """
 
-    scans: lidar.Scans | None
+    scans: tuple[lidar.Scans, ...]
     self_contacts: list[SelfContact]
     closest: Closest
 
@@ -61,14 +62,14 @@ class PoseWork:
 
     Args:
         shape: The robot's parts and the joints that move them.
-        caster: The LIDAR's scans, None without a LIDAR.
+        casters: Each ray sensor's scans (none without).
         self_contacts: The arm's self-contact watch, None without an arm.
         clearance: The clearance record.
     """
 
-    def __init__(self, shape: RobotShape, caster: ScanCaster | None,
+    def __init__(self, shape: RobotShape, casters: tuple[ScanCaster, ...],
                  self_contacts: SelfContactWatch | None, clearance: ClearanceRecord) -> None:
-        self.shape, self.caster, self.self_contacts = shape, caster, self_contacts
+        self.shape, self.casters, self.self_contacts = shape, casters, self_contacts
         self.clearance = clearance
         self.transforms = TransformMemo(shape)
 
@@ -89,12 +90,20 @@ class PoseWork:
         """
         self.transforms.clear()
         parts = self.transforms(job.arm_q_rad)  # (n+1, S, 4, 4) at the tick boundaries
-        scans = None
-        if self.caster is not None and job.scan_times_s is not None:
-            boundary = job.truth.tick_index(job.scan_times_s, boundaries=True)  # tick's start
-            scans = self.caster(ScanJob(job.truth, job.scan_times_s, job.arm_q_rad[boundary],
-                                        parts[boundary]))
+        jobs: dict[bytes, ScanJob] = {}  # sensors at one rate share their job
+        scans = tuple(caster(jobs.get(times_s.tobytes()) or jobs.setdefault(
+                          times_s.tobytes(), _scan_job(job, times_s, parts)))
+                      for caster, times_s in zip(self.casters, job.scan_times_s, strict=True))
         contacts = self.self_contacts.advance(job.first_tick, job.arm_q_rad, parts) \
             if self.self_contacts else []
         return FromPoses(scans, contacts, self.clearance.advance(job.first_tick, job.truth,
                                                                  job.arm_q_rad, parts))
+
+
+def _scan_job(job: PoseJob, times_s: FloatArray, parts: FloatArray) -> ScanJob:
+    """The scans at ``times_s`` of ``job``'s piece, the robot as at each one's tick start.
+
+    ``parts`` (n+1, S, 4, 4) are the robot's parts at the piece's tick boundaries.
+    """
+    boundary = job.truth.tick_index(times_s, boundaries=True)  # the scan's tick's start
+    return ScanJob(job.truth, times_s, job.arm_q_rad[boundary], parts[boundary])

@@ -25,7 +25,7 @@ import numpy.typing as npt
 from servicebot_cli.common.forked import Worker, second_core
 from servicebot_cli.description.sensors import CameraSpec, ImuSpec, LidarSpec
 from servicebot_cli.kinematics import diff_drive
-from servicebot_cli.simulate.body import SimRobot
+from servicebot_cli.simulate.body import Mounted, SimRobot
 from servicebot_cli.simulate.controllers.arm_trajectory import ArmLimits, ArmMotion
 from servicebot_cli.simulate.controllers.classic_drive import ENCODER, NEITHER, WORLD
 from servicebot_cli.simulate.controllers.diff_drive import WheelPlan, WheelPlanner
@@ -37,7 +37,7 @@ from servicebot_cli.simulate.self_contact import SelfContact, SelfContactWatch
 from servicebot_cli.simulate.sensors import camera_info, imu, joint_states, lidar, odometry
 from servicebot_cli.simulate.sensors.noise import Noise, stream_rng
 from servicebot_cli.simulate.sensors.sample import SampleClock, sample_count
-from servicebot_cli.simulate.sensors.scan_jobs import ScanCaster
+from servicebot_cli.simulate.sensors.scan_jobs import ScanCaster, fixed_ranges_of
 from servicebot_cli.simulate.shape_memo import TransformMemo
 from servicebot_cli.simulate.world import blocking, motion
 from servicebot_cli.simulate.world.clearance import Closest
@@ -88,7 +88,7 @@ class SimResult:
     joints: joint_states.JointStates
     arm_positions_rad: FloatArray  # (n+1, arm joints) at tick boundaries
     closest: Closest  # its index is a tick, its part indexes body.shape.parts
-    scans: lidar.Scans | None
+    scans: tuple[lidar.Scans, ...]  # one per body.ray_sensors, in that order
     imu: imu.ImuSamples | None
     camera: camera_info.Intrinsics | None
     camera_times_s: FloatArray
@@ -204,15 +204,17 @@ class _Run:
         self.clocks = {
             "odometry": SampleClock(ctrl.publish_rate_hz, duration, self.dt_s),
             "joints": SampleClock(scenario.rates.joint_states_hz, duration, self.dt_s)}
-        caster = None
-        if body.lidar is not None:
-            self.clocks["scan"] = SampleClock(_rate(body.lidar.spec, scenario), duration,
-                                              self.dt_s)
-            caster = ScanCaster(body.lidar, body.shape, body.base_height_m, solids, meshes,
-                                Noise(body.lidar.spec.noise, stream_rng(seed, "scan")),
-                                self.clocks["scan"].period_s)
+        self.scan_clocks = [SampleClock(_rate(mounted.spec, scenario), duration, self.dt_s)
+                            for mounted in body.ray_sensors]
+        fixed = fixed_ranges_of(body.ray_sensors, body.shape)
+        casters = tuple(
+            ScanCaster(mounted, body.shape, body.base_height_m, solids, meshes,
+                       Noise(mounted.spec.noise, stream_rng(seed, scan_stream(index, mounted))),
+                       clock.period_s, fixed[index])
+            for index, (mounted, clock) in enumerate(zip(body.ray_sensors, self.scan_clocks,
+                                                         strict=True)))
         self.from_poses = PoseWork(
-            body.shape, caster,
+            body.shape, casters,
             SelfContactWatch(body.robot, body.shape, body.base_height_m, self.dt_s,
                              body.disabled_pairs, body.resolver) if body.arm_joints else None,
             ClearanceRecord(self.tester, body.base_height_m))
@@ -246,8 +248,8 @@ class _Run:
         plan = self.planner.plan(ticks)
         self.transforms.clear()
         truth, arm_q, contacts = self._ground_truth(first, plan)
-        poses.submit(PoseJob(first, truth, arm_q, self.clocks["scan"].take(stop)
-                             if "scan" in self.clocks else None))
+        poses.submit(PoseJob(first, truth, arm_q,
+                             tuple(clock.take(stop) for clock in self.scan_clocks)))
         sides = self._wheel_angles(plan)
         odom_path, odom_before = self.odometer.advance(first, plan.left_rad_s, plan.right_rad_s)
         odom_times = self.clocks["odometry"].take(stop)
@@ -268,7 +270,7 @@ class _Run:
             sides, odom,
             joint_states.at_times(names, positions, self.dt_s,
                                   self.clocks["joints"].take(stop), first),
-            arm_q, NO_CLEARANCE, None,
+            arm_q, NO_CLEARANCE, (),
             self._imu(truth, stop), self.camera, camera_times, first, self.ticks,
             self.images.frames(truth, arm_q, camera_times) if self.images else ())
         self.twist_before = (float(truth.linear_m_s[-1]), float(truth.angular_rad_s[-1]))
@@ -342,6 +344,17 @@ def _joint_positions(body: SimRobot, sides: FloatArray,
         else:
             columns.append(np.zeros(len(sides)))
     return names, np.column_stack(columns)
+
+
+def scan_stream(index: int, mounted: Mounted[LidarSpec]) -> str:
+    """The name of ray sensor ``index``'s noise stream.
+
+    The first (the LIDAR, :attr:`SimRobot.ray_sensors`) draws from ``scan``, as the only
+    ray sensor always did; each other from one named after its topic and its link (a PMB2's
+    three sonars share a topic), so that one sensor more or less leaves the others' noise
+    as it was.
+    """
+    return "scan" if index == 0 else f"scan {mounted.spec.topic} on {mounted.link}"
 
 
 def _rate(spec: LidarSpec | ImuSpec | CameraSpec, scenario: Scenario) -> float:

@@ -11,7 +11,7 @@ from tests.simulate.helpers import body
 
 
 def _every_part_cast(robot, q):
-    mounted = robot.lidar
+    mounted = robot.ray_sensors[0]
     rays = lidar.ray_directions(mounted.spec, mounted.transform_sensor_to_base)
     keep = [p.link != mounted.link for p in robot.shape.parts]
     placed = robot.shape.transforms_to_base(q)[:, keep]
@@ -22,7 +22,7 @@ def _every_part_cast(robot, q):
 
 def test_arm_dipping_into_the_scan_plane_reads_as_every_part_cast():
     robot = body()
-    mounted = robot.lidar
+    mounted = robot.ray_sensors[0]
     rays = lidar.ray_directions(mounted.spec, mounted.transform_sensor_to_base)
     joints = len(robot.shape.joints)
     # from upright to folded far down behind and ahead: the arm leaves the plane and enters it

@@ -58,11 +58,11 @@ def test_a_frame_shows_the_kept_pose_and_the_last_kept_scan(monkeypatch):
     assert (xs[-1], ys[-1]) == (whole.truth.x_m[k], whole.truth.y_m[k])
     assert len(xs) == k // stride + 1
     # the scan drawn is the first of the run's stretch of 1.5 s that holds t (20 stretches)
-    stretches = np.floor(whole.scans.times_s / (30.0 / 20))
+    stretches = np.floor(whole.scans[0].times_s / (30.0 / 20))
     index = int(np.flatnonzero(stretches == int(t // 1.5))[0])
-    assert whole.scans.times_s[index] <= t
+    assert whole.scans[0].times_s[index] <= t
     drawn = np.column_stack([np.asarray(v, dtype=float) for v in artists.scan.get_data()])
-    np.testing.assert_array_equal(drawn, plot.scan_points(whole.scans, index))
+    np.testing.assert_array_equal(drawn, plot.scan_points(whole.scans[0], index))
 
 
 def test_the_live_window_gathers_a_track_not_the_whole_run(tmp_path):

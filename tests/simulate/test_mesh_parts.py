@@ -74,7 +74,7 @@ def test_the_lidar_sees_the_mesh_where_trimesh_does(with_bumper):
     body, mesh = with_bumper
     [part] = [p for p in body.shape.parts if p.link == "bumper"]
     assert part.kind == "mesh" and len(part.faces) == 80
-    mount = body.lidar
+    mount = body.ray_sensors[0]
     directions = lidar.ray_directions(mount.spec, mount.transform_sensor_to_base)
     origins = np.broadcast_to(mount.transform_sensor_to_base[:3, 3], directions.shape)
     points, index, _ = _placed_bumper(body, mesh).ray.intersects_location(origins, directions)

@@ -1,7 +1,8 @@
 """Ray sensors that are not the LIDAR, and a LIDAR of one ray, in a run with a bag.
 
-A Create 3 base (TurtleBot 4's) declares one-ray cliff sensors before its LIDAR: the run's
-LIDAR is the ray sensor with the most rays, wherever it stands in the file. A one-ray scan is
+A Create 3 base (TurtleBot 4's) declares one-ray cliff sensors before its LIDAR: each is
+simulated on its own topic, and the LIDAR (the ray sensor with the most rays, wherever it
+stands in the file) keeps ``/scan`` and its 360 rays. A one-ray scan is
 still a sequence of one float in the bag (it was a numpy broadcast error, exit 3). The bag is
 read back with rosbags, which shares no code with servicebot's writer.
 """
@@ -51,7 +52,7 @@ def _scans(bag: Path) -> list:
                 if c.msgtype == "sensor_msgs/msg/LaserScan"]
 
 
-def test_the_lidar_is_the_ray_sensor_with_most_rays(tmp_path):
+def test_a_cliff_sensor_before_the_lidar_publishes_beside_it(tmp_path):
     text = BUNDLED.read_text()
     robot = _robot(tmp_path, re.sub(r"(<robot [^>]*>)", lambda m: m.group(1) + CLIFF, text,
                                     count=1))
@@ -59,9 +60,9 @@ def test_the_lidar_is_the_ray_sensor_with_most_rays(tmp_path):
                             tmp_path / "bag", "--format", "json")
     assert result.returncode == 0, result.stderr
     messages = json.loads(result.stdout)["messages"]
-    assert messages["/scan"] == 20  # the LIDAR's 10 Hz, not the cliff sensor's 62 Hz
-    assert not any("cliff" in topic for topic in messages)
-    scans = _scans(tmp_path / "bag")
+    assert messages["/scan"] == 20  # the LIDAR's 10 Hz
+    assert messages["/cliff_front/out"] == 124  # the cliff sensor's 62 Hz, its plugin's ~/out
+    scans = _scans(tmp_path / "bag")  # the cliff sensor's are PointCloud2, the plugin's default
     assert {len(s.ranges) for s in scans} == {360}
 
 

@@ -43,7 +43,7 @@ def reference_meshes(q: dict[str, float], skip: str = "") -> list[tuple[str, tri
 
 
 def test_own_ranges_match_trimesh_rays_at_random_arm_configurations():
-    mount = BODY.lidar
+    mount = BODY.ray_sensors[0]
     directions = lidar.ray_directions(mount.spec, mount.transform_sensor_to_base)
     origin = mount.transform_sensor_to_base[:3, 3]
     rng = np.random.default_rng(4)
@@ -64,7 +64,7 @@ def test_own_ranges_match_trimesh_rays_at_random_arm_configurations():
 
 def test_the_lidar_sees_the_arm_base_behind_it():
     result = run({"duration_s": 1})
-    ranges, angles = result.scans.ranges_m[0], result.scans.angles_rad
+    ranges, angles = result.scans[0].ranges_m[0], result.scans[0].angles_rad
     # arm_base_link's front face is 0.23 m behind the LIDAR and 0.1 m wide
     lidar_x = link_transforms(BODY.robot)["lidar_link"][0, 3]
     face_x = link_transforms(BODY.robot)["arm_base_link"][0, 3] + 0.05

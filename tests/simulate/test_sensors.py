@@ -14,8 +14,8 @@ from servicebot_cli.simulate.sensors.noise import Noise
 from tests.simulate.helpers import body, run
 
 BODY = body()
-LIDAR = BODY.lidar.spec
-LIDAR_X = BODY.lidar.transform_sensor_to_base[0, 3]
+LIDAR = BODY.ray_sensors[0].spec
+LIDAR_X = BODY.ray_sensors[0].transform_sensor_to_base[0, 3]
 
 
 def test_lidar_ranges_against_a_wall_match_the_geometry():
@@ -23,7 +23,7 @@ def test_lidar_ranges_against_a_wall_match_the_geometry():
     result = run({"duration_s": 1, "world": {"walls": [
         {"from_m": [wall, -20], "to_m": [wall, 20], "thickness_m": 0.1, "height_m": 1}]}},
         seed=3)
-    scans = result.scans
+    [scans] = result.scans
     assert scans.ranges_m.shape == (LIDAR.update_rate_hz * 1, LIDAR.samples)
     facing = np.abs(scans.angles_rad - math.pi) > math.pi / 2 + 0.01  # rays toward +x
     expected = (wall - 0.05 - LIDAR_X) / np.cos(scans.angles_rad[facing])
@@ -46,7 +46,7 @@ def test_lidar_ranges_against_a_wall_match_the_geometry():
 def test_lidar_does_not_see_a_box_below_its_scan_plane():
     low = {"center_m": [1.5, 0.0], "size_m": [0.4, 0.4, 0.1]}
     tall = {"center_m": [1.5, 0.0], "size_m": [0.4, 0.4, 1.0]}
-    ahead = [run({"duration_s": 0.1, "world": {"boxes": [box]}}).scans.ranges_m[0, 0]
+    ahead = [run({"duration_s": 0.1, "world": {"boxes": [box]}}).scans[0].ranges_m[0, 0]
              for box in (low, tall)]
     assert math.isinf(ahead[0])
     assert ahead[1] == pytest.approx(1.3 - LIDAR_X, abs=0.05)

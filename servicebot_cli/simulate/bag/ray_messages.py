@@ -33,9 +33,10 @@ from servicebot_cli.description.sensors import LidarSpec
 from servicebot_cli.simulate.bag import cdr
 from servicebot_cli.simulate.bag.byte_rows import ByteRows, Payloads, SizeGroups
 from servicebot_cli.simulate.sensors.lidar import Scans, vertical_angles
-from servicebot_cli.simulate.simulator import SimResult
 
 FloatArray = npt.NDArray[np.float64]
+Serializer = Callable[[Scans, str], ByteRows | Payloads]
+"""A ray sensor's scans of a piece and its frame to their messages' payloads."""
 Fill = Callable[[npt.NDArray[np.bool_], int], Mapping[str, npt.NDArray[Any] | float]]
 """The fields of the messages of the scans a mask selects, each with this many points."""
 FLOAT32, FLOAT32_MAX = 7, float(np.finfo(np.float32).max)
@@ -55,30 +56,20 @@ def unpublished_note(spec: LidarSpec) -> str | None:
             "the simulator writes that type only as gazebo_ros_ray_sensor converts a scan")
 
 
-def serializer_for(spec: LidarSpec) -> tuple[str, Callable[[SimResult], ByteRows | Payloads]]:
+def serializer_for(spec: LidarSpec) -> tuple[str, Serializer]:
     """The message type of ``spec``'s scans and the function that serializes a piece's."""
     message = spec.output.message if spec.output else LASER_SCAN
-    serializers: dict[str, Callable[[SimResult], ByteRows | Payloads]] = {
+    serializers: dict[str, Serializer] = {
         POINT_CLOUD2: point_cloud2, POINT_CLOUD: point_cloud, RANGE: range_message}
     return message, serializers.get(message, laser_scan)
 
 
-def _scans(result: SimResult) -> Scans:
-    assert result.scans is not None  # only a body with a LIDAR has a scan publisher
-    return result.scans
-
-
-def _frame(result: SimResult) -> str:
-    return _scans(result).spec.frame or result.body.root_link
-
-
-def laser_scan(result: SimResult) -> ByteRows:
+def laser_scan(scans: Scans, frame: str) -> ByteRows:
     """LaserScan of the middle ring (the only one of a level scan), or of every ring.
 
     ROS 1's ``gazebo_ros_laser`` and ``gazebo_ros_gpu_laser`` copy all of Gazebo's ranges,
     ring after ring, and its intensities (0 here), with ``scan_time`` 0.
     """
-    scans = _scans(result)
     spec, rings = scans.spec, len(vertical_angles(scans.spec))
     rays = len(scans.angles_rad) // rings
     every = spec.output is not None and spec.output.every_ring
@@ -86,7 +77,7 @@ def laser_scan(result: SimResult) -> ByteRows:
     angles = scans.angles_rad[start:start + rays]
     ranges = scans.ranges_m if every else scans.ranges_m[:, start:start + rays]
     layout = cdr.Layout()
-    layout.header(_frame(result))
+    layout.header(frame)
     for name in ("angle_min", "angle_max", "angle_increment", "time_increment", "scan_time",
                  "range_min", "range_max"):
         layout.field(name, "<f4")
@@ -101,15 +92,14 @@ def laser_scan(result: SimResult) -> ByteRows:
         "ranges": ranges.astype(np.float32)})
 
 
-def range_message(result: SimResult) -> ByteRows:
+def range_message(scans: Scans, frame: str) -> ByteRows:
     """Range: the least range over all rays, as the plugin's conversion takes it."""
-    scans = _scans(result)
     spec = scans.spec
     horizontal = (spec.max_angle_rad or 0.0) - (spec.min_angle_rad or 0.0)
     vertical = (spec.vertical_max_angle_rad or 0.0) - (spec.vertical_min_angle_rad or 0.0)
     least = np.where(np.isnan(scans.ranges_m), np.inf, scans.ranges_m).min(axis=1, initial=np.inf)
     layout = cdr.Layout()
-    layout.header(_frame(result))
+    layout.header(frame)
     layout.constant("<B", spec.output.radiation_type if spec.output else 1)
     layout.constant("<f", max(horizontal, vertical))
     layout.constant("<f", spec.min_range_m or 0.0)
@@ -139,16 +129,15 @@ def _intensity(scans: Scans) -> float:
     return max(0.0, scans.spec.output.min_intensity if scans.spec.output else 0.0)
 
 
-def point_cloud2(result: SimResult) -> Payloads:
+def point_cloud2(scans: Scans, frame: str) -> Payloads:
     """PointCloud2 of every finite ray, x, y, z and intensity as float32."""
-    scans = _scans(result)
     points, finite = _points(scans)
     cloud = np.concatenate((points, np.full(points.shape[:2] + (1,), _intensity(scans))),
                            axis=-1).astype("<f4")
 
     def layout(count: int) -> cdr.Layout:
         out = cdr.Layout()
-        out.header(_frame(result))
+        out.header(frame)
         out.constant("<I", 1)  # height: one unordered row
         out.constant("<I", count)  # width
         out.constant("<I", len(CLOUD_FIELDS))
@@ -168,14 +157,13 @@ def point_cloud2(result: SimResult) -> Payloads:
         "data": cloud[keep].reshape(-1, len(CLOUD_FIELDS) * count).view(np.uint8)})
 
 
-def point_cloud(result: SimResult) -> Payloads:
+def point_cloud(scans: Scans, frame: str) -> Payloads:
     """PointCloud of every finite ray, and its ``intensity`` channel."""
-    scans = _scans(result)
     points, finite = _points(scans)
 
     def layout(count: int) -> cdr.Layout:
         out = cdr.Layout()
-        out.header(_frame(result))
+        out.header(frame)
         out.constant("<I", count)
         if count:
             out.field("points", "<f4", 3 * count)

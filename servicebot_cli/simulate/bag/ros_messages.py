@@ -127,10 +127,7 @@ def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
                              JointTransforms()))
     out += [Publisher(topic, "sensor_msgs/msg/JointState", qos.SYSTEM_DEFAULTS,
                       lambda r: r.joints.times_s, _joint_states) for topic in joint_states]
-    if body.lidar is not None and ray_messages.unpublished_note(body.lidar.spec) is None:
-        message, serialize = ray_messages.serializer_for(body.lidar.spec)
-        out.append(Publisher(absolute(body.lidar.spec.topic, "scan"), message, qos.SENSOR_DATA,
-                             lambda r: r.scans.times_s if r.scans else np.zeros(0), serialize))
+    out += _ray_publishers(body)
     if body.imu is not None:
         out.append(Publisher(absolute(body.imu.spec.topic, "imu"), "sensor_msgs/msg/Imu",
                              qos.SENSOR_DATA,
@@ -147,6 +144,37 @@ def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
                 out.append(Publisher(depth_topic(image_topic), IMAGE_TYPE, qos.SENSOR_DATA,
                                      lambda r: r.camera_times_s, camera_messages.depth_images))
     return out
+
+
+def _ray_publishers(body: SimRobot) -> list[Publisher]:
+    """Each ray sensor's publisher, in the type its plugin names, on its topic and frame.
+
+    Ray sensor ``i``'s scans are ``SimResult.scans[i]``; a type the simulator cannot write
+    has no publisher (the run notes it, :func:`.ray_messages.unpublished_note`).
+    """
+    out = []
+    for index, mounted in enumerate(body.ray_sensors):
+        spec = mounted.spec
+        if ray_messages.unpublished_note(spec) is not None:
+            continue
+        message, serialize = ray_messages.serializer_for(spec)
+        frame = spec.frame or body.root_link
+        out.append(Publisher(absolute(spec.topic, "scan"), message, qos.SENSOR_DATA,
+                             partial(_scan_times, index=index),
+                             partial(_scan_messages, index=index, serialize=serialize,
+                                     frame=frame)))
+    return out
+
+
+def _scan_times(result: SimResult, index: int) -> FloatArray:
+    """Ray sensor ``index``'s scan times in the piece [s]."""
+    return result.scans[index].times_s
+
+
+def _scan_messages(result: SimResult, index: int, serialize: ray_messages.Serializer,
+                   frame: str) -> ByteRows | Payloads:
+    """Ray sensor ``index``'s messages of the piece, stamped in ``frame``."""
+    return serialize(result.scans[index], frame)
 
 
 def depth_topic(image_topic: str) -> str:

@@ -10,6 +10,7 @@ that renders camera images also leaves its last frame as ``camera.png``.
 from __future__ import annotations
 
 import contextlib
+import re
 from collections.abc import Sequence
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any
@@ -20,6 +21,7 @@ import numpy.typing as npt
 from servicebot_cli.common.files import OutputError, atomic_directory, atomic_output
 from servicebot_cli.common.jsonable import dumps
 from servicebot_cli.simulate.bag.byte_rows import place_rows
+from servicebot_cli.simulate.body import SimRobot
 from servicebot_cli.simulate.files.png import png_bytes
 from servicebot_cli.simulate.sensors.camera_image import Frame
 from servicebot_cli.simulate.simulator import SimResult
@@ -119,12 +121,11 @@ def tables(result: SimResult) -> dict[str, Table]:
             f"{c.time_s!r},{c.obstacle},{c.link},{c.x_m!r},{c.y_m!r},{c.yaw_rad!r}\n"
             for c in result.contacts)),
     }
-    if result.scans is not None:
-        scans = result.scans
+    for name, scans in zip(scan_files(result.body), result.scans, strict=True):
         up = scans.inclinations_rad  # several rings: each ray's inclination too
         names = [f"range_m@{a:.6f}rad" for a in scans.angles_rad] if up is None else \
             [f"range_m@{a:.6f}rad@{e:.6f}rad" for a, e in zip(scans.angles_rad, up, strict=True)]
-        out["scan.csv"] = _table(("time_s", *names), (scans.times_s, *scans.ranges_m.T))
+        out[name] = _table(("time_s", *names), (scans.times_s, *scans.ranges_m.T))
     if result.imu is not None:
         imu = result.imu
         out["imu.csv"] = _table(
@@ -139,6 +140,25 @@ def tables(result: SimResult) -> dict[str, Table]:
             (result.camera_times_s, *(np.full(n, v) for v in (cam.width_px, cam.height_px,
                                                               cam.k[0], cam.k[4], cam.k[2],
                                                               cam.k[5]))))
+    return out
+
+
+def scan_files(body: SimRobot) -> list[str]:
+    """The CSV file of each of ``body``'s ray sensors, in order.
+
+    The first (the LIDAR) writes ``scan.csv``; each other ``scan_TOPIC.csv``, its topic's
+    name with ``/`` as ``_`` (``/ir_intensity_left`` -> ``scan_ir_intensity_left.csv``),
+    numbered ``_2``, ``_3``... where two would share one name.
+    """
+    out: list[str] = []
+    for index, mounted in enumerate(body.ray_sensors):
+        slug = re.sub(r"[^A-Za-z0-9_.-]+", "_", (mounted.spec.topic or "").strip("/"))
+        stem = "scan" if index == 0 else f"scan_{slug}"
+        name, count = f"{stem}.csv", 1
+        while name in out:
+            count += 1
+            name = f"{stem}_{count}.csv"
+        out.append(name)
     return out
 
 

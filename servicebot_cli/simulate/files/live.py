@@ -72,9 +72,9 @@ class LiveTrack:
     def add(self, piece: SimResult) -> None:
         """Keep what the window needs from the next piece of the run."""
         self.track.add(piece)
-        scans = piece.scans
-        if scans is None:
+        if not piece.scans:
             return
+        scans = piece.scans[0]  # the LIDAR's: the ray sensor with the most rays
         for i, time_s in enumerate(scans.times_s.tolist()):
             stretch = min(math.floor(time_s / self.scan_spacing_s), MAX_SCANS - 1)
             if stretch > self.scan_stretch:

@@ -1,4 +1,4 @@
-"""A picture of a run: the world from above with both paths and a LIDAR scan, and the arm.
+"""A picture of a run: the world from above with both paths and the last scans, and the arm.
 
 Drawn on a bare matplotlib Figure (no pyplot state), so it works without a display and the
 same run gives the same PNG, SVG or PDF bytes. What it draws is gathered as the run goes
@@ -56,8 +56,9 @@ class Track:
         self.odometry: list[FloatArray] = []  # time, x, y (world) and drift per kept sample
         self.contacts: list[tuple[float, float]] = []
         self.lidar_z: float | None = None
-        self.scan: FloatArray | None = None  # the last scan's points in the world, (M, 2)
+        self.scan: FloatArray | None = None  # the LIDAR's last scan in the world, (M, 2)
         self.scan_time_s = 0.0
+        self.other_scans: dict[int, FloatArray] = {}  # the other ray sensors' last scans
         self.start: tuple[float, float, float, FloatArray] | None = None
         self.end: tuple[float, float, float, FloatArray] | None = None
 
@@ -79,15 +80,23 @@ class Track:
             self.odometry.append(np.column_stack((odom.times_s, ox, oy, drift))[kept])
             self.seen += len(odom.times_s)
         self.contacts += [(c.x_m, c.y_m) for c in piece.contacts]
-        scans = piece.scans
-        if scans is not None and len(scans.times_s):
-            self.lidar_z = float(scans.origin_m[0, 2]) if self.lidar_z is None else self.lidar_z
-            self.scan = scan_points(scans, len(scans.times_s) - 1)
-            self.scan_time_s = float(scans.times_s[-1])
+        self._add_scans(piece.scans)
         if piece.first:
             self.start = (truth.x_m[0], truth.y_m[0], truth.yaw_rad[0],
                           piece.arm_positions_rad[0])
         self.end = (truth.x_m[-1], truth.y_m[-1], truth.yaw_rad[-1], piece.arm_positions_rad[-1])
+
+    def _add_scans(self, scans: tuple[Scans, ...]) -> None:
+        """Keep each ray sensor's last scan: the LIDAR's (the first) and the others'."""
+        for index, sensor in enumerate(scans):
+            if not len(sensor.times_s):
+                continue
+            points = scan_points(sensor, len(sensor.times_s) - 1)
+            if index:
+                self.other_scans[index] = points
+                continue
+            self.lidar_z = float(sensor.origin_m[0, 2]) if self.lidar_z is None else self.lidar_z
+            self.scan, self.scan_time_s = points, float(sensor.times_s[-1])
 
     def series(self) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
         """Kept boundaries' times [s], (x, y, yaw) of the truth, arm angles; odometry rows."""
@@ -148,6 +157,10 @@ def _draw_map(ax: Axes, track: Track) -> None:
     if track.scan is not None:
         ax.scatter(track.scan[:, 0], track.scan[:, 1], s=4, color="#d62728", zorder=3,
                    label=f"LIDAR scan at {track.scan_time_s:.1f} s")
+    if track.other_scans:
+        others = np.vstack(list(track.other_scans.values()))
+        ax.scatter(others[:, 0], others[:, 1], s=9, marker="^", color="#9467bd", zorder=3,
+                   label="other ray sensors' last scans")
     for pose, colour, label in ((track.start, "#2ca02c", "start"),
                                 (track.end, "#1f77b4", "end")):
         assert pose is not None

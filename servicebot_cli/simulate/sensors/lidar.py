@@ -49,11 +49,24 @@ class Scans:
     inclinations_rad: FloatArray | None = None
 
 
-def scan_angles(spec: LidarSpec) -> FloatArray:
-    """Bearing of each ray in the sensor frame [rad]."""
+def cast_problem(spec: LidarSpec) -> str | None:
+    """Why the simulator cannot cast ``spec``'s rays; None when it can."""
     if not spec.samples or spec.samples < 1 or spec.min_angle_rad is None \
             or spec.max_angle_rad is None:
-        raise DescriptionError("the LIDAR sensor needs <samples>, <min_angle> and <max_angle>")
+        return "it needs a whole <samples> of at least 1, <min_angle> and <max_angle>"
+    return None
+
+
+def scan_angles(spec: LidarSpec) -> FloatArray:
+    """Bearing of each ray in the sensor frame [rad].
+
+    Raises:
+        DescriptionError: :func:`cast_problem` has a problem with ``spec``.
+    """
+    problem = cast_problem(spec)
+    if problem is not None or not spec.samples or spec.min_angle_rad is None \
+            or spec.max_angle_rad is None:
+        raise DescriptionError(f"the ray sensor on {spec.frame}: {problem}")
     if spec.samples == 1:
         return np.array([spec.min_angle_rad])
     return np.linspace(spec.min_angle_rad, spec.max_angle_rad, spec.samples)
@@ -140,10 +153,21 @@ def fixed_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: 
 
     The same for every scan: a run casts them once. The sensor's own link is left out.
     """
+    origin = np.broadcast_to(transform_sensor_to_base[:3, 3], directions.shape)
+    return fixed_ranges_from(shape, sensor_link, origin, directions)
+
+
+def fixed_ranges_from(shape: RobotShape, sensor_link: str, origins_m: FloatArray,
+                      directions: FloatArray) -> FloatArray:
+    """Distance along each ray to the parts fixed on the base, but ``sensor_link``'s, (R,).
+
+    ``origins_m`` and ``directions`` (R, 3) are in the base frame: the rays of one sensor,
+    or of several whose links hold no part (cast together, one call for them all).
+    """
     fixed = shape.fixed() & np.array([p.link != sensor_link for p in shape.parts], dtype=bool)
     if not fixed.any():
         return np.full(len(directions), np.inf)
-    origin = np.broadcast_to(transform_sensor_to_base[:3, 3], directions.shape)
+    origin = origins_m
     placed = shape.transforms_to_base(np.zeros((1, len(shape.joints))))
     ranges: FloatArray = cast_parts([p for p, f in zip(shape.parts, fixed, strict=True) if f],
                                     placed[:, fixed], origin, directions)[0]
