@@ -176,6 +176,12 @@ def test_each_scan_is_in_its_sensors_link_with_its_rays_and_limits(create3):
             assert (message.range_min, message.range_max) == \
                 pytest.approx((sensor.min_range_m, sensor.max_range_m))
             assert message.angle_min == pytest.approx(sensor.min_angle_rad)
+            assert message.angle_max == pytest.approx(sensor.max_angle_rad)
+            # Gazebo's RaySensor divides the span by (samples - 1): a cliff sensor's one ray
+            # has a step of +inf
+            span = sensor.max_angle_rad - sensor.min_angle_rad
+            assert message.angle_increment == (math.inf if sensor.samples == 1 else
+                                               pytest.approx(span / (sensor.samples - 1)))
 
 
 def _floor_z_m(urdf: yourdfpy.URDF) -> float:
@@ -228,8 +234,6 @@ def test_cliff_sensors_read_the_floor_distance_their_pose_implies(create3):
                                    atol=ONE_RAY_SLACK_M, err_msg=sensor.name)
 
 
-@pytest.mark.xfail(strict=True, reason="simulate casts a one-sample scan at min_angle "
-                   "(np.linspace); Gazebo Classic's MultiRayShape casts it at yaw 0")
 def test_a_one_sample_cliff_ray_is_cast_along_the_sensor_axis(create3):
     # the cliff scans span [-2.5, 2.5] degrees with one sample: at -2.5 degrees the range is
     # 1/cos(2.5 deg) longer, 1.4e-5 m here, within ONE_RAY_SLACK_M above
@@ -240,9 +244,6 @@ def test_a_one_sample_cliff_ray_is_cast_along_the_sensor_axis(create3):
             assert ranges == pytest.approx([expected[sensor.name]] * len(ranges), abs=1e-6)
 
 
-@pytest.mark.xfail(strict=True, reason="simulate reads -inf for a hit closer than <range><min> "
-                   "(the bumper, 6 and 23 mm ahead); Gazebo Classic starts each ray at min "
-                   "and never sees it")
 def test_ir_sensors_facing_the_wall_read_its_distance(create3):
     face_x_m = create3.urdf.get_transform(FRONT_IR, "base_link")[0, 3] + IR_WALL_M
     for sensor in create3.sensors:

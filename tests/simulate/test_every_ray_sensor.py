@@ -174,6 +174,6 @@ def test_sensors_on_bare_links_cast_the_base_together_as_each_alone(tmp_path):
     for mounted, fixed in zip(body.ray_sensors[1:], together[1:], strict=True):
         rays = lidar.ray_directions(mounted.spec, mounted.transform_sensor_to_base)
         alone = lidar.fixed_ranges(body.shape, mounted.link, mounted.transform_sensor_to_base,
-                                   rays)
+                                   rays, lidar.ray_start_m(mounted.spec))
         np.testing.assert_array_equal(fixed, alone)
     assert np.isfinite(together[2]).all()  # the turned one's rays all meet the base

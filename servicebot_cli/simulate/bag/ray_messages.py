@@ -67,6 +67,10 @@ def serializer_for(spec: LidarSpec) -> tuple[str, Serializer]:
 def laser_scan(scans: Scans, frame: str) -> ByteRows:
     """LaserScan of the middle ring (the only one of a level scan), or of every ring.
 
+    The angles are the sensor's ``<min_angle>`` and ``<max_angle>`` and the step between
+    its rays, as Gazebo's ``RaySensor`` gives them: one ray (cast straight ahead) keeps the
+    configured angles, and its step divides by zero.
+
     ROS 1's ``gazebo_ros_laser`` and ``gazebo_ros_gpu_laser`` copy all of Gazebo's ranges,
     ring after ring, and its intensities (0 here), with ``scan_time`` 0.
     """
@@ -74,7 +78,6 @@ def laser_scan(scans: Scans, frame: str) -> ByteRows:
     rays = len(scans.angles_rad) // rings
     every = spec.output is not None and spec.output.every_ring
     start = 0 if every else (rings // 2) * rays
-    angles = scans.angles_rad[start:start + rays]
     ranges = scans.ranges_m if every else scans.ranges_m[:, start:start + rays]
     layout = cdr.Layout()
     layout.header(frame)
@@ -83,9 +86,11 @@ def laser_scan(scans: Scans, frame: str) -> ByteRows:
         layout.field(name, "<f4")
     layout.sequence("ranges", "<f4", ranges.shape[1])
     layout.sequence("intensities", "<f4", ranges.shape[1] if every else 0)
-    step = (angles[-1] - angles[0]) / max(rays - 1, 1)
+    low, high = spec.min_angle_rad or 0.0, spec.max_angle_rad or 0.0
+    with np.errstate(divide="ignore", invalid="ignore"):  # one ray: Gazebo's 0/0 or x/0
+        step = np.float64(high - low) / (rays - 1)
     return cdr.serialize(layout, scans.times_s, {
-        "angle_min": angles[0], "angle_max": angles[-1],
+        "angle_min": low, "angle_max": high,
         "angle_increment": step, "time_increment": 0.0,
         "scan_time": 0.0 if every else scans.period_s,
         "range_min": spec.min_range_m or 0.0, "range_max": spec.max_range_m or np.inf,

@@ -1,8 +1,11 @@
 """The LIDAR: rays cast in 3D from the sensor's pose against the world, as Gazebo's ray sensor.
 
 Rays leave the sensor frame at the scan angles (Gazebo spaces ``samples`` rays evenly from
-``min_angle`` to ``max_angle``, both included), in each ring of ``<vertical>`` samples (one
-level ring without), and are cast against the floor and every obstacle. Returns at or
+``min_angle`` to ``max_angle``, both included; one ray goes straight ahead), in each ring of
+``<vertical>`` samples (one level ring without), and are cast against the floor, every
+obstacle and the robot's own links. Gazebo Classic's rays begin at ``min``
+(``MultiRayShape``): the robot's own parts nearer than that (a bumper in front of an IR
+sensor) are not seen; an obstacle nearer than that reads -inf. Returns at or
 closer than ``min`` read -inf and those at or beyond ``max`` (or none) +inf, as REP 117 and
 ``sensor_msgs/LaserScan`` say; the others get the gaussian noise and are clamped into
 ``[min, max]``, as Gazebo Classic's ray sensors (``RaySensor.cc``, ``GpuRaySensor.cc``) and
@@ -67,8 +70,8 @@ def scan_angles(spec: LidarSpec) -> FloatArray:
     if problem is not None or not spec.samples or spec.min_angle_rad is None \
             or spec.max_angle_rad is None:
         raise DescriptionError(f"the ray sensor on {spec.frame}: {problem}")
-    if spec.samples == 1:
-        return np.array([spec.min_angle_rad])
+    if spec.samples == 1:  # Gazebo's MultiRayShape: one ray, straight ahead
+        return np.zeros(1)
     return np.linspace(spec.min_angle_rad, spec.max_angle_rad, spec.samples)
 
 
@@ -147,40 +150,66 @@ def ray_directions(spec: LidarSpec, transform_sensor_to_base: FloatArray) -> Flo
                       dtype=np.float64)
 
 
+def ray_start_m(spec: LidarSpec) -> float:
+    """Where the rays begin, from the sensor [m]: at ``<range><min>``, as Gazebo's do."""
+    return max(spec.min_range_m or 0.0, 0.0)
+
+
 def fixed_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: FloatArray,
-                 directions: FloatArray) -> FloatArray:
+                 directions: FloatArray, start_m: float = 0.0) -> FloatArray:
     """Distance along each ray to the parts fixed on the base, shape (R,).
 
-    The same for every scan: a run casts them once. The sensor's own link is left out.
+    The same for every scan: a run casts them once. The sensor's own link is left out; the
+    rays begin ``start_m`` from the sensor (:func:`ray_start_m`).
     """
     origin = np.broadcast_to(transform_sensor_to_base[:3, 3], directions.shape)
-    return fixed_ranges_from(shape, sensor_link, origin, directions)
+    return fixed_ranges_from(shape, sensor_link, origin, directions,
+                             np.full(len(directions), start_m))
 
 
 def fixed_ranges_from(shape: RobotShape, sensor_link: str, origins_m: FloatArray,
-                      directions: FloatArray) -> FloatArray:
+                      directions: FloatArray, starts_m: FloatArray) -> FloatArray:
     """Distance along each ray to the parts fixed on the base, but ``sensor_link``'s, (R,).
 
     ``origins_m`` and ``directions`` (R, 3) are in the base frame: the rays of one sensor,
-    or of several whose links hold no part (cast together, one call for them all).
+    or of several whose links hold no part (cast together, one call for them all). Each ray
+    begins ``starts_m`` (R,) along its direction: nearer parts are not seen.
     """
     fixed = shape.fixed() & np.array([p.link != sensor_link for p in shape.parts], dtype=bool)
     if not fixed.any():
         return np.full(len(directions), np.inf)
-    origin = origins_m
     placed = shape.transforms_to_base(np.zeros((1, len(shape.joints))))
-    ranges: FloatArray = cast_parts([p for p, f in zip(shape.parts, fixed, strict=True) if f],
-                                    placed[:, fixed], origin, directions)[0]
+    ranges: FloatArray = _cast_beyond([p for p, f in zip(shape.parts, fixed, strict=True) if f],
+                                      placed[:, fixed], origins_m, directions, starts_m)[0]
     return ranges
+
+
+def _cast_beyond(parts: list[Part], placed: FloatArray, origins_m: FloatArray,
+                 directions: FloatArray, starts_m: FloatArray | float) -> FloatArray:
+    """:func:`cast_parts`, the rays beginning ``starts_m`` (R,) along their directions.
+
+    A ray that meets nothing nearer than its start is the ray cast from the sensor (the same
+    bits); one that does is cast again from its start, and that hit is its distance.
+    """
+    hits: FloatArray = cast_parts(parts, placed, origins_m, directions)
+    starts = np.broadcast_to(np.asarray(starts_m, dtype=np.float64), (len(directions),))
+    near = np.flatnonzero((hits < starts).any(axis=0))
+    if len(near):
+        origins = np.broadcast_to(origins_m, directions.shape)[near]
+        begun = origins + starts[near, None] * directions[near]
+        again = cast_parts(parts, placed, begun, directions[near]) + starts[near]
+        hits[:, near] = np.where(hits[:, near] < starts[near], again, hits[:, near])
+    return hits
 
 
 def own_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: FloatArray,
                directions: FloatArray, q: FloatArray,
                parts_to_base: FloatArray | None = None,
-               fixed_m: FloatArray | None = None) -> FloatArray:
+               fixed_m: FloatArray | None = None, start_m: float = 0.0) -> FloatArray:
     """Distance along each ray to the robot's own links, per scan, shape (scans, R).
 
-    The sensor's own link is left out (Gazebo's ray sensor ignores the link it is on). Parts
+    The sensor's own link is left out (Gazebo's ray sensor ignores the link it is on), and
+    the rays begin ``start_m`` from the sensor (:func:`ray_start_m`). Parts
     fixed on the base are cast once (``fixed_m``: :func:`fixed_ranges`, when the caller
     keeps it); the arm's once per distinct arm configuration, those of a batch of
     configurations whose sphere never reaches a level scan's plane not at all.
@@ -193,13 +222,15 @@ def own_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: Fl
         q: The moving joints' positions at each scan, shape (scans, J).
         parts_to_base: ``shape.transforms_to_base(q)`` when the caller has it already.
         fixed_m: :func:`fixed_ranges` of these rays, when the caller has it already.
+        start_m: Where the rays begin [m].
     """
     keep = np.array([p.link != sensor_link for p in shape.parts], dtype=bool)
     moving = ~shape.fixed() & keep
     origin = np.broadcast_to(transform_sensor_to_base[:3, 3], directions.shape)
     parts = shape.parts
     if fixed_m is None:
-        fixed_m = fixed_ranges(shape, sensor_link, transform_sensor_to_base, directions)
+        fixed_m = fixed_ranges(shape, sensor_link, transform_sensor_to_base, directions,
+                               start_m)
     out = np.empty((len(q), len(directions)))
     out[:] = fixed_m
     if moving.any() and len(q):
@@ -213,8 +244,8 @@ def own_ranges(shape: RobotShape, sensor_link: str, transform_sensor_to_base: Fl
             seen = _may_be_seen(moved, placed, transform_sensor_to_base[:3, 3], directions)
             if seen.any():  # the parts no ray can reach are left out; a batch of none, too
                 rows = slice(start, start + len(placed))
-                hits[rows] = cast_parts([p for p, k in zip(moved, seen, strict=True) if k],
-                                        placed[:, seen], origin, directions)
+                hits[rows] = _cast_beyond([p for p, k in zip(moved, seen, strict=True) if k],
+                                          placed[:, seen], origin, directions, start_m)
         np.minimum(out, hits[index.ravel()], out=out)
     return out
 

@@ -56,10 +56,12 @@ class ScanCaster:
     def __call__(self, job: ScanJob) -> lidar.Scans:
         """The job's scans: the world and the robot's own links (the arm where it is)."""
         spec, mount = self.mounted.spec, self.mounted.transform_sensor_to_base
+        start_m = lidar.ray_start_m(spec)
         if self.fixed_m is None:
-            self.fixed_m = lidar.fixed_ranges(self.shape, self.mounted.link, mount, self.rays)
+            self.fixed_m = lidar.fixed_ranges(self.shape, self.mounted.link, mount, self.rays,
+                                              start_m)
         own = lidar.own_ranges(self.shape, self.mounted.link, mount, self.rays, job.arm_q_rad,
-                               job.parts_to_base, self.fixed_m)
+                               job.parts_to_base, self.fixed_m, start_m)
         return lidar.scan(spec, mount, self.base_height_m, job.truth, job.times_s,
                           self.solids, self.meshes, self.noise_m, own_m=own,
                           period_s=self.period_s)
@@ -82,7 +84,10 @@ def fixed_ranges_of(mounted: Sequence[Mounted[LidarSpec]],
             for i in bare]
     origins = [np.broadcast_to(mounted[i].transform_sensor_to_base[:3, 3], r.shape)
                for i, r in zip(bare, rays, strict=True)]
-    together = lidar.fixed_ranges_from(shape, "", np.concatenate(origins), np.concatenate(rays))
+    starts = [np.full(len(r), lidar.ray_start_m(mounted[i].spec))
+              for i, r in zip(bare, rays, strict=True)]
+    together = lidar.fixed_ranges_from(shape, "", np.concatenate(origins), np.concatenate(rays),
+                                       np.concatenate(starts))
     for i, part in zip(bare, np.split(together, np.cumsum([len(r) for r in rays])[:-1]),
                        strict=True):
         out[i] = part
