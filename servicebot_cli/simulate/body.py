@@ -30,6 +30,7 @@ from servicebot_cli.description.sensors import (
     lidar_spec,
 )
 from servicebot_cli.kinematics.drive_geometry import DriveGeometry, drive_geometry
+from servicebot_cli.kinematics.running_gear import chassis_joints
 from servicebot_cli.kinematics.steering import refuse_steered_wheels
 from servicebot_cli.kinematics.transforms import pose_matrix
 from servicebot_cli.simulate.model_facts import FactsAhead, description_first
@@ -67,7 +68,8 @@ class SimRobot:
         robot: The shared description.
         geometry: Wheels, radius, track, velocity limits.
         joint_space: Movable joints of the planar-base model (one Pinocchio configuration).
-        arm_joints: Movable joints that are not wheels, URDF order.
+        arm_joints: Movable joints that are neither drive wheels nor running gear (casters,
+            suspensions, wheel drops: ``inspect``'s chassis), URDF order.
         base_height_m: Height of the root link's origin above the floor (wheels touching it).
         shape: Every link's collision parts, posed by the arm joints.
         ray_sensors: Every published ray sensor (LIDARs, sonars, cliff and IR range
@@ -119,9 +121,10 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
         with description_first(ahead):
             geometry = drive_geometry(robot)
             refuse_steered_wheels(robot)
+        gear = {w.joint for w in geometry.wheels}
+        gear.update(chassis_joints(robot, [w.joint for w in geometry.wheels]))
         space = ahead.result().joint_space
-        wheels = {w.joint for w in geometry.wheels}
-        arm_joints = tuple(n for n in space.names if n not in wheels)
+        arm_joints = tuple(n for n in space.names if n not in gear)
         with description_first(ahead):
             shape = _shape(robot, arm_joints, resolver)
         placements = ahead.result().placements

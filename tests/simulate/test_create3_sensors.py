@@ -262,3 +262,15 @@ def test_ir_sensors_facing_the_wall_read_its_distance(create3):
         else:
             error_m = np.abs(np.array(readings) - expected)
             assert error_m.max() < 1e-6, (sensor.name, expected, readings[0])
+
+
+def test_the_wheel_drops_are_running_gear_not_an_arm(create3):
+    """Its wheels hang from prismatic wheel-drop joints: inspect's chassis, as a suspension's
+    rockers are; the summary has no arm and no end effector, and the drops' states are sent."""
+    drops = [j.name for j in create3.urdf.robot.joints if j.type == "prismatic"]
+    assert len(drops) == 2
+    assert create3.summary["arm_final_positions_rad"] == {}
+    assert create3.summary["end_effector"] is None
+    states = create3.messages["/joint_states"]
+    assert set(drops) <= set(states[-1].name)
+    assert all(states[-1].position[list(states[-1].name).index(d)] == 0.0 for d in drops)
