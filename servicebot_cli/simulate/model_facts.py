@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.common.errors import DescriptionError, ServicebotError
 from servicebot_cli.common.forked import Worker, second_core
 from servicebot_cli.description.joint_space import JointSpace
 
@@ -57,7 +57,12 @@ def model_facts(robot: RobotDescription) -> ModelFacts:
 
     model = robot.model_with_base("planar")  # refused as the fixed-base one of loading is
     space = JointSpace.of(model, robot.movable_joints)
-    data = model.createData()
+    try:
+        data = model.createData()
+    except MemoryError:  # its dynamics' tables grow with the square of the joints
+        raise DescriptionError(
+            f"{robot.display}: too large to simulate: Pinocchio's data for its {len(space.names)}"
+            " joints does not fit in this machine's memory") from None
     pin.framesForwardKinematics(model, data, space.neutral())
     # Pinocchio's data.oMf[i] is transform_frame_to_world; the base sits at the origin.
     placements = {frame.name: np.array(data.oMf[i].homogeneous)
@@ -100,8 +105,8 @@ class FactsAhead:
             except Exception as exc:  # the same error each time it is asked for
                 self._error = exc
                 raise
-            finally:
-                self._worker.close(finished=self._error is None)
+            finally:  # Ctrl-C or a signal while waiting: the process is killed, not waited for
+                self._worker.close(finished=self._facts is not None)
         return self._facts
 
     def close(self) -> None:
@@ -121,12 +126,18 @@ def description_first(ahead: FactsAhead) -> Iterator[None]:
     """A user's error raised inside comes after the description's own, if it has one.
 
     Loading builds the model before anything else is read; so the model's error is the one
-    reported when both are wrong, whichever step finds its own error first.
+    reported when both are wrong, whichever step finds its own error first. Anything else
+    that stops the model's process (it was killed, no memory) leaves the step's error first.
     """
     try:
         yield
     except ServicebotError:
-        ahead.result()
+        try:
+            ahead.result()
+        except DescriptionError:
+            raise
+        except Exception:  # noqa: BLE001,S110 -- not the description's error: the step's first
+            pass
         raise
 
 

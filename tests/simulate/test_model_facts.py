@@ -12,6 +12,8 @@ import os
 import signal
 import subprocess
 import sys
+import time
+from pathlib import Path
 
 import numpy as np
 import pinocchio as pin
@@ -26,7 +28,7 @@ from servicebot_cli.simulate.session import Outputs, run_and_write
 from servicebot_cli.simulate.summary import _arm_tip
 from tests.check.helpers import fixture
 from tests.conftest import assert_one_line_error, run_servicebot
-from tests.processes import reaped
+from tests.processes import children, reaped
 
 REFUSED = fixture("SB701")  # a URDF Pinocchio refuses
 
@@ -127,3 +129,44 @@ def test_a_killed_worker_is_one_error_each_time_it_is_asked():
     assert errors[0] is errors[1] and "model-building process" in str(errors[0])
     ahead.close()
     assert reaped(pid)
+
+
+def _chain(path, joints: int, kind: str = "revolute"):
+    """A URDF of ``joints`` joints, in a row (revolute) or all on the base (fixed)."""
+    limit = '<limit lower="-1" upper="1" effort="1" velocity="1"/>' if kind == "revolute" else ""
+    links = "".join(
+        f'<link name="x{i}"/><joint name="j{i}" type="{kind}"><parent link="'
+        f'{"base_link" if i == 0 or kind == "fixed" else f"x{i - 1}"}"/><child link="x{i}"/>'
+        f'<origin xyz="0 0 0.001"/><axis xyz="0 0 1"/>{limit}</joint>' for i in range(joints))
+    path.write_text(f'<robot name="chain"><link name="base_link"/>{links}</robot>')
+    return path
+
+
+@pytest.mark.skipif(not second_core(), reason="one core: the model is built in-process")
+def test_ctrl_c_while_the_model_is_built_stops_its_process_at_once(tmp_path):
+    # 40,000 fixed joints: Pinocchio takes about 10 s to build them (in 350 MB), while the
+    # main process finds at once that the scenario is wrong and waits for the model's verdict
+    robot = _chain(tmp_path / "chain.urdf", 40_000, "fixed")
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("duration_s: -1\n")
+    process = subprocess.Popen([sys.executable, "-m", "servicebot_cli", "simulate", robot,
+                                "--headless", "-s", bad], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, start_new_session=True)
+    deadline = time.monotonic() + 60
+    while not children(process.pid):
+        assert process.poll() is None and time.monotonic() < deadline
+        time.sleep(0.01)
+    [child] = children(process.pid)
+    time.sleep(1.0)
+    os.killpg(process.pid, signal.SIGINT)  # Ctrl-C: the model's process ignores it
+    sent = time.monotonic()
+    _, stderr = process.communicate(timeout=60)
+    assert time.monotonic() - sent < 4, "waited for the model instead of stopping it"
+    assert process.returncode == 130, stderr
+    assert not Path(f"/proc/{child}").exists()
+
+
+def test_a_model_too_large_for_memory_is_one_error_line(tmp_path):
+    # Pinocchio's data for n joints in a row takes memory in n cubed: 3,000 need terabytes
+    result = run_servicebot("simulate", _chain(tmp_path / "chain.urdf", 3000), "--headless")
+    assert_one_line_error(result, 2, "too large to simulate", "3000 joints")
