@@ -129,7 +129,6 @@ class Summarizer:
         self.distance_sum = -0.0  # -0.0 + v == v: an empty running sum
         self.max_drift, self.final_drift = 0.0, (0.0, 0.0)
         self.odometry_pose: Pose | None = None
-        self.joint_positions: FloatArray | None = None
         self.contacts: list[Contact] = []
         self.self_collisions: list[SelfCollision] = []
         self.last: SimResult | None = None
@@ -145,8 +144,6 @@ class Summarizer:
             self.max_drift = max(self.max_drift, float(drift.max()))
             self.final_drift = (float(drift[-1]), float(yaw[-1]))
             self.odometry_pose = _pose(ox[-1], oy[-1], oyaw[-1])
-        if len(piece.joints.times_s):
-            self.joint_positions = piece.joints.positions[-1]
         self.contacts += piece.contacts
         self.self_collisions += [{"time_s": c.time_s, "first": c.first, "second": c.second}
                                  for c in piece.self_contacts]
@@ -183,7 +180,7 @@ class Summarizer:
             "arm_final_positions_rad": dict(zip(last.body.arm_joints,
                                                 last.arm_positions_rad[-1].tolist(),
                                                 strict=True)),
-            "end_effector": end_effector(last, self.joint_positions),
+            "end_effector": end_effector(last),
             "messages": dict(self.messages),
             "controller": _controller(last),
         }
@@ -208,22 +205,19 @@ def _collision(contact: Contact) -> Collision:
             "y_m": pose["y_m"], "yaw_rad": pose["yaw_rad"]}
 
 
-def end_effector(result: SimResult, joint_positions: FloatArray | None) -> EndEffector | None:
+def end_effector(result: SimResult) -> EndEffector | None:
     """World position of the arm's last frame in the final configuration of the whole robot.
 
-    The base's pose is the last piece's (``result``); the arm joints are at the last joint
-    state published (``joint_positions``, URDF order; all zero when none was). The frame is
-    placed by the robot's shape, as every link the run poses (the same chain as Pinocchio's
-    forward kinematics: a test holds them together).
+    The base's pose and the arm's joints are the last piece's (``result``), the arm where
+    ``arm_final_positions_rad`` says. The frame is placed by the robot's shape, as every
+    link the run poses (the same chain as Pinocchio's forward kinematics: a test holds them
+    together).
     """
     body = result.body
     tip = _arm_tip(body)
     if tip is None:
         return None
-    space = body.joint_space
-    values = (joint_positions if joint_positions is not None
-              else np.zeros(len(space.names)))
-    arm = np.array([[values[space.names.index(name)] for name in body.shape.joints]])
+    arm = result.arm_positions_rad[-1:]  # (1, arm joints), the shape's joints
     tip_to_base = body.shape.link_to_base(arm, tip)[0]
     base_to_world = planar_matrix(result.truth.x_m[-1], result.truth.y_m[-1],
                                   result.truth.yaw_rad[-1], body.base_height_m)

@@ -8,6 +8,7 @@ robot's shape, must be where Pinocchio's forward kinematics puts it.
 
 from __future__ import annotations
 
+import json
 import os
 import signal
 import subprocess
@@ -170,3 +171,51 @@ def test_a_model_too_large_for_memory_is_one_error_line(tmp_path):
     # Pinocchio's data for n joints in a row takes memory in n cubed: 3,000 need terabytes
     result = run_servicebot("simulate", _chain(tmp_path / "chain.urdf", 3000), "--headless")
     assert_one_line_error(result, 2, "too large to simulate", "3000 joints")
+
+
+_ARM = """
+  <link name="a1"><collision><geometry><box size="0.05 0.05 0.1"/></geometry></collision></link>
+  <link name="a2"><collision><geometry><box size="0.05 0.05 0.1"/></geometry></collision></link>
+  <link name="tool"/>
+  <joint name="j1" type="revolute"><parent link="base_link"/><child link="a1"/>
+    <origin xyz="0 0 0.2"/><axis xyz="0 0 1"/>
+    <limit lower="-3" upper="3" effort="1" velocity="1"/></joint>
+  <joint name="j2" type="revolute"><parent link="a1"/><child link="a2"/>
+    <origin xyz="0.1 0 0.05"/><axis xyz="0 1 0"/>
+    <limit lower="-3" upper="3" effort="1" velocity="1"/></joint>
+  <joint name="jt" type="fixed"><parent link="a2"/><child link="tool"/>
+    <origin xyz="0.3 0 0"/></joint>
+  <gazebo><plugin name="jsp" filename="libgazebo_ros_joint_state_publisher.so">
+    <update_rate>50</update_rate>{joints}</plugin></gazebo>
+"""
+
+
+@pytest.mark.parametrize("listed", [["j2", "j1"], ["j2"]])
+def test_the_end_effector_follows_the_arm_whatever_joint_states_are_sent(tmp_path, listed):
+    """A joint-state publisher may send the arm's joints in another order, or some of them:
+    the end effector is where the arm's final positions put it, as ``fk`` places it."""
+    import shutil
+
+    package = tmp_path / "sam_bot_description"
+    shutil.copytree(Path(__file__).parents[1] / "fixtures" / "sam_bot_description", package)
+    urdf = package / "src" / "description" / "sam_bot_description.urdf"
+    joints = "".join(f"<joint_name>{name}</joint_name>" for name in listed)
+    urdf.write_text(urdf.read_text().replace("</robot>", _ARM.format(joints=joints)
+                                             + "</robot>"))
+    scenario = tmp_path / "arm.yaml"
+    scenario.write_text("duration_s: 2\ncmd_vel:\n  - {duration_s: 2, linear_m_s: 0}\n"
+                        "arm:\n  joint_names: [j1, j2]\n  points:\n"
+                        "    - {time_from_start_s: 1.5, positions: [1.0, -0.5]}\n")
+    result = run_servicebot("simulate", urdf, "--headless", "-s", scenario, "--format", "json")
+    assert result.returncode == 0, result.stderr
+    summary = json.loads(result.stdout)
+    assert summary["arm_final_positions_rad"] == {"j1": 1.0, "j2": -0.5}
+    fk = run_servicebot("fk", urdf, "--frame", "tool", "-j", "j1=1.0", "-j", "j2=-0.5",
+                        "--format", "json")
+    assert fk.returncode == 0, fk.stderr
+    [expected] = json.loads(fk.stdout)["poses"]
+    effector = summary["end_effector"]
+    assert effector["frame"] == "tool"
+    # fk places the tool on the root link; the run's base stands still at the origin
+    assert effector["position_m"][:2] == pytest.approx(expected["position_m"][:2], abs=1e-12)
+    assert abs(expected["position_m"][0]) > 0.1  # the arm turned: not its zero pose
