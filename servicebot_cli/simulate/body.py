@@ -19,6 +19,7 @@ import numpy.typing as npt
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.description.joint_space import JointSpace
 from servicebot_cli.description.model_plugins import model_imu
+from servicebot_cli.description.ray_output import LASER_SCAN
 from servicebot_cli.description.sensors import (
     CAMERA_TYPES,
     LIDAR_TYPES,
@@ -53,11 +54,15 @@ Placement = Callable[[str], FloatArray]
 
 @dataclass(frozen=True)
 class Mounted(Generic[SpecT]):
-    """A sensor and where it sits: ``transform_sensor_to_base`` (4, 4), and its link."""
+    """A sensor and where it sits: ``transform_sensor_to_base`` (4, 4), its link, its name.
+
+    The name is the URDF's ``<sensor name>`` (empty for a model plugin's IMU).
+    """
 
     spec: SpecT
     transform_sensor_to_base: FloatArray
     link: str = ""
+    name: str = ""
 
 
 @dataclass(frozen=True, eq=False)
@@ -161,19 +166,45 @@ def _mount_rays(robot: RobotDescription, placement: Placement) -> tuple[Mounted[
     A Create 3 base (TurtleBot 4) declares one-ray cliff and IR sensors before its LIDAR;
     the LIDAR comes first, so it keeps the noise stream and the ``scan.csv`` it always had.
     """
-    found = sorted(((sensor, spec) for sensor, spec in _published(robot, LIDAR_TYPES,
-                                                                   _published_lidar)
-                    if cast_problem(spec) is None),
-                   key=lambda f: -(f[1].samples or 0))  # stable: URDF order among equals
-    return tuple(_placed(robot, sensor, spec, placement) for sensor, spec in found)
+    cast, _ = _castable_rays(robot)
+    return tuple(_placed(robot, sensor, spec, placement) for sensor, spec in cast)
 
 
 def uncast_ray_notes(robot: RobotDescription) -> tuple[str, ...]:
-    """A stderr note for each published ray sensor the simulator cannot cast (left out)."""
-    return tuple(f"note: /{(spec.topic or '').lstrip('/')} (ray sensor '{sensor.name}') is "
-                 f"not simulated: {problem}"
-                 for sensor, spec in _published(robot, LIDAR_TYPES, _published_lidar)
-                 for problem in [cast_problem(spec)] if problem is not None)
+    """A stderr note for each published ray sensor the simulator leaves out, and why."""
+    return _castable_rays(robot)[1]
+
+
+def _castable_rays(robot: RobotDescription
+                   ) -> tuple[list[tuple[Sensor, LidarSpec]], tuple[str, ...]]:
+    """The published ray sensors the simulator casts, in :func:`_mount_rays`' order, and notes.
+
+    A note for each it leaves out: rays it cannot cast, or a topic another of them publishes
+    in another message type (one topic holds one type in a bag).
+    """
+    cast: list[tuple[Sensor, LidarSpec]] = []
+    notes: list[str] = []
+    for sensor, spec in _published(robot, LIDAR_TYPES, _published_lidar):
+        problem = cast_problem(spec)
+        if problem is None:
+            cast.append((sensor, spec))
+        else:
+            notes.append(f"note: /{(spec.topic or '').lstrip('/')} (ray sensor "
+                         f"'{sensor.name}') is not simulated: {problem}")
+    cast.sort(key=lambda f: -(f[1].samples or 0))  # stable: URDF order among equals
+    types: dict[str | None, tuple[str, str]] = {}
+    kept = []
+    for sensor, spec in cast:
+        message = spec.output.message if spec.output else LASER_SCAN
+        first = types.setdefault(spec.topic, (message, sensor.name or ""))
+        if first[0] == message:
+            kept.append((sensor, spec))
+            continue
+        notes.append(f"note: /{(spec.topic or '').lstrip('/')} (ray sensor '{sensor.name}') "
+                     f"is not simulated: ray sensor '{first[1]}' publishes "
+                     f"{first[0].replace('/msg/', '/')} on that topic, and this one "
+                     f"{message.replace('/msg/', '/')}; give one of them its own topic")
+    return kept, tuple(notes)
 
 
 def _published(robot: RobotDescription, types: tuple[str, ...],
@@ -192,7 +223,8 @@ def _placed(robot: RobotDescription, sensor: Sensor, spec: SpecT,
     """
     assert sensor.reference is not None  # _published keeps sensors on a link only
     robot.require_frame(sensor.reference)
-    return Mounted(spec, placement(sensor.reference) @ pose_matrix(sensor.pose), sensor.reference)
+    return Mounted(spec, placement(sensor.reference) @ pose_matrix(sensor.pose), sensor.reference,
+                   sensor.name or "")
 
 
 def _published_lidar(sensor: Sensor) -> LidarSpec | None:

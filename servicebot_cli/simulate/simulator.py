@@ -349,12 +349,14 @@ def _joint_positions(body: SimRobot, sides: FloatArray,
 def scan_stream(index: int, mounted: Mounted[LidarSpec]) -> str:
     """The name of ray sensor ``index``'s noise stream.
 
-    The first (the LIDAR, :attr:`SimRobot.ray_sensors`) draws from ``scan``, as the only
-    ray sensor always did; each other from one named after its topic and its link (a PMB2's
-    three sonars share a topic), so that one sensor more or less leaves the others' noise
-    as it was.
+    The first (the one with the most rays, :attr:`SimRobot.ray_sensors`) draws from
+    ``scan``, as the only ray sensor always did; each other from one named after its topic,
+    its link and its name (a PMB2's three sonars share a topic; two sensors may share a
+    link), so that a sensor with fewer rays more or less leaves the others' noise as it was.
     """
-    return "scan" if index == 0 else f"scan {mounted.spec.topic} on {mounted.link}"
+    if index == 0:
+        return "scan"
+    return f"scan {mounted.spec.topic} on {mounted.link}: {mounted.name}"
 
 
 def _rate(spec: LidarSpec | ImuSpec | CameraSpec, scenario: Scenario) -> float:

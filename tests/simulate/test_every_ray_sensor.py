@@ -16,7 +16,14 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from tests.simulate.plugin_robots import SAM_BOT, bag_messages, edited, listed_topics
+from tests.conftest import run_servicebot
+from tests.simulate.plugin_robots import (
+    SAM_BOT,
+    bag_messages,
+    edited,
+    listed_topics,
+    run_with_bag,
+)
 
 SENSOR = """
   <link name="{name}_link"/>
@@ -177,3 +184,35 @@ def test_sensors_on_bare_links_cast_the_base_together_as_each_alone(tmp_path):
                                    rays, lidar.ray_start_m(mounted.spec))
         np.testing.assert_array_equal(fixed, alone)
     assert np.isfinite(together[2]).all()  # the turned one's rays all meet the base
+
+
+def test_two_sensors_on_one_link_and_topic_draw_their_own_noise(tmp_path):
+    """A bracket with two sonars publishing on one topic: each its own noise stream."""
+    from servicebot_cli.description.loader import RobotSource, load
+    from servicebot_cli.simulate.body import sim_robot
+    from servicebot_cli.simulate.simulator import scan_stream
+
+    twin = SONAR.replace('name="sonar_front"', 'name="sonar_twin"').replace(
+        '<link name="sonar_front_link"/>', "").split('<gazebo reference="sonar_front_link">')[1]
+    robot = _robot(tmp_path, SONAR, '<gazebo reference="sonar_front_link">' + twin)
+    body = sim_robot(load(RobotSource.of(robot)))
+    sonars = [(i, m) for i, m in enumerate(body.ray_sensors) if m.link == "sonar_front_link"]
+    assert [m.name for _, m in sonars] == ["sonar_front", "sonar_twin"]
+    assert sonars[0][1].spec.topic == sonars[1][1].spec.topic
+    assert scan_stream(*sonars[0]) != scan_stream(*sonars[1])
+
+
+def test_a_topic_two_sensors_publish_in_two_types_keeps_the_first_and_says_why(tmp_path):
+    """One topic holds one message type in a bag: the IR sensor's LaserScan on the sonar's
+    Range topic is left out with a note, and the bag reads back whole."""
+    pytest.importorskip("rosbags")
+    clash = IR.replace("~/out:=ir_rear", "~/out:=sonar_front")
+    robot = _robot(tmp_path, SONAR, clash)
+    _, messages = run_with_bag(robot, tmp_path)
+    assert "/ir_rear" not in messages
+    assert {type(m).__name__ for m in messages["/sonar_front"]} == {"sensor_msgs__msg__Range"}
+    assert len(messages["/sonar_front"]) == 20  # the sonar's 10 Hz alone, 2 s
+    notes = run_servicebot("simulate", robot, "--headless", "--duration-s", "0.5").stderr
+    assert ("note: /sonar_front (ray sensor 'ir_rear') is not simulated: ray sensor "
+            "'sonar_front' publishes sensor_msgs/Range on that topic, and this one "
+            "sensor_msgs/LaserScan; give one of them its own topic") in notes
