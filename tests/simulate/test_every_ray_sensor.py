@@ -216,3 +216,15 @@ def test_a_topic_two_sensors_publish_in_two_types_keeps_the_first_and_says_why(t
     assert ("note: /sonar_front (ray sensor 'ir_rear') is not simulated: ray sensor "
             "'sonar_front' publishes sensor_msgs/Range on that topic, and this one "
             "sensor_msgs/LaserScan; give one of them its own topic") in notes
+
+
+def test_a_topic_too_long_for_a_file_name_still_gets_its_csv_file(tmp_path):
+    """A 290-character topic: its file name is cut to fit (255 bytes at most)."""
+    topic = "ir/" + "x" * 287
+    robot = _robot(tmp_path, IR.replace("~/out:=ir_rear", f"~/out:={topic}"))
+    out = tmp_path / "out"
+    result = run_servicebot("simulate", robot, "--headless", "--duration-s", "0.5",
+                            "--out", out)
+    assert result.returncode == 0, result.stderr
+    [name] = [p.name for p in out.iterdir() if p.name.startswith("scan_")]
+    assert name == f"scan_{('ir_' + 'x' * 287)[:100]}.csv"

@@ -147,12 +147,13 @@ def scan_files(body: SimRobot) -> list[str]:
     """The CSV file of each of ``body``'s ray sensors, in order.
 
     The first (the LIDAR) writes ``scan.csv``; each other ``scan_TOPIC.csv``, its topic's
-    name with ``/`` as ``_`` (``/ir_intensity_left`` -> ``scan_ir_intensity_left.csv``),
-    numbered ``_2``, ``_3``... where two would share one name.
+    name with ``/`` as ``_`` (``/ir_intensity_left`` -> ``scan_ir_intensity_left.csv``), cut
+    at 100 characters (a file name holds 255 bytes), numbered ``_2``, ``_3``... where two
+    would share one name.
     """
     out: list[str] = []
     for index, mounted in enumerate(body.ray_sensors):
-        slug = re.sub(r"[^A-Za-z0-9_.-]+", "_", (mounted.spec.topic or "").strip("/"))
+        slug = re.sub(r"[^A-Za-z0-9_.-]+", "_", (mounted.spec.topic or "").strip("/"))[:100]
         stem = "scan" if index == 0 else f"scan_{slug}"
         name, count = f"{stem}.csv", 1
         while name in out:
