@@ -39,8 +39,6 @@ from servicebot_cli.simulate.sensors.lidar import cast_problem
 from servicebot_cli.simulate.shape import RobotShape, robot_shape
 
 if TYPE_CHECKING:
-    import pinocchio as pin
-
     from servicebot_cli.description.elements import Joint
     from servicebot_cli.description.extensions import Sensor
     from servicebot_cli.description.packages import PackageResolver
@@ -102,11 +100,6 @@ class SimRobot:
     def root_link(self) -> str:
         """The base frame's name."""
         return self.robot.root_link or "base_link"
-
-    @property
-    def model(self) -> pin.Model:
-        """The planar-base Pinocchio model."""
-        return self.robot.model_with_base("planar")
 
 
 def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = None,
