@@ -54,6 +54,10 @@ FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.int64]
 PIECE_S = 30.0
 """Simulated seconds per piece: long enough for numpy to work in bulk, short for memory."""
+SCAN_PIECE_BYTES = 256_000_000
+"""At most about this many bytes of scans in one piece (pieces are cut shorter)."""
+SCAN_BYTES = 32
+"""Bytes a piece holds per ray and scan: true ranges, noise, readings, their temporaries."""
 AHEAD = 2
 """Pieces the simulator may run ahead of the worker doing their pose work: the worker's
 first piece is its slowest (the first clearance search), and the simulator no longer waits
@@ -114,7 +118,8 @@ def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[So
 
     The scenario is checked against the robot and the world before the first piece. Pieces
     with camera frames are cut shorter so that their frames stay within
-    :data:`~servicebot_cli.simulate.sensors.camera_stream.PIECE_BYTES`. With more than one
+    :data:`~servicebot_cli.simulate.sensors.camera_stream.PIECE_BYTES`, and those of many
+    rays so that their scans stay within :data:`SCAN_PIECE_BYTES`. With more than one
     piece and a second core, what each piece computes from its poses alone (its LIDAR
     scans and self contacts, :mod:`.pose_work`) is done by a forked worker process
     (:mod:`.worker`) while the next piece is simulated; it is stopped and reaped when the
@@ -126,6 +131,10 @@ def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[So
     """
     run = _Run(body, scenario, seed, list(solids), meshes)
     step = max(1, round(piece_s / run.dt_s)) if math.isfinite(piece_s) else run.ticks
+    scan_bytes_s = sum(SCAN_BYTES * lidar.ray_count(m.spec) * clock.rate_hz
+                       for m, clock in zip(body.ray_sensors, run.scan_clocks, strict=True))
+    if scan_bytes_s and math.isfinite(piece_s):  # a piece's ranges within SCAN_PIECE_BYTES
+        step = min(step, max(1, int(SCAN_PIECE_BYTES / scan_bytes_s / run.dt_s)))
     if run.images is not None and math.isfinite(piece_s):  # frames kept within PIECE_BYTES
         from servicebot_cli.simulate.sensors.camera_stream import PIECE_BYTES
 
@@ -359,6 +368,17 @@ def scan_stream(index: int, mounted: Mounted[LidarSpec]) -> str:
     return f"scan {mounted.spec.topic} on {mounted.link}: {mounted.name}"
 
 
+GAZEBO_STEP_HZ = 1000.0
+"""Gazebo's default physics rate (a 1 ms step): no sensor updates more often."""
+
+
 def _rate(spec: LidarSpec | ImuSpec | CameraSpec, scenario: Scenario) -> float:
-    """A sensor's update rate [Hz]; without one Gazebo updates every step, here every tick."""
-    return float(spec.update_rate_hz or scenario.controller.update_rate_hz)
+    """A sensor's update rate [Hz], at most :data:`GAZEBO_STEP_HZ`.
+
+    Without one (or with 0 or less, or not a number) Gazebo updates it every physics step;
+    here every tick.
+    """
+    rate = spec.update_rate_hz
+    if rate is None or not rate > 0:
+        return float(scenario.controller.update_rate_hz)
+    return float(min(rate, GAZEBO_STEP_HZ))

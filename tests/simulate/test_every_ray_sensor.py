@@ -228,3 +228,37 @@ def test_a_topic_too_long_for_a_file_name_still_gets_its_csv_file(tmp_path):
     assert result.returncode == 0, result.stderr
     [name] = [p.name for p in out.iterdir() if p.name.startswith("scan_")]
     assert name == f"scan_{('ir_' + 'x' * 287)[:100]}.csv"
+
+
+@pytest.mark.parametrize(("change", "note"), [
+    (("<samples>3</samples>", "<samples>1e9</samples>"),
+     "its 1,000,000,000 rays a scan are more than the 1,000,000 the simulator casts"),
+    (("<range><min>0.02</min>", "<range><min>inf</min>"), "its <range><min> must be a number"),
+    (("<max>4.0</max>", "<max>nan</max>"), "its <range><min> must be a number"),
+    (("<min_angle>-0.05</min_angle>", "<min_angle>nan</min_angle>"),
+     "its <min_angle> and <max_angle> must be numbers"),
+    (("</range>", "</range><noise><type>gaussian</type><mean>0</mean><stddev>-1</stddev>"
+                  "</noise>"), "its <noise> needs number means and standard deviations"),
+])
+def test_a_ray_sensor_the_simulator_cannot_cast_is_left_out_with_a_note(tmp_path, change, note):
+    """Values no sensor can have: the run goes on without the sensor and says why (it ended
+    in an internal error, or was killed for memory)."""
+    robot = _robot(tmp_path, IR.replace(*change))
+    result = run_servicebot("simulate", robot, "--headless", "--duration-s", "1")
+    assert result.returncode == 0, result.stderr
+    assert f"note: /ir_rear (ray sensor 'ir_rear') is not simulated: {note}" in result.stderr
+    assert "Warning" not in result.stderr and "Traceback" not in result.stderr
+
+
+def test_a_ray_sensor_faster_than_gazebos_step_or_beyond_float_is_simulated_as_gazebo_would(
+        tmp_path):
+    """An update rate of 1e9 Hz is one scan a physics step (1 kHz); a range max of 1e308 is
+    +inf in the message's float32, without a warning."""
+    pytest.importorskip("rosbags")
+    robot = _robot(tmp_path, IR.replace("<update_rate>20</update_rate>",
+                                        "<update_rate>1e9</update_rate>")
+                   .replace("<max>4.0</max>", "<max>1e308</max>"))
+    stdout, messages = run_with_bag(robot, tmp_path, duration_s="0.5")
+    scans = messages["/ir_rear"]
+    assert len(scans) == 500
+    assert all(m.range_max == math.inf for m in scans)

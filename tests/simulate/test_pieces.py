@@ -83,6 +83,21 @@ def test_pieces_cover_every_tick_once():
         assert after[0] == before[-1]  # a piece starts where the one before ended
 
 
+def test_pieces_of_many_rays_are_cut_to_keep_their_scans_within_bounds(monkeypatch):
+    """A LIDAR of many rays at a high rate fills a 30 s piece with gigabytes of ranges:
+    pieces are cut so their scans stay within SCAN_PIECE_BYTES (here 2 MB, for the bundled
+    robot's 360 rays at 10 Hz, 115 kB a second)."""
+    from servicebot_cli.simulate.body import sim_robot
+    from servicebot_cli.simulate.world.solids import world_solids
+
+    body = sim_robot(ROBOT)
+    s = scenario({"duration_s": 60.0})
+    monkeypatch.setattr(simulator, "SCAN_PIECE_BYTES", 2_000_000)
+    parts = list(simulator.pieces(body, s, seed=0, solids=world_solids(s.world)))
+    # 2e6 B / (32 B x 360 rays x 10 Hz) = 17.36 s: 1,736 ticks a piece, not 3,000
+    assert [p.plan.ticks for p in parts] == [1736, 1736, 1736, 792]
+
+
 def test_sample_clock_hands_out_the_whole_runs_times_in_pieces():
     rng = np.random.default_rng(2)
     for rate, duration, dt in ((30.0, 9.0, 0.01), (7.0, 3.33, 0.02), (100.0, 2.0, 0.01)):

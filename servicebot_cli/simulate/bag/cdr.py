@@ -119,6 +119,7 @@ def serialize(layout: Layout, times_s: npt.NDArray[np.float64],
     """Messages of ``layout`` stamped ``times_s`` [s], each field of ``fill`` set: their rows."""
     records = layout.records(len(times_s))
     set_stamps(records, times_s)
-    for name, values in fill.items():
-        records[name] = values
+    with np.errstate(over="ignore"):  # a float32 field beyond its range is +-inf, as in C++
+        for name, values in fill.items():
+            records[name] = values
     return rows(records)

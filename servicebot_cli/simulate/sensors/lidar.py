@@ -15,6 +15,7 @@ quantises ranges (gz-sensors only reports ``RangeResolution()``).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -52,12 +53,37 @@ class Scans:
     inclinations_rad: FloatArray | None = None
 
 
+MAX_RAYS = 1_000_000
+"""The most rays a scan may cast (a 128-ring LIDAR of 2,048 columns casts 262,144)."""
+
+
 def cast_problem(spec: LidarSpec) -> str | None:
     """Why the simulator cannot cast ``spec``'s rays; None when it can."""
     if not spec.samples or spec.samples < 1 or spec.min_angle_rad is None \
             or spec.max_angle_rad is None:
         return "it needs a whole <samples> of at least 1, <min_angle> and <max_angle>"
+    rays = ray_count(spec)
+    if rays > MAX_RAYS:
+        return f"its {rays:,} rays a scan are more than the {MAX_RAYS:,} the simulator casts"
+    angles = (spec.min_angle_rad, spec.max_angle_rad, spec.vertical_min_angle_rad or 0.0,
+              spec.vertical_max_angle_rad or 0.0)
+    if not all(math.isfinite(a) for a in angles):
+        return "its <min_angle> and <max_angle> must be numbers"
+    low, high = spec.min_range_m, spec.max_range_m
+    if (low is not None and not math.isfinite(low)) or (high is not None and math.isnan(high)):
+        return "its <range><min> must be a number, and its <max> a number or inf"
+    noise = spec.noise
+    if noise is not None and not all(
+            math.isfinite(value) and (value >= 0 or not spread)
+            for value, spread in ((noise.mean, False), (noise.stddev, True),
+                                  (noise.bias_mean, False), (noise.bias_stddev, True))):
+        return "its <noise> needs number means and standard deviations of 0 or more"
     return None
+
+
+def ray_count(spec: LidarSpec) -> int:
+    """Rays a scan casts: ``<samples>`` in each of its rings."""
+    return (spec.samples or 0) * max(spec.vertical_samples or 1, 1)
 
 
 def scan_angles(spec: LidarSpec) -> FloatArray:
