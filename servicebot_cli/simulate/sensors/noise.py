@@ -33,13 +33,17 @@ def stream_rng(seed: int, stream: str) -> np.random.Generator:
 
 
 class Noise:
-    """The noise of one quantity: its bias drawn on creation, fresh noise for each batch."""
+    """The noise of one quantity: its bias drawn on creation, fresh noise for each batch.
+
+    A negative standard deviation draws as its magnitude: Gazebo's ``std::normal_distribution``
+    computes ``mean + stddev * z`` for a symmetric ``z``, the same spread either way.
+    """
 
     def __init__(self, spec: NoiseSpec | None, rng: np.random.Generator) -> None:
         self.spec = spec if spec is not None and spec.type != "none" else None
         self.rng, self.bias = rng, 0.0
         if self.spec is not None and (self.spec.bias_mean or self.spec.bias_stddev):
-            self.bias = rng.normal(self.spec.bias_mean, self.spec.bias_stddev)
+            self.bias = rng.normal(self.spec.bias_mean, abs(self.spec.bias_stddev))
             if rng.uniform() < 0.5:
                 self.bias = -self.bias
 
@@ -47,7 +51,7 @@ class Noise:
         """``values`` with the noise; unchanged when there is none (or type ``none``)."""
         if self.spec is None:
             return values
-        return values + self.rng.normal(self.spec.mean, self.spec.stddev,
+        return values + self.rng.normal(self.spec.mean, abs(self.spec.stddev),
                                         size=np.shape(values)) + self.bias
 
     def skip(self, count: int) -> None:
@@ -55,7 +59,7 @@ class Noise:
         if self.spec is None:
             return
         for start in range(0, count, _SKIP_BATCH):
-            self.rng.normal(self.spec.mean, self.spec.stddev,
+            self.rng.normal(self.spec.mean, abs(self.spec.stddev),
                             size=min(_SKIP_BATCH, count - start))
 
 
