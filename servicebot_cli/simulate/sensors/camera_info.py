@@ -31,17 +31,23 @@ SDF_WIDTH_PX, SDF_HEIGHT_PX, SDF_HORIZONTAL_FOV_RAD = 320, 240, 1.047
 which Gazebo (Classic and gz-sim) uses when a description leaves them out."""
 
 
+MAX_SIDE_PX = 65_535
+"""The widest and tallest image simulated (JPEG's limit; a camera of 16k pixels is rare)."""
+
+
 def intrinsics(spec: CameraSpec) -> Intrinsics:
     """Intrinsics of ``spec``; a size or field of view it leaves out is SDF's default.
 
     Raises:
-        DescriptionError: A size that is not positive, or a field of view not in (0, pi).
+        DescriptionError: A size that is not 1 to :data:`MAX_SIDE_PX` a side, or a field of
+            view not in (0, pi).
     """
     width = SDF_WIDTH_PX if spec.width_px is None else spec.width_px
     height = SDF_HEIGHT_PX if spec.height_px is None else spec.height_px
     fov = SDF_HORIZONTAL_FOV_RAD if spec.horizontal_fov_rad is None else spec.horizontal_fov_rad
-    if width <= 0 or height <= 0:
-        raise DescriptionError(f"camera image {width} x {height} px is not a positive size")
+    if not (0 < width <= MAX_SIDE_PX and 0 < height <= MAX_SIDE_PX):
+        raise DescriptionError(f"camera image {width} x {height} px is not a size of 1 to "
+                               f"{MAX_SIDE_PX} px a side")
     if not 0.0 < fov < math.pi:
         raise DescriptionError(f"camera horizontal_fov {fov:g} rad is not in (0, pi)")
     f = width / (2.0 * math.tan(fov / 2.0))
