@@ -15,6 +15,7 @@ from pathlib import Path
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.common.inputs import display_path, read_input_bytes
 from servicebot_cli.description import resources
+from servicebot_cli.description.model import check_hint
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.robot import RobotDescription, is_xacro_name
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
@@ -203,7 +204,7 @@ def _refuse_second_parents(robot: RobotDescription) -> None:
             raise DescriptionError(
                 f"{robot.display}: not a valid URDF: link '{child}' is the child of joints "
                 f"'{first[child]}' and '{joint.name}'; a URDF is a tree, each link with one "
-                f"parent joint (run 'servicebot check {robot.display}' for details)")
+                f"parent joint {check_hint(robot.display, robot.xacro_args)}")
         first[child] = joint.name
 
 

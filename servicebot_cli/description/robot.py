@@ -211,7 +211,8 @@ class RobotDescription:
             DescriptionError: Pinocchio rejected the description.
         """
         if base not in self._models:
-            self._models[base] = build_model(self.xml_text, self.display, base)
+            self._models[base] = build_model(self.xml_text, self.display, base,
+                                             self.xacro_args)
         return self._models[base]
 
     @property

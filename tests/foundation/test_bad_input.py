@@ -197,3 +197,18 @@ def test_a_link_with_two_parent_joints_is_refused_before_pinocchio(command, name
                             *(["--headless"] if command == "simulate" else []))
     assert_one_line_error(result, 2, f"link '{link}' is the child of joints {joints}",
                           "a URDF is a tree")
+
+
+def test_the_check_hint_names_the_xacro_arguments_the_file_was_expanded_with(tmp_path):
+    """`servicebot check FILE` alone would check another expansion (or need the argument)."""
+    robot = tmp_path / "my robot.urdf.xacro"
+    robot.write_text(
+        '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+        '<xacro:arg name="limit" default="true"/><link name="base"/><link name="arm"/>'
+        '<joint name="shoulder" type="revolute"><parent link="base"/><child link="arm"/>'
+        '<axis xyz="0 0 1"/><xacro:if value="$(arg limit)">'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></xacro:if></joint></robot>')
+    result = run_servicebot("fk", robot, "limit:=false")
+    line = assert_one_line_error(result, 2, "not a valid URDF", "does not specify limits")
+    assert line.endswith(f"(run 'servicebot check \"{robot}\" limit:=false' for details)")
+    assert run_servicebot("fk", robot).returncode == 0  # its default expansion builds
