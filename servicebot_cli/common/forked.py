@@ -242,7 +242,8 @@ def _serve(function: Callable[[Any], Any], jobs_fd: int, results_fd: int,
         while (job := jobs.get()) is not _END:
             try:
                 answer: tuple[bool, Any] = (True, function(job[0]))
-            except Exception as exc:  # the parent raises it
+            except Exception as exc:  # the parent raises it, with where it was raised here
+                exc.add_note(_where_raised())
                 answer = (False, exc)
             try:
                 data = pickle.dumps(answer, protocol=pickle.HIGHEST_PROTOCOL)
@@ -258,13 +259,26 @@ def _serve(function: Callable[[Any], Any], jobs_fd: int, results_fd: int,
         writer.join()
 
 
+def _where_raised() -> str:
+    """The traceback of the error being handled, as a note ``--debug`` shows in the parent.
+
+    The parent's own traceback ends where it raises the error it was sent.
+    """
+    import traceback  # only on an error
+
+    return "raised in the forked process:\n" + traceback.format_exc().rstrip()
+
+
 def _portable(error: Exception, why: Exception) -> Exception:
     """``error`` as one that pickles both ways: a user's error keeps its message and code."""
+    portable: Exception = RuntimeError(f"{error!r} ({why})")
     if isinstance(error, ServicebotError):
-        portable = ServicebotError(str(error))
-        portable.exit_code = error.exit_code
-        return portable
-    return RuntimeError(f"{error!r} ({why})")
+        user = ServicebotError(str(error))
+        user.exit_code = error.exit_code
+        portable = user
+    for note in getattr(error, "__notes__", ()):
+        portable.add_note(note)
+    return portable
 
 
 def _read_jobs(jobs_fd: int, jobs: SimpleQueue[Any]) -> None:

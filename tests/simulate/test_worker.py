@@ -106,10 +106,14 @@ def test_an_error_in_the_worker_is_raised_in_the_parent_and_the_worker_reaped():
     worker.submit(1)
     worker.submit(-1)
     assert worker.result()[2] == 2
-    with pytest.raises(ValueError, match="job -1 refused"):
+    with pytest.raises(ValueError, match="job -1 refused") as caught:
         worker.result()
     worker.close()
     assert reaped(pid)
+    # where it was raised in the worker, for --debug (the parent's traceback ends at result)
+    [note] = caught.value.__notes__
+    assert note.startswith("raised in the forked process:\nTraceback")
+    assert "in __call__" in note and note.endswith("ValueError: job -1 refused")
 
 
 def test_a_worker_closed_before_its_results_is_killed_and_reaped_at_once():
@@ -198,6 +202,7 @@ def test_an_error_that_cannot_be_rebuilt_keeps_its_message_and_exit_code():
     with pytest.raises(ServicebotError, match="a mesh cannot be read at job 3") as caught:
         worker.result()
     assert caught.value.exit_code == ExitCode.FAILED
+    assert "in _refuse" in caught.value.__notes__[0]  # rebuilt, with where it was raised
     worker.close()
 
 
