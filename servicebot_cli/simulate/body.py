@@ -78,6 +78,7 @@ class SimRobot:
         ray_sensors: Every published ray sensor (LIDARs, sonars, cliff and IR range
             sensors), the one with the most rays first (the LIDAR), then in URDF order.
         imu, camera: Mounted sensors, None where the URDF has none.
+        ray_notes: A stderr note for each published ray sensor left out, and why.
         disabled_pairs: Link pairs the self-contact check leaves out (an SRDF's
             ``<disable_collisions>``, as ``ik --srdf``).
         resolver: Finds the ``package://`` collision meshes (the shape's and the self-contact
@@ -93,6 +94,7 @@ class SimRobot:
     ray_sensors: tuple[Mounted[LidarSpec], ...]
     imu: Mounted[ImuSpec] | None
     camera: Mounted[CameraSpec] | None
+    ray_notes: tuple[str, ...] = ()
     disabled_pairs: tuple[tuple[str, str], ...] = ()
     resolver: PackageResolver | None = None
 
@@ -131,15 +133,16 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
     def placement(link: str) -> FloatArray:
         return placements[link]
 
+    rays, ray_notes = _castable_rays(robot)
     return SimRobot(
         robot=robot, geometry=geometry, joint_space=space,
         arm_joints=arm_joints,
         base_height_m=height,
         shape=shape,
-        ray_sensors=_mount_rays(robot, placement),
+        ray_sensors=tuple(_placed(robot, sensor, spec, placement) for sensor, spec in rays),
         imu=_mount(robot, ("imu",), _published_imu, placement) or _model_imu(robot, placement),
         camera=_mount(robot, CAMERA_TYPES, _published_camera, placement),
-        disabled_pairs=tuple(disabled_pairs), resolver=resolver,
+        ray_notes=ray_notes, disabled_pairs=tuple(disabled_pairs), resolver=resolver,
     )
 
 
@@ -153,27 +156,15 @@ def _mount(robot: RobotDescription, types: tuple[str, ...],
     return _placed(robot, *found, placement) if found else None
 
 
-def _mount_rays(robot: RobotDescription, placement: Placement) -> tuple[Mounted[LidarSpec], ...]:
-    """Every published ray sensor, the one with the most rays first, then in URDF order.
-
-    A Create 3 base (TurtleBot 4) declares one-ray cliff and IR sensors before its LIDAR;
-    the LIDAR comes first, so it keeps the noise stream and the ``scan.csv`` it always had.
-    """
-    cast, _ = _castable_rays(robot)
-    return tuple(_placed(robot, sensor, spec, placement) for sensor, spec in cast)
-
-
-def uncast_ray_notes(robot: RobotDescription) -> tuple[str, ...]:
-    """A stderr note for each published ray sensor the simulator leaves out, and why."""
-    return _castable_rays(robot)[1]
-
-
 def _castable_rays(robot: RobotDescription
                    ) -> tuple[list[tuple[Sensor, LidarSpec]], tuple[str, ...]]:
-    """The published ray sensors the simulator casts, in :func:`_mount_rays`' order, and notes.
+    """The published ray sensors the simulator casts, and a note for each it leaves out.
 
-    A note for each it leaves out: rays it cannot cast, or a topic another of them publishes
-    in another message type (one topic holds one type in a bag).
+    The one with the most rays comes first, then the others in URDF order: a Create 3 base
+    (TurtleBot 4) declares one-ray cliff and IR sensors before its LIDAR, which keeps the
+    noise stream and the ``scan.csv`` it always had. Left out: rays it cannot cast, or a
+    topic another of them publishes in another message type (one topic holds one type in a
+    bag).
     """
     cast: list[tuple[Sensor, LidarSpec]] = []
     notes: list[str] = []
@@ -182,8 +173,7 @@ def _castable_rays(robot: RobotDescription
         if problem is None:
             cast.append((sensor, spec))
         else:
-            notes.append(f"note: /{(spec.topic or '').lstrip('/')} (ray sensor "
-                         f"'{sensor.name}') is not simulated: {problem}")
+            notes.append(_left_out(sensor, spec, problem))
     cast.sort(key=lambda f: -(f[1].samples or 0))  # stable: URDF order among equals
     types: dict[str | None, tuple[str, str]] = {}
     kept = []
@@ -193,11 +183,17 @@ def _castable_rays(robot: RobotDescription
         if first[0] == message:
             kept.append((sensor, spec))
             continue
-        notes.append(f"note: /{(spec.topic or '').lstrip('/')} (ray sensor '{sensor.name}') "
-                     f"is not simulated: ray sensor '{first[1]}' publishes "
-                     f"{first[0].replace('/msg/', '/')} on that topic, and this one "
-                     f"{message.replace('/msg/', '/')}; give one of them its own topic")
+        notes.append(_left_out(sensor, spec, (
+            f"ray sensor '{first[1]}' publishes {first[0].replace('/msg/', '/')} on that "
+            f"topic, and this one {message.replace('/msg/', '/')}; give one of them its own "
+            "topic")))
     return kept, tuple(notes)
+
+
+def _left_out(sensor: Sensor, spec: LidarSpec, why: str) -> str:
+    """The stderr note for ray sensor ``sensor`` left out of the run, and ``why``."""
+    return f"note: /{(spec.topic or '').lstrip('/')} (ray sensor '{sensor.name}') is not " \
+        f"simulated: {why}"
 
 
 def _published(robot: RobotDescription, types: tuple[str, ...],

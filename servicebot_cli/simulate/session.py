@@ -243,7 +243,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
     from servicebot_cli.simulate import simulator
     from servicebot_cli.simulate.bag.ray_messages import unpublished_note
     from servicebot_cli.simulate.bag.ros_messages import odom_frames, odom_topic, publishers
-    from servicebot_cli.simulate.body import sim_robot, uncast_ray_notes
+    from servicebot_cli.simulate.body import sim_robot
     from servicebot_cli.simulate.controllers.diff_drive import tick_count
     from servicebot_cli.simulate.files.progress import Progress
     from servicebot_cli.simulate.world.meshes import load_meshes
@@ -281,7 +281,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
              *(f"note: the simulator's collision shape of link {skipped}"
                for skipped in body.shape.skipped),
              *filter(None, (unpublished_note(mounted.spec) for mounted in body.ray_sensors)),
-             *uncast_ray_notes(robot))
+             *body.ray_notes)
     return SimulateReport(summary, clock() - start, last if keep_run else None,
                           live_track=track, notes=notes)
 
