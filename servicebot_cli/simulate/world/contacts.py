@@ -68,9 +68,7 @@ class Obstacle:
         if self.mesh is not None:
             return _bvh(coal, np.asarray(self.mesh.vertices, dtype=np.float64),
                         np.asarray(self.mesh.faces, dtype=np.int64))
-        if self.kind == "box":
-            return coal.Box(*(2 * self.half_m))
-        return coal.Cylinder(float(self.half_m[0]), 2 * float(self.half_m[2]))
+        return _primitive(coal, self.kind, self.half_m)
 
     @functools.cached_property
     def transform(self) -> object:
@@ -128,11 +126,16 @@ def part_geometry(part: Part) -> object:
 
     if part.vertices_m is not None and part.faces is not None:
         return _bvh(coal, part.vertices_m, part.faces)
-    if part.kind == "box":
-        return coal.Box(*(2 * part.half_m))
-    if part.kind == "cylinder":
-        return coal.Cylinder(float(part.half_m[0]), 2 * float(part.half_m[2]))
-    return coal.Sphere(float(part.half_m[0]))
+    return _primitive(coal, part.kind, part.half_m)
+
+
+def _primitive(coal: Any, kind: str, half_m: FloatArray) -> object:
+    """Coal's box, cylinder (about z) or sphere of half extents ``half_m``."""
+    if kind == "box":
+        return coal.Box(*(2 * half_m))
+    if kind == "cylinder":
+        return coal.Cylinder(float(half_m[0]), 2 * float(half_m[2]))
+    return coal.Sphere(float(half_m[0]))
 
 
 def posed_parts(shape: RobotShape, x: FloatArray, y: FloatArray, yaw: FloatArray,
