@@ -91,9 +91,10 @@ def scan_angles(spec: LidarSpec) -> FloatArray:
         DescriptionError: :func:`cast_problem` has a problem with ``spec``.
     """
     problem = cast_problem(spec)
-    if problem is not None or not spec.samples or spec.min_angle_rad is None \
-            or spec.max_angle_rad is None:
-        raise DescriptionError(f"the ray sensor on {spec.frame}: {problem}")
+    if problem is not None:
+        raise DescriptionError(f"the ray sensor on {spec.frame or 'its link'}: {problem}")
+    # cast_problem found every one of them
+    assert spec.samples and spec.min_angle_rad is not None and spec.max_angle_rad is not None
     if spec.samples == 1:  # Gazebo's MultiRayShape: one ray, straight ahead
         return np.zeros(1)
     return np.linspace(spec.min_angle_rad, spec.max_angle_rad, spec.samples)
