@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue
 from servicebot_cli.common.errors import NameNotFound
+from servicebot_cli.description.parents import second_parents
 
 if TYPE_CHECKING:
     from servicebot_cli.description.elements import Joint
@@ -37,16 +38,11 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
 
 
 def _parents(edges: list[Joint]) -> Iterator[Issue]:
-    first: dict[str, Joint] = {}
-    for joint in edges:
-        child = joint.child or ""
-        if child in first:
-            yield Issue("SB106", f"link '{child}' has two parents: joint '{first[child].name}' "
-                        f"(from '{first[child].parent}') and joint '{joint.name}' (from "
-                        f"'{joint.parent}')", joint.element,
-                        fix=f"remove joint '{joint.name}' or give it its own child link")
-        else:
-            first[child] = joint
+    for first, joint in second_parents(edges):
+        yield Issue("SB106", f"link '{joint.child}' has two parents: joint '{first.name}' "
+                    f"(from '{first.parent}') and joint '{joint.name}' (from "
+                    f"'{joint.parent}')", joint.element,
+                    fix=f"remove joint '{joint.name}' or give it its own child link")
 
 
 def _loops(edges: list[Joint]) -> Iterator[Issue]:

@@ -17,6 +17,7 @@ from servicebot_cli.common.inputs import display_path, read_input_bytes
 from servicebot_cli.description import resources
 from servicebot_cli.description.model import check_hint
 from servicebot_cli.description.packages import PackageResolver
+from servicebot_cli.description.parents import second_parents
 from servicebot_cli.description.robot import RobotDescription, is_xacro_name
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
 
@@ -186,26 +187,21 @@ def load(source: RobotSource, *, build_model: bool = True) -> RobotDescription:
 
 
 def _refuse_second_parents(robot: RobotDescription) -> None:
-    """Refuse a link that is the child of two joints: a loop, or a second parent.
-
-    urdfdom leaves the check to its users: Pinocchio builds such a robot with one of the
-    joints silently gone, and crashes on a loop.
+    """Refuse a link that is the child of two joints (:mod:`.parents`).
 
     Raises:
         DescriptionError: The first such link.
     """
     links = {link.name for link in robot.links}
-    first: dict[str, str] = {}
-    for joint in robot.joints:
-        child = joint.child
-        if not child or child not in links or joint.parent not in links:
-            continue  # a missing link is urdfdom's own error
-        if child in first:
-            raise DescriptionError(
-                f"{robot.display}: not a valid URDF: link '{child}' is the child of joints "
-                f"'{first[child]}' and '{joint.name}'; a URDF is a tree, each link with one "
-                f"parent joint {check_hint(robot.display, robot.xacro_args)}")
-        first[child] = joint.name
+    tree = (j for j in robot.joints  # a missing link is urdfdom's own error
+            if j.child in links and j.parent in links)
+    found = next(second_parents(tree), None)
+    if found is not None:
+        first, joint = found
+        raise DescriptionError(
+            f"{robot.display}: not a valid URDF: link '{joint.child}' is the child of joints "
+            f"'{first.name}' and '{joint.name}'; a URDF is a tree, each link with one "
+            f"parent joint {check_hint(robot.display, robot.xacro_args)}")
 
 
 def _mtime(path: Path) -> float:
