@@ -74,6 +74,8 @@ class Worker(Generic[J, R]):
                  name: str = "worker", prepare: Callable[[], object] | None = None) -> None:
         self._function, self.name, self._prepare = function, name, prepare
         self._waiting: list[J] = []  # in-process: the jobs whose results are not taken
+        self._submitted = self._taken = 0  # jobs handed over, results read
+        self._unwanted: set[int] = set()  # the jobs (by number) whose results are dropped
         self.pid: int | None = None
         self._jobs: IO[bytes] | None = None
         self._results: IO[bytes] | None = None
@@ -120,6 +122,7 @@ class Worker(Generic[J, R]):
         Raises:
             WorkerEnded: The worker process has ended.
         """
+        self._submitted += 1
         if self._jobs is None:
             self._waiting.append(job)
             return
@@ -142,6 +145,20 @@ class Worker(Generic[J, R]):
             WorkerEnded: The worker process ended without it.
             Exception: What the function raised for the job.
         """
+        while self._taken in self._unwanted:
+            self._unwanted.discard(self._taken)
+            self._next()
+        return self._next()
+
+    def drop_result(self) -> None:
+        """Leave out the result of the job submitted last.
+
+        It is read and dropped when a later one is asked for; its error is raised then.
+        """
+        self._unwanted.add(self._submitted - 1)
+
+    def _next(self) -> R:
+        self._taken += 1
         if self._results is None:
             return self._function(self._waiting.pop(0))
         try:

@@ -8,17 +8,21 @@ run from a cold process. With a second core, a forked process
 (:mod:`~servicebot_cli.common.forked`) works them out while the parent reads the scenario,
 the controllers and the robot's shape; only arrays come back. Without one, they are worked
 out in-process when first asked for.
+
+That process then imports the modules the run's pose work will use, and the simulator hands
+it that work (:meth:`FactsAhead.take_over`): it has Pinocchio and Coal loaded already, which
+a process forked for the pose work would spend its first 35 ms importing while the
+simulator waits for its first piece.
 """
 
 from __future__ import annotations
 
 import contextlib
 import sys
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
-from functools import partial
 from types import TracebackType
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import numpy as np
 import numpy.typing as npt
@@ -31,6 +35,8 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 FloatArray = npt.NDArray[np.float64]
+J = TypeVar("J")
+R = TypeVar("R")
 
 
 @dataclass(frozen=True)
@@ -76,19 +82,26 @@ class FactsAhead:
     Forked (``fork`` None) only when Pinocchio is not imported yet (else building is quick)
     and a second core is free. :meth:`result` gives the facts (or raises the description's
     error, each time it is asked); :meth:`close` stops the process whatever happened.
+
+    Once the facts are sent, the process imports ``then_import`` (the modules of the work to
+    come), and can be handed that work (:meth:`take_over`).
     """
 
-    def __init__(self, robot: RobotDescription, *, fork: bool | None = None) -> None:
+    def __init__(self, robot: RobotDescription, *, fork: bool | None = None,
+                 then_import: tuple[str, ...] = ()) -> None:
         forked = ("pinocchio" not in sys.modules and second_core()) if fork is None else fork
         self._facts: ModelFacts | None = None
         self._error: Exception | None = None
+        self._handed_over = False
         try:
-            self._worker: Worker[None, ModelFacts] = Worker(
-                partial(_job, robot), forked=forked, name="model-building")
+            self._worker: Worker[Any, Any] = Worker(_Process(robot), forked=forked,
+                                                    name="model-building")
         except OSError:  # no process to be had: in-process, when asked
-            self._worker = Worker(partial(_job, robot), forked=False)
+            self._worker = Worker(_Process(robot), forked=False)
         self._worker.submit(None)
-        self._worker.no_more_jobs()
+        if self._worker.pid is not None and then_import:  # while the caller reads on
+            self._worker.submit(_Imports(then_import))
+            self._worker.drop_result()
 
     def result(self) -> ModelFacts:
         """The facts, waited for the first time.
@@ -106,11 +119,40 @@ class FactsAhead:
                 self._error = exc
                 raise
             finally:  # Ctrl-C or a signal while waiting: the process is killed, not waited for
-                self._worker.close(finished=self._facts is not None)
+                if self._facts is None:
+                    self._worker.close()
         return self._facts
 
+    def take_over(self, function: Callable[[J], R], prepare: Callable[[], object] | None,
+                  name: str) -> Worker[J, R] | None:
+        """The forked process, doing ``function``'s jobs from now on, once the facts are in.
+
+        ``function`` (with all it holds) is pickled across, so it must not be used here
+        while the worker lives; ``prepare`` is done there before the first job. None when
+        there is no such process (not forked, failed, or taken over already): the caller
+        forks its own.
+
+        Raises:
+            DescriptionError: Pinocchio cannot build the description.
+        """
+        self.result()
+        worker = self._worker
+        if worker.pid is None or self._handed_over:
+            return None
+        self._handed_over = True
+        try:
+            worker.submit(_Handover(function, prepare))
+        except Exception:  # noqa: BLE001 -- it cannot cross (or the process is gone): own fork
+            worker.close()
+            return None
+        worker.drop_result()
+        worker.name = name
+        return worker
+
     def close(self) -> None:
-        """Stop the process if it still runs (an error elsewhere came first)."""
+        """Stop the process if it still runs; it ends by itself once its work is done."""
+        if not self._handed_over:
+            self._worker.no_more_jobs()
         self._worker.close(finished=self._facts is not None or self._error is not None)
 
     def __enter__(self) -> FactsAhead:
@@ -141,5 +183,45 @@ def description_first(ahead: FactsAhead) -> Iterator[None]:
         raise
 
 
-def _job(robot: RobotDescription, _job: None) -> ModelFacts:
-    return model_facts(robot)
+@dataclass(frozen=True)
+class _Handover:
+    """The work the process does from its next job on."""
+
+    function: Callable[[Any], Any]
+    prepare: Callable[[], object] | None
+
+
+@dataclass(frozen=True)
+class _Imports:
+    """Modules the work to be handed over will use, imported once the facts are sent."""
+
+    modules: tuple[str, ...]
+
+
+class _Process:
+    """What the forked process does: the facts (job None), then the work handed over."""
+
+    def __init__(self, robot: RobotDescription) -> None:
+        self.robot = robot
+        self.work: Callable[[Any], Any] | None = None
+
+    def __call__(self, job: Any) -> Any:
+        if job is None:
+            return model_facts(self.robot)
+        if isinstance(job, _Imports):
+            import importlib
+
+            for name in job.modules:
+                with contextlib.suppress(ImportError):  # the handover meets it, and says so
+                    importlib.import_module(name)
+            return None
+        if isinstance(job, _Handover):
+            self.work = job.function
+            if job.prepare is not None:
+                try:
+                    job.prepare()
+                except Exception:  # noqa: BLE001,S110 -- the first job meets it again, and says so
+                    pass
+            return None
+        assert self.work is not None  # handed over before its first job
+        return self.work(job)

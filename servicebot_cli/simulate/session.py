@@ -129,7 +129,8 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
     from servicebot_cli.simulate.model_facts import FactsAhead, description_first
 
     robot = load(request.robot, build_model=False)
-    with FactsAhead(robot) as facts, description_first(facts):
+    with FactsAhead(robot, then_import=("servicebot_cli.simulate.pose_work",)) as facts, \
+            description_first(facts):
         return _run_loaded(request, robot, facts, stderr, clock)
 
 
@@ -264,7 +265,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
         if bar:  # an error line, or Ctrl-C's, starts on a clean line
             stack.callback(bar.close)
         pieces = simulator.pieces(body, scenario, seed=seed, solids=world_solids(scenario.world),
-                                  meshes=meshes, piece_s=piece_s)
+                                  meshes=meshes, piece_s=piece_s, facts=facts)
         stack.enter_context(contextlib.closing(pieces))  # its worker stopped whatever happens
         summary, last, writers = _write_pieces(
             joint_states.narrowed(pieces),

@@ -29,6 +29,7 @@ from servicebot_cli.simulate.body import Mounted, SimRobot
 from servicebot_cli.simulate.controllers.arm_trajectory import ArmLimits, ArmMotion
 from servicebot_cli.simulate.controllers.classic_drive import ENCODER, NEITHER, WORLD
 from servicebot_cli.simulate.controllers.diff_drive import WheelPlan, WheelPlanner
+from servicebot_cli.simulate.model_facts import FactsAhead
 from servicebot_cli.simulate.pose_work import FromPoses, PoseJob, PoseWork
 from servicebot_cli.simulate.scenario.definition import Scenario
 from servicebot_cli.simulate.scenario.located import ScenarioError
@@ -58,10 +59,11 @@ SCAN_PIECE_BYTES = 256_000_000
 """At most about this many bytes of scans in one piece (pieces are cut shorter)."""
 SCAN_BYTES = 32
 """Bytes a piece holds per ray and scan: true ranges, noise, readings, their temporaries."""
-AHEAD = 2
+AHEAD = 3
 """Pieces the simulator may run ahead of the worker doing their pose work: the worker's
-first piece is its slowest (the first clearance search), and the simulator no longer waits
-for it after its second piece."""
+first pieces are its slowest (the first clearance search, its first calls), and the
+simulator no longer waits for them after its third piece. Two when pieces are cut for their
+scans' size, so that those in memory stay within three times :data:`SCAN_PIECE_BYTES`."""
 WHOLE_RUN_FRAME_BYTES = 2_000_000_000
 """At most this many bytes of camera frames in a run computed in one piece."""
 
@@ -112,8 +114,8 @@ class SimResult:
 
 
 def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[Solid],
-           meshes: Sequence[Mesh] = (), piece_s: float = PIECE_S
-           ) -> Generator[SimResult, None, None]:
+           meshes: Sequence[Mesh] = (), piece_s: float = PIECE_S,
+           facts: FactsAhead | None = None) -> Generator[SimResult, None, None]:
     """Simulate ``scenario`` a piece of ``piece_s`` simulated seconds at a time.
 
     The scenario is checked against the robot and the world before the first piece. Pieces
@@ -122,8 +124,10 @@ def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[So
     rays so that their scans stay within :data:`SCAN_PIECE_BYTES`. With more than one
     piece and a second core, what each piece computes from its poses alone (its LIDAR
     scans and self contacts, :mod:`.pose_work`) is done by a forked worker process
-    (:mod:`.worker`) while the next piece is simulated; it is stopped and reaped when the
-    pieces end or fail, or when the generator is closed (close it to stop it at once).
+    (:mod:`~servicebot_cli.common.forked`) while the next piece is simulated: the process
+    that worked out ``facts``, when there is one, else one forked now. It is stopped and
+    reaped when the pieces end or fail, or when the generator is closed (close it to stop
+    it at once).
 
     Raises:
         ScenarioError: The arm's goal, the start pose or the camera does not fit the robot
@@ -133,8 +137,11 @@ def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[So
     step = max(1, round(piece_s / run.dt_s)) if math.isfinite(piece_s) else run.ticks
     scan_bytes_s = sum(SCAN_BYTES * lidar.ray_count(m.spec) * clock.rate_hz
                        for m, clock in zip(body.ray_sensors, run.scan_clocks, strict=True))
+    ahead = AHEAD
     if scan_bytes_s and math.isfinite(piece_s):  # a piece's ranges within SCAN_PIECE_BYTES
-        step = min(step, max(1, int(SCAN_PIECE_BYTES / scan_bytes_s / run.dt_s)))
+        cut = max(1, int(SCAN_PIECE_BYTES / scan_bytes_s / run.dt_s))
+        ahead = AHEAD if cut > step else AHEAD - 1
+        step = min(step, cut)
     if run.images is not None and math.isfinite(piece_s):  # frames kept within PIECE_BYTES
         from servicebot_cli.simulate.sensors.camera_stream import PIECE_BYTES
 
@@ -143,11 +150,15 @@ def pieces(body: SimRobot, scenario: Scenario, *, seed: int, solids: Sequence[So
     elif run.images is not None:
         _refuse_frames_beyond_memory(run.clocks["camera"].count * run.images.frame_bytes)
     firsts = range(0, run.ticks, step)
-    poses = Worker(run.from_poses, forked=len(firsts) > 1 and second_core(),
-                   name="simulation's worker", prepare=run.from_poses.prepare)
+    name = "simulation's worker"
+    poses = facts.take_over(run.from_poses, run.from_poses.prepare, name) \
+        if facts is not None and len(firsts) > 1 else None
+    if poses is None:
+        poses = Worker(run.from_poses, forked=len(firsts) > 1 and second_core(), name=name,
+                       prepare=run.from_poses.prepare)
     # forked: a piece's pose work is done while the next pieces run, up to AHEAD of them
     # (one with camera frames, which are most of a piece's memory)
-    ahead = 0 if poses.pid is None else 1 if run.images is not None else AHEAD
+    ahead = 0 if poses.pid is None else 1 if run.images is not None else ahead
     try:
         begun: list[SimResult] = []
         for first in firsts:

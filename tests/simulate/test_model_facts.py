@@ -40,6 +40,8 @@ def test_forked_facts_are_the_in_process_bits():
     pid = ahead._worker.pid
     assert pid is not None
     forked = ahead.result()
+    assert not reaped(pid)  # kept for the work to be handed over
+    ahead.close()
     assert reaped(pid)
     here = model_facts(read_description(RobotSource.bundled()))
     assert forked.joint_space.names == here.joint_space.names
@@ -219,3 +221,83 @@ def test_the_end_effector_follows_the_arm_whatever_joint_states_are_sent(tmp_pat
     # fk places the tool on the root link; the run's base stands still at the origin
     assert effector["position_m"][:2] == pytest.approx(expected["position_m"][:2], abs=1e-12)
     assert abs(expected["position_m"][0]) > 0.1  # the arm turned: not its zero pose
+
+
+class _Tally:
+    """Work with state carried from job to job, as the pose work's noise is."""
+
+    def __init__(self) -> None:
+        self.jobs = 0
+        self.prepared_in: int | None = None
+
+    def prepare(self) -> None:
+        self.prepared_in = os.getpid()
+
+    def __call__(self, job: int) -> tuple[int, int | None, int]:
+        self.jobs += 1
+        return os.getpid(), self.prepared_in, self.jobs
+
+
+def test_the_facts_process_takes_over_the_work_handed_to_it():
+    ahead = FactsAhead(read_description(RobotSource.bundled()), fork=True,
+                       then_import=("servicebot_cli.simulate.pose_work",))
+    pid = ahead._worker.pid
+    tally = _Tally()
+    worker = ahead.take_over(tally, tally.prepare, "tally")
+    assert worker is not None and worker.pid == pid and worker.name == "tally"
+    assert ahead.take_over(_Tally(), None, "again") is None  # one taker
+    for job in range(3):
+        worker.submit(job)
+    worker.no_more_jobs()
+    assert [worker.result() for _ in range(3)] == [(pid, pid, n) for n in (1, 2, 3)]
+    assert tally.jobs == 0  # the work's state lives in that process
+    worker.close(finished=True)
+    ahead.close()
+    assert pid is not None and reaped(pid)
+
+
+def test_no_process_no_takeover_and_work_that_cannot_cross_is_left_here():
+    robot = read_description(RobotSource.bundled())
+    with FactsAhead(robot, fork=False) as here:
+        assert here.take_over(_Tally(), None, "tally") is None
+        assert here.result().joint_space.names
+    ahead = FactsAhead(robot, fork=True)
+    pid = ahead._worker.pid
+    assert ahead.take_over(lambda job: job, None, "lambda") is None  # a lambda does not pickle
+    assert pid is not None and reaped(pid)
+    assert ahead.result().joint_space.names  # the facts stay
+    ahead.close()
+
+
+def test_a_model_error_is_raised_by_the_takeover():
+    with FactsAhead(read_description(RobotSource(REFUSED, REFUSED.name)), fork=True) as ahead:
+        with pytest.raises(DescriptionError, match="not a valid URDF"):
+            ahead.take_over(_Tally(), None, "tally")
+
+
+@pytest.mark.skipif(not second_core(), reason="one core: the pose work is done in-process")
+def test_the_pose_work_handed_over_gives_the_bytes_of_a_worker_forked_for_it(tmp_path,
+                                                                          monkeypatch):
+    robot = load(RobotSource.bundled(), build_model=False)
+    scenario = load_scenario(None)
+    forks: list[int] = []
+    real_fork = os.fork
+
+    def counted_fork() -> int:
+        pid = real_fork()
+        if pid:
+            forks.append(pid)
+        return pid
+
+    monkeypatch.setattr(os, "fork", counted_fork)
+    bags = []
+    for name, fork in (("handed", True), ("own", False)):
+        with FactsAhead(robot, fork=fork,
+                        then_import=("servicebot_cli.simulate.pose_work",)) as facts:
+            run_and_write(robot, scenario, seed=3, outputs=Outputs(bag=str(tmp_path / name)),
+                          scenario_dir=".", facts=facts)
+        bags.append(next((tmp_path / name).glob("*.mcap")).read_bytes())
+        # handed: the facts' process did the pose work; own: a worker forked for it
+        assert len(forks) == 1, name
+        forks.clear()
+    assert bags[0] == bags[1]

@@ -53,6 +53,34 @@ def test_a_forked_worker_gives_each_result_in_order_from_its_own_process():
     assert reaped(pid)
 
 
+@pytest.mark.parametrize("forked", [True, False])
+def test_dropped_results_are_skipped_and_the_others_come_in_order(forked):
+    worker: Worker[int, tuple[int, int, int]] = Worker(_Counter(), forked=forked)
+    worker.submit(1)
+    worker.submit(2)
+    worker.drop_result()
+    worker.submit(3)
+    worker.submit(4)
+    worker.drop_result()
+    worker.submit(5)
+    worker.no_more_jobs()
+    # the dropped jobs are done all the same: the calls count them
+    assert [worker.result()[1:] for _ in range(3)] == [(1, 2), (3, 6), (5, 10)]
+    worker.close(finished=True)
+
+
+@pytest.mark.parametrize("forked", [True, False])
+def test_a_dropped_jobs_error_is_raised_when_a_later_result_is_asked_for(forked):
+    worker: Worker[int, tuple[int, int, int]] = Worker(_Counter(), forked=forked)
+    worker.submit(-1)
+    worker.drop_result()
+    worker.submit(2)
+    worker.no_more_jobs()
+    with pytest.raises(ValueError, match="job -1 refused"):
+        worker.result()
+    worker.close()
+
+
 def test_an_in_process_worker_does_each_job_when_its_result_is_taken():
     counter = _Counter()
     worker: Worker[int, tuple[int, int, int]] = Worker(counter, forked=False)
