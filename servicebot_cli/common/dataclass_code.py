@@ -9,11 +9,14 @@ the code kept, 54 ms.
 :func:`install` wraps ``dataclasses._create_fn`` so that, for servicebot's own modules, the
 code compiled from each text is kept in a file beside the module's bytecode (where Python keeps
 the module's own, under its bytecode prefix, with its version tag) and read from there next
-time. The text is the key: the same text gives the same code, so a method is the one
-``@dataclass`` would make, and any other text is compiled as usual. Nothing is written where
-Python writes no bytecode (``PYTHONDONTWRITEBYTECODE``) or cannot (a read-only install); a file
-that cannot be read is ignored. Other modules' dataclasses, and other Python versions, are left
-to ``dataclasses`` as it is.
+time. The text is the key: the same text compiled the same way gives the same code, so a
+method is the one ``@dataclass`` would make (annotations included), and any other text is
+compiled as usual. A file holds the texts its module used when last written, so a changed
+class's old methods leave it. Nothing is written where Python writes no bytecode
+(``PYTHONDONTWRITEBYTECODE``) or cannot (a read-only install); a file that cannot be read is
+ignored. Other modules' dataclasses, and other Python versions, are left to ``dataclasses``
+as it is. ``pip uninstall`` removes the bytecode it installed, not these files (as it leaves
+numba's caches): a ``__pycache__`` directory of them can stay behind.
 """
 
 from __future__ import annotations
@@ -29,7 +32,8 @@ from typing import Any
 _PACKAGE = "servicebot_cli."
 _SUFFIX = ".dataclass-code"
 _CREATE_FN_ARGS = ("name", "args", "body", "globals", "locals", "return_type")
-_codes: dict[str, dict[str, CodeType]] = {}  # module -> text -> code
+_kept: dict[str, dict[str, CodeType]] = {}  # module -> text -> code, as read or compiled
+_codes: dict[str, dict[str, CodeType]] = {}  # the texts of each module used in this process
 _unwritten: set[str] = set()  # modules with code compiled since their file was written
 
 
@@ -97,14 +101,20 @@ def _wrapped(original: Callable[..., Any]) -> Callable[..., Any]:
 
 
 def _code(module: str, text: str) -> CodeType:
-    """The code of ``text`` (a ``__create_fn__`` of ``module``): kept, else compiled now."""
-    codes = _codes.get(module)
-    if codes is None:
-        codes = _codes[module] = _read(module)
-    code = codes.get(text)
+    """The code of ``text`` (a ``__create_fn__`` of ``module``): kept, else compiled now.
+
+    Compiled as ``exec(text)`` in ``dataclasses`` compiles it: with no ``__future__``
+    import of this module's (its annotations are objects, not strings).
+    """
+    kept = _kept.get(module)
+    if kept is None:
+        kept = _kept[module] = _read(module)
+    used = _codes.setdefault(module, {})
+    code = kept.get(text)
     if code is None:
-        code = codes[text] = compile(text, "<string>", "exec")  # exec(text)'s own code
+        code = kept[text] = compile(text, "<string>", "exec", dont_inherit=True)
         _unwritten.add(module)  # written once its class is made
+    used[text] = code
     return code
 
 
@@ -143,7 +153,11 @@ def _read(module: str) -> dict[str, CodeType]:
 
 
 def _write(module: str, codes: dict[str, CodeType]) -> None:
-    """Keep ``codes`` for next time, whole or not at all (a new file moved in place)."""
+    """Keep ``codes`` for next time, whole or not at all (a new file moved in place).
+
+    They are the texts this process used: those of classes changed since are left out, so
+    the file holds the module's classes as they are (all of them once each is used again).
+    """
     path = cache_path(module) if not sys.dont_write_bytecode else None
     if path is None:
         return

@@ -122,12 +122,22 @@ class Worker(Generic[J, R]):
         Raises:
             WorkerEnded: The worker process has ended.
         """
-        self._submitted += 1
         if self._jobs is None:
+            self._submitted += 1
             self._waiting.append(job)
             return
+        self.submit_pickled(pickle.dumps(job, protocol=pickle.HIGHEST_PROTOCOL))
+
+    def submit_pickled(self, data: bytes) -> None:
+        """:meth:`submit` a job already pickled (to a forked worker only).
+
+        Raises:
+            WorkerEnded: The worker process has ended.
+        """
+        assert self._jobs is not None, "only a forked worker's jobs are sent pickled"
+        self._submitted += 1
         try:
-            pickle.dump(job, self._jobs, protocol=pickle.HIGHEST_PROTOCOL)
+            self._jobs.write(data)
             self._jobs.flush()
         except BrokenPipeError:  # it stopped: at an error of a job (which it sent), or killed
             raise self._error_sent() from None
@@ -258,6 +268,8 @@ def _serve(function: Callable[[Any], Any], jobs_fd: int, results_fd: int,
                 pass
         while (job := jobs.get()) is not _END:
             try:
+                if isinstance(job[0], _Unreadable):
+                    raise job[0].error
                 answer: tuple[bool, Any] = (True, function(job[0]))
             except Exception as exc:  # the parent raises it, with where it was raised here
                 exc.add_note(_where_raised())
@@ -298,14 +310,29 @@ def _portable(error: Exception, why: Exception) -> Exception:
     return portable
 
 
+class _Unreadable:
+    """A job this process cannot rebuild (a class it cannot import): its error is the result."""
+
+    def __init__(self, error: Exception) -> None:
+        self.error = RuntimeError(f"the forked process could not read its job: "
+                                  f"{type(error).__name__}: {error}")
+
+
 def _read_jobs(jobs_fd: int, jobs: SimpleQueue[Any]) -> None:
-    """Queue each job, then the end: at the pipe's end, or a job cut short (the parent died)."""
+    """Queue each job, then the end: at the pipe's end, or after a job that cannot be read.
+
+    A job cut short (the parent died) or rebuilt with an error ends the jobs with that error
+    as the next result, which a parent still there raises.
+    """
     try:
         with os.fdopen(jobs_fd, "rb") as stream:
             while True:
                 try:
                     job = pickle.load(stream)
-                except Exception:  # noqa: BLE001 -- EOF, or a job cut short: no more jobs
+                except EOFError:  # the parent closed the pipe: no more jobs
+                    break
+                except Exception as exc:  # noqa: BLE001 -- whatever rebuilding it raised
+                    jobs.put((_Unreadable(exc),))
                     break
                 jobs.put((job,))
     finally:

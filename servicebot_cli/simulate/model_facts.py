@@ -18,23 +18,27 @@ simulator waits for its first piece.
 from __future__ import annotations
 
 import contextlib
+import io
+import pickle
 import sys
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
-from types import TracebackType
+from types import BuiltinFunctionType, FunctionType, TracebackType
 from typing import TYPE_CHECKING, Any, TypeVar
 
 import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.common.errors import DescriptionError, ServicebotError
-from servicebot_cli.common.forked import Worker, second_core
+from servicebot_cli.common.forked import Worker, WorkerEnded, second_core
 from servicebot_cli.description.joint_space import JointSpace
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 FloatArray = npt.NDArray[np.float64]
+HANDOVER_BYTES = 4 << 20
+"""Work that pickles to more than this is left to a newly forked worker, which shares it."""
 J = TypeVar("J")
 R = TypeVar("R")
 
@@ -93,6 +97,8 @@ class FactsAhead:
         self._facts: ModelFacts | None = None
         self._error: Exception | None = None
         self._handed_over = False
+        # the packages the process has: those here at the fork, and those it imports then
+        self._packages = {name.partition(".")[0] for name in (*sys.modules, *then_import)}
         try:
             self._worker: Worker[Any, Any] = Worker(_Process(robot), forked=forked,
                                                     name="model-building")
@@ -129,8 +135,11 @@ class FactsAhead:
 
         ``function`` (with all it holds) is pickled across, so it must not be used here
         while the worker lives; ``prepare`` is done there before the first job. None when
-        there is no such process (not forked, failed, or taken over already): the caller
-        forks its own.
+        that is no gain, and the caller forks its own worker, which shares this process's
+        memory as it is: no such process (not forked, failed, taken over already), work
+        that does not pickle, or that pickles to more than :data:`HANDOVER_BYTES` (a world of
+        meshes) or names a package the process has not imported (trimesh, for a mesh
+        obstacle: most of a second to import there). The process is then stopped.
 
         Raises:
             DescriptionError: Pinocchio cannot build the description.
@@ -140,9 +149,14 @@ class FactsAhead:
         if worker.pid is None or self._handed_over:
             return None
         self._handed_over = True
+        pickled = _pickled(_Handover(function, prepare))
+        if pickled is None or len(pickled[0]) > HANDOVER_BYTES or pickled[1] - self._packages:
+            worker.close()
+            return None
+        data = pickled[0]
         try:
-            worker.submit(_Handover(function, prepare))
-        except Exception:  # noqa: BLE001 -- it cannot cross (or the process is gone): own fork
+            worker.submit_pickled(data)
+        except WorkerEnded:  # killed meanwhile: the caller forks its own
             worker.close()
             return None
         worker.drop_result()
@@ -181,6 +195,33 @@ def description_first(ahead: FactsAhead) -> Iterator[None]:
         except Exception:  # noqa: BLE001,S110 -- not the description's error: the step's first
             pass
         raise
+
+
+def _pickled(work: object) -> tuple[bytes, set[str]] | None:
+    """``work`` pickled, and the packages of the classes and functions it names.
+
+    None when it does not pickle.
+    """
+    stream = io.BytesIO()
+    pickler = _NamingPickler(stream)
+    try:
+        pickler.dump(work)
+    except Exception:  # noqa: BLE001 -- whatever pickling it raised: it stays here
+        return None
+    return stream.getvalue(), {module.partition(".")[0] for module in pickler.modules}
+
+
+class _NamingPickler(pickle.Pickler):
+    """A pickler that notes the module of each object's class (of each class or function)."""
+
+    def __init__(self, stream: io.BytesIO) -> None:
+        super().__init__(stream, protocol=pickle.HIGHEST_PROTOCOL)
+        self.modules: set[str] = set()
+
+    def reducer_override(self, obj: object) -> Any:
+        named = obj if isinstance(obj, (type, FunctionType, BuiltinFunctionType)) else type(obj)
+        self.modules.add(getattr(named, "__module__", None) or "builtins")
+        return NotImplemented  # pickled as usual
 
 
 @dataclass(frozen=True)

@@ -125,6 +125,8 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
             unreadable SRDF, no display for the live window, or an output that cannot be
             written.
     """
+    import numpy.random  # noqa: F401 -- the pose work's noise, in both processes: before the fork
+
     from servicebot_cli.description.loader import load
     from servicebot_cli.simulate.model_facts import FactsAhead, description_first
 

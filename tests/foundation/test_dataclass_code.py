@@ -10,10 +10,12 @@ from __future__ import annotations
 
 import dataclasses
 import importlib.util
+import marshal
 import os
 import subprocess
 import sys
 import textwrap
+import typing
 from pathlib import Path
 from types import ModuleType
 
@@ -78,19 +80,31 @@ def _methods(cls: type) -> dict[str, object]:
         code = getattr(getattr(method, "__wrapped__", method), "__code__", None)
         if code is not None:
             out[name] = (code.co_code, code.co_consts, code.co_names, code.co_varnames,
-                         code.co_freevars, method.__qualname__)
+                         code.co_freevars, code.co_flags, method.__qualname__,
+                         repr(getattr(method, "__annotations__", None)))
     return out
 
 
-def test_kept_code_makes_the_methods_dataclasses_compiles(tmp_path, monkeypatch):
+def _cache_in(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Code kept under ``tmp_path/cache``, written whatever PYTHONDONTWRITEBYTECODE says."""
     monkeypatch.setattr(sys, "pycache_prefix", str(tmp_path / "cache"))
-    monkeypatch.setattr(dataclass_code, "_codes", {})
+    monkeypatch.setattr(sys, "dont_write_bytecode", False)
+    _as_a_new_process(monkeypatch)
+
+
+def _as_a_new_process(monkeypatch: pytest.MonkeyPatch) -> None:
+    for name in ("_kept", "_codes"):
+        monkeypatch.setattr(dataclass_code, name, {})
+
+
+def test_kept_code_makes_the_methods_dataclasses_compiles(tmp_path, monkeypatch):
+    _cache_in(tmp_path, monkeypatch)
     ours_dir, theirs_dir = tmp_path / "ours", tmp_path / "theirs"
     ours_dir.mkdir()
     theirs_dir.mkdir()
     made = [_module(ours_dir / "probe.py", "servicebot_cli._probe_made", PROBE)]
-    assert "servicebot_cli._probe_made" in dataclass_code._codes  # compiled, and kept
-    monkeypatch.setattr(dataclass_code, "_codes", {})  # as a new process: read from the file
+    assert list((tmp_path / "cache").rglob("probe.*.dataclass-code"))  # compiled, and kept
+    _as_a_new_process(monkeypatch)  # read from the file
     made.append(_module(ours_dir / "probe.py", "servicebot_cli._probe_made", PROBE))
     stdlib = _module(theirs_dir / "probe.py", "elsewhere_probe", PROBE)  # not ours: untouched
     for module in made:
@@ -104,6 +118,8 @@ def test_kept_code_makes_the_methods_dataclasses_compiles(tmp_path, monkeypatch)
             pose.x_m = 2.0
         assert module.Reading(1.0, 3).twice == 5.0 and module.Reading(1.0) < module.Reading(2.0)
         assert module.Settings(rate_hz=5.0) != module.Settings(rate_hz=5.0)  # eq=False
+        # objects, not the strings this package's own `from __future__ import annotations` makes
+        assert typing.get_type_hints(module.Pose.__init__)["x_m"] is float
         with pytest.raises(TypeError):
             module.Settings(5.0)  # kw_only
 
@@ -120,7 +136,7 @@ def _run(script: str, cache: Path, **env: str) -> str:
 COUNT_COMPILES = """
     import servicebot_cli.common.dataclass_code as kept
     compiled = []
-    kept.compile = lambda *args: compiled.append(args) or compile(*args)
+    kept.compile = lambda *args, **kw: compiled.append(args) or compile(*args, **kw)
     import servicebot_cli.simulate.scenario.definition as module
     print(len(compiled), len(kept._codes), module.load_scenario(None).duration_s > 0)
 """
@@ -149,15 +165,21 @@ def test_nothing_is_written_without_bytecode_and_a_bad_file_is_compiled_over(tmp
 
 
 def test_a_changed_class_gets_its_new_methods(tmp_path, monkeypatch):
-    monkeypatch.setattr(sys, "pycache_prefix", str(tmp_path / "cache"))
-    monkeypatch.setattr(dataclass_code, "_codes", {})
+    _cache_in(tmp_path, monkeypatch)
     before = _module(tmp_path / "changing.py", "servicebot_cli._probe_changing",
                      "from dataclasses import dataclass\n\n@dataclass\nclass A:\n    x: int\n")
-    monkeypatch.setattr(dataclass_code, "_codes", {})
+    _as_a_new_process(monkeypatch)
     after = _module(tmp_path / "changing.py", "servicebot_cli._probe_changing",
                     "from dataclasses import dataclass\n\n"
                     "@dataclass\nclass A:\n    x: int\n    y: int = 7\n")
     assert repr(before.A(1)) == "A(x=1)" and repr(after.A(1)) == "A(x=1, y=7)"
+    path = dataclass_code.cache_path("servicebot_cli._probe_changing")
+    assert path is None  # the module is gone from sys.modules: its file is found by name
+    kept = list((tmp_path / "cache").rglob("changing*.dataclass-code"))
+    assert len(kept) == 1
+    with open(kept[0], "rb") as stream:
+        texts = marshal.loads(stream.read()[len(importlib.util.MAGIC_NUMBER):])
+    assert len(texts) == 3 and all("y" in text for text in texts if "__init__" in text)
 
 
 def test_a_cache_that_cannot_be_written_leaves_the_classes_as_they_are(tmp_path):

@@ -23,7 +23,7 @@ import pytest
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.common.forked import WorkerEnded, second_core
 from servicebot_cli.description.loader import RobotSource, load, read_description
-from servicebot_cli.simulate.model_facts import FactsAhead, model_facts
+from servicebot_cli.simulate.model_facts import HANDOVER_BYTES, FactsAhead, model_facts
 from servicebot_cli.simulate.scenario.definition import load_scenario
 from servicebot_cli.simulate.session import Outputs, run_and_write
 from servicebot_cli.simulate.summary import _arm_tip
@@ -301,3 +301,36 @@ def test_the_pose_work_handed_over_gives_the_bytes_of_a_worker_forked_for_it(tmp
         assert len(forks) == 1, name
         forks.clear()
     assert bags[0] == bags[1]
+
+
+class _Heavy(_Tally):
+    """Work that pickles to more than a handover carries."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.payload = np.zeros(HANDOVER_BYTES // 8 + 1)
+
+
+def test_work_too_large_or_needing_a_new_package_is_not_handed_over(tmp_path, monkeypatch):
+    robot = read_description(RobotSource.bundled())
+    ahead = FactsAhead(robot, fork=True)
+    pid = ahead._worker.pid
+    assert ahead.take_over(_Heavy(), None, "heavy") is None
+    assert pid is not None and reaped(pid)  # stopped: the caller forks its own
+    ahead.close()
+    # a class of a package imported after the fork: most of a second to import there (trimesh)
+    package = tmp_path / "late_package"
+    package.mkdir()
+    (package / "__init__.py").write_text("class Work:\n    def __call__(self, job):\n"
+                                         "        return job\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    ahead = FactsAhead(robot, fork=True)
+    pid = ahead._worker.pid
+    import late_package  # noqa: PLC0415 -- after the fork, on purpose
+
+    try:
+        assert ahead.take_over(late_package.Work(), None, "late") is None
+    finally:
+        del sys.modules["late_package"]
+    assert pid is not None and reaped(pid)
+    ahead.close()

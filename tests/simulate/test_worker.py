@@ -81,6 +81,28 @@ def test_a_dropped_jobs_error_is_raised_when_a_later_result_is_asked_for(forked)
     worker.close()
 
 
+def _refuse_rebuilding() -> None:
+    raise ValueError("cannot be rebuilt here")
+
+
+class _Unbuildable:
+    """A job that pickles, and raises when it is unpickled."""
+
+    def __reduce__(self) -> tuple[object, tuple[()]]:
+        return _refuse_rebuilding, ()
+
+
+def test_a_job_the_worker_cannot_read_is_its_error_not_a_killed_worker():
+    worker: Worker[object, tuple[int, int, int]] = Worker(_Counter(), forked=True)
+    pid = worker.pid
+    worker.submit(_Unbuildable())
+    worker.submit(2)
+    with pytest.raises(RuntimeError, match="could not read its job: ValueError: cannot be rebuilt"):
+        worker.result()
+    worker.close()
+    assert pid is not None and reaped(pid)
+
+
 def test_an_in_process_worker_does_each_job_when_its_result_is_taken():
     counter = _Counter()
     worker: Worker[int, tuple[int, int, int]] = Worker(counter, forked=False)
