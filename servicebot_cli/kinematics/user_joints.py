@@ -60,11 +60,42 @@ class Mimics:
     @classmethod
     def of(cls, joints: Sequence[Joint], space: JointSpace) -> Mimics:
         """The mimic rules among ``joints`` whose both ends are in ``space``."""
-        rules = [(space.names.index(j.name), space.names.index(j.mimic.joint),
-                  j.mimic.multiplier, j.mimic.offset)
-                 for j in joints if j.mimic is not None and j.name in space.names
-                 and j.mimic.joint in space.names]
-        return cls(*(tuple(column) for column in zip(*rules, strict=True))) if rules else cls()
+        return cls.among(joints, space.names)
+
+    @classmethod
+    def among(cls, joints: Sequence[Joint], names: Sequence[str]) -> Mimics:
+        """The mimic rules of ``joints`` whose both ends are in ``names`` (indices into it).
+
+        A follower's rule comes after its leader's when the leader follows another joint
+        too, so that rules applied in order see each leader's value already set.
+        """
+        rules = {names.index(j.name): (names.index(j.mimic.joint), j.mimic.multiplier,
+                                       j.mimic.offset)
+                 for j in joints if j.mimic is not None and j.name in names
+                 and j.mimic.joint in names and j.mimic.joint != j.name}
+        ordered: list[tuple[int, int, float, float]] = []
+        placed: set[int] = set()
+
+        def place(follower: int, seen: frozenset[int]) -> None:
+            if follower in placed or follower in seen:  # a loop: each is set once, in turn
+                return
+            leader, multiplier, offset = rules[follower]
+            if leader in rules:
+                place(leader, seen | {follower})
+            placed.add(follower)
+            ordered.append((follower, leader, multiplier, offset))
+
+        for follower in rules:
+            place(follower, frozenset())
+        return cls(*(tuple(column) for column in zip(*ordered, strict=True))) if ordered \
+            else cls()
+
+    def applied(self, values: FloatArray) -> FloatArray:
+        """``values`` (..., joints) with every follower set from its leader, in place."""
+        for f, lead, k, c in zip(self.follower, self.leader, self.multiplier, self.offset,
+                                 strict=True):
+            values[..., f] = k * values[..., lead] + c
+        return values
 
     def apply(self, values: FloatArray, named: Iterable[str], space: JointSpace) -> FloatArray:
         """``values`` with every follower the user did not name set from its leader."""

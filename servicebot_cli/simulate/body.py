@@ -34,6 +34,7 @@ from servicebot_cli.kinematics.drive_geometry import DriveGeometry, drive_geomet
 from servicebot_cli.kinematics.running_gear import chassis_joints
 from servicebot_cli.kinematics.steering import refuse_steered_wheels
 from servicebot_cli.kinematics.transforms import pose_matrix
+from servicebot_cli.kinematics.user_joints import Mimics
 from servicebot_cli.simulate.model_facts import FactsAhead, description_first
 from servicebot_cli.simulate.sensors.lidar import cast_problem
 from servicebot_cli.simulate.shape import RobotShape, robot_shape
@@ -102,6 +103,11 @@ class SimRobot:
     def root_link(self) -> str:
         """The base frame's name."""
         return self.robot.root_link or "base_link"
+
+    @property
+    def arm_mimics(self) -> Mimics:
+        """The arm's ``<mimic>`` joints, as columns of :attr:`arm_joints`."""
+        return Mimics.among(self.robot.joints, self.arm_joints)
 
 
 def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = None,

@@ -346,7 +346,7 @@ def _arm_motion(body: SimRobot, scenario: Scenario, q0: FloatArray, dt_s: float)
     index = [space.index(name) for name in body.arm_joints]
     limits = ArmLimits(space.lower[index], space.upper[index], space.velocity[index])
     order = [body.arm_joints.index(name) for name in scenario.arm.joint_names]
-    return ArmMotion(scenario.arm, order, q0, limits, dt_s)
+    return ArmMotion(scenario.arm, order, q0, limits, dt_s, body.arm_mimics)
 
 
 def _joint_positions(body: SimRobot, sides: FloatArray,

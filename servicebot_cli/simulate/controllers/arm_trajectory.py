@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.kinematics.user_joints import Mimics
 from servicebot_cli.simulate.scenario.definition import ArmTrajectory
 
 FloatArray = npt.NDArray[np.float64]
@@ -138,26 +139,33 @@ class ArmMotion:
     keeps the arm's positions, so that an arm held by an obstacle follows on from where it
     was held.
 
+    A joint that mimics another (``<mimic>``, ``mimics``) is wherever its leader puts it,
+    ``multiplier * leader + offset``, at every tick, as Gazebo's ros2_control plugins hold
+    it: its own limits do not hold it back.
+
     Args:
         trajectory: The scenario's goal.
         order: For each of the trajectory's joints, its column among the arm's joints.
         q0: The arm's positions when the run starts (every arm joint) [rad].
         limits: Every arm joint's limits, in the columns' order.
         dt_s: Control period [s].
+        mimics: The arm's mimic joints, as columns.
     """
 
     def __init__(self, trajectory: ArmTrajectory, order: list[int], q0: FloatArray,
-                 limits: ArmLimits, dt_s: float) -> None:
+                 limits: ArmLimits, dt_s: float, mimics: Mimics | None = None) -> None:
         self.trajectory, self.order, self.q0, self.limits = trajectory, order, q0, limits
         self.dt_s = dt_s
         self.static = not trajectory.points
+        self.mimics = mimics or Mimics()
 
     def start(self) -> FloatArray:
         """The arm's positions at the run's start [rad], shape (joints,)."""
         if self.static:
-            return np.array(self.q0, dtype=np.float64)
+            return self.mimics.applied(np.array(self.q0, dtype=np.float64))
         _, lower, upper = _bounds(self.limits, self.dt_s)
-        return np.asarray(np.clip(self.q0, lower, upper), dtype=np.float64)
+        return self.mimics.applied(np.asarray(np.clip(self.q0, lower, upper),
+                                              dtype=np.float64))
 
     def references(self, times_s: FloatArray) -> FloatArray:
         """The reference at ``times_s``, shape (len(times_s), joints)."""
@@ -168,16 +176,16 @@ class ArmMotion:
         own = ArmLimits(self.limits.lower[self.order], self.limits.upper[self.order],
                         self.limits.velocity[self.order])
         ref[:, self.order] = reference(self.trajectory, q0[self.order], times_s, own)
-        return ref
+        return self.mimics.applied(ref)
 
     def follow(self, ref: FloatArray, q: FloatArray) -> FloatArray:
         """Positions from ``q`` following ``ref`` (the first row is ``q``), shape (n+1, joints)."""
         if self.static:
             return np.broadcast_to(q, ref.shape).copy()
-        return follow(ref, q, self.limits, self.dt_s, clip_start=False)
+        return self.mimics.applied(follow(ref, q, self.limits, self.dt_s, clip_start=False))
 
     def step(self, q: FloatArray, ref_before: FloatArray, ref_after: FloatArray) -> FloatArray:
         """Positions a tick after ``q`` (P, joints) toward the reference (see :func:`step`)."""
         if self.static:
             return np.broadcast_to(q, ref_after.shape).copy()
-        return step(q, ref_before, ref_after, self.limits, self.dt_s)
+        return self.mimics.applied(step(q, ref_before, ref_after, self.limits, self.dt_s))

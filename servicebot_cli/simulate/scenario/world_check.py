@@ -73,6 +73,7 @@ def check_arm_points(body: SimRobot, scenario: Scenario) -> None:
     columns = [body.arm_joints.index(name) for name in trajectory.joint_names]
     points = np.repeat(q0[None], len(trajectory.points), axis=0)
     points[:, columns] = [point.positions for point in trajectory.points]
+    body.arm_mimics.applied(points)
     watch = SelfContactWatch(body.robot, body.shape, body.base_height_m, 1.0,
                              body.disabled_pairs, body.resolver)
     events = watch.advance(0, points)  # one point per "tick": an event's time is its index
@@ -106,6 +107,15 @@ def _check_arm(body: SimRobot, scenario: Scenario) -> FloatArray:
                       "movable joints but its wheels (leave out arm:)")
             raise _error(scenario, ("arm", "joint_names", i), f"'{name}' {reason}"
                          if wheel else f"unknown arm joint: {reason}")
+    mimics = body.arm_mimics
+    for i, name in enumerate(trajectory.joint_names):
+        j = body.arm_joints.index(name)
+        if j in mimics.follower:
+            rule = mimics.follower.index(j)
+            leader = body.arm_joints[mimics.leader[rule]]
+            raise _error(scenario, ("arm", "joint_names", i),
+                         f"'{name}' mimics '{leader}' (x {mimics.multiplier[rule]:g} + "
+                         f"{mimics.offset[rule]:g}) and moves with it; move '{leader}' instead")
     for p, point in enumerate(trajectory.points):
         for i, name in enumerate(trajectory.joint_names):
             j = body.arm_joints.index(name)
@@ -114,7 +124,7 @@ def _check_arm(body: SimRobot, scenario: Scenario) -> FloatArray:
                 raise _error(scenario, ("arm", "points", p, "positions", i),
                              f"{name} = {value:g} rad is outside its URDF limits "
                              f"[{lo:g}, {hi:g}] rad")
-    return q0
+    return mimics.applied(q0)
 
 
 def _check_camera(body: SimRobot, scenario: Scenario) -> None:
