@@ -274,3 +274,41 @@ def test_the_wheel_drops_are_running_gear_not_an_arm(create3):
     states = create3.messages["/joint_states"]
     assert set(drops) <= set(states[-1].name)
     assert all(states[-1].position[list(states[-1].name).index(d)] == 0.0 for d in drops)
+
+
+def test_the_plot_names_the_first_ray_sensor_by_its_topic_on_a_robot_without_a_lidar(tmp_path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from servicebot_cli.description.loader import RobotSource, load
+    from servicebot_cli.simulate.files.plot import Track, _draw_map
+    from servicebot_cli.simulate.scenario.definition import load_scenario
+    from servicebot_cli.simulate.session import Outputs, default_arm_for, run_and_write
+
+    urdf = _expanded(tmp_path)
+    labels, topics = {}, {}
+    for name, source in (("create3", RobotSource.of(str(urdf))),
+                         ("bundled", RobotSource.bundled("sim"))):
+        robot = load(source)
+        scenario, _ = default_arm_for(load_scenario(None), robot)  # as the command does
+        run = run_and_write(robot, scenario, seed=0, outputs=Outputs(),
+                            scenario_dir=tmp_path, keep_run=True).result
+        assert run is not None
+        track = Track(run, len(run.odometry.times_s))
+        track.add(run)
+        assert track.scan is not None
+        if not len(track.scan):  # the IR sensor sees no wall at the end: a point to draw
+            track.scan = np.array([[0.0, 0.0]])
+        figure, axes = plt.subplots()
+        _draw_map(axes, track)
+        labels[name] = [text.get_text() for text in axes.legend().get_texts()]
+        plt.close(figure)
+        topic = run.body.ray_sensors[0].spec.topic
+        assert f"scan on {topic} at {track.scan_time_s:.1f} s" in labels[name]
+        topics[name] = topic
+    assert topics["bundled"].endswith("scan")  # its LIDAR
+    # an IR sensor, named by its topic (one that begins with "_", which a legend would hide)
+    assert "ir_intensity" in topics["create3"]
+    assert not any("LIDAR" in label for label in labels["create3"])

@@ -56,8 +56,9 @@ class Track:
         self.odometry: list[FloatArray] = []  # time, x, y (world) and drift per kept sample
         self.contacts: list[tuple[float, float]] = []
         self.lidar_z: float | None = None
-        self.scan: FloatArray | None = None  # the LIDAR's last scan in the world, (M, 2)
+        self.scan: FloatArray | None = None  # the first ray sensor's last scan, world (M, 2)
         self.scan_time_s = 0.0
+        self.scan_topic = ""  # that ray sensor's topic: a TurtleBot 4 without one, an IR's
         self.other_scans: dict[int, FloatArray] = {}  # the other ray sensors' last scans
         self.start: tuple[float, float, float, FloatArray] | None = None
         self.end: tuple[float, float, float, FloatArray] | None = None
@@ -97,6 +98,7 @@ class Track:
                 continue
             self.lidar_z = float(sensor.origin_m[0, 2]) if self.lidar_z is None else self.lidar_z
             self.scan, self.scan_time_s = points, float(sensor.times_s[-1])
+            self.scan_topic = sensor.spec.topic
 
     def series(self) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
         """Kept boundaries' times [s], (x, y, yaw) of the truth, arm angles; odometry rows."""
@@ -156,7 +158,7 @@ def _draw_map(ax: Axes, track: Track) -> None:
             label="wheel odometry")
     if track.scan is not None:
         ax.scatter(track.scan[:, 0], track.scan[:, 1], s=4, color="#d62728", zorder=3,
-                   label=f"LIDAR scan at {track.scan_time_s:.1f} s")
+                   label=f"scan on {track.scan_topic or 'its topic'} at {track.scan_time_s:.1f} s")
     if track.other_scans:
         others = np.vstack(list(track.other_scans.values()))
         ax.scatter(others[:, 0], others[:, 1], s=9, marker="^", color="#9467bd", zorder=3,
