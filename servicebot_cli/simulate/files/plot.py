@@ -98,7 +98,7 @@ class Track:
                 continue
             self.lidar_z = float(sensor.origin_m[0, 2]) if self.lidar_z is None else self.lidar_z
             self.scan, self.scan_time_s = points, float(sensor.times_s[-1])
-            self.scan_topic = sensor.spec.topic
+            self.scan_topic = sensor.spec.topic or ""
 
     def series(self) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
         """Kept boundaries' times [s], (x, y, yaw) of the truth, arm angles; odometry rows."""
