@@ -177,7 +177,7 @@ def default_arm_for(scenario: Scenario,
     movable = {j.name for j in robot.movable_joints}
     missing = [n for n in scenario.arm.joint_names if n not in movable]
     if not missing:
-        return scenario, ()
+        return _without_followers(scenario, robot, movable)
     from servicebot_cli.simulate.scenario.definition import ArmTrajectory
 
     name = robot.name or "this robot"
@@ -185,6 +185,34 @@ def default_arm_for(scenario: Scenario,
             f"'{missing[0]}', so its joints hold still (to move them, write a scenario from "
             "'servicebot simulate --print-scenario' and give it with -s)")
     return dataclasses.replace(scenario, arm=ArmTrajectory()), (note,)
+
+
+def _without_followers(scenario: Scenario, robot: RobotDescription,
+                       movable: set[str]) -> tuple[Scenario, tuple[str, ...]]:
+    """The built-in scenario's arm goal without the joints ``robot`` makes mimic another.
+
+    They follow their leader (a scenario file that commands one is refused); a note says so.
+    """
+    trajectory = scenario.arm
+    followers = {j.name: j.mimic.joint for j in robot.joints
+                 if j.mimic is not None and j.mimic.joint in movable}
+    dropped = [n for n in trajectory.joint_names if n in followers]
+    if not dropped:
+        return scenario, ()
+    from servicebot_cli.simulate.scenario.definition import TrajectoryPoint
+
+    notes = tuple(f"note: the built-in scenario moves '{n}'; {robot.name or 'this robot'} makes "
+                  f"it mimic '{followers[n]}', so it follows that joint instead" for n in dropped)
+    kept = [i for i, n in enumerate(trajectory.joint_names) if n not in followers]
+    if not kept:  # the built-in goal commands followers only: nothing left to move
+        from servicebot_cli.simulate.scenario.definition import ArmTrajectory
+
+        return dataclasses.replace(scenario, arm=ArmTrajectory()), notes
+    points = tuple(TrajectoryPoint(p.time_from_start_s, tuple(p.positions[i] for i in kept))
+                   for p in trajectory.points)
+    arm = dataclasses.replace(trajectory, joint_names=tuple(trajectory.joint_names[i]
+                                                            for i in kept), points=points)
+    return dataclasses.replace(scenario, arm=arm), notes
 
 
 def with_overrides(scenario: Scenario, overrides: Overrides) -> Scenario:

@@ -107,15 +107,11 @@ def _check_arm(body: SimRobot, scenario: Scenario) -> FloatArray:
                       "movable joints but its wheels (leave out arm:)")
             raise _error(scenario, ("arm", "joint_names", i), f"'{name}' {reason}"
                          if wheel else f"unknown arm joint: {reason}")
-    mimics = body.arm_mimics
     for i, name in enumerate(trajectory.joint_names):
-        j = body.arm_joints.index(name)
-        if j in mimics.follower:
-            rule = mimics.follower.index(j)
-            leader = body.arm_joints[mimics.leader[rule]]
-            raise _error(scenario, ("arm", "joint_names", i),
-                         f"'{name}' mimics '{leader}' (x {mimics.multiplier[rule]:g} + "
-                         f"{mimics.offset[rule]:g}) and moves with it; move '{leader}' instead")
+        refusal = _follower_refusal(body, name)
+        if refusal:
+            raise _error(scenario, ("arm", "joint_names", i), refusal)
+    mimics = body.arm_mimics
     for p, point in enumerate(trajectory.points):
         for i, name in enumerate(trajectory.joint_names):
             j = body.arm_joints.index(name)
@@ -125,6 +121,32 @@ def _check_arm(body: SimRobot, scenario: Scenario) -> FloatArray:
                              f"{name} = {value:g} rad is outside its URDF limits "
                              f"[{lo:g}, {hi:g}] rad")
     return mimics.applied(q0)
+
+
+def _follower_refusal(body: SimRobot, name: str) -> str:
+    """Why the arm joint ``name`` cannot be commanded: it follows another (``<mimic>``).
+
+    Empty when it can: no mimic, or one of a joint that does not move (fixed, unknown).
+    """
+    leaders = {j.name: j.mimic.joint for j in body.robot.joints if j.mimic is not None}
+    if name not in leaders:
+        return ""
+    chain, root = [name], leaders[name]
+    while root in leaders and root not in chain:
+        chain.append(root)
+        root = leaders[root]
+    if root in chain:
+        return (f"'{name}' is in a loop of <mimic> joints ({' -> '.join([*chain, root])}); "
+                "give one of them no <mimic> ('servicebot check' shows the loop)")
+    if root not in body.joint_space.names:
+        return ""
+    joint = next(j for j in body.robot.joints if j.name == name)
+    assert joint.mimic is not None
+    rule = f"'{name}' mimics '{joint.mimic.joint}' (x {joint.mimic.multiplier:g} + " \
+        f"{joint.mimic.offset:g})"
+    if root in {w.joint for w in body.geometry.wheels}:
+        return f"{rule} and turns with the wheel '{root}'; leave it out of arm:"
+    return f"{rule} and moves with it; move '{root}' instead"
 
 
 def _check_camera(body: SimRobot, scenario: Scenario) -> None:
