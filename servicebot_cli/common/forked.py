@@ -261,11 +261,7 @@ def _serve(function: Callable[[Any], Any], jobs_fd: int, results_fd: int,
     writer = threading.Thread(target=_write_results, args=(results_fd, results), daemon=True)
     writer.start()
     try:
-        if prepare is not None:
-            try:
-                prepare()
-            except Exception:  # noqa: BLE001,S110 -- the job meets it again, and says so
-                pass
+        prepare_quietly(prepare)
         while (job := jobs.get()) is not _END:
             try:
                 if isinstance(job[0], _Unreadable):
@@ -286,6 +282,19 @@ def _serve(function: Callable[[Any], Any], jobs_fd: int, results_fd: int,
     finally:
         results.put(None)
         writer.join()
+
+
+def prepare_quietly(prepare: Callable[[], object] | None) -> None:
+    """Do a worker's ``prepare``, if it has one; its error is left for the first job to meet.
+
+    That job does the same work, and its error comes back as the job's result.
+    """
+    if prepare is None:
+        return
+    try:
+        prepare()
+    except Exception:  # noqa: BLE001,S110 -- the job meets it again, and says so
+        pass
 
 
 def _where_raised() -> str:

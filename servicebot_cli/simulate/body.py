@@ -9,6 +9,7 @@ shapes of every link. Nothing is a constant of the bundled robot.
 from __future__ import annotations
 
 import contextlib
+import functools
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Generic, TypeVar
@@ -104,10 +105,15 @@ class SimRobot:
         """The base frame's name."""
         return self.robot.root_link or "base_link"
 
-    @property
+    @functools.cached_property
     def arm_mimics(self) -> Mimics:
         """The arm's ``<mimic>`` joints, as columns of :attr:`arm_joints`."""
         return Mimics.among(self.robot.joints, self.arm_joints)
+
+    @functools.cached_property
+    def joint_mimics(self) -> Mimics:
+        """Every ``<mimic>`` joint, as columns of the joint space's names (wheels' too)."""
+        return Mimics.among(self.robot.joints, self.joint_space.names)
 
 
 def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = None,

@@ -30,7 +30,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.common.errors import DescriptionError, ServicebotError
-from servicebot_cli.common.forked import Worker, WorkerEnded, second_core
+from servicebot_cli.common.forked import Worker, WorkerEnded, prepare_quietly, second_core
 from servicebot_cli.description.joint_space import JointSpace
 
 if TYPE_CHECKING:
@@ -258,11 +258,7 @@ class _Process:
             return None
         if isinstance(job, _Handover):
             self.work = job.function
-            if job.prepare is not None:
-                try:
-                    job.prepare()
-                except Exception:  # noqa: BLE001,S110 -- the first job meets it again, and says so
-                    pass
+            prepare_quietly(job.prepare)
             return None
         assert self.work is not None  # handed over before its first job
         return self.work(job)

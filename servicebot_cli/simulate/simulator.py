@@ -25,7 +25,6 @@ import numpy.typing as npt
 from servicebot_cli.common.forked import Worker, second_core
 from servicebot_cli.description.sensors import CameraSpec, ImuSpec, LidarSpec
 from servicebot_cli.kinematics import diff_drive
-from servicebot_cli.kinematics.user_joints import Mimics
 from servicebot_cli.simulate.body import Mounted, SimRobot
 from servicebot_cli.simulate.controllers.arm_trajectory import ArmLimits, ArmMotion
 from servicebot_cli.simulate.controllers.classic_drive import ENCODER, NEITHER, WORLD
@@ -365,7 +364,7 @@ def _joint_positions(body: SimRobot, sides: FloatArray,
         else:
             columns.append(np.zeros(len(sides)))
     # a <mimic> of a wheel turns with it (those of the arm's joints are set already)
-    return names, Mimics.among(body.robot.joints, names).applied(np.column_stack(columns))
+    return names, body.joint_mimics.applied(np.column_stack(columns))
 
 
 def scan_stream(index: int, mounted: Mounted[LidarSpec]) -> str:
