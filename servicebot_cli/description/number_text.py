@@ -20,6 +20,7 @@ _BLANKS_TO_COMMAS = bytes.maketrans(b" \t\n\r\f\v", b",,,,,,")
 # nesting need others); index lists take no fraction or exponent either
 _FLOAT_CHARS = b"0123456789.eE+-,"
 _INT_CHARS = b"0123456789+-,"
+_INT64_MIN = -(2**63)
 
 
 class NumberListError(ValueError):
@@ -74,7 +75,8 @@ def _as_json(text: str | bytes, dtype: type) -> np.ndarray | None:
             if (floats == 0).any() and (b"-0," in data or data.endswith(b"-0")):
                 return None  # JSON reads "-0" as the integer 0, numpy as -0.0
             return floats
-        indices = np.array(values)  # int64 unless orjson made a float of an integer below
-        return indices if indices.dtype == np.int64 else None  # -2**63 (or uint64 above)
+        # OverflowError beyond int64, but below it orjson reads a float, which rounds to -2**63
+        indices = np.array(values, dtype=np.int64)
+        return indices if not len(indices) or indices.min() > _INT64_MIN else None
     except (orjson.JSONDecodeError, OverflowError, ValueError, TypeError):
         return None
