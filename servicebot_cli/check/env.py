@@ -54,6 +54,7 @@ class CheckEnv:
     load_meshes: bool = True
     model_ahead: bool = False
     search: PackageSearch = field(init=False)
+    _directories: dict[str, Path] = field(init=False, default_factory=dict)
 
     def __post_init__(self) -> None:
         self.search = PackageSearch(self.resolver)
@@ -61,8 +62,14 @@ class CheckEnv:
     def resolve(self, robot: RobotDescription, shape: Shape) -> Resolved:
         """Where the ``<mesh filename>`` of ``shape`` leads (cached for the run)."""
         filename = shape.geometry.filename or ""
-        base_dir = Path(robot.source_of(shape.element).file).parent.absolute()
-        return self.search.resolve(filename, base_dir)
+        return self.search.resolve(filename, self._directory(robot.source_of(shape.element).file))
+
+    def _directory(self, file: str) -> Path:
+        """The absolute directory of a description's source ``file`` (made once per file)."""
+        found = self._directories.get(file)
+        if found is None:
+            found = self._directories[file] = Path(file).parent.absolute()
+        return found
 
     def mesh_path(self, robot: RobotDescription, shape: Shape) -> Path:
         """The file a ``<mesh filename>`` names.
