@@ -314,7 +314,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
         from servicebot_cli.simulate.files.live import LiveWriter
 
         track = next(w.track for w in writers if isinstance(w, LiveWriter))
-    notes = (*joint_states.notes,
+    notes = (*controllers_file.notes, *joint_states.notes,
              *(f"note: the simulator's collision shape of link {skipped}"
                for skipped in body.shape.skipped),
              *filter(None, (unpublished_note(mounted.spec) for mounted in body.ray_sensors)),

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -97,3 +98,45 @@ base:
     assert np.diag(odom[-1].pose.covariance.reshape(6, 6)).tolist() == [1, 2, 3, 4, 5, 6]
     assert not odom[-1].twist.covariance.any()  # the file sets none: zero
     assert len(odom) == 100  # publish_rate 25 Hz from the file, for 4 s
+
+
+_CONTROLLERS = Path(__file__).resolve().parents[2] / "robots" / "controllers.yaml"
+
+
+def _robot_naming(tmp_path, *files: str) -> Path:
+    """The bundled robot, its ros2_control plugin naming ``files`` as its parameters."""
+    text = (_CONTROLLERS.parent / "service_robot.urdf.xml").read_text()
+    named = "".join(f"<parameters>{name}</parameters>" for name in files)
+    robot = tmp_path / "robot.urdf"
+    robot.write_text(text.replace("<parameters>controllers.yaml</parameters>", named, 1))
+    return robot
+
+
+@pytest.mark.parametrize("case", ["nothing else", "another named file", "beside"])
+def test_a_missing_parameter_file_is_noted_with_what_is_read_instead(run, tmp_path, case):
+    """Gazebo's controller manager would not start; the run says so, and what it used."""
+    missing = "/nonexistent/ws/install/share/demo/config/controllers.yaml"
+    files = [missing, str(_CONTROLLERS)] if case == "another named file" else [missing]
+    robot = _robot_naming(tmp_path, *files)
+    if case == "beside":
+        (tmp_path / "controllers.yaml").write_bytes(_CONTROLLERS.read_bytes())
+    result = run("simulate", "--headless", "--format", "json", "--duration-s", "1", robot)
+    assert result.exit_code == 0, result.stderr
+    notes = [line for line in result.stderr.splitlines() if missing in line]
+    assert len(notes) == 1, result.stderr
+    expected = {"nothing else": "no controller publishes odometry or joint states; give the "
+                                "file with --controllers FILE",
+                "another named file": f"{_CONTROLLERS} is read without it",
+                "beside": f"{tmp_path / 'controllers.yaml'} is read instead"}[case]
+    assert notes[0] == (f"note: the ros2_control plugin's parameter file {missing} does not "
+                        f"exist (the controller manager would not start in Gazebo); {expected}")
+    messages = json.loads(result.stdout)["messages"]
+    assert ("/joint_states" in messages) is (case != "nothing else")
+
+
+def test_no_note_when_controllers_are_given(run, tmp_path):
+    robot = _robot_naming(tmp_path, "/nonexistent/controllers.yaml")
+    result = run("simulate", "--headless", "--duration-s", "1", "--controllers", _CONTROLLERS,
+                 robot)
+    assert result.exit_code == 0, result.stderr
+    assert "nonexistent" not in result.stderr

@@ -73,6 +73,8 @@ class ControllersFile:
     """Where the file's joint_state_broadcasters publish (none: no broadcaster)."""
     wheel_tf_joints: tuple[str, ...] = ()
     """The wheel joints a Gazebo drive plugin puts on /tf itself, in its order (none: none)."""
+    notes: tuple[str, ...] = ()
+    """What the run should say of how the file was chosen (a named file that is missing)."""
 
     @property
     def label(self) -> str:
@@ -91,6 +93,18 @@ def named_controllers_file(robot: RobotDescription,
         return (Path(explicit),)
     named = tuple(p for p in parameter_files(robot.plugins, robot.path.parent) if p.is_file())
     return named or None
+
+
+def missing_parameter_files(robot: RobotDescription, explicit: str | None) -> tuple[Path, ...]:
+    """The files a ros2_control plugin's ``<parameters>`` name that do not exist.
+
+    None with ``explicit`` (``--controllers`` replaces them). Gazebo would pass each to the
+    controller manager, which does not start without it.
+    """
+    if explicit is not None:
+        return ()
+    return tuple(p for p in parameter_files(robot.plugins, robot.path.parent)
+                 if not p.is_file())
 
 
 def controllers_beside(robot: RobotDescription) -> Path | None:

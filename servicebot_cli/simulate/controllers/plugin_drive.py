@@ -30,6 +30,7 @@ name, the name it is usually spawned with). Pure.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import TYPE_CHECKING, Any
 
@@ -48,6 +49,7 @@ from servicebot_cli.simulate.controllers.config import (
     ControllersFile,
     ControllersFileError,
     controllers_beside,
+    missing_parameter_files,
     named_controllers_file,
     read_controllers_file,
 )
@@ -70,8 +72,20 @@ def controllers_for(robot: RobotDescription, explicit: str | None) -> Controller
     named = named_controllers_file(robot, explicit)
     plugin = drive_plugin(robot) if named is None else None
     if plugin is not None:
-        return read_drive_plugin(robot, plugin)
-    return read_controllers_file(named or controllers_beside(robot))
+        chosen = read_drive_plugin(robot, plugin)
+    else:
+        chosen = read_controllers_file(named or controllers_beside(robot))
+    missing = missing_parameter_files(robot, explicit)
+    if not missing:
+        return chosen
+    instead = (f"the base follows {chosen.label} instead" if plugin is not None
+               else f"{chosen.label} is read without it" if named
+               else f"{chosen.label} is read instead" if chosen.path is not None
+               else "no controller publishes odometry or joint states; give the file with "
+               "--controllers FILE")
+    notes = tuple(f"note: the ros2_control plugin's parameter file {path} does not exist (the "
+                  f"controller manager would not start in Gazebo); {instead}" for path in missing)
+    return dataclasses.replace(chosen, notes=notes)
 
 
 def drive_plugin(robot: RobotDescription) -> Plugin | None:
