@@ -91,6 +91,8 @@ def sweep(sweep_file: str, robot_args: RobotArgs, jobs: int | None, scheduler: s
         out_dir=out_dir, keep=keep or (), plot=plot,
         progress=progress, allow_collisions=allow_collisions, srdf=srdf)
     report = session.run(request, stderr=sys.stderr)
+    for note in report.notes:
+        click.echo(note, err=True)
     show_sweep(report, fmt)
     if report.failed:
         raise AnswerIsNo(failure_line(report))

@@ -7,6 +7,7 @@ run: the file's fields, the scenario with every combination of values, the expec
 
 from __future__ import annotations
 
+import dataclasses
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -78,6 +79,7 @@ class SweepReport:
         workers: Where runs ran: ``2 local workers`` or the scheduler's address.
         wall_s: Wall time of the runs done now [s] (checks and loading excluded).
         files: Files written into the output directory.
+        notes: What the sweep changed of the built-in scenario for this robot.
     """
 
     sweep: str
@@ -90,6 +92,7 @@ class SweepReport:
     workers: str
     wall_s: float
     files: tuple[Path, ...] = field(default=())
+    notes: tuple[str, ...] = ()
 
     @property
     def resumed(self) -> int:
@@ -124,6 +127,9 @@ def run(request: SweepRequest, *, stderr: TextIO | None = None,
     checks = _expectations(definition)
     robot = load(request.robot)
     runs = plan(definition, base, robot.xml_text)
+    notes: tuple[str, ...] = ()
+    if definition.scenario_file is None:  # the built-in scenario, as simulate fits it
+        runs, notes = _fitted(runs, robot)
     from servicebot_cli.kinematics.srdf import robot_disabled_pairs
 
     disabled = robot_disabled_pairs(request.srdf, robot)
@@ -143,7 +149,7 @@ def run(request: SweepRequest, *, stderr: TextIO | None = None,
         return SweepReport(request.sweep_file, robot.name, base.name, len(runs),
                            _shape(definition), tuple(c.text for c in checks),
                            tuple(results[i] for i in sorted(results)),
-                           _workers(request), wall_s, tuple(files))
+                           _workers(request), wall_s, tuple(files), notes)
 
     files: tuple[Path, ...] = ()
     start = clock()
@@ -158,6 +164,23 @@ def run(request: SweepRequest, *, stderr: TextIO | None = None,
 
         write_plot(finished, request.plot)
     return finished
+
+
+def _fitted(runs: list[Run], robot: RobotDescription) -> tuple[list[Run], tuple[str, ...]]:
+    """The runs of the built-in scenario with its arm goal fitted to ``robot``, and the notes.
+
+    As ``simulate`` runs it (:func:`~servicebot_cli.simulate.session.default_arm_for`): a
+    robot without the bundled arm's joints holds its own still; a joint it makes mimic
+    another follows its leader.
+    """
+    from servicebot_cli.simulate.session import default_arm_for
+
+    fitted, notes = [], {}
+    for r in runs:
+        scenario, said = default_arm_for(r.scenario, robot)
+        fitted.append(dataclasses.replace(r, scenario=scenario))
+        notes.update(dict.fromkeys(said))
+    return fitted, tuple(notes)
 
 
 def _run_all(request: SweepRequest, definition: SweepDefinition, todo: list[Run],

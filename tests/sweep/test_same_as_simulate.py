@@ -49,3 +49,22 @@ def test_a_run_equals_simulate_with_its_values_in_a_scenario_file(tmp_path, writ
     assert json.loads((kept / "csv" / "summary.json").read_text()) == record["summary"]
     assert _files(kept / "bag").keys() == {"bag_0.mcap", "metadata.yaml"}
     assert _files(kept / "bag") == _files(alone / "bag")
+
+
+def test_the_built_in_scenario_fits_another_robot_as_simulate_fits_it(tmp_path, write_sweep):
+    """A robot without the bundled arm: its joints hold still in both, with the same note."""
+    from tests.simulate.plugin_robots import TURTLEBOT3
+
+    sweep = write_sweep({"scenario": "default", "seeds": [3], "set": {"duration_s": 4}})
+    out = tmp_path / "out"
+    result = run_servicebot("sweep", sweep, TURTLEBOT3, "--out", out, "--keep", "bag",
+                            "--jobs", "1")
+    assert result.returncode == 0, result.stderr
+    notes = [line for line in result.stderr.splitlines() if line.startswith("note:")]
+    alone = run_servicebot("simulate", "--headless", TURTLEBOT3, "--seed", 3, "--duration-s", 4,
+                           "--bag", tmp_path / "bag")
+    assert alone.returncode == 0, alone.stderr
+    assert len(notes) == 1 and "arm_base_to_link1" in notes[0]
+    assert notes == [line for line in alone.stderr.splitlines() if line.startswith("note:")]
+    (record,) = (json.loads(p.read_text()) for p in (out / "runs").glob("*/run.json"))
+    assert _files(out / "runs" / record["key"] / "bag") == _files(tmp_path / "bag")
