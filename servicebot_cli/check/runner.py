@@ -160,7 +160,7 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
         ("SB511", lambda: transmissions.check(robot)),
     ]
     for prefix, family in families:
-        if any(wanted(code) for code in RULES if code.startswith(prefix)):
+        if settings.any_enabled(prefix):
             yield from family()
 
 

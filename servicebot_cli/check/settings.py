@@ -57,11 +57,25 @@ class Settings:
     inertia_factor: float = 2.0
     severity: Mapping[str, Severity] = field(default_factory=dict)
     source: str | None = None
+    _enabled: dict[str, bool] = field(default_factory=dict, init=False, repr=False,
+                                      compare=False)
 
     def enabled(self, code: str) -> bool:
-        """True when rule ``code`` runs."""
-        chosen = "ALL" in (s.upper() for s in self.select) or matches(code, self.select)
-        return chosen and not matches(code, self.ignore)
+        """True when rule ``code`` runs (worked out once per code: it is asked per finding)."""
+        known = self._enabled.get(code)
+        if known is None:
+            chosen = "ALL" in (s.upper() for s in self.select) or matches(code, self.select)
+            known = self._enabled[code] = chosen and not matches(code, self.ignore)
+        return known
+
+    def any_enabled(self, prefix: str) -> bool:
+        """True when a rule whose code starts with ``prefix`` runs."""
+        key = f"{prefix}*"  # kept beside the codes, which have no '*'
+        known = self._enabled.get(key)
+        if known is None:
+            known = self._enabled[key] = any(self.enabled(code) for code in RULES
+                                             if code.startswith(prefix))
+        return known
 
     def severity_of(self, code: str) -> Severity:
         """The severity of ``code`` in this run."""

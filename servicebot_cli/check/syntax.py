@@ -161,6 +161,9 @@ def _number(element: ET.Element, key: str, value: str, count: int) -> Iterator[I
     ``izz=" 9e-06"``, which it loads).
     """
     parts = [value.lstrip(_C_SPACES)] if count == 1 else value.split()
+    if len(parts) == count and all(_NUMBER.fullmatch(part) and math.isfinite(float(part))
+                                   for part in parts):
+        return  # the common case, without building the message's text
     where = f"<{element.tag}{_named(element)} {key}=\"{value}\">"
     if len(parts) != count:
         yield Issue("SB013", f"{where}: expected {count} numbers, found {len(parts)}", element)
