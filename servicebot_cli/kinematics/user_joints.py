@@ -185,8 +185,19 @@ def clamped_user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *
     try:
         space.checked(probe)
     except OutOfLimits:
-        raise _out_of_limits(space, probe, deg) from None
+        raise _out_of_limits(space, probe, deg, _rules_of(mimics, assignments, space)) from None
     return values, ()
+
+
+def _rules_of(mimics: Mimics | None, given: Collection[str],
+              space: JointSpace) -> dict[int, tuple[int, float, float]]:
+    """The rule (leader, multiplier, offset) of each follower the user did not name."""
+    if mimics is None:
+        return {}
+    return {f: (lead, k, c) for f, lead, k, c in zip(mimics.follower, mimics.leader,
+                                                     mimics.multiplier, mimics.offset,
+                                                     strict=True)
+            if space.names[f] not in given}
 
 
 def _clamped(space: JointSpace, values: FloatArray, inside: FloatArray,
@@ -209,17 +220,24 @@ def unnamed_outside(space: JointSpace, values: FloatArray) -> list[str]:
     return [name for name, out in zip(space.names, outside, strict=True) if out]
 
 
-def _out_of_limits(space: JointSpace, values: FloatArray, deg: bool) -> OutOfLimits:
+def _out_of_limits(space: JointSpace, values: FloatArray, deg: bool,
+                   rules: Mapping[int, tuple[int, float, float]]) -> OutOfLimits:
+    """The first joint outside its limits; a follower's names the leader that put it there."""
     scale = np.where(angular(space), math.degrees(1.0) if deg else 1.0, 1.0)
     for i, value in enumerate(values):
         lo, hi = space.lower[i], space.upper[i]
         if not math.isnan(lo) and not lo - 1e-9 <= value <= hi + 1e-9:
             unit = unit_of(space, i, deg)
+            where = (f"joint '{space.names[i]}' = {value * scale[i]:g} {unit} is outside its "
+                     f"limits [{lo * scale[i]:g}, {hi * scale[i]:g}] {unit}")
+            if i not in rules:
+                return OutOfLimits(f"{where}; give a value inside them, or --clamp")
+            lead, k, c = rules[i]
+            leader = space.names[lead]
             return OutOfLimits(
-                f"joint '{space.names[i]}' = {value * scale[i]:g} {unit} is outside its limits "
-                f"[{lo * scale[i]:g}, {hi * scale[i]:g}] {unit}; give a value inside them, "
-                "or --clamp"
-            )
+                f"{where}: it mimics '{leader}' = {values[lead] * scale[lead]:g} "
+                f"{unit_of(space, lead, deg)} (x {k:g} + {c * scale[i]:g} {unit}); give '{leader}' a "
+                "value that keeps it inside, or --clamp")
     return OutOfLimits("a joint value is outside its limits")  # not reached: checked() failed
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 import math
 
 import numpy as np
@@ -137,3 +138,29 @@ def test_as_a_real_process():
     result = run_servicebot("fk", "-j", "arm_base_to_link1=0.3", "--format", "json")
     assert result.returncode == 0 and result.stderr == ""
     assert json.loads(result.stdout)["poses"][0]["frame"] == "arm_tool_link"
+
+
+def test_a_follower_its_leader_puts_outside_its_limits_names_the_leader(run, tmp_path):
+    """The user gave the leader a value inside its limits: the error says which to change."""
+    bundled = Path(__file__).resolve().parents[2] / "robots" / "service_robot.urdf.xml"
+    robot = tmp_path / "fingered.urdf"
+    robot.write_text(bundled.read_text().replace("\n  <ros2_control", """
+  <link name="arm_finger"/>
+  <joint name="arm_finger_joint" type="revolute">
+    <parent link="arm_link4"/><child link="arm_finger"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="1" velocity="0.5"/>
+    <mimic joint="arm_link3_to_link4" multiplier="-2" offset="0.1"/>
+  </joint>
+  <ros2_control""", 1))
+    assert_one_line_error(
+        run("fk", robot, "-j", "arm_link3_to_link4=0.9", "-f", "arm_finger"), 2,
+        "joint 'arm_finger_joint' = -1.7 rad is outside its limits [-1, 1] rad: it mimics "
+        "'arm_link3_to_link4' = 0.9 rad (x -2 + 0.1 rad); give 'arm_link3_to_link4' a value "
+        "that keeps it inside, or --clamp")
+    assert_one_line_error(
+        run("fk", robot, "--deg", "-j", "arm_link3_to_link4=50", "-f", "arm_finger"), 2,
+        "it mimics 'arm_link3_to_link4' = 50 deg (x -2 + 5.72958 deg)")
+    inside = run("fk", robot, "-j", "arm_link3_to_link4=0.5", "-f", "arm_finger",
+                 "--format", "json")
+    assert inside.exit_code == 0, inside.stderr
+    assert json.loads(inside.stdout)["joints"]["arm_finger_joint"] == pytest.approx(-0.9)
