@@ -236,8 +236,8 @@ def _out_of_limits(space: JointSpace, values: FloatArray, deg: bool,
             leader = space.names[lead]
             return OutOfLimits(
                 f"{where}: it mimics '{leader}' = {values[lead] * scale[lead]:g} "
-                f"{unit_of(space, lead, deg)} (x {k:g} + {c * scale[i]:g} {unit}); give '{leader}' a "
-                "value that keeps it inside, or --clamp")
+                f"{unit_of(space, lead, deg)} (x {k:g} + {c * scale[i]:g} {unit}); give "
+                f"'{leader}' a value that keeps it inside, or --clamp")
     return OutOfLimits("a joint value is outside its limits")  # not reached: checked() failed
 
 
