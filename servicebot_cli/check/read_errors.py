@@ -20,7 +20,9 @@ from servicebot_cli.common.errors import (
 _WHERE = re.compile(r"^(?P<file>.+?):(?P<line>\d+)(?::(?P<column>\d+))?: (?P<rest>.*)$", re.DOTALL)
 _LIMITS = ("limit for a robot description", "elements; refused", "deep; refused",
            "MB limit; is it the right file?")  # the last: a device read to the limit
-_UNDEFINED_ARG = re.compile(r"Undefined substitution argument (\S+)$")
+# xacro adds " when evaluating expression '...'" when a property read the argument lazily
+_UNDEFINED_ARG = re.compile(r"Undefined substitution argument (\S+)"
+                            r"(?: when evaluating expression '.*')?$", re.DOTALL)
 
 
 def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Issue:

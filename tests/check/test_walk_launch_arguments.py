@@ -70,3 +70,24 @@ def test_in_a_walk_other_xacro_failures_stay_errors(run, tmp_path):
     exit_code, found = _sb006(run, tmp_path)
     assert exit_code == 1
     assert sorted(f["severity"] for f in found) == ["error", "warning"]
+
+
+LAZY = """<?xml version="1.0"?>
+<robot xmlns:xacro="http://wiki.ros.org/xacro" name="mav">
+  <xacro:property name="namespace" value="$(arg namespace)"/>
+  <link name="${namespace}/base_link"/>
+</robot>
+"""
+
+
+def test_an_argument_a_property_reads_is_a_launch_argument_too(run, tmp_path):
+    """rotors_simulator's MAVs read $(arg namespace) through a property: xacro's message then
+    ends "when evaluating expression 'namespace'", and the walk's verdict is the same."""
+    (tmp_path / "mav.xacro").write_text(LAZY)
+    exit_code, found = _sb006(run, tmp_path)
+    assert exit_code == 0
+    assert [f["severity"] for f in found] == ["warning"]
+    assert "when evaluating expression 'namespace'" in found[0]["message"]
+    assert "namespace:=VALUE" in found[0]["fix"]
+    exit_code, found = _sb006(run, tmp_path / "mav.xacro")
+    assert exit_code == 1 and [f["severity"] for f in found] == ["error"]
