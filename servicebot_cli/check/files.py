@@ -5,14 +5,15 @@ file that only defines macros or properties, a robot file with an unnamed ``<rob
 (husky's ``empty.urdf``, the default of ``$(optenv HUSKY_URDF_EXTRAS empty.urdf)``), a
 xacro file whose root is not ``<robot>`` (PR2's ``<root xmlns:xacro=...>`` sensors), and a
 file another robot file of the same walk includes (``turtlebot3_burger.gazebo.xacro``,
-``common_properties.xacro``). MoveIt's ``*.srdf.xacro`` are semantic descriptions, not URDF.
+``common_properties.xacro``). MoveIt's ``*.srdf.xacro`` are semantic descriptions, not URDF,
+and so are the files they include.
 """
 
 from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 from servicebot_cli.description.install_layout import installed_source
@@ -83,7 +84,7 @@ def walk(directory: Path) -> Iterator[Path]:
     file of the walk includes.
     """
     found = [path for path in _robot_files(directory) if not is_fragment(path)]
-    included = included_by(found)
+    included = included_by([*found, *_semantic_files(directory)])
     yield from (path for path in found if path not in included)
 
 
@@ -96,9 +97,22 @@ def robot_file_count(directory: Path) -> int:
 
 
 def _robot_files(directory: Path) -> Iterator[Path]:
+    yield from _files(directory, is_robot_file)
+
+
+def _semantic_files(directory: Path) -> Iterator[Path]:
+    """The ``*.srdf.xacro`` under ``directory``: what they include is SRDF, not a robot.
+
+    husky_manipulation's ``panda.srdf.xacro`` includes ``config/arm.xacro``, the arm's
+    ``<group>`` and ``<disable_collisions>`` elements in a ``<robot>`` of their own.
+    """
+    yield from _files(directory, lambda path: path.name.lower().endswith(NOT_URDF_SUFFIXES))
+
+
+def _files(directory: Path, wanted: Callable[[Path], bool]) -> Iterator[Path]:
     for root, dirs, files in os.walk(directory):
         dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in SKIPPED_DIRS)
-        yield from (path for name in sorted(files) if is_robot_file(path := Path(root) / name))
+        yield from (path for name in sorted(files) if wanted(path := Path(root) / name))
 
 
 def included_by(paths: list[Path]) -> set[Path]:

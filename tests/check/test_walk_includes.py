@@ -73,6 +73,21 @@ def test_moveit_srdf_xacro_is_not_a_urdf(tmp_path):
     assert walked == ["panda.urdf.xacro"]
 
 
+def test_what_a_srdf_xacro_includes_is_semantic_too(tmp_path):
+    # husky_manipulation: panda.srdf.xacro includes config/arm.xacro, the arm's <group> and
+    # <disable_collisions> in a <robot> of their own, which reads $(arg arm_id)
+    walked = _walked(tmp_path, {
+        "urdf/robot.urdf.xacro": ROBOT,
+        "config/panda.srdf.xacro": f'<robot name="panda" {XACRO_NS}>'
+                                   '<xacro:include filename="arm.xacro"/></robot>',
+        "config/arm.xacro": f'<robot name="$(arg arm_id)" {XACRO_NS}><group name="arm">'
+                            '<chain base_link="$(arg arm_id)_link0" tip_link="x"/></group>'
+                            '<group_state name="ready" group="arm"><joint name="j1" value="0"/>'
+                            '</group_state></robot>',
+    })
+    assert walked == ["urdf/robot.urdf.xacro"]
+
+
 def test_a_directory_of_includes_only_passes_with_nothing_to_check(run, tmp_path):
     # pal_urdf_utils: deg_to_rad.xacro, pi.xacro, materials.urdf.xacro, all libraries;
     # pre-commit runs "servicebot check urdf ." at its root
