@@ -11,7 +11,9 @@ ROS_RULES = (
     # -- Gazebo, ros2_control, transmissions -----------------------------------------------------
     Rule("SB501", "gazebo-unknown-reference", E, "<gazebo reference> names no link or joint",
          "Gazebo silently ignores the block: its friction, colour, sensors or plugins never "
-         "apply.",
+         "apply. A warning when the xacro sources define that link or joint in a part this "
+         "expansion leaves out (a condition not taken, an include its options leave out): the "
+         "block is then for an optional part, as its author meant.",
          "Use the suggested name."),
     Rule("SB502", "sensor-parameter", E, "A sensor parameter out of range",
          "samples > 0, min_angle < max_angle, 0 < range min < range max (a Gazebo Classic "

@@ -83,7 +83,7 @@ def walk(directory: Path) -> Iterator[Path]:
     Includes are left out: macro libraries, unnamed robots, and files that another robot
     file of the walk includes.
     """
-    found = [path for path in _robot_files(directory) if not is_fragment(path)]
+    found = [path for path in robot_files(directory) if not is_fragment(path)]
     included = included_by([*found, *_semantic_files(directory)])
     yield from (path for path in found if path not in included)
 
@@ -93,10 +93,11 @@ def robot_file_count(directory: Path) -> int:
 
     pal_urdf_utils holds only xacro libraries: nothing to check alone, and nothing wrong.
     """
-    return sum(1 for _ in _robot_files(directory))
+    return sum(1 for _ in robot_files(directory))
 
 
-def _robot_files(directory: Path) -> Iterator[Path]:
+def robot_files(directory: Path) -> Iterator[Path]:
+    """Every robot file under ``directory`` (includes too), as :func:`walk` finds them."""
     yield from _files(directory, is_robot_file)
 
 
@@ -150,7 +151,7 @@ def includer_nearby(path: Path) -> Path | None:
     """
     holder = holding_package(path.parent.absolute())
     if holder is not None:
-        around = list(_robot_files(holder[1]))
+        around = list(robot_files(holder[1]))
     else:
         try:
             around = sorted(entry for entry in path.parent.iterdir()

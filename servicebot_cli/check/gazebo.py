@@ -6,7 +6,8 @@ import math
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.findings import Issue, Severity
+from servicebot_cli.check.optional_parts import defined_elsewhere
 from servicebot_cli.common.errors import NameNotFound
 from servicebot_cli.description import sensors as specs
 from servicebot_cli.description.elements import parse_float
@@ -14,6 +15,8 @@ from servicebot_cli.description.extensions import Sensor, param
 from servicebot_cli.description.sensors import NoiseSpec
 
 if TYPE_CHECKING:
+    import xml.etree.ElementTree as ET
+
     from servicebot_cli.description.robot import RobotDescription
 
 _CLASSIC = ("libgazebo_ros", "gazebo_ros")
@@ -30,13 +33,28 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     known = set(names)
     for block in robot.gazebo:
         if block.reference is not None and block.reference not in known:
-            hint = str(NameNotFound.for_name(block.reference, names)).split("; ", 1)[-1]
-            yield Issue("SB501", f"<gazebo reference=\"{block.reference}\"> names no link or "
-                        f"joint; {hint}", block.element)
+            yield _unknown_reference(robot, block.reference, names, block.element)
     for sensor in robot.sensors:
         for problem in _sensor_problems(sensor):
             yield Issue("SB502", f"sensor '{sensor.name}': {problem}", sensor.element)
     yield from _mixed(robot)
+
+
+def _unknown_reference(robot: RobotDescription, reference: str, names: list[str],
+                       element: ET.Element | None) -> Issue:
+    """SB501; a warning when the sources define it in a part this expansion leaves out."""
+    where = f"<gazebo reference=\"{reference}\">"
+    found = defined_elsewhere(robot, reference)
+    if found is None:
+        hint = str(NameNotFound.for_name(reference, names)).split("; ", 1)[-1]
+        return Issue("SB501", f"{where} names no link or joint; {hint}", element)
+    file, line, kind = found
+    return Issue("SB501", f"{where} names no link or joint of this expansion; {file}:{line} "
+                 f"defines {kind} '{reference}' in a part it leaves out (a xacro condition not "
+                 "taken, or an include its options leave out), so Gazebo ignores the block",
+                 element, severity=Severity.WARNING,
+                 fix="nothing if that part is optional; else check the xacro arguments, "
+                     "properties or environment that switch it on")
 
 
 def _sensor_problems(sensor: Sensor) -> Iterator[str]:

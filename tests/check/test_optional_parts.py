@@ -1,0 +1,93 @@
+"""A <gazebo reference> to a link only an optional part creates: a warning, not an error.
+
+unitree's a1 creates ``stick_link`` under ``<xacro:if value="${rolloverProtection == 'true'}">``
+(off by default) and gives it a ``<gazebo>`` block in any case; warthog's accessories add
+``bulkhead_link`` through an include its environment switches on. Gazebo ignores the block
+when the part is off, as its authors meant. A name no source defines stays an error, with
+its suggestion.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from tests.check.helpers import findings
+
+XACRO = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
+ROBOT = f"""<?xml version="1.0"?>
+<robot name="dog" {XACRO}>
+  <xacro:property name="rollover" value="false"/>
+  <xacro:arg name="bulkhead" default="false"/>
+  <link name="base_link"/>
+  <link name="imu_link"/>
+  <joint name="imu_joint" type="fixed"><parent link="base_link"/><child link="imu_link"/></joint>
+  <xacro:if value="${{rollover == 'true'}}">
+    <link name="stick_link"/>
+    <joint name="stick_joint" type="fixed">
+      <parent link="base_link"/><child link="stick_link"/>
+    </joint>
+  </xacro:if>
+  <xacro:if value="$(arg bulkhead)">
+    <xacro:include filename="accessories/bulkhead.urdf.xacro"/>
+  </xacro:if>
+  <gazebo reference="stick_link"><mu1>0.2</mu1></gazebo>
+  <gazebo reference="bulkhead_link"><material>Gazebo/Grey</material></gazebo>
+  <gazebo reference="imu_lnk"><gravity>true</gravity></gazebo>
+</robot>
+"""
+BULKHEAD = f"""<?xml version="1.0"?>
+<robot {XACRO}>
+  <link name="bulkhead_link"/>
+  <joint name="bulkhead_joint" type="fixed">
+    <parent link="base_link"/><child link="bulkhead_link"/>
+  </joint>
+</robot>
+"""
+
+
+def _package(root: Path) -> Path:
+    package = root / "dog_description"
+    (package / "urdf" / "accessories").mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>dog_description</name></package>\n")
+    (package / "urdf" / "accessories" / "bulkhead.urdf.xacro").write_text(BULKHEAD)
+    robot = package / "urdf" / "dog.urdf.xacro"
+    robot.write_text(ROBOT)
+    return robot
+
+
+def _sb501(run, *args: object) -> tuple[int, dict[str, dict]]:
+    result = run("check", *args, "--select", "SB501", "--format", "json", "--isolated")
+    found = [f for f in findings(result.stdout) if f["code"] == "SB501"]
+    json.loads(result.stdout)
+    return result.exit_code, {f["message"].split('"')[1]: f for f in found}
+
+
+def test_a_link_of_a_part_left_out_is_a_warning_naming_where_it_is_defined(run, tmp_path):
+    exit_code, found = _sb501(run, _package(tmp_path))
+    assert exit_code == 1  # the typo stays an error
+    assert found["imu_lnk"]["severity"] == "error"
+    assert "did you mean 'imu_link'" in found["imu_lnk"]["message"]
+    stick, bulkhead = found["stick_link"], found["bulkhead_link"]
+    assert (stick["severity"], bulkhead["severity"]) == ("warning", "warning")
+    assert "dog.urdf.xacro:9 defines link 'stick_link' in a part it leaves out" \
+        in stick["message"]
+    assert "accessories/bulkhead.urdf.xacro:3 defines link 'bulkhead_link'" \
+        in bulkhead["message"]
+    assert "did you mean" not in stick["message"] + bulkhead["message"]
+
+
+def test_with_the_part_switched_on_the_reference_holds(run, tmp_path):
+    exit_code, found = _sb501(run, _package(tmp_path), "bulkhead:=true")
+    assert set(found) == {"stick_link", "imu_lnk"}
+    assert exit_code == 1
+
+
+def test_a_plain_urdf_has_no_parts_left_out(run, tmp_path):
+    """Expanded to a .urdf, the sources are gone: the reference is an error again."""
+    expanded = tmp_path / "dog.urdf"
+    result = run("expand", _package(tmp_path), "-o", expanded)
+    assert result.exit_code == 0, result.stderr
+    exit_code, found = _sb501(run, expanded)
+    assert {name: f["severity"] for name, f in found.items()} == {
+        "stick_link": "error", "bulkhead_link": "error", "imu_lnk": "error"}
