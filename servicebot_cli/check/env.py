@@ -43,7 +43,10 @@ class CheckEnv:
         resolver: Package search (``--package``, ROS_PACKAGE_PATH, AMENT_PREFIX_PATH).
         meshes: Mesh files read so far.
         inertia_factor: How far (as a ratio) inertia may stray from the geometry's (SB301).
-        load_meshes: False when no mesh rule is selected: mesh files are then never read.
+        load_meshes: False when no rule that reads mesh files is selected: they are then
+            never read.
+        resolve_meshes: False when no rule about where mesh references lead (or about the
+            files they lead to) is selected: they are then not even resolved.
         model_ahead: Build SB701's model in a forked child while the other rules run (a
             one-file run with a second core; see :mod:`~servicebot_cli.check.model_ahead`).
     """
@@ -52,6 +55,7 @@ class CheckEnv:
     meshes: MeshCache = field(default_factory=MeshCache)
     inertia_factor: float = 2.0
     load_meshes: bool = True
+    resolve_meshes: bool = True
     model_ahead: bool = False
     search: PackageSearch = field(init=False)
     _directories: dict[str, Path] = field(init=False, default_factory=dict)

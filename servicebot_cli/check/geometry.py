@@ -54,7 +54,7 @@ def _shape(robot: RobotDescription, link: Link, kind: str, shape: Shape,
                     found[0])
         return
     yield from _sizes(found[0], where, visual=kind == "visual")
-    if found[0].tag == "mesh" and shape.geometry.filename and env.load_meshes:
+    if found[0].tag == "mesh" and shape.geometry.filename and env.resolve_meshes:
         yield from _mesh(robot, shape, found[0], where, env, tally)
 
 
@@ -86,7 +86,8 @@ def _sizes(element: ET.Element, where: str, visual: bool = False) -> Iterator[Is
 def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str,
           env: CheckEnv, tally: FileTally) -> Iterator[Issue]:
     try:
-        info = env.mesh(robot, shape)
+        path = env.mesh_path(robot, shape)
+        info = env.meshes.get(path) if env.load_meshes else None
     except RemoteMesh:
         tally.remote.append((shape.geometry.filename or "", element))
         return
@@ -103,6 +104,8 @@ def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str
                     element)
         return
     tally.add_found(env.resolve(robot, shape), element)
+    if info is None:  # only where it leads was asked for
+        return
     if info.triangles == 0:
         yield Issue("SB403", f"{where}: mesh '{shape.geometry.filename}' has no triangles",
                     element)

@@ -150,9 +150,11 @@ class FileTally:
             if not location.name:
                 message = ("package:///PATH (three slashes) is read as an absolute path by some "
                            "loaders; ROS resolves package:// by package name and would not find it")
-            yield Issue("SB409", message, element,
-                        fix=f"give the package a package.xml with <name>{location.name}</name>, "
-                        "or use a path relative to the file")
+            fix = (f"write package://{location.name}/... with two slashes"
+                   if location.three_slashes else
+                   f"give the package a package.xml with <name>{location.name}</name>, "
+                   "or use a path relative to the file")
+            yield Issue("SB409", message, element, fix=fix)
         if self.remote:
             uri, element = self.remote[0]
             more = f" and {len(self.remote) - 1} more" if len(self.remote) > 1 else ""

@@ -151,7 +151,9 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
     if any(i.code in ("SB008", "SB015") for i in found):
         return
     wanted = settings.enabled
-    env.load_meshes = any(wanted(c) for c in ("SB401", "SB402", "SB403", "SB404", "SB301"))
+    env.load_meshes = any(wanted(c) for c in ("SB402", "SB403", "SB404", "SB301"))
+    env.resolve_meshes = env.load_meshes or any(wanted(c) for c in ("SB401", "SB408", "SB409",
+                                                                    "SB410"))
     families: list[tuple[str, Callable[[], Iterable[Issue]]]] = [
         ("SB1", lambda: names.check(robot)), ("SB1", lambda: tree.check(robot)),
         ("SB2", lambda: joints.check(robot)), ("SB3", lambda: inertia.check(robot, env)),

@@ -48,18 +48,24 @@ class PackageLocation:
         how: How it was found, for people: ``"--package"``, ``"workspace /ws (package.xml)"``...
         ros_finds_it: Whether ROS (``ros2 pkg prefix``, robot_state_publisher, Gazebo) would
             find it the same way; False for what only some loaders accept.
+        three_slashes: Named as ``package:///NAME/...``, which ROS reads as an empty name.
     """
 
     name: str
     path: Path
     how: str
     ros_finds_it: bool = True
+    three_slashes: bool = False
 
     @property
     def warning(self) -> str | None:
         """Why ROS would not find it, or None."""
         if self.ros_finds_it:
             return None
+        if self.three_slashes:
+            return (f"package:///{self.name}/... has three slashes: ROS reads the package name "
+                    f"before the third as empty and would not find it; Pinocchio reads package "
+                    f"'{self.name}' there ({self.how})")
         return (f"package '{self.name}' resolves only as {self.how}; ROS finds packages by "
                 "the <name> of their package.xml on its package paths, so ROS tools would "
                 "not find it")
@@ -183,8 +189,7 @@ class PackageResolver:
                         or self._loader_location(name, base_dir))
             if location is not None:
                 self.found.setdefault(name, PackageLocation(
-                    name, location.path, f"package:///{name}/... ({location.how}), as "
-                    "Pinocchio reads it", ros_finds_it=False))
+                    name, location.path, location.how, ros_finds_it=False, three_slashes=True))
                 return location.path / inner
         self.found.setdefault("", PackageLocation(
             "", Path("/"), "package:/// (an absolute path)", ros_finds_it=False))

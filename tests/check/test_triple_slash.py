@@ -23,3 +23,23 @@ def test_package_triple_slash_and_a_package_name_warns_that_ros_would_not_find_i
         found = findings(result.stdout)
         assert [f["code"] for f in found] == ["SB409"], (reference, found)
         assert "would not find it" in found[0]["message"]
+
+
+def test_three_slashes_before_a_package_name_are_the_defect_named(run, tmp_path):
+    """example-robot-data's Talos: package:///example-robot-data/..., in a package of that
+    name. The fix is the URI, not the package; --select SB409 alone finds it."""
+    package = tmp_path / "example-robot-data"
+    meshes = package / "meshes"
+    meshes.mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>example-robot-data</name></package>")
+    trimesh.creation.box((0.1, 0.1, 0.1)).export(meshes / "m.stl")
+    robot = package / "robot.urdf"
+    robot.write_text(URDF.format("package:///example-robot-data/meshes/m.stl"))
+    for select in ("SB409", "ALL"):
+        result = run("check", robot, "--format", "json", "--isolated", "--select", select)
+        (found,) = [f for f in findings(result.stdout) if f["code"] == "SB409"]
+        assert found["message"].startswith(
+            "package:///example-robot-data/... has three slashes: ROS reads the package name "
+            "before the third as empty and would not find it; Pinocchio reads package "
+            "'example-robot-data' there (the package holding the file")
+        assert found["fix"] == "write package://example-robot-data/... with two slashes"
