@@ -28,17 +28,26 @@ def holding_package(directory: Path) -> tuple[str, Path] | None:
     return None
 
 
+_COLCON_MADE = ("build", "install", "log")
+"""What ``colcon build`` makes at its workspace's root, each marked ``COLCON_IGNORE``."""
+
+
 def workspace_root(directory: Path) -> Path | None:
     """Where the packages of ``directory``'s workspace are looked for.
 
-    The colcon workspace (the directory whose ``src/`` holds ``directory``), else the
-    repository root (the nearest directory with ``.git``), else the directory above the
-    package that holds ``directory``; None when there is none of these.
+    The colcon workspace (the directory whose ``src/`` holds ``directory``, or, for one
+    built without ``src/``, the nearest whose ``build/``, ``install/`` or ``log/`` colcon
+    marked with ``COLCON_IGNORE``), else the repository root (the nearest directory with
+    ``.git``), else the directory above the package that holds ``directory``; None when
+    there is none of these.
     """
     ancestors = (directory, *directory.parents)
     for ancestor in ancestors:
         if ancestor.name == "src" and ancestor.parent != ancestor:
             return ancestor.parent
+    for ancestor in ancestors:
+        if any((ancestor / made / "COLCON_IGNORE").is_file() for made in _COLCON_MADE):
+            return ancestor
     for ancestor in ancestors:
         if (ancestor / ".git").exists():
             return ancestor

@@ -187,7 +187,7 @@ class PackageResolver:
         if not absolute.exists() and name and inner:
             location = (self._ros_location(name, base_dir)
                         or self._loader_location(name, base_dir))
-            if location is not None:
+            if location is not None and location.path / inner != absolute:
                 self.found.setdefault(name, PackageLocation(
                     name, location.path, location.how, ros_finds_it=False, three_slashes=True))
                 return location.path / inner

@@ -59,6 +59,22 @@ def test_another_package_of_the_workspace(workspace):
     assert resolver.found["foo_description"].how.startswith("workspace ")
 
 
+@pytest.mark.parametrize("made", ["build", "install", "log"])
+def test_a_workspace_built_without_src_is_found_by_what_colcon_made(tmp_path, made):
+    """ws/{turtlebot4, create3_sim} built with colcon: the packages of one repository find
+    those of the other, as colcon's base path ws finds them."""
+    ws = tmp_path / "ws"
+    _package(ws / "create3_sim" / "irobot_create_description", "irobot_create_description")
+    tb4 = _package(ws / "turtlebot4" / "turtlebot4_description", "turtlebot4_description")
+    resolver = _resolver()
+    with pytest.raises(PackageNotFound):
+        resolver.resolve_uri("package://irobot_create_description/urdf/x.xacro", tb4)
+    (ws / made).mkdir()
+    (ws / made / "COLCON_IGNORE").touch()
+    path = _resolver().resolve_uri("package://irobot_create_description/urdf/x.xacro", tb4)
+    assert path == ws / "create3_sim" / "irobot_create_description" / "urdf" / "x.xacro"
+
+
 def test_colcon_ignore_hides_a_package(workspace):
     with pytest.raises(PackageNotFound, match="package 'baz_description' not found"):
         _resolver(context=workspace / "src" / "foo_description").find("baz_description")
@@ -118,7 +134,8 @@ def test_package_triple_slash_then_a_package_name_is_read_as_pinocchio_reads_it(
     resolver = _resolver()
     path = resolver.resolve_uri("package:///example-robot-data/robots/talos_data/m.stl", urdf_dir)
     assert path == share / "robots" / "talos_data" / "m.stl"
-    assert any("ROS tools would not find it" in w for w in resolver.warnings())
+    assert any(w.startswith("package:///example-robot-data/... has three slashes") and
+               "would not find it" in w for w in resolver.warnings())
     missing = _resolver().resolve_uri("package:///no-such-package/m.stl", urdf_dir)
     assert missing == Path("/no-such-package/m.stl")  # said missing where it was looked for
 
