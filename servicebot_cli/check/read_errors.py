@@ -21,6 +21,9 @@ _WHERE = re.compile(r"^(?P<file>.+?):(?P<line>\d+)(?::(?P<column>\d+))?: (?P<res
 _LIMITS = ("limit for a robot description", "elements; refused", "deep; refused",
            "MB limit; is it the right file?")  # the last: a device read to the limit
 # xacro adds " when evaluating expression '...'" when a property read the argument lazily
+_QUOTED = re.compile(r"'([^']*)'")
+_GAP = re.compile(r"[^/:]//|/[._](?=[^/]*$)")  # "a//b"; a last part that starts "." or "_"
+_EMPTY_DEFAULT = re.compile(rb"<xacro:arg\b[^>]*\bdefault\s*=\s*(?:\"\"|'')")
 _UNDEFINED_ARG = re.compile(r"Undefined substitution argument (\S+)"
                             r"(?: when evaluating expression '.*')?$", re.DOTALL)
 
@@ -46,6 +49,12 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
                      fix="pass --package NAME=DIR, or source the workspace that holds it")
     if isinstance(error, XacroError) and text.startswith(("cannot read included file",
                                                           "cannot read file")):
+        if walked and _built_from_empty_arguments(text, display):
+            return Issue("SB001", f"{text}: the name looks built from launch arguments the file "
+                         "leaves empty (default=\"\"), as its launch file fills them; a "
+                         "directory walk passes none, so it is not checked here",
+                         where=(file, line, column), severity=Severity.WARNING,
+                         fix="check it by name with its arguments (NAME:=VALUE)")
         return Issue("SB001", text, where=(file, line, column))
     if any(limit in text for limit in _LIMITS):
         return Issue("SB015", text, where=(file, line, column))
@@ -58,6 +67,25 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
                      where=(file, line, column), severity=Severity.WARNING,
                      fix=f"check it by name with {name}:=VALUE (and its other arguments)")
     return Issue("SB006", text, where=(file, line, column))
+
+
+def _built_from_empty_arguments(text: str, display: str) -> bool:
+    """Whether a missing include's name has a gap an empty argument leaves, in a file whose
+    arguments default to nothing.
+
+    kortex_dual_robots.xacro declares every argument with ``default=""`` and includes
+    ``arms/$(arg arm)/$(arg dof)dof/urdf/...``: walked, that is ``arms//dof/urdf/_macro.xacro``
+    (interbotix's locobot: ``arms/.urdf.xacro``).
+    """
+    named = _QUOTED.search(text)
+    if named is None or not _GAP.search(named[1]):
+        return False
+    try:
+        with open(display, "rb") as handle:
+            head = handle.read(1 << 20)
+    except OSError:
+        return False
+    return _EMPTY_DEFAULT.search(head) is not None
 
 
 def _xml_code(reason: str) -> str:

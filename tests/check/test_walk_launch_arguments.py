@@ -91,3 +91,29 @@ def test_an_argument_a_property_reads_is_a_launch_argument_too(run, tmp_path):
     assert "namespace:=VALUE" in found[0]["fix"]
     exit_code, found = _sb006(run, tmp_path / "mav.xacro")
     assert exit_code == 1 and [f["severity"] for f in found] == ["error"]
+
+
+EMPTY_DEFAULTS = """<?xml version="1.0"?>
+<robot xmlns:xacro="http://wiki.ros.org/xacro" name="dual">
+  <xacro:arg name="arm" default=""/>
+  <xacro:arg name="dof" default=""/>
+  <link name="world"/>
+  <xacro:include filename="arms/$(arg arm)/$(arg dof)dof/urdf/$(arg arm)_macro.xacro"/>
+</robot>
+"""
+
+
+def test_an_include_named_by_empty_default_arguments_is_a_walks_warning(run, tmp_path):
+    """ros_kortex's kortex_dual_robots.xacro: every argument defaults to "", and its include
+    becomes arms//dof/urdf/_macro.xacro in a walk. Named, or with a real gap, an error."""
+    (tmp_path / "dual.xacro").write_text(EMPTY_DEFAULTS)
+    result = run("check", tmp_path, "--format", "json", "--isolated", env=NO_ROS)
+    (found,) = [f for f in findings(result.stdout) if f["code"] == "SB001"]
+    assert result.exit_code == 0 and found["severity"] == "warning"
+    assert "arms//dof/urdf/_macro.xacro" in found["message"]
+    assert "launch arguments the file leaves empty" in found["message"]
+    named = run("check", tmp_path / "dual.xacro", "--format", "json", "--isolated", env=NO_ROS)
+    assert named.exit_code == 1
+    (tmp_path / "dual.xacro").write_text(EMPTY_DEFAULTS.replace('default=""', 'default="gen3"'))
+    walked = run("check", tmp_path, "--format", "json", "--isolated", env=NO_ROS)
+    assert walked.exit_code == 1  # arms/gen3/gen3dof/...: a real missing file
