@@ -70,9 +70,9 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
 
 
 def _built_from_empty_arguments(text: str, display: str) -> bool:
-    """Whether a missing include's name has a gap an empty argument leaves, in a file whose
-    arguments default to nothing.
+    """Whether a missing include's name has a gap an empty argument leaves (see below).
 
+    The file must declare an argument that defaults to nothing:
     kortex_dual_robots.xacro declares every argument with ``default=""`` and includes
     ``arms/$(arg arm)/$(arg dof)dof/urdf/...``: walked, that is ``arms//dof/urdf/_macro.xacro``
     (interbotix's locobot: ``arms/.urdf.xacro``).
