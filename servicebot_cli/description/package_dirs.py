@@ -30,28 +30,40 @@ def holding_package(directory: Path) -> tuple[str, Path] | None:
 
 _COLCON_MADE = ("build", "install", "log")
 """What ``colcon build`` makes at its workspace's root, each marked ``COLCON_IGNORE``."""
+_MOST_LEVELS_ABOVE = 3
+"""How far above its package a colcon workspace without ``src/`` may be
+(``ws/interbotix_ros_rovers/interbotix_ros_xslocobots/interbotix_xslocobot_descriptions``)."""
 
 
 def workspace_root(directory: Path) -> Path | None:
     """Where the packages of ``directory``'s workspace are looked for.
 
-    The colcon workspace (the directory whose ``src/`` holds ``directory``, or, for one
-    built without ``src/``, the nearest whose ``build/``, ``install/`` or ``log/`` colcon
-    marked with ``COLCON_IGNORE``), else the repository root (the nearest directory with
-    ``.git``), else the directory above the package that holds ``directory``; None when
-    there is none of these.
+    The colcon workspace: the directory whose ``src/`` holds ``directory``, or, for one
+    built without ``src/``, the nearest that holds a ``build/``, ``install/`` or ``log/``
+    colcon marked with ``COLCON_IGNORE``, when it is close (at most
+    :data:`_MOST_LEVELS_ABOVE` above the package, and not above the repository's own
+    directory: a stray ``colcon build`` in a home directory is no workspace of a repository
+    under it). Else the repository root (the nearest directory with ``.git``), else the
+    directory above the package that holds ``directory``; None when there is none of these.
     """
     ancestors = (directory, *directory.parents)
     for ancestor in ancestors:
         if ancestor.name == "src" and ancestor.parent != ancestor:
             return ancestor.parent
+    repository = next((a for a in ancestors if (a / ".git").exists()), None)
+    holder = holding_package(directory)
+    base = holder[1] if holder is not None else directory
+    highest = base.parents[min(_MOST_LEVELS_ABOVE, len(base.parents)) - 1] \
+        if base.parents else base
+    if repository is not None and len(repository.parent.parts) > len(highest.parts):
+        highest = repository.parent
     for ancestor in ancestors:
+        if len(ancestor.parts) < len(highest.parts):
+            break
         if any((ancestor / made / "COLCON_IGNORE").is_file() for made in _COLCON_MADE):
             return ancestor
-    for ancestor in ancestors:
-        if (ancestor / ".git").exists():
-            return ancestor
-    holder = holding_package(directory)
+    if repository is not None:
+        return repository
     return None if holder is None else holder[1].parent
 
 

@@ -75,6 +75,24 @@ def test_a_workspace_built_without_src_is_found_by_what_colcon_made(tmp_path, ma
     assert path == ws / "create3_sim" / "irobot_create_description" / "urdf" / "x.xacro"
 
 
+def test_a_stray_colcon_build_above_a_repository_is_no_workspace(tmp_path):
+    """colcon build run by mistake in a home directory leaves build/COLCON_IGNORE there; a
+    repository under it keeps its own root, and a stale copy in the home is not found."""
+    from servicebot_cli.description.package_dirs import workspace_root
+
+    home = tmp_path / "home"
+    (home / "build").mkdir(parents=True)
+    (home / "build" / "COLCON_IGNORE").touch()
+    _package(home / "backup" / "my_desc", "my_desc")
+    repo = home / "work" / "robot_repo"
+    (repo / ".git").mkdir(parents=True)
+    mine = _package(repo / "my_desc", "my_desc")
+    other = _package(repo / "other_desc", "other_desc")
+    assert workspace_root(other / "urdf") == repo
+    path = _resolver().resolve_uri("package://my_desc/meshes/m.stl", other / "urdf")
+    assert path == mine / "meshes" / "m.stl"
+
+
 def test_colcon_ignore_hides_a_package(workspace):
     with pytest.raises(PackageNotFound, match="package 'baz_description' not found"):
         _resolver(context=workspace / "src" / "foo_description").find("baz_description")
