@@ -142,6 +142,26 @@ def includers(paths: list[Path]) -> dict[Path, Path]:
     return included
 
 
+def included_files(paths: list[Path], most: int = 500) -> list[Path]:
+    """``paths``, then every file their ``<xacro:include>`` elements name, taken or not.
+
+    Followed through what they include in turn, as :func:`includers` reads the names;
+    at most ``most`` files.
+    """
+    found = {_location(path): path for path in paths}
+    queue = list(paths)
+    packages = _packages(paths)
+    while queue and len(found) < most:
+        path = queue.pop(0)
+        for target in _include_targets(path):
+            for named in _named(target, path, packages):
+                location = _location(named)
+                if location not in found and Path(named).is_file() and len(found) < most:
+                    found[location] = Path(named)
+                    queue.append(Path(named))
+    return list(found.values())
+
+
 def includer_nearby(path: Path) -> Path | None:
     """A robot file of ``path``'s package that includes ``path``, or None.
 

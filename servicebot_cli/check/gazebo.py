@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue, Severity
@@ -31,20 +31,22 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     """Every Gazebo issue of ``robot``."""
     names = [link.name for link in robot.links] + [joint.name for joint in robot.joints]
     known = set(names)
-    for block in robot.gazebo:
-        if block.reference is not None and block.reference not in known:
-            yield _unknown_reference(robot, block.reference, names, block.element)
+    unknown = [b for b in robot.gazebo if b.reference is not None and b.reference not in known]
+    optional = defined_elsewhere(robot, {block.reference or "" for block in unknown})
+    for block in unknown:
+        yield _unknown_reference(block.reference or "", names, optional, block.element)
     for sensor in robot.sensors:
         for problem in _sensor_problems(sensor):
             yield Issue("SB502", f"sensor '{sensor.name}': {problem}", sensor.element)
     yield from _mixed(robot)
 
 
-def _unknown_reference(robot: RobotDescription, reference: str, names: list[str],
+def _unknown_reference(reference: str, names: list[str],
+                       optional: Mapping[str, tuple[str, int, str]],
                        element: ET.Element | None) -> Issue:
     """SB501; a warning when the sources define it in a part this expansion leaves out."""
     where = f"<gazebo reference=\"{reference}\">"
-    found = defined_elsewhere(robot, reference)
+    found = optional.get(reference)
     if found is None:
         hint = str(NameNotFound.for_name(reference, names)).split("; ", 1)[-1]
         return Issue("SB501", f"{where} names no link or joint; {hint}", element)

@@ -91,3 +91,28 @@ def test_a_plain_urdf_has_no_parts_left_out(run, tmp_path):
     exit_code, found = _sb501(run, expanded)
     assert {name: f["severity"] for name, f in found.items()} == {
         "stick_link": "error", "bulkhead_link": "error", "imu_lnk": "error"}
+
+
+def test_only_this_robots_own_sources_count_and_only_definitions(run, tmp_path):
+    """Another robot of the package, a <ros2_control> or <transmission> joint and a name in
+    a comment define nothing here: those stay errors. Lines count as the file has them."""
+    robot = _package(tmp_path)
+    urdf = robot.parent
+    (urdf / "other.urdf.xacro").write_text(
+        f'<robot name="other" {XACRO}><link name="lidar_link"/></robot>')
+    (urdf / "control.xacro").write_text(
+        f'<robot {XACRO}><ros2_control name="c" type="system"><joint name="wheel_joint">'
+        '<state_interface name="position"/></joint></ros2_control></robot>')
+    robot.write_text(ROBOT.replace("<link name=\"base_link\"/>", """<!-- an old sensor:
+       <link name="sonar_link"/>
+  -->
+  <link name="base_link"/>
+  <xacro:include filename="control.xacro"/>""").replace("</robot>", """  <gazebo reference="lidar_link"/>
+  <gazebo reference="wheel_joint"/>
+  <gazebo reference="sonar_link"/>
+</robot>"""))
+    _, found = _sb501(run, robot)
+    assert {name: f["severity"] for name, f in found.items()} == {
+        "stick_link": "warning", "bulkhead_link": "warning", "imu_lnk": "error",
+        "lidar_link": "error", "wheel_joint": "error", "sonar_link": "error"}
+    assert "dog.urdf.xacro:13 defines link 'stick_link'" in found["stick_link"]["message"]
