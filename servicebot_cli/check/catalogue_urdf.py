@@ -13,8 +13,9 @@ URDF_RULES: tuple[Rule, ...] = (
          "A file the description needs is missing, a directory, or not readable: a xacro "
          "include, or a file found while walking a directory. A FILE named on the command "
          "line that cannot be read stops the run with exit code 2 instead. In a walk, an "
-         "include whose name has the gap an empty argument leaves (arms//dof, arms/.urdf) in "
-         "a file whose arguments default to \"\" is a warning: its launch file fills them.",
+         "include whose name has the gap an empty argument leaves (arms//dof/_macro.xacro), "
+         "reached from an element that reads an argument declared with default=\"\", is a "
+         "warning: its launch file fills the argument.",
          "Fix the path or the permissions (chmod +r)."),
     Rule("SB002", "empty-file", E, "The file is empty",
          "An empty file (or one holding only whitespace) describes no robot.",

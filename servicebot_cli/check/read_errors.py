@@ -23,7 +23,11 @@ _LIMITS = ("limit for a robot description", "elements; refused", "deep; refused"
 # xacro adds " when evaluating expression '...'" when a property read the argument lazily
 _QUOTED = re.compile(r"'([^']*)'")
 _GAP = re.compile(r"[^/:]//|/[._](?=[^/]*$)")  # "a//b"; a last part that starts "." or "_"
-_EMPTY_DEFAULT = re.compile(rb"<xacro:arg\b[^>]*\bdefault\s*=\s*(?:\"\"|'')")
+_ARG_DECLARATION = re.compile(rb"<xacro:arg\b([^>]*)>")
+_ARG_NAME = re.compile(rb"\bname\s*=\s*[\"']([^\"']+)[\"']")
+_EMPTY_DEFAULT = re.compile(rb"\bdefault\s*=\s*(?:\"\"|'')")
+_ARG_USE = re.compile(rb"\$\(arg\s+([^)\s]+)\s*\)")
+_COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
 _UNDEFINED_ARG = re.compile(r"Undefined substitution argument (\S+)"
                             r"(?: when evaluating expression '.*')?$", re.DOTALL)
 
@@ -49,7 +53,7 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
                      fix="pass --package NAME=DIR, or source the workspace that holds it")
     if isinstance(error, XacroError) and text.startswith(("cannot read included file",
                                                           "cannot read file")):
-        if walked and _built_from_empty_arguments(text, display):
+        if walked and _built_from_empty_arguments(text, file, line, column):
             return Issue("SB001", f"{text}: the name looks built from launch arguments the file "
                          "leaves empty (default=\"\"), as its launch file fills them; a "
                          "directory walk passes none, so it is not checked here",
@@ -69,23 +73,29 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
     return Issue("SB006", text, where=(file, line, column))
 
 
-def _built_from_empty_arguments(text: str, display: str) -> bool:
-    """Whether a missing include's name has a gap an empty argument leaves (see below).
+def _built_from_empty_arguments(text: str, file: str, line: int, column: int) -> bool:
+    """Whether a missing include's name has the gap an empty launch argument leaves there.
 
-    The file must declare an argument that defaults to nothing:
-    kortex_dual_robots.xacro declares every argument with ``default=""`` and includes
-    ``arms/$(arg arm)/$(arg dof)dof/urdf/...``: walked, that is ``arms//dof/urdf/_macro.xacro``
-    (interbotix's locobot: ``arms/.urdf.xacro``).
+    The element at ``file:line:column`` (the include, or the macro call that reaches it) must read
+    an argument its file declares with ``default=""``, outside comments:
+    kortex_dual_robots.xacro calls ``<xacro:load_robot arm="$(arg left_arm)" ...>`` with
+    every argument empty by default, and the include becomes ``arms//dof/urdf/_macro.xacro``.
     """
     named = _QUOTED.search(text)
-    if named is None or not _GAP.search(named[1]):
+    if named is None or not _GAP.search(named[1]) or line < 1:
         return False
     try:
-        with open(display, "rb") as handle:
-            head = handle.read(1 << 20)
+        with open(file, "rb") as handle:
+            source = handle.read(1 << 20)
     except OSError:
         return False
-    return _EMPTY_DEFAULT.search(head) is not None
+    source = _COMMENT.sub(lambda c: b"\n" * c[0].count(b"\n"), source)
+    lines = source.split(b"\n")
+    element = b"\n".join(lines[line - 1:line + 30])[max(column - 1, 0):]
+    element = element[:element.find(b">") + 1] if b">" in element else element
+    empty = {name[1] for declared in _ARG_DECLARATION.finditer(source)
+             if _EMPTY_DEFAULT.search(declared[1]) and (name := _ARG_NAME.search(declared[1]))}
+    return any(m[1] in empty for m in _ARG_USE.finditer(element))
 
 
 def _xml_code(reason: str) -> str:

@@ -117,3 +117,25 @@ def test_an_include_named_by_empty_default_arguments_is_a_walks_warning(run, tmp
     (tmp_path / "dual.xacro").write_text(EMPTY_DEFAULTS.replace('default=""', 'default="gen3"'))
     walked = run("check", tmp_path, "--format", "json", "--isolated", env=NO_ROS)
     assert walked.exit_code == 1  # arms/gen3/gen3dof/...: a real missing file
+
+
+def test_a_gap_that_no_empty_argument_explains_stays_an_error(run, tmp_path):
+    """An unrelated prefix:="" argument, a typo'd double slash, or a default="" in a comment
+    do not make a missing include a launch argument's doing."""
+    cases = {
+        "unrelated": '<xacro:arg name="prefix" default=""/><link name="$(arg prefix)base"/>'
+                     '<xacro:include filename="inc/_materials.xacro"/>',
+        "typo": '<xacro:arg name="arm" default=""/><xacro:include filename="urdf//arm.xacro"/>',
+        "commented": '<!-- <xacro:arg name="arm" default=""/> --><xacro:arg name="arm" '
+                     'default="gen3"/><xacro:include filename="arms/$(arg arm)/../x//a.xacro"/>',
+        "order": '<xacro:arg default="" name="arm"/>'
+                 '<xacro:include filename="arms/$(arg arm)/urdf/$(arg arm)_macro.xacro"/>',
+    }
+    for name, body in cases.items():
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "r.xacro").write_text(
+            f'<robot xmlns:xacro="http://wiki.ros.org/xacro" name="r"><link name="w"/>{body}'
+            "</robot>")
+        result = run("check", tmp_path / name, "--format", "json", "--isolated", env=NO_ROS)
+        (found,) = [f for f in findings(result.stdout) if f["code"] == "SB001"]
+        assert found["severity"] == ("warning" if name == "order" else "error"), name
