@@ -93,6 +93,12 @@ def test_a_plain_urdf_has_no_parts_left_out(run, tmp_path):
         "stick_link": "error", "bulkhead_link": "error", "imu_lnk": "error"}
 
 
+EXTRA_REFERENCES = """  <gazebo reference="lidar_link"/>
+  <gazebo reference="wheel_joint"/>
+  <gazebo reference="sonar_link"/>
+</robot>"""
+
+
 def test_only_this_robots_own_sources_count_and_only_definitions(run, tmp_path):
     """Another robot of the package, a <ros2_control> or <transmission> joint and a name in
     a comment define nothing here: those stay errors. Lines count as the file has them."""
@@ -107,10 +113,7 @@ def test_only_this_robots_own_sources_count_and_only_definitions(run, tmp_path):
        <link name="sonar_link"/>
   -->
   <link name="base_link"/>
-  <xacro:include filename="control.xacro"/>""").replace("</robot>", """  <gazebo reference="lidar_link"/>
-  <gazebo reference="wheel_joint"/>
-  <gazebo reference="sonar_link"/>
-</robot>"""))
+  <xacro:include filename="control.xacro"/>""").replace("</robot>", EXTRA_REFERENCES))
     _, found = _sb501(run, robot)
     assert {name: f["severity"] for name, f in found.items()} == {
         "stick_link": "warning", "bulkhead_link": "warning", "imu_lnk": "error",
