@@ -32,6 +32,9 @@ _CONTENT = re.compile(rb"<(?:link|joint|xacro:(?!include\b|property\b|arg\b|macr
 _INCLUDE = re.compile(rb"<xacro:include\b[^>]*?\bfilename\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
 _FIND = re.compile(r"^\$\(find\s+([^)\s]+)\s*\)/*(.*)$")
 _HEAD_BYTES = 1 << 20
+_SRDF_ELEMENT = re.compile(rb"<(?:group|group_state|disable_collisions|virtual_joint|end_effector"
+                           rb"|passive_joint)\b")
+_JOINT_DEFINITION = re.compile(rb"<joint\b[^>]*\btype\s*=")
 
 
 def head_without_comments(path: Path) -> bytes | None:
@@ -83,9 +86,18 @@ def walk(directory: Path) -> Iterator[Path]:
     Includes are left out: macro libraries, unnamed robots, and files that another robot
     file of the walk includes.
     """
-    found = [path for path in robot_files(directory) if not is_fragment(path)]
-    included = included_by([*found, *_semantic_files(directory)])
-    yield from (path for path in found if path not in included)
+    robots: list[Path] = []
+    semantic: list[Path] = []
+    for path in _files(directory, lambda p: is_robot_file(p) or _is_semantic_name(p)):
+        if _is_semantic_name(path):
+            semantic.append(path)
+        elif not is_fragment(path):
+            robots.append(path)
+    included = included_by(robots)
+    if semantic:  # what only a *.srdf.xacro includes is left out when it is SRDF itself
+        included |= {path for path in included_by([*semantic, *robots]) - included
+                     if _semantic_content(path)}
+    yield from (path for path in robots if path not in included)
 
 
 def robot_file_count(directory: Path) -> int:
@@ -101,13 +113,21 @@ def robot_files(directory: Path) -> Iterator[Path]:
     yield from _files(directory, is_robot_file)
 
 
-def _semantic_files(directory: Path) -> Iterator[Path]:
-    """The ``*.srdf.xacro`` under ``directory``: what they include is SRDF, not a robot.
+def _is_semantic_name(path: Path) -> bool:
+    """A MoveIt semantic description (``*.srdf.xacro``), never checked as a robot."""
+    return path.name.lower().endswith(NOT_URDF_SUFFIXES)
 
-    husky_manipulation's ``panda.srdf.xacro`` includes ``config/arm.xacro``, the arm's
-    ``<group>`` and ``<disable_collisions>`` elements in a ``<robot>`` of their own.
+
+def _semantic_content(path: Path) -> bool:
+    """Whether ``path`` holds SRDF elements and defines no joint (no ``<joint type=...>``).
+
+    husky_manipulation's ``config/arm.xacro``, which ``panda.srdf.xacro`` includes: the arm's
+    ``<group>``, ``<group_state>`` and ``<disable_collisions>``. A robot file an SRDF
+    includes (for its macros or arguments) is still a robot.
     """
-    yield from _files(directory, lambda path: path.name.lower().endswith(NOT_URDF_SUFFIXES))
+    head = head_without_comments(path)
+    return head is not None and _SRDF_ELEMENT.search(head) is not None \
+        and _JOINT_DEFINITION.search(head) is None
 
 
 def _files(directory: Path, wanted: Callable[[Path], bool]) -> Iterator[Path]:

@@ -88,6 +88,21 @@ def test_what_a_srdf_xacro_includes_is_semantic_too(tmp_path):
     assert walked == ["urdf/robot.urdf.xacro"]
 
 
+def test_a_robot_file_a_srdf_xacro_includes_is_still_checked(tmp_path):
+    """A .srdf.xacro may include the robot's own xacro (for its arguments or macros): that
+    file defines joints, so it is a robot, and the walk still checks it."""
+    walked = _walked(tmp_path, {
+        "config/bot.srdf.xacro": f'<robot name="bot" {XACRO_NS}>'
+                                 '<xacro:include filename="../urdf/robot.urdf.xacro"/>'
+                                 '<group name="arm"><chain base_link="a" tip_link="b"/></group>'
+                                 '</robot>',
+        "urdf/robot.urdf.xacro": f'<robot name="r" {XACRO_NS}><link name="a"/><link name="b"/>'
+                                 '<joint name="j" type="revolute"><parent link="a"/>'
+                                 '<child link="b"/></joint></robot>',
+    })
+    assert walked == ["urdf/robot.urdf.xacro"]
+
+
 def test_a_directory_of_includes_only_passes_with_nothing_to_check(run, tmp_path):
     # pal_urdf_utils: deg_to_rad.xacro, pi.xacro, materials.urdf.xacro, all libraries;
     # pre-commit runs "servicebot check urdf ." at its root
