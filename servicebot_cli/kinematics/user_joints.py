@@ -177,7 +177,8 @@ def clamped_user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *
         values = np.where(angular(space), np.radians(values), values)
     if mimics is not None and mimics.follower:
         values = mimics.apply(values, assignments, space)
-        named[list(mimics.follower)] |= named[list(mimics.leader)]
+        for follower, leader in zip(mimics.follower, mimics.leader, strict=True):
+            named[follower] |= named[leader]  # in rule order: a follower's follower too
     inside = space.clamped(values)
     if clamp:
         return np.where(named, inside, values), _clamped(space, values, inside, named, deg)
@@ -191,13 +192,27 @@ def clamped_user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *
 
 def _rules_of(mimics: Mimics | None, given: Collection[str],
               space: JointSpace) -> dict[int, tuple[int, float, float]]:
-    """The rule (leader, multiplier, offset) of each follower the user did not name."""
+    """Each follower the user did not name: its root leader, and the rule from it.
+
+    A follower of a follower is traced back to the first joint that follows none (or that
+    the user gave), the rules composed: ``k2 * (k1 * x + c1) + c2``.
+    """
     if mimics is None:
         return {}
-    return {f: (lead, k, c) for f, lead, k, c in zip(mimics.follower, mimics.leader,
-                                                     mimics.multiplier, mimics.offset,
-                                                     strict=True)
-            if space.names[f] not in given}
+    direct = {f: (lead, k, c) for f, lead, k, c in zip(mimics.follower, mimics.leader,
+                                                       mimics.multiplier, mimics.offset,
+                                                       strict=True)}
+    rules = {}
+    for follower, (lead, k, c) in direct.items():
+        if space.names[follower] in given:
+            continue
+        seen = {follower}
+        while lead in direct and lead not in seen and space.names[lead] not in given:
+            seen.add(lead)
+            lead, k_lead, c_lead = direct[lead]
+            k, c = k * k_lead, k * c_lead + c
+        rules[follower] = (lead, k, c)
+    return rules
 
 
 def _clamped(space: JointSpace, values: FloatArray, inside: FloatArray,
@@ -234,10 +249,13 @@ def _out_of_limits(space: JointSpace, values: FloatArray, deg: bool,
                 return OutOfLimits(f"{where}; give a value inside them, or --clamp")
             lead, k, c = rules[i]
             leader = space.names[lead]
+            factor = k * scale[i] / scale[lead]  # in the units shown: deg to m, say
+            offset = c * scale[i]
+            sign = "-" if offset < 0 else "+"
             return OutOfLimits(
                 f"{where}: it mimics '{leader}' = {values[lead] * scale[lead]:g} "
-                f"{unit_of(space, lead, deg)} (x {k:g} + {c * scale[i]:g} {unit}); give "
-                f"'{leader}' a value that keeps it inside, or --clamp")
+                f"{unit_of(space, lead, deg)} (x {factor:g} {sign} {abs(offset):g} {unit}); "
+                f"give '{leader}' a value that keeps it inside, or --clamp")
     return OutOfLimits("a joint value is outside its limits")  # not reached: checked() failed
 
 

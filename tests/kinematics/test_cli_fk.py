@@ -164,3 +164,49 @@ def test_a_follower_its_leader_puts_outside_its_limits_names_the_leader(run, tmp
                  "--format", "json")
     assert inside.exit_code == 0, inside.stderr
     assert json.loads(inside.stdout)["joints"]["arm_finger_joint"] == pytest.approx(-0.9)
+
+
+def test_a_follower_of_a_follower_is_checked_and_names_the_joint_given(run, tmp_path):
+    """fa follows fb, which follows the arm joint: fa's limits hold too, and the message
+    gives the composed rule from the joint the user gave (a negative offset as such)."""
+    bundled = Path(__file__).resolve().parents[2] / "robots" / "service_robot.urdf.xml"
+    robot = tmp_path / "chained.urdf"
+    robot.write_text(bundled.read_text().replace("\n  <ros2_control", """
+  <link name="fb"/><link name="fa"/>
+  <joint name="fb_joint" type="revolute">
+    <parent link="arm_link4"/><child link="fb"/><axis xyz="0 0 1"/>
+    <limit lower="-3" upper="3" effort="1" velocity="0.5"/>
+    <mimic joint="arm_link3_to_link4" multiplier="1" offset="-0.1"/>
+  </joint>
+  <joint name="fa_joint" type="revolute">
+    <parent link="fb"/><child link="fa"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="1" velocity="0.5"/>
+    <mimic joint="fb_joint" multiplier="2"/>
+  </joint>
+  <ros2_control""", 1))
+    assert_one_line_error(
+        run("fk", robot, "-j", "arm_link3_to_link4=0.9", "-f", "fa"), 2,
+        "joint 'fa_joint' = 1.6 rad is outside its limits [-1, 1] rad: it mimics "
+        "'arm_link3_to_link4' = 0.9 rad (x 2 - 0.2 rad); give 'arm_link3_to_link4' a value")
+    inside = run("fk", robot, "-j", "arm_link3_to_link4=0.5", "-f", "fa", "--format", "json")
+    assert inside.exit_code == 0, inside.stderr
+    assert json.loads(inside.stdout)["joints"]["fa_joint"] == pytest.approx(0.8)
+
+
+def test_a_sliding_follower_of_a_turning_leader_shows_the_rule_in_the_units_shown(run,
+                                                                                 tmp_path):
+    bundled = Path(__file__).resolve().parents[2] / "robots" / "service_robot.urdf.xml"
+    robot = tmp_path / "slider.urdf"
+    robot.write_text(bundled.read_text().replace("\n  <ros2_control", """
+  <link name="slider"/>
+  <joint name="slider_joint" type="prismatic">
+    <parent link="arm_link4"/><child link="slider"/><axis xyz="1 0 0"/>
+    <limit lower="0" upper="0.01" effort="1" velocity="0.5"/>
+    <mimic joint="arm_link3_to_link4" multiplier="0.02"/>
+  </joint>
+  <ros2_control""", 1))
+    result = run("fk", robot, "--deg", "-j", "arm_link3_to_link4=60", "-f", "slider")
+    # 60 deg x 0.000349066 m/deg = 0.020944 m
+    assert_one_line_error(result, 2, "'slider_joint' = 0.020944 m is outside its limits "
+                          "[0, 0.01] m: it mimics 'arm_link3_to_link4' = 60 deg "
+                          "(x 0.000349066 + 0 m)")
