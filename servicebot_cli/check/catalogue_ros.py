@@ -16,7 +16,8 @@ ROS_RULES = (
          "block is then for an optional part, as its author meant.",
          "Use the suggested name."),
     Rule("SB502", "sensor-parameter", E, "A sensor parameter out of range",
-         "samples > 0, min_angle < max_angle, 0 < range min < range max (a Gazebo Classic "
+         "samples > 0, min_angle < max_angle (equal for a single ray: its direction, as "
+         "Gazebo reads it), 0 < range min < range max (a Gazebo Classic "
          "\"ray\" sensor may start at range min 0; a GPU lidar's range min is a camera's "
          "near clip, which must be positive), update_rate > 0, image width and height > 0, "
          "clip near < far, noise stddev >= 0.",

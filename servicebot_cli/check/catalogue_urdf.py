@@ -53,7 +53,9 @@ URDF_RULES: tuple[Rule, ...] = (
          "robot descriptions.",
          "Check the right file (for SDF use gz sdf --check)."),
     Rule("SB009", "robot-unnamed", E, "<robot> has no name",
-         "urdfdom refuses a robot without a name attribute; an empty name is refused too.",
+         "urdfdom refuses a robot without a name attribute. An empty name it loads (as "
+         "Pinocchio and yourdfpy do): a warning, since what goes by the robot's name "
+         "(MoveIt's SRDF, a spawned Gazebo model) gets none.",
          "Add name=\"my_robot\" to <robot>."),
     Rule("SB010", "unknown-element", W, "An element that URDF does not define",
          "Core URDF elements (link, joint, inertial, geometry...) are checked against the URDF "

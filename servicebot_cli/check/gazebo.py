@@ -81,7 +81,8 @@ def _lidar(sensor: Sensor) -> Iterator[str]:
     if samples is not None and not (count is not None and count > 0 and count.is_integer()):
         yield f"horizontal samples '{samples}' must be a positive whole number"
     low, high = lidar.min_angle_rad, lidar.max_angle_rad
-    if low is not None and high is not None and not low < high:
+    single = count == 1 and low == high  # one ray: its angle (create_robot's cliff sensors)
+    if low is not None and high is not None and not low < high and not single:
         yield f"min_angle {low:g} rad must be below max_angle {high:g} rad"
     near, far = lidar.min_range_m, lidar.max_range_m
     if near is not None and not (near >= 0 if sensor.type in _CPU_RAYS else near > 0):

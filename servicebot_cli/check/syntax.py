@@ -13,7 +13,7 @@ import re
 import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 
-from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.urdf_schema import EXTENSIONS, SPEC, TOP_LEVEL
 
 # ASCII digits only: Python's float() reads "０.１" and Arabic-Indic digits, urdfdom does not
@@ -50,9 +50,12 @@ def check(root: ET.Element) -> Iterator[Issue]:
 
 
 def _robot_attributes(root: ET.Element) -> Iterator[Issue]:
-    if not root.get("name", "").strip():
-        yield Issue("SB009", "<robot> has no name" if root.get("name") is None
-                    else "<robot> has an empty name", root, fix='add name="my_robot"')
+    if root.get("name") is None:
+        yield Issue("SB009", "<robot> has no name", root, fix='add name="my_robot"')
+    elif not root.get("name", "").strip():  # urdfdom wants the attribute, not a value
+        yield Issue("SB009", "<robot> has an empty name: urdfdom loads it, but what goes by "
+                    "the robot's name (MoveIt's SRDF <robot name>, a spawned model's name) "
+                    "gets none", root, fix='write name="my_robot"', severity=Severity.WARNING)
     version = root.get("version")
     if version is not None:
         match = _VERSION.fullmatch(version)

@@ -45,3 +45,28 @@ def test_range_min(run, tmp_path, kind, near, problem):
         assert messages == [] and result.exit_code == 0
     else:
         assert messages == [f"sensor 'SonarFront': {problem}"] and result.exit_code == 1
+
+
+SINGLE_BEAM = """<robot name="r">
+  <link name="base_link"/>
+  <gazebo reference="base_link">
+    <sensor type="ray" name="cliff">
+      <ray>
+        <scan><horizontal><samples>{samples}</samples><min_angle>0</min_angle>
+          <max_angle>0</max_angle></horizontal></scan>
+        <range><min>0.01</min><max>0.04</max></range>
+      </ray>
+    </sensor>
+  </gazebo>
+</robot>
+"""
+
+
+def test_a_single_beam_points_where_its_equal_angles_say(run, tmp_path):
+    """create_robot's cliff and wall sensors: one sample, min_angle = max_angle = 0, which
+    Gazebo reads as the ray's direction. Many samples at one angle stay an error."""
+    for samples, expected in ((1, []), (5, ["SB502"])):
+        robot = tmp_path / f"beam{samples}.urdf"
+        robot.write_text(SINGLE_BEAM.format(samples=samples))
+        result = run("check", robot, "--select", "SB502", "--format", "json", "--isolated")
+        assert [f["code"] for f in findings(result.stdout)] == expected

@@ -121,3 +121,17 @@ def test_a_wheel_without_a_velocity_limit_is_what_drive_refuses(run):
     with pytest.raises(DescriptionError, match="front_left_wheel_joint"):
         motor_map(read_description(RobotSource.of(path)))
     assert _severities(run, SIM_URDF, "SB215") == []
+
+
+def test_an_empty_robot_name_is_a_warning_a_missing_one_an_error(run, tmp_path):
+    """bullet3's humanoid.urdf: <robot name="">; urdfdom (check_urdf), Pinocchio and yourdfpy
+    load it. Without the attribute urdfdom refuses the file."""
+    from tests.check.corpus import check_urdf_rejects
+
+    empty = tmp_path / "empty.urdf"
+    empty.write_text(ARM.format(extra="").replace('name="arm">', 'name="">', 1))
+    missing = tmp_path / "missing.urdf"
+    missing.write_text(ARM.format(extra="").replace(' name="arm">', ">", 1))
+    assert _severities(run, empty, "SB009") == ["warning"]
+    assert _severities(run, missing, "SB009") == ["error"]
+    assert not check_urdf_rejects(empty) and check_urdf_rejects(missing)
