@@ -23,8 +23,11 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     links = [link.name for link in robot.links if link.name]
     known = set(links)
     edges: list[Joint] = []
+    half_joined: set[str] = set()  # links a joint with a missing end names: SB103 says so
     for joint in robot.joints:
         missing = [end for end in (joint.parent, joint.child) if end and end not in known]
+        if missing:
+            half_joined |= {end for end in (joint.parent, joint.child) if end in known}
         for name in missing:
             role = "parent" if name == joint.parent else "child"
             hint = str(NameNotFound.for_name(name, links)).split("; ", 1)[-1]
@@ -34,7 +37,7 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
             edges.append(joint)
     yield from _parents(edges)
     yield from _loops(edges)
-    yield from _roots(robot, links, edges)
+    yield from _roots(robot, links, edges, half_joined)
 
 
 def _parents(edges: list[Joint]) -> Iterator[Issue]:
@@ -101,7 +104,8 @@ def _loop_issue(cycle: list[Joint]) -> Issue:
                  fix=f"remove one joint of the loop, e.g. '{cycle[-1].name}'")
 
 
-def _roots(robot: RobotDescription, links: list[str], edges: list[Joint]) -> Iterator[Issue]:
+def _roots(robot: RobotDescription, links: list[str], edges: list[Joint],
+           half_joined: set[str]) -> Iterator[Issue]:
     children = {j.child for j in edges}
     connected = children | {j.parent for j in edges}
     roots = [name for name in dict.fromkeys(links) if name not in children]
@@ -118,7 +122,7 @@ def _roots(robot: RobotDescription, links: list[str], edges: list[Joint]) -> Ite
                     robot.root, fix="attach each extra root to the robot with a joint")
     by_name = {link.name: link for link in robot.links}
     for name in roots:
-        if name != main and name not in connected:
+        if name != main and name not in connected and name not in half_joined:
             yield Issue("SB108", f"link '{name}' is connected to nothing (no joint names it)",
                         by_name[name].element,
                         fix=f"attach '{name}' with a joint (fixed if it does not move)")

@@ -61,3 +61,17 @@ def test_a_zero_velocity_limit_prints_as_0_not_minus_0(run, tmp_path):
     done = run("check", "urdf", str(robot), "--format", "json")
     messages = [f["message"] for f in findings(done.stdout) if f["code"] == "SB508"]
     assert messages and all("< 0;" in m and "-0;" not in m for m in messages)
+
+
+def test_a_joint_to_a_missing_link_is_one_finding_not_two(run, tmp_path):
+    """drake's strandbeest: joint floor_weld joins 'floor' to a 'world' the file lacks. That
+    is SB103 on the joint; 'floor' is not also 'connected to nothing' (a joint names it)."""
+    robot = tmp_path / "welded.urdf"
+    robot.write_text('<robot name="r"><link name="floor"/><link name="base"/><link name="arm"/>'
+                     '<joint name="floor_weld" type="fixed"><parent link="world"/>'
+                     '<child link="floor"/></joint><joint name="j" type="fixed">'
+                     '<parent link="base"/><child link="arm"/></joint></robot>')
+    result = run("check", robot, "--format", "json", "--isolated")
+    codes = [f["code"] for f in findings(result.stdout) if f["severity"] == "error"]
+    assert codes == ["SB103"]
+    assert "parent link 'world', which does not exist" in findings(result.stdout)[0]["message"]
