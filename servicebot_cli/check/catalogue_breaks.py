@@ -10,6 +10,9 @@ from __future__ import annotations
 
 _URDFDOM = ("urdfdom refuses the file, so robot_state_publisher, RViz and Gazebo (sdformat) "
             "do not load the robot")
+_OR_DROPS = ("; inside a link's <inertial>, <visual> or <collision> it loads the file instead "
+             "but drops that element and the link's later ones (check_urdf still says it "
+             "parsed): the robot silently changes")
 
 BREAKS: dict[str, str] = {
     "SB001": "xacro and every loader stop at the missing file: nothing loads the robot",
@@ -21,9 +24,9 @@ BREAKS: dict[str, str] = {
     "SB006": "there is no URDF for robot_state_publisher, Gazebo or MoveIt to load",
     "SB008": _URDFDOM,
     "SB009": _URDFDOM,
-    "SB012": _URDFDOM + " (a <mesh filename=\"\"> passes urdfdom, but Gazebo, RViz and "
-             "Pinocchio's collision model cannot open it)",
-    "SB013": _URDFDOM + " (it drops the element and fails the link or joint)",
+    "SB012": _URDFDOM + _OR_DROPS + " (a <mesh filename=\"\"> passes urdfdom, but Gazebo, "
+             "RViz and Pinocchio's collision model cannot open it)",
+    "SB013": _URDFDOM + _OR_DROPS,
     "SB014": _URDFDOM + "; Pinocchio and MuJoCo would compute with NaN",
     "SB015": "consumers take minutes or run out of memory on such a file; servicebot refuses it",
     "SB016": _URDFDOM,
@@ -68,7 +71,8 @@ BREAKS: dict[str, str] = {
              "cannot be built; Gazebo collides with nothing there",
     "SB405": "MuJoCo refuses a zero or negative collision size; Pinocchio's collision "
              "geometry (coal) keeps a negative box as it is; urdfdom accepts them",
-    "SB406": _URDFDOM + " ('Unknown geometry type')",
+    "SB406": "urdfdom logs 'Unknown geometry type' and drops the <visual> or <collision>, and "
+             "the link's later ones, loading the rest: the robot silently changes",
     "SB501": "Gazebo (sdformat's URDF conversion) drops the block silently: its friction, "
              "sensor or plugin is lost",
     "SB502": "Gazebo refuses the sensor or runs it with the out-of-range value",
