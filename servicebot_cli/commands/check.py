@@ -9,6 +9,8 @@ here; the rules, numpy and Pinocchio load inside the callbacks.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 import click
@@ -25,6 +27,7 @@ from servicebot_cli.commands.options import (
     BundledRobot,
     PackageDir,
     RobotArgs,
+    refuse_overwriting,
     refuse_without,
     robot_arguments,
     split_robot_args,
@@ -118,6 +121,7 @@ def urdf(robot_args: RobotArgs, jobs: int | None, mesh_cache: bool, show_package
         from servicebot_cli.check.mesh_store import default_directory
 
         cache = default_directory()
+    _refuse_overwriting_inputs(report, robot_args.files)
     targets = UrdfTargets(robot_args.files, robot_args.xacro_args, robot_args.packages, default,
                           jobs, cache)
     _run(CheckRequest(targets, _settings(report)), report, show_packages)
@@ -161,6 +165,7 @@ def controllers(ctx: click.Context, values: tuple[str, ...], urdfs: tuple[str, .
     sources = tuple(RobotSource.of(u, xacro_args=xacro_args, packages=packages) for u in urdfs)
     if bundled:
         sources = (RobotSource.bundled(bundled),)
+    _refuse_overwriting_inputs(report, [*yaml_files, *urdfs])
     targets = ControllerTargets(yaml_files[0] if yaml_files else None, sources)
     _run(CheckRequest(targets, _settings(report)), report)
 
@@ -174,6 +179,20 @@ def _settings(report: ReportOptions) -> SettingsChoice:
                                "pyproject.toml); drop one of them")
     return SettingsChoice(report.select, report.ignore, report.strict, settings_path(report),
                           report.isolated)
+
+
+def _refuse_overwriting_inputs(report: ReportOptions, named: Sequence[str]) -> None:
+    """Refuse a report file that is a named input, or a robot file of a named directory."""
+    output = report.output
+    inputs = list(named)
+    if output not in (None, "-") and Path(output).is_file():
+        from servicebot_cli.check.files import is_robot_file
+
+        target = Path(output).resolve()
+        if is_robot_file(target):
+            inputs += [output for d in named if Path(d).is_dir()
+                       and Path(d).resolve() in target.parents]
+    refuse_overwriting(output, inputs)
 
 
 def _run(request: CheckRequest, report: ReportOptions, packages: bool = False) -> None:

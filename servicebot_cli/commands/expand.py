@@ -5,7 +5,13 @@ from __future__ import annotations
 import click
 
 from servicebot_cli.commands.command import Command
-from servicebot_cli.commands.options import OutputPath, RobotArgs, refuse_without, robot_arguments
+from servicebot_cli.commands.options import (
+    OutputPath,
+    RobotArgs,
+    refuse_overwriting,
+    refuse_without,
+    robot_arguments,
+)
 
 URDF_SUFFIXES = (".urdf", ".xml")
 """What ``-o`` may be called: ``robot.urdf``, ``robot.urdf.xml`` (as the bundled ones), ``.xml``."""
@@ -37,6 +43,7 @@ def expand(ctx: click.Context, robot_args: RobotArgs, output: str) -> None:
 
     refuse_without(ctx, "--package", "a xacro FILE", name="packages",
                    present=bool(robot_args.files))
+    refuse_overwriting(output, robot_args.files)
     if robot_args.files:
         source = robot_args.source()
     else:

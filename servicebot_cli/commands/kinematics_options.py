@@ -9,7 +9,7 @@ from typing import Any, TypeVar
 
 import click
 
-from servicebot_cli.commands.options import OutputPath, given
+from servicebot_cli.commands.options import OutputPath, given, refuse_overwriting
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -91,12 +91,17 @@ def batch_options(flag: str, help: str) -> Callable[[F], F]:
 def refuse_format_with_file(ctx: click.Context, output: str | None) -> None:
     """Refuse ``--format`` beside ``--output FILE``: the file's extension names its format.
 
+    Also refuse an ``--output`` that is the batch input file itself.
+
     Raises:
-        click.UsageError: Both were given.
+        click.UsageError: Both were given, or the output would replace the input.
     """
     if given(ctx, "fmt") and output not in (None, "-"):
         raise click.UsageError("--format has no effect with --output FILE: its extension "
                                "names the format (.csv or .jsonl); drop --format", ctx=ctx)
+    inputs = [ctx.params.get(p.name) for p in ctx.command.params
+              if p.name and isinstance(p.type, InputFile)]
+    refuse_overwriting(output, [i for i in inputs if isinstance(i, str) and i != "-"])
 
 
 class RandomSeed(click.ParamType[int]):

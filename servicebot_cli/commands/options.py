@@ -12,7 +12,8 @@ import functools
 import math
 import os
 import re
-from collections.abc import Callable, Sequence
+import stat
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
@@ -209,6 +210,8 @@ class OutputPath(click.ParamType[str]):
         path = Path(text)
         if not text.strip():
             self.fail("an empty path; give a file name", param, ctx)
+        if not self.directory and _is_device_or_pipe(path):
+            return text  # written into as a shell's > would: /dev/stdout, a named pipe
         if self.suffixes and not any(text.lower().endswith(s) for s in self.suffixes):
             what = f"{self.what} " if self.what else ""
             self.fail(f"'{text}': {what}files end in {' or '.join(self.suffixes)}; "
@@ -233,6 +236,35 @@ class OutputPath(click.ParamType[str]):
         if not os.access(parent, os.W_OK | os.X_OK):
             self.fail(f"'{text}': permission denied writing in '{parent}'", param, ctx)
         return text
+
+
+def _is_device_or_pipe(path: Path) -> bool:
+    """Whether ``path`` exists as something other than a file or a directory."""
+    try:
+        mode = path.stat().st_mode
+    except OSError:
+        return False
+    return not (stat.S_ISREG(mode) or stat.S_ISDIR(mode))
+
+
+def refuse_overwriting(output: str | None, inputs: Iterable[str | os.PathLike[str]],
+                       option: str = "-o") -> None:
+    """Refuse an output that is one of the files the command reads.
+
+    ``check urdf robot.urdf -o robot.urdf`` would replace the robot with its report.
+
+    Raises:
+        click.UsageError: ``output`` is the same file as one of ``inputs``.
+    """
+    if not output or output == "-" or not os.path.isfile(output):
+        return
+    for named in inputs:
+        try:
+            same = os.path.samefile(output, named)
+        except OSError:
+            continue
+        if same:
+            raise click.UsageError(f"{option} {output} is the file it reads; give another name")
 
 
 def given(ctx: click.Context, name: str) -> bool:
