@@ -22,6 +22,40 @@ BASES = ("fixed", "planar", "free")
 ``free`` (a 6-DoF floating base)."""
 
 
+MOST_JOINTS_DEEP = 1000
+"""The deepest kinematic tree a model is built of. Pinocchio's URDF parser recurses once per
+joint: a chain of 4,000 links overflows the stack (a segmentation fault), 3,500 do not."""
+
+MOST_MOVING_JOINTS = 250
+"""The most moving joints a model is built with: Pinocchio's ``Data`` for a model of n degrees
+of freedom holds about n**3 numbers (38 MB at 100, 886 MB at 300). Real robots have far
+fewer: the corpus's largest, TIAGo dual with its hands, has 101."""
+_MOVING_JOINT = re.compile(r"<joint\b[^>]*\btype\s*=\s*[\"'](?:revolute|continuous|prismatic|"
+                           r"planar|floating)[\"']")
+_JOINT = re.compile(r"<joint\b[^>]*>(.*?)</joint>", re.DOTALL)
+_END = re.compile(r"<(parent|child)\b[^>]*\blink\s*=\s*[\"']([^\"']*)[\"']")
+
+
+def tree_depth(xml_text: str) -> int:
+    """The most joints on a path from a root link to a leaf (a loop counts as it goes round)."""
+    parent_of: dict[str, str] = {}
+    for body in _JOINT.findall(xml_text):
+        ends = dict(_END.findall(body))
+        if "parent" in ends and "child" in ends:
+            parent_of.setdefault(ends["child"], ends["parent"])
+    depth: dict[str, int] = {}
+    for start in parent_of:
+        path, link = [], start
+        while link in parent_of and link not in depth and link not in path:
+            path.append(link)
+            link = parent_of[link]
+        below = depth.get(link, 0)
+        for link in reversed(path):
+            below += 1
+            depth[link] = below
+    return max(depth.values(), default=0)
+
+
 def check_hint(display: str, xacro_args: Sequence[tuple[str, str]] = ()) -> str:
     """``(run 'servicebot check FILE NAME:=VALUE...' for details)``.
 
@@ -50,6 +84,19 @@ def build_model(xml_text: str, display: str, base: str = "fixed",
     Raises:
         DescriptionError: urdfdom or Pinocchio rejected the description.
     """
+    moving = len(_MOVING_JOINT.findall(xml_text))
+    if moving > MOST_MOVING_JOINTS:
+        raise DescriptionError(
+            f"{display}: its model would have {moving} moving joints, over the "
+            f"{MOST_MOVING_JOINTS} that servicebot builds a model of (Pinocchio's working "
+            "memory grows as the cube of their number: about 0.5 GB at 250, 33 GB at 1,000) "
+            f"{check_hint(display, xacro_args)}")
+    depth = tree_depth(xml_text)
+    if depth > MOST_JOINTS_DEEP:
+        raise DescriptionError(
+            f"{display}: its kinematic tree is {depth} joints deep, over the "
+            f"{MOST_JOINTS_DEEP:,} that Pinocchio's URDF parser can load (it recurses once "
+            f"per joint and would crash) {check_hint(display, xacro_args)}")
     import pinocchio as pin
 
     root_joint = {"fixed": None, "planar": pin.JointModelPlanar, "free": pin.JointModelFreeFlyer}[
