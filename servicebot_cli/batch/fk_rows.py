@@ -25,6 +25,7 @@ import numpy.typing as npt
 from servicebot_cli.batch.reading import Row
 from servicebot_cli.batch.stream import RowKind
 from servicebot_cli.common.errors import JointNotFound
+from servicebot_cli.description.model import new_data
 from servicebot_cli.kinematics.forward import configurations, frame_transforms, pose_table
 from servicebot_cli.kinematics.frames import frame_id, link_names
 from servicebot_cli.kinematics.json_types import JsonObject, JsonValue
@@ -66,7 +67,7 @@ class FkBatch:
         """
         known = link_names(robot)
         self.model = robot.model
-        self.data = self.model.createData()
+        self.data = new_data(self.model, robot.display)
         self.space = robot.joint_space
         self.mimics = Mimics.of(robot.joints, self.space)
         self.frames = list(frames)

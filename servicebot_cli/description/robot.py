@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 from servicebot_cli.common.errors import FrameNotFound, JointNotFound, NameNotFound
 from servicebot_cli.description import elements as el
 from servicebot_cli.description import extensions as ext
-from servicebot_cli.description.model import build_model
+from servicebot_cli.description.model import build_model, new_data
 from servicebot_cli.description.safe_xml import PositionedElement
 from servicebot_cli.description.sources import SourceRef
 
@@ -223,7 +223,7 @@ class RobotDescription:
     @cached_property
     def data(self) -> pin.Data:
         """Pinocchio data for :attr:`model`, shared; commands recompute what they read."""
-        return self.model.createData()
+        return new_data(self.model, self.display)
 
     @cached_property
     def joint_space(self) -> JointSpace:

@@ -18,6 +18,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.description.model import new_data
 from servicebot_cli.kinematics.frames import frame_id, moving_joints
 
 if TYPE_CHECKING:
@@ -125,7 +126,7 @@ class Chain:
         lock = [j for j in range(1, model.njoints) if j not in keep]
         self.full_nq = model.nq
         self.model = _reduced(model, lock) if lock else model
-        self.data = self.model.createData()
+        self.data = new_data(self.model, f"the joints that move '{frame}'")
         self.frame = frame_id(self.model, frame, known)
         self.frame_name = frame
         self.names = tuple(self.model.names[1:])

@@ -32,6 +32,7 @@ import numpy.typing as npt
 from servicebot_cli.common.errors import DescriptionError, ServicebotError
 from servicebot_cli.common.forked import Worker, WorkerEnded, prepare_quietly, second_core
 from servicebot_cli.description.joint_space import JointSpace
+from servicebot_cli.description.model import new_data
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -68,7 +69,7 @@ def model_facts(robot: RobotDescription) -> ModelFacts:
     model = robot.model_with_base("planar")  # refused as the fixed-base one of loading is
     space = JointSpace.of(model, robot.movable_joints)
     try:
-        data = model.createData()
+        data = new_data(model, robot.display)  # refused beyond what fits in memory
     except MemoryError:  # its tables grow steeply: 10.8 GB for a chain of 550 joints
         raise DescriptionError(
             f"{robot.display}: too large to simulate: Pinocchio's data for its {len(space.names)}"

@@ -45,11 +45,15 @@ def test_a_chain_deeper_than_the_parser_can_take_is_refused_in_one_line(run, tmp
 
 def test_a_model_of_too_many_moving_joints_is_refused_before_its_memory_runs_away(run,
                                                                                   tmp_path):
-    """A 1,000-joint snake took 24 GB in fk (Pinocchio's data grows as the cube)."""
+    """A 1,000-joint snake took 24 GB in fk (Pinocchio's data grows as the cube); inspect,
+    which needs no data, still reads it."""
     robot = tmp_path / "snake.urdf"
     robot.write_text(_chain(MOST_MOVING_JOINTS + 2))
-    why = f"its model would have {MOST_MOVING_JOINTS + 1} moving joints, over the 250 that"
+    why = f"its model has {MOST_MOVING_JOINTS + 1} degrees of freedom, over the 250 that"
     assert_one_line_error(run("fk", robot), 2, why)
+    assert_one_line_error(run("ik", robot, "--position", "0.1", "0", "0"), 2,
+                          "the joints that move 'l251'", "over the 250")
+    assert run("inspect", robot, "--section", "tree").exit_code == 0
     fine = tmp_path / "fine.urdf"
     fine.write_text(_chain(41))
     assert run("fk", fine).exit_code == 0
