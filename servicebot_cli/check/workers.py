@@ -21,7 +21,7 @@ from servicebot_cli.check.findings import Issue
 from servicebot_cli.check.meshes import MeshCache
 from servicebot_cli.check.runner import FileReport, check_source, place_issues
 from servicebot_cli.check.settings import Settings
-from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.common.errors import DescriptionError, ExitCode, ServicebotError
 from servicebot_cli.common.signals import ENDING_SIGNALS
 from servicebot_cli.description.loader import RobotSource
 from servicebot_cli.description.packages import PackageResolver
@@ -129,22 +129,46 @@ def runs(sources: Sequence[tuple[RobotSource, bool]],
         yield run
 
 
+class WorkerDied(ServicebotError):
+    """A worker process died (a native library crashed on a file); exit code 3."""
+
+    exit_code = ExitCode.INTERNAL
+
+
 def check_in_workers(sources: Sequence[tuple[RobotSource, bool]], settings: Settings,
                      packages: tuple[tuple[str, str], ...], jobs: int,
                      mesh_cache: Path | None = None) -> Iterator[Outcome]:
-    """Each source's outcome, in order, checked by ``jobs`` worker processes."""
+    """Each source's outcome, in order, checked by ``jobs`` worker processes.
+
+    Raises:
+        WorkerDied: A worker was killed by a signal (a crash in a native library): the
+            files of the run it had are named.
+    """
     import multiprocessing  # not for a single file
+    from concurrent.futures import ProcessPoolExecutor
+    from concurrent.futures.process import BrokenProcessPool
 
     methods = multiprocessing.get_all_start_methods()
     context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
-    pool = context.Pool(jobs, initializer=_start, initargs=(settings, packages, mesh_cache))
+    pool = ProcessPoolExecutor(jobs, mp_context=context, initializer=_start,
+                               initargs=(settings, packages, mesh_cache))
+    work = list(runs(sources, jobs))
     try:
-        for outcomes in pool.imap(_check_run, runs(sources, jobs)):
+        futures = [pool.submit(_check_run, run) for run in work]
+        for run, future in zip(work, futures, strict=True):
+            try:
+                outcomes = future.result()
+            except BrokenProcessPool:
+                names = ", ".join(source.display for source, _ in run)
+                raise WorkerDied(f"a worker process died while checking {names}: a native "
+                                 "library crashed on one of them; check them one at a time "
+                                 "with --jobs 1 to see which") from None
             yield from outcomes
-        pool.close()
-    finally:
-        pool.terminate()  # at once on an error, a signal or a refused file; else they are done
-        pool.join()
+    finally:  # at once on an error, a signal or a refused file; else they are done
+        for process in list(getattr(pool, "_processes", {}).values()):
+            if process.is_alive():
+                process.terminate()
+        pool.shutdown(wait=True, cancel_futures=True)
 
 
 def report_of(outcome: Outcome, settings: Settings) -> FileReport:

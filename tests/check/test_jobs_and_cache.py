@@ -103,3 +103,32 @@ def test_a_signal_stops_the_workers_with_one_line(ending):
     assert len(stderr.strip().splitlines()) == 1, stderr
     time.sleep(0.2)
     assert not [pid for pid in workers if os.path.exists(f"/proc/{pid}")]
+
+
+def test_a_worker_that_dies_ends_the_run_in_one_line_naming_its_files(run, tmp_path,
+                                                                      monkeypatch):
+    """A native library crashing in a worker (a segmentation fault) hung the run before:
+    multiprocessing's pool waited for the lost task forever, and SIGTERM did not end it."""
+    import os
+    import signal
+
+    from servicebot_cli.check import workers
+
+    files = []
+    for name in ("a", "b", "crash", "d"):
+        path = tmp_path / f"{name}.urdf"
+        path.write_text(f'<robot name="{name}"><link name="base"/></robot>')
+        files.append(path)
+    checked = workers.check_one
+
+    def crashing(source, *args, **kwargs):
+        if source.path.name == "crash.urdf":
+            os.kill(os.getpid(), signal.SIGSEGV)  # in the forked worker, as a C++ crash would
+        return checked(source, *args, **kwargs)
+
+    monkeypatch.setattr(workers, "check_one", crashing)
+    result = run("check", *files, "--jobs", "2", "--isolated")
+    assert result.exit_code == 3
+    (line,) = result.stderr.splitlines()
+    assert line.startswith("Error: a worker process died while checking ") and "crash.urdf" in line
+    assert "--jobs 1" in line
