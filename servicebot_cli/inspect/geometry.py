@@ -84,13 +84,14 @@ class MeshLibrary:
         from servicebot_cli.common.library_logs import captured
 
         try:
-            with captured() as said:
+            # numpy's overflow warnings on huge coordinates are not ours to show: the
+            # coordinates are refused below, in our words
+            with captured() as said, np.errstate(all="ignore"):
                 loaded = _load_with_trimesh(trimesh, path)
             self.problems.extend(f"mesh {filename}: {line}" for line in dict.fromkeys(said))
             if not isinstance(loaded, trimesh.Trimesh):
                 raise TypeError(f"not a triangle mesh but a {type(loaded).__name__}")
-            vertices = np.asarray(loaded.vertices, dtype=np.float64)
-            faces = np.asarray(loaded.faces, dtype=np.int64)
+            vertices, faces = _triangles(loaded.vertices, loaded.faces)
         except Exception as exc:  # noqa: BLE001 -- trimesh raises many types for bad files
             self.problems.append(f"mesh {filename}: cannot read: {type(exc).__name__}: {exc}")
             return None
@@ -102,6 +103,25 @@ class MeshLibrary:
                                  f"finite numbers within {FAR_M:g} (check reports it)")
             return None
         return Mesh(vertices, faces)
+
+
+def _triangles(points: Any, triangles: Any) -> tuple[FloatArray, npt.NDArray[np.int64]]:
+    """A trimesh mesh's vertices as an (n, 3) array and its faces as an (m, 3) array.
+
+    Raises:
+        ValueError: The vertices are not 3D points (trimesh keeps an OBJ's ``v`` lines of
+            two numbers as 2D points) or the faces are not triangles of them.
+    """
+    vertices = np.asarray(points, dtype=np.float64)
+    faces = np.asarray(triangles, dtype=np.int64)
+    if vertices.ndim != 2:
+        raise ValueError("its vertices are not a list of points")
+    if vertices.shape[1] != 3:
+        raise ValueError(f"its vertices have {vertices.shape[1]} coordinates, not 3")
+    if len(faces) and (faces.ndim != 2 or faces.shape[1] != 3 or faces.min() < 0
+                       or faces.max() >= len(vertices)):
+        raise ValueError("its faces are not triangles of its vertices")
+    return vertices, faces
 
 
 def _load_with_trimesh(trimesh: Any, path: Path) -> Any:

@@ -177,6 +177,8 @@ def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> T
     posed = link_transforms(robot, request.configuration, clamp=request.clamp)
     meshes = mesh_library(robot, request.resolver or PackageResolver.from_environment())
     mass, centre = t.mass_and_centre(robot, posed)
+    if centre is None and mass > 0:
+        notes.append(t.CENTRE_UNKNOWN)
     box = t.box_of(robot, posed, meshes)
     arm = [j for j in robot.movable_joints if j.name not in wheels and j.name not in chassis]
     notes.extend(meshes.problems)

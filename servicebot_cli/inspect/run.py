@@ -96,15 +96,15 @@ def run(request: InspectRequest | DiffRequest) -> InspectResult | DiffResult:
     """Inspect one description, or compare two.
 
     Raises:
-        DescriptionError: A description cannot be loaded.
+        DescriptionError: A description cannot be loaded, or its joints close a loop.
         JointValueError: A ``joints`` entry names no movable joint or is out of its limits
             (without ``clamp``); nothing else has been computed yet.
     """
     from servicebot_cli.description.loader import load
 
     if isinstance(request, DiffRequest):
-        return compare(load(request.a), load(request.b))
-    robot = load(request.source)
+        return compare(_tree(load(request.a)), _tree(load(request.b)))
+    robot = _tree(load(request.source))
     values = _checked(robot, request.joints, request.clamp)
     resolver = request.source.resolver()
     picture = None
@@ -117,6 +117,18 @@ def run(request: InspectRequest | DiffRequest) -> InspectResult | DiffResult:
         inspection = inspect_robot(robot, Request(request.sections, values, request.clamp,
                                                   resolver, request.controllers))
     return InspectResult(inspection, picture, _clamped(robot, request.joints, values))
+
+
+def _tree(robot: RobotDescription) -> RobotDescription:
+    """``robot``, once its joints are known to form a tree.
+
+    Raises:
+        DescriptionError: A joint loop that Pinocchio's model would leave out.
+    """
+    from servicebot_cli.kinematics.frames import require_tree
+
+    require_tree(robot)
+    return robot
 
 
 def _checked(robot: RobotDescription, joints: tuple[tuple[str, float], ...],

@@ -21,6 +21,9 @@ from servicebot_cli.inspect.numbers import clean, vec3
 from servicebot_cli.inspect.tree import KinematicTree, descendants
 from servicebot_cli.kinematics.drive_geometry import DriveGeometry
 
+CENTRE_UNKNOWN = ("centre of mass not shown: the links' masses and <inertial> origins are too "
+                  "large to add up to a finite number")
+"""The note for a robot with mass but no finite centre of mass."""
 _PARALLEL = 0.999  # |cos| between a segment and a joint axis that counts as "along the axis"
 
 
@@ -112,20 +115,28 @@ class Totals:
 
 def mass_and_centre(robot: RobotDescription,
                     transforms: Mapping[str, FloatArray]) -> tuple[float, Vec3 | None]:
-    """Total mass [kg] and centre of mass in the root frame [m]: sum of m_i c_i / sum m_i."""
+    """Total mass [kg] and centre of mass in the root frame [m]: sum of m_i c_i / sum m_i.
+
+    The centre is None without mass, and when it is not a finite number: ``<inertial>``
+    origins or masses so large that the sums overflow (see :data:`CENTRE_UNKNOWN`).
+    """
     total, moment = 0.0, np.zeros(3)
-    for link in robot.links:
-        inertial = link.inertial
-        if inertial is None or inertial.mass_kg is None or not math.isfinite(inertial.mass_kg):
-            continue
-        transform = transforms.get(link.name)
-        if transform is None:
-            continue
-        total += inertial.mass_kg
-        moment += inertial.mass_kg * (transform[:3, :3] @ inertial.origin.xyz + transform[:3, 3])
-    if total <= 0:
+    with np.errstate(all="ignore"):  # an overflow gives inf or nan, refused below
+        for link in robot.links:
+            inertial = link.inertial
+            if inertial is None or inertial.mass_kg is None \
+                    or not math.isfinite(inertial.mass_kg):
+                continue
+            transform = transforms.get(link.name)
+            if transform is None:
+                continue
+            total += inertial.mass_kg
+            moment += inertial.mass_kg * (transform[:3, :3] @ inertial.origin.xyz
+                                          + transform[:3, 3])
+        centre = moment / total if 0 < total < math.inf else None
+    if centre is None or not np.all(np.isfinite(centre)):
         return total, None
-    return total, vec3(moment / total)
+    return total, vec3(centre)
 
 
 def arm_reach(tree: KinematicTree, arm_joints: list[Joint],

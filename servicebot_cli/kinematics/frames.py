@@ -2,7 +2,8 @@
 
 A frame is a URDF link (fixed links included). Pinocchio's ``getFrameId`` returns an
 out-of-range index for an unknown name instead of raising, so every look-up goes through
-:func:`frame_id`, which checks ``existFrame`` first and suggests the nearest names.
+:func:`frame_id`, which checks ``existFrame`` first and suggests the nearest names. A link
+on a joint loop is in the URDF but in no model: :func:`require_tree` refuses such a robot.
 """
 
 from __future__ import annotations
@@ -11,11 +12,13 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from servicebot_cli.common.errors import FrameNotFound
+from servicebot_cli.common.errors import DescriptionError, FrameNotFound
+from servicebot_cli.description.model import check_hint
 
 if TYPE_CHECKING:
     import pinocchio as pin
 
+    from servicebot_cli.description.elements import Joint
     from servicebot_cli.description.robot import RobotDescription
 
 _TOOL_WORDS = ("tool", "tcp", "end_effector", "ee_link", "flange", "gripper")
@@ -36,7 +39,58 @@ def frame_id(model: pin.Model, name: str, known: Sequence[str]) -> int:
 
     if name in known and model.existFrame(name, pin.FrameType.BODY):
         return int(model.getFrameId(name, pin.FrameType.BODY))
+    if name in known:  # a link the model left out: no root reaches it (see require_tree)
+        raise DescriptionError(f"link '{name}' of {model.name} is not in its model: no root "
+                               "link reaches it; a kinematic loop? ('servicebot check' shows it)")
     raise FrameNotFound.for_name(name, known, robot=model.name)
+
+
+def require_tree(robot: RobotDescription) -> None:
+    """Refuse links no root reaches: joints that close a loop off the tree.
+
+    Pinocchio builds its model from the root down and silently leaves out a joint whose
+    parent is its own child, or a ring of joints that nothing joins to the root; every
+    frame on it would then be "missing". Iterative, linear in the number of joints.
+
+    Raises:
+        DescriptionError: The first such loop, as ``check`` (SB107) words it.
+    """
+    known = set(link_names(robot))
+    parent_joint: dict[str, Joint] = {}
+    below: dict[str, list[str]] = {}
+    for joint in robot.joints:
+        if joint.parent in known and joint.child in known and joint.child not in parent_joint:
+            parent_joint[joint.child or ""] = joint
+            below.setdefault(joint.parent or "", []).append(joint.child or "")
+    reached = [name for name in link_names(robot) if name not in parent_joint]
+    seen = set(reached)
+    while reached:
+        for child in below.get(reached.pop(), ()):
+            if child not in seen:
+                seen.add(child)
+                reached.append(child)
+    lost = next((name for name in link_names(robot) if name not in seen), None)
+    if lost is not None:
+        raise DescriptionError(f"{robot.display}: not a valid URDF: "
+                               f"{_loop_text(lost, parent_joint)}; a URDF is a tree "
+                               f"{check_hint(robot.display, robot.xacro_args)}")
+
+
+def _loop_text(link: str, parent_joint: dict[str, Joint]) -> str:
+    """The loop above ``link`` (a link no root reaches): ``a -[ab]-> b -[ba]-> a``."""
+    order: dict[str, int] = {}
+    chain: list[Joint] = []
+    while link not in order:  # every lost link has a lost parent: this ends on a loop
+        order[link] = len(chain)
+        chain.append(parent_joint[link])
+        link = chain[-1].parent or ""
+    loop = chain[order[link]:][::-1]
+    if len(loop) == 1:
+        return f"joint '{loop[0].name}' connects link '{link}' to itself"
+    hops = [f" -[{j.name}]-> {j.child}" for j in loop]
+    if len(hops) > 6:
+        hops = [*hops[:3], f" ... ({len(hops) - 5} more joints)", *hops[-2:]]
+    return f"kinematic loop: {link}{''.join(hops)}"
 
 
 def moving_joints(model: pin.Model, frame: int) -> tuple[int, ...]:
@@ -102,8 +156,10 @@ def pick_frame(robot: RobotDescription, name: str | None) -> tuple[str, str | No
         by its place in the tree rather than by its name (else None).
 
     Raises:
+        DescriptionError: Joints that close a loop (:func:`require_tree`).
         FrameNotFound: ``name`` is not a link, with the nearest names.
     """
+    require_tree(robot)
     if name is not None:
         frame_id(robot.model, name, link_names(robot))
         return name, None

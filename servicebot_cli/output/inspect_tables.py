@@ -99,7 +99,8 @@ def totals_tables(totals: Totals) -> list[Table]:
         ("degrees of freedom", f"{dof.total}: {dof.wheels} wheels + {dof.arm} arm"
          + (f" + {dof.chassis} casters and suspension" if dof.chassis else "")),
         ("total mass", d.quantity(totals.mass_kg, "kg")),
-        ("centre of mass", f"{d.point(totals.centre_of_mass_m)} m in {totals.frame}"),
+        ("centre of mass", "-" if totals.centre_of_mass_m is None
+         else f"{d.point(totals.centre_of_mass_m)} m in {totals.frame}"),
         ("bounding box (visual)", _box(totals)),
     ]
     if totals.arm is not None:
