@@ -28,6 +28,7 @@ import numpy.typing as npt
 
 from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.kinematics.collision_floor import FLOOR, add_floor, grounded
+from servicebot_cli.kinematics.collision_meshes import coal_reason, collision_meshes, mesh_problem
 from servicebot_cli.kinematics.collision_pairs import (
     SAMPLES,
     drop_always_touching,
@@ -41,7 +42,6 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 FloatArray = npt.NDArray[np.float64]
-
 
 
 class CollisionSetupError(ServicebotError):
@@ -149,10 +149,18 @@ def build_check(robot: RobotDescription, model: pin.Model, resolver: PackageReso
 
 def _geometry(robot: RobotDescription, model: pin.Model,
               resolver: PackageResolver) -> pin.GeometryModel:
-    """The ``<collision>`` geometry, with ``package://`` meshes resolved by ``resolver``."""
+    """The ``<collision>`` geometry, with ``package://`` meshes resolved by ``resolver``.
+
+    Each mesh is read by the project's own bounded readers first: Assimp (in coal) crashes
+    on, or allocates without bound for, some broken files.
+    """
     import pinocchio as pin
 
     base_dir = robot.path.parent
+    meshes = list(collision_meshes(robot, resolver))
+    problem = mesh_problem(robot, meshes)
+    if problem is not None:
+        raise CollisionSetupError(problem)
 
     def resolved(match: re.Match[str]) -> str:
         # absolute: Pinocchio looks for a relative mesh path on its package dirs, not here
@@ -166,6 +174,8 @@ def _geometry(robot: RobotDescription, model: pin.Model,
         with captured_fd2():  # urdfdom's words on what it skips (check reports those)
             return pin.buildGeomFromUrdfString(model, xml, pin.COLLISION)
     except (ValueError, RuntimeError) as exc:
-        reason = " ".join(str(exc).split())
-        raise CollisionSetupError(f"{robot.display}: cannot read the collision geometry: "
-                                  f"{reason}; --allow-collisions skips the check") from None
+        mesh, reason = coal_reason(str(exc), meshes)
+        what = ("cannot read the collision geometry" if mesh is None else
+                f"collision mesh '{mesh.filename}' of link '{mesh.link}' cannot be read")
+        raise CollisionSetupError(f"{robot.display}: {what}: {reason}; --allow-collisions "
+                                  "skips the check") from None
