@@ -77,13 +77,23 @@ def load_mesh(path: Path, with_mass: bool = False) -> MeshInfo:
     if suffix == ".dae":
         data = declaration_first(data)
     try:
-        if suffix == ".dae" and not with_mass:
-            return _bounds_only(*mesh_readers.read_dae_bounds(data))
-        if suffix in mesh_readers.SUFFIXES:
-            return summarise_indexed(*mesh_readers.read_indexed(suffix, data), with_mass)
-        triangles = _with_trimesh(path)
+        with np.errstate(all="ignore"):  # a file's 1e300 or inf: found not finite below
+            return _read(path, data, suffix, with_mass)
     except (mesh_readers.MeshFormatError, ValueError, IndexError) as exc:
         raise MeshError(str(exc) or type(exc).__name__) from None
+    except OverflowError:  # a face index beyond int64 (the line-by-line OBJ reader)
+        raise MeshError("a face refers to a vertex that does not exist") from None
+    except LookupError as exc:  # an XML declaration naming an encoding nobody has
+        raise MeshError(f"its XML declaration names an {exc}") from None
+
+
+def _read(path: Path, data: bytes, suffix: str, with_mass: bool) -> MeshInfo:
+    """:func:`load_mesh` once the file is read."""
+    if suffix == ".dae" and not with_mass:
+        return _bounds_only(*mesh_readers.read_dae_bounds(data))
+    if suffix in mesh_readers.SUFFIXES:
+        return summarise_indexed(*mesh_readers.read_indexed(suffix, data), with_mass)
+    triangles = _with_trimesh(path)
     if not np.all(np.isfinite(triangles)):
         raise MeshError("vertices with NaN or infinite coordinates")
     return summarise(triangles, with_mass)

@@ -28,8 +28,21 @@ def checked(vertex_count: int, index: IntArray) -> IntArray:
 
 
 def fan_counts(vertex_count: int, indices: IntArray, counts: IntArray) -> IntArray:
-    """Fan-triangulate polygons given as flat ``indices`` with ``counts`` corners each."""
-    counts = counts[counts >= 3]
+    """Fan-triangulate polygons given as flat ``indices`` with ``counts`` corners each.
+
+    Polygons of fewer than three corners (a COLLADA polylist's lines) have no area: their
+    corners are left out with them. Counts that ask for more corners than ``indices`` has
+    are refused before anything is made of them.
+
+    Raises:
+        MeshFormatError: Counts beyond the index list, or a face naming a missing vertex.
+    """
+    if len(counts) and (counts.min() < 0 or int(counts.sum()) > len(indices)):
+        raise MeshFormatError("a polygon list shorter than its vertex counts")
+    polygons = counts >= 3
+    if not polygons.all():
+        indices = indices[:int(counts.sum())][np.repeat(polygons, counts)]
+        counts = counts[polygons]
     if not len(counts):
         return np.zeros((0, 3), dtype=np.int64)
     starts = np.concatenate([[0], np.cumsum(counts)[:-1]])

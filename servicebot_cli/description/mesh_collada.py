@@ -96,15 +96,30 @@ def _elements(parent: ET.Element) -> list[ET.Element]:
 
 
 def _primitive_triangles(prim: ET.Element, ns: str) -> int:
+    """How many triangles a primitive says it has, without reading its index lists.
+
+    Raises:
+        MeshFormatError: More corners than its ``<p>`` text could hold (each index takes
+            at least a digit and a blank): a count that is no count of this file.
+    """
     kind = prim.tag[len(ns):]
+    corners, triangles = 0, 0
     if kind == "triangles":
-        return int(prim.get("count", "0"))
-    if kind == "polylist":
+        triangles = int(prim.get("count", "0"))
+        corners = 3 * triangles
+    elif kind == "polylist":
         counts = numbers(prim.findtext(f"{ns}vcount"), np.int64)
-        return int(np.maximum(counts - 2, 0).sum())
-    if kind == "polygons":
-        return int(prim.get("count", "0"))
-    return 0
+        corners = int(counts.sum())
+        triangles = int(np.maximum(counts - 2, 0).sum())
+    elif kind == "polygons":
+        triangles = int(prim.get("count", "0"))
+    if corners:
+        stride = max((int(i.get("offset", "0")) for i in prim.findall(f"{ns}input")),
+                     default=0) + 1
+        written = sum(len(p.text or "") for p in prim.findall(f"{ns}p"))
+        if corners * stride * 2 - 1 > written:
+            raise MeshFormatError("a polygon list shorter than its vertex counts")
+    return triangles
 
 
 def _instances(scene: ET.Element, ns: str, geometries: dict[str | None, ET.Element],

@@ -1,0 +1,93 @@
+"""Mesh files broken in the ways a messy disk breaks them: one finding each, nothing more.
+
+No exit 3, no numpy warning on stderr, no memory that grows with what a header claims.
+"""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+
+from tests.check.helpers import findings
+from tests.conftest import run_servicebot
+
+ROBOT = """<robot name="r">
+  <link name="base"/>
+  <link name="arm">
+    <inertial><mass value="{mass}"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0"
+      izz="0.1"/></inertial>
+    <collision><geometry><mesh filename="{mesh}"/></geometry></collision>
+  </link>
+  <joint name="j" type="revolute"><parent link="base"/><child link="arm"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+</robot>
+"""
+TETRA = ('<float_array id="pa" count="12">0 0 0 1 0 0 0 1 0 0 0 1</float_array></source>'
+         '<vertices id="v"><input semantic="POSITION" source="#p"/></vertices>')
+
+
+def _collada(*, unit: str = "1", primitive: str = "", encoding: str = "") -> str:
+    declared = f' encoding="{encoding}"' if encoding else ""
+    primitive = primitive or ('<triangles count="4"><input semantic="VERTEX" source="#v" '
+                              'offset="0"/><p>0 2 1 0 3 2 0 1 3 1 2 3</p></triangles>')
+    return (f'<?xml version="1.0"{declared}?><COLLADA xmlns="http://www.collada.org/2005/11/'
+            f'COLLADASchema" version="1.4.1"><asset><unit meter="{unit}"/></asset>'
+            f'<library_geometries><geometry id="g"><mesh><source id="p">{TETRA}{primitive}'
+            '</mesh></geometry></library_geometries><library_visual_scenes><visual_scene '
+            'id="s"><node id="n"><instance_geometry url="#g"/></node></visual_scene>'
+            "</library_visual_scenes></COLLADA>")
+
+
+CASES = {
+    "a vcount of a trillion": ("m.dae", _collada(primitive=(
+        '<polylist count="2"><input semantic="VERTEX" source="#v" offset="0"/>'
+        "<vcount>3 1000000000000</vcount><p>0 1 2 0 1 3</p></polylist>")),
+        "a polygon list shorter than its vertex counts"),
+    "an encoding nobody has": ("m.dae", _collada(encoding="klingon"),
+                               "its XML declaration names an unknown encoding: klingon"),
+    "a unit of inf metres": ("m.dae", _collada(unit="inf"),
+                             "vertices with NaN or infinite coordinates"),
+    "an index beyond int64": ("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -1\n"
+                                       "f 1 2 1180591620717411303424\n",
+                              "a face refers to a vertex that does not exist"),
+}
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_a_broken_mesh_is_one_sb402(tmp_path, case):
+    name, text, why = CASES[case]
+    (tmp_path / name).write_text(text)
+    robot = tmp_path / "robot.urdf"
+    robot.write_text(ROBOT.format(mass=1, mesh=name))
+    result = run_servicebot("check", robot, "--isolated", "--format", "json", "--select",
+                            "SB4")
+    assert result.returncode == 1 and result.stderr == ""
+    (found,) = findings(result.stdout)
+    assert found["code"] == "SB402" and found["message"].endswith(why)
+
+
+def test_what_is_no_mesh_file_is_named_for_what_it_is(tmp_path):
+    fifo = tmp_path / "pipe.stl"
+    os.mkfifo(fifo)
+    (tmp_path / "loop.stl").symlink_to("loop.stl")
+    expected = {fifo: "is a named pipe", "/dev/zero": "is a device, not a file",
+                tmp_path / "loop.stl": "is a loop of symbolic links",
+                "/tmp/" + "a" * 300 + "/m.stl": "is a name too long for the file system"}
+    for mesh, why in expected.items():
+        robot = tmp_path / "robot.urdf"
+        robot.write_text(ROBOT.format(mass=1, mesh=mesh))
+        result = run_servicebot("check", robot, "--isolated", "--format", "json", "--select",
+                                "SB401", timeout=30)
+        assert result.returncode == 1 and result.stderr == ""
+        (found,) = findings(result.stdout)
+        assert found["message"].endswith(f"{mesh} {why}")
+
+
+def test_a_mass_of_1e_320_kg_leaves_no_numpy_text(tmp_path):
+    (tmp_path / "m.dae").write_text(_collada())
+    robot = tmp_path / "robot.urdf"
+    robot.write_text(ROBOT.format(mass="1e-320", mesh="m.dae"))
+    result = run_servicebot("check", robot, "--isolated")
+    assert result.stderr.strip().endswith("passed") or result.stderr == ""
+    assert "RuntimeWarning" not in result.stdout + result.stderr
