@@ -133,7 +133,10 @@ def _semantic_content(path: Path) -> bool:
 def _files(directory: Path, wanted: Callable[[Path], bool]) -> Iterator[Path]:
     for root, dirs, files in os.walk(directory):
         dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in SKIPPED_DIRS)
-        yield from (path for name in sorted(files) if wanted(path := Path(root) / name))
+        # a named pipe or a device among the files is no robot file (a stale pipe would
+        # block the walk): left out, as the walk leaves out what is not a robot file
+        yield from (path for name in sorted(files)
+                    if wanted(path := Path(root) / name) and path.is_file())
 
 
 def included_by(paths: list[Path]) -> set[Path]:

@@ -11,10 +11,12 @@ from __future__ import annotations
 
 import contextlib
 import io
+import os
+import stat
 import sys
 from collections.abc import Iterator
 from pathlib import Path
-from typing import IO
+from typing import IO, BinaryIO
 
 from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.common.text_decoding import NotUtf8, decode_utf8
@@ -71,13 +73,26 @@ def read_input_bytes(path: Path, display: str, *, kind: str,
         size = path.stat().st_size
         if max_bytes is not None and size > max_bytes:
             raise _too_large(display, size, max_bytes, error)
-        if max_bytes is None:
-            return path.read_bytes()
-        with path.open("rb") as handle:  # a device or a pipe has no size: read to the limit
-            data = handle.read(max_bytes + 1)
-        if len(data) > max_bytes:
+        with _opened(path) as handle:  # a device or a pipe has no size: read to the limit
+            data = handle.read() if max_bytes is None else handle.read(max_bytes + 1)
+        if max_bytes is not None and len(data) > max_bytes:
             raise _too_large(display, None, max_bytes, error)
         return data
+
+
+def _opened(path: Path) -> BinaryIO:
+    """``path`` open for reading; a named pipe without a writer reads as empty.
+
+    ``servicebot check <(xacro robot.xacro)`` reads a pipe its shell writes into; a named
+    pipe that nothing writes into (left over on a disk) would block the run forever when
+    opened. It is opened without waiting for a writer, then read as usual: with none, it
+    ends at once.
+    """
+    if not stat.S_ISFIFO(path.stat().st_mode):
+        return path.open("rb")
+    descriptor = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+    os.set_blocking(descriptor, True)
+    return os.fdopen(descriptor, "rb")
 
 
 def _too_large(display: str, size: int | None, max_bytes: int,

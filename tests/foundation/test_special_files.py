@@ -71,3 +71,33 @@ def test_standard_input_without_end_is_read_to_the_limit_only() -> None:
         result = run_servicebot("simulate", "--headless", "-s", "-", stdin=zeros, timeout=60,
                                 preexec_fn=_memory_capped)
     assert_one_line_error(result, 2, "<stdin>: holds more, over the 10 MB limit")
+
+
+def test_a_named_pipe_nothing_writes_into_ends_at_once(tmp_path):
+    """A stale pipe named like a robot blocked every command forever, and a walk of its
+    directory too. Named, it reads as empty; in a walk it is no robot file; a pipe that is
+    written into (a shell's <(xacro ...)) is read as before."""
+    import os
+    import threading
+
+    from tests.conftest import SIM_URDF, run_servicebot
+
+    stale = tmp_path / "stale.urdf"
+    os.mkfifo(stale)
+    (tmp_path / "good.urdf").write_text(Path(SIM_URDF).read_text())
+    named = run_servicebot("fk", stale, timeout=20)
+    assert named.returncode == 2 and "file is empty" in named.stderr
+    walked = run_servicebot("check", "urdf", tmp_path, "--isolated", timeout=20)
+    assert walked.returncode == 0 and "1 file checked" in walked.stdout
+    fed = tmp_path / "fed.urdf"
+    os.mkfifo(fed)
+
+    def feed() -> None:
+        with fed.open("w") as pipe:
+            pipe.write(Path(SIM_URDF).read_text())
+
+    writer = threading.Thread(target=feed)
+    writer.start()
+    result = run_servicebot("fk", fed, "--format", "json", timeout=20)
+    writer.join(timeout=20)
+    assert result.returncode == 0, result.stderr
