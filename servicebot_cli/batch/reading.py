@@ -165,6 +165,12 @@ def _json_rows(lines: Iterator[tuple[int, str]]) -> Iterator[Row]:
         except json.JSONDecodeError as exc:
             yield Row(number, error=f"not JSON: {exc.msg} at column {exc.colno}")
             continue
+        except RecursionError:  # {"a": [[[[...]]]]} 100,000 deep
+            yield Row(number, error="not JSON this reads: nested too deep")
+            continue
+        except ValueError:  # an integer of over 4,300 digits
+            yield Row(number, error="not JSON this reads: a number of too many digits")
+            continue
         if not isinstance(value, dict):
             kind = _JSON_KINDS.get(type(value), "value")
             yield Row(number, error=f"is a JSON {kind}, not an object of names and values")

@@ -120,6 +120,10 @@ def split_robot_args(values: Sequence[str]) -> tuple[tuple[str, ...], tuple[tupl
     group: list[tuple[str, str]] = []  # the arguments after the latest file
     for value in values:
         match = _XACRO_ARG_RE.match(value)
+        if match and not _utf8(match.group(2)):
+            raise click.BadParameter(
+                f"the value of '{match.group(1)}' is not UTF-8 text, which xacro needs; "
+                "give it in UTF-8", param_hint="xacro argument")
         if match:
             group.append((match.group(1), match.group(2)))
             _refuse_repeated_xacro_args(group)
@@ -133,6 +137,15 @@ def split_robot_args(values: Sequence[str]) -> tuple[tuple[str, ...], tuple[tupl
             files.append(value)
             group = []
     return tuple(files), tuple(xacro_args)
+
+
+def _utf8(text: str) -> bool:
+    """Whether ``text`` (from the command line) was UTF-8: no byte escaped as a surrogate."""
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return False
+    return True
 
 
 def _refuse_repeated_xacro_args(xacro_args: Sequence[tuple[str, str]]) -> None:

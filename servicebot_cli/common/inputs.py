@@ -52,6 +52,15 @@ def _reading(display: str, kind: str, error: type[ServicebotError]) -> Iterator[
         raise error(f"{display}: cannot read: {exc.strerror or exc}") from None
 
 
+def printable_name(name: str) -> str:
+    """``name`` with the bytes a non-UTF-8 file name carries written as ``\xff``."""
+    try:
+        name.encode("utf-8")
+    except UnicodeEncodeError:
+        return name.encode("utf-8", "surrogateescape").decode("utf-8", "backslashreplace")
+    return name
+
+
 def read_input_bytes(path: Path, display: str, *, kind: str,
                      error: type[ServicebotError] = ServicebotError,
                      max_bytes: int | None = None) -> bytes:

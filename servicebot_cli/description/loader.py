@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from servicebot_cli.common.errors import DescriptionError
-from servicebot_cli.common.inputs import display_path, read_input_bytes
+from servicebot_cli.common.inputs import display_path, printable_name, read_input_bytes
 from servicebot_cli.description import resources
 from servicebot_cli.description.model import check_hint
 from servicebot_cli.description.packages import PackageResolver
@@ -39,6 +39,11 @@ class RobotSource:
     display: str
     xacro_args: tuple[tuple[str, str], ...] = ()
     packages: tuple[tuple[str, str], ...] = ()
+
+    def __post_init__(self) -> None:
+        # a file name that is not UTF-8 (a Latin-1 byte from an old archive) is shown with
+        # the byte escaped (bad\xff.urdf): every report is UTF-8 text
+        object.__setattr__(self, "display", printable_name(self.display))
 
     @classmethod
     def bundled(cls, name: str = resources.DEFAULT_ROBOT) -> RobotSource:

@@ -283,9 +283,13 @@ def number(value: JsonValue, what: str) -> float:
             raise BadNumber(f"{what} is '{value}', not a number") from None
     if not isinstance(value, int | float):
         raise BadNumber(f"{what} is not a number")
-    if not math.isfinite(value):
+    try:
+        number = float(value)  # an integer of 400 digits is beyond a double
+    except OverflowError:
+        raise BadNumber(f"{what} is an integer beyond any double, not a finite number") from None
+    if not math.isfinite(number):
         raise BadNumber(f"{what} is {value}, not a finite number")
-    return float(value)
+    return number
 
 
 def row_pairs(values: Mapping[str, JsonValue],
@@ -301,7 +305,7 @@ def row_pairs(values: Mapping[str, JsonValue],
     if all(type(v) is str or type(v) is float or type(v) is int for v in raw):
         try:
             numbers = np.array(raw, dtype=float)
-        except ValueError:
+        except (ValueError, OverflowError):  # one by one below, for the message
             numbers = None
         if numbers is not None and np.isfinite(numbers).all():
             return list(zip(names, numbers.tolist(), strict=True))

@@ -1,0 +1,50 @@
+"""File names and values that are not what a program expects: one line, or escaped text.
+
+A Latin-1 byte in a file name (an old archive) or a xacro argument (a Latin-1 terminal), a
+JSON Lines batch with a 401-digit integer or 100,000 nested arrays: each ended in exit 3.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+from tests.conftest import SIM_URDF, assert_one_line_error, run_servicebot
+
+
+def test_a_file_name_that_is_not_utf8_is_shown_escaped_in_every_report(tmp_path):
+    folder = tmp_path / "d"
+    folder.mkdir()
+    name = os.fsencode(folder) + b"/bad\xff.urdf"
+    with open(name, "wb") as handle:
+        handle.write(Path(SIM_URDF).read_bytes())
+    for fmt in ("json", "text", "sarif"):
+        report = tmp_path / f"out.{fmt}"
+        result = run_servicebot("check", "urdf", folder, "--isolated", "--format", fmt,
+                                "-o", report)
+        assert result.returncode == 0, result.stderr
+        text = report.read_bytes().decode("utf-8")  # UTF-8, the byte escaped
+        assert "xff.urdf" in text
+    assert json.loads((tmp_path / "out.json").read_text())["files"][0]["file"].endswith(
+        "bad\\xff.urdf")
+
+
+def test_a_xacro_argument_that_is_not_utf8_is_one_line(tmp_path):
+    xacro = Path(SIM_URDF).parent / "service_robot.urdf.xacro"
+    result = run_servicebot("expand", xacro, os.fsdecode(b"hardware:=\xff"))
+    assert_one_line_error(result, 2, "the value of 'hardware' is not UTF-8 text")
+
+
+def test_batch_lines_beyond_what_json_numbers_hold_are_bad_lines(tmp_path):
+    big = tmp_path / "big.jsonl"
+    big.write_text('{"arm_base_to_link1": 1' + "0" * 400 + "}\n")
+    deep = tmp_path / "deep.jsonl"
+    deep.write_text('{"a": ' + "[" * 100_000 + "]" * 100_000 + "}\n")
+    assert_one_line_error(run_servicebot("fk", "--configs", big), 2,
+                          "big.jsonl:1: joint 'arm_base_to_link1' is an integer beyond any "
+                          "double")
+    assert_one_line_error(run_servicebot("fk", "--configs", deep), 2,
+                          "deep.jsonl:1: not JSON this reads: nested too deep")
+    skipped = run_servicebot("fk", "--configs", big, "--on-error", "skip")
+    assert skipped.returncode == 0 and "big.jsonl:1" in skipped.stderr
