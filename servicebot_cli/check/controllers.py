@@ -12,6 +12,7 @@ import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.findings import Issue
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
+from servicebot_cli.description.yaml_size import MOST_NODES, unfolded_nodes
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -60,6 +61,9 @@ def sections(text: str, display: str) -> dict[str, yaml.MappingNode] | Issue:
     except RecursionError:  # PyYAML's composer recurses once per level of nesting
         return Issue("SB601", "not valid YAML: lists and mappings nested too deep to read",
                      where=(display, 0, 0))
+    if root is not None and unfolded_nodes(root) is None:
+        return Issue("SB601", f"its aliases (*name) unfold to over {MOST_NODES:,} items (an "
+                     "alias bomb?); no controllers file is that large", where=(display, 0, 0))
     if root is None:
         return Issue("SB601", "the file holds no YAML (it is empty, or only comments)",
                      where=(display, 0, 0),
