@@ -17,8 +17,9 @@ MOST_NODES = 1_000_000
 def unfolded_nodes(root: Any, most: int = MOST_NODES) -> int | None:
     """The nodes of the tree under ``root`` (a ``yaml.Node``) with aliases followed.
 
-    None when they are over ``most``, or never end (a recursive alias). Each distinct node's unfolded size is worked out once, iteratively: a document nested
-    too deep for recursion is counted too.
+    None when they are over ``most``, or never end (a recursive alias). Each distinct
+    node's unfolded size is worked out once, iteratively: a document nested too deep for
+    recursion is counted too.
     """
     sizes: dict[int, int] = {}
     entered: set[int] = set()  # on the way down: met again below itself, it is a loop
