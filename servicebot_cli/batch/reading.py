@@ -103,6 +103,8 @@ def meaningful(text: str) -> bool:
 def _numbered(handle: IO[str]) -> Iterator[tuple[int, str]]:
     """``(line number, text)`` of meaningful lines: not blank, not ``#`` comments."""
     for number, text in enumerate(handle, start=1):
+        if number == 1:
+            text = text.removeprefix("\ufeff")  # Excel's "CSV UTF-8" starts with a BOM
         stripped = text.strip()
         if stripped and not stripped.startswith("#"):
             yield number, text.rstrip("\r\n")

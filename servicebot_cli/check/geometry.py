@@ -116,7 +116,14 @@ def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str
     extent_m = max(abs(hi - lo) * abs(s) for lo, hi, s in zip(info.lower, info.upper, scale,
                                                                   strict=True))
     name = shape.geometry.filename
-    if extent_m > LARGEST_M:
+    if extent_m == 0:  # as a <box size="0 0 0">: a visual draws nothing, MuJoCo refuses a
+        visual = where.startswith("visual")  # collision of no size
+        unit = " (or its <unit meter> is 0)" if (name or "").lower().endswith(".dae") else ""
+        yield Issue("SB405", f"{where}: mesh '{name}' has no size: every vertex is at one "
+                    f"point{unit}" + (
+                        "; a visual of zero size draws nothing" if visual else ""), element,
+                    severity=Severity.WARNING if visual else None)
+    elif extent_m > LARGEST_M:
         yield Issue("SB404", f"{where}: mesh '{name}' is {extent_m:.4g} m across; is it in "
                     "millimetres?", element, fix=_scale_fix(scale, 0.001))
     elif 0 < extent_m < SMALLEST_M:

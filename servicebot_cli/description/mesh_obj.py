@@ -38,6 +38,10 @@ def read_obj_indexed(data: bytes) -> tuple[FloatArray, IntArray]:
         MeshFormatError: A vertex without three numbers, or a face naming a vertex that does
             not exist.
     """
+    if data.startswith(b"\xef\xbb\xbf"):  # a UTF-8 byte order mark, as Assimp skips it
+        data = data[3:]
+    if b"\r" in data and b"\n" not in data:  # classic Mac OS line ends: CR only
+        data = data.replace(b"\r", b"\n")
     if b"\\\n" in data or b"\\\r" in data:
         return _read_obj_lines(data)
     vertex_lines, face_lines = _OBJ_VERTEX.findall(data), _OBJ_FACE.findall(data)

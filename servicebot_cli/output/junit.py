@@ -6,6 +6,7 @@ A file fails when it has findings at the failing level (errors; warnings too wit
 
 from __future__ import annotations
 
+import re
 import xml.etree.ElementTree as ET
 
 from servicebot_cli.check.catalogue import RULES
@@ -37,4 +38,14 @@ def junit_text(result: CheckResult) -> str:
         if other:
             ET.SubElement(case, "system-out").text = "\n".join(other)
     ET.indent(suites)
-    return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(suites, "unicode") + "\n"
+    text = ET.tostring(suites, "unicode")
+    return '<?xml version="1.0" encoding="UTF-8"?>\n' + _NOT_XML.sub(_escaped, text) + "\n"
+
+
+# what XML 1.0 has no way to hold, even as a reference: a control character in a file name
+_NOT_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff\ud800-\udfff]")
+
+
+def _escaped(char: re.Match[str]) -> str:
+    """A character XML cannot hold, written as Python would: ``\\x01``."""
+    return char[0].encode("unicode_escape", "backslashreplace").decode("ascii")

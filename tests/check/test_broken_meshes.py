@@ -91,3 +91,25 @@ def test_a_mass_of_1e_320_kg_leaves_no_numpy_text(tmp_path):
     result = run_servicebot("check", robot, "--isolated")
     assert result.stderr.strip().endswith("passed") or result.stderr == ""
     assert "RuntimeWarning" not in result.stdout + result.stderr
+
+
+def test_meshes_assimp_reads_are_read_and_a_mesh_of_no_size_is_sb405(tmp_path):
+    """An OBJ with classic Mac line ends (CR only) or a UTF-8 byte order mark loads in
+    Assimp (Gazebo, RViz, ik): it has its triangles here too. A mesh whose every vertex is
+    at one point is a box of size 0: an error as a collision, a warning as a visual."""
+    tetra = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
+    (tmp_path / "cr.obj").write_bytes(tetra.replace("\n", "\r").encode())
+    (tmp_path / "bom.obj").write_bytes(b"\xef\xbb\xbf" + tetra.encode())
+    (tmp_path / "point.obj").write_text("v 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 3\n")
+    for mesh, codes in (("cr.obj", []), ("bom.obj", []), ("point.obj", ["SB405"])):
+        robot = tmp_path / "robot.urdf"
+        robot.write_text(ROBOT.format(mass=1, mesh=mesh).replace(
+            "<collision>", f'<visual><geometry><mesh filename="{mesh}"/></geometry></visual>'
+            "<collision>"))
+        result = run_servicebot("check", robot, "--isolated", "--format", "json", "--select",
+                                "SB4")
+        found = findings(result.stdout)
+        assert [f["code"] for f in found] == codes * 2, (mesh, found)
+        if codes:
+            assert [f["severity"] for f in found] == ["warning", "error"]
+            assert "has no size: every vertex is at one point" in found[1]["message"]

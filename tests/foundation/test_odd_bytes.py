@@ -48,3 +48,24 @@ def test_batch_lines_beyond_what_json_numbers_hold_are_bad_lines(tmp_path):
                           "deep.jsonl:1: not JSON this reads: nested too deep")
     skipped = run_servicebot("fk", "--configs", big, "--on-error", "skip")
     assert skipped.returncode == 0 and "big.jsonl:1" in skipped.stderr
+
+
+def test_a_control_character_in_a_file_name_leaves_junit_well_formed(tmp_path):
+    import xml.etree.ElementTree as ET
+
+    folder = tmp_path / "d"
+    folder.mkdir()
+    (folder / "ctl\x01.urdf").write_text(Path(SIM_URDF).read_text())
+    report = tmp_path / "junit.xml"
+    result = run_servicebot("check", "urdf", folder, "--isolated", "--format", "junit",
+                            "-o", report)
+    assert result.returncode == 0, result.stderr
+    case = ET.parse(report).getroot().find("testsuite/testcase")
+    assert case is not None and case.get("name", "").endswith("ctl\\x01.urdf")
+
+
+def test_a_batch_csv_with_excels_byte_order_mark_reads_its_header(tmp_path):
+    configs = tmp_path / "configs.csv"
+    configs.write_bytes(b"\xef\xbb\xbfarm_base_to_link1\n0.1\n")
+    result = run_servicebot("fk", "--configs", configs)
+    assert result.returncode == 0, result.stderr
