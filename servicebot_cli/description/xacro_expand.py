@@ -294,8 +294,19 @@ class _Tracer:
         # A deliberate error (xacro.fatal in the file, or xacro's own checks) says it all;
         # the "when evaluating expression" context only helps for Python errors.
         deliberate = isinstance(inner, xacro.XacroException) and inner.exc is None
-        shown = inner if deliberate or isinstance(inner, ExpansionTooLarge) else exc
+        if isinstance(inner, RecursionError):
+            return XacroError(f"{where}: xacro: macros or includes nest without end: a macro "
+                              "that calls itself, or a file that includes itself")
+        from xacro.substitution_args import SubstitutionException
+
+        own = deliberate or isinstance(inner, ExpansionTooLarge) or (
+            isinstance(inner, SubstitutionException) and str(exc).startswith("<class "))
+        shown = inner if own else exc
         message = " ".join(str(shown).split()) or type(exc).__name__
+        if not own and not str(inner).strip():  # "when evaluating expression '...'" alone
+            reason = "out of memory" if isinstance(inner, MemoryError) else \
+                type(inner).__name__
+            message = f"{message}: {reason}"
         return XacroError(f"{where}: xacro: {message}")
 
     def take_origins(self, doc: xml.dom.minidom.Document) -> list[SourceRef | None]:

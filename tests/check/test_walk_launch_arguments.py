@@ -139,3 +139,23 @@ def test_a_gap_that_no_empty_argument_explains_stays_an_error(run, tmp_path):
         result = run("check", tmp_path / name, "--format", "json", "--isolated", env=NO_ROS)
         (found,) = [f for f in findings(result.stdout) if f["code"] == "SB001"]
         assert found["severity"] == ("warning" if name == "order" else "error"), name
+
+
+def test_xacros_own_failures_read_as_reasons(run, tmp_path):
+    """Not a class's repr with its message twice, not an expression with no reason, not
+    Python's recursion limit."""
+    cases = {
+        "env": ('<link name="$(env NO_SUCH_VARIABLE_HERE)"/>',
+                "xacro: environment variable 'NO_SUCH_VARIABLE_HERE' is not set"),
+        "memory": ('<link name="${len(list(range(10**11)))}"/>',
+                   "when evaluating expression 'len(list(range(10**11)))': out of memory"),
+        "recursion": ('<xacro:macro name="m"><xacro:m/></xacro:macro><xacro:m/>',
+                      "a macro that calls itself, or a file that includes itself"),
+    }
+    for name, (body, why) in cases.items():
+        robot = tmp_path / f"{name}.urdf.xacro"
+        robot.write_text(f'<robot xmlns:xacro="http://wiki.ros.org/xacro" name="r">{body}'
+                         "</robot>")
+        result = run("expand", robot, env={"NO_SUCH_VARIABLE_HERE": None})
+        assert result.exit_code == 2, name
+        assert result.stderr.strip().endswith(why), (name, result.stderr)
