@@ -113,3 +113,15 @@ def test_meshes_assimp_reads_are_read_and_a_mesh_of_no_size_is_sb405(tmp_path):
         if codes:
             assert [f["severity"] for f in found] == ["warning", "error"]
             assert "has no size: every vertex is at one point" in found[1]["message"]
+
+
+def test_a_mesh_file_over_a_gigabyte_is_not_read(tmp_path):
+    """A 3 GB sparse .stl (a disk image copied by mistake) was read whole into memory."""
+    huge = tmp_path / "huge.stl"
+    with huge.open("wb") as handle:
+        handle.truncate(3 * 10**9)
+    robot = tmp_path / "robot.urdf"
+    robot.write_text(ROBOT.format(mass=1, mesh="huge.stl"))
+    result = run_servicebot("check", robot, "--isolated", "--format", "json", "--select", "SB4")
+    (found,) = findings(result.stdout)
+    assert found["code"] == "SB402" and "the file is 3.0 GB, over the 1 GB" in found["message"]
