@@ -23,6 +23,7 @@ import xml.dom.minidom
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 from xml.dom import expatbuilder
 from xml.parsers import expat
 
@@ -39,6 +40,7 @@ from servicebot_cli.description.xacro_limits import (
     bounded_eval_text,
     guarded_safe_eval,
 )
+from servicebot_cli.description.yaml_size import MOST_NODES, unfolded_nodes
 
 _SRC_ATTR = "servicebot-src"
 _VIA_ATTR = "servicebot-via"
@@ -188,6 +190,10 @@ class _Tracer:
         # load_yaml opens what abs_filename_spec names: a file of a source package found
         # where the package's install rules put it
         xacro.abs_filename_spec = lambda spec: installed_source(saved_spec(spec))
+        import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
+
+        saved_load = yaml.safe_load  # what xacro's load_yaml reads with
+        yaml.safe_load = _bounded_safe_load(xacro.XacroException)
         for name in names[1:]:
             setattr(xacro, name, self._tracking(saved[name]))
         xacro.handle_macro_call = self._tracking(
@@ -203,6 +209,7 @@ class _Tracer:
             subst._eval_find = saved_find
             xacro.abs_filename_spec = saved_spec
             xacro.safe_eval, xacro.eval_text = saved_eval
+            yaml.safe_load = saved_load
             for name in GUARDS:
                 xacro._global_symbols.pop(name, None)
 
@@ -326,6 +333,28 @@ class _Tracer:
                 ref = SourceRef(ref.file, ref.line, ref.column, via=self.refs[int(via)])
             origins.append(ref)
         return origins
+
+
+def _bounded_safe_load(error: type[Exception]) -> Callable[[Any], Any]:
+    """``yaml.safe_load`` refusing a document whose aliases unfold past a million items.
+
+    xacro's ``load_yaml`` of a 500-byte alias bomb built a 2.3-billion-character string in
+    35 s and 4.3 GB when an expression printed it.
+    """
+    import yaml
+
+    def safe_load(stream: Any) -> Any:
+        loader = yaml.SafeLoader(stream)  # with the unit constructors xacro adds to it
+        try:
+            node = loader.get_single_node()
+            if node is not None and unfolded_nodes(node) is None:
+                raise error(f"load_yaml: its aliases (*name) unfold to over {MOST_NODES:,} "
+                            "items (an alias bomb?)")
+            return None if node is None else loader.construct_document(node)
+        finally:
+            loader.dispose()
+
+    return safe_load
 
 
 class _PositionBuilder(expatbuilder.ExpatBuilderNS):

@@ -42,3 +42,24 @@ def test_check_controllers_refuses_an_alias_bomb_at_once(run, tmp_path):
     (found,) = findings(result.stdout)
     assert found["code"] == "SB601" and "unfold to over 1,000,000 items" in found["message"]
     assert json.loads(result.stdout)["summary"]["errors"] == 1
+
+
+def test_xacros_load_yaml_refuses_an_alias_bomb_and_reads_a_real_file(run, tmp_path):
+    """load_yaml of the bomb built a 2.3-billion-character string (35 s, 4.3 GB)."""
+    (tmp_path / "bomb.yaml").write_text(BOMB)
+    (tmp_path / "limits.yaml").write_text("shoulder: {lower: -1.5, upper: 1.5}\n")
+    robot = tmp_path / "r.urdf.xacro"
+    body = ('<xacro:property name="y" value="${{xacro.load_yaml(\'{}\')}}"/>'
+            '<link name="a${{len(str(y))}}"/>')
+    robot.write_text('<robot xmlns:xacro="http://wiki.ros.org/xacro" name="r">'
+                     + body.format("bomb.yaml") + "</robot>")
+    start = time.monotonic()
+    result = run("expand", robot)
+    assert time.monotonic() - start < 10
+    assert result.exit_code == 2
+    assert "load_yaml: its aliases (*name) unfold to over 1,000,000 items" in result.stderr
+    robot.write_text('<robot xmlns:xacro="http://wiki.ros.org/xacro" name="r">'
+                     + body.format("limits.yaml") + "</robot>")
+    result = run("expand", robot)
+    assert result.exit_code == 0, result.stderr
+    assert '<link name="a' in result.stdout
