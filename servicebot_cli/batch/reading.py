@@ -11,6 +11,7 @@ or, failing that, from the first meaningful character: ``{`` means JSON Lines.
 
 from __future__ import annotations
 
+import collections
 import csv
 import itertools
 import json
@@ -126,7 +127,8 @@ def _split(text: str, delimiter: str) -> list[str]:
 def _check_header(display: str, line: int, header: list[str]) -> None:
     if any(not name for name in header):
         raise BatchInputError(f"{display}:{line}: the CSV header has an empty column name")
-    repeated = sorted({name for name in header if header.count(name) > 1})
+    counts = collections.Counter(header)
+    repeated = sorted(name for name, count in counts.items() if count > 1)
     if repeated:
         raise BatchInputError(f"{display}:{line}: column '{repeated[0]}' appears twice "
                               "in the CSV header")

@@ -69,3 +69,16 @@ def test_a_batch_csv_with_excels_byte_order_mark_reads_its_header(tmp_path):
     configs.write_bytes(b"\xef\xbb\xbfarm_base_to_link1\n0.1\n")
     result = run_servicebot("fk", "--configs", configs)
     assert result.returncode == 0, result.stderr
+
+
+def test_a_csv_header_of_200000_columns_is_refused_in_linear_time(tmp_path):
+    """Each column was counted against the whole header: 200,000 ran over 40 s."""
+    import time
+
+    wide = tmp_path / "wide.csv"
+    wide.write_text(",".join(f"c{i}" for i in range(200_000)) + "\n" + ",".join(
+        ["0"] * 200_000) + "\n")
+    start = time.monotonic()
+    result = run_servicebot("fk", "--configs", wide)
+    assert time.monotonic() - start < 20
+    assert_one_line_error(result, 2, "no joint 'c0'")
