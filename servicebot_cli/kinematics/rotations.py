@@ -92,8 +92,15 @@ def matrix_from_quaternion(xyzw: FloatArray) -> FloatArray:
         BadRotation: The quaternion has (nearly) zero length or is not finite.
     """
     q = np.asarray(xyzw, dtype=float)
-    norm = float(np.linalg.norm(q))
-    if not math.isfinite(norm) or norm < 1e-9:
+    if not np.all(np.isfinite(q)):
+        raise BadRotation(f"quaternion {tuple(float(v) for v in q)} is not finite; give x y z "
+                          "w as finite numbers")
+    with np.errstate(over="ignore"):
+        norm = float(np.linalg.norm(q))
+    if not math.isfinite(norm):  # (1e308, 1e308, 0, 0): a direction, its length too large
+        q = q / np.abs(q).max()
+        norm = float(np.linalg.norm(q))
+    if norm < 1e-9:
         raise BadRotation(f"quaternion {tuple(float(v) for v in q)} has no direction "
                           "(length 0); give x y z w with a non-zero length")
     x, y, z, w = q / norm
@@ -119,7 +126,8 @@ def matrices_from_quaternions(xyzw: FloatArray) -> FloatArray | None:
     """
     q = np.ascontiguousarray(xyzw, dtype=np.float64)
     dot = np.ndarray.dot
-    norm = np.sqrt(np.array([dot(row, row) for row in q]).reshape(len(q)))
+    with np.errstate(over="ignore", invalid="ignore"):  # one by one then, for the message
+        norm = np.sqrt(np.array([dot(row, row) for row in q]).reshape(len(q)))
     if not (np.isfinite(norm).all() and (norm >= 1e-9).all()):
         return None
     x, y, z, w = (q / norm[:, None]).T

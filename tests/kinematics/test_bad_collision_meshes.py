@@ -113,3 +113,4 @@ def test_coal_failing_still_gives_only_its_message_without_the_wrong_hint(tmp_pa
                                  "cannot be read: ", _TAIL)
     for raw in ("From file", "assimp.cpp", "in function", "Hint:", "Could not load resource"):
         assert raw not in line
+
