@@ -85,6 +85,10 @@ def open_source(path: str) -> tuple[Source, IO[str]]:
     if first is None:
         handle.close()
         raise BatchInputError(f"{display}: has no data lines; give one line per item")
+    if "\x00" in first[1]:  # UTF-16 (Excel's "Unicode text"): every other byte is NUL
+        handle.close()
+        raise BatchInputError(f"{display}: not UTF-8 text (it holds NUL bytes: UTF-16?); "
+                              "save it as UTF-8")
     kind = _kind(path, first[1])
     if kind == "jsonl":
         return Source(display, kind, (), _json_rows(itertools.chain([first], lines))), handle

@@ -82,3 +82,11 @@ def test_a_csv_header_of_200000_columns_is_refused_in_linear_time(tmp_path):
     result = run_servicebot("fk", "--configs", wide)
     assert time.monotonic() - start < 20
     assert_one_line_error(result, 2, "no joint 'c0'")
+
+
+def test_a_batch_file_saved_as_utf16_is_named_so(tmp_path):
+    """Excel's 'Unicode text': the message printed its NUL bytes to the terminal."""
+    configs = tmp_path / "configs.csv"
+    configs.write_bytes("arm_base_to_link1\n0.1\n".encode("utf-16"))
+    assert_one_line_error(run_servicebot("fk", "--configs", configs), 2,
+                          "not UTF-8 text (it holds NUL bytes: UTF-16?); save it as UTF-8")
