@@ -14,7 +14,7 @@ from typing import Any
 
 from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.common.inputs import read_input_text
-from servicebot_cli.description.yaml_size import MOST_NODES, unfolded_nodes
+from servicebot_cli.description.yaml_size import AliasBomb, bounded_document
 
 NAMESPACE_DEPTH = 3
 """Namespaces looked through above a node's own key."""
@@ -34,13 +34,10 @@ def read_parameters_file(path: Path, error: type[ServicebotError]) -> Any:
 
     text = read_input_text(str(path), kind="a ros2_control controllers YAML (--controllers)",
                            error=error, max_bytes=MAX_PARAMETERS_BYTES, allow_empty=False)
-    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)(text)  # libyaml's, if built
-    try:
-        node = loader.get_single_node()
-        if node is not None and unfolded_nodes(node) is None:
-            raise error(f"{path}: its aliases (*name) unfold to over {MOST_NODES:,} items "
-                        "(an alias bomb?); give another file with --controllers")
-        return None if node is None else loader.construct_document(node)
+    try:  # libyaml's loader, if built
+        return bounded_document(getattr(yaml, "CSafeLoader", yaml.SafeLoader)(text))
+    except AliasBomb as exc:
+        raise error(f"{path}: {exc}; give another file with --controllers") from None
     except yaml.YAMLError as exc:
         if "nesting depth" not in str(getattr(exc, "problem", "")):  # libyaml's own bound
             mark = getattr(exc, "problem_mark", None)
@@ -49,8 +46,6 @@ def read_parameters_file(path: Path, error: type[ServicebotError]) -> Any:
                         "--controllers") from None
     except RecursionError:  # PyYAML's own composer recurses once per level of nesting
         pass
-    finally:
-        loader.dispose()
     raise error(f"{path}: lists and mappings nested too deep to read; is it a controllers "
                 "file? Give another with --controllers")
 

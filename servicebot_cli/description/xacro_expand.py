@@ -40,7 +40,7 @@ from servicebot_cli.description.xacro_limits import (
     bounded_eval_text,
     guarded_safe_eval,
 )
-from servicebot_cli.description.yaml_size import MOST_NODES, unfolded_nodes
+from servicebot_cli.description.yaml_size import AliasBomb, bounded_document
 
 _SRC_ATTR = "servicebot-src"
 _VIA_ATTR = "servicebot-via"
@@ -344,15 +344,10 @@ def _bounded_safe_load(error: type[Exception]) -> Callable[[Any], Any]:
     import yaml
 
     def safe_load(stream: Any) -> Any:
-        loader = yaml.SafeLoader(stream)  # with the unit constructors xacro adds to it
-        try:
-            node = loader.get_single_node()
-            if node is not None and unfolded_nodes(node) is None:
-                raise error(f"load_yaml: its aliases (*name) unfold to over {MOST_NODES:,} "
-                            "items (an alias bomb?)")
-            return None if node is None else loader.construct_document(node)
-        finally:
-            loader.dispose()
+        try:  # SafeLoader: with the unit constructors xacro adds to it
+            return bounded_document(yaml.SafeLoader(stream))
+        except AliasBomb as exc:
+            raise error(f"load_yaml: {exc}") from None
 
     return safe_load
 

@@ -49,3 +49,28 @@ def _children(node: Any) -> list[Any]:
         return []  # a scalar
     return [part for item in value
             for part in (item if isinstance(item, tuple) else (item,))]
+
+
+class AliasBomb(ValueError):
+    """A YAML document whose aliases unfold past :data:`MOST_NODES` items."""
+
+    def __init__(self) -> None:
+        super().__init__(f"its aliases (*name) unfold to over {MOST_NODES:,} items (an alias "
+                         "bomb?)")
+
+
+def bounded_document(loader: Any) -> Any:
+    """The one document a PyYAML ``loader`` reads, built once its unfolded size is known.
+
+    The loader is disposed of. PyYAML's own errors pass through.
+
+    Raises:
+        AliasBomb: It unfolds past :data:`MOST_NODES` items.
+    """
+    try:
+        node = loader.get_single_node()
+        if node is not None and unfolded_nodes(node) is None:
+            raise AliasBomb
+        return None if node is None else loader.construct_document(node)
+    finally:
+        loader.dispose()

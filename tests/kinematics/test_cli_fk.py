@@ -140,18 +140,24 @@ def test_as_a_real_process():
     assert json.loads(result.stdout)["poses"][0]["frame"] == "arm_tool_link"
 
 
+def _bundled_with(path: Path, joints: str) -> Path:
+    """The bundled robot with ``joints`` (links and joints) added before its ros2_control."""
+    bundled = Path(__file__).resolve().parents[2] / "robots" / "service_robot.urdf.xml"
+    path.write_text(bundled.read_text().replace("\n  <ros2_control",
+                                                joints.rstrip("\n") + "\n  <ros2_control", 1))
+    return path
+
+
 def test_a_follower_its_leader_puts_outside_its_limits_names_the_leader(run, tmp_path):
     """The user gave the leader a value inside its limits: the error says which to change."""
-    bundled = Path(__file__).resolve().parents[2] / "robots" / "service_robot.urdf.xml"
-    robot = tmp_path / "fingered.urdf"
-    robot.write_text(bundled.read_text().replace("\n  <ros2_control", """
+    robot = _bundled_with(tmp_path / "fingered.urdf", """
   <link name="arm_finger"/>
   <joint name="arm_finger_joint" type="revolute">
     <parent link="arm_link4"/><child link="arm_finger"/><axis xyz="0 0 1"/>
     <limit lower="-1" upper="1" effort="1" velocity="0.5"/>
     <mimic joint="arm_link3_to_link4" multiplier="-2" offset="0.1"/>
   </joint>
-  <ros2_control""", 1))
+""")
     assert_one_line_error(
         run("fk", robot, "-j", "arm_link3_to_link4=0.9", "-f", "arm_finger"), 2,
         "joint 'arm_finger_joint' = -1.7 rad is outside its limits [-1, 1] rad: it mimics "
@@ -169,9 +175,7 @@ def test_a_follower_its_leader_puts_outside_its_limits_names_the_leader(run, tmp
 def test_a_follower_of_a_follower_is_checked_and_names_the_joint_given(run, tmp_path):
     """fa follows fb, which follows the arm joint: fa's limits hold too, and the message
     gives the composed rule from the joint the user gave (a negative offset as such)."""
-    bundled = Path(__file__).resolve().parents[2] / "robots" / "service_robot.urdf.xml"
-    robot = tmp_path / "chained.urdf"
-    robot.write_text(bundled.read_text().replace("\n  <ros2_control", """
+    robot = _bundled_with(tmp_path / "chained.urdf", """
   <link name="fb"/><link name="fa"/>
   <joint name="fb_joint" type="revolute">
     <parent link="arm_link4"/><child link="fb"/><axis xyz="0 0 1"/>
@@ -183,7 +187,7 @@ def test_a_follower_of_a_follower_is_checked_and_names_the_joint_given(run, tmp_
     <limit lower="-1" upper="1" effort="1" velocity="0.5"/>
     <mimic joint="fb_joint" multiplier="2"/>
   </joint>
-  <ros2_control""", 1))
+""")
     assert_one_line_error(
         run("fk", robot, "-j", "arm_link3_to_link4=0.9", "-f", "fa"), 2,
         "joint 'fa_joint' = 1.6 rad is outside its limits [-1, 1] rad: it mimics "
@@ -195,16 +199,14 @@ def test_a_follower_of_a_follower_is_checked_and_names_the_joint_given(run, tmp_
 
 def test_a_sliding_follower_of_a_turning_leader_shows_the_rule_in_the_units_shown(run,
                                                                                  tmp_path):
-    bundled = Path(__file__).resolve().parents[2] / "robots" / "service_robot.urdf.xml"
-    robot = tmp_path / "slider.urdf"
-    robot.write_text(bundled.read_text().replace("\n  <ros2_control", """
+    robot = _bundled_with(tmp_path / "slider.urdf", """
   <link name="slider"/>
   <joint name="slider_joint" type="prismatic">
     <parent link="arm_link4"/><child link="slider"/><axis xyz="1 0 0"/>
     <limit lower="0" upper="0.01" effort="1" velocity="0.5"/>
     <mimic joint="arm_link3_to_link4" multiplier="0.02"/>
   </joint>
-  <ros2_control""", 1))
+""")
     result = run("fk", robot, "--deg", "-j", "arm_link3_to_link4=60", "-f", "slider")
     # 60 deg x 0.000349066 m/deg = 0.020944 m
     assert_one_line_error(result, 2, "'slider_joint' = 0.020944 m is outside its limits "
