@@ -13,6 +13,7 @@ directory up) sets the defaults; command-line options override them::
 
 from __future__ import annotations
 
+import math
 import sys
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
@@ -150,8 +151,10 @@ def _from_table(table: TomlValue, where: str) -> Settings:
     factor = table.get("inertia-factor", 2.0)
     if not isinstance(strict, bool):
         raise SettingsError(f"{where}: strict must be true or false, not {strict!r}")
-    if isinstance(factor, bool) or not isinstance(factor, int | float) or not factor > 1:
-        raise SettingsError(f"{where}: inertia-factor must be a number above 1, not {factor!r}")
+    if isinstance(factor, bool) or not isinstance(factor, int | float) or not factor > 1 \
+            or not math.isfinite(factor):  # inf would turn SB301 off without a word
+        raise SettingsError(f"{where}: inertia-factor must be a finite number above 1, not "
+                            f"{factor!r}")
     return Settings(select, ignore, strict, float(factor), _severities(table, where), where)
 
 

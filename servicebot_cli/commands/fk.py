@@ -26,6 +26,8 @@ from servicebot_cli.commands.options import (
     robot_arguments,
 )
 
+MOST_BASE_M = 1e6
+"""How far from the origin ``--base`` may stand, as ik's targets may [m]."""
 
 @click.command(cls=Command)
 @robot_arguments()
@@ -79,6 +81,10 @@ def fk(ctx: click.Context, robot_args: RobotArgs, joints: tuple[tuple[str, float
                 why="where the robot stands cancels out between two of its frames")
     from servicebot_cli.kinematics.fk import FrameQuery
 
+    if base is not None and max(abs(base[0]), abs(base[1])) > MOST_BASE_M:
+        raise click.BadParameter(f"x and y are metres within +-{MOST_BASE_M:g} (a double "
+                                 "that far out has no room left for the arm's millimetres)",
+                                 param_hint="--base")
     query = FrameQuery(robot_args.source(), frames, all_frames, relative_to, deg, clamp, base)
     if configs is None:
         from servicebot_cli.kinematics.fk import FkRequest, run

@@ -134,6 +134,7 @@ def test_settings_from_the_nearest_pyproject(tmp_path):
     ('ignore = ["SB3O1"]', "no rule 'SB3O1'"),
     ('severity = { SB301 = "fatal" }', "must be error, warning or info"),
     ("inertia-factor = 0.5", "above 1"),
+    ("inertia-factor = inf", "a finite number above 1"),  # SB301 silently off otherwise
     ("strict = [", "cannot read settings"),
 ])
 def test_bad_settings_are_one_line(tmp_path, table, needle):

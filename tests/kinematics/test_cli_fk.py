@@ -212,3 +212,9 @@ def test_a_sliding_follower_of_a_turning_leader_shows_the_rule_in_the_units_show
     assert_one_line_error(result, 2, "'slider_joint' = 0.020944 m is outside its limits "
                           "[0, 0.01] m: it mimics 'arm_link3_to_link4' = 60 deg "
                           "(x 0.000349066 + 0 m)")
+
+
+def test_a_base_too_far_out_for_a_double_is_refused(run):
+    """At 1e308 m the arm's own offset was lost without a word (1e308 + 0.3 is 1e308)."""
+    assert_one_line_error(run("fk", "--base", "1e308", "1e308", "0"), 2,
+                          "--base: x and y are metres within +-1e+06")
