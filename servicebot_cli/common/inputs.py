@@ -82,14 +82,14 @@ def read_input_bytes(path: Path, display: str, *, kind: str,
         size = path.stat().st_size
         if max_bytes is not None and size > max_bytes:
             raise _too_large(display, size, max_bytes, error)
-        with _opened(path) as handle:  # a device or a pipe has no size: read to the limit
+        with open_binary(path) as handle:  # a device or a pipe has no size: read to the limit
             data = handle.read() if max_bytes is None else handle.read(max_bytes + 1)
         if max_bytes is not None and len(data) > max_bytes:
             raise _too_large(display, None, max_bytes, error)
         return data
 
 
-def _opened(path: Path) -> BinaryIO:
+def open_binary(path: Path) -> BinaryIO:
     """``path`` open for reading; a named pipe without a writer reads as empty.
 
     ``servicebot check <(xacro robot.xacro)`` reads a pipe its shell writes into; a named

@@ -28,6 +28,7 @@ from xml.dom import expatbuilder
 from xml.parsers import expat
 
 from servicebot_cli.common.errors import DescriptionError, PackageNotFound, XacroError, XmlError
+from servicebot_cli.common.inputs import open_binary
 from servicebot_cli.description.install_layout import installed_source
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
@@ -221,7 +222,8 @@ class _Tracer:
             return xml.dom.minidom.parseString(inp) if isinstance(inp, str) else inp
         path = installed_source(os.path.join(xacro.root_dir, filename or ""))
         try:
-            with open(path, "rb") as handle:  # a device has no end: read to the limit only
+            with open_binary(Path(path)) as handle:  # a device: read to the limit only; a
+                # named pipe nothing writes into: empty at once
                 data = handle.read(MAX_BYTES + 1)
         except OSError as exc:
             xacro.filestack.pop()  # as xacro does: the failing file is not "being processed"

@@ -101,3 +101,14 @@ def test_a_named_pipe_nothing_writes_into_ends_at_once(tmp_path):
     result = run_servicebot("fk", fed, "--format", "json", timeout=20)
     writer.join(timeout=20)
     assert result.returncode == 0, result.stderr
+
+
+def test_a_xacro_include_that_is_a_stale_named_pipe_ends_at_once(tmp_path):
+    import os
+
+    os.mkfifo(tmp_path / "part.xacro")
+    robot = tmp_path / "robot.urdf.xacro"
+    robot.write_text('<robot xmlns:xacro="http://wiki.ros.org/xacro" name="r"><link name="a"/>'
+                     '<xacro:include filename="part.xacro"/></robot>')
+    result = run_servicebot("expand", robot, timeout=20)
+    assert_one_line_error(result, 2, "part.xacro: file is empty")
