@@ -89,7 +89,7 @@ def read_input_bytes(path: Path, display: str, *, kind: str,
         return data
 
 
-def open_binary(path: Path) -> BinaryIO:
+def open_binary(path: str | os.PathLike[str]) -> BinaryIO:
     """``path`` open for reading; a named pipe without a writer reads as empty.
 
     ``servicebot check <(xacro robot.xacro)`` reads a pipe its shell writes into; a named
@@ -97,8 +97,8 @@ def open_binary(path: Path) -> BinaryIO:
     opened. It is opened without waiting for a writer, then read as usual: with none, it
     ends at once.
     """
-    if not stat.S_ISFIFO(path.stat().st_mode):
-        return path.open("rb")
+    if not stat.S_ISFIFO(os.stat(path).st_mode):  # the name as given: errors quote it so
+        return open(path, "rb")  # noqa: SIM115 (the caller closes it)
     descriptor = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
     os.set_blocking(descriptor, True)
     return os.fdopen(descriptor, "rb")

@@ -222,7 +222,7 @@ class _Tracer:
             return xml.dom.minidom.parseString(inp) if isinstance(inp, str) else inp
         path = installed_source(os.path.join(xacro.root_dir, filename or ""))
         try:
-            with open_binary(Path(path)) as handle:  # a device: read to the limit only; a
+            with open_binary(path) as handle:  # a device: read to the limit only; a
                 # named pipe nothing writes into: empty at once
                 data = handle.read(MAX_BYTES + 1)
         except OSError as exc:
