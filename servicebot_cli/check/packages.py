@@ -150,10 +150,11 @@ class FileTally:
             if not location.name:
                 message = ("package:///PATH (three slashes) is read as an absolute path by some "
                            "loaders; ROS resolves package:// by package name and would not find it")
-            fix = (f"write package://{location.name}/... with two slashes"
+            named = f"give the package a package.xml with <name>{location.name}</name>"
+            fix = (f"write package://{location.name}/... with two slashes" + (
+                       "" if location.named_ros_finds else f", and {named}")
                    if location.three_slashes else
-                   f"give the package a package.xml with <name>{location.name}</name>, "
-                   "or use a path relative to the file")
+                   f"{named}, or use a path relative to the file")
             yield Issue("SB409", message, element, fix=fix)
         if self.remote:
             uri, element = self.remote[0]

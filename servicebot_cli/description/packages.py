@@ -49,6 +49,7 @@ class PackageLocation:
         ros_finds_it: Whether ROS (``ros2 pkg prefix``, robot_state_publisher, Gazebo) would
             find it the same way; False for what only some loaders accept.
         three_slashes: Named as ``package:///NAME/...``, which ROS reads as an empty name.
+        named_ros_finds: With three slashes: whether ROS would find NAME with two.
     """
 
     name: str
@@ -56,6 +57,7 @@ class PackageLocation:
     how: str
     ros_finds_it: bool = True
     three_slashes: bool = False
+    named_ros_finds: bool = True
 
     @property
     def warning(self) -> str | None:
@@ -189,7 +191,8 @@ class PackageResolver:
                         or self._loader_location(name, base_dir))
             if location is not None and location.path / inner != absolute:
                 self.found.setdefault(name, PackageLocation(
-                    name, location.path, location.how, ros_finds_it=False, three_slashes=True))
+                    name, location.path, location.how, ros_finds_it=False, three_slashes=True,
+                    named_ros_finds=location.ros_finds_it))
                 return location.path / inner
         self.found.setdefault("", PackageLocation(
             "", Path("/"), "package:/// (an absolute path)", ros_finds_it=False))

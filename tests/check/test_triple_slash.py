@@ -43,3 +43,17 @@ def test_three_slashes_before_a_package_name_are_the_defect_named(run, tmp_path)
             "before the third as empty and would not find it; Pinocchio reads package "
             "'example-robot-data' there (the package holding the file")
         assert found["fix"] == "write package://example-robot-data/... with two slashes"
+
+
+def test_three_slashes_before_a_directory_that_is_no_package_ask_for_both_fixes(run, tmp_path):
+    """Found as a directory above the file (no package.xml): two slashes alone would leave
+    ROS still without the package."""
+    meshes = tmp_path / "myrobot" / "meshes"
+    meshes.mkdir(parents=True)
+    trimesh.creation.box((0.1, 0.1, 0.1)).export(meshes / "m.stl")
+    robot = tmp_path / "myrobot" / "robot.urdf"
+    robot.write_text(URDF.format("package:///myrobot/meshes/m.stl"))
+    result = run("check", robot, "--format", "json", "--isolated", "--select", "SB409")
+    (found,) = findings(result.stdout)
+    assert found["fix"] == ("write package://myrobot/... with two slashes, and give the "
+                            "package a package.xml with <name>myrobot</name>")
