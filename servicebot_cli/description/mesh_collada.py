@@ -33,6 +33,8 @@ def _collada(data: bytes) -> tuple[list[tuple[ET.Element, FloatArray]], str, flo
         root = parse_collada(data)
     except ColladaXmlError as exc:
         raise MeshFormatError(f"COLLADA file is not well-formed XML: {exc}") from None
+    except LookupError as exc:  # an XML declaration naming an encoding nobody has
+        raise MeshFormatError(f"its XML declaration names an {exc}") from None
     ns = root.tag[: root.tag.index("}") + 1] if root.tag.startswith("{") else ""
     unit = root.find(f"{ns}asset/{ns}unit")
     meter = float(unit.get("meter", "1")) if unit is not None else 1.0

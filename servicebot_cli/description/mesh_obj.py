@@ -127,4 +127,8 @@ def _read_obj_lines(data: bytes) -> tuple[FloatArray, IntArray]:
             faces.append([i - 1 if i > 0 else len(vertices) + i for i in indices])
     table = np.array(vertices, dtype=np.float64).reshape(-1, 3)
     tris = [(p[0], p[i], p[i + 1]) for p in faces for i in range(1, len(p) - 1)]
-    return table, checked(len(table), np.array(tris, dtype=np.int64).reshape(-1, 3))
+    try:
+        index = np.array(tris, dtype=np.int64).reshape(-1, 3)
+    except OverflowError:  # an index beyond int64 names no vertex a file can hold
+        raise MeshFormatError("a face refers to a vertex that does not exist") from None
+    return table, checked(len(table), index)
