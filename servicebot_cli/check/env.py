@@ -6,14 +6,13 @@ resolved here (as ``expand`` resolves them) and read through one MeshCache per r
 
 from __future__ import annotations
 
-import errno
-import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check.meshes import MeshCache, MeshError, MeshInfo
 from servicebot_cli.check.packages import PackageSearch, Resolved
+from servicebot_cli.common.inputs import not_a_file
 from servicebot_cli.description.packages import PackageResolver, is_remote
 
 if TYPE_CHECKING:
@@ -90,7 +89,7 @@ class CheckEnv:
         path = resolved.path
         if path is None:
             raise MeshNotFound(f"mesh '{filename}': {resolved.error}", resolved)
-        problem = _not_a_file(path)
+        problem = not_a_file(path)
         if problem is not None:
             raise MeshNotFound(f"mesh '{filename}': {path} {problem}", resolved)
         return path
@@ -103,24 +102,6 @@ class CheckEnv:
             MeshError: The file is not a loadable mesh.
         """
         return self.meshes.get(self.mesh_path(robot, shape), with_mass)
-
-
-def _not_a_file(path: Path) -> str | None:
-    """Why ``path`` is no mesh file to read (None: it is a regular file)."""
-    try:
-        mode = path.stat().st_mode
-    except OSError as exc:
-        if exc.errno == errno.ELOOP:
-            return "is a loop of symbolic links"
-        if exc.errno == errno.ENAMETOOLONG:
-            return "is a name too long for the file system"
-        return "does not exist" if exc.errno in (errno.ENOENT, errno.ENOTDIR) \
-            else f"cannot be read: {exc.strerror}"
-    if stat.S_ISREG(mode):
-        return None
-    if stat.S_ISDIR(mode):
-        return "is a directory"
-    return "is a named pipe" if stat.S_ISFIFO(mode) else "is a device, not a file"
 
 
 __all__ = ["CheckEnv", "MeshError", "MeshNotFound", "RemoteMesh"]

@@ -10,6 +10,7 @@ Latin-1); each failure becomes one line that names the file and says what to giv
 from __future__ import annotations
 
 import contextlib
+import errno
 import io
 import os
 import stat
@@ -59,6 +60,27 @@ def printable_name(name: str) -> str:
     except UnicodeEncodeError:
         return name.encode("utf-8", "surrogateescape").decode("utf-8", "backslashreplace")
     return name
+
+
+def not_a_file(path: str | os.PathLike[str]) -> str | None:
+    """Why ``path`` is no file to read, as a sentence's end (``is a named pipe``).
+
+    None: it is a regular file (symbolic links followed).
+    """
+    try:
+        mode = os.stat(path).st_mode
+    except OSError as exc:
+        if exc.errno == errno.ELOOP:
+            return "is a loop of symbolic links"
+        if exc.errno == errno.ENAMETOOLONG:
+            return "is a name too long for the file system"
+        return "does not exist" if exc.errno in (errno.ENOENT, errno.ENOTDIR) \
+            else f"cannot be read: {exc.strerror}"
+    if stat.S_ISREG(mode):
+        return None
+    if stat.S_ISDIR(mode):
+        return "is a directory"
+    return "is a named pipe" if stat.S_ISFIFO(mode) else "is a device, not a file"
 
 
 def read_input_bytes(path: Path, display: str, *, kind: str,

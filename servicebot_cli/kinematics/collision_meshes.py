@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import os
 import re
-import stat
 import warnings
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
@@ -23,6 +22,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
+
+from servicebot_cli.common.inputs import not_a_file
 
 if TYPE_CHECKING:
     from servicebot_cli.description.packages import PackageResolver
@@ -83,12 +84,13 @@ _seen: dict[Path, tuple[tuple[int, int], str | None]] = {}
 
 def _problem(path: Path) -> str | None:
     """What keeps ``path`` from coal (a short reason), or None; read once per process."""
+    problem = not_a_file(path)
+    if problem is not None:
+        return f"{path} {problem}"
     try:
         status = os.stat(path)
-    except OSError as exc:
+    except OSError as exc:  # gone since
         return f"{exc.strerror or 'cannot open it'}: {path}"
-    if not stat.S_ISREG(status.st_mode):
-        return f"{path} is not a regular file"
     key = (status.st_size, status.st_mtime_ns)
     found = _seen.get(path)
     if found is not None and found[0] == key:
