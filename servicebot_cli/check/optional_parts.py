@@ -20,11 +20,11 @@ from typing import TYPE_CHECKING
 
 from servicebot_cli.check.files import included_files
 from servicebot_cli.common.inputs import display_path
+from servicebot_cli.description.loader import comments_blanked
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
-_COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
 _DEFINITION = re.compile(rb"<(link|joint)\b([^>]*)>")
 _NAME = re.compile(rb"\bname\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
 _TYPE = re.compile(rb"\btype\s*=")
@@ -45,7 +45,7 @@ def defined_elsewhere(robot: RobotDescription,
     for path in included_files([Path(file) for file in robot.files]):
         try:
             with path.open("rb") as handle:
-                text = _COMMENT.sub(_blank_lines, handle.read(_HEAD_BYTES))
+                text = comments_blanked(handle.read(_HEAD_BYTES))
         except OSError:
             continue
         for match in _DEFINITION.finditer(text):
@@ -60,7 +60,3 @@ def defined_elsewhere(robot: RobotDescription,
             break
     return found
 
-
-def _blank_lines(comment: re.Match[bytes]) -> bytes:
-    """A comment's line breaks only, so that lines keep their numbers."""
-    return b"\n" * comment[0].count(b"\n")

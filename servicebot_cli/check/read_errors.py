@@ -16,6 +16,7 @@ from servicebot_cli.common.errors import (
     XacroError,
     XmlError,
 )
+from servicebot_cli.description.loader import comments_blanked
 
 _WHERE = re.compile(r"^(?P<file>.+?):(?P<line>\d+)(?::(?P<column>\d+))?: (?P<rest>.*)$", re.DOTALL)
 _LIMITS = ("limit for a robot description", "elements; refused", "deep; refused",
@@ -27,7 +28,6 @@ _ARG_DECLARATION = re.compile(rb"<xacro:arg\b([^>]*)>")
 _ARG_NAME = re.compile(rb"\bname\s*=\s*[\"']([^\"']+)[\"']")
 _EMPTY_DEFAULT = re.compile(rb"\bdefault\s*=\s*(?:\"\"|'')")
 _ARG_USE = re.compile(rb"\$\(arg\s+([^)\s]+)\s*\)")
-_COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
 _UNDEFINED_ARG = re.compile(r"Undefined substitution argument (\S+)"
                             r"(?: when evaluating expression '.*')?$", re.DOTALL)
 
@@ -89,7 +89,7 @@ def _built_from_empty_arguments(text: str, file: str, line: int, column: int) ->
             source = handle.read(1 << 20)
     except OSError:
         return False
-    source = _COMMENT.sub(lambda c: b"\n" * c[0].count(b"\n"), source)
+    source = comments_blanked(source)
     lines = source.split(b"\n")
     element = b"\n".join(lines[line - 1:line + 30])[max(column - 1, 0):]
     element = element[:element.find(b">") + 1] if b">" in element else element
