@@ -95,7 +95,7 @@ def walk(directory: Path) -> Iterator[Path]:
             robots.append(path)
     included = included_by(robots)
     if semantic:  # what only a *.srdf.xacro includes is left out when it is SRDF itself
-        included |= {path for path in included_by([*semantic, *robots]) - included
+        included |= {path for path in set(includers(robots, by=semantic)) - included
                      if _semantic_content(path)}
     yield from (path for path in robots if path not in included)
 
@@ -144,8 +144,10 @@ def included_by(paths: list[Path]) -> set[Path]:
     return set(includers(paths))
 
 
-def includers(paths: list[Path]) -> dict[Path, Path]:
+def includers(paths: list[Path], by: list[Path] | None = None) -> dict[Path, Path]:
     """Each of ``paths`` another of them includes, and the first of them that includes it.
+
+    With ``by``, the includers looked at are those files instead of ``paths``.
 
     A filename is read as xacro reads it, through :mod:`install_layout`: relative to the
     including file, or ``$(find PKG)/REL`` under the directory of package PKG (a package
@@ -153,10 +155,11 @@ def includers(paths: list[Path]) -> dict[Path, Path]:
     (``$(find PKG)/urdf/x.xacro`` from ``description/urdf/x.xacro``). Computed names
     (``${...}``, ``$(arg ...)``) name nothing.
     """
+    sources = paths if by is None else by
     by_location = {_location(path): path for path in paths}
-    packages = _packages(paths)
+    packages = _packages([*paths, *(by or ())])
     included: dict[Path, Path] = {}
-    for path in paths:
+    for path in sources:
         for target in _include_targets(path):
             for named in _named(target, path, packages):
                 found = by_location.get(_location(named))
