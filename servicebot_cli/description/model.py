@@ -44,9 +44,10 @@ def tree_depth(xml_text: str) -> int:
             parent_of.setdefault(ends["child"], ends["parent"])
     depth: dict[str, int] = {}
     for start in parent_of:
-        path, link = [], start
-        while link in parent_of and link not in depth and link not in path:
+        path, on_path, link = [], set(), start
+        while link in parent_of and link not in depth and link not in on_path:
             path.append(link)
+            on_path.add(link)
             link = parent_of[link]
         below = depth.get(link, 0)
         for link in reversed(path):
