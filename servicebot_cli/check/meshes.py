@@ -21,9 +21,6 @@ from servicebot_cli.description.safe_xml import declaration_first
 if TYPE_CHECKING:
     from servicebot_cli.check.mesh_store import MeshStore
 
-MOST_MESH_BYTES = 1_000_000_000
-"""The largest mesh file read (a scanned building is a few hundred MB); a 3 GB sparse file
-was read whole."""
 LARGEST_COORDINATE = 1e9
 """Meshes with coordinates beyond this (in the file's units) get no mass properties."""
 
@@ -74,9 +71,9 @@ def load_mesh(path: Path, with_mass: bool = False) -> MeshInfo:
     """
     try:
         size = path.stat().st_size
-        if size > MOST_MESH_BYTES:
+        if size > mesh_readers.MOST_BYTES:
             raise MeshError(f"the file is {size / 1e9:.1f} GB, over the "
-                            f"{MOST_MESH_BYTES / 1e9:.0f} GB a mesh is read to; is it the "
+                            f"{mesh_readers.MOST_BYTES / 1e9:.0f} GB a mesh is read to; is it the "
                             "right file?")
         data = path.read_bytes()
     except OSError as exc:

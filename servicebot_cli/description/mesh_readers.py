@@ -24,8 +24,12 @@ from servicebot_cli.description.mesh_arrays import FloatArray, IntArray, MeshFor
 from servicebot_cli.description.mesh_collada import read_dae, read_dae_bounds
 from servicebot_cli.description.mesh_obj import read_obj_indexed
 
-__all__ = ["SUFFIXES", "MeshFormatError", "bounds", "read_dae_bounds", "read_indexed",
+__all__ = ["MOST_BYTES", "SUFFIXES", "MeshFormatError", "bounds", "read_dae_bounds", "read_indexed",
            "read_stl"]
+
+MOST_BYTES = 1_000_000_000
+"""The largest mesh file read (a scanned building is a few hundred MB); a 3 GB sparse file
+was read whole."""
 
 SUFFIXES = (".stl", ".obj", ".dae")
 """The formats these readers read (any case); others are left to trimesh."""

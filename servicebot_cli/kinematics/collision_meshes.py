@@ -95,17 +95,20 @@ def _problem(path: Path) -> str | None:
     found = _seen.get(path)
     if found is not None and found[0] == key:
         return found[1]
-    reason = _read(path)
+    reason = _read(path, status.st_size)
     _seen[path] = (key, reason)
     return reason
 
 
-def _read(path: Path) -> str | None:
+def _read(path: Path, size: int) -> str | None:
     from servicebot_cli.description import mesh_readers  # only for a robot with meshes
 
     suffix = path.suffix.lower()
     if suffix not in (*mesh_readers.SUFFIXES, ".ply"):
         return None  # Assimp's alone to read
+    if size > mesh_readers.MOST_BYTES:
+        return (f"the file is {size / 1e9:.1f} GB, over the "
+                f"{mesh_readers.MOST_BYTES / 1e9:.0f} GB a mesh is read to")
     try:
         data = path.read_bytes()
     except OSError as exc:

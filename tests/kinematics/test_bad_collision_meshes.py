@@ -114,3 +114,18 @@ def test_coal_failing_still_gives_only_its_message_without_the_wrong_hint(tmp_pa
     for raw in ("From file", "assimp.cpp", "in function", "Hint:", "Could not load resource"):
         assert raw not in line
 
+
+
+def test_a_collision_mesh_over_a_gigabyte_is_not_read(tmp_path):
+    """A 3 GB sparse .stl was read whole before coal saw it, as check read it before."""
+    huge = tmp_path / "huge.stl"
+    with huge.open("wb") as handle:
+        handle.truncate(3 * 10**9)
+    robot = tmp_path / "r.urdf"
+    robot.write_text('<robot name="r"><link name="b"/><link name="a"><collision><geometry>'
+                     '<mesh filename="huge.stl"/></geometry></collision></link><joint name="j" '
+                     'type="revolute"><parent link="b"/><child link="a"/><axis xyz="0 0 1"/>'
+                     '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint></robot>')
+    result = run_servicebot("ik", robot, "-f", "a", "--position", "0.1", "0", "0")
+    assert_one_line_error(result, 2, "collision mesh 'huge.stl' of link 'a' cannot be read: "
+                          "the file is 3.0 GB, over the 1 GB a mesh is read to")
