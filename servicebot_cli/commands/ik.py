@@ -114,7 +114,8 @@ def ik(ctx: click.Context, robot_args: RobotArgs, frame: str | None,
        on_error: Literal["stop", "skip"], fmt: str) -> None:
     """Inverse kinematics: joint values that put a frame at a target.
 
-    Joint limits are always respected and continuous joints wrap. An answer whose links
+    Joint limits are always respected, continuous joints wrap, and a joint that follows
+    another (<mimic>) moves with it. An answer whose links
     intersect each other or the floor (the URDF's collision geometry) is refused and the
     search goes on. Exit code 0 when the target is reached, 1 when not (the best try is
     printed, with a hint: out of reach by how much, an orientation the joints cannot make,

@@ -19,12 +19,14 @@ import numpy.typing as npt
 
 from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.description.model import new_data
+from servicebot_cli.kinematics.chain_mimic import coupling
 from servicebot_cli.kinematics.frames import frame_id, moving_joints
 
 if TYPE_CHECKING:
     import pinocchio as pin
 
     from servicebot_cli.description.joint_space import JointSpace
+    from servicebot_cli.kinematics.user_joints import Mimics
 
 FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.intp]
@@ -64,8 +66,8 @@ class Reach:
 _LINK_SUFFIX = " (link)"
 
 
-def _reduced(model: pin.Model, lock: list[int]) -> pin.Model:
-    """``pin.buildReducedModel`` of ``model`` with the joints ``lock`` locked at neutral.
+def _reduced(model: pin.Model, lock: list[int], reference: FloatArray) -> pin.Model:
+    """``pin.buildReducedModel`` of ``model`` with the joints ``lock`` locked at ``reference``.
 
     URDF lets a joint and a link share a name (baxter's fixed joint ``left_hand`` holds link
     ``left_hand``; nao's joint ``LAnklePitch`` moves link ``LAnklePitch``), and Pinocchio then
@@ -80,13 +82,13 @@ def _reduced(model: pin.Model, lock: list[int]) -> pin.Model:
     clashing = [index for index, frame in enumerate(model.frames)
                 if frame.type == pin.FrameType.BODY and frame.name in others]
     if not clashing:
-        return pin.buildReducedModel(model, lock, pin.neutral(model))
+        return pin.buildReducedModel(model, lock, reference)
     renamed = pin.Model(model)
     for index in clashing:
         frame = renamed.frames[index]
         frame.name += _LINK_SUFFIX
         renamed.frames[index] = frame
-    reduced = pin.buildReducedModel(renamed, lock, pin.neutral(model))
+    reduced = pin.buildReducedModel(renamed, lock, reference)
     for index, frame in enumerate(reduced.frames):
         if frame.type == pin.FrameType.BODY and frame.name.endswith(_LINK_SUFFIX):
             frame.name = frame.name[:-len(_LINK_SUFFIX)]
@@ -110,7 +112,8 @@ class Chain:
         base_nq: Entries of ``q`` that belong to the planar base (0 or 4).
     """
 
-    def __init__(self, model: pin.Model, space: JointSpace, frame: str, known: Sequence[str]):
+    def __init__(self, model: pin.Model, space: JointSpace, frame: str, known: Sequence[str],
+                 mimics: Mimics | None = None):
         """Reduce ``model`` to the joints that move ``frame``.
 
         Args:
@@ -118,20 +121,37 @@ class Chain:
             space: Its joint space (URDF limits).
             frame: The frame to move.
             known: Every link name, for suggestions.
+            mimics: Joints that follow another: each group of them is solved as one value
+                (see :mod:`~servicebot_cli.kinematics.chain_mimic`).
+
+        Raises:
+            NothingMoves: No joint moves ``frame``.
+            CannotCouple: Followers that cannot be solved with their leader.
         """
-        keep = set(moving_joints(model, frame_id(model, frame, known)))
+        import pinocchio as pin
+
+        keep = moving_joints(model, frame_id(model, frame, known))
         if not keep:
             raise NothingMoves(f"frame '{frame}' is fixed to the root: no joint moves it; "
                                "choose a frame on the arm, or add --with-base")
-        lock = [j for j in range(1, model.njoints) if j not in keep]
+        self.coupling = None if mimics is None else coupling(model, space, mimics, keep)
+        self._space = space
+        source = model if self.coupling is None else self.coupling.model
+        kept = set(keep) if self.coupling is None else self.coupling.keep
+        lock = [j for j in range(1, model.njoints) if j not in kept]
+        reference = pin.neutral(source) if self.coupling is None else self.coupling.reference
         self.full_nq = model.nq
-        self.model = _reduced(model, lock) if lock else model
+        self.model = _reduced(source, lock, reference) if lock else source
         self.data = new_data(self.model, f"the joints that move '{frame}'")
         self.frame = frame_id(self.model, frame, known)
         self.frame_name = frame
         self.names = tuple(self.model.names[1:])
         self.base_nq = space.base_nq if "root_joint" in self.names else 0
         self.full_index, self.lower, self.upper = _index_and_limits(model, self.model, space)
+        if self.coupling is not None:
+            self.coupling.limits(space, self.lower, self.upper, {
+                k: self.model.joints[self.model.getJointId(space.names[k])].idx_q
+                for _, k in self.coupling.driver})
         self.vector_space = self.model.nq == self.model.nv and self.base_nq == 0
         self.reach = chain_reach(model, frame_id(model, frame, known))
 
@@ -143,7 +163,16 @@ class Chain:
         """``q_full`` with the chain's entries replaced by ``q_chain`` (a new array)."""
         out = np.array(q_full, dtype=float)
         out[self.full_index] = q_chain
-        return out
+        return out if self.coupling is None else self.coupling.follow(self._space, out)
+
+    def to_full_rows(self, q_chain: FloatArray, q_full: FloatArray) -> FloatArray:
+        """:meth:`to_full` of each row of ``q_chain`` (rows, the chain's ``nq``)."""
+        if self.coupling is not None:
+            return np.array([self.to_full(row, q_full) for row in q_chain]).reshape(
+                len(q_chain), len(q_full))
+        full = np.repeat(np.asarray(q_full, dtype=float)[np.newaxis], len(q_chain), axis=0)
+        full[:, self.full_index] = q_chain
+        return full
 
     def random_q(self, rng: np.random.Generator, near_m: FloatArray | None = None) -> FloatArray:
         """A random chain ``q`` within the limits; continuous joints at any angle.

@@ -31,7 +31,7 @@ from servicebot_cli.kinematics.json_types import JsonObject
 from servicebot_cli.kinematics.series import series_search, solve_leading
 from servicebot_cli.kinematics.srdf import robot_disabled_pairs
 from servicebot_cli.kinematics.target_frame import TargetFrame
-from servicebot_cli.kinematics.user_joints import clamped_user_vector
+from servicebot_cli.kinematics.user_joints import Mimics, clamped_user_vector
 
 if TYPE_CHECKING:
     import pinocchio as pin
@@ -72,7 +72,7 @@ class IkSession:
         model = robot.model_with_base("planar") if problem.with_base else robot.model
         space = JointSpace.of(model, robot.movable_joints) if problem.with_base \
             else robot.joint_space
-        chain = Chain(model, space, frame, link_names(robot))
+        chain = Chain(model, space, frame, link_names(robot), Mimics.of(robot.joints, space))
         values, clamped = clamped_user_vector(
             space, problem.start, deg=problem.deg, clamp=problem.clamp,
             fixed=[j.name for j in robot.joints if not j.movable])

@@ -132,8 +132,7 @@ def _confirm(solver: IkSolver, compiled: CompiledSearch, targets: Sequence[IkTar
     full ``q`` is ``seed`` with the chain's entries replaced (the others never change along
     a series), made for the whole run at once.
     """
-    full = np.repeat(seed[np.newaxis], stop - first, axis=0)
-    full[:, solver.chain.full_index] = out[first:stop]  # plain chain: q is the angles
+    full = solver.chain.to_full_rows(out[first:stop], seed)  # plain chain: q is the angles
     check = compiled.check
     for k in range(first, stop):
         errors = check(out[k], targets[k])
