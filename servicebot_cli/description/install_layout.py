@@ -50,7 +50,7 @@ def installed_from(missing: Path) -> InstalledFrom | None:
     None when ``missing`` is in no package, or no ``install(DIRECTORY ...)`` rule of the
     package's CMakeLists.txt installs an existing source file at that place.
     """
-    existing = next((p for p in missing.parents if p.is_dir()), None)
+    existing = next((p for p in missing.parents if os.path.isdir(p)), None)
     holder = holding_package(existing) if existing is not None else None
     if holder is None:
         return None
@@ -66,7 +66,7 @@ def installed_from(missing: Path) -> InstalledFrom | None:
         except ValueError:
             continue
         source = package_dir / source_dir / rest
-        if source.is_file():
+        if os.path.isfile(source):
             return InstalledFrom(name, package_dir, source, source_dir, installed_dir)
     return None
 

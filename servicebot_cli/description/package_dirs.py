@@ -78,6 +78,14 @@ def package_name(directory: Path) -> str | None:
     return match.group(1).decode("utf-8", "replace") if match else directory.name
 
 
+def _is_directory(entry: os.DirEntry[str]) -> bool:
+    """``entry`` is a directory, or a link to one; not a link that loops or is too deep."""
+    try:
+        return entry.is_dir()
+    except OSError:
+        return False
+
+
 @functools.lru_cache(maxsize=64)
 def packages_under(root: Path) -> dict[str, Path]:
     """Every package at or under ``root`` by name, nearest first; packages do not nest.
@@ -94,7 +102,7 @@ def packages_under(root: Path) -> dict[str, Path]:
             budget -= 1
             if budget < 0:
                 return found
-            if any((directory / marker).exists() for marker in _IGNORE_MARKERS):
+            if any(os.path.exists(directory / marker) for marker in _IGNORE_MARKERS):
                 continue
             name = package_name(directory)
             if name is not None:
@@ -106,7 +114,7 @@ def packages_under(root: Path) -> dict[str, Path]:
                 continue
             next_frontier.extend(
                 Path(entry.path) for entry in children
-                if entry.is_dir() and not entry.name.startswith(".")
-                and entry.name not in _SKIP_DIRS)
+                if not entry.name.startswith(".") and entry.name not in _SKIP_DIRS
+                and _is_directory(entry))
         frontier = next_frontier
     return found

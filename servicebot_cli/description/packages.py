@@ -165,7 +165,7 @@ class PackageResolver:
             from servicebot_cli.description.install_layout import installed_source
 
             path = Path(installed_source(str(location.path / rel)))
-            if not path.exists():
+            if not os.path.exists(path):
                 elsewhere = self._holding_elsewhere(name, rel, base_dir, location)
                 if elsewhere is not None:
                     location, path = elsewhere, elsewhere.path / rel
@@ -186,7 +186,7 @@ class PackageResolver:
         """
         absolute = Path("/") / rel
         name, _, inner = rel.partition("/")
-        if not absolute.exists() and name and inner:
+        if not os.path.exists(absolute) and name and inner:
             location = (self._ros_location(name, base_dir)
                         or self._loader_location(name, base_dir))
             if location is not None and location.path / inner != absolute:
@@ -224,10 +224,10 @@ class PackageResolver:
                 return PackageLocation(name, path, f"ROS_PACKAGE_PATH entry {_short(entry)}")
         for prefix in self.ament_prefix_path:
             share = prefix / "share" / name
-            if share.is_dir():
+            if os.path.isdir(share):
                 return PackageLocation(name, share, f"AMENT_PREFIX_PATH prefix {_short(prefix)}")
         for directory in (*self.ros_package_path, *(p / "share" for p in self.ament_prefix_path)):
-            if (directory / name).is_dir():
+            if os.path.isdir(directory / name):
                 return PackageLocation(name, directory / name,
                                        f"directory {name} in {_short(directory)}")
         return None
@@ -253,7 +253,7 @@ class PackageResolver:
         """
         for other in (self._loader_location(name, base_dir),
                       self._relative_location(name, rel, base_dir)):
-            if other is not None and other.path != first.path and (other.path / rel).exists():
+            if other is not None and other.path != first.path and os.path.exists(other.path / rel):
                 return PackageLocation(
                     name, other.path, f"{other.how}, which holds '{rel}' where the package "
                     f"found by {first.how} does not", ros_finds_it=False)
@@ -262,7 +262,7 @@ class PackageResolver:
     def _relative_location(self, name: str, rel: str, base_dir: Path) -> PackageLocation | None:
         """``NAME/rel`` beside the file or one of its parents (pybullet's way)."""
         for ancestor in (base_dir, *base_dir.parents):
-            if (ancestor / name / rel).exists():
+            if os.path.exists(ancestor / name / rel):
                 return PackageLocation(name, ancestor / name, f"the directory "
                                        f"{_short(ancestor / name)} beside the file",
                                        ros_finds_it=False)

@@ -10,6 +10,7 @@ are documented ROS 2 Humble behaviour, written down here once.
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -141,7 +142,7 @@ def find_controllers(description: Path, plugins: tuple[Any, ...],
         return read_controllers(explicit, "--controllers"), ()
     notes = []
     for paths, found_by in candidate_files(description, plugins):
-        missing = [path for path in paths if not path.is_file()]
+        missing = [path for path in paths if not os.path.isfile(path)]
         if found_by != "beside":
             notes += [f"gazebo_ros2_control names {path}, which does not exist"
                       for path in missing]

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import io
 import math
+import os
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -76,7 +77,7 @@ class MeshLibrary:
         except ServicebotError as exc:
             self.problems.append(f"mesh {filename}: {exc}")
             return None
-        if not path.is_file():
+        if not os.path.isfile(path):
             self.problems.append(f"mesh {filename}: no such file ({path})")
             return None
         import trimesh

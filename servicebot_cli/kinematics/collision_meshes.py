@@ -170,6 +170,6 @@ def coal_reason(text: str, meshes: list[CollisionMesh]) -> tuple[CollisionMesh |
                 mesh, reason = candidate, rest[len(str(candidate.path)):].strip()
                 break
     reason = reason.replace("std::bad_alloc", "out of memory")
-    if reason.endswith(_HINT) and mesh is not None and mesh.path.is_file():
+    if reason.endswith(_HINT) and mesh is not None and os.path.isfile(mesh.path):
         reason = reason[:-len(_HINT)].strip()
     return mesh, reason.rstrip(" .") or "Assimp cannot load it"

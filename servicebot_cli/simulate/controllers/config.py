@@ -17,6 +17,7 @@ Pure apart from reading the one file.
 from __future__ import annotations
 
 import math
+import os
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -91,7 +92,7 @@ def named_controllers_file(robot: RobotDescription,
     """
     if explicit is not None:
         return (Path(explicit),)
-    named = tuple(p for p in parameter_files(robot.plugins, robot.path.parent) if p.is_file())
+    named = tuple(p for p in parameter_files(robot.plugins, robot.path.parent) if os.path.isfile(p))
     return named or None
 
 
@@ -104,13 +105,13 @@ def missing_parameter_files(robot: RobotDescription, explicit: str | None) -> tu
     if explicit is not None:
         return ()
     return tuple(p for p in parameter_files(robot.plugins, robot.path.parent)
-                 if not p.is_file())
+                 if not os.path.isfile(p))
 
 
 def controllers_beside(robot: RobotDescription) -> Path | None:
     """``controllers.yaml`` beside the description, if there is one."""
     near = robot.path.parent / "controllers.yaml"
-    return near if near.is_file() else None
+    return near if os.path.isfile(near) else None
 
 
 def read_controllers_file(path: Path | tuple[Path, ...] | None) -> ControllersFile:

@@ -8,6 +8,7 @@ Coal (:mod:`.contacts`). A link's collision mesh is read with its ``scale`` for
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -46,7 +47,7 @@ def load_meshes(scenario: Scenario, base_dir: Path) -> list[Mesh]:
     for i, spec in enumerate(scenario.world.meshes):
         path = Path(spec.file) if Path(spec.file).is_absolute() else base_dir / spec.file
         where = ("world", "meshes", i, "file")
-        if not path.is_file():
+        if not os.path.isfile(path):
             raise located.error(where, f"'{spec.file}' is not a file (looked in {path})")
         try:
             with captured():  # texture chatter: only the geometry matters here
@@ -92,7 +93,7 @@ def _load_triangles(path: Path) -> tuple[FloatArray, IntArray]:
     Raises:
         MeshUnreadable: Missing, unreadable, empty, or with coordinates that are not finite.
     """
-    if not path.is_file():
+    if not os.path.isfile(path):
         raise MeshUnreadable(f"{path} is not a file")
     from servicebot_cli.description import mesh_readers
 
