@@ -136,7 +136,7 @@ def _files(directory: Path, wanted: Callable[[Path], bool]) -> Iterator[Path]:
         # a named pipe or a device among the files is no robot file (a stale pipe would
         # block the walk): left out, as the walk leaves out what is not a robot file
         yield from (path for name in sorted(files)
-                    if wanted(path := Path(root) / name) and path.is_file())
+                    if wanted(path := Path(root) / name) and os.path.isfile(path))
 
 
 def included_by(paths: list[Path]) -> set[Path]:
@@ -182,7 +182,7 @@ def included_files(paths: list[Path], most: int = 500) -> list[Path]:
         for target in _include_targets(path):
             for named in _named(target, path, packages):
                 location = _location(named)
-                if location not in found and Path(named).is_file() and len(found) < most:
+                if location not in found and os.path.isfile(Path(named)) and len(found) < most:
                     found[location] = Path(named)
                     queue.append(Path(named))
     return list(found.values())
@@ -201,7 +201,7 @@ def includer_nearby(path: Path) -> Path | None:
     else:
         try:
             around = sorted(entry for entry in path.parent.iterdir()
-                            if is_robot_file(entry) and entry.is_file())
+                            if is_robot_file(entry) and os.path.isfile(entry))
         except OSError:
             return None
     here = _location(path)

@@ -11,6 +11,7 @@ its defect is reported.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -32,7 +33,7 @@ def include_reports(sources: Sequence[tuple[RobotSource, bool]],
     an unnamed ``<robot>``, another root), or one that another named file includes.
     """
     candidates = {index: source.path for index, (source, named) in enumerate(sources)
-                  if named and is_xacro_name(source.path) and source.path.is_file()}
+                  if named and is_xacro_name(source.path) and os.path.isfile(source.path)}
     includer = files.includers(list(candidates.values()))
     reports: dict[int, FileReport] = {}
     for index, path in candidates.items():

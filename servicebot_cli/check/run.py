@@ -8,6 +8,7 @@ refused by the command before a request is made.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
@@ -125,7 +126,7 @@ def _sources(targets: UrdfTargets) -> tuple[list[tuple[RobotSource, bool]],
     includes_only: list[tuple[str, int]] = []
     for name in targets.paths:
         path = Path(name)
-        if not path.is_dir():
+        if not os.path.isdir(path):
             found.append((RobotSource(path, name, targets.xacro_args, targets.packages), True))
             continue
         inside = list(files.walk(path))

@@ -6,6 +6,7 @@ built only when every cheaper rule found no error.
 
 from __future__ import annotations
 
+import os
 import re
 import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterable, Iterator, Mapping
@@ -54,7 +55,7 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv,
     """
     from servicebot_cli.description.loader import read_description
 
-    size = source.path.stat().st_size if source.path.is_file() else 0
+    size = source.path.stat().st_size if os.path.isfile(source.path) else 0
     if size > MAX_BYTES:
         issue = Issue("SB015", f"file is {size / 1e6:.1f} MB, over the {MAX_BYTES / 1e6:.0f} MB "
                       "limit for a robot description; refused unread", where=(source.display, 0, 0))
@@ -91,7 +92,7 @@ def _part_of_another(robot: RobotDescription, source: RobotSource) -> Issue | No
     from servicebot_cli.check.fragments import external_parent, part_evidence
     from servicebot_cli.description.robot import is_xacro_name
 
-    if not is_xacro_name(source.path) or not source.path.is_file():
+    if not is_xacro_name(source.path) or not os.path.isfile(source.path):
         return None
     parent = external_parent(robot)
     if parent is None:

@@ -9,6 +9,7 @@ here; the rules, numpy and Pinocchio load inside the callbacks.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -185,12 +186,12 @@ def _refuse_overwriting_inputs(report: ReportOptions, named: Sequence[str]) -> N
     """Refuse a report file that is a named input, or a robot file of a named directory."""
     output = report.output
     inputs = list(named)
-    if output not in (None, "-") and Path(output).is_file():
+    if output not in (None, "-") and os.path.isfile(Path(output)):
         from servicebot_cli.check.files import is_robot_file
 
         target = Path(output).resolve()
         if is_robot_file(target):
-            inputs += [output for d in named if Path(d).is_dir()
+            inputs += [output for d in named if os.path.isdir(Path(d))
                        and Path(d).resolve() in target.parents]
     refuse_overwriting(output, inputs)
 

@@ -57,9 +57,9 @@ class InputFile(click.ParamType[str]):
             return text
         path = Path(text)
         kind = "give a CSV or JSON Lines file, or - for stdin"
-        if not path.exists():
+        if not os.path.exists(path):
             self.fail(f"'{text}': no such file; {kind}", param, ctx)
-        if path.is_dir():
+        if os.path.isdir(path):
             self.fail(f"'{text}' is a directory; {kind}", param, ctx)
         if not os.access(path, os.R_OK):
             self.fail(f"'{text}': permission denied; make it readable (chmod +r)", param, ctx)

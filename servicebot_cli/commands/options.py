@@ -229,21 +229,21 @@ class OutputPath(click.ParamType[str]):
             what = f"{self.what} " if self.what else ""
             self.fail(f"'{text}': {what}files end in {' or '.join(self.suffixes)}; "
                       f"name it e.g. '{path.stem or 'out'}{self.suffixes[0]}'", param, ctx)
-        if self.directory and path.exists() and not path.is_dir():
+        if self.directory and os.path.exists(path) and not os.path.isdir(path):
             self.fail(f"'{text}' is a file; give a directory", param, ctx)
-        if not self.directory and path.is_dir():
+        if not self.directory and os.path.isdir(path):
             self.fail(f"'{text}' is a directory; give a file name", param, ctx)
-        if self.fresh and path.exists():
+        if self.fresh and os.path.exists(path):
             self.fail(f"'{text}' already exists; remove it or give another path", param, ctx)
-        target = path if self.directory and path.is_dir() else path.parent
+        target = path if self.directory and os.path.isdir(path) else path.parent
         parent = target if str(target) else Path(".")
         if self.parents:
-            parent = next((p for p in (parent, *parent.parents) if p.exists()), Path("."))
-            if not parent.is_dir():
+            parent = next((p for p in (parent, *parent.parents) if os.path.exists(p)), Path("."))
+            if not os.path.isdir(parent):
                 self.fail(f"'{text}': '{parent}' is a file, not a directory", param, ctx)
-        if parent.exists() and not parent.is_dir():
+        if os.path.exists(parent) and not os.path.isdir(parent):
             self.fail(f"'{text}': '{parent}' is a file, not a directory", param, ctx)
-        if not parent.is_dir():
+        if not os.path.isdir(parent):
             self.fail(f"'{text}': directory '{parent}' does not exist; create it first",
                       param, ctx)
         if not os.access(parent, os.W_OK | os.X_OK):
@@ -360,7 +360,7 @@ class PackageDir(click.ParamType[tuple[str, str]]):
         if not sep or not name or not directory:
             self.fail(f"'{value}' is not NAME=DIR, e.g. my_robot_description=./src/desc",
                       param, ctx)
-        if not Path(directory).is_dir():
+        if not os.path.isdir(Path(directory)):
             self.fail(f"'{directory}' for package '{name}' is not a directory", param, ctx)
         return name, directory
 

@@ -57,7 +57,7 @@ def atomic_output(
         OutputError: The directory is missing or not writable, or writing failed.
     """
     target = Path(path)
-    if target.is_dir():
+    if os.path.isdir(target):
         raise OutputError(f"{target}: is a directory; give a file name to write")
     if _written_in_place(target):
         # A device, FIFO or socket (/dev/null, /dev/stdout, a named pipe), or a link to one:
@@ -66,7 +66,7 @@ def atomic_output(
         with _in_place(target, mode, open_kwargs) as handle:
             yield handle
         return
-    if target.is_symlink():
+    if os.path.islink(target):
         target = Path(os.path.realpath(target))  # a regular file: replaced, the link kept
     if make_parents and str(target.parent):
         try:
@@ -104,9 +104,9 @@ def _written_in_place(target: Path) -> bool:
     """Whether ``target`` is to be opened and written as it is, not replaced (module doc)."""
     if any(_special(hop) for hop in _link_chain(target)):
         return True
-    if target.is_symlink():
-        return not target.is_file()  # to a device, a FIFO, nothing yet (or a loop)
-    return target.exists() and not target.is_file()
+    if os.path.islink(target):
+        return not os.path.isfile(target)  # to a device, a FIFO, nothing yet (or a loop)
+    return os.path.exists(target) and not os.path.isfile(target)
 
 
 def _link_chain(target: Path) -> list[str]:
@@ -157,7 +157,7 @@ def atomic_directory(path: str | os.PathLike[str]) -> Iterator[Path]:
         OutputError: ``path`` exists, its parent is missing or not writable, or writing failed.
     """
     target = Path(path)
-    if target.exists():
+    if os.path.exists(target):
         raise OutputError(f"{target}: already exists; remove it or give another path")
     parent = _parent(target)
     held = _hold_signals()
@@ -224,7 +224,7 @@ def _release(held: Held) -> None:
 
 def _parent(target: Path) -> Path:
     directory = target.parent if str(target.parent) else Path(".")
-    if not directory.is_dir():
+    if not os.path.isdir(directory):
         raise OutputError(f"{target}: directory '{directory}' does not exist; create it first")
     return directory
 

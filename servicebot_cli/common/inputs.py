@@ -99,7 +99,7 @@ def read_input_bytes(path: Path, display: str, *, kind: str,
         error: Missing, a directory, unreadable, or over ``max_bytes``.
     """
     with _reading(display, kind, error):
-        if path.is_dir():
+        if os.path.isdir(path):
             raise IsADirectoryError
         size = path.stat().st_size
         if max_bytes is not None and size > max_bytes:
@@ -187,6 +187,6 @@ def open_input_text(path: str, *, kind: str,
     if path == STDIN:
         return io.TextIOWrapper(sys.stdin.buffer, encoding="utf-8", errors="replace")
     with _reading(path, kind, error):
-        if Path(path).is_dir():
+        if os.path.isdir(Path(path)):
             raise IsADirectoryError
         return open(path, encoding="utf-8", errors="replace", newline="")  # noqa: SIM115

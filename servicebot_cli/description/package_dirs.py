@@ -50,7 +50,7 @@ def workspace_root(directory: Path) -> Path | None:
     for ancestor in ancestors:
         if ancestor.name == "src" and ancestor.parent != ancestor:
             return ancestor.parent
-    repository = next((a for a in ancestors if (a / ".git").exists()), None)
+    repository = next((a for a in ancestors if os.path.exists(a / ".git")), None)
     holder = holding_package(directory)
     base = holder[1] if holder is not None else directory
     highest = base.parents[min(_MOST_LEVELS_ABOVE, len(base.parents)) - 1] \
@@ -60,7 +60,7 @@ def workspace_root(directory: Path) -> Path | None:
     for ancestor in ancestors:
         if len(ancestor.parts) < len(highest.parts):
             break
-        if any((ancestor / made / "COLCON_IGNORE").is_file() for made in _COLCON_MADE):
+        if any(os.path.isfile(ancestor / made / "COLCON_IGNORE") for made in _COLCON_MADE):
             return ancestor
     if repository is not None:
         return repository

@@ -9,6 +9,7 @@ scenario with its values, the seed and the servicebot version.
 from __future__ import annotations
 
 import json
+import os
 import shutil
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -57,13 +58,13 @@ def load_record(out_dir: Path, key: str, keep: Sequence[str]) -> Record | None:
     has its directory removed, so it can run again cleanly.
     """
     directory = run_dir(out_dir, key)
-    if not directory.exists():
+    if not os.path.exists(directory):
         return None
     outputs = kept_outputs(out_dir, key, keep)
     wanted = [p for p in (outputs.out_dir, outputs.bag, outputs.plot) if p is not None]
     try:
         data = json.loads((directory / RECORD).read_text(encoding="utf-8"))
-        if all(Path(p).exists() for p in wanted) and data.get("key") == key:
+        if all(os.path.exists(Path(p)) for p in wanted) and data.get("key") == key:
             return Record(data["key"], data["seed"], data["values"], data["summary"],
                           data["wall_s"])
     except (OSError, ValueError, KeyError, TypeError):

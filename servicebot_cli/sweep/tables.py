@@ -13,6 +13,7 @@ than left to disagree with ``runs.csv``.
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -54,7 +55,7 @@ def write_tables(report: SweepReport, out_dir: Path) -> Written:
     parquet = out_dir / "runs.parquet"
     if _write_parquet(columns, parquet):
         return Written((files[0], parquet, files[1]))
-    if not parquet.exists():
+    if not os.path.exists(parquet):
         return Written(tuple(files))
     try:
         parquet.unlink()

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.conftest import run_servicebot
+from tests.conftest import assert_one_line_error, run_servicebot
 
 LONG = "a" * 300  # one name over the 255 bytes of Linux file systems
 
@@ -66,3 +66,21 @@ def test_a_package_search_passes_a_loop_of_links(tmp_path):
                             env={"ROS_PACKAGE_PATH": str(tree)}, timeout=60)
     assert result.returncode in (0, 1), result.stderr
     assert "'nowhere' not found" in result.stdout
+
+
+@pytest.mark.parametrize("args", [
+    ("check", "urdf", "{long}.urdf"), ("inspect", "{long}.urdf"), ("fk", "{long}.urdf"),
+    ("check", "controllers", "{long}.yaml"), ("fk", "--configs", "{long}.csv"),
+    ("check", "urdf", "{robot}", "--isolated", "-o", "{long}.json"),
+    ("expand", "{robot}", "-o", "{long}.urdf"),
+    ("simulate", "--headless", "--duration-s", "0.2", "--out", "{long}"),
+    ("simulate", "--headless", "--duration-s", "0.2", "--plot", "{long}.png"),
+])
+def test_a_named_file_too_long_is_one_line(tmp_path, args):
+    robot = tmp_path / "robot.urdf"
+    robot.write_text(ROBOT.format(uri="m.stl"))
+    long = tmp_path / LONG
+    result = run_servicebot(*(a.format(long=long, robot=robot) for a in args), timeout=120)
+    line = assert_one_line_error(result, 2)
+    assert "too long" in line or "no such file" in line, line
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["robot.urdf"]

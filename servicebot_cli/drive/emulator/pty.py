@@ -250,7 +250,7 @@ def link_problem(link: Path) -> str:
     """
     if not os.path.lexists(link):
         return ""
-    if link.is_symlink():
+    if os.path.islink(link):
         target = os.readlink(link)
         if target.startswith(PTS_DIR) and not os.path.exists(target):
             return ""
@@ -258,7 +258,7 @@ def link_problem(link: Path) -> str:
             return (f"links to {target}, which is in use (another emulator?); stop that "
                     f"emulator or give another path")
         return f"is a symlink to {target}, not an emulator's device; give another path"
-    if link.is_dir():
+    if os.path.isdir(link):
         return "is a directory; give the path of a link to make"
     return "already exists and is not an emulator's link; give another path (it is left as is)"
 

@@ -47,7 +47,7 @@ class BagWriter:
     def __init__(self, path: str | os.PathLike[str], publishers: list[Publisher],
                  stack: contextlib.ExitStack) -> None:
         target = Path(path)
-        if target.exists():
+        if os.path.exists(target):
             raise OutputError(f"{target}: already exists; remove it or give another --bag "
                               "path (ros2 bag record refuses too)")
         self.publishers, self.topics = publishers, topics(publishers)

@@ -10,6 +10,7 @@ that renders camera images also leaves its last frame as ``camera.png``.
 from __future__ import annotations
 
 import contextlib
+import os
 import re
 from collections.abc import Sequence
 from pathlib import Path
@@ -177,11 +178,11 @@ class CsvWriter:
 
     def __init__(self, directory: str | Path, stack: contextlib.ExitStack) -> None:
         path = Path(directory)
-        if path.exists() and not path.is_dir():
+        if os.path.exists(path) and not os.path.isdir(path):
             raise OutputError(f"{path}: exists and is not a directory; give a directory for "
                               "--out")
         self.stack = stack
-        if path.exists():
+        if os.path.exists(path):
             self.folder, self.in_place = path, False
         else:
             self.folder, self.in_place = stack.enter_context(atomic_directory(path)), True
