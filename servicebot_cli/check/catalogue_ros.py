@@ -13,7 +13,8 @@ ROS_RULES = (
          "Gazebo silently ignores the block: its friction, colour, sensors or plugins never "
          "apply. A warning when the xacro sources define that link or joint in a part this "
          "expansion leaves out (a condition not taken, an include its options leave out): the "
-         "block is then for an optional part, as its author meant.",
+         "block is then for an optional part, as its author meant. A warning too when the "
+         "block is empty: nothing is lost.",
          "Use the suggested name."),
     Rule("SB502", "sensor-parameter", E, "A sensor parameter out of range",
          "samples > 0, min_angle < max_angle (equal for a single ray: its direction, as "

@@ -47,6 +47,10 @@ def _unknown_reference(reference: str, names: list[str],
     """SB501; a warning when the sources define it in a part this expansion leaves out."""
     where = f"<gazebo reference=\"{reference}\">"
     found = optional.get(reference)
+    if found is None and element is not None and _empty(element):
+        return Issue("SB501", f"{where} names no link or joint, and is empty: Gazebo drops it "
+                     "and loses nothing", element, severity=Severity.WARNING,
+                     fix="remove the empty block")
     if found is None:
         hint = str(NameNotFound.for_name(reference, names)).split("; ", 1)[-1]
         return Issue("SB501", f"{where} names no link or joint; {hint}", element)
@@ -57,6 +61,12 @@ def _unknown_reference(reference: str, names: list[str],
                  element, severity=Severity.WARNING,
                  fix="nothing if that part is optional; else check the xacro arguments, "
                      "properties or environment that switch it on")
+
+
+def _empty(element: ET.Element) -> bool:
+    """No element, text or attribute other than ``reference`` inside ``element``."""
+    return (len(element) == 0 and not (element.text or "").strip()
+            and element.attrib.keys() <= {"reference"})
 
 
 def _sensor_problems(sensor: Sensor) -> Iterator[str]:

@@ -93,9 +93,9 @@ def test_a_plain_urdf_has_no_parts_left_out(run, tmp_path):
         "stick_link": "error", "bulkhead_link": "error", "imu_lnk": "error"}
 
 
-EXTRA_REFERENCES = """  <gazebo reference="lidar_link"/>
-  <gazebo reference="wheel_joint"/>
-  <gazebo reference="sonar_link"/>
+EXTRA_REFERENCES = """  <gazebo reference="lidar_link"><mu1>1</mu1></gazebo>
+  <gazebo reference="wheel_joint"><implicitSpringDamper>1</implicitSpringDamper></gazebo>
+  <gazebo reference="sonar_link"><material>Gazebo/Grey</material></gazebo>
 </robot>"""
 
 
