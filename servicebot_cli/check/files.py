@@ -39,9 +39,15 @@ _JOINT_DEFINITION = re.compile(rb"<joint\b[^>]*\btype\s*=")
 
 def head_without_comments(path: Path) -> bytes | None:
     """The first MiB of ``path`` with its XML comments removed; None: it cannot be read."""
+    head = _head(path)
+    return None if head is None else without_comments(head)
+
+
+def _head(path: Path) -> bytes | None:
+    """The first MiB of ``path``; None: it cannot be read."""
     try:
         with path.open("rb") as handle:
-            return without_comments(handle.read(_HEAD_BYTES))
+            return handle.read(_HEAD_BYTES)
     except OSError:
         return None
 
@@ -144,10 +150,12 @@ def included_by(paths: list[Path]) -> set[Path]:
     return set(includers(paths))
 
 
-def includers(paths: list[Path], by: list[Path] | None = None) -> dict[Path, Path]:
+def includers(paths: list[Path], by: list[Path] | None = None, *,
+               in_comments: bool = False) -> dict[Path, Path]:
     """Each of ``paths`` another of them includes, and the first of them that includes it.
 
-    With ``by``, the includers looked at are those files instead of ``paths``.
+    With ``by``, the includers looked at are those files instead of ``paths``; with
+    ``in_comments``, includes inside XML comments count too.
 
     A filename is read as xacro reads it, through :mod:`install_layout`: relative to the
     including file, or ``$(find PKG)/REL`` under the directory of package PKG (a package
@@ -160,7 +168,7 @@ def includers(paths: list[Path], by: list[Path] | None = None) -> dict[Path, Pat
     packages = _packages([*paths, *(by or ())])
     included: dict[Path, Path] = {}
     for path in sources:
-        for target in _include_targets(path):
+        for target in _include_targets(path, in_comments=in_comments):
             for named in _named(target, path, packages):
                 found = by_location.get(_location(named))
                 if found is not None and found != path:
@@ -188,12 +196,14 @@ def included_files(paths: list[Path], most: int = 500) -> list[Path]:
     return list(found.values())
 
 
-def includer_nearby(path: Path) -> Path | None:
+def includer_nearby(path: Path, *, in_comments: bool = False) -> Path | None:
     """A robot file of ``path``'s package that includes ``path``, or None.
 
     The package is the nearest one at or above ``path`` (its robot files, found as
     :func:`walk` finds them, includes too); a file in no package is looked for beside it,
-    in its own directory only, so that a file in ``/tmp`` does not walk all of it.
+    in its own directory only, so that a file in ``/tmp`` does not walk all of it. With
+    ``in_comments``, includes inside XML comments count too (an alternative part, switched
+    in by moving a comment).
     """
     holder = holding_package(path.parent.absolute())
     if holder is not None:
@@ -206,7 +216,7 @@ def includer_nearby(path: Path) -> Path | None:
             return None
     here = _location(path)
     others = [other for other in around if _location(other) != here]
-    return includers([*others, path]).get(path)
+    return includers([*others, path], in_comments=in_comments).get(path)
 
 
 def _location(path: Path | str) -> str:
@@ -235,11 +245,14 @@ def _named(target: str, includer: Path, packages: dict[str, set[Path]]) -> list[
             for directory in sorted(packages.get(package, ()))]
 
 
-def _include_targets(path: Path) -> list[str]:
-    """The filenames of the ``<xacro:include>`` elements of a xacro file (comments removed)."""
+def _include_targets(path: Path, *, in_comments: bool = False) -> list[str]:
+    """The filenames of the ``<xacro:include>`` elements of a xacro file.
+
+    Those inside XML comments only with ``in_comments``.
+    """
     if not is_xacro_name(path):
         return []
-    text = head_without_comments(path)
+    text = _head(path) if in_comments else head_without_comments(path)
     if text is None:
         return []
     targets = ((double or single).decode("utf-8", "replace").strip()

@@ -13,7 +13,9 @@ link sits in an ``xacro:if`` that is false, has it too, and must fail (SB103), a
 ``simulate`` refuses it. So the shape counts only with evidence that the file is a part:
 
 - another robot file of its package includes it (stretch's gripper parts; a file in no
-  package: one beside it), found through :func:`files.includer_nearby`; or
+  package: one beside it), found through :func:`files.includer_nearby`, or does so in a
+  comment (stretch's ``stretch_dry_erase_marker.xacro``, an alternative tool switched in by
+  moving the comment); or
 - it holds no link or joint of its own, only calls of macros it includes, and the link it
   hangs from is not written in it but made by those macros (baxter's
   ``example_end_effector.urdf.xacro``: ``<xacro:null_gripper side="left"/>``, whose macro
@@ -64,6 +66,9 @@ def part_evidence(path: Path, parent: str) -> str | None:
     includer = files.includer_nearby(path)
     if includer is not None:
         return f"included by {includer}"
+    includer = files.includer_nearby(path, in_comments=True)
+    if includer is not None:
+        return f"an alternative part: {includer} includes it in a comment"
     if parent not in _ROOT_FRAMES and _only_macro_calls(path, parent):
         return "built only by the macros it includes"
     return None

@@ -121,3 +121,23 @@ def test_a_part_that_a_file_of_its_package_includes_is_a_part(run, tmp_path):
         assert "every link hangs from 'link_wrist_yaw'" in only["message"]
     result = run("check", "urdf", robot, "--format", "json", "--isolated")
     assert "SB018" not in {f["code"] for f in findings(result.stdout)}
+
+
+def test_a_part_only_a_comment_includes_is_an_alternative_part(run, tmp_path):
+    # stretch_ros2's stretch_dry_erase_marker.xacro: switched in by moving a comment,
+    # <!--<xacro:include filename="stretch_dry_erase_marker.xacro" />-->, in the robot file
+    urdf = tmp_path / "urdf"
+    urdf.mkdir()
+    marker = urdf / "marker.xacro"
+    marker.write_text(f'<robot name="marker" {XACRO_NS}><link name="pen">{INERTIAL}</link>'
+                      '<joint name="mount" type="fixed"><parent link="link_wrist_yaw"/>'
+                      '<child link="pen"/></joint></robot>\n')
+    robot = urdf / "robot.urdf.xacro"
+    robot.write_text(f'<robot name="r" {XACRO_NS}><link name="link_wrist_yaw">{INERTIAL}'
+                     '</link><!--<xacro:include filename="marker.xacro" />--></robot>\n')
+    result = run("check", "urdf", urdf, "--format", "json", "--isolated")
+    assert result.exit_code == 0, result.stdout
+    found = {(f["file"].rsplit("/", 1)[-1], f["code"]) for f in findings(result.stdout)}
+    assert ("marker.xacro", "SB018") in found and ("marker.xacro", "SB103") not in found
+    robot.write_text(robot.read_text().replace("marker.xacro", "other.xacro"))
+    assert run("check", "urdf", marker, "--isolated").exit_code == 1  # named nowhere: a robot
