@@ -50,6 +50,17 @@ _EXPRESSION_RE = re.compile(r"when evaluating expression '(.*)' *$", re.MULTILIN
 _LOCK = threading.Lock()
 
 
+def _template_hint(filename: object) -> str:
+    """What to do when ``filename`` is missing but its template ``filename.in`` is there.
+
+    The build makes the file (hector_quadrotor's CMake ``configure_file``). Empty otherwise.
+    """
+    if not isinstance(filename, str) or not os.path.isfile(filename + ".in"):
+        return ""
+    return (f"; '{os.path.basename(filename)}.in' beside it is the template the package's "
+            "build makes it from: build the package, or check the installed copy")
+
+
 @dataclass(frozen=True)
 class Expansion:
     """The result of expanding a xacro file.
@@ -293,7 +304,7 @@ class _Tracer:
             expression = _EXPRESSION_RE.search(str(exc))
             if expression is None:
                 return XacroError(f"{where}: cannot read included file '{inner.filename}': "
-                                  f"{inner.strerror}")
+                                  f"{inner.strerror}{_template_hint(inner.filename)}")
             # load_yaml(name) of an argument left empty reads the directory (motoman's
             # joint_velocities_file:=): name the expression, not an include
             return XacroError(f"{where}: cannot read file '{inner.filename}' that "

@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from servicebot_cli.description.loader import RobotSource, read_description
-from tests.conftest import XACRO_SOURCE, assert_one_line_error
+from tests.conftest import XACRO_SOURCE, assert_one_line_error, run_servicebot
 
 MAIN = """<?xml version="1.0"?>
 <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
@@ -188,3 +188,19 @@ def test_package_option_must_name_a_directory(run, tmp_path):
     assert_one_line_error(run("expand", XACRO_SOURCE, "--package", f"p={tmp_path}/none"), 2,
                           "is not a directory")
     assert_one_line_error(run("expand", XACRO_SOURCE, "--package", "nodir"), 2, "NAME=DIR")
+
+
+def test_a_missing_include_the_build_makes_from_a_template_says_so(tmp_path):
+    """hector_quadrotor's CMake configure_file writes quadrotor_plugins.gazebo.xacro from
+    its .in beside it: a source checkout has only the template."""
+    (tmp_path / "plugins.gazebo.xacro.in").write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="a"/></robot>')
+    robot = tmp_path / "q.urdf.xacro"
+    robot.write_text('<robot name="q" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                     '<xacro:include filename="plugins.gazebo.xacro"/><link name="b"/></robot>')
+    result = run_servicebot("check", "urdf", robot, "--isolated", "--select", "SB001")
+    assert result.returncode == 1
+    assert "'plugins.gazebo.xacro.in' beside it is the template the package's build makes it " \
+        "from: build the package" in result.stdout
+    (tmp_path / "plugins.gazebo.xacro.in").unlink()
+    assert ".in' beside it" not in run_servicebot("check", "urdf", robot, "--isolated").stdout
