@@ -46,7 +46,9 @@ ROS_RULES = (
          "velocity limits.",
          "Bring min/max inside the URDF limits."),
     Rule("SB509", "control-no-plugin", E, "<ros2_control> without a hardware plugin",
-         "<hardware><plugin> names the hardware interface to load; without it nothing runs.",
+         "<hardware><plugin> names the hardware interface to load; without it nothing runs. "
+         "A warning for a component with no <hardware> at all in a robot Gazebo's "
+         "ros2_control plugin runs: it skips that component and runs the others.",
          "Add <hardware><plugin>package/Class</plugin></hardware>."),
     Rule("SB510", "control-hardware-param", E, "A malformed hardware parameter",
          "A serial port must be a device path (/dev/ttyUSB0, /dev/serial/by-id/...) or a "

@@ -8,7 +8,7 @@ import re
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.common.errors import NameNotFound
 from servicebot_cli.description.elements import parse_float
 
@@ -33,15 +33,39 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     """Every ros2_control issue of ``robot``."""
     joints = {j.name: j for j in robot.joints}
     owner: dict[tuple[str, str, str], str] = {}
+    simulator = _simulator(robot)
     for block in robot.ros2_control:
         if not block.plugin:
-            yield Issue("SB509", f"<ros2_control name=\"{block.name}\"> has no <hardware>"
-                        "<plugin>", block.element,
-                        fix="add <hardware><plugin>package/HardwareClass</plugin></hardware>")
+            yield _no_plugin(block, simulator)
         yield from _hardware(block)
         for item in block.joints:
             yield from _joint(item, joints, block)
             yield from _twice(item, block, owner)
+
+
+def _simulator(robot: RobotDescription) -> str | None:
+    """The Gazebo plugin that runs the robot's ros2_control components, if any."""
+    return next((p.filename for p in robot.plugins if "ros2_control" in p.filename), None)
+
+
+def _no_plugin(block: Ros2Control, simulator: str | None) -> Issue:
+    """SB509: a component without a hardware plugin.
+
+    ros2_control's parser refuses a ``<hardware>`` without ``<plugin>`` (the whole robot).
+    A component with no ``<hardware>`` at all parses; ros2_control_node then cannot load it,
+    but the Gazebo plugins (gazebo_ros2_control, gz_ros2_control) log the failure, skip the
+    component and run the others: open_manipulator's OMY arms leave their end unit's GPIOs
+    without hardware in simulation.
+    """
+    fix = "add <hardware><plugin>package/HardwareClass</plugin></hardware>"
+    element = block.element
+    if simulator is not None and element is not None and element.find("hardware") is None:
+        return Issue("SB509", f"<ros2_control name=\"{block.name}\"> has no <hardware>: "
+                     f"{simulator} skips it (with a logged error) and runs the other "
+                     "components; ros2_control_node would refuse it", element,
+                     fix=fix, severity=Severity.WARNING)
+    return Issue("SB509", f"<ros2_control name=\"{block.name}\"> has no <hardware><plugin>",
+                 element, fix=fix)
 
 
 def _twice(item: ControlJoint, block: Ros2Control,
