@@ -237,7 +237,9 @@ URDF_RULES: tuple[Rule, ...] = (
          "Give the link a small realistic inertia."),
     Rule("SB308", "triangle-inequality", E, "Principal moments that break the triangle inequality",
          "For any body each principal moment is at most the sum of the other two "
-         "(Ixx + Iyy >= Izz ...); the printed moments cannot belong to a real body.",
+         "(Ixx + Iyy >= Izz ...); the printed moments cannot belong to a real body. Two zero "
+         "moments (0, 0, I) count on a link a joint moves; on a link fixed to another, which "
+         "consumers lump into it, they are SB307.",
          "Compute the inertia again (solid formulas, or from CAD)."),
     Rule("SB309", "root-link-inertia", N, "The root link carries inertia",
          "KDL (robot_state_publisher, many ROS tools) ignores the root link's inertia and "

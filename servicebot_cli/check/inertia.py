@@ -25,6 +25,7 @@ def _mass(link: Link) -> float:
 
 def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
     """Every inertia issue of ``robot``."""
+    moved = {joint.child for joint in robot.joints if joint.movable}
     for link in robot.links:
         inertial = link.inertial
         if inertial is None:
@@ -42,7 +43,7 @@ def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
                         inertial.element, fix="give the link its real mass, or zero the inertia "
                         "(or remove the <inertial>) for a massless frame")
             continue
-        physical = yield from _possible(link, moments)
+        physical = yield from _possible(link, moments, link.name in moved)
         if physical and _mass(link) > 0 and values.bounded((_mass(link),), values.LARGEST_INERTIA):
             yield from _against_geometry(robot, link, env)
     yield from _moving_masses(robot)
@@ -55,8 +56,15 @@ def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
                     "if KDL users matter")
 
 
-def _possible(link: Link, values: tuple[float, ...]) -> Generator[Issue, None, bool]:
-    """SB306-SB308; returns True when the inertia is a real body's."""
+def _possible(link: Link, values: tuple[float, ...],
+              moving: bool) -> Generator[Issue, None, bool]:
+    """SB306-SB308; returns True when the inertia is a real body's.
+
+    A zero principal moment is an idealisation (a thin rod: 0, I, I), a warning; two of them
+    (0, 0, I) are no body at all, which MuJoCo refuses (fetch's gripper fingers): an error
+    on a link a joint moves. A link fixed to others (anymal's dummy ``base``) is lumped with
+    them by Gazebo (sdformat) and Pinocchio, so only the sum has to be a body: a warning there.
+    """
     moments = np.linalg.eigvalsh(solids.tensor(values))
     scale = float(np.abs(moments).max())
     shown = ", ".join(f"{m:.6g}" for m in moments)
@@ -70,15 +78,16 @@ def _possible(link: Link, values: tuple[float, ...]) -> Generator[Issue, None, b
         yield Issue("SB306", f"link '{link.name}' inertia is not positive definite: principal "
                     f"moments {shown} kg m^2", element)
         return False
-    if moments[0] <= 1e-9 * scale:
-        if _mass(link) > 0:
-            yield Issue("SB307", f"link '{link.name}' inertia has a zero principal moment "
-                        f"({shown} kg m^2)", element)
-        return False
-    if moments[0] + moments[1] < moments[2] * (1 - 1e-6):
+    degenerate = moments[0] <= 1e-9 * scale
+    if moments[0] + moments[1] < moments[2] * (1 - 1e-6) and (moving or not degenerate):
         yield Issue("SB308", f"link '{link.name}' principal moments {shown} kg m^2 break the "
                     f"triangle inequality: {moments[0]:.6g} + {moments[1]:.6g} < "
                     f"{moments[2]:.6g}", element)
+        return False
+    if degenerate:
+        if _mass(link) > 0:
+            yield Issue("SB307", f"link '{link.name}' inertia has a zero principal moment "
+                        f"({shown} kg m^2)", element)
         return False
     return True
 
