@@ -10,9 +10,6 @@ against the vertex table. Pure.
 
 from __future__ import annotations
 
-import re
-from dataclasses import dataclass
-
 import numpy as np
 
 from servicebot_cli.description.mesh_arrays import (
@@ -22,35 +19,9 @@ from servicebot_cli.description.mesh_arrays import (
     fan_counts,
     numbers,
 )
+from servicebot_cli.kinematics.ply_header import PlyElement, check_sizes, ply_header
 
-_MAX_HEADER = 1 << 16
-_END_HEADER = re.compile(rb"(?:^|\n)end_header[ \t]*\r?\n")
-_TYPES = {
-    "char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1",
-    "short": "i2", "int16": "i2", "ushort": "u2", "uint16": "u2",
-    "int": "i4", "int32": "i4", "uint": "u4", "uint32": "u4",
-    "float": "f4", "float32": "f4", "double": "f8", "float64": "f8",
-}
-_FORMATS = {"ascii": "", "binary_little_endian": "<", "binary_big_endian": ">"}
 _FACE_LISTS = ("vertex_indices", "vertex_index")
-
-
-@dataclass(frozen=True)
-class _Property:
-    name: str
-    kind: str  # numpy type code: "f4", "u1", ...
-    count_kind: str | None = None  # a list's count type; None for a scalar
-
-    def least_bytes(self) -> int:
-        """The fewest bytes the property takes in a binary file (an empty list's count)."""
-        return np.dtype(self.count_kind or self.kind).itemsize
-
-
-@dataclass(frozen=True)
-class _Element:
-    name: str
-    count: int
-    properties: tuple[_Property, ...]
 
 
 def read_ply(data: bytes) -> tuple[FloatArray, IntArray]:
@@ -60,8 +31,8 @@ def read_ply(data: bytes) -> tuple[FloatArray, IntArray]:
         MeshFormatError: Not a PLY file, a header whose counts the file cannot hold, or a
             face naming a vertex that does not exist.
     """
-    fmt, elements, body = _header(data)
-    _check_sizes(fmt, elements, len(body))
+    fmt, elements, body = ply_header(data)
+    check_sizes(fmt, elements, len(body))
     if fmt:
         rows = _binary(body, fmt, elements)
     else:
@@ -77,51 +48,11 @@ def read_ply(data: bytes) -> tuple[FloatArray, IntArray]:
     return vertices, faces
 
 
-def _header(data: bytes) -> tuple[str, list[_Element], bytes]:
-    if not data.startswith(b"ply") or data[3:4] not in (b"\n", b"\r"):
-        raise MeshFormatError("not a PLY file (no 'ply' line first)")
-    end = _END_HEADER.search(data, 0, _MAX_HEADER)
-    if end is None:
-        raise MeshFormatError("a PLY header without 'end_header'")
-    fmt: str | None = None
-    elements: list[tuple[str, int, list[_Property]]] = []
-    for raw in data[:end.start()].decode("ascii", "replace").splitlines()[1:]:
-        words = raw.split()
-        if not words or words[0] in ("comment", "obj_info"):
-            continue
-        if words[0] == "format" and len(words) == 3 and words[1] in _FORMATS:
-            fmt = _FORMATS[words[1]]
-        elif words[0] == "element" and len(words) == 3 and words[2].isdigit():
-            elements.append((words[1], int(words[2]), []))
-        elif words[0] == "property" and elements and len(words) == 3 and words[1] in _TYPES:
-            elements[-1][2].append(_Property(words[2], _TYPES[words[1]]))
-        elif (words[0] == "property" and elements and len(words) == 5 and words[1] == "list"
-              and words[2] in _TYPES and words[3] in _TYPES):
-            elements[-1][2].append(_Property(words[4], _TYPES[words[3]], _TYPES[words[2]]))
-        else:
-            raise MeshFormatError(f"a PLY header line that is not PLY: '{' '.join(words)[:60]}'")
-    if fmt is None:
-        raise MeshFormatError("a PLY header without a known 'format' line")
-    return fmt, [_Element(n, c, tuple(p)) for n, c, p in elements], data[end.end():]
-
-
-def _check_sizes(fmt: str, elements: list[_Element], size: int) -> None:
-    """Refuse counts the file cannot hold: each value takes a byte (and a blank, in ASCII)."""
-    need = 0
-    for element in elements:
-        per_row = (sum(p.least_bytes() for p in element.properties) if fmt
-                   else 2 * len(element.properties))
-        need += element.count * per_row
-        if need > size + 1:
-            raise MeshFormatError(f"the header declares {element.count} '{element.name}' "
-                                  f"elements, more than the file's {size} bytes hold")
-
-
 _Rows = tuple[np.ndarray, list[np.ndarray]]
 """An element's scalar columns (count, scalars) and each list property's rows."""
 
 
-def _ascii(body: bytes, elements: list[_Element]) -> list[_Rows]:
+def _ascii(body: bytes, elements: list[PlyElement]) -> list[_Rows]:
     values = numbers(body)
     at = 0
     rows: list[_Rows] = []
@@ -163,7 +94,7 @@ def _ascii(body: bytes, elements: list[_Element]) -> list[_Rows]:
     return rows
 
 
-def _ascii_width(values: FloatArray, element: _Element, at: int) -> int:
+def _ascii_width(values: FloatArray, element: PlyElement, at: int) -> int:
     """How many numbers the element's first row holds, its lists as long as they say."""
     width = 0
     for prop in element.properties:
@@ -176,7 +107,7 @@ def _ascii_width(values: FloatArray, element: _Element, at: int) -> int:
     return width
 
 
-def _ascii_uniform(values: FloatArray, element: _Element, at: int, width: int
+def _ascii_uniform(values: FloatArray, element: PlyElement, at: int, width: int
                    ) -> _Rows | None:
     """The element read in one pass when every row is ``width`` long (as the first); or None."""
     if element.count == 0 or width <= 0 or at + width * element.count > len(values):
@@ -207,7 +138,7 @@ def _flat(lists: list[list[np.ndarray]]) -> list[np.ndarray]:
     return out
 
 
-def _binary(body: bytes, fmt: str, elements: list[_Element]) -> list[_Rows]:
+def _binary(body: bytes, fmt: str, elements: list[PlyElement]) -> list[_Rows]:
     at = 0
     rows: list[_Rows] = []
     for element in elements:
@@ -248,7 +179,7 @@ def _binary(body: bytes, fmt: str, elements: list[_Element]) -> list[_Rows]:
     return rows
 
 
-def _uniform_lists(body: bytes, fmt: str, element: _Element, at: int
+def _uniform_lists(body: bytes, fmt: str, element: PlyElement, at: int
                    ) -> tuple[_Rows, int] | None:
     """The element read in one pass when every row's lists are as long as the first row's.
 
@@ -286,7 +217,7 @@ def _uniform_lists(body: bytes, fmt: str, element: _Element, at: int
     return (scalars, lists), at + record.itemsize * element.count
 
 
-def _frombuffer(body: bytes, kind: np.dtype, element: _Element, at: int,
+def _frombuffer(body: bytes, kind: np.dtype, element: PlyElement, at: int,
                 count: int | None = None) -> np.ndarray:
     n = element.count if count is None else count
     if n < 0 or at + kind.itemsize * n > len(body):
@@ -294,7 +225,7 @@ def _frombuffer(body: bytes, kind: np.dtype, element: _Element, at: int,
     return np.frombuffer(body, kind, n, at)
 
 
-def _xyz(element: _Element, scalars: np.ndarray) -> FloatArray:
+def _xyz(element: PlyElement, scalars: np.ndarray) -> FloatArray:
     names = [p.name for p in element.properties if p.count_kind is None]
     if not all(axis in names for axis in "xyz"):
         raise MeshFormatError("PLY vertices without x, y and z")
@@ -302,7 +233,7 @@ def _xyz(element: _Element, scalars: np.ndarray) -> FloatArray:
     return vertices
 
 
-def _faces(element: _Element, lists: list[np.ndarray], vertex_count: int) -> IntArray:
+def _faces(element: PlyElement, lists: list[np.ndarray], vertex_count: int) -> IntArray:
     names = [p.name for p in element.properties if p.count_kind is not None]
     found = [n for n in _FACE_LISTS if n in names]
     if not found:
