@@ -148,3 +148,26 @@ def test_a_ros1_plugin_on_its_default_topics_is_read_as_ros1(run, tmp_path):
     assert result.exit_code == 0, result.stderr
     names = {t["name"] for t in json.loads(result.stdout)["topics"]["topics"]}
     assert {"/cmd_vel", "/odom", "/tf"} <= names
+
+
+def test_a_controllers_file_without_a_diff_drive_leaves_the_base_to_the_plugin(tmp_path):
+    """turtlebot3_manipulation: Gazebo Classic's diff-drive plugin drives the base, and
+    gazebo_ros2_control's file holds only the arm's controllers and a joint_state_broadcaster.
+    Gazebo runs both: /odom is the plugin's, /joint_states the broadcaster's."""
+    pytest.importorskip("rosbags")
+    controllers = tmp_path / "controllers.yaml"
+    controllers.write_text("controller_manager:\n  ros__parameters:\n    update_rate: 20\n"
+                           "    joint_state_broadcaster:\n"
+                           "      type: joint_state_broadcaster/JointStateBroadcaster\n")
+    robot = tmp_path / "sam_bot.urdf"
+    robot.write_text(SAM_BOT.read_text().replace("</robot>", f"""
+  <ros2_control name="arm" type="system">
+    <hardware><plugin>gazebo_ros2_control/GazeboSystem</plugin></hardware>
+  </ros2_control>
+  <gazebo><plugin filename="libgazebo_ros2_control.so" name="gazebo_ros2_control">
+    <parameters>{controllers}</parameters></plugin></gazebo>
+</robot>"""))
+    summary, messages = _run(robot, tmp_path)
+    assert len(messages["/demo/odom"]) == 1000  # the plugin's, at its 100 Hz
+    assert len(messages["/joint_states"]) == 200  # the broadcaster's, at the file's 20 Hz
+    assert summary["controller"]["publish_rate_hz"] == {"value": 100.0, "source": PLUGIN}

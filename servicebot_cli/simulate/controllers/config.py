@@ -72,6 +72,9 @@ class ControllersFile:
     """Gazebo Classic's diff-drive plugin's odometry source and wheel ramp, when it drives."""
     joint_state_topics: tuple[str, ...] = ()
     """Where the file's joint_state_broadcasters publish (none: no broadcaster)."""
+    joint_state_update_hz: float | None = None
+    """How often the broadcasters' controller manager runs, when a Gazebo drive plugin drives
+    the base beside it (the file's ``update_rate``); None: as the base's controller."""
     wheel_tf_joints: tuple[str, ...] = ()
     """The wheel joints a Gazebo drive plugin puts on /tf itself, in its order (none: none)."""
     notes: tuple[str, ...] = ()

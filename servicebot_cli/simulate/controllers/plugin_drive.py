@@ -66,15 +66,25 @@ _GZ_LIMITS = (("velocity", "m_s", "rad_s"), ("acceleration", "m_s2", "rad_s2"),
 def controllers_for(robot: RobotDescription, explicit: str | None) -> ControllersFile:
     """The controller a run of ``robot`` uses, as :mod:`.config` says which.
 
+    A Gazebo drive plugin drives the base unless the controllers file (named, or a
+    ros2_control plugin's) has a diff-drive controller: turtlebot3_manipulation's file holds
+    only its arm's controllers and a joint_state_broadcaster, which then publishes beside
+    the plugin.
+
     Raises:
         ControllersFileError: An unreadable file, or a parameter that is not a number.
     """
     named = named_controllers_file(robot, explicit)
-    plugin = drive_plugin(robot) if named is None else None
+    from_file = None if named is None else read_controllers_file(named)
+    plugin = drive_plugin(robot) if from_file is None or from_file.name is None else None
     if plugin is not None:
         chosen = read_drive_plugin(robot, plugin)
+        if from_file is not None:  # Gazebo runs both: the file's broadcasters publish too
+            chosen = dataclasses.replace(
+                chosen, joint_state_topics=from_file.joint_state_topics,
+                joint_state_update_hz=from_file.values.get("update_rate_hz"))
     else:
-        chosen = read_controllers_file(named or controllers_beside(robot))
+        chosen = from_file or read_controllers_file(controllers_beside(robot))
     missing = missing_parameter_files(robot, explicit)
     if not missing:
         return chosen

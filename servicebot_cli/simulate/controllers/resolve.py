@@ -53,8 +53,10 @@ def resolve(scenario: Scenario, file: ControllersFile) -> Scenario:
     control_hz = controller.update_rate_hz
     controller = dataclasses.replace(
         controller, publish_rate_hz=min(controller.publish_rate_hz, control_hz))
+    broadcaster_hz = control_hz if file.joint_state_update_hz is None \
+        else file.joint_state_update_hz
     rates = dataclasses.replace(
-        scenario.rates, joint_states_hz=min(scenario.rates.joint_states_hz, control_hz))
+        scenario.rates, joint_states_hz=min(scenario.rates.joint_states_hz, broadcaster_hz))
     return dataclasses.replace(scenario, controller=controller, rates=rates,
                                controller_from=tuple(origin.items()),
                                speed_limiter=file.speed_limiter,
