@@ -1,8 +1,9 @@
 """Where every link is at a joint configuration the user typed.
 
-A configuration is ``{joint name: value}`` in [rad] or [m]; joints not named stay at zero.
-Names and limits are checked by the foundation's JointSpace, so a wrong name gets the same
-did-you-mean message as in every other command; the poses come from the URDF tree
+A configuration is ``{joint name: value}`` in [rad] or [m]; joints not named stay at zero,
+and joints that follow a named one (``<mimic>``) follow it. Names and limits are checked as
+``fk`` checks them, so a wrong name gets the same did-you-mean message as in every other
+command; the poses come from the URDF tree
 (:mod:`servicebot_cli.kinematics.link_poses`).
 """
 
@@ -13,6 +14,7 @@ from typing import TYPE_CHECKING
 
 from servicebot_cli.kinematics import link_poses
 from servicebot_cli.kinematics.link_poses import FloatArray
+from servicebot_cli.kinematics.user_joints import Mimics, clamped_user_vector
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -20,17 +22,26 @@ if TYPE_CHECKING:
 
 def checked_values(robot: RobotDescription, values: Mapping[str, float], *,
                    clamp: bool = False) -> dict[str, float]:
-    """``values`` after the foundation's checks, clamped into the limits if ``clamp``.
+    """``values`` after the checks fk makes, clamped into the limits if ``clamp``.
+
+    A joint that follows a named one (``<mimic>``) takes its value from it, and is checked
+    too; joints not named, and not following one, stay at zero unchecked, as in ``fk``.
 
     Raises:
         JointNotFound: A name that is not a movable joint, with the closest names.
-        OutOfLimits: A value outside its joint's limits (unless ``clamp``).
+        OutOfLimits: A value outside its joint's limits (unless ``clamp``), or a follower
+            that its leader's value puts outside its own.
     """
     if not values:
         return {}
     space = robot.joint_space
-    vector = space.vector(dict(values), clamp=clamp)
-    return {name: float(vector[space.index(name)]) for name in values}
+    mimics = Mimics.of(robot.joints, space)
+    vector, _ = clamped_user_vector(space, values.items(), clamp=clamp, mimics=mimics)
+    kept = {space.index(name) for name in values}
+    for follower, leader in zip(mimics.follower, mimics.leader, strict=True):
+        if leader in kept:  # in rule order: a follower's follower too
+            kept.add(follower)
+    return {space.names[i]: float(vector[i]) for i in sorted(kept)}
 
 
 def link_transforms(robot: RobotDescription, values: Mapping[str, float] | None = None, *,

@@ -32,7 +32,7 @@ class Dof:
     """Degrees of freedom: the drive wheels, the rest of the running gear, everything else.
 
     Attributes:
-        total: Every movable joint's degrees of freedom.
+        total: Every movable joint's degrees of freedom (a follower's counts none).
         wheels: The drive wheels'.
         arm: The rest: an arm, a lift, a head.
         chassis: Passive casters (MiR's four swivels and wheels), suspension and steering
@@ -188,8 +188,14 @@ def drive_info(drive: DriveGeometry) -> DriveInfo:
 
 def dof_of(robot: RobotDescription, wheel_joints: set[str],
            chassis_joints: frozenset[str] = frozenset()) -> Dof:
-    """Degrees of freedom, split into drive wheels, the rest of the running gear, the rest."""
-    movable = [j for j in robot.joints if j.movable]
+    """Degrees of freedom, split into drive wheels, the rest of the running gear, the rest.
+
+    A joint that follows another (``<mimic>``: a gripper's second finger) adds none: it moves
+    only with its leader.
+    """
+    names = {j.name for j in robot.joints if j.movable}
+    movable = [j for j in robot.joints if j.movable and not (
+        j.mimic is not None and j.mimic.joint in names and j.mimic.joint != j.name)]
     wheels = sum(DOF[j.type] for j in movable if j.name in wheel_joints)
     chassis = sum(DOF[j.type] for j in movable
                   if j.name in chassis_joints and j.name not in wheel_joints)
