@@ -80,7 +80,8 @@ class SimRobot:
         ray_sensors: Every published ray sensor (LIDARs, sonars, cliff and IR range
             sensors), the one with the most rays first (the LIDAR), then in URDF order.
         imu, camera: Mounted sensors, None where the URDF has none.
-        ray_notes: A stderr note for each published ray sensor left out, and why.
+        ray_notes: A stderr note for each published ray sensor left out, and why (and for
+            each sensor on a link the robot lacks).
         disabled_pairs: Link pairs the self-contact check leaves out (an SRDF's
             ``<disable_collisions>``, as ``ik --srdf``).
         resolver: Finds the ``package://`` collision meshes (the shape's and the self-contact
@@ -154,7 +155,8 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
         ray_sensors=tuple(_placed(robot, sensor, spec, placement) for sensor, spec in rays),
         imu=_mount(robot, ("imu",), _published_imu, placement) or _model_imu(robot, placement),
         camera=_mount(robot, CAMERA_TYPES, _published_camera, placement),
-        ray_notes=ray_notes, disabled_pairs=tuple(disabled_pairs), resolver=resolver,
+        ray_notes=(*_unplaced(robot), *ray_notes), disabled_pairs=tuple(disabled_pairs),
+        resolver=resolver,
     )
 
 
@@ -210,9 +212,26 @@ def _left_out(sensor: Sensor, spec: LidarSpec, why: str) -> str:
 
 def _published(robot: RobotDescription, types: tuple[str, ...],
                read: Callable[[Sensor], SpecT | None]) -> Iterator[tuple[Sensor, SpecT]]:
-    """Each sensor of ``types`` on a link that ``read`` says publishes, and its spec."""
-    return ((s, spec) for s in robot.sensors if s.type in types and s.reference
+    """Each sensor of ``types`` on a link of the robot that ``read`` says publishes, and its spec.
+
+    One on a link the robot lacks is no sensor Gazebo makes (see :func:`_unplaced`).
+    """
+    links = {link.name for link in robot.links}
+    return ((s, spec) for s in robot.sensors if s.type in types and s.reference in links
             for spec in [read(s)] if spec is not None)
+
+
+def _unplaced(robot: RobotDescription) -> tuple[str, ...]:
+    """A stderr note for each sensor whose ``<gazebo reference>`` names no link.
+
+    sdformat applies a ``<gazebo reference>`` block to the link it names and drops the rest,
+    so Gazebo makes no such sensor: interbotix's locobot puts its Create 3 cliff sensors
+    under ``cliff_side_left`` where the link is ``locobot/cliff_side_left``.
+    """
+    links = {link.name for link in robot.links}
+    return tuple(f"note: sensor '{s.name}' is not simulated: its <gazebo reference="
+                 f"\"{s.reference}\"> names no link, so Gazebo drops it"
+                 for s in robot.sensors if s.reference and s.reference not in links)
 
 
 def _placed(robot: RobotDescription, sensor: Sensor, spec: SpecT,

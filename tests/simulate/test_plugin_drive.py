@@ -171,3 +171,30 @@ def test_a_controllers_file_without_a_diff_drive_leaves_the_base_to_the_plugin(t
     assert len(messages["/demo/odom"]) == 1000  # the plugin's, at its 100 Hz
     assert len(messages["/joint_states"]) == 200  # the broadcaster's, at the file's 20 Hz
     assert summary["controller"]["publish_rate_hz"] == {"value": 100.0, "source": PLUGIN}
+
+
+def test_a_sensor_on_a_link_the_robot_lacks_is_left_out_with_a_note(tmp_path):
+    """interbotix's locobot names its Create 3 cliff sensors' links without the robot's
+    prefix: sdformat drops such a block, so Gazebo makes no sensor. simulate refused the
+    robot ("no frame"); it now leaves the sensor out and says so."""
+    pytest.importorskip("rosbags")
+    robot = tmp_path / "sam_bot.urdf"
+    robot.write_text(SAM_BOT.read_text().replace("</robot>", """
+  <gazebo reference="cliff_side_left">
+    <sensor name="cliff" type="ray"><update_rate>10</update_rate>
+      <ray><scan><horizontal><samples>1</samples><min_angle>0</min_angle>
+        <max_angle>0</max_angle></horizontal></scan><range><min>0.01</min><max>0.2</max></range>
+      </ray>
+      <plugin filename="libgazebo_ros_ray_sensor.so" name="cliff">
+        <ros><remapping>~/out:=cliff</remapping></ros><output_type>sensor_msgs/Range</output_type>
+      </plugin>
+    </sensor>
+  </gazebo>
+</robot>"""))
+    result = run_servicebot("simulate", robot, "--headless", "--duration-s", "1",
+                            "--format", "json")
+    assert result.returncode == 0, result.stderr
+    assert ("note: sensor 'cliff' is not simulated: its <gazebo reference=\"cliff_side_left\"> "
+            "names no link, so Gazebo drops it") in result.stderr
+    _, messages = _run(robot, tmp_path)
+    assert "/cliff" not in messages and len(messages["/demo/odom"]) == 1000
