@@ -99,3 +99,20 @@ def test_an_arm_tip_that_a_joint_shares_its_name_with_ends_the_run(tmp_path):
                             "--format", "json", env=NO_ROS)
     assert result.returncode == 0, result.stderr
     assert json.loads(result.stdout)["end_effector"]["frame"] == "arm_tool_link"
+
+
+def test_tiagos_forty_six_arm_joints_plot_quietly(tmp_path):
+    """TIAGo (example-robot-data) with its hand: a legend of every joint overflowed its axes,
+    and matplotlib said on stderr that the layout did not fit."""
+    from tests.kinematics.robots import example_robot
+
+    tiago = example_robot("tiago_description/robots/tiago.urdf")
+    scenario = tmp_path / "open.yaml"
+    scenario.write_text("duration_s: 1\ninitial_pose: {x_m: 0, y_m: 0, yaw_rad: 0}\n"
+                        "cmd_vel:\n  - {start_s: 0, duration_s: 1, linear_m_s: 0.3}\n")
+    plot = tmp_path / "tiago.png"
+    result = run_servicebot("simulate", tiago, "-s", scenario, "--headless", "--plot", plot,
+                            env=NO_ROS)
+    assert result.returncode == 0, result.stderr
+    assert [line.split()[0] for line in result.stderr.splitlines()] == ["simulated"]
+    assert plot.stat().st_size > 0

@@ -9,6 +9,7 @@ same run gives the same PNG, SVG or PDF bytes. What it draws is gathered as the 
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -179,8 +180,11 @@ def _draw_map(ax: Axes, track: Track) -> None:
 
 def _draw_arm(ax: Axes, track: Track) -> None:
     times, _, arm, _ = track.series()
-    for j, name in enumerate(track.body.arm_joints):
-        ax.plot(times, arm[:, j], linewidth=1.2, label=name)
+    names = track.body.arm_joints
+    for j, name in enumerate(names):  # a legend of TIAGo's 44 joints would cover the figure
+        ax.plot(times, arm[:, j], linewidth=1.2, label=name if j < _LEGEND_MOST else None)
+    if len(names) > _LEGEND_MOST:
+        ax.plot([], [], linestyle="", label=f"and {len(names) - _LEGEND_MOST} more")
     ax.set_xlabel("time [s]")
     ax.set_ylabel("joint angle [rad]")
     ax.set_title("arm joints")
@@ -189,6 +193,9 @@ def _draw_arm(ax: Axes, track: Track) -> None:
         ax.text(0.5, 0.5, "no arm joints", ha="center", va="center", transform=ax.transAxes)
         return
     ax.legend(loc="best", fontsize=7)
+
+
+_LEGEND_MOST = 8  # arm joints named in the legend
 
 
 def _draw_drift(ax: Axes, track: Track) -> None:
@@ -256,6 +263,8 @@ def write_plot(path: str | Path, track: Track) -> None:
     fig = figure(track)
     FigureCanvasAgg(fig)
     # A fixed salt makes SVG element ids, and so the bytes, the same for the same run.
-    with matplotlib.rc_context({"svg.hashsalt": "servicebot"}), \
+    with matplotlib.rc_context({"svg.hashsalt": "servicebot"}), warnings.catch_warnings(), \
             atomic_output(path, "wb") as handle:
+        # a layout that does not fit is still drawn: matplotlib's warning is for its users
+        warnings.filterwarnings("ignore", message="constrained_layout not applied")
         fig.savefig(handle, format=fmt, metadata=_NO_METADATA[fmt])
