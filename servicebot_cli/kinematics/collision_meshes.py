@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from servicebot_cli.common.errors import PackageNotFound
 from servicebot_cli.common.inputs import not_a_file
 
 if TYPE_CHECKING:
@@ -60,8 +61,13 @@ def collision_meshes(robot: RobotDescription, resolver: PackageResolver
         for shape in link.collisions:
             filename = shape.geometry.filename
             if shape.geometry.kind == "mesh" and filename:
-                yield CollisionMesh(link.name, filename,
-                                    resolver.resolve_uri(filename, base_dir).absolute())
+                try:
+                    path = resolver.resolve_uri(filename, base_dir)
+                except PackageNotFound as exc:  # say what needs it, and how to do without
+                    raise PackageNotFound(f"collision mesh '{filename}' of link '{link.name}': "
+                                          f"{exc}; or --allow-collisions skips the collision "
+                                          "check that reads it") from None
+                yield CollisionMesh(link.name, filename, path.absolute())
 
 
 def mesh_problem(robot: RobotDescription, meshes: Iterable[CollisionMesh]

@@ -129,3 +129,25 @@ def test_a_collision_mesh_over_a_gigabyte_is_not_read(tmp_path):
     result = run_servicebot("ik", robot, "-f", "a", "--position", "0.1", "0", "0")
     assert_one_line_error(result, 2, "collision mesh 'huge.stl' of link 'a' cannot be read: "
                           "the file is 3.0 GB, over the 1 GB a mesh is read to")
+
+
+def test_a_collision_mesh_in_a_package_that_is_nowhere_names_the_mesh_and_the_way_out(tmp_path):
+    """interbotix's locobot: its Create 3 base's meshes are in irobot_create_description,
+    which the workspace lacks. ik said only that the package was not found."""
+    robot = tmp_path / "r.urdf"
+    robot.write_text("""<robot name="r">
+  <link name="base"><collision><geometry>
+    <mesh filename="package://nowhere_description/meshes/base.stl"/></geometry></collision></link>
+  <link name="arm"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
+  <joint name="j" type="revolute"><parent link="base"/><child link="arm"/><origin xyz="0 0 0.5"/>
+    <axis xyz="0 1 0"/><limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
+  <link name="tip"/>
+  <joint name="t" type="fixed"><parent link="arm"/><child link="tip"/><origin xyz="0.3 0 0"/>
+  </joint>
+</robot>""")
+    target = ("-f", "tip", "--position", "0.3", "0", "0.5")
+    assert_one_line_error(run_servicebot("ik", robot, *target), 2,
+                          "collision mesh 'package://nowhere_description/meshes/base.stl' of "
+                          "link 'base': package 'nowhere_description' not found",
+                          "--allow-collisions skips the collision check")
+    assert run_servicebot("ik", robot, *target, "--allow-collisions").returncode == 0
