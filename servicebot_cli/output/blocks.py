@@ -15,6 +15,7 @@ class Table:
         rows: Cell values; numbers are formatted by the renderer.
         notes: Lines shown under the table.
         empty: What to say when there are no rows.
+        whole: Columns cut last when the table is too wide (the tree's link names).
     """
 
     title: str
@@ -22,3 +23,4 @@ class Table:
     rows: list[tuple[object, ...]] = field(default_factory=list)
     notes: tuple[str, ...] = ()
     empty: str = "none"
+    whole: tuple[int, ...] = ()

@@ -65,7 +65,7 @@ def table_lines(block: Table, title: Callable[[str], str] = str) -> Iterator[str
         yield from _wrapped(f"{block.title}: {block.empty}", "", title)
     else:
         yield from _wrapped(block.title, "", title)
-        yield from table(block.headers, block.rows, max_width=WIDTH)
+        yield from table(block.headers, block.rows, max_width=WIDTH, whole=block.whole)
     for note in block.notes:
         yield from _wrapped(f"note: {note}", "  ")
 

@@ -46,7 +46,8 @@ def _is_numeric(column: Sequence[object]) -> bool:
 
 
 def table(
-    headers: Sequence[str], rows: Sequence[Sequence[object]], *, max_width: int = 100, gap: int = 2
+    headers: Sequence[str], rows: Sequence[Sequence[object]], *, max_width: int = 100, gap: int = 2,
+    whole: Sequence[int] = (),
 ) -> list[str]:
     """Lines of a table: a header, a rule, then one line per row.
 
@@ -55,6 +56,7 @@ def table(
         rows: Cell values; floats are formatted with :func:`format_number`.
         max_width: Widest line allowed [characters].
         gap: Spaces between columns.
+        whole: Columns cut only when the others cannot be cut any more.
     """
     columns = list(zip(*rows, strict=True)) if rows else [() for _ in headers]
     numeric = [_is_numeric(col) for col in columns]
@@ -62,11 +64,15 @@ def table(
     widths = [max([len(h), *(len(r[i]) for r in cells)]) for i, h in enumerate(headers)]
     overflow = sum(widths) + gap * (len(widths) - 1) - max_width
     while overflow > 0:
-        candidates = [i for i in range(len(widths)) if not numeric[i] and widths[i] > 8]
+        candidates = [i for i in range(len(widths)) if not numeric[i] and widths[i] > 8
+                      and i not in whole] or [
+            i for i in whole if not numeric[i] and widths[i] > 8]
         if not candidates:
             break
         widest = max(candidates, key=lambda i: widths[i])
-        cut = min(overflow, widths[widest] - 8)
+        # down to the next widest, so that two wide columns share the cut
+        next_width = max((widths[i] for i in candidates if i != widest), default=8)
+        cut = min(overflow, widths[widest] - max(next_width, 8) or 1)
         widths[widest] -= cut
         overflow -= cut
 

@@ -16,7 +16,7 @@ if TYPE_CHECKING:
     from servicebot_cli.inspect.report import TreeInfo
     from servicebot_cli.inspect.tree import TreeRow
 
-MAX_LEVELS = 8
+MAX_LEVELS = 5
 
 
 def branch(row: TreeRow) -> str:
@@ -47,4 +47,4 @@ def tree_table(tree: TreeInfo) -> Table:
         notes.append(f"{len(tree.roots)} roots: {', '.join(tree.roots)} (a URDF has one)")
     if tree.unreachable:
         notes.append(f"not reachable from a root: {', '.join(tree.unreachable)}")
-    return Table(table.title, table.headers, table.rows, tuple(notes))
+    return Table(table.title, table.headers, table.rows, tuple(notes), whole=(0,))

@@ -157,3 +157,21 @@ def test_odd_graphs_keep_every_link():
     assert [row.link for row in tree.rows()] == ["a", "b", "r2"]
     assert tree.unreachable == ("c1", "c2")
     assert [j.name for j in tree.edges] == ["ab"]
+
+
+def test_a_deep_humanoids_tree_keeps_every_link_name_whole(run):
+    """example-robot-data's Alex with Psyonic hands: 13 levels deep. Its link column was cut
+    to 'To…', and past depth 10 to the depth alone, while the joint column kept 35
+    characters. The tree draws at most five levels, and link names are cut last."""
+    from servicebot_cli.description.loader import RobotSource, load
+    from tests.kinematics.robots import example_robot
+
+    path = example_robot("alex_description/urdf/alex_psyonic_hands.urdf")
+    result = run("inspect", path, "--section", "tree")
+    assert result.exit_code == 0, result.stderr
+    lines = result.stdout.split("Kinematic tree")[1].splitlines()
+    assert max(map(len, lines)) <= 100  # the table's, below the file's path
+    names = {link.name for link in load(RobotSource.of(path)).links}
+    width = len(next(line for line in lines if line.startswith("---")).split()[0])
+    shown = {line[:width].split("─ ")[-1].strip() for line in lines}
+    assert names <= shown, sorted(names - shown)[:5]
