@@ -8,6 +8,7 @@ on a joint loop is in the URDF but in no model: :func:`require_tree` refuses suc
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
@@ -22,6 +23,7 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 _TOOL_WORDS = ("tool", "tcp", "end_effector", "ee_link", "flange", "gripper")
+_TOOL_FRAME = re.compile(r"(?:^|[_/])(?:tool|tcp|end_effector|flange|ee)(?:\d*)(?:[_/]|$)")
 
 
 def frame_id(model: pin.Model, name: str, known: Sequence[str]) -> int:
@@ -115,13 +117,17 @@ class ToolChoice:
 
 
 def default_tool_frame(robot: RobotDescription) -> ToolChoice:
-    """The arm's tool frame: the tip of the longest chain of turning joints.
+    """The arm's tool frame: a link whose name says so, else the tip of the longest chain.
 
-    Links are ranked by the revolute and continuous joints that move them (a gripper's
-    sliding fingers do not make a chain longer), then by a name that says tool (``tool``,
-    ``tcp``, ``ee_link``, ...), then by being a leaf (no joint's parent), then by all joints,
-    then by URDF order (last wins). On the bundled robot this is ``arm_tool_link``; on
-    UR5 ``tool0``; on Panda ``panda_hand_tcp``.
+    A link with ``tool``, ``tcp``, ``end_effector``, ``flange`` or ``ee`` as a word of its
+    name, that a turning joint moves, comes first (the one with the most turning joints):
+    the longest chain of a robot with a hand runs into a finger (TIAGo's
+    ``hand_little_flex_3_link`` past its ``hand_tool_link``). Otherwise links are ranked by
+    the revolute and continuous joints that move them (a gripper's sliding fingers do not
+    make a chain longer), then by a name that says tool (``tool``, ``tcp``, ``ee_link``,
+    ...), then by being a leaf (no joint's parent), then by all joints, then by URDF order
+    (last wins). On the bundled robot this is ``arm_tool_link``; on UR5 ``tool0``; on Panda
+    ``panda_hand_tcp``.
     """
     model, links = robot.model, link_names(robot)
     turning_types = {"revolute", "continuous"}
@@ -134,6 +140,10 @@ def default_tool_frame(robot: RobotDescription) -> ToolChoice:
         return turning, _looks_like_tool(name), name not in parents, len(joints), order
 
     ranks = {name: rank(i, name) for i, name in enumerate(links)}
+    named = [name for name in links if _names_a_tool(name) and ranks[name][0] > 0]
+    if named:  # TIAGo's arm_tool_link, not the tip of a finger of its hand
+        name = max(named, key=ranks.__getitem__)
+        return ToolChoice(name, ranks[name][3], True)
     name = max(links, key=ranks.__getitem__)
     return ToolChoice(name, ranks[name][3], _looks_like_tool(name))
 
@@ -141,6 +151,15 @@ def default_tool_frame(robot: RobotDescription) -> ToolChoice:
 def link_names(robot: RobotDescription) -> tuple[str, ...]:
     """Every link (frame) name, URDF order."""
     return tuple(link.name for link in robot.links)
+
+
+def _names_a_tool(name: str) -> bool:
+    """A name with a word that says the arm's tool frame.
+
+    ``tool0``, ``panda_hand_tcp``, ``ee_link``, ``ee_gripper_link``; not a gripper's part
+    (``gripper_left_link``) nor ``right_knee_link``.
+    """
+    return _TOOL_FRAME.search(name.lower()) is not None
 
 
 def _looks_like_tool(name: str) -> bool:
