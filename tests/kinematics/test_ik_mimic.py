@@ -88,10 +88,7 @@ def test_panda_fingers_open_together_when_a_finger_is_the_frame(run):
     result, answer = _ik(run, PANDA, "panda_rightfinger", target,
                          "--start", "panda_finger_joint1=0.03")
     assert result.exit_code == 0, result.stderr
-    joints = answer["joints"]
-    assert joints["panda_finger_joint2"] == pytest.approx(joints["panda_finger_joint1"],
-                                                          abs=1e-12)
-    assert _placed(PANDA, joints, "panda_rightfinger") == pytest.approx(target, abs=1e-6)
+    _assert_fingers_together_at(answer["joints"], target)
 
 
 def test_batch_answers_keep_the_fingers_together(run, tmp_path):
@@ -108,10 +105,14 @@ def test_batch_answers_keep_the_fingers_together(run, tmp_path):
     answers = [json.loads(line) for line in out.read_text().splitlines()]
     assert len(answers) == 6 and all(a["success"] for a in answers)
     for answer, target in zip(answers, rows, strict=True):
-        joints = answer["joints"]
-        assert joints["panda_finger_joint2"] == pytest.approx(joints["panda_finger_joint1"],
-                                                              abs=1e-12)
-        assert _placed(PANDA, joints, "panda_rightfinger") == pytest.approx(target, abs=1e-6)
+        _assert_fingers_together_at(answer["joints"], target)
+
+
+def _assert_fingers_together_at(joints, target):
+    """Panda's fingers apart by the same amount, the right one at ``target`` (by yourdfpy)."""
+    assert joints["panda_finger_joint2"] == pytest.approx(joints["panda_finger_joint1"],
+                                                          abs=1e-12)
+    assert _placed(PANDA, joints, "panda_rightfinger") == pytest.approx(target, abs=1e-6)
 
 
 def test_a_follower_with_multiplier_zero_stands_at_its_offset(run, tmp_path):
