@@ -10,7 +10,6 @@ from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.optional_parts import defined_elsewhere
 from servicebot_cli.common.errors import NameNotFound
 from servicebot_cli.description import sensors as specs
-from servicebot_cli.description.elements import parse_float
 from servicebot_cli.description.extensions import Sensor, param
 from servicebot_cli.description.sensors import NoiseSpec
 
@@ -87,8 +86,8 @@ def _lidar(sensor: Sensor) -> Iterator[str]:
     lidar = specs.lidar_spec(sensor)
     root = "lidar" if any(k.startswith("lidar/") for k, _ in sensor.params) else "ray"
     samples = param(sensor.params, f"{root}/scan/horizontal/samples")
-    count = parse_float(samples)
-    if samples is not None and not (count is not None and count > 0 and count.is_integer()):
+    count = specs.sdf_unsigned(samples)  # "666.518" (a computed value) is read as 666
+    if samples is not None and not (count is not None and count > 0):
         yield f"horizontal samples '{samples}' must be a positive whole number"
     low, high = lidar.min_angle_rad, lidar.max_angle_rad
     single = count == 1 and low == high  # one ray: its angle (create_robot's cliff sensors)

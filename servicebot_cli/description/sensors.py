@@ -111,8 +111,22 @@ def _float(params: Params, path: str) -> float | None:
 
 
 def _int(params: Params, path: str) -> int | None:
-    value = _float(params, path)
-    return int(value) if value is not None and value == value and value.is_integer() else None
+    """An unsigned integer parameter as sdformat reads it (see :func:`sdf_unsigned`)."""
+    return sdf_unsigned(param(params, path))
+
+
+_LEADING_DIGITS = re.compile(r"[ \t\n\r\f\v]*\+?([0-9]+)")
+
+
+def sdf_unsigned(text: str | None) -> int | None:
+    """``text`` as sdformat reads an ``unsigned int`` (``std::stoul``): its leading digits.
+
+    A xacro that computes a LIDAR's samples from its resolution writes ``666.518...``
+    (PAL's pmb2 and TIAGo): Gazebo reads 666 and says nothing. None when ``text`` does not
+    start with digits (sdformat refuses it).
+    """
+    match = None if text is None else _LEADING_DIGITS.match(text)
+    return None if match is None else int(match[1])
 
 
 def _noise(params: Params, prefix: str) -> NoiseSpec | None:

@@ -231,7 +231,7 @@ def test_a_topic_too_long_for_a_file_name_still_gets_its_csv_file(tmp_path):
 
 
 @pytest.mark.parametrize(("change", "note"), [
-    (("<samples>3</samples>", "<samples>1e9</samples>"),
+    (("<samples>3</samples>", "<samples>1000000000</samples>"),
      "its 1,000,000,000 rays a scan are more than the 1,000,000 the simulator casts"),
     (("<range><min>0.02</min>", "<range><min>inf</min>"), "its <range><min> must be a number"),
     (("<max>4.0</max>", "<max>nan</max>"), "its <range><min> must be a number"),
