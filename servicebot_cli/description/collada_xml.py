@@ -9,10 +9,13 @@ what it said before, and entity expansion keeps expat's limits.
 
 from __future__ import annotations
 
+import re
 import xml.etree.ElementTree as ET
 from typing import cast
 
 _ROOT_END = b"</COLLADA>"
+# an attribute value holding a raw "<" (each quote kind): "=" and the quoted value
+_RAW_LT_VALUE = re.compile(rb'=[ \t]*"[^"<>]*<[^"]*"|=[ \t]*\'[^\'<>]*<[^\']*\'')
 
 
 class ColladaXmlError(ValueError):
@@ -22,18 +25,27 @@ class ColladaXmlError(ValueError):
 def parse_collada(data: bytes) -> ET.Element:
     """The root element of ``data``; children may include comments (skip non-str tags).
 
+    Two defects Assimp (Gazebo's and RViz's reader) reads past are read past here too:
+    bytes after the root's end, and a raw ``<`` in an attribute value.
+
     Raises:
         ColladaXmlError: Not well-formed XML.
     """
     try:
         return _parsed(data)
+    except ColladaXmlError as exc:
+        first = exc
+    end = data.find(_ROOT_END)
+    if end >= 0 and data[end + len(_ROOT_END):].strip():
+        # bytes after the root's end (NULs and the rest of an older, longer file written
+        # over): left out
+        data = data[:end + len(_ROOT_END)]
+    # velodyne_simulator's meshes: <geometry name="<STL_BINARY>">, as an exporter wrote it
+    data = _RAW_LT_VALUE.sub(lambda m: m[0].replace(b"<", b"&lt;"), data)
+    try:
+        return _parsed(data)
     except ColladaXmlError:
-        end = data.find(_ROOT_END)
-        if end < 0 or not data[end + len(_ROOT_END):].strip():
-            raise
-    # bytes after the root's end (NULs and the rest of an older, longer file written over):
-    # left out, as Assimp (Gazebo's and RViz's reader) leaves them
-    return _parsed(data[:end + len(_ROOT_END)])
+        raise first from None
 
 
 def _parsed(data: bytes) -> ET.Element:

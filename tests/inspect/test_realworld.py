@@ -55,7 +55,10 @@ def test_mass_and_centre_of_mass_match_yourdfpy():
                                atol=1e-9)
 
 
-def test_a_picture_with_missing_texture_images_warns_once_per_image(tmp_path):
+def test_a_picture_with_missing_texture_images_is_drawn_without_a_word(tmp_path):
+    """urdf_tutorial's DAE files name bump maps it does not ship: trimesh printed two
+    tracebacks loading them. The meshes are now read by the readers check uses, which read
+    geometry only: a picture shaded without textures needs no image."""
     ws = tmp_path / "ws" / "src"
     shutil.copytree(TUTORIAL, ws / "urdf_tutorial")
     for image in (ws / "urdf_tutorial" / "meshes").glob("*.png"):
@@ -64,12 +67,7 @@ def test_a_picture_with_missing_texture_images_warns_once_per_image(tmp_path):
     result = run_servicebot("inspect", ws / "urdf_tutorial" / "urdf" / "07-physics.urdf",
                             "--render", picture, env=NO_ROS)
     assert result.returncode == 0, result.stderr
-    assert "Traceback" not in result.stderr
-    lines = result.stderr.splitlines()
-    assert lines[-1] == f"wrote {picture}"
-    warnings = lines[:-1]  # the DAE files name bump maps that urdf_tutorial does not ship
-    assert warnings and all(w.startswith("warning: mesh package://") for w in warnings)
-    assert len(warnings) == len(set(warnings))
+    assert result.stderr.splitlines() == [f"wrote {picture}"]
     import matplotlib.image
 
     assert matplotlib.image.imread(picture).shape[2] in (3, 4)
