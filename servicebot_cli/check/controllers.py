@@ -33,19 +33,24 @@ ROS2_CONTROLLERS = frozenset((
 ))
 """The packages of ros-controls/ros2_controllers: their ``joint``/``joints`` name URDF joints."""
 _NAMESPACE_DEPTH = 3
+_JOINT_KEYS = ("left_wheel_names", "right_wheel_names", "joints", "joint")
 
 
-def check(found: dict[str, yaml.MappingNode], display: str,
-          robot: RobotDescription) -> Iterator[Issue]:
+Sections = dict[str, list[yaml.MappingNode]]
+"""Each node's ``ros__parameters`` sections by node name, in file order (one per namespace)."""
+
+
+def check(found: Sections, display: str, robot: RobotDescription) -> Iterator[Issue]:
     """Every issue of the controller sections ``found`` (of file ``display``) against ``robot``."""
     checker = _Checker(display, robot, frozenset(found))
     types = _types(found)
     for name, params in found.items():
         if name != "controller_manager" and _names_joints(types.get(name)):
-            yield from checker.section(name, params)
+            for section in checker.for_this_robot(params):
+                yield from checker.section(name, section)
 
 
-def sections(text: str, display: str) -> dict[str, yaml.MappingNode] | Issue:
+def sections(text: str, display: str) -> Sections | Issue:
     """The controller sections of ``text``, read once for every robot it is checked against.
 
     Or the SB601 issue that makes ``text`` no controllers file at all, whatever the robot:
@@ -91,36 +96,43 @@ def _ros1_controllers(root: yaml.Node | None) -> str | None:
     return None
 
 
-def _sections(root: yaml.Node | None, depth: int = 0) -> dict[str, yaml.MappingNode]:
-    """Each node's ``ros__parameters`` by node name.
+def _sections(root: yaml.Node | None, depth: int = 0) -> Sections:
+    """Each node's ``ros__parameters`` sections by node name, in file order.
 
     A node may sit under namespaces, as ROS 2 parameter files allow: ``/**:`` (any
     namespace, as irobot_create_control's ``control.yaml``) or ``robot1:`` above the node's
     own key. A node keyed by a path (``/robot1/controller_manager``) is named by its last part.
+    One file may configure the same controller in several namespaces (ros2_control_demos'
+    example 15: ``/rrbot_1/forward_position_controller`` and ``/rrbot_2/...``): each is kept.
     """
-    found: dict[str, yaml.MappingNode] = {}
+    found: Sections = {}
     if not isinstance(root, yaml.MappingNode) or depth > _NAMESPACE_DEPTH:
         return found
     for key, value in root.value:
         params = _get(value, "ros__parameters")
         if isinstance(params, yaml.MappingNode):
-            found[str(key.value).rstrip("/").rpartition("/")[2]] = params
+            found.setdefault(str(key.value).rstrip("/").rpartition("/")[2], []).append(params)
         elif isinstance(value, yaml.MappingNode):
             for name, inner in _sections(value, depth + 1).items():
-                found.setdefault(name, inner)
+                found.setdefault(name, []).extend(inner)
     return found
 
 
-def _types(sections: dict[str, yaml.MappingNode]) -> dict[str, str]:
+def _types(sections: Sections) -> dict[str, str]:
     """Each controller's ``type`` (``package/Class``), by controller name.
 
-    Declared in ``controller_manager``'s parameters, or in the controller's own (ros2_control
-    since Jazzy).
+    Declared in ``controller_manager``'s parameters (nested, or as a dotted ``NAME.type``
+    key: rcl flattens both to one parameter), or in the controller's own (ros2_control since
+    Jazzy).
     """
     types: dict[str, str] = {}
-    manager = sections.get("controller_manager")
+    managers = sections.get("controller_manager", [])
     for name, params in sections.items():
-        for node in (_get(_get(manager, name), "type"), _get(params, "type")):
+        # "NAME.type:" is the same parameter as "NAME: {type:}" (Clearpath's control.yaml)
+        nodes = [node for manager in managers
+                 for node in (_get(_get(manager, name), "type"), _get(manager, f"{name}.type"))]
+        nodes += [_get(section, "type") for section in params]  # "/**/NAME": every namespace
+        for node in nodes:
             if isinstance(node, yaml.ScalarNode) and node.value:
                 types[name] = str(node.value)
     return types
@@ -142,6 +154,11 @@ def _get(node: yaml.Node | None, key: str) -> yaml.Node | None:
             if isinstance(k, yaml.ScalarNode) and k.value == key:
                 return v
     return None
+
+
+def _substituted(text: str) -> bool:
+    """Whether a launch file fills ``text`` in: ``$(var ...)``, or a ``${NAME}`` template."""
+    return "$(" in text or "${" in text
 
 
 def _number(node: yaml.Node | None) -> float | None:
@@ -175,8 +192,35 @@ class _Checker:
                 self._geometry = str(exc).split(": ", 1)[-1]
         return self._geometry
 
+    def for_this_robot(self, sections: list[yaml.MappingNode]) -> list[yaml.MappingNode]:
+        """The sections of one controller that are for this robot.
+
+        Of a controller configured in several namespaces, those whose joint names are all
+        this robot's, when some are: the others configure another robot's controller (the
+        other controller manager of ros2_control_demos' example 15). Else every section.
+        """
+        naming = [s for s in sections if any(_get(s, key) is not None for key in _JOINT_KEYS)]
+        fitting = [s for s in naming if self.fits(s)]
+        if not fitting or len(fitting) == len(naming):
+            return sections
+        return [s for s in sections if s not in naming or s in fitting]
+
+    def fits(self, params: yaml.MappingNode) -> bool:
+        """Whether every joint name of ``params`` is a joint of the robot."""
+        for key in _JOINT_KEYS:
+            node = _get(params, key)
+            items = node.value if isinstance(node, yaml.SequenceNode) else [node]
+            for item in items:
+                if item is None:
+                    continue
+                if not isinstance(item, yaml.ScalarNode):
+                    return False
+                if not self.not_a_joint(str(item.value)) and item.value not in self.joints:
+                    return False
+        return True
+
     def section(self, name: str, params: yaml.MappingNode) -> Iterator[Issue]:
-        for key in ("left_wheel_names", "right_wheel_names", "joints", "joint"):
+        for key in _JOINT_KEYS:
             node = _get(params, key)
             if node is not None:
                 yield from self.names(name, key, node)
@@ -206,9 +250,10 @@ class _Checker:
 
         A chained controller's reference interface (``pid_controller_left_wheel_joint/
         left_wheel_joint``: a controller of this file, a slash, its reference) and a name a
-        launch file fills in (``$(var joint_prefix)1``).
+        launch file fills in (``$(var joint_prefix)1``; PAL's ``${EE_SIDE_PREFIX}_...``,
+        which launch_pal's ``parse_parametric_yaml`` rewrites).
         """
-        return "$(" in name or name.partition("/")[0] in self.controllers
+        return _substituted(name) or name.partition("/")[0] in self.controllers
 
     def joint_of(self, name: str) -> str:
         """The joint a chain of controller references ends at, or ``name`` itself.
@@ -239,14 +284,35 @@ class _Checker:
                     yield Issue("SB605", f"{section}.{key}: '{item.value}'{via} is on the "
                                 f"{wheel.side} (y = {wheel.position_m[1]:g} m in the URDF)",
                                 where=self.where(item))
-        yield from self.value(section, params, "wheel_radius", geometry.wheel_radius_m, "SB603",
+        radius_m, track_m = self.driven(params, geometry)
+        yield from self.value(section, params, "wheel_radius", radius_m, "SB603",
                               ("left_wheel_radius_multiplier",))
-        yield from self.value(section, params, "wheel_separation", geometry.track_m, "SB604",
+        yield from self.value(section, params, "wheel_separation", track_m, "SB604",
                               ("wheel_separation_multiplier",))
+
+    def driven(self, params: yaml.MappingNode, geometry: DriveGeometry) -> tuple[float, float]:
+        """Wheel radius and track of the wheels the controller drives, as far as it names them.
+
+        diff_drive_controller uses its numbers for its own wheels only: passive casters that
+        also turn freely (ball casters off the centre line) are no part of them. Without a
+        named wheel on each side, the URDF's drive wheels, all of them.
+        """
+        named = {self.joint_of(str(item.value))
+                 for key in ("left_wheel_names", "right_wheel_names")
+                 for node in [_get(params, key)] if isinstance(node, yaml.SequenceNode)
+                 for item in node.value if isinstance(item, yaml.ScalarNode)}
+        wheels = [w for w in geometry.wheels if w.joint in named]
+        sides = [[w.position_m[1] for w in wheels if w.side == side] for side in ("left", "right")]
+        if not all(sides):
+            return geometry.wheel_radius_m, geometry.track_m
+        radius_m = sum(w.radius_m for w in wheels) / len(wheels)
+        return radius_m, sum(sides[0]) / len(sides[0]) - sum(sides[1]) / len(sides[1])
 
     def value(self, section: str, params: yaml.MappingNode, key: str, expected: float,
               code: str, multipliers: tuple[str, ...]) -> Iterator[Issue]:
         node = _get(params, key)
+        if isinstance(node, yaml.ScalarNode) and _substituted(str(node.value)):
+            return  # the launch file fills it in
         given = _number(node)
         if node is None or given is None:
             yield Issue(code, f"{section}: {key} is missing or not a number; the URDF implies "
