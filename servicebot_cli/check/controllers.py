@@ -5,6 +5,7 @@ Pure: YAML text and a RobotDescription in, issues out, each placed at its YAML l
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
@@ -27,6 +28,8 @@ ROS2_CONTROLLERS = frozenset((
     "forward_command_controller", "gpio_controllers", "gripper_controllers",
     "imu_sensor_broadcaster", "joint_state_broadcaster", "joint_trajectory_controller",
     "mecanum_drive_controller", "omni_wheel_drive_controller", "parallel_gripper_controller",
+    "parallel_gripper_action_controller",  # the plugin's namespace in parallel_gripper_controller
+    "gps_sensor_broadcaster",
     "pid_controller", "pose_broadcaster", "position_controllers", "range_sensor_broadcaster",
     "steering_controllers_library", "tricycle_controller", "tricycle_steering_controller",
     "velocity_controllers",
@@ -162,12 +165,14 @@ def _substituted(text: str) -> bool:
 
 
 def _number(node: yaml.Node | None) -> float | None:
+    """A finite number, or None (a wheel radius of 1e400 or a multiplier of nan is none)."""
     if not isinstance(node, yaml.ScalarNode):
         return None
     try:
-        return float(node.value)
+        value = float(node.value)
     except ValueError:
         return None
+    return value if math.isfinite(value) else None
 
 
 class _Checker:
@@ -229,6 +234,10 @@ class _Checker:
 
     def names(self, section: str, key: str, node: yaml.Node) -> Iterator[Issue]:
         items = node.value if isinstance(node, yaml.SequenceNode) else [node]
+        if not items and key.endswith("_wheel_names"):
+            yield Issue("SB601", f"{section}.{key} names no wheel: diff_drive_controller "
+                        "refuses an empty list", where=self.where(node),
+                        fix=f"{key}: [the wheel joints of that side]")
         for item in items:
             if not isinstance(item, yaml.ScalarNode):
                 yield Issue("SB601", f"{section}.{key} must be a list of joint names",

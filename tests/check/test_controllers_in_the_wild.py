@@ -58,3 +58,22 @@ def test_a_wrong_wheel_among_casters_is_still_found(tmp_path):
                                                                  "wheel_radius: 0.12"))
     assert [code for code, _ in found] == ["SB603"]
     assert "the URDF's 0.1 m" in found[0][1]
+
+
+def test_what_diff_drive_controller_refuses_is_found(tmp_path):
+    """An empty wheel list (its validator is not_empty), a radius of 1e400 hidden by a
+    multiplier of nan, and parallel_gripper_controller's plugin, whose namespace
+    (parallel_gripper_action_controller) is not its package's name, all passed."""
+    found = _check("dd.yaml", "corner_casters.urdf", tmp_path,
+                   a=("[left_wheel_joint]", "[]"),
+                   b=("wheel_radius: 0.1", "wheel_radius: 1e400\n    "
+                                           "left_wheel_radius_multiplier: nan"))
+    codes = [code for code, _ in found]
+    assert codes.count("SB601") == 1 and codes.count("SB603") == 1, found
+    gripper = tmp_path / "gripper.yaml"
+    gripper.write_text("controller_manager:\n  ros__parameters:\n    gripper_controller:\n"
+                       "      type: parallel_gripper_action_controller/GripperActionController\n"
+                       "gripper_controller:\n  ros__parameters:\n    joint: no_such_joint\n")
+    result = run_servicebot("check", "controllers", gripper, "--urdf", HERE / "arm.urdf",
+                            "--format", "json")
+    assert [f["code"] for f in findings(result.stdout)] == ["SB602"]
