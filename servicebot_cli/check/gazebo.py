@@ -7,7 +7,7 @@ from collections.abc import Iterator, Mapping
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue, Severity
-from servicebot_cli.check.optional_parts import defined_elsewhere
+from servicebot_cli.check.optional_parts import Definition, defined_elsewhere
 from servicebot_cli.common.errors import NameNotFound
 from servicebot_cli.description import sensors as specs
 from servicebot_cli.description.extensions import Sensor, param
@@ -41,7 +41,7 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
 
 
 def _unknown_reference(reference: str, names: list[str],
-                       optional: Mapping[str, tuple[str, int, str]],
+                       optional: Mapping[str, Definition],
                        element: ET.Element | None) -> Issue:
     """SB501; a warning when the sources define it in a part this expansion leaves out."""
     where = f"<gazebo reference=\"{reference}\">"
@@ -53,9 +53,10 @@ def _unknown_reference(reference: str, names: list[str],
     if found is None:
         hint = str(NameNotFound.for_name(reference, names)).split("; ", 1)[-1]
         return Issue("SB501", f"{where} names no link or joint; {hint}", element)
-    file, line, kind = found
+    file, line, kind, written = found
+    named = f"'{reference}'" if written == reference else f"'{written}' (here '{reference}')"
     return Issue("SB501", f"{where} names no link or joint of this expansion; {file}:{line} "
-                 f"defines {kind} '{reference}' in a part it leaves out (a xacro condition not "
+                 f"defines {kind} {named} in a part it leaves out (a xacro condition not "
                  "taken, or an include its options leave out), so Gazebo ignores the block",
                  element, severity=Severity.WARNING,
                  fix="nothing if that part is optional; else check the xacro arguments, "

@@ -29,19 +29,26 @@ _DEFINITION = re.compile(rb"<(link|joint)\b([^>]*)>")
 _NAME = re.compile(rb"\bname\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
 _TYPE = re.compile(rb"\btype\s*=")
 _HEAD_BYTES = 1 << 20
+_EXPRESSION = re.compile(rb"\$\{[^}]*\}|\$\([^)]*\)")
+_FEWEST_LITERAL = 4
 
 
-def defined_elsewhere(robot: RobotDescription,
-                      names: Collection[str]) -> dict[str, tuple[str, int, str]]:
-    """For each of ``names`` the robot's sources define: the file, line and kind.
+Definition = tuple[str, int, str, str]
+"""Where a name is defined: file, line, kind (``link`` or ``joint``), the name as written."""
 
-    Kind is ``link`` or ``joint``. Nothing for a description that is not expanded from
-    xacro, whose file is all there is.
+
+def defined_elsewhere(robot: RobotDescription, names: Collection[str]) -> dict[str, Definition]:
+    """For each of ``names`` the robot's sources define: where, and as what.
+
+    A name written with xacro expressions (franka's ``${arm_id}_leftfinger``, in a macro its
+    ``hand:=false`` leaves out) defines each name it can expand to, when its literal text
+    says enough (:data:`_FEWEST_LITERAL` characters): ``${prefix}${name}`` defines nothing.
+    Nothing for a description that is not expanded from xacro, whose file is all there is.
     """
     if not robot.expanded or not names:
         return {}
     wanted = {name.encode(): name for name in names}
-    found: dict[str, tuple[str, int, str]] = {}
+    found: dict[str, Definition] = {}
     for path in included_files([Path(file) for file in robot.files]):
         try:
             with path.open("rb") as handle:
@@ -50,13 +57,27 @@ def defined_elsewhere(robot: RobotDescription,
             continue
         for match in _DEFINITION.finditer(text):
             named = _NAME.search(match[2])
-            name = wanted.get(named[1] if named[1] is not None else named[2]) if named else None
-            if name is None or name in found or (match[1] == b"joint"
-                                                 and not _TYPE.search(match[2])):
+            if named is None or (match[1] == b"joint" and not _TYPE.search(match[2])):
                 continue
+            written = named[1] if named[1] is not None else named[2]
             line = text.count(b"\n", 0, match.start()) + 1
-            found[name] = (display_path(path), line, match[1].decode())
+            for name in _defined(written, wanted):
+                found.setdefault(name, (display_path(path), line, match[1].decode(),
+                                        written.decode("utf-8", "replace")))
         if len(found) == len(wanted):
             break
     return found
+
+
+def _defined(written: bytes, wanted: dict[bytes, str]) -> list[str]:
+    """The names of ``wanted`` that the name ``written`` in a source defines."""
+    if written in wanted:
+        return [wanted[written]]
+    if b"$" not in written:
+        return []
+    parts = _EXPRESSION.split(written)
+    if sum(len(part) for part in parts) < _FEWEST_LITERAL:
+        return []
+    pattern = re.compile(b".+".join(re.escape(part) for part in parts), re.DOTALL)
+    return [name for raw, name in wanted.items() if pattern.fullmatch(raw)]
 

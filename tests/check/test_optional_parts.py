@@ -119,3 +119,37 @@ def test_only_this_robots_own_sources_count_and_only_definitions(run, tmp_path):
         "stick_link": "warning", "bulkhead_link": "warning", "imu_lnk": "error",
         "lidar_link": "error", "wheel_joint": "error", "sonar_link": "error"}
     assert "dog.urdf.xacro:13 defines link 'stick_link'" in found["stick_link"]["message"]
+
+
+FINGERS = f"""<?xml version="1.0"?>
+<robot name="arm" {XACRO}>
+  <xacro:arg name="hand" default="false"/>
+  <xacro:property name="arm_id" value="fr3"/>
+  <xacro:macro name="hand" params="arm_id">
+    <link name="${{arm_id}}_leftfinger"/>
+    <joint name="${{arm_id}}_finger_joint1" type="prismatic">
+      <parent link="base_link"/><child link="${{arm_id}}_leftfinger"/>
+      <limit lower="0" upper="0.04" effort="1" velocity="1"/>
+    </joint>
+    <link name="${{name}}"/>
+  </xacro:macro>
+  <link name="base_link"/>
+  <xacro:if value="$(arg hand)"><xacro:hand arm_id="${{arm_id}}"/></xacro:if>
+  <gazebo reference="${{arm_id}}_leftfinger"><mu1>1.13</mu1></gazebo>
+  <gazebo reference="fr3_rightfinger"><mu1>1.13</mu1></gazebo>
+</robot>
+"""
+
+
+def test_a_name_written_with_expressions_defines_the_names_it_expands_to(run, tmp_path):
+    """franka_description with hand:=false gazebo:=true: the fingers' <gazebo> blocks stay,
+    and the fingers are made by a macro under a condition not taken, their names written
+    ${arm_id}_leftfinger. A template of no literal text (${name}) defines nothing."""
+    robot = tmp_path / "arm.urdf.xacro"
+    robot.write_text(FINGERS)
+    _, found = _sb501(run, robot)
+    left, right = found["fr3_leftfinger"], found["fr3_rightfinger"]
+    assert left["severity"] == "warning"
+    assert "defines link '${arm_id}_leftfinger' (here 'fr3_leftfinger') in a part it leaves " \
+        "out" in left["message"]
+    assert right["severity"] == "error"
