@@ -90,16 +90,21 @@ def is_xacro(path: Path, data: bytes) -> bool:
 
 
 def needs_xacro(data: bytes) -> bool:
-    """Whether the bytes hold xacro elements and ``${...}`` expressions outside comments.
+    """Whether the bytes hold ``${...}`` expressions and xacro, both outside comments.
 
     No URDF reader takes ``${base_length}`` for a number, so such a file is only ever given
     to xacro (navigation2_tutorials' ``sam_bot_description.urdf``, which its launch file
-    expands with ``Command(['xacro ', model])``).
+    expands with ``Command(['xacro ', model])``). Xacro is its elements, or its namespace
+    declared (turtlebot3_simulations' ``common_properties.urdf``: ``${255/255}`` in colours,
+    no xacro element).
     """
-    if b"${" not in data or not _xacro_words(data):
+    def xacro(text: bytes) -> bool:
+        return _xacro_words(text) or b"xmlns:xacro" in text
+
+    if b"${" not in data or not xacro(data):
         return False
     text = without_comments(data)
-    return b"${" in text and _xacro_words(text)
+    return b"${" in text and xacro(text)
 
 
 def uses_xacro(data: bytes) -> bool:

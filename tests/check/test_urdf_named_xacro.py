@@ -40,3 +40,15 @@ def test_a_urdf_with_xacro_elements_but_no_expression_is_read_as_it_is(run, tmp_
     exit_code, found = _check(run, tmp_path, text)
     assert exit_code == 0 and [code for code, _ in found] == ["SB017"]
     assert "read as plain URDF" in found[0][1]
+
+
+def test_a_urdf_with_expressions_and_only_the_xacro_namespace_is_expanded(run, tmp_path):
+    """turtlebot3_simulations' common_properties.urdf: ${255/255} in colours, the xacro
+    namespace declared, no xacro element. It was read as plain URDF: SB013 on each."""
+    text = SAM_BOT_LIKE.replace('<xacro:property name="base_width" value="0.31"/>', "") \
+        .replace("${base_width}", "${31/100}")
+    exit_code, found = _check(run, tmp_path, text)
+    assert exit_code == 0 and [code for code, _ in found] == ["SB017"]
+    assert "expanded with xacro" in found[0][1]
+    without = text.replace(' xmlns:xacro="http://ros.org/wiki/xacro"', "")
+    assert "SB013" in {code for code, _ in _check(run, tmp_path, without)[1]}
