@@ -91,6 +91,9 @@ class CheckEnv:
             raise MeshNotFound(f"mesh '{filename}': {resolved.error}", resolved)
         problem = not_a_file(path)
         if problem is not None:
+            if "$(" in filename:  # sjtu_drone's stale .urdf: file://$(find ...)/models/...
+                problem += ("; its '$(...)' is xacro's, and nothing substitutes it in a file "
+                            "xacro does not expand")
             raise MeshNotFound(f"mesh '{filename}': {path} {problem}", resolved)
         return path
 

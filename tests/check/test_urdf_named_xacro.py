@@ -52,3 +52,16 @@ def test_a_urdf_with_expressions_and_only_the_xacro_namespace_is_expanded(run, t
     assert "expanded with xacro" in found[0][1]
     without = text.replace(' xmlns:xacro="http://ros.org/wiki/xacro"', "")
     assert "SB013" in {code for code, _ in _check(run, tmp_path, without)[1]}
+
+
+def test_a_mesh_named_with_an_unexpanded_find_says_so(run, tmp_path):
+    """sjtu_drone's stale .urdf: file://$(find sjtu_drone_description)/models/... . The
+    message showed only /models/..., where the substitution had gone."""
+    path = tmp_path / "drone.urdf"
+    path.write_text('<robot name="d"><link name="base_link"><visual><geometry><mesh filename='
+                    '"file://$(find sjtu_drone_description)/models/quadrotor.dae"/></geometry>'
+                    '</visual></link></robot>')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB401")
+    (found,) = findings(result.stdout)
+    assert found["message"].endswith("does not exist; its '$(...)' is xacro's, and nothing "
+                                     "substitutes it in a file xacro does not expand")
