@@ -124,9 +124,15 @@ class Clamped:
     limit: float
     unit: str
     side: str
+    because: str = ""
+    """A joint that follows this one (``<mimic>``), whose limits moved it; "" for its own."""
 
     def note(self) -> str:
         """One stderr line: which joint, the value given, the limit used."""
+        if self.because:
+            return (f"note: --clamp: joint '{self.joint}' = {self.given:g} {self.unit} puts "
+                    f"'{self.because}', which mimics it, outside its limits; using "
+                    f"{self.limit:g} {self.unit}")
         return (f"note: --clamp: joint '{self.joint}' = {self.given:g} {self.unit} is outside "
                 f"its limits; using its {self.side} limit {self.limit:g} {self.unit}")
 
@@ -179,9 +185,13 @@ def clamped_user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *
         values = mimics.apply(values, assignments, space)
         for follower, leader in zip(mimics.follower, mimics.leader, strict=True):
             named[follower] |= named[leader]  # in rule order: a follower's follower too
-    inside = space.clamped(values)
     if clamp:
-        return np.where(named, inside, values), _clamped(space, values, inside, named, deg)
+        held = {} if mimics is None else _hold_leaders(
+            space, values, named, _rules_of(mimics, assignments, space))
+        inside = space.clamped(values)
+        return np.where(named, inside, values), _clamped(space, values, inside, named, deg,
+                                                         held)
+    inside = space.clamped(values)
     probe = np.where(named, values, inside)
     try:
         space.checked(probe)
@@ -215,16 +225,60 @@ def _rules_of(mimics: Mimics | None, given: Collection[str],
     return rules
 
 
+def _hold_leaders(space: JointSpace, values: FloatArray, named: npt.NDArray[np.bool_],
+                  rules: Mapping[int, tuple[int, float, float]]) -> dict[int, tuple[float, str]]:
+    """Bring each given leader, in place, where it and every joint that follows it are in limits.
+
+    ``--clamp`` clamping a follower, or its leader, alone would break ``<mimic>``: a pose no
+    robot takes (PR2's gripper, whose mirrored parallel links allow only 0). The leader is
+    clamped into the range where it and its followers are all within their limits, when
+    there is one, and the followers set from it again. Returns, for each leader moved, the
+    value given and the follower whose limits moved it ("" for its own).
+    """
+    held: dict[int, tuple[float, str]] = {}
+    for root in sorted({root for root, _, _ in rules.values()}):
+        if not named[root]:
+            continue
+        given = float(values[root])
+        low, high = space.lower[root], space.upper[root]
+        low, high = (-math.inf, math.inf) if math.isnan(low) else (low, high)
+        by_low = by_high = ""  # the follower whose limits set each end; "" for its own
+        for follower, (lead, k, c) in rules.items():
+            if lead != root or k == 0.0 or math.isnan(space.lower[follower]):
+                continue
+            ends = sorted(((space.lower[follower] - c) / k, (space.upper[follower] - c) / k))
+            if ends[0] > low:
+                low, by_low = ends[0], space.names[follower]
+            if ends[1] < high:
+                high, by_high = ends[1], space.names[follower]
+        if low > high or low <= given <= high:
+            continue  # no value suits them all (each is clamped alone), or it is in range
+        values[root] = min(max(given, low), high) + 0.0
+        held[root] = (given, by_low if given < low else by_high)
+        for follower, (lead, k, c) in rules.items():
+            if lead == root:
+                values[follower] = k * values[root] + c
+    return held
+
+
 def _clamped(space: JointSpace, values: FloatArray, inside: FloatArray,
-             named: npt.NDArray[np.bool_], deg: bool) -> tuple[Clamped, ...]:
-    """The named joints whose value ``inside`` moved by more than the limits' slack."""
-    moved = named & (np.abs(values - inside) > 1e-9)
+             named: npt.NDArray[np.bool_], deg: bool,
+             held: Mapping[int, tuple[float, str]]) -> tuple[Clamped, ...]:
+    """The named joints whose value ``inside`` moved by more than the limits' slack.
+
+    A leader ``held`` by a follower is said so, from the value given; its followers, which
+    follow it, are not.
+    """
+    given = values.copy()
+    for leader, (value, _) in held.items():
+        given[leader] = value
+    moved = named & (np.abs(given - inside) > 1e-9)
     out = []
     for i in np.flatnonzero(moved):
         scale = math.degrees(1.0) if deg and space.types[i] != "prismatic" else 1.0
-        side = "lower" if values[i] < inside[i] else "upper"
-        out.append(Clamped(space.names[i], float(values[i] * scale), float(inside[i] * scale),
-                           unit_of(space, int(i), deg), side))
+        side = "lower" if given[i] < inside[i] else "upper"
+        out.append(Clamped(space.names[i], float(given[i] * scale), float(inside[i] * scale),
+                           unit_of(space, int(i), deg), side, held.get(int(i), (0.0, ""))[1]))
     return tuple(out)
 
 
