@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import difflib
 import errno
+import functools
 from collections.abc import Iterable
 from enum import IntEnum
 
@@ -89,18 +90,25 @@ class NameNotFound(ServicebotError):
     @classmethod
     def for_name(cls, name: str, candidates: Iterable[str], *, robot: str = "") -> NameNotFound:
         """Make the error for ``name`` with up to three close matches from ``candidates``."""
-        names = list(candidates)
-        close = difflib.get_close_matches(name, names, n=3, cutoff=0.5)
+        names = tuple(candidates)
         owner = f" in {robot}" if robot else ""
-        if close:
-            hint = "did you mean " + " or ".join(f"'{c}'" for c in close) + "?"
-        elif names:
-            nearest = sorted(names, key=lambda candidate: _distance(name, candidate))
-            shown = ", ".join(nearest[:8]) + (", ..." if len(names) > 8 else "")
-            hint = f"known, nearest first: {shown}"
-        else:
-            hint = f"the robot has no {cls.kind}s"
+        hint = _hint(name, names) if names else f"the robot has no {cls.kind}s"
         return cls(f"no {cls.kind} '{name}'{owner}; {hint}")
+
+
+@functools.lru_cache(maxsize=256)
+def _hint(name: str, names: tuple[str, ...]) -> str:
+    """Up to three close matches of ``name``, else the nearest names.
+
+    Cached: a robot's variants bring the same wrong name back file after file (TIAGo's
+    ``wheel_{side}_joint``), and matching it against PR2's 400 names takes 17 ms.
+    """
+    close = difflib.get_close_matches(name, names, n=3, cutoff=0.5)
+    if close:
+        return "did you mean " + " or ".join(f"'{c}'" for c in close) + "?"
+    nearest = sorted(names, key=lambda candidate: _distance(name, candidate))
+    return "known, nearest first: " + ", ".join(nearest[:8]) + (", ..." if len(names) > 8
+                                                               else "")
 
 
 def _distance(name: str, candidate: str) -> tuple[bool, float]:
