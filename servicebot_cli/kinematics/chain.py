@@ -138,6 +138,10 @@ class Chain:
         self._space = space
         source = model if self.coupling is None else self.coupling.model
         kept = set(keep) if self.coupling is None else self.coupling.keep
+        if not kept:
+            raise NothingMoves(f"frame '{frame}' moves only with joints that stand at their "
+                               "<mimic> offset (multiplier 0): no joint moves it; choose "
+                               "another frame")
         lock = [j for j in range(1, model.njoints) if j not in kept]
         reference = pin.neutral(source) if self.coupling is None else self.coupling.reference
         self.full_nq = model.nq
@@ -156,7 +160,9 @@ class Chain:
         self.reach = chain_reach(model, frame_id(model, frame, known))
 
     def to_chain(self, q_full: FloatArray) -> FloatArray:
-        """The chain's ``q`` from a full ``q``."""
+        """The chain's ``q`` from a full ``q`` (a follower solved for starts at its leader's)."""
+        if self.coupling is not None:
+            q_full = self.coupling.seeded(self._space, q_full)
         return q_full[self.full_index]
 
     def to_full(self, q_chain: FloatArray, q_full: FloatArray) -> FloatArray:

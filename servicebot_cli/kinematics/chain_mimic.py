@@ -127,6 +127,17 @@ class Coupling:
                     "<mimic> elements")
             lower[i], upper[i] = low + 0.0, high + 0.0  # numpy draws in nothing like [0.0, -0.0]
 
+    def seeded(self, space: JointSpace, q_full: FloatArray) -> FloatArray:
+        """``q_full`` with each driver set from its group's root (a new array).
+
+        A start names the leader (``--start panda_finger_joint1=0.03``); the chain solves for
+        the follower that moves the frame, which starts where the leader puts it.
+        """
+        values = space.from_q(q_full)
+        for root, drive in self.driver:
+            values[drive] = self.groups.factor[drive] * values[root] + self.groups.offset[drive]
+        return space.to_q(values, q_full)
+
     def follow(self, space: JointSpace, q_full: FloatArray) -> FloatArray:
         """``q_full`` with every member of every group set from its driver (a new array).
 
@@ -180,6 +191,13 @@ def coupling(model: pin.Model, space: JointSpace, mimics: Mimics,
             continue
         drive = moving[0]
         driver.append((root, drive))
+        bounded = [k for k in groups.members(root) if k != drive and not math.isnan(
+            space.lower[k])]
+        if space.types[drive] == "continuous" and bounded:
+            raise CannotCouple(
+                f"joint '{space.names[bounded[0]]}' follows continuous joint "
+                f"'{space.names[drive]}' (<mimic>) and has limits: ik keeps the limits of "
+                "coupled revolute and prismatic joints only")
         for k in moving[1:]:
             if "continuous" in (space.types[k], space.types[drive]):
                 raise CannotCouple(

@@ -168,3 +168,35 @@ def test_limits_that_leave_one_value_hold_the_joints_there(run, tmp_path):
     result, answer = _ik(run, path, "tool", _placed(_arm(tmp_path), {"shoulder": 0.4}, "tool"))
     assert result.exit_code == 1 and answer["attempts"] > 1
     assert answer["joints"]["shoulder"] == 0.0 and answer["joints"]["level"] == 0.0
+
+
+def test_a_frame_only_a_standing_follower_moves_is_one_line(run, tmp_path):
+    path = tmp_path / "stand.urdf"
+    path.write_text("""<robot name="stand"><link name="base"/><link name="tip"/><link name="b"/>
+  <joint name="lead" type="revolute"><parent link="base"/><child link="b"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+  <joint name="stands" type="revolute"><parent link="base"/><child link="tip"/>
+    <origin xyz="0.2 0 0"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1"
+    velocity="1"/><mimic joint="lead" multiplier="0" offset="0.3"/></joint></robot>""")
+    result = run("ik", path, "-f", "tip", "--position", "0.2", "0", "0.1")
+    assert_one_line_error(result, 2, "frame 'tip' moves only with joints that stand at "
+                          "their <mimic> offset")
+
+
+def test_a_bounded_follower_of_a_continuous_leader_is_one_line(run, tmp_path):
+    path = _arm(tmp_path)
+    path.write_text(path.read_text().replace('name="shoulder" type="revolute"',
+                                             'name="shoulder" type="continuous"'))
+    result = run("ik", path, "-f", "tool", "--position", "0.3", "0", "0.2")
+    assert_one_line_error(result, 2, "joint 'level' follows continuous joint 'shoulder'")
+
+
+def test_a_start_given_to_the_leader_starts_the_follower_solved_for(run):
+    """Panda's right finger moves with panda_finger_joint2, which follows joint1: a start
+    of joint1 is where the search begins (it began at joint2's 0)."""
+    start = {"panda_joint4": -2.0, "panda_joint6": 1.5, "panda_finger_joint1": 0.03}
+    target = _placed(PANDA, start, "panda_rightfinger")
+    result, answer = _ik(run, PANDA, "panda_rightfinger", target,
+                         *(f"--start={k}={v}" for k, v in start.items()))
+    assert result.exit_code == 0, result.stderr
+    assert answer["joints"]["panda_finger_joint2"] == pytest.approx(0.03, abs=1e-9)
