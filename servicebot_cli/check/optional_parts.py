@@ -31,6 +31,8 @@ _TYPE = re.compile(rb"\btype\s*=")
 _HEAD_BYTES = 1 << 20
 _EXPRESSION = re.compile(rb"\$\{[^}]*\}|\$\([^)]*\)")
 _FEWEST_LITERAL = 4
+"""Characters a name written with expressions must spell out, words every name has aside."""
+_GENERIC = re.compile(rb"[_/.-]|link|joint|frame|base", re.IGNORECASE)
 
 
 Definition = tuple[str, int, str, str]
@@ -42,7 +44,8 @@ def defined_elsewhere(robot: RobotDescription, names: Collection[str]) -> dict[s
 
     A name written with xacro expressions (franka's ``${arm_id}_leftfinger``, in a macro its
     ``hand:=false`` leaves out) defines each name it can expand to, when its literal text
-    says enough (:data:`_FEWEST_LITERAL` characters): ``${prefix}${name}`` defines nothing.
+    says enough (:data:`_FEWEST_LITERAL` characters besides separators and words such as
+    ``link``): ``${prefix}${name}`` and ``${name}_link`` define nothing.
     Nothing for a description that is not expanded from xacro, whose file is all there is.
     """
     if not robot.expanded or not names:
@@ -76,8 +79,9 @@ def _defined(written: bytes, wanted: dict[bytes, str]) -> list[str]:
     if b"$" not in written:
         return []
     parts = _EXPRESSION.split(written)
-    if sum(len(part) for part in parts) < _FEWEST_LITERAL:
-        return []
-    pattern = re.compile(b".+".join(re.escape(part) for part in parts), re.DOTALL)
+    if sum(len(_GENERIC.sub(b"", part)) for part in parts) < _FEWEST_LITERAL:
+        return []  # ${name}_link says nothing of which link: any typo of one would match
+    # an expression may expand to nothing (${prefix}tool0 with the usual empty prefix)
+    pattern = re.compile(b".*".join(re.escape(part) for part in parts), re.DOTALL)
     return [name for raw, name in wanted.items() if pattern.fullmatch(raw)]
 

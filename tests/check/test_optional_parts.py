@@ -153,3 +153,29 @@ def test_a_name_written_with_expressions_defines_the_names_it_expands_to(run, tm
     assert "defines link '${arm_id}_leftfinger' (here 'fr3_leftfinger') in a part it leaves " \
         "out" in left["message"]
     assert right["severity"] == "error"
+
+
+def test_a_name_template_that_says_nothing_hides_no_typo(run, tmp_path):
+    """A used macro writing ${name}_link would match any *_link, so a typo in a <gazebo
+    reference> became a warning; an empty ${prefix} before tool0 matched nothing."""
+    robot = tmp_path / "arm.urdf.xacro"
+    robot.write_text(f"""<?xml version="1.0"?>
+<robot name="arm" {XACRO}>
+  <xacro:arg name="tool" default="false"/>
+  <xacro:property name="prefix" value=""/>
+  <xacro:macro name="wheel" params="name">
+    <link name="${{name}}_link"/>
+    <joint name="${{name}}_joint" type="fixed"><parent link="base_link"/>
+      <child link="${{name}}_link"/></joint>
+  </xacro:macro>
+  <link name="base_link"/>
+  <xacro:wheel name="lidar"/>
+  <xacro:if value="$(arg tool)"><link name="${{prefix}}tool0"/></xacro:if>
+  <gazebo reference="lidr_link"><sensor name="s" type="ray"/></gazebo>
+  <gazebo reference="tool0"><mu1>1</mu1></gazebo>
+</robot>
+""")
+    _, found = _sb501(run, robot)
+    assert found["lidr_link"]["severity"] == "error"
+    assert "did you mean 'lidar_link'" in found["lidr_link"]["message"]
+    assert found["tool0"]["severity"] == "warning"
