@@ -222,16 +222,19 @@ def _published(robot: RobotDescription, types: tuple[str, ...],
 
 
 def _unplaced(robot: RobotDescription) -> tuple[str, ...]:
-    """A stderr note for each sensor whose ``<gazebo reference>`` names no link.
+    """A stderr note for each sensor whose ``<gazebo reference>`` names no link or joint.
+
+    A force-torque sensor sits on a joint; the simulator makes none of those either, and
+    says nothing of them.
 
     sdformat applies a ``<gazebo reference>`` block to the link it names and drops the rest,
     so Gazebo makes no such sensor: interbotix's locobot puts its Create 3 cliff sensors
     under ``cliff_side_left`` where the link is ``locobot/cliff_side_left``.
     """
-    links = {link.name for link in robot.links}
+    parts = {link.name for link in robot.links} | {joint.name for joint in robot.joints}
     return tuple(f"note: sensor '{s.name}' is not simulated: its <gazebo reference="
-                 f"\"{s.reference}\"> names no link, so Gazebo drops it"
-                 for s in robot.sensors if s.reference and s.reference not in links)
+                 f"\"{s.reference}\"> names no link or joint, so Gazebo drops it"
+                 for s in robot.sensors if s.reference and s.reference not in parts)
 
 
 def _placed(robot: RobotDescription, sensor: Sensor, spec: SpecT,

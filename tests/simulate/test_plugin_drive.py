@@ -195,6 +195,13 @@ def test_a_sensor_on_a_link_the_robot_lacks_is_left_out_with_a_note(tmp_path):
                             "--format", "json")
     assert result.returncode == 0, result.stderr
     assert ("note: sensor 'cliff' is not simulated: its <gazebo reference=\"cliff_side_left\"> "
-            "names no link, so Gazebo drops it") in result.stderr
+            "names no link or joint, so Gazebo drops it") in result.stderr
     _, messages = _run(robot, tmp_path)
     assert "/cliff" not in messages and len(messages["/demo/odom"]) == 1000
+    on_a_joint = tmp_path / "ft.urdf"  # a force-torque sensor sits on a joint: no note
+    on_a_joint.write_text(SAM_BOT.read_text().replace("</robot>", """
+  <gazebo reference="drivewhl_l_joint"><sensor name="ft" type="force_torque">
+    <update_rate>10</update_rate></sensor></gazebo>
+</robot>"""))
+    quiet = run_servicebot("simulate", on_a_joint, "--headless", "--duration-s", "1")
+    assert quiet.returncode == 0 and "not simulated" not in quiet.stderr, quiet.stderr
