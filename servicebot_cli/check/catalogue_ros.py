@@ -53,7 +53,9 @@ ROS_RULES = (
     Rule("SB510", "control-hardware-param", E, "A malformed hardware parameter",
          "A serial port must be a device path (/dev/ttyUSB0, /dev/serial/by-id/...) or a "
          "network port number, and a baud rate a standard one (9600, 115200, ...) or, from "
-         "1 Mbaud, any rate a USB adapter takes (Dynamixel buses run at 4.5 or 6.25 Mbaud).",
+         "1 Mbaud, any rate a USB adapter takes (Dynamixel buses run at 4.5 or 6.25 Mbaud). "
+         "A simulated or mock component (Gazebo's systems, mock_components) opens no port and "
+         "is not judged.",
          "Write a device path and a standard baud rate."),
     Rule("SB511", "transmission-unknown-joint", W,
          "<transmission> names a joint that does not exist",

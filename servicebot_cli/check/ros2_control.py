@@ -26,6 +26,9 @@ _BAUD_KEYS = ("baud_rate", "baudrate", "baud")
 CUSTOM_BAUD_FROM = 1_000_000
 """From 1 Mbaud, USB-serial adapters (FTDI, ROBOTIS' U2D2) take any rate: Dynamixel buses run
 at 4.5, 6.25 (open_manipulator's OMY arms) or 10.5 Mbaud."""
+_NO_DEVICE_PLUGINS = ("gz_ros2_control/", "ign_ros2_control/", "gazebo_ros2_control/",
+                      "mock_components/", "fake_components/")
+"""Hardware plugins that open no device: Gazebo's systems and ros2_control's mock."""
 _PORT_RE = re.compile(r"(/dev/\S+|COM\d+|(socket|rfc2217|loop|spy|hwgrep)://\S*)")
 
 
@@ -91,8 +94,12 @@ def _hardware(block: Ros2Control) -> Iterator[Issue]:
 
     A ``port`` that is a number is a network one (ros2_kortex's ``<param name="port">10000``,
     beside ``robot_ip``), not a serial device. Rates from :data:`CUSTOM_BAUD_FROM` are not
-    judged.
+    judged. A simulated or mock component opens no port: Gazebo's systems and
+    ``mock_components`` never read these parameters (ar4_ros_driver's Gazebo robot reuses its
+    driver's macro with ``serial_port="None"``).
     """
+    if (block.plugin or "").startswith(_NO_DEVICE_PLUGINS):
+        return
     for key, value in block.hardware_params:
         if key in _PORT_KEYS and not _ascii_digits(value.strip()) \
                 and not _PORT_RE.fullmatch(value):

@@ -40,3 +40,16 @@ def test_digits_other_than_0_to_9_are_no_port_and_no_rate(run, tmp_path):
     assert "baud_rate '²' is not a standard baud rate" in message
     (message,) = _sb510(run, tmp_path, "٣")
     assert "port '٣' is not a serial device path" in message
+
+
+def test_a_simulated_or_mock_component_opens_no_port(run, tmp_path):
+    """ar4_ros_driver's Gazebo robot reuses its driver's macro with serial_port="None":
+    gz_ros2_control's GazeboSimSystem and mock_components never read the parameter."""
+    text = fixture("SB510").read_text()
+    plugin = text.split("<plugin>")[1].split("</plugin>")[0]
+    for simulated in ("gz_ros2_control/GazeboSimSystem", "mock_components/GenericSystem"):
+        path = tmp_path / "robot.urdf"
+        path.write_text(text.replace(plugin, simulated))
+        result = run("check", path, "--format", "json", "--isolated", "--select", "SB510")
+        assert findings(result.stdout) == [], simulated
+    assert _sb510(run, tmp_path, "None")  # the real driver's would open it
