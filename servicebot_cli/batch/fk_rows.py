@@ -153,6 +153,8 @@ class FkBatch:
                                      space.upper[bounded])
         if self.clamp:
             moved = named & (np.abs(values - inside) > 1e-9)
+            if mimics.follower and moved.any():
+                return None  # clamped leader by leader, with its followers: line by line
             self.clamped_values += int(moved.sum())
             self.clamped_lines += int(moved.any(axis=1).sum())
             return np.where(named, inside, values)

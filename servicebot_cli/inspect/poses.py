@@ -32,16 +32,26 @@ def checked_values(robot: RobotDescription, values: Mapping[str, float], *,
         OutOfLimits: A value outside its joint's limits (unless ``clamp``), or a follower
             that its leader's value puts outside its own.
     """
+    return checked_and_held(robot, values, clamp=clamp)[0]
+
+
+def checked_and_held(robot: RobotDescription, values: Mapping[str, float], *,
+                     clamp: bool = False) -> tuple[dict[str, float], dict[str, str]]:
+    """:func:`checked_values`, and each leader ``clamp`` held where a follower fits.
+
+    The second mapping names, for such a leader, the follower whose limits moved it.
+    """
     if not values:
-        return {}
+        return {}, {}
     space = robot.joint_space
     mimics = Mimics.of(robot.joints, space)
-    vector, _ = clamped_user_vector(space, values.items(), clamp=clamp, mimics=mimics)
+    vector, clamped = clamped_user_vector(space, values.items(), clamp=clamp, mimics=mimics)
+    held = {c.joint: c.because for c in clamped if c.because}
     kept = {space.index(name) for name in values}
     for follower, leader in zip(mimics.follower, mimics.leader, strict=True):
         if leader in kept:  # in rule order: a follower's follower too
             kept.add(follower)
-    return {space.names[i]: float(vector[i]) for i in sorted(kept)}
+    return {space.names[i]: float(vector[i]) for i in sorted(kept)}, held
 
 
 def link_transforms(robot: RobotDescription, values: Mapping[str, float] | None = None, *,

@@ -64,6 +64,7 @@ class Clamped:
         used: The limit used instead [rad or m].
         limit: ``lower`` or ``upper``.
         unit: ``rad`` or ``m``.
+        because: The follower (``<mimic>``) whose limits moved it; "" for its own.
     """
 
     joint: str
@@ -71,6 +72,7 @@ class Clamped:
     used: float
     limit: str
     unit: str
+    because: str = ""
 
 
 @dataclass(frozen=True)
@@ -105,7 +107,7 @@ def run(request: InspectRequest | DiffRequest) -> InspectResult | DiffResult:
     if isinstance(request, DiffRequest):
         return compare(_tree(load(request.a)), _tree(load(request.b)))
     robot = _tree(load(request.source))
-    values = _checked(robot, request.joints, request.clamp)
+    values, held = _checked(robot, request.joints, request.clamp)
     resolver = request.source.resolver()
     picture = None
     if request.picture:
@@ -116,7 +118,7 @@ def run(request: InspectRequest | DiffRequest) -> InspectResult | DiffResult:
     if request.sections:
         inspection = inspect_robot(robot, Request(request.sections, values, request.clamp,
                                                   resolver, request.controllers))
-    return InspectResult(inspection, picture, _clamped(robot, request.joints, values))
+    return InspectResult(inspection, picture, _clamped(robot, request.joints, values, held))
 
 
 def _tree(robot: RobotDescription) -> RobotDescription:
@@ -132,13 +134,15 @@ def _tree(robot: RobotDescription) -> RobotDescription:
 
 
 def _checked(robot: RobotDescription, joints: tuple[tuple[str, float], ...],
-             clamp: bool) -> dict[str, float]:
-    """The joint values after the joint space's checks (clamped with ``clamp``).
+             clamp: bool) -> tuple[dict[str, float], dict[str, str]]:
+    """The joint values after fk's checks (clamped with ``clamp``), and held leaders.
+
+    The leaders a follower's limits held are those of :func:`~.poses.checked_and_held`.
 
     Raises:
         JointValueError: A fixed or unknown joint, or a value out of limits.
     """
-    from servicebot_cli.inspect.poses import checked_values
+    from servicebot_cli.inspect.poses import checked_and_held
 
     fixed = {j.name for j in robot.joints if not j.movable}
     try:
@@ -146,19 +150,19 @@ def _checked(robot: RobotDescription, joints: tuple[tuple[str, float], ...],
             if name in fixed:
                 raise OutOfLimits(f"joint '{name}' is fixed; only movable joints take a value "
                                   f"({', '.join(robot.joint_space.names)})")
-        return checked_values(robot, dict(joints), clamp=clamp)
+        return checked_and_held(robot, dict(joints), clamp=clamp)
     except (NameNotFound, OutOfLimits) as exc:
         raise JointValueError(str(exc)) from None
 
 
 def _clamped(robot: RobotDescription, joints: tuple[tuple[str, float], ...],
-             used: dict[str, float]) -> tuple[Clamped, ...]:
-    """The values that clamping changed, with the limit used."""
+             used: dict[str, float], held: dict[str, str]) -> tuple[Clamped, ...]:
+    """The values that clamping changed, with the limit used (or the follower that held it)."""
     space = robot.joint_space
     moved = []
     for name, given in joints:
         if used[name] != given:
             unit = "m" if space.types[space.index(name)] == "prismatic" else "rad"
             limit = "upper" if given > used[name] else "lower"
-            moved.append(Clamped(name, given, used[name], limit, unit))
+            moved.append(Clamped(name, given, used[name], limit, unit, held.get(name, "")))
     return tuple(moved)

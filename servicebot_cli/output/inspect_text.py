@@ -87,9 +87,10 @@ def _args(inspection: Inspection) -> str:
 def clamp_note(clamped: Clamped) -> str:
     """``note: --clamp: joint 'j' 5 rad is above its upper limit; using 2.61799 rad``."""
     side = "above its upper" if clamped.limit == "upper" else "below its lower"
+    why = f"puts '{clamped.because}', which mimics it, outside its limits" if clamped.because \
+        else f"is {side} limit"
     return (f"note: --clamp: joint '{clamped.joint}' {format_number(clamped.given)} "
-            f"{clamped.unit} is {side} limit; using {format_number(clamped.used)} "
-            f"{clamped.unit}")
+            f"{clamped.unit} {why}; using {format_number(clamped.used)} {clamped.unit}")
 
 
 def inspection_lines(inspection: Inspection, fmt: str) -> Iterator[str]:

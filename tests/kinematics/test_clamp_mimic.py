@@ -57,3 +57,24 @@ def test_a_leader_is_clamped_where_its_follower_fits_too(tmp_path, given, lead, 
     factor = 4 if given == "0.9" else 2
     assert joints == {"lead": lead, "follow": pytest.approx(factor * lead)}
     assert notes == [f"note: --clamp: joint 'lead' = {given} rad {why}"]
+
+
+def test_fk_batches_and_inspect_clamp_the_same(tmp_path):
+    """fk --configs clamped each joint alone on its fast path, and inspect's note said the
+    leader was above its upper limit where its follower had held it."""
+    robot = tmp_path / "two.urdf"
+    robot.write_text(TWO.replace('multiplier="2"', 'multiplier="4"'))
+    configs = tmp_path / "configs.csv"
+    configs.write_text("lead\n0.9\n0.1\n")
+    batch = run_servicebot("fk", robot, "-f", "b", "--configs", configs, "--clamp",
+                           "--format", "json")
+    assert batch.returncode == 0, batch.stderr
+    yaws = [json.loads(line)["poses"][0]["rpy_rad"][2] for line in batch.stdout.splitlines()]
+    assert yaws == pytest.approx([0.75, 0.1])
+    inspect = run_servicebot("inspect", robot, "--section", "totals", "--joint", "lead=0.9",
+                             "--clamp", "--format", "json")
+    assert inspect.returncode == 0, inspect.stderr
+    assert json.loads(inspect.stdout)["totals"]["configuration_rad_or_m"] == {
+        "lead": 0.75, "follow": 3.0}
+    assert inspect.stderr.splitlines() == ["note: --clamp: joint 'lead' 0.9 rad puts 'follow', "
+                                           "which mimics it, outside its limits; using 0.75 rad"]
