@@ -11,9 +11,9 @@ from typing import TYPE_CHECKING
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
+from servicebot_cli.check.controller_sections import Sections, controller_types, get
 from servicebot_cli.check.findings import Issue
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
-from servicebot_cli.description.yaml_size import MOST_NODES, unfolded_nodes
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -35,110 +35,17 @@ ROS2_CONTROLLERS = frozenset((
     "velocity_controllers",
 ))
 """The packages of ros-controls/ros2_controllers: their ``joint``/``joints`` name URDF joints."""
-_NAMESPACE_DEPTH = 3
 _JOINT_KEYS = ("left_wheel_names", "right_wheel_names", "joints", "joint")
-
-
-Sections = dict[str, list[yaml.MappingNode]]
-"""Each node's ``ros__parameters`` sections by node name, in file order (one per namespace)."""
 
 
 def check(found: Sections, display: str, robot: RobotDescription) -> Iterator[Issue]:
     """Every issue of the controller sections ``found`` (of file ``display``) against ``robot``."""
     checker = _Checker(display, robot, frozenset(found))
-    types = _types(found)
+    types = controller_types(found)
     for name, params in found.items():
         if name != "controller_manager" and _names_joints(types.get(name)):
             for section in checker.for_this_robot(params):
                 yield from checker.section(name, section)
-
-
-def sections(text: str, display: str) -> Sections | Issue:
-    """The controller sections of ``text``, read once for every robot it is checked against.
-
-    Or the SB601 issue that makes ``text`` no controllers file at all, whatever the robot:
-    not YAML, empty, or without a ``NAME: ros__parameters:`` section.
-    """
-    try:
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        where = (display, mark.line + 1, mark.column + 1) if mark else (display, 0, 0)
-        problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
-        return Issue("SB601", f"not valid YAML: {problem}", where=where)
-    except RecursionError:  # PyYAML's composer recurses once per level of nesting
-        return Issue("SB601", "not valid YAML: lists and mappings nested too deep to read",
-                     where=(display, 0, 0))
-    if root is not None and unfolded_nodes(root) is None:
-        return Issue("SB601", f"its aliases (*name) unfold to over {MOST_NODES:,} items (an "
-                     "alias bomb?); no controllers file is that large", where=(display, 0, 0))
-    if root is None:
-        return Issue("SB601", "the file holds no YAML (it is empty, or only comments)",
-                     where=(display, 0, 0),
-                     fix="write each controller's parameters under NAME: ros__parameters:")
-    sections = _sections(root)
-    if not sections:
-        ros1 = _ros1_controllers(root)
-        found = (f"a ROS 1 ros_control file ('{ros1}: type: ...' with no ros__parameters), "
-                 "which ros2_control does not read; ") if ros1 else ""
-        return Issue("SB601", f"{found}no controller sections (NAME: ros__parameters: ...) "
-                     "found", where=(display, 1, 1),
-                     fix="check ROS 2 controllers files only, or port this one: each "
-                         "controller's parameters under NAME: ros__parameters:" if ros1 else None)
-    return sections
-
-
-def _ros1_controllers(root: yaml.Node | None) -> str | None:
-    """The first controller a ROS 1 file declares (``NAME: {type: pkg/Class}``), or None."""
-    if not isinstance(root, yaml.MappingNode):
-        return None
-    for key, value in root.value:
-        kind = _get(value, "type")
-        if isinstance(kind, yaml.ScalarNode) and "/" in str(kind.value):
-            return str(key.value)
-    return None
-
-
-def _sections(root: yaml.Node | None, depth: int = 0) -> Sections:
-    """Each node's ``ros__parameters`` sections by node name, in file order.
-
-    A node may sit under namespaces, as ROS 2 parameter files allow: ``/**:`` (any
-    namespace, as irobot_create_control's ``control.yaml``) or ``robot1:`` above the node's
-    own key. A node keyed by a path (``/robot1/controller_manager``) is named by its last part.
-    One file may configure the same controller in several namespaces (ros2_control_demos'
-    example 15: ``/rrbot_1/forward_position_controller`` and ``/rrbot_2/...``): each is kept.
-    """
-    found: Sections = {}
-    if not isinstance(root, yaml.MappingNode) or depth > _NAMESPACE_DEPTH:
-        return found
-    for key, value in root.value:
-        params = _get(value, "ros__parameters")
-        if isinstance(params, yaml.MappingNode):
-            found.setdefault(str(key.value).rstrip("/").rpartition("/")[2], []).append(params)
-        elif isinstance(value, yaml.MappingNode):
-            for name, inner in _sections(value, depth + 1).items():
-                found.setdefault(name, []).extend(inner)
-    return found
-
-
-def _types(sections: Sections) -> dict[str, str]:
-    """Each controller's ``type`` (``package/Class``), by controller name.
-
-    Declared in ``controller_manager``'s parameters (nested, or as a dotted ``NAME.type``
-    key: rcl flattens both to one parameter), or in the controller's own (ros2_control since
-    Jazzy).
-    """
-    types: dict[str, str] = {}
-    managers = sections.get("controller_manager", [])
-    for name, params in sections.items():
-        # "NAME.type:" is the same parameter as "NAME: {type:}" (Clearpath's control.yaml)
-        nodes = [node for manager in managers
-                 for node in (_get(_get(manager, name), "type"), _get(manager, f"{name}.type"))]
-        nodes += [_get(section, "type") for section in params]  # "/**/NAME": every namespace
-        for node in nodes:
-            if isinstance(node, yaml.ScalarNode) and node.value:
-                types[name] = str(node.value)
-    return types
 
 
 def _names_joints(controller_type: str | None) -> bool:
@@ -149,14 +56,6 @@ def _names_joints(controller_type: str | None) -> bool:
     ``joint: tcp``, the prefix of interfaces its hardware exports, not a URDF joint.
     """
     return controller_type is None or controller_type.partition("/")[0] in ROS2_CONTROLLERS
-
-
-def _get(node: yaml.Node | None, key: str) -> yaml.Node | None:
-    if isinstance(node, yaml.MappingNode):
-        for k, v in node.value:
-            if isinstance(k, yaml.ScalarNode) and k.value == key:
-                return v
-    return None
 
 
 def _substituted(text: str) -> bool:
@@ -204,7 +103,7 @@ class _Checker:
         this robot's, when some are: the others configure another robot's controller (the
         other controller manager of ros2_control_demos' example 15). Else every section.
         """
-        naming = [s for s in sections if any(_get(s, key) is not None for key in _JOINT_KEYS)]
+        naming = [s for s in sections if any(get(s, key) is not None for key in _JOINT_KEYS)]
         fitting = [s for s in naming if self.fits(s)]
         if not fitting or len(fitting) == len(naming):
             return sections
@@ -213,7 +112,7 @@ class _Checker:
     def fits(self, params: yaml.MappingNode) -> bool:
         """Whether every joint name of ``params`` is a joint of the robot."""
         for key in _JOINT_KEYS:
-            node = _get(params, key)
+            node = get(params, key)
             items = node.value if isinstance(node, yaml.SequenceNode) else [node]
             for item in items:
                 if item is None:
@@ -226,10 +125,10 @@ class _Checker:
 
     def section(self, name: str, params: yaml.MappingNode) -> Iterator[Issue]:
         for key in _JOINT_KEYS:
-            node = _get(params, key)
+            node = get(params, key)
             if node is not None:
                 yield from self.names(name, key, node)
-        if _get(params, "left_wheel_names") is not None:
+        if get(params, "left_wheel_names") is not None:
             yield from self.wheels(name, params)
 
     def names(self, section: str, key: str, node: yaml.Node) -> Iterator[Issue]:
@@ -283,7 +182,7 @@ class _Checker:
             # diff drive rolls on spheres): nothing to compare the YAML with, and no defect.
             return
         for key, side in (("left_wheel_names", "left"), ("right_wheel_names", "right")):
-            node = _get(params, key)
+            node = get(params, key)
             items = node.value if isinstance(node, yaml.SequenceNode) else []
             for item in items:
                 joint = self.joint_of(str(item.value))
@@ -308,7 +207,7 @@ class _Checker:
         """
         named = {self.joint_of(str(item.value))
                  for key in ("left_wheel_names", "right_wheel_names")
-                 for node in [_get(params, key)] if isinstance(node, yaml.SequenceNode)
+                 for node in [get(params, key)] if isinstance(node, yaml.SequenceNode)
                  for item in node.value if isinstance(item, yaml.ScalarNode)}
         wheels = [w for w in geometry.wheels if w.joint in named]
         sides = [[w.position_m[1] for w in wheels if w.side == side] for side in ("left", "right")]
@@ -319,7 +218,7 @@ class _Checker:
 
     def value(self, section: str, params: yaml.MappingNode, key: str, expected: float,
               code: str, multipliers: tuple[str, ...]) -> Iterator[Issue]:
-        node = _get(params, key)
+        node = get(params, key)
         if isinstance(node, yaml.ScalarNode) and _substituted(str(node.value)):
             return  # the launch file fills it in
         given = _number(node)
@@ -330,7 +229,7 @@ class _Checker:
             return
         effective = given
         for multiplier in multipliers:
-            effective *= _number(_get(params, multiplier)) or 1.0
+            effective *= _number(get(params, multiplier)) or 1.0
         # A multiplier calibrates the geometric value to the floor (a skid-steer robot turns
         # as if its wheels were further apart): either may match the URDF's geometry.
         if all(abs(value - expected) > TOLERANCE * abs(expected) for value in (given, effective)):

@@ -176,7 +176,7 @@ def _checked(sources: list[tuple[RobotSource, bool]], targets: UrdfTargets,
 
 def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[FileReport]:
     """A report per URDF the controllers YAML is checked against."""
-    from servicebot_cli.check import controllers
+    from servicebot_cli.check import controller_sections, controllers
     from servicebot_cli.common.inputs import display_path, read_input_text
     from servicebot_cli.description.ros_parameters import MAX_PARAMETERS_BYTES
 
@@ -185,7 +185,7 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
     text = read_input_text(str(yaml_path), kind="a ros2_control controllers YAML",
                            error=DescriptionError, max_bytes=MAX_PARAMETERS_BYTES)
     sources = targets.urdfs or tuple(RobotSource.bundled(name) for name in BUNDLED_ROBOTS)
-    found = controllers.sections(text, display)
+    found = controller_sections.sections(text, display)
     if isinstance(found, Issue):  # the YAML itself, the same against every robot: said once
         robot = read_description(sources[0])
         return [FileReport(display, tuple(place_issues(robot, [found], settings)))]

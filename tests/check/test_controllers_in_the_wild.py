@@ -42,6 +42,7 @@ def _check(yaml_name: str, urdf_name: str, tmp_path=None, **changes: str):
     ("two_robots.yaml", "robot1.urdf"), ("lost_type.yaml", "robot1.urdf"),
     ("dotted.yaml", "arm.urdf"), ("gripper_controller.yaml", "gripper.urdf"),
     ("dd_substituted.yaml", "corner_casters.urdf"), ("dd.yaml", "corner_casters.urdf"),
+    ("split_namespaces.yaml", "corner_casters.urdf"),
 ])
 def test_real_shapes_pass(yaml_name, urdf_name):
     assert _check(yaml_name, urdf_name) == []
@@ -77,3 +78,9 @@ def test_what_diff_drive_controller_refuses_is_found(tmp_path):
     result = run_servicebot("check", "controllers", gripper, "--urdf", HERE / "arm.urdf",
                             "--format", "json")
     assert [f["code"] for f in findings(result.stdout)] == ["SB602"]
+
+
+def test_a_wrong_number_given_for_every_namespace_is_still_found(tmp_path):
+    found = _check("split_namespaces.yaml", "corner_casters.urdf", tmp_path,
+                   a=("wheel_separation: 0.4", "wheel_separation: 0.5"))
+    assert [code for code, _ in found] == ["SB604"]

@@ -1,0 +1,143 @@
+"""The sections of a ros2_control controllers YAML, as rcl and the controller manager read them.
+
+Each node's ``ros__parameters``, under namespaces or not, merged with its ``/**`` sections;
+each controller's type, nested or as a dotted ``NAME.type`` key. Or the SB601 issue that
+makes the text no controllers file at all. Pure: YAML text in, nodes out.
+"""
+
+from __future__ import annotations
+
+import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
+
+from servicebot_cli.check.findings import Issue
+from servicebot_cli.description.yaml_size import MOST_NODES, unfolded_nodes
+
+_NAMESPACE_DEPTH = 3
+
+Sections = dict[str, list[yaml.MappingNode]]
+"""Each node's ``ros__parameters`` sections by node name, in file order (one per namespace)."""
+
+
+def sections(text: str, display: str) -> Sections | Issue:
+    """The controller sections of ``text``, read once for every robot it is checked against.
+
+    Or the SB601 issue that makes ``text`` no controllers file at all, whatever the robot:
+    not YAML, empty, or without a ``NAME: ros__parameters:`` section.
+    """
+    try:
+        root = yaml.compose(text, Loader=yaml.SafeLoader)
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        where = (display, mark.line + 1, mark.column + 1) if mark else (display, 0, 0)
+        problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
+        return Issue("SB601", f"not valid YAML: {problem}", where=where)
+    except RecursionError:  # PyYAML's composer recurses once per level of nesting
+        return Issue("SB601", "not valid YAML: lists and mappings nested too deep to read",
+                     where=(display, 0, 0))
+    if root is not None and unfolded_nodes(root) is None:
+        return Issue("SB601", f"its aliases (*name) unfold to over {MOST_NODES:,} items (an "
+                     "alias bomb?); no controllers file is that large", where=(display, 0, 0))
+    if root is None:
+        return Issue("SB601", "the file holds no YAML (it is empty, or only comments)",
+                     where=(display, 0, 0),
+                     fix="write each controller's parameters under NAME: ros__parameters:")
+    sections = _sections(root)
+    if not sections:
+        ros1 = _ros1_controllers(root)
+        found = (f"a ROS 1 ros_control file ('{ros1}: type: ...' with no ros__parameters), "
+                 "which ros2_control does not read; ") if ros1 else ""
+        return Issue("SB601", f"{found}no controller sections (NAME: ros__parameters: ...) "
+                     "found", where=(display, 1, 1),
+                     fix="check ROS 2 controllers files only, or port this one: each "
+                         "controller's parameters under NAME: ros__parameters:" if ros1 else None)
+    return sections
+
+
+def _ros1_controllers(root: yaml.Node | None) -> str | None:
+    """The first controller a ROS 1 file declares (``NAME: {type: pkg/Class}``), or None."""
+    if not isinstance(root, yaml.MappingNode):
+        return None
+    for key, value in root.value:
+        kind = get(value, "type")
+        if isinstance(kind, yaml.ScalarNode) and "/" in str(kind.value):
+            return str(key.value)
+    return None
+
+
+def _sections(root: yaml.Node | None) -> Sections:
+    """Each node's ``ros__parameters`` sections by node name, in file order.
+
+    A node may sit under namespaces, as ROS 2 parameter files allow: ``/**:`` (any
+    namespace, as irobot_create_control's ``control.yaml``) or ``robot1:`` above the node's
+    own key. A node keyed by a path (``/robot1/controller_manager``) is named by its last part.
+    One file may configure the same controller in several namespaces (ros2_control_demos'
+    example 15: ``/rrbot_1/forward_position_controller`` and ``/rrbot_2/...``): each is kept,
+    with what the ``/**`` sections of that node give it, as rcl merges them (its own values
+    win).
+    """
+    found: Sections = {}
+    for name, parts in _collect(root, 0, False).items():
+        anywhere = [node for wild, node in parts if wild]
+        own = [node for wild, node in parts if not wild]
+        found[name] = [_merged([*anywhere, node]) for node in own] if anywhere and own \
+            else [node for _, node in parts]
+    return found
+
+
+def _collect(root: yaml.Node | None, depth: int,
+             wild: bool) -> dict[str, list[tuple[bool, yaml.MappingNode]]]:
+    """:func:`_sections` before merging: each section, and whether a ``**`` key holds it."""
+    found: dict[str, list[tuple[bool, yaml.MappingNode]]] = {}
+    if not isinstance(root, yaml.MappingNode) or depth > _NAMESPACE_DEPTH:
+        return found
+    for key, value in root.value:
+        text = str(key.value)
+        params = get(value, "ros__parameters")
+        if isinstance(params, yaml.MappingNode):
+            found.setdefault(text.rstrip("/").rpartition("/")[2], []).append(
+                (wild or "**" in text, params))
+        elif isinstance(value, yaml.MappingNode):
+            for name, inner in _collect(value, depth + 1, wild or "**" in text).items():
+                found.setdefault(name, []).extend(inner)
+    return found
+
+
+def _merged(nodes: list[yaml.MappingNode]) -> yaml.MappingNode:
+    """One mapping of ``nodes``' entries, a later node's value winning for a key."""
+    if len(nodes) == 1:
+        return nodes[0]
+    entries: dict[object, tuple[yaml.Node, yaml.Node]] = {}
+    for node in nodes:
+        for key, value in node.value:
+            entries[key.value if isinstance(key, yaml.ScalarNode) else id(key)] = (key, value)
+    last = nodes[-1]
+    return yaml.MappingNode(last.tag, list(entries.values()), last.start_mark, last.end_mark)
+
+
+def controller_types(sections: Sections) -> dict[str, str]:
+    """Each controller's ``type`` (``package/Class``), by controller name.
+
+    Declared in ``controller_manager``'s parameters (nested, or as a dotted ``NAME.type``
+    key: rcl flattens both to one parameter), or in the controller's own (ros2_control since
+    Jazzy).
+    """
+    types: dict[str, str] = {}
+    managers = sections.get("controller_manager", [])
+    for name, params in sections.items():
+        # "NAME.type:" is the same parameter as "NAME: {type:}" (Clearpath's control.yaml)
+        nodes = [node for manager in managers
+                 for node in (get(get(manager, name), "type"), get(manager, f"{name}.type"))]
+        nodes += [get(section, "type") for section in params]  # "/**/NAME": every namespace
+        for node in nodes:
+            if isinstance(node, yaml.ScalarNode) and node.value:
+                types[name] = str(node.value)
+    return types
+
+
+def get(node: yaml.Node | None, key: str) -> yaml.Node | None:
+    """The value of ``key`` in the mapping ``node``; None when it is not one, or has none."""
+    if isinstance(node, yaml.MappingNode):
+        for k, v in node.value:
+            if isinstance(k, yaml.ScalarNode) and k.value == key:
+                return v
+    return None
