@@ -193,9 +193,13 @@ def dof_of(robot: RobotDescription, wheel_joints: set[str],
     A joint that follows another (``<mimic>``: a gripper's second finger) adds none: it moves
     only with its leader.
     """
-    names = {j.name for j in robot.joints if j.movable}
-    movable = [j for j in robot.joints if j.movable and not (
-        j.mimic is not None and j.mimic.joint in names and j.mimic.joint != j.name)]
+    from servicebot_cli.kinematics.chain_mimic import Groups
+    from servicebot_cli.kinematics.user_joints import Mimics
+
+    names = [j.name for j in robot.joints if j.movable]
+    root = Groups.of(Mimics.among(robot.joints, names), len(names)).root  # a loop keeps one
+    following = {name for k, name in enumerate(names) if root[k] != k}
+    movable = [j for j in robot.joints if j.movable and j.name not in following]
     wheels = sum(DOF[j.type] for j in movable if j.name in wheel_joints)
     chassis = sum(DOF[j.type] for j in movable
                   if j.name in chassis_joints and j.name not in wheel_joints)

@@ -80,3 +80,13 @@ def test_panda_has_eight_degrees_of_freedom():
     result = run_servicebot("inspect", PANDA, "--section", "totals", "--format", "json")
     assert json.loads(result.stdout)["totals"]["dof"] == {"total": 8, "wheels": 0, "arm": 8,
                                                           "chassis": 0}
+
+
+def test_two_joints_that_follow_each_other_keep_one_degree_of_freedom(tmp_path):
+    """A loop of <mimic> (check's SB211): one of them still moves the pair."""
+    robot = tmp_path / "loop.urdf"
+    robot.write_text(GRIPPER.replace('<axis xyz="0 1 0"/><limit lower="0.015"',
+                                     '<axis xyz="0 1 0"/><mimic joint="right_finger"/>'
+                                     '<limit lower="0.015"'))
+    result = run_servicebot("inspect", robot, "--section", "totals", "--format", "json")
+    assert json.loads(result.stdout)["totals"]["dof"]["total"] == 1
