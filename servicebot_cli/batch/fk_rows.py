@@ -29,8 +29,8 @@ from servicebot_cli.description.model import new_data
 from servicebot_cli.kinematics.forward import configurations, frame_transforms, pose_table
 from servicebot_cli.kinematics.frames import frame_id, link_names
 from servicebot_cli.kinematics.json_types import JsonObject, JsonValue
+from servicebot_cli.kinematics.mimics import Mimics
 from servicebot_cli.kinematics.user_joints import (
-    Mimics,
     angular,
     clamped_user_vector,
     row_pairs,

@@ -14,7 +14,8 @@ from typing import TYPE_CHECKING
 
 from servicebot_cli.kinematics import link_poses
 from servicebot_cli.kinematics.link_poses import FloatArray
-from servicebot_cli.kinematics.user_joints import Mimics, clamped_user_vector
+from servicebot_cli.kinematics.mimics import Mimics
+from servicebot_cli.kinematics.user_joints import clamped_user_vector
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription

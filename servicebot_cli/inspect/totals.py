@@ -194,7 +194,7 @@ def dof_of(robot: RobotDescription, wheel_joints: set[str],
     only with its leader.
     """
     from servicebot_cli.kinematics.chain_mimic import Groups
-    from servicebot_cli.kinematics.user_joints import Mimics
+    from servicebot_cli.kinematics.mimics import Mimics
 
     names = [j.name for j in robot.joints if j.movable]
     root = Groups.of(Mimics.among(robot.joints, names), len(names)).root  # a loop keeps one

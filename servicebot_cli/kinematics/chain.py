@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     import pinocchio as pin
 
     from servicebot_cli.description.joint_space import JointSpace
-    from servicebot_cli.kinematics.user_joints import Mimics
+    from servicebot_cli.kinematics.mimics import Mimics
 
 FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.intp]

@@ -19,9 +19,9 @@ import numpy.typing as npt
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.kinematics.forward import FramePose, frame_poses
 from servicebot_cli.kinematics.frames import link_names, pick_frame
+from servicebot_cli.kinematics.mimics import Mimics
 from servicebot_cli.kinematics.transforms import planar_matrix
 from servicebot_cli.kinematics.user_joints import (
-    Mimics,
     clamped_user_vector,
     unnamed_outside,
     user_values,

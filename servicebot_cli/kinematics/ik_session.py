@@ -28,10 +28,11 @@ from servicebot_cli.kinematics.ik_outcome import IkOutcome, outcome_values
 from servicebot_cli.kinematics.ik_problem import CollisionOptions, IkProblem
 from servicebot_cli.kinematics.inverse import IkSolver, IkTarget
 from servicebot_cli.kinematics.json_types import JsonObject
+from servicebot_cli.kinematics.mimics import Mimics
 from servicebot_cli.kinematics.series import series_search, solve_leading
 from servicebot_cli.kinematics.srdf import robot_disabled_pairs
 from servicebot_cli.kinematics.target_frame import TargetFrame
-from servicebot_cli.kinematics.user_joints import Mimics, clamped_user_vector
+from servicebot_cli.kinematics.user_joints import clamped_user_vector
 
 if TYPE_CHECKING:
     import pinocchio as pin

@@ -32,10 +32,10 @@ from servicebot_cli.description.sensors import (
     lidar_spec,
 )
 from servicebot_cli.kinematics.drive_geometry import DriveGeometry, drive_geometry
+from servicebot_cli.kinematics.mimics import Mimics
 from servicebot_cli.kinematics.running_gear import chassis_joints
 from servicebot_cli.kinematics.steering import refuse_steered_wheels
 from servicebot_cli.kinematics.transforms import pose_matrix
-from servicebot_cli.kinematics.user_joints import Mimics
 from servicebot_cli.simulate.model_facts import FactsAhead, description_first
 from servicebot_cli.simulate.sensors.lidar import cast_problem
 from servicebot_cli.simulate.shape import RobotShape, robot_shape

@@ -11,7 +11,7 @@ import yourdfpy
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.kinematics.forward import frame_poses, pose_table, transforms
 from servicebot_cli.kinematics.frames import default_tool_frame, link_names
-from servicebot_cli.kinematics.user_joints import Mimics
+from servicebot_cli.kinematics.mimics import Mimics
 from tests.kinematics.robots import ARMS, random_values
 
 CONFIGURATIONS = 40

@@ -128,7 +128,7 @@ def test_a_follower_with_multiplier_zero_stands_at_its_offset(run, tmp_path):
 
 def test_a_follower_of_a_follower_and_a_loop_resolve_to_one_value():
     from servicebot_cli.kinematics.chain_mimic import Groups
-    from servicebot_cli.kinematics.user_joints import Mimics
+    from servicebot_cli.kinematics.mimics import Mimics
 
     # 1 = 2 * 0 + 1; 2 = -1 * 1 + 0.5: so 2 = -2 * 0 - 0.5. 3 and 4 follow each other.
     groups = Groups.of(Mimics((1, 2, 3, 4), (0, 1, 4, 3), (2.0, -1.0, 3.0, 5.0),

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.kinematics.user_joints import Mimics
+from servicebot_cli.kinematics.mimics import Mimics
 from servicebot_cli.simulate.scenario.definition import ArmTrajectory
 
 FloatArray = npt.NDArray[np.float64]
