@@ -111,7 +111,12 @@ def _float(params: Params, path: str) -> float | None:
 
 
 def _int(params: Params, path: str) -> int | None:
-    """An unsigned integer parameter as sdformat reads it (see :func:`sdf_unsigned`)."""
+    value = _float(params, path)
+    return int(value) if value is not None and value == value and value.is_integer() else None
+
+
+def _samples(params: Params, path: str) -> int | None:
+    """A ray count as sdformat reads it (see :func:`sdf_unsigned`)."""
     return sdf_unsigned(param(params, path))
 
 
@@ -222,7 +227,7 @@ def lidar_spec(sensor: Sensor) -> LidarSpec:
     output = ray_output(plugin)
     topic = plugin_topic(plugin, "~/out") if plugin else gz_topic(sensor)
     return LidarSpec(
-        samples=_int(p, f"{root}/scan/horizontal/samples"),
+        samples=_samples(p, f"{root}/scan/horizontal/samples"),
         resolution=_float(p, f"{root}/scan/horizontal/resolution"),
         min_angle_rad=_float(p, f"{root}/scan/horizontal/min_angle"),
         max_angle_rad=_float(p, f"{root}/scan/horizontal/max_angle"),
@@ -233,7 +238,7 @@ def lidar_spec(sensor: Sensor) -> LidarSpec:
         noise=_noise(p, f"{root}/noise"),
         frame=_frame(sensor),
         topic=topic if output is not None else None,
-        vertical_samples=_int(p, f"{root}/scan/vertical/samples"),
+        vertical_samples=_samples(p, f"{root}/scan/vertical/samples"),
         vertical_min_angle_rad=_float(p, f"{root}/scan/vertical/min_angle"),
         vertical_max_angle_rad=_float(p, f"{root}/scan/vertical/max_angle"),
         output=output if topic is not None else None,
