@@ -28,6 +28,14 @@ class EndedBySignal(BaseException):
         super().__init__(f"{signal.Signals(signum).name.lower().removeprefix('sig')}: "
                          f"ended by {signal.Signals(signum).name}")
 
+    def __reduce__(self) -> tuple[type[EndedBySignal], tuple[int]]:
+        """Rebuilt from its signal number when unpickled.
+
+        A worker process sends it back to its parent (sweep's pool), which otherwise fails
+        to rebuild it from the message and hangs.
+        """
+        return EndedBySignal, (self.signum,)
+
     @property
     def description(self) -> str:
         """What happened, for the one stderr line: ``terminated (SIGTERM)``."""

@@ -70,3 +70,16 @@ with signals_as_exceptions():
                           cwd=REPO, timeout=30)
     assert done.stdout.split() == ["ended"], done.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_the_signal_exception_crosses_a_process_boundary():
+    """A sweep worker sends EndedBySignal back to its parent: unpickling it called
+    __init__ with its message (TypeError), which broke the pool and left sweep hanging."""
+    import pickle
+    import signal
+
+    from servicebot_cli.common.signals import EndedBySignal
+
+    back = pickle.loads(pickle.dumps(EndedBySignal(signal.SIGTERM)))
+    assert (back.signum, back.exit_code, back.description) == (
+        signal.SIGTERM, 143, "terminated (SIGTERM)")
