@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cached_property
 from typing import TYPE_CHECKING
 
@@ -56,6 +56,9 @@ class JointSpace:
     nq: int
     nv: int
     base_nq: int = 0
+    model_neutral: FloatArray | None = field(default=None, repr=False, compare=False)
+    """The model's own neutral ``q`` (Pinocchio's), which also covers joints left out of
+    :attr:`names`: a URDF ``planar`` or ``floating`` joint stands at its identity there."""
 
     @classmethod
     def of(cls, model: pin.Model, joints: Sequence[Joint]) -> JointSpace:
@@ -87,6 +90,7 @@ class JointSpace:
             names=tuple(names), types=tuple(types), lower=np.array(lower, dtype=float),
             upper=np.array(upper, dtype=float), velocity=np.array(velocity, dtype=float),
             idx_q=tuple(idx_q), idx_v=tuple(idx_v), nq=model.nq, nv=model.nv, base_nq=base_nq,
+            model_neutral=_pin_neutral(model),
         )
 
     def index(self, name: str) -> int:
@@ -106,6 +110,8 @@ class JointSpace:
 
     @cached_property
     def _neutral(self) -> FloatArray:
+        if self.model_neutral is not None:
+            return np.array(self.model_neutral, dtype=float)
         q = np.zeros(self.nq)
         for i, kind in enumerate(self.types):
             if kind == "continuous":
@@ -183,3 +189,11 @@ class JointSpace:
         out = np.array(values, dtype=float)
         out[bounded] = np.clip(out[bounded], self.lower[bounded], self.upper[bounded])
         return out
+
+
+def _pin_neutral(model: pin.Model) -> FloatArray:
+    """``pin.neutral(model)``: identity rotations where zeros would be no rotation at all."""
+    import pinocchio as pin
+
+    neutral: FloatArray = np.array(pin.neutral(model), dtype=float)
+    return neutral

@@ -130,7 +130,10 @@ class Chain:
         """
         import pinocchio as pin
 
-        keep = moving_joints(model, frame_id(model, frame, known))
+        # a URDF planar or floating joint has no value a user gives or sees (the joint
+        # space leaves it out): it stays at its identity, as fk places it
+        keep = tuple(j for j in moving_joints(model, frame_id(model, frame, known))
+                     if model.names[j] in space.names or model.names[j] == "root_joint")
         if not keep:
             raise NothingMoves(f"frame '{frame}' is fixed to the root: no joint moves it; "
                                "choose a frame on the arm, or add --with-base")
@@ -157,7 +160,7 @@ class Chain:
                 k: self.model.joints[self.model.getJointId(space.names[k])].idx_q
                 for _, k in self.coupling.driver})
         self.vector_space = self.model.nq == self.model.nv and self.base_nq == 0
-        self.reach = chain_reach(model, frame_id(model, frame, known))
+        self.reach = chain_reach(model, frame_id(model, frame, known), keep)
 
     def to_chain(self, q_full: FloatArray) -> FloatArray:
         """The chain's ``q`` from a full ``q`` (a follower solved for starts at its leader's)."""
@@ -228,18 +231,20 @@ def _index_and_limits(full: pin.Model, reduced: pin.Model,
     return index, lower, upper
 
 
-def chain_reach(model: pin.Model, frame: int) -> Reach:
+def chain_reach(model: pin.Model, frame: int, moving: Sequence[int] | None = None) -> Reach:
     """A sphere that holds every position the joints can put ``frame`` at.
 
     The distance between two consecutive joint origins of a serial chain never changes
     (a revolute joint turns about an axis through its origin), so the frame stays within
     the sum of those lengths of the first joint that no joint moves. A joint whose origin lies
     on the previous (revolute) joint's axis does not move with it, so the centre moves on.
-    A planar base is left out: it can stand anywhere.
+    A planar base is left out: it can stand anywhere. ``moving`` narrows the joints that
+    move ``frame`` to those the chain solves for.
     """
     import pinocchio as pin
 
-    joints = [j for j in moving_joints(model, frame) if model.names[j] != "root_joint"]
+    joints = [j for j in (moving_joints(model, frame) if moving is None else moving)
+              if model.names[j] != "root_joint"]
     if not joints:
         origin = pin.updateFramePlacement(model, model.createData(), frame).translation
         return Reach(np.array(origin), 0.0, model.frames[frame].name)
