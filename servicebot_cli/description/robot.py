@@ -14,10 +14,15 @@ from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from servicebot_cli.common.errors import FrameNotFound, JointNotFound, NameNotFound
+from servicebot_cli.common.errors import (
+    DescriptionError,
+    FrameNotFound,
+    JointNotFound,
+    NameNotFound,
+)
 from servicebot_cli.description import elements as el
 from servicebot_cli.description import extensions as ext
-from servicebot_cli.description.model import build_model, new_data
+from servicebot_cli.description.model import build_model, check_hint, new_data
 from servicebot_cli.description.safe_xml import PositionedElement
 from servicebot_cli.description.sources import SourceRef
 
@@ -211,9 +216,26 @@ class RobotDescription:
             DescriptionError: Pinocchio rejected the description.
         """
         if base not in self._models:
+            self._refuse_zero_axes()
             self._models[base] = build_model(self.xml_text, self.display, base,
                                              self.xacro_args)
         return self._models[base]
+
+    def _refuse_zero_axes(self) -> None:
+        """A moving joint with ``<axis xyz="0 0 0">`` turns about nothing (check's SB207).
+
+        Pinocchio builds it anyway and places its child with ``cos(q)`` times the identity,
+        no rotation at all: every pose past it would be wrong.
+
+        Raises:
+            DescriptionError: Naming the joint.
+        """
+        for joint in self.joints:
+            if joint.movable and joint.type != "floating" and not any(joint.axis):
+                raise DescriptionError(
+                    f"{self.display}: joint '{joint.name}' has <axis xyz=\"0 0 0\">: it "
+                    f"turns or slides along no direction; give its axis "
+                    f"{check_hint(self.display, self.xacro_args)}")
 
     @property
     def model(self) -> pin.Model:

@@ -48,3 +48,17 @@ def test_fk_and_ik_keep_it_at_identity(tmp_path, kind):
     answer = json.loads(ik.stdout)
     assert ik.returncode == 1 and not answer["success"]
     assert set(answer["joints"]) == {"j1"}
+
+
+@pytest.mark.parametrize("command", [("fk", "-f", "tool"), ("ik", "-f", "tool", "--position",
+                                                             "0.3", "0", "0.4")])
+def test_a_moving_joint_with_a_zero_axis_is_one_line(tmp_path, command):
+    """Pinocchio builds <axis xyz="0 0 0"> and places the child with cos(q) times the
+    identity: fk printed that as a pose. check reports it as SB207."""
+    from tests.conftest import assert_one_line_error
+
+    path = tmp_path / "r.urdf"
+    path.write_text(ROBOT.format(kind="fixed").replace(
+        '<origin xyz="0 0 0.4"/><axis xyz="0 0 1"/>', '<origin xyz="0 0 0.4"/><axis xyz="0 0 0"/>'))
+    result = run_servicebot(command[0], path, *command[1:])
+    assert_one_line_error(result, 2, "joint 'j1' has <axis xyz=\"0 0 0\">")
