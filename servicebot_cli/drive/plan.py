@@ -7,6 +7,7 @@ named hold the position the firmware reported when the run began.
 
 from __future__ import annotations
 
+import bisect
 from dataclasses import dataclass
 
 
@@ -54,17 +55,24 @@ class Plan:
     def __init__(self, steps: list[Step]) -> None:
         self.steps = steps
         self.duration_s = sum(step.duration_s for step in steps)
+        # each step's end and the arm targets set so far, once: a tick looks its step up
+        # (a 16,000-line script was rescanned from its start at every tick)
+        self._ends: list[float] = []
+        self._arms: list[tuple[tuple[str, float], ...]] = []
+        end, arm = 0.0, dict[str, float]()
+        for step in steps:
+            arm.update(step.arm)
+            end += step.duration_s
+            self._ends.append(end)
+            self._arms.append(tuple(arm.items()))
 
     def setpoint(self, t_s: float) -> Setpoint | None:
         """The setpoint ``t_s`` seconds after the start, or None when the plan is over."""
-        start = 0.0
-        arm: dict[str, float] = {}
-        for step in self.steps:
-            arm.update(step.arm)
-            if t_s < start + step.duration_s:
-                return Setpoint(step.linear_m_s, step.angular_rad_s, tuple(arm.items()))
-            start += step.duration_s
-        return None
+        index = bisect.bisect_right(self._ends, t_s)
+        if index >= len(self.steps):
+            return None
+        step = self.steps[index]
+        return Setpoint(step.linear_m_s, step.angular_rad_s, self._arms[index])
 
     def poll(self) -> None:
         """Nothing to read: a plan has no input (it watches no file descriptors)."""
