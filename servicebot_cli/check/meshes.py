@@ -16,7 +16,6 @@ import numpy as np
 
 from servicebot_cli.common.library_logs import captured
 from servicebot_cli.description import mesh_readers
-from servicebot_cli.description.safe_xml import declaration_first
 
 if TYPE_CHECKING:
     from servicebot_cli.check.mesh_store import MeshStore
@@ -70,17 +69,12 @@ def load_mesh(path: Path, with_mass: bool = False) -> MeshInfo:
         MeshError: Unreadable, not a mesh of its format, or holding NaNs.
     """
     try:
-        size = path.stat().st_size
-        if size > mesh_readers.MOST_BYTES:
-            raise MeshError(f"the file is {size / 1e9:.1f} GB, over the "
-                            f"{mesh_readers.MOST_BYTES / 1e9:.0f} GB a mesh is read to; is it the "
-                            "right file?")
-        data = path.read_bytes()
+        data = mesh_readers.read_file(path)
+    except mesh_readers.MeshFormatError as exc:  # too large
+        raise MeshError(f"{exc}; is it the right file?") from None
     except OSError as exc:
         raise MeshError(f"cannot read: {exc.strerror or exc}") from None
     suffix = path.suffix.lower()
-    if suffix == ".dae":
-        data = declaration_first(data)
     try:
         with np.errstate(all="ignore"):  # a file's 1e300 or inf: found not finite below
             return _read(path, data, suffix, with_mass)

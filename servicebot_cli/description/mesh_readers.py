@@ -17,15 +17,17 @@ in ``__all__``.
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 import numpy as np
 
 from servicebot_cli.description.mesh_arrays import FloatArray, IntArray, MeshFormatError, bounds
 from servicebot_cli.description.mesh_collada import read_dae, read_dae_bounds
 from servicebot_cli.description.mesh_obj import read_obj_indexed
+from servicebot_cli.description.safe_xml import declaration_first
 
-__all__ = ["MOST_BYTES", "SUFFIXES", "MeshFormatError", "bounds", "read_dae_bounds", "read_indexed",
-           "read_stl"]
+__all__ = ["MOST_BYTES", "SUFFIXES", "MeshFormatError", "bounds", "read_dae_bounds", "read_file",
+           "read_indexed", "read_stl", "too_large"]
 
 MOST_BYTES = 1_000_000_000
 """The largest mesh file read (a scanned building is a few hundred MB); a 3 GB sparse file
@@ -33,6 +35,27 @@ was read whole."""
 
 SUFFIXES = (".stl", ".obj", ".dae")
 """The formats these readers read (any case); others are left to trimesh."""
+
+
+def too_large(size: int) -> str | None:
+    """Why a mesh file of ``size`` bytes is not read, or None when it is not too large."""
+    if size <= MOST_BYTES:
+        return None
+    return f"the file is {size / 1e9:.1f} GB, over the {MOST_BYTES / 1e9:.0f} GB a mesh is read to"
+
+
+def read_file(path: Path) -> bytes:
+    """The bytes of the mesh at ``path``; a COLLADA file's with its XML declaration first.
+
+    Raises:
+        MeshFormatError: The file is over :data:`MOST_BYTES` (:func:`too_large` says so).
+        OSError: It cannot be read.
+    """
+    why = too_large(path.stat().st_size)
+    if why is not None:
+        raise MeshFormatError(why)
+    data = path.read_bytes()
+    return declaration_first(data) if path.suffix.lower() == ".dae" else data
 
 
 def read_indexed(suffix: str, data: bytes) -> tuple[FloatArray, IntArray]:

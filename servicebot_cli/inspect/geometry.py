@@ -126,18 +126,11 @@ def _with_our_readers(path: Path) -> tuple[FloatArray, npt.NDArray[np.int64]] | 
     (velodyne_simulator's ``name="<STL_BINARY>"``).
     """
     try:
-        size = path.stat().st_size
-        if size > mesh_readers.MOST_BYTES:
-            most_gb = mesh_readers.MOST_BYTES / 1e9
-            return f"the file is {size / 1e9:.1f} GB, over the {most_gb:.0f} GB a mesh is read to"
-        data = path.read_bytes()
-    except OSError as exc:
-        return exc.strerror or str(exc)
-    if path.suffix.lower() == ".dae":
-        data = declaration_first(data)
-    try:
+        data = mesh_readers.read_file(path)
         with np.errstate(all="ignore"):  # a file's 1e300: refused in our words by _usable
             vertices, faces = mesh_readers.read_indexed(path.suffix, data)
+    except OSError as exc:
+        return exc.strerror or str(exc)
     except (mesh_readers.MeshFormatError, ValueError, IndexError) as exc:
         return str(exc) or type(exc).__name__
     return vertices, faces.astype(np.int64)

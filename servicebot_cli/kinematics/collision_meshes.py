@@ -112,9 +112,9 @@ def _read(path: Path, size: int) -> str | None:
     suffix = path.suffix.lower()
     if suffix not in (*mesh_readers.SUFFIXES, ".ply"):
         return None  # Assimp's alone to read
-    if size > mesh_readers.MOST_BYTES:
-        return (f"the file is {size / 1e9:.1f} GB, over the "
-                f"{mesh_readers.MOST_BYTES / 1e9:.0f} GB a mesh is read to")
+    too_large = mesh_readers.too_large(size)
+    if too_large is not None:
+        return too_large
     try:
         data = path.read_bytes()
     except OSError as exc:
