@@ -21,6 +21,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.kinematics.mimics import leader_range
 
 if TYPE_CHECKING:
     import pinocchio as pin
@@ -117,8 +118,7 @@ class Coupling:
                 shift = self.groups.offset[k] - ratio * self.groups.offset[drive]
                 if ratio == 0.0:
                     continue
-                ends = sorted(((space.lower[k] - shift) / ratio,
-                               (space.upper[k] - shift) / ratio))
+                ends = leader_range(space, k, ratio, shift)
                 low, high = max(low, ends[0]), min(high, ends[1])
             if low > high:
                 raise CannotCouple(

@@ -109,3 +109,14 @@ def rules_of(mimics: Mimics | None, given: Collection[str],
             k, c = k * k_lead, k * c_lead + c
         rules[follower] = (lead, k, c)
     return rules
+
+
+def leader_range(space: JointSpace, follower: int, factor: float,
+                 offset: float) -> tuple[float, float]:
+    """The leader's values that keep ``follower`` within its limits, lowest first.
+
+    ``follower`` is ``factor * leader + offset``, with a factor other than 0.
+    """
+    low, high = sorted(((space.lower[follower] - offset) / factor,
+                        (space.upper[follower] - offset) / factor))
+    return low, high

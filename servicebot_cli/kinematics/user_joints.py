@@ -17,7 +17,7 @@ import numpy.typing as npt
 
 from servicebot_cli.common.errors import JointNotFound, OutOfLimits, ServicebotError
 from servicebot_cli.kinematics.json_types import JsonValue
-from servicebot_cli.kinematics.mimics import Mimics, rules_of
+from servicebot_cli.kinematics.mimics import Mimics, leader_range, rules_of
 
 if TYPE_CHECKING:
     from servicebot_cli.description.joint_space import JointSpace
@@ -155,7 +155,7 @@ def _hold_leaders(space: JointSpace, values: FloatArray, named: npt.NDArray[np.b
         for follower, (lead, k, c) in rules.items():
             if lead != root or k == 0.0 or math.isnan(space.lower[follower]):
                 continue
-            ends = sorted(((space.lower[follower] - c) / k, (space.upper[follower] - c) / k))
+            ends = leader_range(space, follower, k, c)
             if ends[0] > low:
                 low, by_low = ends[0], space.names[follower]
             if ends[1] < high:
