@@ -208,27 +208,42 @@ def _xyz(values: np.ndarray) -> tuple[float, float, float]:
 
 
 def _welded(points: np.ndarray, size: float) -> np.ndarray:
-    """An id per point (P, 3), equal for points that coincide within ``size * 1e-7``.
+    """A key per point (P,), equal for points that coincide within ``size * 1e-7``.
 
-    Ids count the distinct positions in sorted order, so the same positions get the same
-    ids whether each is given once (a vertex table) or once per corner.
+    The key is a hash of the point's position rounded to that tolerance, so the same
+    positions get the same keys whether each is given once (a vertex table) or once per
+    corner. Two far positions could share a key only by a 64-bit hash collision.
     """
     tolerance = max(size, 1e-12) * 1e-7
     keys = np.round(points / tolerance).astype(np.int64)
-    # One int64 per vertex position (a hash: a collision could only merge two far vertices)
     packed = keys[:, 0] * 73856093 + keys[:, 1] * 19349663 + keys[:, 2] * 83492791
-    _, ids = np.unique(packed, return_inverse=True)
-    welded: np.ndarray = ids.reshape(-1)
-    return welded
+    return _mixed(packed.view(np.uint64))
 
 
-def _closed(ids: np.ndarray) -> bool:
-    """Every edge of the triangles ``ids`` (n, 3) (welded vertex ids) shared by exactly two."""
-    first, second = ids.T.ravel(), ids[:, [1, 2, 0]].T.ravel()  # each triangle's three edges
+def _mixed(values: np.ndarray) -> np.ndarray:
+    """A 64-bit hash of each of ``values`` (uint64): splitmix64's finaliser, a bijection."""
+    mixed = values ^ (values >> np.uint64(30))
+    mixed *= np.uint64(0xBF58476D1CE4E5B9)
+    mixed ^= mixed >> np.uint64(27)
+    mixed *= np.uint64(0x94D049BB133111EB)
+    mixed ^= mixed >> np.uint64(31)
+    return mixed
+
+
+def _closed(keys: np.ndarray) -> bool:
+    """Every edge of the triangles ``keys`` (n, 3) (welded position keys) shared by exactly two.
+
+    An edge is its two ends' keys, in either order, hashed into one; an edge whose ends
+    weld into one point is no edge.
+    """
+    first, second = keys.T.ravel(), keys[:, [1, 2, 0]].T.ravel()  # each triangle's three edges
     low, high = np.minimum(first, second), np.maximum(first, second)
     edge = low != high
-    _, counts = np.unique(low[edge] * (int(ids.max()) + 1) + high[edge], return_counts=True)
-    return bool(len(counts)) and bool(np.all(counts == 2))
+    edges = np.sort(_mixed(low[edge]) ^ high[edge])
+    if not len(edges) or len(edges) % 2:
+        return False
+    # sorted, every key twice: pairs (0, 1), (2, 3) ... are equal, and neighbouring pairs differ
+    return bool(np.all(edges[0::2] == edges[1::2]) and np.all(edges[2::2] != edges[1:-1:2]))
 
 
 class MeshCache:

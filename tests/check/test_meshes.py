@@ -7,6 +7,7 @@ import pytest
 import trimesh
 
 from servicebot_cli.check.meshes import MeshError, load_mesh
+from servicebot_cli.description.mesh_obj import read_obj_indexed
 from tests.check.corpus import erd_root
 from tests.check.helpers import FIXTURES
 
@@ -101,7 +102,6 @@ OBJ_SHAPES = {
 
 def _obj_triangles(text: bytes) -> np.ndarray:
     """The OBJ's triangles (n, 3, 3), from its vertex table and faces."""
-    from servicebot_cli.description.mesh_obj import read_obj_indexed
 
     vertices, faces = read_obj_indexed(text)
     return vertices[faces] if len(faces) else np.zeros((0, 3, 3))
@@ -174,7 +174,6 @@ def test_collada_bounds_of_placed_and_scaled_parts_are_the_triangles_bounds(mete
 
 def _soup_and_indexed(text: bytes, with_mass: bool):
     from servicebot_cli.check.meshes import summarise, summarise_indexed
-    from servicebot_cli.description.mesh_obj import read_obj_indexed
 
     return summarise(_obj_triangles(text), with_mass), \
         summarise_indexed(*read_obj_indexed(text), with_mass=with_mass)
@@ -278,3 +277,36 @@ def test_collada_bytes_after_the_root_end_are_left_out(tmp_path):
 def load_mesh_of(path, data: bytes):
     path.write_bytes(data)
     return load_mesh(path)
+
+
+CUBE_VERTICES = CUBE_OBJ[:CUBE_OBJ.index(b"f ")]
+
+
+def _cube_faces(offset: int) -> bytes:
+    """The cube's faces, its vertices counted from ``offset`` + 1."""
+    return _shifted(CUBE_OBJ[len(CUBE_VERTICES):], offset)
+
+
+SECOND_CUBE = b"".join(b"v " + b" ".join(str(float(c) + dx).encode() for c, dx in
+                                         zip(line.split()[1:], (1.0, 1.0, 0.0), strict=True))
+                       + b"\n" for line in CUBE_VERTICES.splitlines())  # shares edge x=1, y=1
+
+
+@pytest.mark.parametrize(("text", "closed"), [
+    (CUBE_OBJ, True),
+    (CUBE_VERTICES + b"v 5 5 5\nv 6 5 5\nv 6 6 5\nv 6 6 6\n" + _cube_faces(0)
+     + b"f 9 10 11\nf 9 12 10\nf 10 12 11\nf 11 12 9\n", True),  # two solids apart
+    (CUBE_OBJ + b"f 1 2 6\n", False),  # one edge in three triangles
+    (CUBE_VERTICES + SECOND_CUBE + _cube_faces(0) + _cube_faces(8), False),  # edge in four
+    (CUBE_OBJ.replace(b"f 4 1 5 8\n", b""), False),  # an open box
+], ids=["cube", "cube and tetrahedron apart", "edge in three", "cubes sharing an edge",
+        "open box"])
+def test_closed_means_every_edge_in_exactly_two_triangles(text, closed):
+    """A solid has every edge between two triangles: not one (open), not three or four
+    (non-manifold), whatever the other solids of the file."""
+    for soup_or_indexed in _soup_and_indexed(text, with_mass=True):
+        assert soup_or_indexed.closed is closed
+    reference = trimesh.Trimesh(*read_obj_indexed(text))
+    edges = np.sort(reference.edges, axis=1)
+    _, counts = np.unique(edges, axis=0, return_counts=True)
+    assert bool(np.all(counts == 2)) is closed  # the same count, done another way
