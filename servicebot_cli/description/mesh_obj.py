@@ -1,7 +1,9 @@
 """A fast reader of Wavefront OBJ meshes: the vertex table and triangles as rows of it.
 
-Vertices and faces are found by regular expression and parsed by numpy in one pass; a file
-that pass cannot read is read line by line. Pure.
+Vertex and face lines are cut out of the file in runs of neighbouring lines (or found by
+regular expression) and parsed by numpy in one pass (faces in
+:mod:`~servicebot_cli.description.mesh_obj_faces`); a file that pass cannot read is read
+line by line. Pure.
 """
 
 from __future__ import annotations
@@ -19,20 +21,25 @@ from servicebot_cli.description.mesh_arrays import (
     fan_counts,
     numbers,
 )
+from servicebot_cli.description.mesh_obj_faces import face_corners
 
 # an OBJ's vertex and face lines after a newline; the first line is matched on its own
 _OBJ_VERTEX = re.compile(rb"\n[ \t]*v[ \t]([^\r\n]*)")
 _OBJ_FACE = re.compile(rb"\n[ \t]*f[ \t]([^\r\n]*)")
 _OBJ_FIRST_LINE = re.compile(rb"[ \t]*([vf])[ \t]([^\r\n]*)")
+_V, _F, _SPACE, _TAB, _NEWLINE = 118, 102, 32, 9, 10
+_FEW_RUNS = 64  # runs of vertex or face lines cut out one by one; more, if a line in eight
+
+Lines = tuple[bytes, int]  # the contents of some lines after their keyword, joined by newlines
 
 
 def read_obj_indexed(data: bytes) -> tuple[FloatArray, IntArray]:
     """A Wavefront OBJ's vertex table (V, 3) and triangles as rows of it (F, 3), from 0.
 
-    Polygons are fan-triangulated. Vertices and faces are found by regular expression and
-    parsed by numpy; a file this cannot read in one pass (negative indices, continued lines,
-    a corner that is not an index) is read line by line, which also says what is wrong with
-    it.
+    Polygons are fan-triangulated. Vertex and face lines are cut out of the file in runs
+    of neighbouring lines and parsed by numpy; a file this cannot read in one pass
+    (negative indices, continued lines, a corner that is not an index) is read line by
+    line, which also says what is wrong with it.
 
     Raises:
         MeshFormatError: A vertex without three numbers, or a face naming a vertex that does
@@ -42,69 +49,86 @@ def read_obj_indexed(data: bytes) -> tuple[FloatArray, IntArray]:
         data = data[3:]
     if b"\r" in data and b"\n" not in data:  # classic Mac OS line ends: CR only
         data = data.replace(b"\r", b"\n")
-    if b"\\\n" in data or b"\\\r" in data:
+    if b"\\" in data and (b"\\\n" in data or b"\\\r" in data):  # continued lines
         return _read_obj_lines(data)
-    vertex_lines, face_lines = _OBJ_VERTEX.findall(data), _OBJ_FACE.findall(data)
-    first = _OBJ_FIRST_LINE.match(data)
-    if first:
-        (vertex_lines if first[1] == b"v" else face_lines).insert(0, first[2])
-    faces = _obj_faces(face_lines)
+    found = _in_runs(data) or _by_expression(data)
+    (vertex_text, vertex_count), (face_text, face_count) = found
+    faces = face_corners(face_text, face_count)
     if faces is None:
         return _read_obj_lines(data)
     indices, counts = faces
-    table = _obj_vertices(vertex_lines)
+    table = _obj_vertices(vertex_text, vertex_count)
+    if len(counts) and counts.min() == 3 == counts.max():  # triangles only, as most are
+        return table, checked(len(table), (indices - 1).reshape(-1, 3))
     polygons = counts >= 3  # a face of one or two corners has no area: left out
     return table, fan_counts(len(table), indices[np.repeat(polygons, counts)] - 1,
                               counts[polygons])
 
 
-def _obj_faces(faces: list[bytes]) -> tuple[IntArray, IntArray] | None:
-    """Every corner's vertex index (from 1) and each face's corner count.
+def _in_runs(data: bytes) -> tuple[Lines, Lines] | None:
+    """The vertex and face lines, cut out of ``data`` a run of neighbouring lines at a time.
 
-    None when a corner is not a positive index (a negative one counts from the vertices
-    read so far, which only the line-by-line reader knows).
+    None where the regular expressions must find them: a line that starts with a blank, a
+    carriage return inside a line, more runs than a line in eight.
     """
-    chars = np.frombuffer(b"\n".join(faces), np.uint8)
-    blank = (chars == ord(" ")) | (chars == ord("\t")) | (chars == ord("\n"))
-    if (chars == ord("/")).any():
-        chars = _corner_vertices(chars, blank | (chars == ord("\r")) | (chars == ord("\f"))
-                                 | (chars == ord("\v")))
-        blank = (chars == ord(" ")) | (chars == ord("\t")) | (chars == ord("\n"))
-    starts = ~blank & np.concatenate(([True], blank[:-1]))
-    counts = np.bincount(np.cumsum(chars == ord("\n"))[starts], minlength=len(faces))
-    try:
-        indices = numbers(chars.tobytes(), np.int64)
-    except MeshFormatError:
+    chars = np.frombuffer(data + b"\n\n", dtype=np.uint8)
+    newlines = np.flatnonzero(chars[:len(data)] == _NEWLINE)
+    starts = np.empty(len(newlines) + 1, dtype=np.int64)
+    starts[0], starts[1:] = 0, newlines + 1
+    first, second = chars[starts], chars[starts + 1]
+    if np.any((first == _SPACE) | (first == _TAB)):
         return None
-    if len(indices) != int(counts.sum()) or (len(indices) and indices.min() < 1):
+    keyword = np.where((second == _SPACE) | (second == _TAB), first, 0)
+    ends = np.append(newlines, len(data))
+    vertices = _runs(data, keyword == _V, starts, ends, b"v")
+    faces = _runs(data, keyword == _F, starts, ends, b"f")
+    if vertices is None or faces is None:
         return None
-    return indices, counts.astype(np.int64)
+    return vertices, faces
 
 
-def _corner_vertices(chars: npt.NDArray[np.uint8], blank: npt.NDArray[np.bool_]
-                     ) -> npt.NDArray[np.uint8]:
-    """Face text without each corner's texture and normal indices: "7/2/5 8//6" -> "7 8".
+def _runs(data: bytes, chosen: npt.NDArray[np.bool_], starts: IntArray, ends: IntArray,
+          keyword: bytes) -> Lines | None:
+    """The contents of the ``chosen`` lines (each after its keyword and one blank)."""
+    edges = np.flatnonzero(np.diff(np.concatenate(([False], chosen, [False]))))
+    if len(edges) > 2 * max(_FEW_RUNS, len(chosen) // 8):
+        return None
+    parts = []
+    for first, after in zip(edges[0::2].tolist(), edges[1::2].tolist(), strict=True):
+        run = data[starts[first] + 2:ends[after - 1]]  # from after the first line's keyword
+        cut = run.replace(b"\n" + keyword + b" ", b"\n")
+        keywords = 2 * (after - first - 1)  # each later line's keyword and blank
+        if len(run) - len(cut) != keywords:
+            cut = cut.replace(b"\n" + keyword + b"\t", b"\n")
+            if len(run) - len(cut) != keywords:  # a keyword in a line's contents came first
+                return None
+        parts.append(cut)
+    text = b"\n".join(parts)
+    if b"\r" in text:  # CRLF line ends; a carriage return anywhere else ends the line there
+        text = text.replace(b"\r\n", b"\n").removesuffix(b"\r")
+        if b"\r" in text:
+            return None
+    return text, int(chosen.sum())
 
-    A character stays when it is blank or no slash stands between it and its corner's start.
-    """
-    slash = chars == ord("/")
-    slashes = np.cumsum(slash, dtype=np.int64 if len(chars) >= 2**31 else np.int32)
-    starts = np.flatnonzero(~blank & np.concatenate(([True], blank[:-1])))
-    at_start = np.zeros(len(chars), slashes.dtype)  # the count before each corner's start
-    if len(starts):
-        at_start[starts[0]:] = np.repeat(slashes[starts] - slash[starts],
-                                         np.diff(np.append(starts, len(chars))))
-    kept: npt.NDArray[np.uint8] = chars[(slashes == at_start) | blank]
-    return kept
+
+def _by_expression(data: bytes) -> tuple[Lines, Lines]:
+    """The vertex and face lines, found by regular expression."""
+    vertex_lines, face_lines = _OBJ_VERTEX.findall(data), _OBJ_FACE.findall(data)
+    first = _OBJ_FIRST_LINE.match(data)
+    if first:
+        (vertex_lines if first[1] == b"v" else face_lines).insert(0, first[2])
+    return (b"\n".join(vertex_lines), len(vertex_lines)), (b"\n".join(face_lines),
+                                                          len(face_lines))
 
 
-def _obj_vertices(lines: list[bytes]) -> FloatArray:
-    """``x y z`` of each ``v`` line (a fourth weight or vertex colours after them ignored)."""
-    values = numbers(b" ".join(lines))
-    if len(values) == 3 * len(lines):
+def _obj_vertices(text: bytes, count: int) -> FloatArray:
+    """``x y z`` of ``count`` ``v`` lines (a fourth weight or vertex colours ignored)."""
+    values = numbers(text)
+    if len(values) == 3 * count:
         table: FloatArray = values.reshape(-1, 3)
         return table
-    counts = np.array([len(line.split()) for line in lines], dtype=np.int64)
+    counts = np.array([len(line.split()) for line in text.split(b"\n")] if count else [],
+                      dtype=np.int64)
     if np.any(counts < 3) or len(values) != int(counts.sum()):
         raise MeshFormatError("a vertex ('v' line) without three numbers")
     first = np.cumsum(counts) - counts
