@@ -310,3 +310,35 @@ def test_closed_means_every_edge_in_exactly_two_triangles(text, closed):
     edges = np.sort(reference.edges, axis=1)
     _, counts = np.unique(edges, axis=0, return_counts=True)
     assert bool(np.all(counts == 2)) is closed  # the same count, done another way
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_each_twice_is_a_count_of_every_key(seed):
+    """Keys that share low bits (one bucket) in every mix of counts: the bucket count and the
+    sort of full buckets say what counting every key says."""
+    from collections import Counter
+
+    from servicebot_cli.check.meshes import _each_twice
+
+    rng = np.random.default_rng(seed)
+    low = rng.integers(0, (4, 64, 1024)[seed % 3], 40, dtype=np.uint64)  # full buckets, or pairs
+    high = rng.integers(0, 2**20, 40, dtype=np.uint64) << np.uint64(40)
+    distinct = np.unique(low | high)
+    copies = rng.choice([2, 2, 2, 2, 1, 3, 4], len(distinct)) if seed % 4 in (1, 2) else \
+        np.full(len(distinct), 2)
+    keys = rng.permutation(np.repeat(distinct, copies))
+    expected = bool(len(keys)) and all(n == 2 for n in Counter(keys.tolist()).values())
+    assert _each_twice(keys) is expected
+
+
+@pytest.mark.parametrize(("keys", "expected"), [
+    ([5, 5 + 2**40, 9, 9], False),  # two keys once each, in one bucket of two
+    ([5, 5 + 2**40, 5, 5 + 2**40], True),  # both twice: a bucket of four
+    ([5, 5, 5, 5], False),  # one key four times
+    ([5, 5, 7, 7, 7], False),
+    ([], False),
+])
+def test_each_twice_in_shared_buckets(keys, expected):
+    from servicebot_cli.check.meshes import _each_twice
+
+    assert _each_twice(np.array(keys, dtype=np.uint64)) is expected
