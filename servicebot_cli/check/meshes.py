@@ -222,7 +222,7 @@ def _welded(points: np.ndarray, size: float) -> np.ndarray:
 
 def _mixed(values: np.ndarray) -> np.ndarray:
     """A 64-bit hash of each of ``values`` (uint64): splitmix64's finaliser, a bijection."""
-    mixed = values ^ (values >> np.uint64(30))
+    mixed: np.ndarray = values ^ (values >> np.uint64(30))
     mixed *= np.uint64(0xBF58476D1CE4E5B9)
     mixed ^= mixed >> np.uint64(27)
     mixed *= np.uint64(0x94D049BB133111EB)
