@@ -86,9 +86,12 @@ def _read(path: Path, data: bytes, suffix: str, with_mass: bool) -> MeshInfo:
     """:func:`load_mesh` once the file is read."""
     if suffix == ".dae" and not with_mass:
         return _bounds_only(*mesh_readers.read_dae_bounds(data))
-    if suffix in mesh_readers.SUFFIXES:
+    if suffix == ".obj":
         return summarise_indexed(*mesh_readers.read_indexed(suffix, data), with_mass)
-    triangles = _with_trimesh(path)
+    if suffix in mesh_readers.SUFFIXES:  # every triangle's corners, as summarise takes them
+        triangles = mesh_readers.read_triangles(suffix, data)
+    else:
+        triangles = _with_trimesh(path)
     if not np.all(np.isfinite(triangles)):
         raise MeshError("vertices with NaN or infinite coordinates")
     return summarise(triangles, with_mass)

@@ -27,7 +27,7 @@ from servicebot_cli.description.mesh_obj import read_obj_indexed
 from servicebot_cli.description.safe_xml import declaration_first
 
 __all__ = ["MOST_BYTES", "SUFFIXES", "MeshFormatError", "bounds", "read_dae_bounds", "read_file",
-           "read_indexed", "read_stl", "too_large"]
+           "read_indexed", "read_stl", "read_triangles", "too_large"]
 
 MOST_BYTES = 1_000_000_000
 """The largest mesh file read (a scanned building is a few hundred MB); a 3 GB sparse file
@@ -67,13 +67,23 @@ def read_indexed(suffix: str, data: bytes) -> tuple[FloatArray, IntArray]:
         MeshFormatError: Not a readable mesh of its format.
         ValueError: ``suffix`` is none of :data:`SUFFIXES`.
     """
-    kind = suffix.lower()
-    if kind == ".obj":
+    if suffix.lower() == ".obj":
         return read_obj_indexed(data)
-    if kind not in (".stl", ".dae"):
-        raise ValueError(f"no fast reader for '{suffix}' files")
-    triangles = read_stl(data) if kind == ".stl" else read_dae(data)
+    triangles = read_triangles(suffix, data)
     return triangles.reshape(-1, 3), np.arange(3 * len(triangles), dtype=np.int64).reshape(-1, 3)
+
+
+def read_triangles(suffix: str, data: bytes) -> FloatArray:
+    """The triangles (F, 3, 3) of an STL or COLLADA file, which list each triangle's corners.
+
+    Raises:
+        MeshFormatError: Not a readable mesh of its format.
+        ValueError: ``suffix`` is neither ``.stl`` nor ``.dae``.
+    """
+    kind = suffix.lower()
+    if kind not in (".stl", ".dae"):
+        raise ValueError(f"no fast triangle reader for '{suffix}' files")
+    return read_stl(data) if kind == ".stl" else read_dae(data)
 
 
 def read_stl(data: bytes) -> FloatArray:
