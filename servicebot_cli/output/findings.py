@@ -16,7 +16,7 @@ from servicebot_cli.check.catalogue import RULES
 from servicebot_cli.check.findings import Finding, Severity
 from servicebot_cli.check.result import CheckResult
 from servicebot_cli.common.files import atomic_output
-from servicebot_cli.common.jsonable import dumps
+from servicebot_cli.common.jsonable import dumps_plain
 
 if TYPE_CHECKING:
     from servicebot_cli.description.packages import PackageLocation
@@ -88,8 +88,8 @@ def package_record(location: PackageLocation | None) -> dict[str, object]:
 
 
 def json_text(result: CheckResult) -> str:
-    """The versioned JSON document of a run."""
-    return dumps({
+    """The versioned JSON document of a run (made of strings, integers, booleans and None)."""
+    return dumps_plain({
         "format_version": JSON_FORMAT_VERSION,
         "tool": {"name": "servicebot check", "version": __version__},
         "files": [

@@ -11,7 +11,7 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from servicebot_cli.common.jsonable import dumps
+from servicebot_cli.common.jsonable import dumps, dumps_plain
 from servicebot_cli.output.table import format_number, table
 
 
@@ -66,6 +66,7 @@ _JSON_TREES = st.recursive(_JSON_LEAVES, lambda inner: st.lists(inner, max_size=
 def test_documents_without_floats_are_written_as_the_json_module_writes_them(document):
     """Such documents go through orjson: every byte must still be the json module's."""
     assert dumps(document) == json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+    assert dumps_plain(document) == dumps(document)  # as check writes its report
 
 
 def test_documents_with_floats_keep_pythons_float_text():
