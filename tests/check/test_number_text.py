@@ -116,3 +116,21 @@ def test_real_mesh_number_lists_read_as_numpy_reads_them():
             _same(b" ".join(_OBJ_VERTEX.findall(data)), np.float64)
             lists += 1
     assert lists > 200
+
+
+def test_lists_read_at_once_in_several_threads_are_each_their_own():
+    """Each thread reads with its own parser: a parser serves one list at a time."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    texts = [" ".join(str(k * 1000 + i) + ".5" for i in range(20_000)) for k in range(8)]
+    with ThreadPoolExecutor(4) as pool:
+        read = list(pool.map(numbers, texts * 4))
+    for k, values in enumerate(read):
+        assert values[0] == (k % 8) * 1000 + 0.5 and len(values) == 20_000
+
+
+def test_a_refused_list_leaves_the_parser_ready_for_the_next():
+    assert _as_json("1 true", np.float64) is None  # a JSON literal: not a number to numpy
+    assert _as_json("1 2.5", np.int64) is None  # a float where indices are wanted
+    assert _as_json("1 [2 3]", np.float64) is None  # nesting, which would be flattened
+    assert numbers("4 5 6").tolist() == [4.0, 5.0, 6.0]
