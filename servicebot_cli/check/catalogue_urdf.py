@@ -169,8 +169,12 @@ URDF_RULES: tuple[Rule, ...] = (
          "Effort and velocity limits are magnitudes; a negative one forbids any motion.",
          "Write the magnitude."),
     Rule("SB206", "zero-effort-velocity", W, "A zero effort or velocity limit on a moving joint",
-         "Controllers that enforce the limits will never move the joint.",
-         "Write the actuator's real limits."),
+         "Planners and controllers that enforce a velocity limit of 0 never move the joint; a "
+         "simulator's motors and effort-limited controllers cannot drive a joint whose effort "
+         "limit is 0. MoveIt and position control do not read effort (ROS-Industrial's arms "
+         "write effort=\"0\"), so an effort limit of 0 is information where no simulator "
+         "runs the description.",
+         "Write the actuator's real limits (a passive joint: the largest force it may take)."),
     Rule("SB207", "zero-axis", E, "A moving joint with a zero axis",
          "The joint moves about or along nothing; Pinocchio and KDL produce NaNs.",
          "Write the axis, for example 0 0 1."),
@@ -221,8 +225,11 @@ URDF_RULES: tuple[Rule, ...] = (
          "frames, sensor frames) are fine and not reported.",
          "Give the moving link its mass and inertia."),
     Rule("SB304", "missing-inertial", W, "A moving link without <inertial>",
-         "The link is moved by a joint but carries no mass; links below it do. Gazebo drops "
-         "massless links, KDL ignores them.",
+         "The link is moved by a joint but has no mass of its own or of links fixed to it; "
+         "links further down, past other moving joints, do. Gazebo (sdformat) drops a "
+         "massless link with everything below it, KDL ignores it. Links fixed to it (a "
+         "gripper on a flange link) lend it their mass: sdformat and Pinocchio merge them, "
+         "so that is not reported.",
          "Add an <inertial>, or merge the link into its child."),
     Rule("SB305", "zero-mass", W, "Zero mass on a moving link",
          "The link is moved by a joint and has mass 0 (links below it have mass).",

@@ -11,6 +11,7 @@ import numpy as np
 from servicebot_cli.check import solids, values
 from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound
 from servicebot_cli.check.findings import Issue, Severity
+from servicebot_cli.check.simulators import simulated_by
 from servicebot_cli.kinematics.transforms import rpy_matrix
 
 if TYPE_CHECKING:
@@ -174,6 +175,10 @@ def _moving_masses(robot: RobotDescription) -> Iterator[Issue]:
         if joint.parent in by_name and joint.child in by_name:
             below.setdefault(joint.parent or "", []).append(joint.child or "")
     carried = _subtree_masses(by_name, below)
+    fixed_below: dict[str, list[str]] = {}
+    for joint in robot.joints:
+        if joint.type == "fixed" and joint.parent in by_name and joint.child in by_name:
+            fixed_below.setdefault(joint.parent or "", []).append(joint.child or "")
     simulator = simulated_by(robot)
     for joint in robot.joints:
         link = by_name.get(joint.child or "")
@@ -186,6 +191,8 @@ def _moving_masses(robot: RobotDescription) -> Iterator[Issue]:
                         f"and nothing it carries has mass{target}", link.element,
                         fix="add an <inertial> with the link's real mass and inertia",
                         severity=Severity.ERROR if simulator else Severity.WARNING)
+        elif _lumped_mass(link.name, by_name, fixed_below) > 0.0:
+            continue  # links fixed to it lend it their mass: sdformat and Pinocchio merge them
         elif link.inertial is None:
             yield Issue("SB304", f"link '{link.name}' is moved by joint '{joint.name}' but has "
                         "no <inertial>", link.element, fix="add an <inertial>")
@@ -194,25 +201,17 @@ def _moving_masses(robot: RobotDescription) -> Iterator[Issue]:
                         "mass 0", link.inertial.element, fix="give the link its real mass")
 
 
-_SIMULATOR_PLUGINS = (("gz_ros2_control", "gz sim"), ("ign_ros2_control", "Ignition Gazebo"),
-                      ("gazebo_ros2_control", "Gazebo"), ("mujoco", "MuJoCo"),
-                      ("gazebo", "Gazebo"))
-
-
-def simulated_by(robot: RobotDescription) -> str | None:
-    """The simulator the description is meant for, or None for a kinematic-only description.
-
-    A ``<gazebo>`` element, or a ros2_control hardware plugin for Gazebo, Ignition, gz or
-    MuJoCo, says the file is simulated.
-    """
-    if robot.root.find("gazebo") is not None:
-        return "Gazebo"
-    for plugin in robot.root.iterfind("ros2_control/hardware/plugin"):
-        text = (plugin.text or "").strip().lower()
-        for prefix, name in _SIMULATOR_PLUGINS:
-            if text.startswith(prefix) or ("/" in text and prefix in text):
-                return name
-    return None
+def _lumped_mass(name: str, by_name: dict[str, Link], fixed_below: dict[str, list[str]]) -> float:
+    """Mass of link ``name`` and of the links fixed to it (through fixed joints only)."""
+    total, seen, stack = 0.0, set(), [name]
+    while stack:  # iterative, and safe on loops
+        current = stack.pop()
+        if current in seen:
+            continue
+        seen.add(current)
+        total += _mass(by_name[current])
+        stack.extend(fixed_below.get(current, ()))
+    return total
 
 
 def _subtree_masses(by_name: dict[str, Link], below: dict[str, list[str]]) -> dict[str, float]:

@@ -6,7 +6,8 @@ import math
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.findings import Issue, Severity
+from servicebot_cli.check.simulators import simulated_by
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
 from servicebot_cli.description.elements import JOINT_TYPES, parse_float
 
@@ -29,17 +30,39 @@ _TWO_PI = 2.0 * math.pi
 
 def check(robot: RobotDescription) -> Iterator[Issue]:
     """Every joint issue of ``robot``."""
+    simulator = simulated_by(robot)
     for joint in robot.joints:
         if joint.type and joint.type not in JOINT_TYPES:
             advice = _ADVICE.get(joint.type.lower(), f"use one of: {', '.join(JOINT_TYPES)}")
             yield Issue("SB201", f"joint '{joint.name}' has type '{joint.type}', which URDF "
                         f"does not have; {advice}", joint.element)
             continue
-        yield from _limits(joint)
+        yield from _limits(joint, simulator)
         yield from _axis(joint)
         yield from _safety(joint)
     yield from _mimics(robot)
     yield from _wheel_speeds(robot)
+
+
+def _zero_limit(joint: Joint, label: str, simulator: str | None) -> Issue:
+    """SB206: an effort or velocity limit of 0, weighed by who reads it.
+
+    MoveIt and position or trajectory control do not read effort: ROS-Industrial's arms
+    write ``effort="0"`` and move. A simulator's motors and effort-limited controllers
+    cannot drive such a joint (a passive joint moves by springs and contact only). A velocity
+    limit of 0 holds the joint still for every planner and controller that enforces limits.
+    """
+    if label == "velocity":
+        return Issue("SB206", f"joint '{joint.name}' has velocity limit 0: planners and "
+                     "controllers that enforce velocity limits cannot move it", joint.element)
+    if simulator is None:
+        return Issue("SB206", f"joint '{joint.name}' has effort limit 0: kinematics, MoveIt "
+                     "and position control do not read effort, but a simulator or an "
+                     "effort-limited controller could not drive the joint", joint.element,
+                     severity=Severity.INFO)
+    return Issue("SB206", f"joint '{joint.name}' has effort limit 0: {simulator}'s motors and "
+                 "effort-limited controllers cannot drive it (a passive joint moves only by "
+                 "springs and contact)", joint.element)
 
 
 def _wheel_speeds(robot: RobotDescription) -> Iterator[Issue]:
@@ -63,7 +86,7 @@ def _wheel_speeds(robot: RobotDescription) -> Iterator[Issue]:
                         "speed in rad/s")
 
 
-def _limits(joint: Joint) -> Iterator[Issue]:
+def _limits(joint: Joint, simulator: str | None) -> Iterator[Issue]:
     limits = joint.limits
     if limits is None:
         if joint.type in ("revolute", "prismatic"):
@@ -78,8 +101,7 @@ def _limits(joint: Joint) -> Iterator[Issue]:
             yield Issue("SB205", f"joint '{joint.name}' has {label} limit {value:g}", joint.element,
                         fix=f"{label}=\"{-value:g}\"")
         elif value == 0:
-            yield Issue("SB206", f"joint '{joint.name}' has {label} limit 0: it can never move",
-                        joint.element)
+            yield _zero_limit(joint, label, simulator)
     if joint.type == "continuous":
         element = joint.element.find("limit") if joint.element is not None else None
         if element is not None and ("lower" in element.attrib or "upper" in element.attrib):

@@ -135,3 +135,62 @@ def test_an_empty_robot_name_is_a_warning_a_missing_one_an_error(run, tmp_path):
     assert _severities(run, empty, "SB009") == ["warning"]
     assert _severities(run, missing, "SB009") == ["error"]
     assert not check_urdf_rejects(empty) and check_urdf_rejects(missing)
+
+
+def test_an_effort_limit_of_0_is_information_where_no_simulator_runs(run, tmp_path):
+    """ROS-Industrial's support packages write effort="0" on arms MoveIt moves (abb, kuka)."""
+    path = tmp_path / "arm.urdf"
+    path.write_text(ARM.format(extra="").replace('effort="10"', 'effort="0"'))
+    assert _severities(run, path, "SB206") == ["info"]
+    simulated = tmp_path / "simulated.urdf"
+    simulated.write_text(ARM.format(extra='<gazebo reference="arm"><mu1>0.5</mu1></gazebo>')
+                         .replace('effort="10"', 'effort="0"'))
+    result = run("check", simulated, "--format", "json", "--isolated")
+    [found] = [f for f in findings(result.stdout) if f["code"] == "SB206"]
+    assert found["severity"] == "warning" and "Gazebo's motors" in found["message"]
+    assert "never move" not in found["message"]
+
+
+def test_a_velocity_limit_of_0_is_a_warning_everywhere(run, tmp_path):
+    path = tmp_path / "arm.urdf"
+    path.write_text(ARM.format(extra="").replace('velocity="1"', 'velocity="0"'))
+    assert _severities(run, path, "SB206") == ["warning"]
+
+
+_MASS = ('<inertial><mass value="{0}"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" '
+         'ixz="0" iyz="0"/></inertial>')
+# base -shoulder-> flange -fixed-> gripper (mass on the gripper only) -finger-> finger
+FLANGE = """<robot name="flange">
+  <link name="base"/>
+  <link name="flange">{flange}</link>
+  <link name="gripper">{gripper}</link>
+  <link name="finger">""" + _MASS.format(0.1) + """</link>
+  <joint name="shoulder" type="revolute">
+    <parent link="base"/><child link="flange"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="10" velocity="1"/>
+  </joint>
+  <joint name="mount" type="fixed"><parent link="flange"/><child link="gripper"/></joint>
+  <joint name="finger" type="prismatic">
+    <parent link="gripper"/><child link="finger"/><axis xyz="1 0 0"/>
+    <limit lower="0" upper="0.04" effort="10" velocity="0.1"/>
+  </joint>
+</robot>
+"""
+
+
+@pytest.mark.parametrize(("flange", "gripper", "expected"), [
+    ("", _MASS.format(1.0), set()),  # the gripper fixed to it lends it its mass (kortex)
+    (_MASS.format(0), _MASS.format(1.0), set()),
+    ("", "", {"SB304"}),  # only the finger, past another moving joint, has mass
+    (_MASS.format(0), "", {"SB305"}),
+], ids=["no inertial, fixed gripper with mass", "mass 0, fixed gripper with mass",
+        "no inertial, massless fixed gripper", "mass 0, massless fixed gripper"])
+def test_links_fixed_to_a_moving_link_lend_it_their_mass(run, tmp_path, flange, gripper,
+                                                         expected):
+    """sdformat lumps links on fixed joints into their parent, and Pinocchio merges them: a
+    massless flange carrying a gripper is a body with the gripper's mass."""
+    path = tmp_path / "flange.urdf"
+    path.write_text(FLANGE.format(flange=flange, gripper=gripper))
+    result = run("check", path, "--format", "json", "--isolated")
+    codes = {f["code"] for f in findings(result.stdout)} & {"SB303", "SB304", "SB305"}
+    assert codes == expected, result.stdout
