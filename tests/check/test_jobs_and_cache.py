@@ -88,14 +88,18 @@ def test_without_the_option_nothing_is_kept(run, robot, tmp_path):
 @pytest.mark.parametrize("ending", [signal.SIGINT, signal.SIGTERM])
 def test_a_signal_stops_the_workers_with_one_line(ending):
     """Workers are stopped with the run: no traceback, no process left behind."""
-    corpus = sorted((erd_root() / "robots").rglob("*.urdf"))
-    process = subprocess.Popen(
+    corpus = sorted((erd_root() / "robots").rglob("*.urdf")) * 4  # each file four times:
+    process = subprocess.Popen(  # seconds of work on any machine
         [sys.executable, "-m", "servicebot_cli", "check", "urdf", "--isolated", "--jobs", "2",
          "--package", f"example-robot-data={erd_root()}", *map(str, corpus)],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    time.sleep(1.5)  # past the start: the workers are checking
+    deadline = time.monotonic() + 30
+    while len(children(process.pid)) < 2 and time.monotonic() < deadline:
+        time.sleep(0.05)
+    time.sleep(0.3)  # past the start: the workers are checking
     workers = children(process.pid)
     assert workers, "no worker processes"
+    assert process.poll() is None, "the run ended before the signal"
     process.send_signal(ending)
     _, stderr = process.communicate(timeout=30)
     assert process.returncode == 128 + ending
