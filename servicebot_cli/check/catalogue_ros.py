@@ -69,6 +69,11 @@ ROS_RULES = (
          "sdformat ignore top-level <transmission>s, so motor or actuator transmissions meant "
          "for a robot's own hardware interface (NASA Valkyrie's) break nothing they read.",
          "Use the suggested name, or remove the transmission."),
+    Rule("SB512", "control-limit-text", W, "A command interface min or max that is not a number",
+         "ros2_control reads a command interface's <param name=\"min\"> and \"max\" as "
+         "numbers; text it cannot read (a value in quotes, a unit, a decimal comma) makes it "
+         "log \"Error parsing the limits\" and go on without the interface's limits.",
+         "Write a plain decimal number."),
     # -- controller configuration ----------------------------------------------------------------
     Rule("SB601", "controllers-yaml", E, "The controllers YAML cannot be read",
          "Not YAML, or not the shape of a ros2_control parameters file "

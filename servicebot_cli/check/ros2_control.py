@@ -1,4 +1,4 @@
-"""ros2_control rules (SB504-SB510); transmissions (SB511) are in :mod:`transmissions`."""
+"""ros2_control rules (SB504-SB510, SB512); transmissions (SB511) are in :mod:`transmissions`."""
 
 from __future__ import annotations
 
@@ -9,6 +9,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue, Severity
+from servicebot_cli.check.values import is_number
 from servicebot_cli.common.errors import NameNotFound
 from servicebot_cli.description.elements import parse_float
 
@@ -138,7 +139,35 @@ def _joint(item: ControlJoint, joints: dict[str, Joint], block: Ros2Control) -> 
                         f"standard; did you mean '{close[0]}'?", item.element,
                         fix=f'name="{close[0]}"')
     for interface in item.command_interfaces:
+        yield from _limit_texts(item, interface)
         yield from _command_limits(item, interface, joint)
+
+
+def _limit_texts(item: ControlJoint, interface: Interface) -> Iterator[Issue]:
+    """SB512: a command interface's min or max that ros2_control cannot read as a number.
+
+    ros2_control reads them with its own stod (istringstream, or from_chars since C++20),
+    logs "Error parsing the limits" and goes on without them (Interbotix's arms write
+    ``"-3.14"`` with the quotes). A number with blanks around it is left alone: the two
+    readers differ there.
+    """
+    for key in ("min", "max"):
+        text = interface.get(key)
+        if text is None or is_number(text):
+            continue
+        element = item.element.find(f"command_interface[@name='{interface.name}']"
+                                    f"/param[@name='{key}']") if item.element is not None else None
+        yield Issue("SB512", f"joint '{item.name}' {interface.name} command interface: {key} "
+                    f"'{text}' is not a number; ros2_control skips the interface's limits",
+                    element if element is not None else item.element, fix=_number_fix(text))
+
+
+def _number_fix(text: str) -> str:
+    """How to write ``text`` as the number it means, where that is plain."""
+    unquoted = text.strip().strip("'\"").strip()
+    if unquoted != text.strip() and is_number(unquoted):
+        return f"write {unquoted}, without the quotes"
+    return "write a plain decimal number (a point, no quotes or units)"
 
 
 def _command_limits(item: ControlJoint, interface: Interface, joint: Joint) -> Iterator[Issue]:

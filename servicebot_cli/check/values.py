@@ -8,11 +8,16 @@ instead of computing on NaN, infinity or 1e300 and failing or printing numpy war
 from __future__ import annotations
 
 import math
+import re
 import xml.etree.ElementTree as ET
 from collections.abc import Iterable
 
 from servicebot_cli.description.elements import Geometry, Pose, Shape
 
+# a decimal number as C's readers take it: ASCII digits (Python's float() also reads "٣"), and
+# the words nan and inf, which some read and some do not
+_DECIMAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?"
+                      r"|[+-]?(?:nan|inf|infinity)", re.IGNORECASE)
 _TEXT_ATTRIBUTES = frozenset({"name", "filename", "type", "link", "joint", "reference"})
 LARGEST_LENGTH_M = 1e6
 """Lengths and offsets beyond this [m] are not computed with (no robot is 1000 km wide)."""
@@ -20,6 +25,11 @@ LARGEST_SCALE = 1e6
 """Mesh scale factors beyond this are not computed with."""
 LARGEST_INERTIA = 1e12
 """Masses [kg] and inertia components [kg m^2] beyond this are not computed with."""
+
+
+def is_number(text: str) -> bool:
+    """Whether ``text`` is one decimal number (ASCII digits; nan and inf count)."""
+    return _DECIMAL.fullmatch(text) is not None
 
 
 def finite(values: Iterable[float | None]) -> bool:
