@@ -36,6 +36,25 @@ def display_path(path: Path) -> str:
         return str(path.resolve())
 
 
+def as_typed(path: str) -> str:
+    """``path`` relative to the working directory when it lies under it, else as it is.
+
+    A file reached through ``$(find pkg)`` comes as an absolute path, the same file reached
+    by a relative include as a relative one; shown the same way, a finding points at one
+    file, and GitHub annotations (which want paths in the repository) attach to it.
+    Symbolic links are not followed: the path stays the one the user's tools name.
+    """
+    if not os.path.isabs(path):
+        return path
+    try:
+        here = os.getcwd()
+        if os.path.commonpath([here, os.path.normpath(path)]) != here:
+            return path
+    except (OSError, ValueError):  # no working directory any more; another drive
+        return path
+    return os.path.relpath(path, here)
+
+
 @contextlib.contextmanager
 def _reading(display: str, kind: str, error: type[ServicebotError]) -> Iterator[None]:
     """Turn the OS's reasons for not reading a file into one ``error`` line."""

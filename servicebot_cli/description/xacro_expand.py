@@ -28,7 +28,7 @@ from xml.dom import expatbuilder
 from xml.parsers import expat
 
 from servicebot_cli.common.errors import DescriptionError, PackageNotFound, XacroError, XmlError
-from servicebot_cli.common.inputs import open_binary
+from servicebot_cli.common.inputs import as_typed, open_binary
 from servicebot_cli.description.install_layout import installed_source
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
@@ -244,6 +244,8 @@ class _Tracer:
             raise xacro.XacroException(f"'{filename}' holds over {MAX_BYTES >> 20} MiB, the "
                                        "limit for a description; is it the right file?")
         display = filename or path
+        if self.files:  # an include: $(find)'s absolute path shown as a relative include's
+            display = as_typed(display)  # (the file checked stays as the user named it)
         text = parse_xml(data, display, blanks_before_declaration=False).text
         self.files.append(display)
         self.known_args.update(_ARG_USE_RE.findall(text))

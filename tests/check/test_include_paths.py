@@ -1,0 +1,81 @@
+"""A finding in an included file names it the same way, however it was included.
+
+ROS packages include their parts with ``$(find pkg)``, which gives xacro an absolute path; a
+relative include gives a relative one. A finding must name the file as the user would type
+it from where they run check, so that GitHub annotations (paths in the repository) attach.
+"""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from tests.conftest import run_servicebot
+
+PARTS = """<?xml version="1.0"?>
+<robot xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:macro name="arm" params="parent">
+    <link name="arm"/>
+    <joint name="arm_joint" type="revolute">
+      <parent link="${parent}"/><child link="arm"/><axis xyz="0 0 1"/>
+      <limit lower="2" upper="1" effort="10" velocity="1"/>
+    </joint>
+  </xacro:macro>
+</robot>
+"""
+ROBOT = """<?xml version="1.0"?>
+<robot name="demo" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:include filename="{include}"/>
+  <link name="base"/>
+  <xacro:arm parent="base"/>
+</robot>
+"""
+
+
+@pytest.fixture()
+def workspace(tmp_path):
+    urdf = tmp_path / "ws" / "src" / "demo_description" / "urdf"
+    urdf.mkdir(parents=True)
+    (urdf.parent / "package.xml").write_text(
+        "<package format=\"3\"><name>demo_description</name></package>")
+    (urdf / "parts.xacro").write_text(PARTS)
+    (urdf / "by_find.urdf.xacro").write_text(
+        ROBOT.format(include="$(find demo_description)/urdf/parts.xacro"))
+    (urdf / "relative.urdf.xacro").write_text(ROBOT.format(include="parts.xacro"))
+    return tmp_path / "ws"
+
+
+def _sb203(workspace, *args: str) -> list[dict]:
+    result = run_servicebot("check", "urdf", "--isolated", "--format", "json", *args,
+                            cwd=workspace)
+    return [f for report in json.loads(result.stdout)["files"] for f in report["findings"]
+            if f["code"] == "SB203"]
+
+
+def test_an_include_by_find_is_named_as_a_relative_include_is(workspace):
+    found = _sb203(workspace, "src/demo_description/urdf/by_find.urdf.xacro",
+                   "src/demo_description/urdf/relative.urdf.xacro")
+    assert [f["file"] for f in found] == ["src/demo_description/urdf/parts.xacro"] * 2
+    assert [f["via"] for f in found] == ["src/demo_description/urdf/by_find.urdf.xacro:5:3",
+                                         "src/demo_description/urdf/relative.urdf.xacro:5:3"]
+
+
+def test_github_annotations_name_files_in_the_repository(workspace):
+    result = run_servicebot("check", "urdf", "--isolated", "--format", "github",
+                            "src/demo_description/urdf/by_find.urdf.xacro", cwd=workspace)
+    assert "::warning file=src/demo_description/urdf/parts.xacro,line=5," in result.stdout
+
+
+def test_a_file_outside_the_working_directory_keeps_its_absolute_path(workspace):
+    """The file checked is named as the user named it; an include outside the working
+    directory has no shorter name than its absolute path."""
+    urdf = workspace / "src" / "demo_description" / "urdf"
+    elsewhere = workspace / "elsewhere"
+    elsewhere.mkdir()
+    robot = urdf / "by_find.urdf.xacro"
+    result = run_servicebot("check", "urdf", "--isolated", "--format", "json", str(robot),
+                            cwd=elsewhere)
+    (found,) = [f for report in json.loads(result.stdout)["files"] for f in report["findings"]
+                if f["code"] == "SB203"]
+    assert found["file"] == str(urdf / "parts.xacro") and found["via"] == f"{robot}:5:3"
