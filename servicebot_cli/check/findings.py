@@ -35,7 +35,11 @@ class Finding:
         line: 1-based line, 0 when the problem is the whole file.
         column: 1-based column, 0 when unknown.
         fix: What to do instead, with the values to use where there are some.
-        via: ``file:line:column`` of the xacro macro call that produced the element.
+        via: ``file:line:column`` of the xacro macro call that produced the element (the
+            outermost, in the file the user named, where macro calls nest).
+        calls: Every macro call that produced the element, ``file:line:column``, from the
+            innermost (the call in another macro's body that passed the values) out to
+            ``via``; empty without xacro macros.
     """
 
     code: str
@@ -46,6 +50,7 @@ class Finding:
     column: int = 0
     fix: str | None = None
     via: str | None = None
+    calls: tuple[str, ...] = ()
 
     def location(self) -> str:
         """``file:line:column`` (shorter when line or column is unknown)."""

@@ -202,18 +202,18 @@ def _suppressed(issue: Issue, parents: dict[ET.Element, ET.Element]) -> bool:
 
 
 def _place(robot: RobotDescription | None, issue: Issue, settings: Settings) -> Finding:
-    via = None
+    calls: tuple[str, ...] = ()
     if issue.where is not None:
         file, line, column = issue.where
     elif robot is not None:
         ref = robot.source_of(issue.element)
         file, line, column = ref.file, ref.line, ref.column
-        via = ref.via.location() if ref.via else None
+        calls = tuple(call.location() for call in ref.calls)
     else:  # pragma: no cover - issues without a robot always carry `where`
         file, line, column = "", 0, 0
     severity = settings.severity.get(issue.code) or issue.severity or RULES[issue.code].severity
-    return Finding(issue.code, severity, issue.message, file, line,
-                   column, issue.fix or RULES[issue.code].fix, via)
+    return Finding(issue.code, severity, issue.message, file, line, column,
+                   issue.fix or RULES[issue.code].fix, calls[-1] if calls else None, calls)
 
 
 def _report(file: str, findings: list[Finding],

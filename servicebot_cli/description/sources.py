@@ -13,13 +13,20 @@ class SourceRef:
         file: Path as the user would type it (relative where the user gave it relative).
         line: 1-based line.
         column: 1-based column of the start tag's ``<``.
-        via: For elements produced by a xacro macro, the outermost macro call that did it.
+        calls: For elements produced by xacro macros, the macro calls that did it, from the
+            innermost (the call in another macro's body that passed the values) out to the
+            call in the file the user named.
     """
 
     file: str
     line: int
     column: int = 0
-    via: SourceRef | None = None
+    calls: tuple[SourceRef, ...] = ()
+
+    @property
+    def via(self) -> SourceRef | None:
+        """The outermost macro call that produced the element, or None."""
+        return self.calls[-1] if self.calls else None
 
     def location(self) -> str:
         """``file:line:column``, the form editors and CI annotations understand."""

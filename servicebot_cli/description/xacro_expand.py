@@ -19,6 +19,7 @@ import io
 import os
 import re
 import threading
+import xml.dom
 import xml.dom.minidom
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
@@ -45,6 +46,7 @@ from servicebot_cli.description.yaml_size import AliasBomb, bounded_document
 
 _SRC_ATTR = "servicebot-src"
 _VIA_ATTR = "servicebot-via"
+_REF_KEY = "servicebot-ref"  # minidom user data: a xacro element's index into the positions
 _ARG_USE_RE = re.compile(r"\$\(arg\s+([A-Za-z_][\w]*)\s*\)")
 _EXPRESSION_RE = re.compile(r"when evaluating expression '(.*)' *$", re.MULTILINE)
 _LOCK = threading.Lock()
@@ -164,12 +166,24 @@ class _Tracer:
         if node.tagName.startswith("xacro:"):
             self.node_refs[id(node)] = index
             self.keep.append(node)
+            # xacro clones a macro's body at each call: the clone of a call or an <xacro:if>
+            # in it is known by the same position (an attribute would be a macro parameter)
+            node.setUserData(_REF_KEY, index, self)
             if node.tagName == "xacro:arg" and node.getAttribute("name"):
                 self.known_args.add(node.getAttribute("name"))
             elif node.tagName == "xacro:macro" and node.getAttribute("name"):
                 self.macros.setdefault(node.getAttribute("name"), self.refs[index])
         else:
             node.setAttribute(_SRC_ATTR, str(index))
+
+    def handle(self, operation: int, key: str, index: int, _source: object,
+               clone: xml.dom.minidom.Node | None) -> None:
+        """minidom's user-data handler: a cloned xacro element keeps its position."""
+        if key == _REF_KEY and clone is not None and operation in (
+                xml.dom.UserDataHandler.NODE_CLONED, xml.dom.UserDataHandler.NODE_IMPORTED):
+            self.node_refs[id(clone)] = index
+            self.keep.append(clone)
+            clone.setUserData(_REF_KEY, index, self)
 
     def ref_of(self, node: object) -> SourceRef | None:
         """Where ``node`` was written, if it was read from a file."""
@@ -284,9 +298,8 @@ class _Tracer:
                 child = before.nextSibling if before is not None else parent.firstChild
                 while child is not None and child is not after:
                     if child.nodeType == child.ELEMENT_NODE:
-                        child.setAttribute(_VIA_ATTR, str(call_site))
-                        for element in child.getElementsByTagName("*"):
-                            element.setAttribute(_VIA_ATTR, str(call_site))
+                        for element in (child, *child.getElementsByTagName("*")):
+                            _add_call(element, call_site)
                     child = child.nextSibling
             return handled
 
@@ -345,9 +358,20 @@ class _Tracer:
                 continue
             ref = self.refs[int(src)]
             if via:
-                ref = SourceRef(ref.file, ref.line, ref.column, via=self.refs[int(via)])
+                calls = tuple(self.refs[int(index)] for index in via.split(","))
+                ref = SourceRef(ref.file, ref.line, ref.column, calls=calls)
             origins.append(ref)
         return origins
+
+
+def _add_call(element: xml.dom.minidom.Element, call_site: int) -> None:
+    """Record that the macro call at ``call_site`` produced ``element``.
+
+    Calls nest: the call inside a macro's body records first, the call of that macro next,
+    so the list runs from the innermost call out.
+    """
+    calls = element.getAttribute(_VIA_ATTR)
+    element.setAttribute(_VIA_ATTR, f"{calls},{call_site}" if calls else str(call_site))
 
 
 def _bounded_safe_load(error: type[Exception]) -> Callable[[Any], Any]:

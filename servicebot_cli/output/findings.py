@@ -51,8 +51,7 @@ def text_lines(result: CheckResult, colour: bool = False,
             level = click.style(level, fg=_COLOURS[finding.severity], bold=True)
             code = click.style(code, bold=True)
         yield f"{finding.location()}: {level} {code} {finding.message}"
-        if finding.via:
-            yield f"    from the macro call at {finding.via}"
+        yield from _call_lines(finding)
         if finding.fix:
             yield f"    fix: {finding.fix}"
     if packages:
@@ -61,6 +60,23 @@ def text_lines(result: CheckResult, colour: bool = False,
     if colour:
         summary = click.style(summary, fg="red" if result.failed else "green", bold=True)
     yield summary
+
+
+_MOST_CALLS_SHOWN = 4
+
+
+def _call_lines(finding: Finding) -> Iterator[str]:
+    """The macro calls that produced the element, innermost first (xacro's own order).
+
+    A deep nest (a recursive macro) shows its innermost calls, then the outermost one.
+    """
+    calls = finding.calls or ((finding.via,) if finding.via else ())
+    shown = calls if len(calls) <= _MOST_CALLS_SHOWN else calls[:_MOST_CALLS_SHOWN - 1]
+    for index, call in enumerate(shown):
+        yield f"    {'from' if index == 0 else 'within'} the macro call at {call}"
+    if len(calls) > len(shown):
+        yield (f"    within {len(calls) - len(shown)} more macro calls, the outermost at "
+               f"{calls[-1]}")
 
 
 def finding_record(finding: Finding, result: CheckResult) -> dict[str, object]:
@@ -75,6 +91,7 @@ def finding_record(finding: Finding, result: CheckResult) -> dict[str, object]:
         "line": finding.line,
         "column": finding.column,
         "via": finding.via,
+        "calls": list(finding.calls),
         "fix": finding.fix,
     }
 

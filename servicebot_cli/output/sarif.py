@@ -65,12 +65,13 @@ def _result(finding: Finding, index: int, result: CheckResult) -> dict[str, obje
         "message": {"text": text},
         "locations": [{"physicalLocation": location}],
     }
-    if finding.via:
-        entry["relatedLocations"] = [_via(finding.via)]
+    calls = finding.calls or ((finding.via,) if finding.via else ())
+    if calls:
+        entry["relatedLocations"] = [_via(call, index) for index, call in enumerate(calls)]
     return entry
 
 
-def _via(via: str) -> dict[str, object]:
+def _via(via: str, index: int = 0) -> dict[str, object]:
     file, _, rest = via.rpartition(":")
     line = 0
     if rest.isdigit() and ":" in file:
@@ -79,8 +80,9 @@ def _via(via: str) -> dict[str, object]:
     location: dict[str, object] = {"artifactLocation": {"uri": _uri(file or via)}}
     if line:
         location["region"] = {"startLine": line}
-    return {"id": 0, "physicalLocation": location,
-            "message": {"text": "the xacro macro call that produced the element"}}
+    text = ("the xacro macro call that produced the element" if index == 0
+            else "a xacro macro call around it")
+    return {"id": index, "physicalLocation": location, "message": {"text": text}}
 
 
 def _uri(file: str) -> str:

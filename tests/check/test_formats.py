@@ -25,7 +25,7 @@ def test_json_document(run):
                                    "strict": False, "failed": True}
     error = document["files"][0]["findings"][1]
     assert set(error) == {"code", "name", "severity", "fails", "message", "file", "line",
-                          "column", "via", "fix"}
+                          "column", "via", "calls", "fix"}
     assert (error["code"], error["severity"], error["fails"]) == ("SB209", "error", True)
 
 
