@@ -233,7 +233,20 @@ class _Checker:
         # A multiplier calibrates the geometric value to the floor (a skid-steer robot turns
         # as if its wheels were further apart): either may match the URDF's geometry.
         if all(abs(value - expected) > TOLERANCE * abs(expected) for value in (given, effective)):
-            times = f" ({given:g} m times the multipliers)" if effective != given else ""
-            yield Issue(code, f"{section}: {key} {effective:g} m{times} disagrees with the "
-                        f"URDF's {expected:.6g} m", where=self.where(node),
+            yield Issue(code, f"{section}: {key} {_stated(given, effective, expected)} "
+                        f"disagrees with the URDF's {expected:.6g} m", where=self.where(node),
                         fix=f"{key}: {expected:.6g}")
+
+
+def _stated(given: float, effective: float, expected: float) -> str:
+    """The controller's value closest to the URDF's first: the one that nearly matched.
+
+    A skid-steer robot's multiplier (Husarion's 1.6 on a 0.45 m track) puts the effective
+    value far from the geometry; the given one may be a few per cent off it, or the other way.
+    """
+    if effective == given:
+        return f"{given:g} m"
+    if abs(given - expected) <= abs(effective - expected):
+        off = abs(given - expected) / abs(expected) * 100 if expected else math.inf
+        return f"{given:g} m ({off:.2g} % off; {effective:g} m with the multipliers)"
+    return f"{effective:g} m ({given:g} m times the multipliers)"

@@ -245,3 +245,22 @@ def test_a_file_included_by_a_relative_path_is_not_walked_as_a_robot(run, tmp_pa
     result, document = _check(run, tmp_path)
     assert [Path(f["file"]).name for f in document["files"]] == ["robot.urdf.xacro"]
     assert result.exit_code == 0, result.stdout
+
+
+@pytest.mark.parametrize(("separation", "stated"), [
+    ("0.37", "wheel_separation 0.37 m (1.5 % off; 0.555 m with the multipliers)"),
+    ("0.2", "wheel_separation 0.3 m (0.2 m times the multipliers)"),
+])
+def test_a_separation_just_off_names_the_value_that_nearly_matched(run, tmp_path, separation,
+                                                                   stated):
+    """Husarion's Lynx: 0.45 m times 1.6 is 0.72 m, but 0.45 m is only 1.1 % off the URDF's
+    0.455 m: the message leads with the value that nearly matched, not the calibrated one."""
+    source = SRC / "clearpath_control" / "config" / "j100" / "control.yaml"
+    text = source.read_text()
+    assert "wheel_separation: 0.37559" in text and "wheel_separation_multiplier: 1.5" in text
+    yaml = tmp_path / "control.yaml"
+    yaml.write_text(text.replace("wheel_separation: 0.37559", f"wheel_separation: {separation}"))
+    result = run("check", "controllers", yaml, "--urdf", ROBOTS["jackal"][0], *JACKAL_ARGS,
+                 "--format", "json", "--isolated", env=NO_ROS)
+    (found,) = findings(result.stdout)
+    assert found["code"] == "SB604" and stated in found["message"], found["message"]
