@@ -178,7 +178,7 @@ class _Tracer:
 
     def handle(self, operation: int, key: str, index: int, _source: object,
                clone: xml.dom.minidom.Node | None) -> None:
-        """minidom's user-data handler: a cloned xacro element keeps its position."""
+        """The DOM's user-data hook: a cloned xacro element keeps its original's position."""
         if key == _REF_KEY and clone is not None and operation in (
                 xml.dom.UserDataHandler.NODE_CLONED, xml.dom.UserDataHandler.NODE_IMPORTED):
             self.node_refs[id(clone)] = index

@@ -23,7 +23,8 @@ NESTED = """<?xml version="1.0"?>
   </xacro:macro>
   <xacro:macro name="arm" params="prefix">
     <xacro:arm_joint name="${prefix}j1" parent="base" child="${prefix}l1" lower="-1" upper="1"/>
-    <xacro:arm_joint name="${prefix}j2" parent="${prefix}l1" child="${prefix}l2" lower="2" upper="1"/>
+    <xacro:arm_joint name="${prefix}j2" parent="${prefix}l1" child="${prefix}l2"
+                     lower="2" upper="1"/>
   </xacro:macro>
   <link name="base"/>
   <xacro:arm prefix="a_"/>
@@ -60,12 +61,12 @@ def test_every_call_from_the_innermost_out(run, tmp_path):
     (found,) = [f for f in findings(result.stdout) if f["code"] == "SB203"]
     assert found["line"] == 4  # the <joint> in arm_joint's body
     path = str(tmp_path / "robot.urdf.xacro")
-    assert found["calls"] == [f"{path}:12:5", f"{path}:15:3"]  # the call passing 2 > 1 first
-    assert found["via"] == f"{path}:15:3"
+    assert found["calls"] == [f"{path}:12:5", f"{path}:16:3"]  # the call passing 2 > 1 first
+    assert found["via"] == f"{path}:16:3"
     text = _sb203(run, tmp_path, NESTED, "text").stdout.splitlines()
     at = next(i for i, line in enumerate(text) if "SB203" in line)
     assert text[at + 1:at + 3] == [f"    from the macro call at {path}:12:5",
-                                   f"    within the macro call at {path}:15:3"]
+                                   f"    within the macro call at {path}:16:3"]
 
 
 def test_a_deep_nest_shows_its_innermost_calls_and_the_outermost(run, tmp_path):
@@ -86,4 +87,4 @@ def test_sarif_relates_every_call(run, tmp_path):
     sarif = json.loads(_sb203(run, tmp_path, NESTED, "sarif").stdout)
     (result,) = [r for r in sarif["runs"][0]["results"] if r["ruleId"] == "SB203"]
     lines = [r["physicalLocation"]["region"]["startLine"] for r in result["relatedLocations"]]
-    assert lines == [12, 15]
+    assert lines == [12, 16]
