@@ -60,6 +60,7 @@ class CheckEnv:
     model_ahead: bool = False
     search: PackageSearch = field(init=False)
     _directories: dict[str, Path] = field(init=False, default_factory=dict)
+    _not_files: dict[Path, str | None] = field(init=False, default_factory=dict)
 
     def __post_init__(self) -> None:
         self.search = PackageSearch(self.resolver)
@@ -89,7 +90,9 @@ class CheckEnv:
         path = resolved.path
         if path is None:
             raise MeshNotFound(f"mesh '{filename}': {resolved.error}", resolved)
-        problem = not_a_file(path)
+        if path not in self._not_files:  # a robot names each mesh twice or more
+            self._not_files[path] = not_a_file(path)
+        problem = self._not_files[path]
         if problem is not None:
             if "$(" in filename:  # sjtu_drone's stale .urdf: file://$(find ...)/models/...
                 problem += ("; its '$(...)' is xacro's, and nothing substitutes it in a file "

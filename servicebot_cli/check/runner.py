@@ -28,6 +28,7 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 _SUPPRESS = re.compile(r"servicebot:\s*ignore\b([\s,A-Za-z0-9]*)", re.IGNORECASE)
+_MARKER = re.compile("servicebot", re.IGNORECASE)
 
 
 @dataclass(frozen=True)
@@ -172,10 +173,12 @@ def place_issues(robot: RobotDescription | None, issues: Iterable[Issue],
     """Findings for the enabled, unsuppressed ``issues``, placed in their source files."""
     parents: dict[ET.Element, ET.Element] | None = None
     findings = []
+    # no comment can silence a finding in a text that never names the tool
+    marked = robot is not None and _MARKER.search(robot.xml_text) is not None
     for issue in issues:
         if not settings.enabled(issue.code):
             continue
-        if robot is not None and issue.element is not None:
+        if marked and robot is not None and issue.element is not None:
             if parents is None:
                 parents = {child: parent for parent in robot.root.iter() for child in parent}
             if _suppressed(issue, parents):

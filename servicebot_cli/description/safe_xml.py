@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
+from typing import NoReturn
 from xml.parsers import expat
 
 from servicebot_cli.common.errors import UnsafeXmlError, XmlError
@@ -189,26 +190,32 @@ class _Builder:
         return self.parser.CurrentLineNumber, self.parser.CurrentColumnNumber + 1
 
     def _start(self, tag: str, attrs: dict[str, str]) -> None:
+        # once per element of every file: the common path makes no call it can avoid
         self.count += 1
         self.depth += 1
-        if self.count > self.max_elements:
-            raise XmlError(
-                self.filename, f"more than {self.max_elements} elements; refused", *self._where()
-            )
-        if self.depth > MAX_DEPTH:
-            raise XmlError(
-                self.filename, f"elements nested over {MAX_DEPTH} deep; refused", *self._where()
-            )
-        element = self.tree.start(tag, attrs)
-        assert isinstance(element, PositionedElement)
-        element.sourceline, element.column = self._where()
+        if self.count > self.max_elements or self.depth > MAX_DEPTH:
+            self._refuse()
+        element: PositionedElement = self.tree.start(tag, attrs)  # type: ignore[assignment]
+        parser = self.parser  # (its element_factory makes every element a PositionedElement)
+        element.sourceline = parser.CurrentLineNumber
+        element.column = parser.CurrentColumnNumber + 1
         if self.comments:
             element.leading_comments = tuple(self.comments)
             self.comments.clear()
 
+    def _refuse(self) -> NoReturn:
+        if self.count > self.max_elements:
+            raise XmlError(
+                self.filename, f"more than {self.max_elements} elements; refused", *self._where()
+            )
+        raise XmlError(
+            self.filename, f"elements nested over {MAX_DEPTH} deep; refused", *self._where()
+        )
+
     def _end(self, tag: str) -> None:
         self.depth -= 1
-        self.comments.clear()
+        if self.comments:
+            self.comments.clear()
         self.tree.end(tag)
 
     def _doctype(self, name: str, system_id: str | None, public_id: str | None, _: int) -> None:
