@@ -217,6 +217,7 @@ class RobotDescription:
         """
         if base not in self._models:
             self._refuse_zero_axes()
+            self._refuse_unled_mimics()
             self._models[base] = build_model(self.xml_text, self.display, base,
                                              self.xacro_args)
         return self._models[base]
@@ -236,6 +237,28 @@ class RobotDescription:
                     f"{self.display}: joint '{joint.name}' has <axis xyz=\"0 0 0\">: it "
                     f"turns or slides along no direction; give its axis "
                     f"{check_hint(self.display, self.xacro_args)}")
+
+    def _refuse_unled_mimics(self) -> None:
+        """A ``<mimic>`` of itself or of a joint that is not there (check's SB210, SB209).
+
+        No joint drives the follower: MoveIt refuses the robot, yourdfpy sets it to the
+        offset, Pinocchio and this tool's kinematics would move it freely. A loop of
+        mimics (SB211) keeps one of its joints free, as check explains.
+
+        Raises:
+            DescriptionError: Naming the joint.
+        """
+        names = {joint.name for joint in self.joints}
+        for joint in self.joints:
+            if joint.mimic is None or (joint.mimic.joint in names
+                                       and joint.mimic.joint != joint.name):
+                continue
+            leader = joint.mimic.joint
+            what = "itself" if leader == joint.name else f"'{leader}', which does not exist"
+            raise DescriptionError(
+                f"{self.display}: joint '{joint.name}' mimics {what}: nothing drives it; "
+                "name its leader in <mimic joint=...>, or remove the <mimic> "
+                f"{check_hint(self.display, self.xacro_args)}")
 
     @property
     def model(self) -> pin.Model:
