@@ -140,10 +140,16 @@ def _add_banner(doc: xml.dom.minidom.Document, name: str, args: Mapping[str, str
 
 
 def _warning_lines(stderr_text: str) -> tuple[str, ...]:
+    """xacro's warnings, one per line, without the trail of files and its own prefix.
+
+    Without a terminal, xacro writes ``warning: `` before each; whoever shows them says
+    what they are.
+    """
     noise = ("when processing file:", "included from:", "in file:", "when instantiating macro:",
              "instantiated from:")
     lines = (line.strip() for line in stderr_text.splitlines())
-    return tuple(line for line in lines if line and not line.startswith(noise))
+    return tuple(line.removeprefix("warning: ") for line in lines
+                 if line and not line.startswith(noise))
 
 
 class _Tracer:

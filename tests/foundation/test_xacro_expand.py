@@ -204,3 +204,16 @@ def test_a_missing_include_the_build_makes_from_a_template_says_so(tmp_path):
         "from: build the package" in result.stdout
     (tmp_path / "plugins.gazebo.xacro.in").unlink()
     assert ".in' beside it" not in run_servicebot("check", "urdf", robot, "--isolated").stdout
+
+
+def test_a_xacro_warning_is_said_once_as_a_warning(tmp_path):
+    """Without a terminal xacro writes "warning: " before its warnings; expand printed
+    "warning: warning: redefining global symbol: pi", and check's SB017 quoted the prefix."""
+    path = tmp_path / "r.urdf.xacro"
+    path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                    '  <xacro:property name="pi" value="3"/>\n  <link name="base"/>\n</robot>\n')
+    expanded = run_servicebot("expand", path, "-o", tmp_path / "r.urdf")
+    assert expanded.returncode == 0
+    assert expanded.stderr.splitlines() == ["warning: redefining global symbol: pi"]
+    checked = run_servicebot("check", "urdf", path, "--isolated")
+    assert "SB017 [xacro-warning] redefining global symbol: pi" in checked.stdout
