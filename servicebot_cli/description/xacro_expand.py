@@ -140,7 +140,7 @@ def _add_banner(doc: xml.dom.minidom.Document, name: str, args: Mapping[str, str
 
 
 def _warning_lines(stderr_text: str) -> tuple[str, ...]:
-    """xacro's warnings, one per line, without the trail of files and its own prefix.
+    """The warnings xacro printed, one per line, without the trail of files and its own prefix.
 
     Without a terminal, xacro writes ``warning: `` before each; whoever shows them says
     what they are.
@@ -342,6 +342,9 @@ class _Tracer:
 
         own = deliberate or isinstance(inner, ExpansionTooLarge) or (
             isinstance(inner, SubstitutionException) and str(exc).startswith("<class "))
+        if not own and str(exc).startswith(f"{type(inner)}: "):  # a Python error in $(eval)
+            return XacroError(f"{where}: xacro: a $(...) substitution failed: "
+                              f"{type(inner).__name__}: {' '.join(str(inner).split())}")
         shown = inner if own else exc
         message = " ".join(str(shown).split()) or type(exc).__name__
         if not own and not str(inner).strip():  # "when evaluating expression '...'" alone

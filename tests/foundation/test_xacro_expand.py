@@ -217,3 +217,17 @@ def test_a_xacro_warning_is_said_once_as_a_warning(tmp_path):
     assert expanded.stderr.splitlines() == ["warning: redefining global symbol: pi"]
     checked = run_servicebot("check", "urdf", path, "--isolated")
     assert "SB017 [xacro-warning] redefining global symbol: pi" in checked.stdout
+
+
+@pytest.mark.parametrize(("expression", "said"), [
+    ("$(eval 1/0)", "a $(...) substitution failed: ZeroDivisionError: division by zero"),
+    ("$(eval nope + 1)", "a $(...) substitution failed: NameError: name 'nope' is not defined"),
+])
+def test_a_failed_eval_names_the_python_error_once(tmp_path, expression, said):
+    """xacro's own text is "<class 'ZeroDivisionError'>: division by zero division by zero"."""
+    path = tmp_path / "r.urdf.xacro"
+    path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                    f'  <link name="{expression}"/>\n</robot>\n')
+    result = run_servicebot("expand", path)
+    line = assert_one_line_error(result, 2, f"r.urdf.xacro:2:3: xacro: {said}")
+    assert "<class" not in line and line.count("division by zero") <= 1
