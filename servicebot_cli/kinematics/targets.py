@@ -70,6 +70,9 @@ def parse_axes(text: str | None, has_orientation: bool) -> tuple[str, ...] | Non
     return tuple(a for a in AXES if a in words)
 
 
+_TURN_RAD = 2.0 * math.pi + 1e-9
+
+
 def make_target(position: Sequence[float], *, rpy: Sequence[float] | None = None,
                 quat: Sequence[float] | None = None, deg: bool = False,
                 axes: tuple[str, ...] | None = None) -> IkTarget:
@@ -87,6 +90,10 @@ def make_target(position: Sequence[float], *, rpy: Sequence[float] | None = None
             rotation = matrix_from_quaternion(np.array(quat, dtype=float))
         elif rpy is not None:
             angles = np.array(rpy, dtype=float)
+            if not deg and np.abs(angles).max() > _TURN_RAD:  # "--rpy 0 90 0" without --deg
+                raise BadTarget(f"roll pitch yaw {' '.join(f'{a:g}' for a in rpy)} rad: "
+                                "an angle of over a turn (6.28 rad); angles are in radians, "
+                                "give --deg for degrees")
             rotation = matrix_from_rpy(np.radians(angles) if deg else angles)
     except BadRotation as exc:
         raise BadTarget(str(exc)) from None

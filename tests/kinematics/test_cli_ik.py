@@ -112,6 +112,8 @@ def test_the_start_is_where_the_answer_starts(run):
     (["--position", "0.5", "0", "0.5", "--rpy", "0", "0", "0", "--quat", "0", "0", "0", "1"],
      ["--rpy or --quat, not both"]),
     (["--position", "0.5", "0", "0.5", "--quat", "0", "0", "0", "0"], ["length 0"]),
+    (["--position", "0.5", "0", "0.5", "--rpy", "0", "90", "0"],  # degrees without --deg
+     ["roll pitch yaw 0 90 0 rad", "over a turn", "give --deg for degrees"]),
     (["--position", "0.5", "0", "0.5", "--orientation-axes", "pitch"],
      ["--orientation-axes needs an orientation"]),
     (["--position", "0.5", "0", "0.5", "--rpy", "0", "1", "0", "--orientation-axes", "tilt"],
