@@ -223,6 +223,9 @@ class OutputPath(click.ParamType[str]):
         path = Path(text)
         if not text.strip():
             self.fail("an empty path; give a file name", param, ctx)
+        if self.directory and text == "-":  # standard output holds one stream, not a folder
+            self.fail("'-' (standard output) cannot hold a directory of files; name a "
+                      "directory, e.g. ./run1 (write ./- for a directory named '-')", param, ctx)
         if not self.directory and _is_device_or_pipe(path):
             return text  # written into as a shell's > would: /dev/stdout, a named pipe
         if self.suffixes and not any(text.lower().endswith(s) for s in self.suffixes):

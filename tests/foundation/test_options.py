@@ -70,3 +70,14 @@ def test_parents_may_be_missing_but_not_a_file(tmp_path):
 def test_accepted_values_pass_through(tmp_path):
     assert _run("--plot", str(tmp_path / "RUN.PNG"), "--out", str(tmp_path), "-o", "-",
                 "--speed", "2", "--view", "top", "--render", "x.png") == (0, "ok\n")
+
+
+@pytest.mark.parametrize("option", ["--out", "--bag"])
+def test_a_dash_is_no_directory_of_outputs(run, tmp_path, monkeypatch, option):
+    """'-' means standard output for a file; for a directory of files it made a folder '-'."""
+    from tests.conftest import assert_one_line_error
+
+    monkeypatch.chdir(tmp_path)
+    result = run("simulate", "--headless", "--duration-s", "0.1", option, "-")
+    assert_one_line_error(result, 2, "'-' (standard output) cannot hold a directory of files")
+    assert list(tmp_path.iterdir()) == []
