@@ -28,6 +28,7 @@ from servicebot_cli.commands.options import (
     BundledRobot,
     PackageDir,
     RobotArgs,
+    distinct_packages,
     refuse_overwriting,
     refuse_without,
     robot_arguments,
@@ -135,6 +136,7 @@ def urdf(robot_args: RobotArgs, jobs: int | None, mesh_cache: bool, show_package
 @click.option("--robot", "bundled", type=BundledRobot(), default=None,
               help="Check against one bundled robot (sim or real) instead of both.")
 @click.option("--package", "packages", type=PackageDir(), multiple=True, metavar="NAME=DIR",
+              callback=distinct_packages,
               help="Where ROS package NAME lives, for the --urdf file's $(find) and package://.")
 @report_options
 @catalogue_options

@@ -349,6 +349,18 @@ class BundledRobot(click.ParamType[str]):
         return [CompletionItem(n) for n in BUNDLED_ROBOTS if n.startswith(incomplete)]
 
 
+def distinct_packages(_ctx: click.Context, _param: click.Parameter,
+                      value: tuple[tuple[str, str], ...]) -> tuple[tuple[str, str], ...]:
+    """``--package`` callback: each package named once (the last would win unseen)."""
+    where: dict[str, str] = {}
+    for name, directory in value:
+        if name in where and os.path.realpath(where[name]) != os.path.realpath(directory):
+            raise click.BadParameter(f"package '{name}' is given twice ({where[name]} and "
+                                     f"{directory}); give each package once")
+        where[name] = directory
+    return value
+
+
 class PackageDir(click.ParamType[tuple[str, str]]):
     """``NAME=DIR``: where a ROS package lives, for ``$(find NAME)`` and ``package://NAME``."""
 
@@ -402,6 +414,7 @@ def robot_arguments(multiple: bool = False, default: str = DEFAULT_ROBOT) -> Cal
 
         wrapper = click.option(
             "--package", "packages", type=PackageDir(), multiple=True, metavar="NAME=DIR",
+            callback=distinct_packages,
             help="Where ROS package NAME lives, for $(find NAME) and package://NAME "
             "(repeatable; searched before ROS_PACKAGE_PATH and AMENT_PREFIX_PATH).",
         )(wrapper)

@@ -81,3 +81,22 @@ def test_a_dash_is_no_directory_of_outputs(run, tmp_path, monkeypatch, option):
     result = run("simulate", "--headless", "--duration-s", "0.1", option, "-")
     assert_one_line_error(result, 2, "'-' (standard output) cannot hold a directory of files")
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("command", [("fk",), ("check", "urdf"), ("expand",)])
+def test_a_package_given_twice_in_two_places_is_refused(run, tmp_path, command):
+    """The last --package of a name won, unseen."""
+    from tests.conftest import assert_one_line_error
+
+    one, two = tmp_path / "one", tmp_path / "two"
+    one.mkdir()
+    two.mkdir()
+    result = run(*command, "--package", f"desc={one}", "--package", f"desc={two}")
+    assert_one_line_error(result, 2, f"package 'desc' is given twice ({one} and {two})")
+
+
+def test_the_same_package_directory_twice_is_one(run, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "desc").mkdir()
+    result = run("fk", "--package", "desc=desc", "--package", f"desc={tmp_path / 'desc'}")
+    assert result.exit_code == 0, result.stderr
