@@ -8,7 +8,9 @@ import only Click and light helpers at the top, so ``--help`` and shell completi
 from __future__ import annotations
 
 import atexit
+import errno
 import importlib
+import io
 import os
 import sys
 from typing import Any, NoReturn
@@ -96,6 +98,8 @@ class ServicebotGroup(click.Group):
             _fail(ctx, str(exc), exc.exit_code, debug)
         except (click.exceptions.Exit, click.ClickException, click.Abort):
             raise
+        except StdoutClosed as exc:
+            _fail(ctx, str(exc), ExitCode.USAGE, debug)
         except BrokenPipeError:
             sys.stderr.close()  # the reader went away (| head): nothing left to say
             ctx.exit(ExitCode.OK)
@@ -151,6 +155,28 @@ def main(debug: bool) -> None:
     """
 
 
+class StdoutClosed(OSError):
+    """A write to standard output, which the process was started without (``>&-``)."""
+
+    def __str__(self) -> str:
+        return ("standard output is closed, so the output has nowhere to go; redirect it "
+                "(> FILE, or > /dev/null to drop it)")
+
+
+class _ClosedStdout(io.TextIOBase):
+    """What stands for standard output when there is none: every write fails, loudly.
+
+    Python sets ``sys.stdout`` to None when file descriptor 1 is closed, and Click then
+    drops what is echoed: the command would succeed and its answer be lost.
+    """
+
+    def writable(self) -> bool:
+        return True
+
+    def write(self, _text: str) -> int:
+        raise StdoutClosed(errno.EBADF, "standard output is closed")
+
+
 def entry() -> NoReturn:
     """The console script: run the command, then end the process without tearing it down.
 
@@ -160,14 +186,17 @@ def entry() -> NoReturn:
     threads still running, the interpreter ends as usual, waiting for them.
     """
     code: int | str | None = 0
+    if sys.stdout is None:
+        sys.stdout = _ClosedStdout()
     try:
         main(prog_name="servicebot")
     except SystemExit as exc:
         code = exc.code
-    except OSError as exc:  # the group's own help or version, written to a full disk
-        if exc.errno not in NO_ROOM:
+    except OSError as exc:  # the group's own help or version, written to a full disk or
+        if not isinstance(exc, StdoutClosed) and exc.errno not in NO_ROOM:  # to no stdout
             raise
-        print(f"Error: {_no_room(exc)}", file=sys.stderr)
+        print(f"Error: {exc if isinstance(exc, StdoutClosed) else _no_room(exc)}",
+              file=sys.stderr)
         code = ExitCode.USAGE
     threading = sys.modules.get("threading")
     if threading is not None and threading.active_count() > 1:

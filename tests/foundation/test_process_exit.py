@@ -70,10 +70,24 @@ def test_a_full_stdout_is_one_error_line(args: tuple[str, ...]) -> None:
                           "free some space")
 
 
-@pytest.mark.parametrize("closed", ["stdout", "stderr"])
-def test_a_stream_the_shell_closed_is_no_error(closed: str) -> None:
-    """``servicebot --version >&-``: Python sets a closed stream to None; nothing to flush."""
-    done = subprocess.run(f"'{sys.executable}' -m servicebot_cli --version "
-                          f"{'>&-' if closed == 'stdout' else '2>&-'}", shell=True,
-                          capture_output=closed == "stderr", text=True, timeout=60)
-    assert done.returncode == 0
+def test_a_standard_error_the_shell_closed_is_no_error() -> None:
+    """``servicebot --version 2>&-``: Python sets the closed stream to None; nothing to flush."""
+    done = subprocess.run(f"'{sys.executable}' -m servicebot_cli --version 2>&-", shell=True,
+                          capture_output=False, stdout=subprocess.PIPE, text=True, timeout=60)
+    assert done.returncode == 0 and done.stdout.startswith("servicebot")
+
+
+@pytest.mark.parametrize("args", [("fk",), ("check", "urdf", "--isolated"), ("--version",),
+                                  ("inspect", "--help")])
+def test_a_closed_standard_output_is_a_usage_error_not_a_silent_success(args):
+    """Started with fd 1 closed (`>&-`), Python has no sys.stdout and Click dropped every
+    line: the command exited 0 with its answer lost."""
+    import os
+
+    result = subprocess.run([sys.executable, "-m", "servicebot_cli", *args],
+                            preexec_fn=lambda: os.close(1),  # noqa: PLW1509 - in the child
+                            stderr=subprocess.PIPE, text=True, timeout=60)
+    assert result.returncode == 2, result.stderr
+    assert result.stderr.splitlines() == [
+        "Error: standard output is closed, so the output has nowhere to go; redirect it "
+        "(> FILE, or > /dev/null to drop it)"]
