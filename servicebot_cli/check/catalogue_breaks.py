@@ -47,6 +47,7 @@ BREAKS: dict[str, str] = {
     "SB205": "Pinocchio refuses it (min_effort above max_effort); MoveIt's time "
              "parameterisation and ros2_control's joint limiters get a negative maximum: every "
              "motion is refused or clamped to zero",
+    "SB216": "Pinocchio refuses a negative friction (min_dry_friction above max_dry_friction)",
     "SB207": "KDL (robot_state_publisher) and Pinocchio normalise the axis: a zero vector gives "
              "NaN transforms or a joint that moves nothing",
     "SB209": "MoveIt refuses a mimic of an unknown joint, and Pinocchio's mimic joints cannot "

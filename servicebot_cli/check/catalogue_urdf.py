@@ -206,6 +206,12 @@ URDF_RULES: tuple[Rule, ...] = (
          "velocity>. `servicebot drive` refuses such a robot, since nothing bounds the wheel "
          "speed it may command; urdfdom, Gazebo and diff_drive_controller accept it.",
          "Add <limit effort=\"...\" velocity=\"...\"/> with the motor's top speed in rad/s."),
+    Rule("SB216", "negative-dynamics", E, "A negative <dynamics> damping or friction",
+         "Damping and friction resist motion; a negative value drives it. Pinocchio refuses "
+         "a negative friction (its dry friction's minimum above its maximum). A negative "
+         "damping every consumer reads, and a simulator then feeds the joint energy: a "
+         "warning.",
+         "Write the magnitude, or 0 for none."),
     Rule("SB301", "inertia-mismatch", W, "Inertia does not match the mass and collision geometry",
          "The principal moments of the inertia are compared, in any frame, with those of a "
          "solid of the link's mass filling its collision geometry (boxes, cylinders and "

@@ -1,4 +1,4 @@
-"""Joint rules: types, limits, axes, mimic chains, safety controllers (SB201-SB214)."""
+"""Joint rules: types, limits, dynamics, axes, mimic chains, safety controllers (SB201-SB216)."""
 
 from __future__ import annotations
 
@@ -38,10 +38,27 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
                         f"does not have; {advice}", joint.element)
             continue
         yield from _limits(joint, simulator)
+        yield from _dynamics(joint)
         yield from _axis(joint)
         yield from _safety(joint)
     yield from _mimics(robot)
     yield from _wheel_speeds(robot)
+
+
+def _dynamics(joint: Joint) -> Iterator[Issue]:
+    """SB216: a negative damping (a warning) or friction (Pinocchio refuses it)."""
+    element = joint.element.find("dynamics") if joint.element is not None else None
+    if element is None:
+        return
+    for key in ("friction", "damping"):
+        value = parse_float(element.get(key))
+        if value is None or not value < 0:
+            continue  # SB013/SB014 report what is not a number
+        consequence = ("Pinocchio refuses it" if key == "friction"
+                       else "a simulator feeds the joint energy instead of taking it")
+        yield Issue("SB216", f"joint '{joint.name}' has <dynamics {key}=\"{value:g}\">: "
+                    f"{consequence}", element, fix=f'{key}="{-value:g}", or 0 for none',
+                    severity=Severity.WARNING if key == "damping" else None)
 
 
 def _zero_limit(joint: Joint, label: str, simulator: str | None) -> Issue:

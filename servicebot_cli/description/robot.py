@@ -218,6 +218,7 @@ class RobotDescription:
         if base not in self._models:
             self._refuse_zero_axes()
             self._refuse_unled_mimics()
+            self._refuse_negative_friction()
             self._models[base] = build_model(self.xml_text, self.display, base,
                                              self.xacro_args)
         return self._models[base]
@@ -259,6 +260,24 @@ class RobotDescription:
                 f"{self.display}: joint '{joint.name}' mimics {what}: nothing drives it; "
                 "name its leader in <mimic joint=...>, or remove the <mimic> "
                 f"{check_hint(self.display, self.xacro_args)}")
+
+    def _refuse_negative_friction(self) -> None:
+        """A negative ``<dynamics friction>`` (check's SB216), in the file's words.
+
+        Pinocchio refuses it as "Some components of min_dry_friction are greater than
+        max_dry_friction", naming neither the joint nor the attribute.
+
+        Raises:
+            DescriptionError: Naming the joint.
+        """
+        for joint in self.joints:
+            dynamics = joint.element.find("dynamics") if joint.element is not None else None
+            friction = el.parse_float(dynamics.get("friction")) if dynamics is not None else None
+            if friction is not None and friction < 0:
+                raise DescriptionError(
+                    f"{self.display}: joint '{joint.name}' has <dynamics friction="
+                    f"\"{friction:g}\">, which Pinocchio refuses; write its magnitude "
+                    f"{check_hint(self.display, self.xacro_args)}")
 
     @property
     def model(self) -> pin.Model:

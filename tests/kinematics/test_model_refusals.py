@@ -1,8 +1,9 @@
-"""A <mimic> of itself or of a joint that is not there: no joint drives the follower.
+"""Robots the model is refused for, in one line that names the joint as the file writes it.
 
-fk, inspect and simulate took such a joint as free, without a word, where MoveIt refuses
-the robot and yourdfpy sets the joint to its offset. check reports SB210 and SB209; every
-command that builds the model now refuses the robot in one line naming the joint.
+A <mimic> of itself or of a joint that is not there: no joint drives the follower. fk,
+inspect and simulate took such a joint as free, without a word, where MoveIt refuses the
+robot and yourdfpy sets the joint to its offset (check: SB210, SB209). A negative friction,
+which Pinocchio refuses in words that name no joint (check: SB216).
 """
 
 from __future__ import annotations
@@ -44,3 +45,17 @@ def test_a_leader_that_is_there_still_drives_it(tmp_path):
     path.write_text(ROBOT.format(leader="j1"))
     result = run_servicebot("fk", path, "-j", "j1=0.25", "-f", "b", "--format", "json")
     assert result.returncode == 0, result.stderr
+
+
+def test_a_negative_friction_is_named_as_the_file_writes_it(tmp_path):
+    """Pinocchio's words were "Some components of min_dry_friction are greater than
+    max_dry_friction", at no joint; check reports SB216."""
+    path = tmp_path / "r.urdf"
+    path.write_text(ROBOT.format(leader="j1").replace(
+        '<mimic joint="j1" multiplier="2"/>', '<dynamics damping="0.1" friction="-0.5"/>'))
+    result = run_servicebot("fk", path, "-f", "b")
+    line = assert_one_line_error(result, 2, "joint 'j2' has <dynamics friction=\"-0.5\">, which "
+                                 "Pinocchio refuses")
+    assert "min_dry_friction" not in line
+    checked = run_servicebot("check", "urdf", path, "--isolated")
+    assert "error SB216 [negative-dynamics]" in checked.stdout
