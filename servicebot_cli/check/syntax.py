@@ -156,6 +156,14 @@ def _attributes(element: ET.Element, allowed: dict[str, int],
                         element, fix=f"add {key}=\"...\"")
 
 
+@functools.lru_cache(maxsize=8192)  # "0 0 0", "1": the same values in file after file
+def _plain(value: str, count: int) -> bool:
+    """Whether ``value`` is ``count`` finite numbers as urdfdom reads them."""
+    parts = [value.lstrip(_C_SPACES)] if count == 1 else value.split()
+    return len(parts) == count and all(_NUMBER.fullmatch(part) is not None
+                                       and math.isfinite(float(part)) for part in parts)
+
+
 def _number(element: ET.Element, key: str, value: str, count: int) -> Iterator[Issue]:
     """SB013/SB014 for an attribute of ``count`` numbers.
 
@@ -163,10 +171,9 @@ def _number(element: ET.Element, key: str, value: str, count: int) -> Iterator[I
     ``istringstream >> double`` and then wants the stream at its end (unitree's R1.urdf has
     ``izz=" 9e-06"``, which it loads).
     """
-    parts = [value.lstrip(_C_SPACES)] if count == 1 else value.split()
-    if len(parts) == count and all(_NUMBER.fullmatch(part) and math.isfinite(float(part))
-                                   for part in parts):
+    if _plain(value, count):
         return  # the common case, without building the message's text
+    parts = [value.lstrip(_C_SPACES)] if count == 1 else value.split()
     where = f"<{element.tag}{_named(element)} {key}=\"{value}\">"
     if len(parts) != count:
         yield Issue("SB013", f"{where}: expected {count} numbers, found {len(parts)}", element)

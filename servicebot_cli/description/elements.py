@@ -8,6 +8,7 @@ multiplier 1). Each value keeps its XML element, for source positions. Pure: no 
 
 from __future__ import annotations
 
+import functools
 import math
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
@@ -29,6 +30,7 @@ def parse_float(text: str | None) -> float | None:
         return math.nan
 
 
+@functools.lru_cache(maxsize=4096)  # "0 0 0" and "1 1 1" fill most files
 def parse_vec3(text: str | None, default: Vec3 | None = ZERO3) -> Vec3 | None:
     """Three floats from ``"x y z"``; NaNs when malformed, ``default`` when absent."""
     if text is None:
@@ -52,8 +54,17 @@ class Pose:
         """The pose in ``element``'s ``<origin>`` child, identity when there is none."""
         origin = element.find("origin") if element is not None else None
         if origin is None:
-            return cls()
-        return cls(parse_vec3(origin.get("xyz")) or ZERO3, parse_vec3(origin.get("rpy")) or ZERO3)
+            return _IDENTITY
+        return _pose(origin.get("xyz"), origin.get("rpy"))
+
+
+_IDENTITY = Pose()
+
+
+@functools.lru_cache(maxsize=4096)
+def _pose(xyz: str | None, rpy: str | None) -> Pose:
+    """The pose of an ``<origin xyz rpy>`` (frozen: one object serves every equal origin)."""
+    return Pose(parse_vec3(xyz) or ZERO3, parse_vec3(rpy) or ZERO3)
 
 
 @dataclass(frozen=True)

@@ -89,6 +89,7 @@ class RobotDescription:
     xacro_args: tuple[tuple[str, str], ...] = ()
     warnings: tuple[str, ...] = ()
     _models: dict[str, pin.Model] = field(default_factory=dict, repr=False)
+    _admitted: list[bool] = field(default_factory=list, repr=False)  # past the refusals
 
     # -- names and parts, in URDF order ------------------------------------------------------
 
@@ -215,10 +216,22 @@ class RobotDescription:
         Raises:
             DescriptionError: Pinocchio rejected the description.
         """
-        if base not in self._models:
+        if not self._admitted:  # judged once, at the first model asked for
             self._refuse_zero_axes()
             self._refuse_unled_mimics()
             self._refuse_negative_friction()
+            self._admitted.append(True)
+        return self.pinocchio_model(base)
+
+    def pinocchio_model(self, base: str = "fixed") -> pin.Model:
+        """The model as Pinocchio builds it, without this tool's own refusals.
+
+        check's SB701 judges Pinocchio alone; its other rules report what the refusals name.
+
+        Raises:
+            DescriptionError: Pinocchio rejected the description.
+        """
+        if base not in self._models:
             self._models[base] = build_model(self.xml_text, self.display, base,
                                              self.xacro_args)
         return self._models[base]
