@@ -141,7 +141,8 @@ URDF_RULES: tuple[Rule, ...] = (
     Rule("SB112", "undefined-material", W, "A material has no colour or texture and no definition",
          "A <material name> with neither <color> nor <texture>, defined nowhere at the top "
          "level, gives no colour (Gazebo/... names only mean something to Gazebo, in a "
-         "<gazebo> block).",
+         "<gazebo> block). A named material with a colour in a link's visual is defined for "
+         "the links after it, as urdfdom reads them (motoman's arms colour every link so).",
          "Define the material at the top level with a <color rgba>."),
     Rule("SB113", "color-out-of-range", W, "An rgba component outside [0, 1]",
          "Colours are four numbers between 0 and 1, not 0-255.",

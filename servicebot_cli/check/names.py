@@ -50,19 +50,24 @@ def _materials(robot: RobotDescription) -> Iterator[Issue]:
                         fix='add <color rgba="r g b a"/> with values in [0, 1]')
     for material in robot.root.findall("material"):
         yield from _rgba(material)
-    for link in robot.links:
+    for link in robot.links:  # in the file's order, as urdfdom reads them
         for visual in link.visuals:
             used = visual.element.find("material") if visual.element is not None else None
             if used is None:
                 continue
             yield from _rgba(used)
             used_name = used.get("name")
-            if used_name and used_name not in defined and not _has_colour(used):
-                known = ", ".join(sorted(defined)) or "none"
-                yield Issue("SB112", f"material '{used_name}' of link '{link.name}' has no "
-                            f"colour and is not defined at the top level (defined: {known})",
-                            used, fix=f'define <material name="{used_name}"><color '
-                            'rgba="..."/></material>')
+            if not used_name or used_name in defined:
+                continue
+            if _has_colour(used):  # urdfdom keeps it: later links may use it by name
+                defined[used_name] = used
+                continue
+            known = ", ".join(sorted(defined)) or "none"
+            yield Issue("SB112", f"material '{used_name}' of link '{link.name}' has no colour "
+                        "and is not defined at the top level or in an earlier link's visual "
+                        f"(defined: {known})", used,
+                        fix=f'define <material name="{used_name}"><color rgba="..."/>'
+                        "</material>")
 
 
 def _rgba(material: ET.Element) -> Iterator[Issue]:

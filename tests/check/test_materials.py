@@ -1,0 +1,46 @@
+"""Materials as urdfdom defines them: at the top level, or named with a colour in a visual.
+
+Motoman's arms (mh5, sia, gp) give the first link's visual <material name="blue"><color
+.../></material> and the later links <material name="blue"/>: urdfdom keeps the first for
+the others, and check_urdf accepts the file. SB112 said "not defined at the top level".
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.check.corpus import check_urdf_commands
+from tests.check.helpers import findings
+
+LINK = """  <link name="{name}">
+    <visual><geometry><box size="0.1 0.1 0.1"/></geometry>{material}</visual>
+  </link>
+"""
+DEFINING = '<material name="blue"><color rgba="0 0 1 1"/></material>'
+USING = '<material name="blue"/>'
+
+
+def _robot(*materials: str) -> str:
+    links = "".join(LINK.format(name=f"l{k}", material=m) for k, m in enumerate(materials))
+    joints = "".join(f'  <joint name="j{k}" type="fixed"><parent link="l{k - 1}"/>'
+                     f'<child link="l{k}"/></joint>\n' for k in range(1, len(materials)))
+    return f'<?xml version="1.0"?>\n<robot name="r">\n{links}{joints}</robot>\n'
+
+
+@pytest.mark.parametrize(("materials", "undefined"), [
+    ((DEFINING, USING, USING), 0),  # motoman: defined in the first link, used after
+    ((USING, DEFINING), 1),  # used before the link that defines it: urdfdom warns
+    ((USING, USING), 2),
+])
+def test_a_colour_in_an_earlier_visual_defines_the_material(run, tmp_path, materials,
+                                                            undefined):
+    import subprocess
+
+    path = tmp_path / "r.urdf"
+    path.write_text(_robot(*materials))
+    result = run("check", path, "--format", "json", "--isolated")
+    assert len([f for f in findings(result.stdout) if f["code"] == "SB112"]) == undefined
+    _, native, env = check_urdf_commands()
+    said = subprocess.run([*native, str(path)], capture_output=True, text=True, env=env)
+    assert said.stdout.count("material 'blue' undefined") + said.stderr.count(
+        "material 'blue' undefined") == 2 * undefined  # urdfdom prints each warning twice
