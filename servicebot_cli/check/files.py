@@ -89,17 +89,20 @@ def is_fragment(path: Path) -> bool:
 def walk(directory: Path) -> Iterator[Path]:
     """Robot files under ``directory``, sorted, skipping hidden and build directories.
 
-    Includes are left out: macro libraries, unnamed robots, and files that another robot
-    file of the walk includes.
+    Includes are left out: macro libraries, unnamed robots, and files that another file of
+    the walk includes (a robot file, or an include itself).
     """
     robots: list[Path] = []
+    fragments: list[Path] = []
     semantic: list[Path] = []
     for path in _files(directory, lambda p: is_robot_file(p) or _is_semantic_name(p)):
         if _is_semantic_name(path):
             semantic.append(path)
-        elif not is_fragment(path):
-            robots.append(path)
-    included = included_by(robots)
+        else:
+            (fragments if is_fragment(path) else robots).append(path)
+    # an include of an include is an include too (VRX: the robot includes a macro file,
+    # which includes a file of includes that names a robot but holds no link)
+    included = set(includers(robots, by=[*robots, *fragments]))
     if semantic:  # what only a *.srdf.xacro includes is left out when it is SRDF itself
         included |= {path for path in set(includers(robots, by=semantic)) - included
                      if _semantic_content(path)}

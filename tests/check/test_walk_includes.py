@@ -120,3 +120,34 @@ def test_a_directory_of_includes_only_passes_with_nothing_to_check(run, tmp_path
     empty = tmp_path / "empty"
     empty.mkdir()
     assert run("check", "urdf", empty, "--isolated").exit_code == 2
+
+
+def test_an_include_of_an_include_is_not_a_robot(run, tmp_path):
+    """VRX's wamv_gazebo: the robot includes a macro file, which includes macros.xacro, a
+    named <robot> that only includes the sensor macros. The walk checked it alone: SB109,
+    'the robot has no <link>', exit 1."""
+    urdf = tmp_path / "boat_description" / "urdf"
+    urdf.mkdir(parents=True)
+    (urdf.parent / "package.xml").write_text(
+        "<package format=\"3\"><name>boat_description</name></package>")
+    head = '<?xml version="1.0"?>\n<robot xmlns:xacro="http://ros.org/wiki/xacro"'
+    find = "$(find boat_description)/urdf"
+    (urdf / "boat.urdf.xacro").write_text(
+        f'{head} name="boat">\n  <xacro:include filename="{find}/boat_macro.xacro"/>\n'
+        "  <xacro:boat/>\n</robot>\n")
+    (urdf / "boat_macro.xacro").write_text(
+        f'{head}>\n  <xacro:include filename="{find}/macros.xacro"/>\n'
+        '  <xacro:macro name="boat">\n    <link name="base_link"/>\n'
+        '    <xacro:sensor_link name="imu"/>\n  </xacro:macro>\n</robot>\n')
+    (urdf / "macros.xacro").write_text(
+        f'{head} name="BOAT">\n  <xacro:include filename="{find}/sensor.xacro"/>\n</robot>\n')
+    (urdf / "sensor.xacro").write_text(
+        f'{head}>\n  <xacro:macro name="sensor_link" params="name">\n'
+        '    <link name="${name}_link"/>\n    <joint name="${name}_joint" type="fixed">\n'
+        '      <parent link="base_link"/><child link="${name}_link"/>\n    </joint>\n'
+        "  </xacro:macro>\n</robot>\n")
+    result = run("check", "urdf", tmp_path / "boat_description", "--isolated", "--format",
+                 "json")
+    assert result.exit_code == 0, result.stdout
+    assert [report["file"].rsplit("/", 1)[-1] for report in
+            json.loads(result.stdout)["files"]] == ["boat.urdf.xacro"]
