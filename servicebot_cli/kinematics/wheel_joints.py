@@ -91,7 +91,9 @@ def as_wheel(robot: RobotDescription, joint: Joint,
         shown = " ".join(f"{v:.3g}" for v in np.round(axis_in_root, 3) + 0.0)
         return (f"about ({shown}) in {robot.root_link}, not across the robot (its y, with x "
                 "forward as REP 103 has it)")
-    position = transform[:3, 3]
+    # the wheel's centre is its cylinder's (or sphere's), which may sit along the axle from
+    # the joint (limo's wheels are 0.0225 m outward of their joints: a track 0.045 m wider)
+    position = (transform @ pose_matrix(round_shape.origin))[:3, 3]
     if round_shape.geometry.kind == "sphere" and abs(position[1]) <= round_shape.geometry.radius:
         return BALL_CASTER
     limit = joint.limits.velocity if joint.limits and joint.limits.velocity else math.inf
