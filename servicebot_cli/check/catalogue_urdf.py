@@ -90,8 +90,10 @@ URDF_RULES: tuple[Rule, ...] = (
          "Remove the version attribute or set version=\"1.0\"."),
     Rule("SB017", "xacro-warning", W, "xacro warned while expanding",
          "xacro warns about deprecated syntax (for example a macro call without the xacro: "
-         "prefix or an unused argument); newer xacro versions refuse it.",
-         "Follow xacro's advice in the message."),
+         "prefix or an unused argument); newer xacro versions refuse it. A file whose name "
+         "does not say xacro but that holds xacro gets the same warning, with how ROS tools "
+         "read it.",
+         "Do what the message advises."),
     Rule("SB018", "xacro-include", N, "A xacro include: checked through its includers",
          "A xacro file that only defines macros or properties, or holds parts of a robot that "
          "another file includes, or whose links all hang from one link it does not define "
@@ -175,7 +177,7 @@ URDF_RULES: tuple[Rule, ...] = (
          "limit is 0. MoveIt and position control do not read effort (ROS-Industrial's arms "
          "write effort=\"0\"), so an effort limit of 0 is information where no simulator "
          "runs the description.",
-         "Write the actuator's real limits (a passive joint: the largest force it may take)."),
+         "Write the actuator's real limits."),
     Rule("SB207", "zero-axis", E, "A moving joint with a zero axis",
          "The joint moves about or along nothing; Pinocchio and KDL produce NaNs.",
          "Write the axis, for example 0 0 1."),

@@ -69,17 +69,22 @@ def _zero_limit(joint: Joint, label: str, simulator: str | None) -> Issue:
     cannot drive such a joint (a passive joint moves by springs and contact only). A velocity
     limit of 0 holds the joint still for every planner and controller that enforces limits.
     """
+    unit = "m/s" if joint.type == "prismatic" else "rad/s"
     if label == "velocity":
         return Issue("SB206", f"joint '{joint.name}' has velocity limit 0: planners and "
-                     "controllers that enforce velocity limits cannot move it", joint.element)
+                     "controllers that enforce velocity limits cannot move it", joint.element,
+                     fix=f"write the joint's top speed in {unit}")
+    force = "N" if joint.type == "prismatic" else "N m"
+    fix = (f"write the actuator's effort limit in {force} (a passive joint: the largest "
+           "effort it may take)")
     if simulator is None:
         return Issue("SB206", f"joint '{joint.name}' has effort limit 0: kinematics, MoveIt "
                      "and position control do not read effort, but a simulator or an "
                      "effort-limited controller could not drive the joint", joint.element,
-                     severity=Severity.INFO)
+                     fix=fix, severity=Severity.INFO)
     return Issue("SB206", f"joint '{joint.name}' has effort limit 0: {simulator}'s motors and "
                  "effort-limited controllers cannot drive it (a passive joint moves only by "
-                 "springs and contact)", joint.element)
+                 "springs and contact)", joint.element, fix=fix)
 
 
 def _wheel_speeds(robot: RobotDescription) -> Iterator[Issue]:

@@ -146,8 +146,9 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
     """Every rule family but the model, skipping families with no selected rule."""
     from servicebot_cli.check import gazebo, geometry, inertia, joints, ros2_control, transmissions
 
-    for warning in robot.warnings:
-        yield Issue("SB017", warning, where=(robot.display, 0, 0))
+    for warning in robot.warnings:  # the place is the finding's: not again in its message
+        yield Issue("SB017", warning.removeprefix(f"{robot.display}: "),
+                    where=(robot.display, 0, 0))
     found = list(syntax.check(robot.root))
     yield from found
     if any(i.code in ("SB008", "SB015") for i in found):

@@ -194,3 +194,18 @@ def test_links_fixed_to_a_moving_link_lend_it_their_mass(run, tmp_path, flange, 
     result = run("check", path, "--format", "json", "--isolated")
     codes = {f["code"] for f in findings(result.stdout)} & {"SB303", "SB304", "SB305"}
     assert codes == expected, result.stdout
+
+
+def test_fix_lines_fit_their_findings(run, tmp_path):
+    """mycobot_ros2's .urdf files hold xacro properties and velocity="0" limits: SB017's fix
+    spoke of xacro's advice in a message that is servicebot's own, and SB206's fix of the
+    largest force, for a velocity."""
+    path = tmp_path / "arm.urdf"
+    path.write_text(ARM.format(extra='<xacro:property name="x" value="1" '
+                                     'xmlns:xacro="http://www.ros.org/wiki/xacro"/>')
+                    .replace('velocity="1"', 'velocity="0"'))
+    found = {f["code"]: f for f in findings(run("check", path, "--format", "json",
+                                                "--isolated").stdout)}
+    assert found["SB206"]["fix"] == "write the joint's top speed in rad/s"
+    assert not found["SB017"]["message"].startswith(str(path))  # the place is said once
+    assert "xacro's advice" not in found["SB017"]["fix"]
