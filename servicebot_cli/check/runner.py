@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import os
 import re
+import stat
 import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
@@ -56,7 +57,11 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv,
     """
     from servicebot_cli.description.loader import read_description
 
-    size = source.path.stat().st_size if os.path.isfile(source.path) else 0
+    try:
+        found = os.stat(source.path)
+        size = found.st_size if stat.S_ISREG(found.st_mode) else 0
+    except OSError:  # the reader says what is wrong with it
+        size = 0
     if size > MAX_BYTES:
         issue = Issue("SB015", f"file is {size / 1e6:.1f} MB, over the {MAX_BYTES / 1e6:.0f} MB "
                       "limit for a robot description; refused unread", where=(source.display, 0, 0))
