@@ -18,7 +18,12 @@ import numpy as np
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.kinematics.link_poses import link_transforms
 from servicebot_cli.kinematics.running_gear import swivels_above
-from servicebot_cli.kinematics.wheel_joints import Wheel, as_wheel, turns_freely
+from servicebot_cli.kinematics.wheel_joints import (
+    Wheel,
+    as_wheel,
+    rolls_on_cylinder,
+    turns_freely,
+)
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -80,6 +85,7 @@ def drive_geometry(robot: RobotDescription) -> DriveGeometry:
             wheels.append(wheel)
         elif wheel is not None:
             left_out.setdefault(wheel, []).append(joint.name)
+    wheels = _without_ball_casters(robot, wheels, left_out)
     sides = {side: [w for w in wheels if w.side == side] for side in ("left", "right")}
     if not sides["left"] or not sides["right"]:
         found = ", ".join(f"{w.joint} ({w.side})" for w in wheels) or "none"
@@ -97,6 +103,25 @@ def drive_geometry(robot: RobotDescription) -> DriveGeometry:
         track_m=float(left_y - right_y),
         max_wheel_speed_rad_s=min(w.velocity_limit_rad_s for w in wheels),
     )
+
+
+def _without_ball_casters(robot: RobotDescription, wheels: list[Wheel],
+                          left_out: dict[str, list[str]]) -> list[Wheel]:
+    """``wheels`` without the balls beside cylinder wheels: passive ball casters.
+
+    A ball on a continuous joint turns about any axis; beside drive wheels that are
+    cylinders on both sides, it carries the robot and drives nothing (a base with four
+    corner casters had their radii and positions averaged into the drive's). Where every
+    wheel is a ball (neobotix's collide as spheres), the balls are the wheels.
+    """
+    cylinders = [w for w in wheels if rolls_on_cylinder(robot, robot.joint(w.joint))]
+    if {w.side for w in cylinders} != {"left", "right"}:
+        return wheels
+    for wheel in wheels:
+        if wheel not in cylinders:
+            left_out.setdefault("as a ball beside cylinder wheels: a passive caster",
+                                []).append(wheel.joint)
+    return cylinders
 
 
 def _why_not_wheels(robot: RobotDescription, left_out: dict[str, list[str]]) -> str:

@@ -107,6 +107,14 @@ def as_wheel(robot: RobotDescription, joint: Joint,
     )
 
 
+def rolls_on_cylinder(robot: RobotDescription, joint: Joint) -> bool:
+    """Whether the wheel of ``joint`` takes its radius from a cylinder (else a sphere)."""
+    if joint.child is None:
+        return False
+    link = robot.link(joint.child)
+    return any(s.geometry.kind == "cylinder" for s in (*link.collisions, *link.visuals))
+
+
 def _cylinder_axis(shape: Shape) -> np.ndarray:
     """The cylinder's own z axis, expressed in its link frame."""
     return pose_matrix(shape.origin)[:3, 2]
