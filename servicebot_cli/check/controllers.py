@@ -247,6 +247,9 @@ def _stated(given: float, effective: float, expected: float) -> str:
     if effective == given:
         return f"{given:g} m"
     if abs(given - expected) <= abs(effective - expected):
-        off = abs(given - expected) / abs(expected) * 100 if expected else math.inf
-        return f"{given:g} m ({off:.2g} % off; {effective:g} m with the multipliers)"
+        if not expected:
+            return f"{given:g} m ({effective:g} m with the multipliers)"
+        off = abs(given - expected) / abs(expected) * 100
+        shown = f"{off:.0f}" if off >= 10 else f"{off:.2g}"
+        return f"{given:g} m ({shown} % off; {effective:g} m with the multipliers)"
     return f"{effective:g} m ({given:g} m times the multipliers)"

@@ -46,7 +46,13 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
 
 
 def _dynamics(joint: Joint) -> Iterator[Issue]:
-    """SB216: a negative damping (a warning) or friction (Pinocchio refuses it)."""
+    """SB216: a negative damping (a warning) or friction (Pinocchio refuses it).
+
+    Only where a joint moves along one axis: Pinocchio reads no other joint's dynamics, nor
+    does anything else a fixed joint's.
+    """
+    if joint.type not in ("revolute", "continuous", "prismatic"):
+        return
     element = joint.element.find("dynamics") if joint.element is not None else None
     if element is None:
         return

@@ -5,6 +5,7 @@ from __future__ import annotations
 import difflib
 import math
 import re
+import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
@@ -155,11 +156,24 @@ def _limit_texts(item: ControlJoint, interface: Interface) -> Iterator[Issue]:
         text = interface.get(key)
         if text is None or is_number(text):
             continue
-        element = item.element.find(f"command_interface[@name='{interface.name}']"
-                                    f"/param[@name='{key}']") if item.element is not None else None
+        element = _param_element(item, interface.name, key)
         yield Issue("SB512", f"joint '{item.name}' {interface.name} command interface: {key} "
                     f"'{text}' is not a number; ros2_control skips the interface's limits",
                     element if element is not None else item.element, fix=_number_fix(text))
+
+
+def _param_element(item: ControlJoint, interface: str, key: str) -> ET.Element | None:
+    """The ``<param name=key>`` of ``item``'s command interface ``interface``, if found.
+
+    Found by walking, not by an XPath built from the names: a name may hold a quote.
+    """
+    for element in item.element.iterfind("command_interface") if item.element is not None \
+            else ():
+        if element.get("name") == interface:
+            for param in element.iterfind("param"):
+                if param.get("name") == key:
+                    return param
+    return None
 
 
 def _number_fix(text: str) -> str:

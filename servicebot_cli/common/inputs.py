@@ -44,15 +44,16 @@ def as_typed(path: str) -> str:
     file, and GitHub annotations (which want paths in the repository) attach to it.
     Symbolic links are not followed: the path stays the one the user's tools name.
     """
-    if not os.path.isabs(path):
-        return path
+    if not os.path.isabs(path) or ".." in Path(path).parts:
+        return path  # a symbolic link before '..' leads elsewhere than the text says
     try:
         here = os.getcwd()
-        if os.path.commonpath([here, os.path.normpath(path)]) != here:
-            return path
-    except (OSError, ValueError):  # no working directory any more; another drive
+    except OSError:  # no working directory any more
         return path
-    return os.path.relpath(path, here)
+    inside = here.rstrip(os.sep) + os.sep
+    if not path.startswith(inside):
+        return path
+    return os.path.normpath(path[len(inside):])
 
 
 @contextlib.contextmanager
@@ -121,13 +122,18 @@ def read_input_bytes(path: Path, display: str, *, kind: str,
         # opened first, then asked what it is: one system call where a stat before each
         # step took three (a check of a thousand files opens each of them)
         descriptor = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_CLOEXEC)
-        with os.fdopen(descriptor, "rb") as handle:
+        try:
             mode = os.fstat(descriptor)
             if stat.S_ISDIR(mode.st_mode):
                 raise IsADirectoryError
             if max_bytes is not None and stat.S_ISREG(mode.st_mode) and mode.st_size > max_bytes:
                 raise _too_large(display, mode.st_size, max_bytes, error)
             os.set_blocking(descriptor, True)  # a named pipe without a writer reads as empty
+            handle = os.fdopen(descriptor, "rb")
+        except BaseException:
+            os.close(descriptor)
+            raise
+        with handle:
             data = handle.read() if max_bytes is None else handle.read(max_bytes + 1)
         if max_bytes is not None and len(data) > max_bytes:
             raise _too_large(display, None, max_bytes, error)

@@ -48,6 +48,9 @@ class LinkNotFound(NameNotFound):
     kind = "link"
 
 
+_DYNAMICS_READ = ("revolute", "continuous", "prismatic")  # Pinocchio's one-axis joints
+
+
 @dataclass(frozen=True)
 class FixedFrame:
     """A link attached by a fixed joint (Pinocchio folds these into frames).
@@ -268,7 +271,10 @@ class RobotDescription:
                                        and joint.mimic.joint != joint.name):
                 continue
             leader = joint.mimic.joint
-            what = "itself" if leader == joint.name else f"'{leader}', which does not exist"
+            if leader is None:
+                what = "no joint (its <mimic> has no joint attribute)"
+            else:
+                what = "itself" if leader == joint.name else f"'{leader}', which does not exist"
             raise DescriptionError(
                 f"{self.display}: joint '{joint.name}' mimics {what}: nothing drives it; "
                 "name its leader in <mimic joint=...>, or remove the <mimic> "
@@ -284,6 +290,8 @@ class RobotDescription:
             DescriptionError: Naming the joint.
         """
         for joint in self.joints:
+            if joint.type not in _DYNAMICS_READ:
+                continue
             dynamics = joint.element.find("dynamics") if joint.element is not None else None
             friction = el.parse_float(dynamics.get("friction")) if dynamics is not None else None
             if friction is not None and friction < 0:

@@ -61,3 +61,13 @@ def test_words_units_and_commas_are_no_number(run, tmp_path, text):
                                   "-inf", "  -3  "])
 def test_numbers_are_left_to_sb508(run, tmp_path, text):
     assert _limit_texts(run, tmp_path, text) == []
+
+
+def test_an_interface_name_with_a_quote_is_no_internal_error(run, tmp_path):
+    """The <param> was found by an XPath built from the interface's name."""
+    path = tmp_path / "xsarm.urdf.xacro"
+    path.write_text(XACRO.format(minimum='"-3"', maximum="3").replace(
+        '<command_interface name="position">', "<command_interface name=\"pos'ition\">"))
+    result = run("check", path, "--format", "json", "--isolated")
+    assert result.exit_code == 0, result.stdout
+    assert {f["code"] for f in findings(result.stdout)} >= {"SB505", "SB512"}

@@ -79,3 +79,27 @@ def test_a_file_outside_the_working_directory_keeps_its_absolute_path(workspace)
     (found,) = [f for report in json.loads(result.stdout)["files"] for f in report["findings"]
                 if f["code"] == "SB203"]
     assert found["file"] == str(urdf / "parts.xacro") and found["via"] == f"{robot}:5:3"
+
+
+def test_a_path_through_a_symbolic_link_and_dot_dot_is_kept_as_written(tmp_path):
+    """ws/a is a link to real/a; a/robot includes ../common/parts.xacro, which xacro opens
+    as ws/a/../common, that is real/common. Folding '..' as text named ws/common, which does
+    not exist, and the mesh beside the include was then missing (SB401)."""
+    real = tmp_path / "real"
+    (real / "a").mkdir(parents=True)
+    (real / "common").mkdir()
+    (real / "common" / "parts.xacro").write_text(PARTS.replace(
+        '<link name="arm"/>', '<link name="arm"><visual><geometry><mesh filename="arm.stl"/>'
+        "</geometry></visual></link>"))
+    (real / "common" / "arm.stl").write_bytes(b"\0" * 80 + (0).to_bytes(4, "little"))
+    (real / "a" / "robot.urdf.xacro").write_text(ROBOT.format(include="../common/parts.xacro"))
+    ws = tmp_path / "ws"
+    ws.mkdir()
+    (ws / "a").symlink_to(real / "a")
+    result = run_servicebot("check", "urdf", "--isolated", "--format", "json",
+                            str(ws / "a" / "robot.urdf.xacro"), cwd=ws)
+    found = [f for report in json.loads(result.stdout)["files"] for f in report["findings"]]
+    assert "SB401" not in {f["code"] for f in found}, result.stdout
+    assert "SB403" in {f["code"] for f in found}  # the mesh was read: it has no triangles
+    assert all(f["file"] == str(ws / "a" / "../common/parts.xacro") for f in found
+               if f["code"] == "SB203")

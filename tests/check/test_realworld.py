@@ -250,6 +250,7 @@ def test_a_file_included_by_a_relative_path_is_not_walked_as_a_robot(run, tmp_pa
 @pytest.mark.parametrize(("separation", "stated"), [
     ("0.37", "wheel_separation 0.37 m (1.5 % off; 0.555 m with the multipliers)"),
     ("0.2", "wheel_separation 0.3 m (0.2 m times the multipliers)"),
+    ("0.8", "wheel_separation 0.8 m (113 % off; 1.2 m with the multipliers)"),
 ])
 def test_a_separation_just_off_names_the_value_that_nearly_matched(run, tmp_path, separation,
                                                                    stated):

@@ -47,3 +47,16 @@ def test_display_path(tmp_path, monkeypatch):
     (tmp_path / "sub").mkdir()
     assert display_path(tmp_path / "sub" / "x.urdf") == "sub/x.urdf"
     assert display_path(tmp_path.parent / "y.urdf") == str((tmp_path.parent / "y.urdf").resolve())
+
+
+def test_a_directory_refused_leaves_no_descriptor_open(tmp_path):
+    import os
+
+    from servicebot_cli.common.errors import ServicebotError
+    from servicebot_cli.common.inputs import read_input_bytes
+
+    before = len(os.listdir("/proc/self/fd"))
+    for _ in range(20):
+        with pytest.raises(ServicebotError, match="is a directory"):
+            read_input_bytes(tmp_path, "d", kind="a file")
+    assert len(os.listdir("/proc/self/fd")) == before

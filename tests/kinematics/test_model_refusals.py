@@ -59,3 +59,28 @@ def test_a_negative_friction_is_named_as_the_file_writes_it(tmp_path):
     assert "min_dry_friction" not in line
     checked = run_servicebot("check", "urdf", path, "--isolated")
     assert "error SB216 [negative-dynamics]" in checked.stdout
+
+
+def test_a_fixed_joint_s_dynamics_are_nobody_s(tmp_path):
+    """Pinocchio reads the dynamics of joints that move along one axis only: a negative
+    friction on a fixed joint is no refusal, and no SB216."""
+    path = tmp_path / "r.urdf"
+    path.write_text(ROBOT.format(leader="j1").replace(
+        '<mimic joint="j1" multiplier="2"/>', "").replace(
+        '<joint name="j1" type="revolute">', '<joint name="j1" type="fixed">').replace(
+        '<axis xyz="0 0 1"/>\n    <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>',
+        '<dynamics friction="-0.5"/></joint>', 1))
+    assert 'type="fixed"' in path.read_text() and 'friction="-0.5"' in path.read_text()
+    assert run_servicebot("fk", path, "-f", "b").returncode == 0
+    checked = run_servicebot("check", "urdf", path, "--isolated")
+    assert "SB216" not in checked.stdout
+
+
+def test_a_mimic_without_a_joint_attribute_says_so(tmp_path):
+    path = tmp_path / "r.urdf"
+    path.write_text(ROBOT.format(leader="j1").replace('<mimic joint="j1" multiplier="2"/>',
+                                                      '<mimic multiplier="2"/>'))
+    line = assert_one_line_error(run_servicebot("fk", path, "-f", "b"), 2,
+                                 "joint 'j2' mimics no joint (its <mimic> has no joint "
+                                 "attribute)")
+    assert "None" not in line
