@@ -98,8 +98,11 @@ ROS_RULES = (
          "The joint is fixed in the URDF.", "Remove it from the controller."),
     # -- model -----------------------------------------------------------------------------------
     Rule("SB701", "model-build", E, "Pinocchio cannot build the model",
-         "Every servicebot command builds the same Pinocchio model; this is what it said. "
-         "Built only when the cheaper rules found no error.",
+         "Every servicebot command builds the same Pinocchio model; this is what Pinocchio "
+         "said. Built only when the cheaper rules found no error. The other commands also "
+         "refuse what Pinocchio builds but would move wrongly, which rules report: a zero "
+         "axis (SB207), a mimic of itself or of no joint (SB209, SB210), a negative "
+         "friction (SB216).",
          "Fix what the message says."),
     Rule("SB702", "model-skipped", N, "The model was not built because of errors above",
          "Building the model of a broken description says nothing new; fix the errors "
