@@ -95,13 +95,32 @@ def _add_floor(geometry: pin.GeometryModel, links: list[str], floor_z: float,
             continue
         obj = geometry.geometryObjects[k]  # fresh: adding objects moves them in memory
         shape = obj.geometry
-        if hasattr(shape, "buildConvexHull"):  # a mesh: its hull has the same lowest point
-            shape.buildConvexHull(True, "Qt")
+        if hasattr(shape, "buildConvexHull") and _solid(shape):  # a mesh: its hull has the
+            shape.buildConvexHull(True, "Qt")  # same lowest point
             hull = pin.GeometryObject(f"{obj.name}_hull", obj.parentJoint, obj.parentFrame,
                                       obj.placement.copy(), shape.convex)
             k = geometry.addGeometryObject(hull)
             links.append(link)
         geometry.addCollisionPair(pin.CollisionPair(k, index))
+
+
+def _solid(mesh: object) -> bool:
+    """Whether ``mesh``'s vertices span a volume, so that qhull can build its hull.
+
+    A flat plate or a lone triangle (valid meshes, which check passes) made qhull fail,
+    or crash the process; such a mesh meets the floor as it is.
+    """
+    try:
+        points = np.asarray(mesh.vertices(), dtype=np.float64)  # type: ignore[attr-defined]
+    except (AttributeError, TypeError, ValueError):
+        return False
+    if points.ndim != 2 or len(points) < 4 or not np.all(np.isfinite(points)):
+        return False
+    spread = points - points.mean(axis=0)
+    size = float(np.abs(spread).max())
+    if size == 0.0:
+        return False
+    return bool(np.linalg.matrix_rank(spread / size, tol=1e-9) == 3)
 
 
 def _floor_object(z_m: float) -> pin.GeometryObject:
