@@ -10,6 +10,7 @@ casters are left out (:mod:`~servicebot_cli.kinematics.running_gear`).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -27,6 +28,10 @@ from servicebot_cli.kinematics.wheel_joints import (
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
+
+
+_SMALLEST_RADIUS_M = 1e-4  # a wheel of a tenth of a millimetre: a typo, or no number
+_LARGEST_RADIUS_M = 100.0
 
 
 @dataclass(frozen=True)
@@ -95,6 +100,13 @@ def drive_geometry(robot: RobotDescription) -> DriveGeometry:
             f"about the joint axis or a sphere (found: {found}); "
             + _why_not_wheels(robot, left_out)
         )
+    for wheel in wheels:
+        if not (math.isfinite(wheel.radius_m) and _SMALLEST_RADIUS_M <= wheel.radius_m
+                <= _LARGEST_RADIUS_M):
+            raise DescriptionError(
+                f"{robot.display}: wheel joint '{wheel.joint}' rolls on a radius of "
+                f"{wheel.radius_m:g} m, which no wheel has; give its cylinder's real radius "
+                f"(from {_SMALLEST_RADIUS_M:g} to {_LARGEST_RADIUS_M:g} m)")
     left_y = np.mean([w.position_m[1] for w in sides["left"]])
     right_y = np.mean([w.position_m[1] for w in sides["right"]])
     return DriveGeometry(

@@ -65,3 +65,25 @@ def test_a_deeply_nested_controllers_option_is_one_line(tmp_path: Path) -> None:
     result = run_servicebot("inspect", "--section", "topics", "--controllers",
                             "controllers.yaml", cwd=tmp_path, timeout=30)
     assert_one_line_error(result, 2, "controllers.yaml: lists and mappings nested too deep")
+
+
+@pytest.mark.parametrize("radius", ["nan", "1e-320", "-0.07", "1e300"])
+def test_a_wheel_radius_no_wheel_has_is_one_line(tmp_path, radius):
+    """simulate ran a wheel of radius nan, 1e-320 or -0.07 and wrote NaN (or a backward
+    wheel's) results, exit 0."""
+    from tests.conftest import SIM_URDF, assert_one_line_error, run_servicebot
+
+    text = SIM_URDF.read_text()
+    start = text.index('<link name="front_left_wheel"')
+    end = text.index("</link>", start)
+    wheel = text[start:end]
+    assert 'radius="' in wheel
+    import re
+
+    wheel = re.sub(r'radius="[^"]*"', f'radius="{radius}"', wheel)
+    path = tmp_path / "robot.urdf"
+    path.write_text(text[:start] + wheel + text[end:])
+    result = run_servicebot("simulate", path, "--headless", "--duration-s", "0.5", "--out",
+                            tmp_path / "run")
+    assert_one_line_error(result, 2, "wheel joint 'front_left_wheel_joint' rolls on a radius")
+    assert not (tmp_path / "run").exists()
