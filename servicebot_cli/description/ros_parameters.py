@@ -71,14 +71,19 @@ def node_parameters(document: Any, depth: int = 0) -> dict[str, dict[str, Any]]:
 def controller_types(nodes: dict[str, dict[str, Any]]) -> dict[str, str]:
     """Each controller's ``type`` by name.
 
-    Those ``controller_manager`` declares come first (in its order), then those that declare
+    Those ``controller_manager`` declares, nested or as a dotted ``NAME.type`` key, come
+    first (in its order), then those that declare
     only their own (in file order). Where both say, the controller's own word wins, as the
     spawner (``--param-file``) sets it on the controller manager over what that held; so
     ``check controllers`` reads it.
     """
     manager = nodes.get("controller_manager", {})
-    types = {name: value["type"] for name, value in manager.items()
-             if isinstance(value, dict) and isinstance(value.get("type"), str)}
+    types: dict[str, str] = {}
+    for key, value in manager.items():
+        if isinstance(value, dict) and isinstance(value.get("type"), str):
+            types[str(key)] = value["type"]
+        elif str(key).endswith(".type") and isinstance(value, str):  # "NAME.type: T", the
+            types[str(key)[:-len(".type")]] = value  # same parameter (Clearpath's control.yaml)
     for name, params in nodes.items():
         if name != "controller_manager" and isinstance(params.get("type"), str):
             types[name] = params["type"]

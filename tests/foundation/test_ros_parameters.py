@@ -4,6 +4,7 @@ parameters (Jazzy)."""
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import yaml
@@ -83,3 +84,29 @@ def test_inspect_lists_the_type_check_controllers_reads(run, tmp_path: Path):
     # a ros2_controllers type names URDF joints (a vendor's need not): check looks for it
     checked = run("check", "controllers", path)
     assert "no_such_joint" in checked.stdout + checked.stderr
+
+
+def test_a_dotted_type_key_is_the_controllers_type(run, tmp_path):
+    """Clearpath's control.yaml declares 'platform_velocity_controller.type: ...' under
+    controller_manager: the same ROS 2 parameter as a nested type. simulate and inspect
+    read only the nested form, so the diff drive and its limits went unread; the controller
+    configuration of the bundled robot, written dotted, must run as the nested one does."""
+    import re
+
+    from servicebot_cli.description.ros_parameters import controller_types
+    from tests.conftest import REPO
+
+    nested = (REPO / "robots" / "controllers.yaml").read_text()
+    dotted = re.sub(r"\n(\s+)(\w+):\n\s+type: (\S+)", r"\n\1\2.type: \3", nested)
+    assert dotted != nested and ".type: diff_drive_controller" in dotted
+    types = controller_types({"controller_manager": {"a.type": "x/Y", "b": {"type": "p/Q"}}})
+    assert types == {"a": "x/Y", "b": "p/Q"}
+    distances = []
+    for text in (nested, dotted):
+        path = tmp_path / "controllers.yaml"
+        path.write_text(text)
+        result = run("simulate", "--headless", "--duration-s", "1", "--controllers", path,
+                     "--format", "json")
+        assert result.exit_code == 0, result.stderr
+        distances.append(json.loads(result.stdout)["distance_m"])
+    assert distances[0] == distances[1]
