@@ -34,6 +34,9 @@ IntArray = npt.NDArray[np.intp]
 _ON_AXIS_M = 1e-9  # a joint this close to the previous joint's axis does not move with it
 
 
+_START_SPAN = 100.0  # rad or m: the furthest from zero a random start is drawn
+
+
 class NothingMoves(ServicebotError):
     """IK was asked to move a frame that no joint moves."""
 
@@ -190,11 +193,17 @@ class Chain:
         """
         import pinocchio as pin
 
+        # limits of +-1e308 bound no start worth trying (their span overflows): starts are
+        # drawn within _START_SPAN of zero where the limits allow more
+        lower = np.maximum(self.lower, -_START_SPAN)
+        upper = np.minimum(self.upper, _START_SPAN)
+        lower, upper = np.where(lower <= upper, lower, self.lower), np.where(
+            lower <= upper, upper, self.upper)
         if self.vector_space:
-            return self.lower + (self.upper - self.lower) * rng.random(int(self.model.nq))
+            return lower + (upper - lower) * rng.random(int(self.model.nq))
         q: FloatArray = pin.neutral(self.model)
         bounded = np.isfinite(self.lower)
-        q[bounded] = rng.uniform(self.lower[bounded], self.upper[bounded])
+        q[bounded] = rng.uniform(lower[bounded], upper[bounded])
         for j in range(1, self.model.njoints):
             joint = self.model.joints[j]
             if joint.nq == 2 and joint.nv == 1:  # continuous: cos, sin of an angle

@@ -24,6 +24,7 @@ FloatArray = npt.NDArray[np.float64]
 SAMPLES = 200
 """Random configurations that decide which pairs always touch."""
 _SAMPLE_SEED = 0
+_SAMPLE_SPAN = 100.0  # rad or m: a sampled joint is within this of zero (no robot moves further)
 
 
 def keep_moved_pairs(model: pin.Model, geometry: pin.GeometryModel,
@@ -76,8 +77,13 @@ def sample_configurations(model: pin.Model, count: int,
                 continue
             if joint.nq == 1:
                 lo, hi = model.lowerPositionLimit[i], model.upperPositionLimit[i]
-                q[i] = rng.uniform(lo, hi) if math.isfinite(lo) and math.isfinite(hi) else \
-                    rng.uniform(-math.pi, math.pi)
+                if math.isfinite(lo) and math.isfinite(hi):
+                    # limits of +-1e308 bound nothing a sample can use (numpy refuses the
+                    # span): a joint is sampled within _SAMPLE_SPAN of zero at most
+                    low, high = max(lo, -_SAMPLE_SPAN), min(hi, _SAMPLE_SPAN)
+                    q[i] = rng.uniform(low, high) if low <= high else rng.uniform(lo, hi)
+                else:
+                    q[i] = rng.uniform(-math.pi, math.pi)
             elif joint.nq == 2 and joint.nv == 1:  # continuous: cos, sin
                 angle = rng.uniform(-math.pi, math.pi)
                 q[i:i + 2] = math.cos(angle), math.sin(angle)

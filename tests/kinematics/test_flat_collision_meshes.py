@@ -48,3 +48,27 @@ def test_ik_places_any_mesh_against_the_floor(tmp_path, mesh):
     result = run_servicebot("ik", path, "--frame", "tip", "--position", "0.3", "0", "0.3",
                             "--seed", "1")
     assert result.returncode == 0, (result.returncode, result.stderr)
+
+
+@pytest.mark.parametrize("limit", ["1e308", "1e200"])
+def test_limits_that_bound_nothing_are_no_internal_error(tmp_path, limit):
+    """Limits of +-1e308: numpy refused the span of a sample ('high - low range exceeds
+    valid bounds', exit 3) and the random starts overflowed (a RuntimeWarning)."""
+    path = tmp_path / "arm.urdf"
+    path.write_text(f"""<robot name="arm">
+  <link name="base"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>
+  </link>
+  <link name="l1"><collision><origin xyz="0.15 0 0"/><geometry><box size="0.3 0.05 0.05"/>
+    </geometry></collision></link>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="l1"/>
+    <origin xyz="0 0 0.1"/><axis xyz="0 0 1"/>
+    <limit lower="-{limit}" upper="{limit}" effort="1" velocity="1"/></joint>
+  <link name="tip"/>
+  <joint name="t" type="fixed"><parent link="l1"/><child link="tip"/><origin xyz="0.3 0 0"/>
+  </joint>
+</robot>
+""")
+    result = run_servicebot("ik", path, "--frame", "tip", "--position", "0", "0.3", "0.1",
+                            "--seed", "1")
+    assert result.returncode == 0, result.stderr
+    assert result.stderr == ""
