@@ -177,6 +177,10 @@ def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> T
     posed = link_transforms(robot, request.configuration, clamp=request.clamp)
     meshes = mesh_library(robot, request.resolver or PackageResolver.from_environment())
     mass, centre = t.mass_and_centre(robot, posed)
+    unknown = t.links_of_unknown_mass(robot)
+    if unknown:
+        notes.append(f"left out of the mass and its centre: {', '.join(unknown)}, whose mass "
+                     "is not a finite number (check reports it as SB014)")
     if centre is None and mass > 0:
         notes.append(t.CENTRE_UNKNOWN)
     box = t.box_of(robot, posed, meshes)

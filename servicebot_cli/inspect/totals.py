@@ -139,6 +139,15 @@ def mass_and_centre(robot: RobotDescription,
     return total, vec3(centre)
 
 
+def links_of_unknown_mass(robot: RobotDescription) -> list[str]:
+    """Links whose mass is written but is no finite number (``nan``, ``inf``, text).
+
+    :func:`mass_and_centre` leaves them out.
+    """
+    return [link.name for link in robot.links if link.inertial is not None
+            and link.inertial.mass_kg is not None and not math.isfinite(link.inertial.mass_kg)]
+
+
 def arm_reach(tree: KinematicTree, arm_joints: list[Joint],
               transforms: Mapping[str, FloatArray]) -> ArmReach | None:
     """The reach of the chain that starts at the first arm joint; None without an arm."""
