@@ -172,11 +172,13 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
 _LOADED: dict[tuple[object, ...], RobotDescription] = {}
 
 
-def load(source: RobotSource, *, build_model: bool = True) -> RobotDescription:
+def load(source: RobotSource, *, build_model: bool = True,
+         unled_mimics: bool = False) -> RobotDescription:
     """The validated description for ``source``, loaded once per process.
 
     Without ``build_model`` the description is checked up to Pinocchio, which the caller
-    then builds (``simulate`` in a forked process meanwhile).
+    then builds (``simulate`` in a forked process meanwhile). With ``unled_mimics`` a
+    ``<mimic>`` that names no joint is let through (``inspect`` shows such files).
 
     Raises:
         DescriptionError: Anything :func:`read_description` raises, a root that is not a
@@ -196,6 +198,8 @@ def load(source: RobotSource, *, build_model: bool = True) -> RobotDescription:
         _refuse_second_parents(robot)
         _LOADED[key] = robot
     robot = _LOADED[key]
+    if not unled_mimics:
+        robot.refuse_unled_mimics()
     if build_model:
         robot.model  # noqa: B018 -- building the model is the validation (once: it is kept)
     return robot

@@ -221,7 +221,6 @@ class RobotDescription:
         """
         if not self._admitted:  # judged once, at the first model asked for
             self._refuse_zero_axes()
-            self._refuse_unled_mimics()
             self._refuse_negative_friction()
             self._admitted.append(True)
         return self.pinocchio_model(base)
@@ -255,12 +254,14 @@ class RobotDescription:
                     f"turns or slides along no direction; give its axis "
                     f"{check_hint(self.display, self.xacro_args)}")
 
-    def _refuse_unled_mimics(self) -> None:
+    def refuse_unled_mimics(self) -> None:
         """A ``<mimic>`` of itself or of a joint that is not there (check's SB210, SB209).
 
         No joint drives the follower: MoveIt refuses the robot, yourdfpy sets it to the
-        offset, Pinocchio and this tool's kinematics would move it freely. A loop of
-        mimics (SB211) keeps one of its joints free, as check explains.
+        offset, Pinocchio and this tool's kinematics would move it freely. The commands
+        that move the robot refuse it (:func:`~servicebot_cli.description.loader.load`);
+        ``inspect``, which shows what a file holds (RViz draws such a robot), does not.
+        A loop of mimics (SB211) keeps one of its joints free, as check explains.
 
         Raises:
             DescriptionError: Naming the joint.

@@ -104,9 +104,10 @@ def run(request: InspectRequest | DiffRequest) -> InspectResult | DiffResult:
     """
     from servicebot_cli.description.loader import load
 
-    if isinstance(request, DiffRequest):
-        return compare(_tree(load(request.a)), _tree(load(request.b)))
-    robot = _tree(load(request.source))
+    if isinstance(request, DiffRequest):  # a mimic of no joint is shown as written
+        return compare(_tree(load(request.a, unled_mimics=True)),
+                       _tree(load(request.b, unled_mimics=True)))
+    robot = _tree(load(request.source, unled_mimics=True))
     values, held = _checked(robot, request.joints, request.clamp)
     resolver = request.source.resolver()
     picture = None
