@@ -128,9 +128,11 @@ def run(request: SimulateRequest, *, stderr: TextIO | None = None,
     import numpy.random  # noqa: F401 -- the pose work's noise, in both processes: before the fork
 
     from servicebot_cli.description.loader import load
+    from servicebot_cli.kinematics.frames import require_tree
     from servicebot_cli.simulate.model_facts import FactsAhead, description_first
 
     robot = load(request.robot, build_model=False)
+    require_tree(robot)  # a joint loop: no model holds it, as fk and inspect say
     with FactsAhead(robot, then_import=("servicebot_cli.simulate.pose_work",)) as facts, \
             description_first(facts):
         return _run_loaded(request, robot, facts, stderr, clock)

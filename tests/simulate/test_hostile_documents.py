@@ -87,3 +87,18 @@ def test_a_wheel_radius_no_wheel_has_is_one_line(tmp_path, radius):
                             tmp_path / "run")
     assert_one_line_error(result, 2, "wheel joint 'front_left_wheel_joint' rolls on a radius")
     assert not (tmp_path / "run").exists()
+
+
+def test_a_joint_loop_is_refused_as_fk_and_inspect_refuse_it(tmp_path):
+    """simulate ran a robot with a joint from a link to itself, and wrote its results."""
+    from tests.conftest import SIM_URDF, assert_one_line_error, run_servicebot
+
+    text = SIM_URDF.read_text()
+    end = text.rindex("</robot>")
+    path = tmp_path / "robot.urdf"
+    path.write_text(text[:end] + '<link name="s"/><joint name="selfj" type="fixed">'
+                    '<parent link="s"/><child link="s"/></joint>\n' + text[end:])
+    result = run_servicebot("simulate", path, "--headless", "--duration-s", "0.5", "--out",
+                            tmp_path / "run")
+    assert_one_line_error(result, 2, "joint 'selfj' connects link 's' to itself")
+    assert not (tmp_path / "run").exists()
