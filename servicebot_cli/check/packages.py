@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue
-from servicebot_cli.common.errors import PackageNotFound
+from servicebot_cli.common.errors import PackageNotFound, RemoteResource
 from servicebot_cli.description.packages import PackageLocation, PackageResolver, is_remote
 
 if TYPE_CHECKING:
@@ -59,7 +59,10 @@ class PackageSearch:
 
     def _resolve(self, uri: str, base_dir: Path) -> Resolved:
         if not uri.startswith("package://"):
-            return Resolved(self.resolver.resolve_uri(uri, base_dir))
+            try:
+                return Resolved(self.resolver.resolve_uri(uri, base_dir))
+            except RemoteResource as exc:  # check says so before it resolves anything
+                return Resolved(None, error=str(exc))
         name = uri[len("package://"):].partition("/")[0]
         probe = PackageResolver(self.resolver.explicit, self.resolver.ros_package_path,
                                 self.resolver.ament_prefix_path, self.resolver.context)

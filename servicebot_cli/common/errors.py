@@ -79,6 +79,10 @@ class PackageNotFound(DescriptionError):
     """A ``$(find pkg)`` or ``package://pkg/`` reference names a package that is nowhere."""
 
 
+class RemoteResource(DescriptionError):
+    """A mesh or file named by an ``http(s)://`` address (Gazebo Fuel): fetched by no one here."""
+
+
 class NameNotFound(ServicebotError):
     """A joint, frame, link or other name that the robot does not have.
 

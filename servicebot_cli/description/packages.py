@@ -28,7 +28,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from urllib.parse import unquote, urlparse
 
-from servicebot_cli.common.errors import PackageNotFound
+from servicebot_cli.common.errors import PackageNotFound, RemoteResource
 from servicebot_cli.description.package_dirs import (
     holding_package,
     packages_under,
@@ -171,6 +171,9 @@ class PackageResolver:
                     location, path = elsewhere, elsewhere.path / rel
             self.found.setdefault(name, location)
             return path
+        if is_remote(uri):  # not a path: Path() would fold its '//' into 'http:/...'
+            raise RemoteResource(f"'{uri}' is fetched over the network, which servicebot "
+                                 "does not do")
         if uri.startswith("file://"):
             return Path(unquote(urlparse(uri).path))
         path = Path(uri).expanduser()

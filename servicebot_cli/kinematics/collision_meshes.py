@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from servicebot_cli.common.errors import PackageNotFound
+from servicebot_cli.common.errors import PackageNotFound, RemoteResource
 from servicebot_cli.common.inputs import not_a_file
 
 if TYPE_CHECKING:
@@ -63,6 +63,11 @@ def collision_meshes(robot: RobotDescription, resolver: PackageResolver
             if shape.geometry.kind == "mesh" and filename:
                 try:
                     path = resolver.resolve_uri(filename, base_dir)
+                except RemoteResource:
+                    raise RemoteResource(f"collision mesh '{filename}' of link '{link.name}' "
+                                         "is fetched over the network, which the collision "
+                                         "check does not do; --allow-collisions skips the "
+                                         "check") from None
                 except PackageNotFound as exc:  # say what needs it, and how to do without
                     raise PackageNotFound(f"collision mesh '{filename}' of link '{link.name}': "
                                           f"{exc}; or --allow-collisions skips the collision "
