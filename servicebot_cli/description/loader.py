@@ -173,12 +173,13 @@ _LOADED: dict[tuple[object, ...], RobotDescription] = {}
 
 
 def load(source: RobotSource, *, build_model: bool = True,
-         unled_mimics: bool = False) -> RobotDescription:
+         as_written: bool = False) -> RobotDescription:
     """The validated description for ``source``, loaded once per process.
 
     Without ``build_model`` the description is checked up to Pinocchio, which the caller
-    then builds (``simulate`` in a forked process meanwhile). With ``unled_mimics`` a
-    ``<mimic>`` that names no joint is let through (``inspect`` shows such files).
+    then builds (``simulate`` in a forked process meanwhile). With ``as_written``, joints
+    no command could move (a ``<mimic>`` of no joint, limits in the wrong order) are let
+    through: ``inspect`` shows such files.
 
     Raises:
         DescriptionError: Anything :func:`read_description` raises, a root that is not a
@@ -198,8 +199,8 @@ def load(source: RobotSource, *, build_model: bool = True,
         _refuse_second_parents(robot)
         _LOADED[key] = robot
     robot = _LOADED[key]
-    if not unled_mimics:
-        robot.refuse_unled_mimics()
+    if not as_written:
+        robot.refuse_unmovable_joints()
     if build_model:
         robot.model  # noqa: B018 -- building the model is the validation (once: it is kept)
     return robot

@@ -254,8 +254,13 @@ class RobotDescription:
                     f"turns or slides along no direction; give its axis "
                     f"{check_hint(self.display, self.xacro_args)}")
 
-    def refuse_unled_mimics(self) -> None:
-        """A ``<mimic>`` of itself or of a joint that is not there (check's SB210, SB209).
+    def refuse_unmovable_joints(self) -> None:
+        """Refuse joints no command can move, each in one line that names it.
+
+        Limits in the wrong order (check's SB203), and a ``<mimic>`` of itself or of a joint
+        that is not there (SB210, SB209). No position lies between a lower limit above the
+        upper one (pybullet reads them as no limit, every other tool as a range nothing
+        satisfies).
 
         No joint drives the follower: MoveIt refuses the robot, yourdfpy sets it to the
         offset, Pinocchio and this tool's kinematics would move it freely. The commands
@@ -266,6 +271,15 @@ class RobotDescription:
         Raises:
             DescriptionError: Naming the joint.
         """
+        for joint in self.joints:
+            limits = joint.limits
+            if joint.type in ("revolute", "prismatic") and limits is not None \
+                    and limits.lower is not None and limits.upper is not None \
+                    and limits.lower > limits.upper:
+                raise DescriptionError(
+                    f"{self.display}: joint '{joint.name}' has lower limit {limits.lower:g} "
+                    f"above its upper limit {limits.upper:g}: no position lies between them; "
+                    f"write them in order {check_hint(self.display, self.xacro_args)}")
         names = {joint.name for joint in self.joints}
         for joint in self.joints:
             if joint.mimic is None or (joint.mimic.joint in names

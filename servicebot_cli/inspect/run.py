@@ -105,9 +105,9 @@ def run(request: InspectRequest | DiffRequest) -> InspectResult | DiffResult:
     from servicebot_cli.description.loader import load
 
     if isinstance(request, DiffRequest):  # a mimic of no joint is shown as written
-        return compare(_tree(load(request.a, unled_mimics=True)),
-                       _tree(load(request.b, unled_mimics=True)))
-    robot = _tree(load(request.source, unled_mimics=True))
+        return compare(_tree(load(request.a, as_written=True)),
+                       _tree(load(request.b, as_written=True)))
+    robot = _tree(load(request.source, as_written=True))
     values, held = _checked(robot, request.joints, request.clamp)
     resolver = request.source.resolver()
     picture = None

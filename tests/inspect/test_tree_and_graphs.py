@@ -171,7 +171,7 @@ def test_a_deep_humanoids_tree_keeps_every_link_name_whole(run):
     assert result.exit_code == 0, result.stderr
     lines = result.stdout.split("Kinematic tree")[1].splitlines()
     assert max(map(len, lines)) <= 100  # the table's, below the file's path
-    names = {link.name for link in load(RobotSource.of(path), unled_mimics=True).links}
+    names = {link.name for link in load(RobotSource.of(path), as_written=True).links}
     width = len(next(line for line in lines if line.startswith("---")).split()[0])
     shown = {line[:width].split("─ ")[-1].strip() for line in lines}
     assert names <= shown, sorted(names - shown)[:5]
