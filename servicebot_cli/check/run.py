@@ -167,6 +167,8 @@ def _checked(sources: list[tuple[RobotSource, bool]], targets: UrdfTargets,
         outcomes: Iterable[workers.Outcome] = workers.check_in_workers(
             sources, settings, targets.packages, jobs, targets.mesh_cache)
     else:
+        if len(sources) > 1:
+            workers.collect_garbage_rarely()
         env = workers.env_for(targets.packages, settings, targets.mesh_cache)
         env.model_ahead = (len(sources) == 1 and targets.jobs != 1  # --jobs 1: one process
                            and model_ahead.worth_forking())

@@ -9,6 +9,7 @@ reports come back to the parent, which renders them as a serial run does.
 
 from __future__ import annotations
 
+import gc
 import itertools
 import os
 import signal
@@ -71,6 +72,7 @@ def _start(settings: Settings, packages: tuple[tuple[str, str], ...],
     for ending in ENDING_SIGNALS:  # not the parent's handlers: it stops them with SIGTERM
         signal.signal(ending, signal.SIG_DFL)
     _keep_freed_memory()
+    collect_garbage_rarely()
     _Worker.settings = settings
     _Worker.env = env_for(packages, settings, mesh_cache)
 
@@ -91,6 +93,18 @@ def _keep_freed_memory() -> None:
         return
     mallopt(_M_TRIM_THRESHOLD, 1 << 30)  # give back only beyond 1 GB free at the top
     mallopt(_M_TOP_PAD, 1 << 28)  # and grow the heap 256 MB at a time
+
+
+def collect_garbage_rarely() -> None:
+    """Have the cycle collector look at fewer objects, less often, for a run of many files.
+
+    Checking a file makes tens of thousands of short-lived objects (elements, findings),
+    freed by reference counting; the collector's default (every 700 allocations, through
+    every object the imports made) spent 6 to 8 % of a run's CPU finding no cycle. The
+    objects alive now (modules, the catalogue) are frozen out of its sight.
+    """
+    gc.freeze()
+    gc.set_threshold(50_000, 20, 20)
 
 
 def env_for(packages: tuple[tuple[str, str], ...], settings: Settings,

@@ -35,3 +35,15 @@ def test_a_big_directory_is_cut_into_runs_of_at_most_eight():
     paths = [Path(f"/d/{i:03}.urdf") for i in range(40)]
     cut = list(runs(_sources(paths), jobs=2))
     assert [len(run) for run in cut] == [5] * 8
+
+
+def test_a_run_of_many_files_collects_garbage_rarely():
+    """The cycle collector's default spent 6 to 8 % of a corpus run finding no cycle."""
+    import subprocess
+    import sys
+
+    probe = ("import gc; from servicebot_cli.check.workers import collect_garbage_rarely; "
+             "collect_garbage_rarely(); print(gc.get_threshold(), gc.get_freeze_count() > 0)")
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
+                         check=True).stdout
+    assert out.split() == ["(50000,", "20,", "20)", "True"]
