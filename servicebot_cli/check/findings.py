@@ -35,11 +35,9 @@ class Finding:
         line: 1-based line, 0 when the problem is the whole file.
         column: 1-based column, 0 when unknown.
         fix: What to do instead, with the values to use where there are some.
-        via: ``file:line:column`` of the xacro macro call that produced the element (the
-            outermost, in the file the user named, where macro calls nest).
-        calls: Every macro call that produced the element, ``file:line:column``, from the
-            innermost (the call in another macro's body that passed the values) out to
-            ``via``; empty without xacro macros.
+        calls: Every xacro macro call that produced the element, ``file:line:column``, from
+            the innermost (the call in another macro's body that passed the values) out to
+            :attr:`via`; empty without xacro macros.
     """
 
     code: str
@@ -49,8 +47,12 @@ class Finding:
     line: int = 0
     column: int = 0
     fix: str | None = None
-    via: str | None = None
     calls: tuple[str, ...] = ()
+
+    @property
+    def via(self) -> str | None:
+        """The outermost macro call that produced the element (in the file the user named)."""
+        return self.calls[-1] if self.calls else None
 
     def location(self) -> str:
         """``file:line:column`` (shorter when line or column is unknown)."""

@@ -171,14 +171,13 @@ def _moving_masses(robot: RobotDescription) -> Iterator[Issue]:
     """SB303-SB305: what a moving joint moves must have mass; fixed frames may be massless."""
     by_name = {link.name: link for link in robot.links}
     below: dict[str, list[str]] = {}
+    fixed_below: dict[str, list[str]] = {}  # the links fixed to each: lumped with it
     for joint in robot.joints:
         if joint.parent in by_name and joint.child in by_name:
             below.setdefault(joint.parent or "", []).append(joint.child or "")
+            if joint.type == "fixed":
+                fixed_below.setdefault(joint.parent or "", []).append(joint.child or "")
     carried = _subtree_masses(by_name, below)
-    fixed_below: dict[str, list[str]] = {}
-    for joint in robot.joints:
-        if joint.type == "fixed" and joint.parent in by_name and joint.child in by_name:
-            fixed_below.setdefault(joint.parent or "", []).append(joint.child or "")
     simulator = simulated_by(robot)
     for joint in robot.joints:
         link = by_name.get(joint.child or "")

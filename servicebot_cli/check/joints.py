@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.simulators import simulated_by
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
-from servicebot_cli.description.elements import JOINT_TYPES, parse_float
+from servicebot_cli.description.elements import JOINT_TYPES, ONE_AXIS_TYPES, parse_float
 
 if TYPE_CHECKING:
     from servicebot_cli.description.elements import Joint
@@ -51,7 +51,7 @@ def _dynamics(joint: Joint) -> Iterator[Issue]:
     Only where a joint moves along one axis: Pinocchio reads no other joint's dynamics, nor
     does anything else a fixed joint's.
     """
-    if joint.type not in ("revolute", "continuous", "prismatic"):
+    if joint.type not in ONE_AXIS_TYPES:
         return
     element = joint.element.find("dynamics") if joint.element is not None else None
     if element is None:

@@ -222,7 +222,7 @@ def _place(robot: RobotDescription | None, issue: Issue, settings: Settings) -> 
         file, line, column = "", 0, 0
     severity = settings.severity.get(issue.code) or issue.severity or RULES[issue.code].severity
     return Finding(issue.code, severity, issue.message, file, line, column,
-                   issue.fix or RULES[issue.code].fix, calls[-1] if calls else None, calls)
+                   issue.fix or RULES[issue.code].fix, calls)
 
 
 def _report(file: str, findings: list[Finding],

@@ -15,10 +15,8 @@ from collections.abc import Iterator
 
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.urdf_schema import EXTENSIONS, SPEC, TOP_LEVEL
+from servicebot_cli.check.values import NON_FINITE, NUMBER  # ASCII digits only, as urdfdom
 
-# ASCII digits only: Python's float() reads "０.１" and Arabic-Indic digits, urdfdom does not
-_NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
-_NON_FINITE = re.compile(r"[+-]?(?:nan|inf|infinity)", re.IGNORECASE)
 _VERSION = re.compile(r"(\d+)\.(\d+)")
 _C_SPACES = " \t\n\r\f\v"  # what istringstream skips; not NBSP or other Unicode blanks
 MAX_LINKS = 20_000
@@ -160,7 +158,7 @@ def _attributes(element: ET.Element, allowed: dict[str, int],
 def _plain(value: str, count: int) -> bool:
     """Whether ``value`` is ``count`` finite numbers as urdfdom reads them."""
     parts = [value.lstrip(_C_SPACES)] if count == 1 else value.split()
-    return len(parts) == count and all(_NUMBER.fullmatch(part) is not None
+    return len(parts) == count and all(NUMBER.fullmatch(part) is not None
                                        and math.isfinite(float(part)) for part in parts)
 
 
@@ -179,9 +177,9 @@ def _number(element: ET.Element, key: str, value: str, count: int) -> Iterator[I
         yield Issue("SB013", f"{where}: expected {count} numbers, found {len(parts)}", element)
         return
     for part in parts:
-        if _NON_FINITE.fullmatch(part.strip()):
+        if NON_FINITE.fullmatch(part.strip()):
             yield Issue("SB014", f"{where}: '{part.strip()}' is not a finite number", element)
-        elif not _NUMBER.fullmatch(part):
+        elif not NUMBER.fullmatch(part):
             yield Issue("SB013", f"{where}: '{part}' is not a number", element,
                         fix="write a plain decimal number without spaces or units")
         elif not math.isfinite(float(part)):

@@ -14,10 +14,10 @@ from collections.abc import Iterable
 
 from servicebot_cli.description.elements import Geometry, Pose, Shape
 
-# a decimal number as C's readers take it: ASCII digits (Python's float() also reads "٣"), and
-# the words nan and inf, which some read and some do not
-_DECIMAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?"
-                      r"|[+-]?(?:nan|inf|infinity)", re.IGNORECASE)
+# a decimal number as C's readers take it: ASCII digits (Python's float() also reads "٣");
+# and the words nan and inf, which some read and some do not
+NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
+NON_FINITE = re.compile(r"[+-]?(?:nan|inf|infinity)", re.IGNORECASE)
 _TEXT_ATTRIBUTES = frozenset({"name", "filename", "type", "link", "joint", "reference"})
 LARGEST_LENGTH_M = 1e6
 """Lengths and offsets beyond this [m] are not computed with (no robot is 1000 km wide)."""
@@ -29,7 +29,7 @@ LARGEST_INERTIA = 1e12
 
 def is_number(text: str) -> bool:
     """Whether ``text`` is one decimal number (ASCII digits; nan and inf count)."""
-    return _DECIMAL.fullmatch(text) is not None
+    return NUMBER.fullmatch(text) is not None or NON_FINITE.fullmatch(text) is not None
 
 
 def finite(values: Iterable[float | None]) -> bool:

@@ -118,23 +118,11 @@ def read_input_bytes(path: Path, display: str, *, kind: str,
     Raises:
         error: Missing, a directory, unreadable, or over ``max_bytes``.
     """
-    with _reading(display, kind, error):
-        # opened first, then asked what it is: one system call where a stat before each
-        # step took three (a check of a thousand files opens each of them)
-        descriptor = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_CLOEXEC)
-        try:
-            mode = os.fstat(descriptor)
-            if stat.S_ISDIR(mode.st_mode):
-                raise IsADirectoryError
-            if max_bytes is not None and stat.S_ISREG(mode.st_mode) and mode.st_size > max_bytes:
-                raise _too_large(display, mode.st_size, max_bytes, error)
-            os.set_blocking(descriptor, True)  # a named pipe without a writer reads as empty
-            handle = os.fdopen(descriptor, "rb")
-        except BaseException:
-            os.close(descriptor)
-            raise
-        with handle:
-            data = handle.read() if max_bytes is None else handle.read(max_bytes + 1)
+    with _reading(display, kind, error), open_binary(path) as handle:
+        mode = os.fstat(handle.fileno())  # a device or a pipe has no size: read to the limit
+        if max_bytes is not None and stat.S_ISREG(mode.st_mode) and mode.st_size > max_bytes:
+            raise _too_large(display, mode.st_size, max_bytes, error)
+        data = handle.read() if max_bytes is None else handle.read(max_bytes + 1)
         if max_bytes is not None and len(data) > max_bytes:
             raise _too_large(display, None, max_bytes, error)
         return data
@@ -148,11 +136,17 @@ def open_binary(path: str | os.PathLike[str]) -> BinaryIO:
     opened. It is opened without waiting for a writer, then read as usual: with none, it
     ends at once.
     """
-    if not stat.S_ISFIFO(os.stat(path).st_mode):  # the name as given: errors quote it so
-        return open(path, "rb")  # noqa: SIM115 (the caller closes it)
-    descriptor = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
-    os.set_blocking(descriptor, True)
-    return os.fdopen(descriptor, "rb")
+    # opened first, then asked what it is: a check of a thousand files opens each of them,
+    # and a stat before each step took three system calls where one does
+    descriptor = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_CLOEXEC)
+    try:
+        if stat.S_ISDIR(os.fstat(descriptor).st_mode):
+            raise IsADirectoryError(errno.EISDIR, os.strerror(errno.EISDIR), os.fspath(path))
+        os.set_blocking(descriptor, True)  # a named pipe without a writer reads as empty
+        return os.fdopen(descriptor, "rb")
+    except BaseException:
+        os.close(descriptor)
+        raise
 
 
 def _too_large(display: str, size: int | None, max_bytes: int,

@@ -18,6 +18,8 @@ ZERO3: Vec3 = (0.0, 0.0, 0.0)
 
 MOVABLE_TYPES = ("revolute", "continuous", "prismatic", "planar", "floating")
 JOINT_TYPES = ("fixed", *MOVABLE_TYPES)
+ONE_AXIS_TYPES = ("revolute", "continuous", "prismatic")
+"""Joints that move along one axis: one value each, and the dynamics Pinocchio reads."""
 
 
 def parse_float(text: str | None) -> float | None:

@@ -18,6 +18,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.common.errors import JointNotFound, OutOfLimits
+from servicebot_cli.description.elements import ONE_AXIS_TYPES
 
 if TYPE_CHECKING:
     import pinocchio as pin
@@ -68,7 +69,7 @@ class JointSpace:
         """
         names, types, lower, upper, velocity, idx_q, idx_v = [], [], [], [], [], [], []
         for joint in joints:
-            if joint.type not in ("revolute", "continuous", "prismatic"):
+            if joint.type not in ONE_AXIS_TYPES:
                 continue
             if not model.existJointName(joint.name):
                 continue

@@ -48,9 +48,6 @@ class LinkNotFound(NameNotFound):
     kind = "link"
 
 
-_DYNAMICS_READ = ("revolute", "continuous", "prismatic")  # Pinocchio's one-axis joints
-
-
 @dataclass(frozen=True)
 class FixedFrame:
     """A link attached by a fixed joint (Pinocchio folds these into frames).
@@ -305,7 +302,7 @@ class RobotDescription:
             DescriptionError: Naming the joint.
         """
         for joint in self.joints:
-            if joint.type not in _DYNAMICS_READ:
+            if joint.type not in el.ONE_AXIS_TYPES:
                 continue
             dynamics = joint.element.find("dynamics") if joint.element is not None else None
             friction = el.parse_float(dynamics.get("friction")) if dynamics is not None else None

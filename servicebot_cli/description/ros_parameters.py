@@ -72,10 +72,9 @@ def controller_types(nodes: dict[str, dict[str, Any]]) -> dict[str, str]:
     """Each controller's ``type`` by name.
 
     Those ``controller_manager`` declares, nested or as a dotted ``NAME.type`` key, come
-    first (in its order), then those that declare
-    only their own (in file order). Where both say, the controller's own word wins, as the
-    spawner (``--param-file``) sets it on the controller manager over what that held; so
-    ``check controllers`` reads it.
+    first (in its order), then those that declare only their own (in file order). Where both
+    say, the controller's own word wins, as the spawner (``--param-file``) sets it on the
+    controller manager over what that held; so ``check controllers`` reads it.
     """
     manager = nodes.get("controller_manager", {})
     types: dict[str, str] = {}

@@ -21,6 +21,7 @@ from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.description.model import new_data
 from servicebot_cli.kinematics.chain_mimic import coupling
 from servicebot_cli.kinematics.frames import frame_id, moving_joints
+from servicebot_cli.kinematics.sampling import sampling_bounds
 
 if TYPE_CHECKING:
     import pinocchio as pin
@@ -32,9 +33,6 @@ FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.intp]
 
 _ON_AXIS_M = 1e-9  # a joint this close to the previous joint's axis does not move with it
-
-
-_START_SPAN = 100.0  # rad or m: the furthest from zero a random start is drawn
 
 
 class NothingMoves(ServicebotError):
@@ -193,12 +191,7 @@ class Chain:
         """
         import pinocchio as pin
 
-        # limits of +-1e308 bound no start worth trying (their span overflows): starts are
-        # drawn within _START_SPAN of zero where the limits allow more
-        lower = np.maximum(self.lower, -_START_SPAN)
-        upper = np.minimum(self.upper, _START_SPAN)
-        lower, upper = np.where(lower <= upper, lower, self.lower), np.where(
-            lower <= upper, upper, self.upper)
+        lower, upper = sampling_bounds(self.lower, self.upper)  # not +-1e308
         if self.vector_space:
             return lower + (upper - lower) * rng.random(int(self.model.nq))
         q: FloatArray = pin.neutral(self.model)

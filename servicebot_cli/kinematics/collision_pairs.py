@@ -16,6 +16,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from servicebot_cli.kinematics.sampling import sampling_bounds
+
 if TYPE_CHECKING:
     import pinocchio as pin
 
@@ -24,7 +26,6 @@ FloatArray = npt.NDArray[np.float64]
 SAMPLES = 200
 """Random configurations that decide which pairs always touch."""
 _SAMPLE_SEED = 0
-_SAMPLE_SPAN = 100.0  # rad or m: a sampled joint is within this of zero (no robot moves further)
 
 
 def keep_moved_pairs(model: pin.Model, geometry: pin.GeometryModel,
@@ -78,10 +79,7 @@ def sample_configurations(model: pin.Model, count: int,
             if joint.nq == 1:
                 lo, hi = model.lowerPositionLimit[i], model.upperPositionLimit[i]
                 if math.isfinite(lo) and math.isfinite(hi):
-                    # limits of +-1e308 bound nothing a sample can use (numpy refuses the
-                    # span): a joint is sampled within _SAMPLE_SPAN of zero at most
-                    low, high = max(lo, -_SAMPLE_SPAN), min(hi, _SAMPLE_SPAN)
-                    q[i] = rng.uniform(low, high) if low <= high else rng.uniform(lo, hi)
+                    q[i] = rng.uniform(*sampling_bounds(lo, hi))  # not +-1e308
                 else:
                     q[i] = rng.uniform(-math.pi, math.pi)
             elif joint.nq == 2 and joint.nv == 1:  # continuous: cos, sin

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.description.elements import Joint
+from servicebot_cli.description.elements import ONE_AXIS_TYPES, Joint
 from servicebot_cli.kinematics.transforms import pose_matrix
 
 if TYPE_CHECKING:
@@ -29,7 +29,7 @@ def joint_motion(joint: Joint, value: float) -> FloatArray:
     Rotation by angle t about unit axis k (Rodrigues): ``I + sin t K + (1 - cos t) K^2``.
     """
     motion = np.eye(4)
-    if value == 0 or joint.type not in ("revolute", "continuous", "prismatic"):
+    if value == 0 or joint.type not in ONE_AXIS_TYPES:
         return motion
     axis = np.array(joint.axis, dtype=float)
     norm = np.linalg.norm(axis)

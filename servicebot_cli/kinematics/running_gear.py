@@ -14,14 +14,13 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from servicebot_cli.description.elements import Joint
+from servicebot_cli.description.elements import ONE_AXIS_TYPES, Joint
 from servicebot_cli.kinematics.link_poses import link_transforms
 from servicebot_cli.kinematics.wheel_joints import BALL_CASTER, PARALLEL, as_wheel, turns_freely
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
-_ONE_AXIS = ("revolute", "continuous", "prismatic")
 
 
 def chassis_joints(robot: RobotDescription, wheels: Sequence[str] = ()) -> tuple[str, ...]:
@@ -51,7 +50,7 @@ def chassis_joints(robot: RobotDescription, wheels: Sequence[str] = ()) -> tuple
         while above is not None and above.name not in gear:
             if len({side[w] for w in _wheels_below(above, side, children)}) > 1:
                 break  # it carries both sides: the base itself moves
-            if above.type in _ONE_AXIS:
+            if above.type in ONE_AXIS_TYPES:
                 gear.add(above.name)
             above = by_child.get(above.parent)
     return tuple(j.name for j in robot.joints if j.name in gear and j.name not in wheels)

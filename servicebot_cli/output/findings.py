@@ -70,7 +70,7 @@ def _call_lines(finding: Finding) -> Iterator[str]:
 
     A deep nest (a recursive macro) shows its innermost calls, then the outermost one.
     """
-    calls = finding.calls or ((finding.via,) if finding.via else ())
+    calls = finding.calls
     shown = calls if len(calls) <= _MOST_CALLS_SHOWN else calls[:_MOST_CALLS_SHOWN - 1]
     for index, call in enumerate(shown):
         yield f"    {'from' if index == 0 else 'within'} the macro call at {call}"

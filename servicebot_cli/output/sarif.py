@@ -65,9 +65,9 @@ def _result(finding: Finding, index: int, result: CheckResult) -> dict[str, obje
         "message": {"text": text},
         "locations": [{"physicalLocation": location}],
     }
-    calls = finding.calls or ((finding.via,) if finding.via else ())
-    if calls:
-        entry["relatedLocations"] = [_via(call, index) for index, call in enumerate(calls)]
+    if finding.calls:
+        entry["relatedLocations"] = [_via(call, index)
+                                     for index, call in enumerate(finding.calls)]
     return entry
 
 
