@@ -18,6 +18,7 @@ import contextlib
 import io
 import os
 import re
+import sys
 import threading
 import xml.dom
 import xml.dom.minidom
@@ -50,6 +51,10 @@ _REF_KEY = "servicebot-ref"  # minidom user data: a xacro element's index into t
 _ARG_USE_RE = re.compile(r"\$\(arg\s+([A-Za-z_][\w]*)\s*\)")
 _EXPRESSION_RE = re.compile(r"when evaluating expression '(.*)' *$", re.MULTILINE)
 _LOCK = threading.Lock()
+# Python frames one expansion may use. xacro itself runs under Python's default of 1,000 and
+# so expands a recursive macro (a chain of segments, a track) to about 230 levels; the
+# position tracking here costs about twice its frames per level, so 3,000 reaches past that.
+_RECURSION_LIMIT = 3000
 
 
 def _template_hint(filename: object) -> str:
@@ -102,8 +107,9 @@ def expand(
         xacro.all_includes.clear()
         xacro.init_stacks(display)
         try:
-            doc = xacro.parse(None, display)
-            xacro.process_doc(doc, mappings=dict(given))
+            with _recursion_limit(_RECURSION_LIMIT):
+                doc = xacro.parse(None, display)
+                xacro.process_doc(doc, mappings=dict(given))
         except DescriptionError:
             raise
         except Exception as exc:  # xacro raises bare Python errors from expressions, too
@@ -118,6 +124,17 @@ def expand(
         warnings=(_warning_lines(captured.getvalue()) + bare
                   + _unread_args(display, given, tracer)),
     )
+
+
+@contextlib.contextmanager
+def _recursion_limit(frames: int) -> Iterator[None]:
+    """Allow at least ``frames`` Python frames inside the block."""
+    saved = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(saved, frames))
+    try:
+        yield
+    finally:
+        sys.setrecursionlimit(saved)
 
 
 def _unread_args(display: str, given: Mapping[str, str], tracer: _Tracer) -> tuple[str, ...]:

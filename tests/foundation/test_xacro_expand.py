@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -231,3 +233,23 @@ def test_a_failed_eval_names_the_python_error_once(tmp_path, expression, said):
     result = run_servicebot("expand", path)
     line = assert_one_line_error(result, 2, f"r.urdf.xacro:2:3: xacro: {said}")
     assert "<class" not in line and line.count("division by zero") <= 1
+
+
+def test_a_recursive_macro_as_deep_as_xacro_expands_it_is_no_endless_nest(tmp_path):
+    """A segment macro that calls itself until ``i`` reaches 220 (a chain, a track, a cable):
+    ROS xacro expands it; the position tracking once ran out of frames at about 107 levels
+    and called it "nest without end"."""
+    path = tmp_path / "chain.urdf.xacro"
+    path.write_text(
+        '<robot name="chain" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="l0"/>\n'
+        '<xacro:macro name="seg" params="i"><xacro:if value="${i &lt; 220}">\n'
+        '  <link name="l${i+1}"/>\n'
+        '  <joint name="j${i+1}" type="fixed"><parent link="l${i}"/><child link="l${i+1}"/>'
+        '</joint>\n'
+        '  <xacro:seg i="${i+1}"/></xacro:if></xacro:macro>\n<xacro:seg i="0"/></robot>\n')
+    reference = subprocess.run([sys.executable, "-c", "import xacro; xacro.main()", str(path)],
+                               capture_output=True, text=True, check=False)
+    assert reference.returncode == 0 and reference.stdout.count("<joint ") == 220
+    expanded = run_servicebot("expand", path)
+    assert expanded.returncode == 0, expanded.stderr
+    assert expanded.stdout.count("<joint ") == 220
