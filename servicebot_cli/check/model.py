@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 from servicebot_cli.check.findings import Issue
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.common.forked import WorkerEnded
+from servicebot_cli.description.model import vector_with_other_blanks
 
 if TYPE_CHECKING:
     from servicebot_cli.check.model_ahead import ModelAhead
@@ -25,8 +26,17 @@ def check(robot: RobotDescription, ahead: ModelAhead | None = None) -> Iterator[
     """
     refused = _refusal(robot, ahead)
     if refused is not None:
-        text = refused.removeprefix(f"{robot.display}: ")
-        yield Issue("SB701", _HINT.sub("", text), robot.root)
+        text = _HINT.sub("", refused.removeprefix(f"{robot.display}: "))
+        piece = vector_with_other_blanks(text)
+        if piece is None:
+            yield Issue("SB701", text, robot.root)
+            return
+        # the parser here reads a tab in an attribute as a space, as XML says; urdfdom's does not
+        as_read = re.sub(r"\r\n|[\t\n\r]", " ", piece)
+        element = next((element for element in robot.root.iter()
+                        if any(as_read in value for value in element.attrib.values())),
+                       robot.root)
+        yield Issue("SB701", text, element, fix="put spaces between the numbers")
 
 
 def _refusal(robot: RobotDescription, ahead: ModelAhead | None) -> str | None:

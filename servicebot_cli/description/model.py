@@ -71,6 +71,33 @@ def _shell_word(word: str) -> str:
     return '"' + re.sub(r'(["\\$`])', r"\\\1", word) + '"'
 
 
+_URDFDOM_ERROR = re.compile(r"Error:(.*?)(?:\n\s+at line \d|(?=\nError:)|\Z)", re.DOTALL)
+# urdfdom splits a vector at spaces alone; a tab or line break stays inside a piece
+_VECTOR_PIECE = re.compile(r"Unable to parse component \[(.*?[\t\n\r].*?)\] to a double "
+                           r"\(while parsing a vector value\)", re.DOTALL)
+
+
+def vector_with_other_blanks(message: str) -> str | None:
+    """The vector text, as written, of a refusal :func:`build_model` made for a tab in it."""
+    found = _SHOWN_PIECE.search(message)
+    if found is None:
+        return None
+    return found[1].replace("\\t", "\t").replace("\\r", "\r").replace("\\n", "\n")
+
+_SPACES_ONLY = "urdfdom separates the numbers of xyz, rpy, scale and axis by spaces only"
+_SHOWN_PIECE = re.compile(r"a vector value holds a [a-z ]+ \('(.*?)'\): " + _SPACES_ONLY)
+
+
+def _spaces_only(match: re.Match[str]) -> str:
+    """The refusal of ``0<tab>0<tab>0.3`` by urdfdom, with the tab named and shown."""
+    piece = match[1]
+    shown = piece.replace("\t", "\\t").replace("\r", "\\r").replace("\n", "\\n")
+    kinds = [name for char, name in (("\t", "tab"), ("\n", "line break"), ("\r", "line break"))
+             if char in piece]
+    return (f"a vector value holds a {' and a '.join(dict.fromkeys(kinds))} ('{shown}'): "
+            f"{_SPACES_ONLY}")
+
+
 def build_model(xml_text: str, display: str, base: str = "fixed",
                 xacro_args: Sequence[tuple[str, str]] = ()) -> pin.Model:
     """A Pinocchio model of the URDF in ``xml_text``.
@@ -102,8 +129,10 @@ def build_model(xml_text: str, display: str, base: str = "fixed",
             return pin.buildModelFromXML(xml_text, root_joint())
         except (ValueError, RuntimeError) as exc:
             failure: Exception = exc
-    reasons = [line.split("Error:", 1)[1].strip() for line in noise if "Error:" in line]
+    # an error may span lines: urdfdom quotes a vector with its line break
+    reasons = [found.strip() for found in _URDFDOM_ERROR.findall("\n".join(noise))]
     reason = reasons[0] if reasons else " ".join(str(failure).split())
+    reason = _VECTOR_PIECE.sub(_spaces_only, reason)
     raise DescriptionError(
         f"{display}: not a valid URDF: {reason} {check_hint(display, xacro_args)}")
 

@@ -50,3 +50,27 @@ def test_a_unicode_blank_before_a_number_is_refused_as_urdfdom_refuses_it(run, t
     assert check_urdf_drops(path)
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB01")
     assert [f["code"] for f in findings(result.stdout)] == ["SB013"]
+
+
+@pytest.mark.parametrize(("xyz", "shown", "kind"), [
+    ("0\t0\t0.3", r"0\t0\t0.3", "tab"),
+    ("0 0\n0.3", r"0\n0.3", "line break"),
+])
+def test_a_tab_inside_a_vector_is_named_at_its_element(run, tmp_path, xyz, shown, kind):
+    """urdfdom splits ``xyz`` at spaces only and refuses ``0<tab>0<tab>0.3``; the XML parser
+    here reads the tab as a space, so the refusal pointed at <robot> and printed a valid-looking
+    ``[0 0 0.3]``."""
+    path = tmp_path / "robot.urdf"
+    path.write_text('<robot name="r">\n  <link name="a"/>\n  <link name="b"/>\n'
+                    '  <joint name="j" type="fixed"><parent link="a"/><child link="b"/>\n'
+                    f'    <origin xyz="{xyz}"/>\n  </joint>\n</robot>\n')
+    assert check_urdf_drops(path)
+    result = run("check", path, "--format", "json", "--isolated")
+    (found,) = findings(result.stdout)
+    assert (found["code"], found["line"]) == ("SB701", 5)
+    assert found["message"] == (f"not a valid URDF: a vector value holds a {kind} ('{shown}'): "
+                                "urdfdom separates the numbers of xyz, rpy, scale and axis by "
+                                "spaces only")
+    assert found["fix"] == "put spaces between the numbers"
+    shown_by_fk = run("fk", path)
+    assert shown_by_fk.exit_code == 2 and f"holds a {kind} ('{shown}')" in shown_by_fk.stderr
