@@ -275,7 +275,9 @@ URDF_RULES: tuple[Rule, ...] = (
          "Fix the path."),
     Rule("SB402", "mesh-unloadable", E, "A mesh file cannot be loaded",
          "The file exists but is not a mesh that trimesh (or the built-in STL, OBJ and "
-         "COLLADA readers) can read.",
+         "COLLADA readers) can read, or it is an OBJ that Assimp, the reader of RViz, Gazebo, "
+         "MoveIt and Pinocchio, reads wrong: a vertex number without a digit before its "
+         "point ('v .1 0 0') is not counted, and the vertex is dropped.",
          "Export the mesh again as STL, OBJ or DAE."),
     Rule("SB403", "mesh-empty", E, "A mesh with no triangles", "Nothing would be drawn or collide.",
          "Export the mesh again."),

@@ -21,7 +21,7 @@ import numpy as np
 
 from servicebot_cli.check.meshes import MassProperties, MeshError, MeshInfo
 
-_VERSION = 1  # bumped when what a summary holds, or how it is computed, changes
+_VERSION = 2  # bumped when what a summary holds, or how it is computed, changes
 
 
 def default_directory() -> Path:
