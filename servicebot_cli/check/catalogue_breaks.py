@@ -28,6 +28,8 @@ BREAKS: dict[str, str] = {
              "RViz and Pinocchio's collision model cannot open it)",
     "SB013": _URDFDOM + _OR_DROPS,
     "SB014": _URDFDOM + "; Pinocchio and MuJoCo would compute with NaN",
+    "SB019": "RViz and Gazebo hold poses in single precision: the link's place becomes "
+             "infinity, and every pose computed from it after a rotation is NaN",
     "SB015": "consumers take minutes or run out of memory on such a file; servicebot refuses it",
     "SB016": _URDFDOM,
     "SB101": _URDFDOM,

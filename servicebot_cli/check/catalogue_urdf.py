@@ -80,6 +80,11 @@ URDF_RULES: tuple[Rule, ...] = (
          "nan, inf and numbers too large for a double make every computation that touches "
          "them meaningless; urdfdom refuses them.",
          "Write a finite number."),
+    Rule("SB019", "far-origin", E, "An origin farther than any robot reaches",
+         "An <origin xyz> beyond 1e6 m (1,000 km) is a typo or a wrong unit; servicebot's "
+         "fk, ik and simulate refuse it. Past 3.4e38 m, where single precision ends, it is "
+         "an error; nearer, a warning.",
+         "Write the origin in metres."),
     Rule("SB015", "too-large", E, "The file is over the size or complexity limits",
          "Descriptions over 32 MB, with more than a million elements, nested over 256 deep "
          "or with more than 20000 links are refused at once, instead of a build that takes "

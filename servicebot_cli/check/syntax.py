@@ -16,6 +16,7 @@ from collections.abc import Iterator
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.urdf_schema import EXTENSIONS, SPEC, TOP_LEVEL
 from servicebot_cli.check.values import NON_FINITE, NUMBER  # ASCII digits only, as urdfdom
+from servicebot_cli.description.elements import FARTHEST_M
 
 _VERSION = re.compile(r"(\d+)\.(\d+)")
 _C_SPACES = " \t\n\r\f\v"  # what istringstream skips; not NBSP or other Unicode blanks
@@ -87,9 +88,30 @@ def _element_tree(top: ET.Element) -> Iterator[Issue]:
                 yield Issue("SB012", f"<{element.tag}>{_named(element)} has no <{needed}>",
                             element, fix=f"add a <{needed}> element")
         yield from _empty_reference(element)
+        if element.tag == "origin":
+            yield from _far_origin(element)
         if element.tag == "dynamics" and not element.attrib.keys() & {"damping", "friction"}:
             yield Issue("SB012", "<dynamics> has neither damping nor friction", element,
                         fix="add damping=\"...\" or friction=\"...\", or remove <dynamics>")
+
+
+_FLOAT32_MAX = 3.4028234663852886e38  # past it, single-precision renderers hold infinity
+
+
+def _far_origin(origin: ET.Element) -> Iterator[Issue]:
+    """SB019: an ``<origin xyz>`` beyond :data:`FARTHEST_M`, plain numbers otherwise."""
+    value = origin.get("xyz")
+    if value is None or not _plain(value, 3):
+        return  # SB013/SB014 say what is wrong with it
+    offset = max(abs(float(part)) for part in value.split())
+    if offset <= FARTHEST_M:
+        return
+    past_float32 = offset > _FLOAT32_MAX
+    yield Issue("SB019", f"<origin xyz=\"{value}\"> is {offset:g} m from its frame, beyond the "
+                f"{FARTHEST_M:g} m of any robot"
+                + (": RViz and Gazebo, which draw in single precision, get infinity"
+                   if past_float32 else ""), origin, fix="write it in metres",
+                severity=None if past_float32 else Severity.WARNING)
 
 
 def _read_children(element: ET.Element) -> list[ET.Element]:

@@ -44,12 +44,21 @@ def parse_vec3(text: str | None, default: Vec3 | None = ZERO3) -> Vec3 | None:
     return (x, y, z)  # type: ignore[return-value]
 
 
+FARTHEST_M = 1e6
+"""Origins and sizes beyond this [m] are no robot's: a typo or a wrong unit."""
+
+
 @dataclass(frozen=True)
 class Pose:
     """An ``<origin>``: translation [m] and roll-pitch-yaw [rad] (fixed axes X, Y, Z)."""
 
     xyz: Vec3 = ZERO3
     rpy: Vec3 = ZERO3
+
+    @property
+    def offset_m(self) -> float:
+        """The largest of ``|x|``, ``|y|``, ``|z|``."""
+        return max(abs(self.xyz[0]), abs(self.xyz[1]), abs(self.xyz[2]))
 
     @classmethod
     def of(cls, element: ET.Element | None) -> Pose:

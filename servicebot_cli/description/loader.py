@@ -178,8 +178,8 @@ def load(source: RobotSource, *, build_model: bool = True,
 
     Without ``build_model`` the description is checked up to Pinocchio, which the caller
     then builds (``simulate`` in a forked process meanwhile). With ``as_written``, joints
-    no command could move (a ``<mimic>`` of no joint, limits in the wrong order) are let
-    through: ``inspect`` shows such files.
+    no command could move (a ``<mimic>`` of no joint, limits in the wrong order) and origins
+    no robot has (1e308 m) are let through: ``inspect`` shows such files.
 
     Raises:
         DescriptionError: Anything :func:`read_description` raises, a root that is not a
@@ -200,6 +200,7 @@ def load(source: RobotSource, *, build_model: bool = True,
         _LOADED[key] = robot
     robot = _LOADED[key]
     if not as_written:
+        robot.refuse_far_origins()
         robot.refuse_unmovable_joints()
     if build_model:
         robot.model  # noqa: B018 -- building the model is the validation (once: it is kept)

@@ -251,6 +251,30 @@ class RobotDescription:
                     f"turns or slides along no direction; give its axis "
                     f"{check_hint(self.display, self.xacro_args)}")
 
+    def refuse_far_origins(self) -> None:
+        """Refuse an ``<origin>`` farther than :data:`~.elements.FARTHEST_M` (check's SB217).
+
+        Each pose past it is computed from a number no robot measures, and overflows to
+        infinity once rotated or squared (``1e308``).
+
+        Raises:
+            DescriptionError: Naming the first such joint or link.
+        """
+        places = [(f"joint '{joint.name}'", joint.origin, f"link '{joint.parent}'")
+                  for joint in self.joints]
+        for link in self.links:
+            shapes = [("inertial", link.inertial)] if link.inertial is not None else []
+            shapes += [("collision", shape) for shape in link.collisions]
+            shapes += [("visual", shape) for shape in link.visuals]
+            places += [(f"the {kind} of link '{link.name}'", part.origin, "the link's frame")
+                       for kind, part in shapes]
+        for what, origin, reference in places:
+            if not origin.offset_m <= el.FARTHEST_M:  # NaN too
+                raise DescriptionError(
+                    f"{self.display}: {what} is placed {origin.offset_m:g} m from {reference}, "
+                    f"beyond the {el.FARTHEST_M:g} m of any robot; write its <origin xyz> in "
+                    f"metres {check_hint(self.display, self.xacro_args)}")
+
     def refuse_unmovable_joints(self) -> None:
         """Refuse joints no command can move, each in one line that names it.
 

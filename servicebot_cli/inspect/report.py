@@ -186,10 +186,13 @@ def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> T
     box = t.box_of(robot, posed, meshes)
     arm = [j for j in robot.movable_joints if j.name not in wheels and j.name not in chassis]
     notes.extend(meshes.problems)
+    reach = t.arm_reach(tree, arm, zero)
+    if reach is None and arm:
+        notes.append(t.REACH_UNKNOWN)
     return t.Totals(
         frame=robot.root_link, configuration_rad_or_m=dict(request.configuration),
         dof=t.dof_of(robot, wheels, chassis),
         mass_kg=mass, centre_of_mass_m=centre, bounding_box_m=box,
-        arm=t.arm_reach(tree, arm, zero), drive=t.drive_info(drive) if drive else None,
+        arm=reach, drive=t.drive_info(drive) if drive else None,
         notes=tuple(notes),
     )

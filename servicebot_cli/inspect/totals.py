@@ -24,6 +24,9 @@ from servicebot_cli.kinematics.drive_geometry import DriveGeometry
 CENTRE_UNKNOWN = ("centre of mass not shown: the links' masses and <inertial> origins are too "
                   "large to add up to a finite number")
 """The note for a robot with mass but no finite centre of mass."""
+REACH_UNKNOWN = ("arm reach not shown: its joints' origins are too large to add up to a finite "
+                 "length (check reports them as SB019)")
+"""The note for an arm whose reach overflows."""
 _PARALLEL = 0.999  # |cos| between a segment and a joint axis that counts as "along the axis"
 
 
@@ -150,7 +153,10 @@ def links_of_unknown_mass(robot: RobotDescription) -> list[str]:
 
 def arm_reach(tree: KinematicTree, arm_joints: list[Joint],
               transforms: Mapping[str, FloatArray]) -> ArmReach | None:
-    """The reach of the chain that starts at the first arm joint; None without an arm."""
+    """The reach of the chain that starts at the first arm joint.
+
+    None without an arm, or where the reach is no finite length (:data:`REACH_UNKNOWN`).
+    """
     first = arm_joints[0] if arm_joints else None
     if first is None or first.child is None:
         return None
@@ -163,10 +169,13 @@ def arm_reach(tree: KinematicTree, arm_joints: list[Joint],
     path.reverse()
     points = [transforms[j.child or ""][:3, 3] for j in path]
     start = 0
-    while start < len(path) - 1 and _adds_no_reach(path[start], points, start, transforms):
-        start += 1
-    reach = sum(float(np.linalg.norm(points[i + 1] - points[i]))
-                for i in range(start, len(points) - 1))
+    with np.errstate(all="ignore"):  # an origin of 1e308: inf or nan, refused below
+        while start < len(path) - 1 and _adds_no_reach(path[start], points, start, transforms):
+            start += 1
+        reach = sum(float(np.linalg.norm(points[i + 1] - points[i]))
+                    for i in range(start, len(points) - 1))
+    if not math.isfinite(reach):
+        return None
     return ArmReach(path[start].name, tip, clean(reach))
 
 

@@ -1,0 +1,61 @@
+"""Origins farther than any robot reaches (1e308 m): named by check, refused by the moving
+commands, shown by inspect, and never a library's warning on stderr."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.check.helpers import findings
+from tests.conftest import assert_one_line_error, run_servicebot
+
+ARM = """<robot name="far">
+  <link name="base_link"/>
+  <link name="link1"/>
+  <joint name="j1" type="revolute"><parent link="base_link"/><child link="link1"/>
+    <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+  <link name="tip"/>
+  <joint name="tip_joint" type="fixed"><parent link="link1"/><child link="tip"/>
+    <origin xyz="{x} 0 0" rpy="0 0.5 0"/></joint>
+</robot>
+"""
+
+
+@pytest.mark.parametrize(("x", "severity"), [("1e308", "error"), ("2e7", "warning"),
+                                             ("1e6", None)])
+def test_check_names_an_origin_beyond_any_robot(run, tmp_path, x, severity):
+    path = tmp_path / "arm.urdf"
+    path.write_text(ARM.format(x=x))
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB0")
+    found = findings(result.stdout)
+    if severity is None:
+        assert found == []
+        return
+    (finding,) = found
+    assert (finding["code"], finding["severity"], finding["line"]) == ("SB019", severity, 8)
+    assert finding["message"].startswith(f'<origin xyz="{x} 0 0"> is {float(x):g} m from its '
+                                         "frame, beyond the 1e+06 m of any robot")
+
+
+@pytest.mark.parametrize("command", [
+    ("fk",), ("ik", "--frame", "tip", "--position", "1", "0", "0"),
+    ("simulate", "--headless", "--duration-s", "0.1"),
+])
+def test_moving_commands_refuse_it_in_one_line(tmp_path, command):
+    path = tmp_path / "arm.urdf"
+    path.write_text(ARM.format(x="1e308"))
+    result = run_servicebot(command[0], path, *command[1:], "--out" if command[0] == "simulate"
+                            else "--format", tmp_path / "out" if command[0] == "simulate"
+                            else "text", cwd=tmp_path)
+    assert_one_line_error(result, 2, "joint 'tip_joint' is placed 1e+308 m from link 'link1', "
+                          "beyond the 1e+06 m of any robot; write its <origin xyz> in metres")
+    assert not (tmp_path / "out").exists()
+
+
+def test_inspect_shows_it_without_a_numpy_warning(tmp_path):
+    path = tmp_path / "arm.urdf"
+    path.write_text(ARM.format(x="1e308"))
+    result = run_servicebot("inspect", path, "--section", "totals")
+    assert result.returncode == 0 and result.stderr == ""
+    assert "arm reach not shown: its joints' origins are too large to add up to a finite " \
+        "length" in " ".join(result.stdout.split())
+    assert "inf m" not in result.stdout
