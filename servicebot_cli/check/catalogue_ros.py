@@ -85,11 +85,13 @@ ROS_RULES = (
          "Use the suggested name."),
     Rule("SB603", "wheel-radius", E, "wheel_radius disagrees with the URDF's wheels",
          "diff_drive_controller's odometry and speed scale by the radius; the URDF's wheel "
-         "cylinders imply another value (beyond 1 %).",
+         "cylinders imply another value. Beyond 10 % an error; from 1 to 10 % a warning, "
+         "since teams calibrate odometry to the floor that way.",
          "Use the value the URDF implies, or fix the URDF."),
     Rule("SB604", "wheel-separation", E, "wheel_separation disagrees with the URDF's wheels",
          "Turn rates and odometry scale by the separation of the left and right wheels; the "
-         "URDF's wheel positions imply another value (beyond 1 %).",
+         "URDF's wheel positions imply another value. Beyond 10 % an error; from 1 to 10 % "
+         "a warning, since teams calibrate odometry to the floor that way.",
          "Use the value the URDF implies, or fix the URDF."),
     Rule("SB605", "wheel-side", E, "A left wheel on the right, or a right wheel on the left",
          "The URDF puts the wheel on the other side of the robot (y > 0 is left, REP 103).",

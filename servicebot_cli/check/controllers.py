@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.controller_sections import Sections, controller_types, get
-from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
 
 if TYPE_CHECKING:
@@ -20,6 +20,8 @@ if TYPE_CHECKING:
     from servicebot_cli.kinematics.drive_geometry import DriveGeometry
 
 TOLERANCE = 0.01
+CALIBRATED = 0.10
+"""Within this, a wheel value off the URDF's may be odometry calibrated to the floor: a warning."""
 """Relative difference allowed between the YAML and the URDF's wheel numbers."""
 
 ROS2_CONTROLLERS = frozenset((
@@ -232,10 +234,17 @@ class _Checker:
             effective *= _number(get(params, multiplier)) or 1.0
         # A multiplier calibrates the geometric value to the floor (a skid-steer robot turns
         # as if its wheels were further apart): either may match the URDF's geometry.
-        if all(abs(value - expected) > TOLERANCE * abs(expected) for value in (given, effective)):
-            yield Issue(code, f"{section}: {key} {_stated(given, effective, expected)} "
-                        f"disagrees with the URDF's {expected:.6g} m", where=self.where(node),
-                        fix=f"{key}: {expected:.6g}")
+        off = min(abs(value - expected) for value in (given, effective))
+        if off <= TOLERANCE * abs(expected):
+            return
+        # A few per cent is how teams calibrate odometry to the floor (limo's 0.172 m on its
+        # wheels' 0.175 m); past that, the wrong wheels or the wrong unit.
+        calibrated = off <= CALIBRATED * abs(expected)
+        yield Issue(code, f"{section}: {key} {_stated(given, effective, expected)} "
+                    f"disagrees with the URDF's {expected:.6g} m"
+                    + (" (a calibration to the floor, if on purpose)" if calibrated else ""),
+                    where=self.where(node), fix=f"{key}: {expected:.6g}",
+                    severity=Severity.WARNING if calibrated else None)
 
 
 def _stated(given: float, effective: float, expected: float) -> str:

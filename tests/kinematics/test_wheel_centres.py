@@ -74,11 +74,21 @@ def test_the_track_is_between_the_cylinders(robot):
     assert drive["track_m"] == pytest.approx(left - right, abs=1e-6)
 
 
-@pytest.mark.parametrize(("separation", "exit_code"), [("0.175", 0), ("0.13", 1)])
-def test_controllers_are_held_to_the_wheels_mid_planes(robot, tmp_path, separation, exit_code):
+@pytest.mark.parametrize(("separation", "said"), [
+    ("0.175", None),
+    ("0.172", "warning"),  # the package's own value: odometry calibrated to the floor
+    ("0.19", "warning"),
+    ("0.13", "error"),  # the joints' track: the wrong wheels' centres
+    ("175", "error"),  # millimetres
+])
+def test_controllers_are_held_to_the_wheels_mid_planes(robot, tmp_path, separation, said):
     yaml = tmp_path / "controllers.yaml"
     yaml.write_text(CONTROLLERS.format(separation=separation))
     result = run_servicebot("check", "controllers", yaml, "--urdf", robot, "--isolated")
-    assert result.returncode == exit_code, result.stdout
-    if exit_code:
-        assert "disagrees with the URDF's 0.175 m" in result.stdout
+    assert result.returncode == (1 if said == "error" else 0), result.stdout
+    if said is None:
+        assert "SB604" not in result.stdout
+        return
+    assert f"{said} SB604 [wheel-separation] diff_drive_controller: wheel_separation " \
+        f"{float(separation):g} m disagrees with the URDF's 0.175 m" in result.stdout
+    assert ("a calibration to the floor, if on purpose" in result.stdout) is (said == "warning")
