@@ -40,9 +40,10 @@ class SweepProgress:
             return
         self.last_draw = now
         line = self.line(now)
-        self.stream.write("\r" + line.ljust(self.width))
+        padded = line.ljust(self.width)
+        self.width = max(self.width, len(line))  # before the write: close() after a signal
+        self.stream.write("\r" + padded)  # right after it must erase all of it
         self.stream.flush()
-        self.width = max(self.width, len(line))
 
     def line(self, now: float) -> str:
         """The bar as text at time ``now``."""

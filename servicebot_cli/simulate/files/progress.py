@@ -40,10 +40,10 @@ class Progress:
         width = 30
         filled = int(width * self.done / self.total)
         percent = 100 * self.done // self.total
+        self.drawn = True  # before the write: a signal right after it must still erase the bar
         self.stream.write(f"\r{self.label:<14} [{'#' * filled}{'-' * (width - filled)}] "
                           f"{percent:3d}%")
         self.stream.flush()
-        self.drawn = True
 
     def close(self) -> None:
         """Erase the bar, if one was drawn."""
