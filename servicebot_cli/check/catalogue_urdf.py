@@ -108,7 +108,9 @@ URDF_RULES: tuple[Rule, ...] = (
          "leaves the first two out; named on the command line (`servicebot check urdf "
          "$(git ls-files '*.xacro')`), or a part found in a directory, it gets this note "
          "instead of the errors a robot without a name, links or root would get. The files "
-         "that include it are checked, with it, as the robot.",
+         "that include it are checked, with it, as the robot. A named robot that other files "
+         "of a walk include is left out too, unless none of them expands (each needs a "
+         "launch argument, say): then it is checked alone.",
          "Nothing to fix: name a file that includes it (or its directory) to check it."),
     # -- tree and names --------------------------------------------------------------------------
     Rule("SB101", "duplicate-link", E, "Two links have the same name",

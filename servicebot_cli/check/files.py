@@ -92,6 +92,16 @@ def walk(directory: Path) -> Iterator[Path]:
     Includes are left out: macro libraries, unnamed robots, and files that another file of
     the walk includes (a robot file, or an include itself).
     """
+    yield from walk_robots(directory)[0]
+
+
+def walk_robots(directory: Path) -> tuple[list[Path], dict[Path, set[Path]]]:
+    """:func:`walk`'s files, and the named robots it leaves out with the files that include them.
+
+    A named robot left out is checked through those includers (of the walk, or includes
+    themselves); when none of them expands, it is checked alone after all (andino's
+    description, included by a Gazebo file that needs a launch argument).
+    """
     robots: list[Path] = []
     fragments: list[Path] = []
     semantic: list[Path] = []
@@ -102,11 +112,13 @@ def walk(directory: Path) -> Iterator[Path]:
             (fragments if is_fragment(path) else robots).append(path)
     # an include of an include is an include too (VRX: the robot includes a macro file,
     # which includes a file of includes that names a robot but holds no link)
-    included = set(includers(robots, by=[*robots, *fragments]))
+    by_robots = every_includer(robots, by=[*robots, *fragments])
+    included = set(by_robots)
     if semantic:  # what only a *.srdf.xacro includes is left out when it is SRDF itself
         included |= {path for path in set(includers(robots, by=semantic)) - included
                      if _semantic_content(path)}
-    yield from (path for path in robots if path not in included)
+    return ([path for path in robots if path not in included],
+            {path: by_robots.get(path, set()) for path in robots if path in included})
 
 
 def robot_file_count(directory: Path) -> int:
@@ -166,17 +178,32 @@ def includers(paths: list[Path], by: list[Path] | None = None, *,
     (``$(find PKG)/urdf/x.xacro`` from ``description/urdf/x.xacro``). Computed names
     (``${...}``, ``$(arg ...)``) name nothing.
     """
+    included: dict[Path, Path] = {}
+    for found, path in _inclusions(paths, by, in_comments):
+        included.setdefault(found, path)
+    return included
+
+
+def every_includer(paths: list[Path], by: list[Path] | None = None) -> dict[Path, set[Path]]:
+    """Each of ``paths`` another includes, and every file that does (see :func:`includers`)."""
+    included: dict[Path, set[Path]] = {}
+    for found, path in _inclusions(paths, by, in_comments=False):
+        included.setdefault(found, set()).add(path)
+    return included
+
+
+def _inclusions(paths: list[Path], by: list[Path] | None,
+                in_comments: bool) -> Iterator[tuple[Path, Path]]:
+    """``(included, includer)`` for each of ``paths`` that another of ``by`` includes."""
     sources = paths if by is None else by
     by_location = {_location(path): path for path in paths}
     packages = _packages([*paths, *(by or ())])
-    included: dict[Path, Path] = {}
     for path in sources:
         for target in _include_targets(path, in_comments=in_comments):
             for named in _named(target, path, packages):
                 found = by_location.get(_location(named))
                 if found is not None and found != path:
-                    included.setdefault(found, path)
-    return included
+                    yield found, path
 
 
 def included_files(paths: list[Path], most: int = 500) -> list[Path]:

@@ -109,37 +109,52 @@ def run(request: CheckRequest) -> CheckResult:
     settings = settings_of(request.settings)
     if not isinstance(request.targets, UrdfTargets):
         return CheckResult(tuple(_check_controllers(request.targets, settings)), settings.strict)
-    sources, includes_only = _sources(request.targets)
+    sources, includes_only, left_out = _sources(request.targets)
     reports = _check_urdfs(sources, request.targets, settings)
+    unexpanded = {report.file for report, (_, named) in zip(reports, sources, strict=True)
+                  if not named and any(f.code in _NOT_EXPANDED for f in report.findings)}
+    alone = [_walked(path, request.targets) for path, by in left_out.items()
+             if by and {str(includer) for includer in by} <= unexpanded]
+    reports += _check_urdfs(alone, request.targets, settings)
     return CheckResult(tuple(reports), settings.strict, includes_only)
 
 
+_NOT_EXPANDED = ("SB001", "SB006", "SB007")  # an include missing, xacro failed, no package
+
+
+def _walked(file: Path, targets: UrdfTargets) -> tuple[RobotSource, bool]:
+    """A file a directory walk found, as a source to check."""
+    args = targets.xacro_args if is_xacro_name(file) else ()
+    return RobotSource(file, str(file), args, targets.packages), False
+
+
 def _sources(targets: UrdfTargets) -> tuple[list[tuple[RobotSource, bool]],
-                                            tuple[tuple[str, int], ...]]:
+                                            tuple[tuple[str, int], ...], dict[Path, set[Path]]]:
     """Each source to check, and whether the user named it (else it was found in a directory).
 
-    Also each named directory that holds only xacro includes, with how many.
+    Also each named directory that holds only xacro includes, with how many; and each named
+    robot a walk left out as an include, with the files that include it.
     """
     if not targets.paths:
-        return [(targets.default or RobotSource.bundled(), True)], ()
+        return [(targets.default or RobotSource.bundled(), True)], (), {}
     found: list[tuple[RobotSource, bool]] = []
     includes_only: list[tuple[str, int]] = []
+    left_out: dict[Path, set[Path]] = {}
     for name in targets.paths:
         path = Path(name)
         if not os.path.isdir(path):
             found.append((RobotSource(path, name, targets.xacro_args, targets.packages), True))
             continue
-        inside = list(files.walk(path))
+        inside, parts = files.walk_robots(path)
+        left_out.update(parts)
         if not inside:
             held = files.robot_file_count(path)
             if not held:
                 raise DescriptionError(f"{name}: is a directory with no robot files "
                                        f"({', '.join('*' + s for s in files.SUFFIXES)})")
             includes_only.append((name, held))
-        for file in inside:
-            args = targets.xacro_args if is_xacro_name(file) else ()
-            found.append((RobotSource(file, str(file), args, targets.packages), False))
-    return found, tuple(includes_only)
+        found += [_walked(file, targets) for file in inside]
+    return found, tuple(includes_only), left_out
 
 
 def _check_urdfs(every: list[tuple[RobotSource, bool]], targets: UrdfTargets,

@@ -151,3 +151,37 @@ def test_an_include_of_an_include_is_not_a_robot(run, tmp_path):
     assert result.exit_code == 0, result.stdout
     assert [report["file"].rsplit("/", 1)[-1] for report in
             json.loads(result.stdout)["files"]] == ["boat.urdf.xacro"]
+
+
+def _package(root: Path, name: str, files: dict[str, str]) -> None:
+    (root / name).mkdir(parents=True)
+    (root / name / "package.xml").write_text(
+        f'<?xml version="1.0"?><package format="3"><name>{name}</name></package>')
+    for file, text in files.items():
+        (root / name / file).parent.mkdir(parents=True, exist_ok=True)
+        (root / name / file).write_text(text)
+
+
+def test_a_robot_whose_every_includer_needs_a_launch_argument_is_checked_alone(run, tmp_path):
+    """Ekumen's andino: andino_gz_classic's xacro includes the complete andino.urdf.xacro
+    and reads $(arg ...) with no default, so a walk cannot expand it: the robot was left out
+    as an include and never checked, and the walk passed."""
+    src = tmp_path / "ws" / "src"
+    _package(src, "bot_description", {"urdf/bot.urdf.xacro": (
+        f'<robot name="bot" {XACRO_NS}><link name="base"/><link name="arm"/>'
+        '<joint name="j" type="fixed"><parent link="base"/><child link="arm_missing"/>'
+        '</joint></robot>')})
+    sim = (f'<robot name="sim" {XACRO_NS}><xacro:include filename='
+           '"$(find bot_description)/urdf/bot.urdf.xacro"/>'
+           '<xacro:if value="$(arg use_sim)"><gazebo/></xacro:if></robot>')
+    _package(src, "bot_gazebo", {"urdf/sim.xacro": sim})
+    result = run("check", src, "--isolated", "--format", "json")
+    reports = {Path(f["file"]).name: [x["code"] for x in f["findings"]]
+               for f in json.loads(result.stdout)["files"]}
+    assert result.exit_code == 1
+    assert reports["sim.xacro"] == ["SB006"]
+    assert "SB103" in reports["bot.urdf.xacro"]
+    # an includer that expands checks the robot with it: not alone as well
+    (src / "bot_gazebo" / "urdf" / "sim.xacro").write_text(sim.replace("$(arg use_sim)", "1"))
+    result = run("check", src, "--isolated", "--format", "json")
+    assert [Path(f["file"]).name for f in json.loads(result.stdout)["files"]] == ["sim.xacro"]
