@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Iterator, Mapping
 from typing import TYPE_CHECKING
 
@@ -23,6 +24,7 @@ _CLASSIC = ("libgazebo_ros", "gazebo_ros")
 # default) starts them at the sensor (pepper's sonars). A GPU lidar's range min is its
 # camera's near clip, which OGRE refuses at 0.
 _CPU_RAYS = ("ray",)
+_UNEXPANDED = re.compile(r"(?<!\$)\{[^{}]*\}")
 _GZ_SIM = ("gz-sim", "libgz-sim", "ignition-gazebo", "libignition-gazebo", "gz::sim")
 
 
@@ -31,7 +33,9 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     names = [link.name for link in robot.links] + [joint.name for joint in robot.joints]
     known = set(names)
     unknown = [b for b in robot.gazebo if b.reference is not None and b.reference not in known]
-    optional = defined_elsewhere(robot, {block.reference or "" for block in unknown})
+    # a reference still holding xacro's braces is a typo, no optional part ('{side}' for '${side}')
+    optional = defined_elsewhere(robot, {block.reference or "" for block in unknown
+                                         if not _UNEXPANDED.search(block.reference or "")})
     for block in unknown:
         yield _unknown_reference(block.reference or "", names, optional, block.element)
     for sensor in robot.sensors:
@@ -52,7 +56,12 @@ def _unknown_reference(reference: str, names: list[str],
                      fix="remove the empty block")
     if found is None:
         hint = str(NameNotFound.for_name(reference, names)).split("; ", 1)[-1]
-        return Issue("SB501", f"{where} names no link or joint; {hint}", element)
+        braces = _UNEXPANDED.search(reference)
+        if braces is not None:
+            hint = (f"'{braces[0]}' has no '$' before it, so xacro left it as written; "
+                    f"{hint}")
+        return Issue("SB501", f"{where} names no link or joint; {hint}", element,
+                     fix=f"write '${braces[0]}'" if braces is not None else None)
     file, line, kind, written = found
     named = f"'{reference}'" if written == reference else f"'{written}' (here '{reference}')"
     return Issue("SB501", f"{where} names no link or joint of this expansion; {file}:{line} "

@@ -8,7 +8,8 @@ ignores the block, as its author meant. This finds such definitions in the robot
 sources: the files the expansion read, and those their ``<xacro:include>`` elements name,
 taken or not (another robot of the package is not this robot's part). A definition is a
 ``<link>`` or a ``<joint>`` with a ``type``: ``<ros2_control>`` and ``<transmission>`` name
-joints without one.
+joints without one. A ``<link>`` inside a ``<gazebo>`` block is SDF that Gazebo adds to the
+model (PR2's gripper), no URDF link a reference could name.
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 _DEFINITION = re.compile(rb"<(link|joint)\b([^>]*)>")
+_GAZEBO_BLOCK = re.compile(rb"<gazebo\b[^>]*[^/>]>.*?</gazebo\s*>|<gazebo>.*?</gazebo\s*>", re.DOTALL)
 _NAME = re.compile(rb"\bname\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
 _TYPE = re.compile(rb"\btype\s*=")
 _HEAD_BYTES = 1 << 20
@@ -55,7 +57,7 @@ def defined_elsewhere(robot: RobotDescription, names: Collection[str]) -> dict[s
     for path in included_files([Path(file) for file in robot.files]):
         try:
             with path.open("rb") as handle:
-                text = comments_blanked(handle.read(_HEAD_BYTES))
+                text = _GAZEBO_BLOCK.sub(_line_breaks, comments_blanked(handle.read(_HEAD_BYTES)))
         except OSError:
             continue
         for match in _DEFINITION.finditer(text):
@@ -70,6 +72,11 @@ def defined_elsewhere(robot: RobotDescription, names: Collection[str]) -> dict[s
         if len(found) == len(wanted):
             break
     return found
+
+
+def _line_breaks(block: re.Match[bytes]) -> bytes:
+    """A block replaced by its line breaks alone: later lines keep their numbers."""
+    return b"\n" * block[0].count(b"\n")
 
 
 def _defined(written: bytes, wanted: dict[bytes, str]) -> list[str]:

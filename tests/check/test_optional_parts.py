@@ -179,3 +179,38 @@ def test_a_name_template_that_says_nothing_hides_no_typo(run, tmp_path):
     assert found["lidr_link"]["severity"] == "error"
     assert "did you mean 'lidar_link'" in found["lidr_link"]["message"]
     assert found["tool0"]["severity"] == "warning"
+
+
+def test_an_sdf_link_inside_a_gazebo_block_is_no_part_left_out(run, tmp_path):
+    """PR2's gripper.gazebo.xacro adds ``parallel_link`` to the model as SDF inside a
+    ``<gazebo>`` block; a ``<gazebo reference>`` to it names no URDF link, as in the .urdf."""
+    for suffix in ("urdf", "urdf.xacro"):
+        path = tmp_path / f"gripper.{suffix}"
+        path.write_text(f'<robot name="r" {XACRO}><link name="base_link"/>\n'
+                        '<gazebo>\n  <link name="parallel_link"/>\n</gazebo>\n'
+                        '<gazebo reference="parallel_link"><turnGravityOff>true</turnGravityOff>'
+                        '</gazebo></robot>')
+        result = run("check", path, "--format", "json", "--isolated", "--select", "SB501")
+        (found,) = findings(result.stdout)
+        assert (found["severity"], found["line"]) == ("error", 5), suffix
+
+
+def test_a_reference_whose_expression_lost_its_dollar_is_a_typo(run, tmp_path):
+    """pmb2_robot's caster.gazebo.xacro: reference="caster_{side}_joint" beside a joint
+    named caster_${side}_joint was called an optional part left out, a warning."""
+    path = tmp_path / "robot.urdf.xacro"
+    path.write_text(
+        f'<robot name="r" {XACRO}><link name="base_link"/>\n'
+        '<xacro:macro name="caster" params="side">\n'
+        '  <joint name="caster_${side}_joint" type="continuous"><parent link="base_link"/>'
+        '<child link="caster_${side}_link"/></joint><link name="caster_${side}_link"/>\n'
+        '  <gazebo reference="caster_{side}_joint"><mu1>1</mu1></gazebo>\n'
+        '</xacro:macro>\n<xacro:caster side="left"/></robot>')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB501")
+    (found,) = findings(result.stdout)
+    assert found["severity"] == "error"
+    assert found["message"] == (
+        "<gazebo reference=\"caster_{side}_joint\"> names no link or joint; '{side}' has no "
+        "'$' before it, so xacro left it as written; did you mean 'caster_left_joint' or "
+        "'caster_left_link'?")
+    assert found["fix"] == "write '${side}'"
