@@ -27,7 +27,7 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 _DEFINITION = re.compile(rb"<(link|joint)\b([^>]*)>")
-_GAZEBO_BLOCK = re.compile(rb"<gazebo\b[^>]*[^/>]>.*?</gazebo\s*>|<gazebo>.*?</gazebo\s*>", re.DOTALL)
+_GAZEBO_BLOCK = re.compile(rb"<gazebo(?:\b[^>]*[^/>])?>.*?</gazebo\s*>", re.DOTALL)
 _NAME = re.compile(rb"\bname\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
 _TYPE = re.compile(rb"\btype\s*=")
 _HEAD_BYTES = 1 << 20
@@ -57,7 +57,8 @@ def defined_elsewhere(robot: RobotDescription, names: Collection[str]) -> dict[s
     for path in included_files([Path(file) for file in robot.files]):
         try:
             with path.open("rb") as handle:
-                text = _GAZEBO_BLOCK.sub(_line_breaks, comments_blanked(handle.read(_HEAD_BYTES)))
+                text = comments_blanked(handle.read(_HEAD_BYTES))
+            text = _GAZEBO_BLOCK.sub(_line_breaks, text)
         except OSError:
             continue
         for match in _DEFINITION.finditer(text):
