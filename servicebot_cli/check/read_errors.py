@@ -59,7 +59,9 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
                          "directory walk passes none, so it is not checked here",
                          where=(file, line, column), severity=Severity.WARNING,
                          fix="check it by name with its arguments (NAME:=VALUE)")
-        return Issue("SB001", text, where=(file, line, column))
+        missing = text.endswith("No such file or directory")
+        return Issue("SB001", text, where=(file, line, column),
+                     fix="fix the path, or add the file" if missing else None)
     if any(limit in text for limit in _LIMITS):
         return Issue("SB015", text, where=(file, line, column))
     text = text.removeprefix("xacro: ")

@@ -11,6 +11,7 @@ import json
 
 import pytest
 
+from tests.check.helpers import findings
 from tests.conftest import run_servicebot
 
 PARTS = """<?xml version="1.0"?>
@@ -103,3 +104,12 @@ def test_a_path_through_a_symbolic_link_and_dot_dot_is_kept_as_written(tmp_path)
     assert "SB403" in {f["code"] for f in found}  # the mesh was read: it has no triangles
     assert all(f["file"] == str(ws / "a" / "../common/parts.xacro") for f in found
                if f["code"] == "SB203")
+
+
+def test_a_missing_include_is_fixed_by_its_path_not_its_permissions(run, tmp_path):
+    robot = tmp_path / "r.urdf.xacro"
+    robot.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                     '<xacro:include filename="nope.xacro"/><link name="a"/></robot>')
+    result = run("check", robot, "--format", "json", "--isolated")
+    (found,) = [f for f in findings(result.stdout) if f["code"] == "SB001"]
+    assert found["fix"] == "fix the path, or add the file"
