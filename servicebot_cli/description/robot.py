@@ -263,11 +263,11 @@ class RobotDescription:
         places = [(f"joint '{joint.name}'", joint.origin, f"link '{joint.parent}'")
                   for joint in self.joints]
         for link in self.links:
-            shapes = [("inertial", link.inertial)] if link.inertial is not None else []
-            shapes += [("collision", shape) for shape in link.collisions]
-            shapes += [("visual", shape) for shape in link.visuals]
-            places += [(f"the {kind} of link '{link.name}'", part.origin, "the link's frame")
-                       for kind, part in shapes]
+            origins = [("inertial", link.inertial.origin)] if link.inertial is not None else []
+            origins += [("collision", shape.origin) for shape in link.collisions]
+            origins += [("visual", shape.origin) for shape in link.visuals]
+            places += [(f"the {kind} of link '{link.name}'", origin, "the link's frame")
+                       for kind, origin in origins]
         for what, origin, reference in places:
             if not origin.offset_m <= el.FARTHEST_M:  # NaN too
                 raise DescriptionError(

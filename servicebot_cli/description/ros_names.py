@@ -14,9 +14,11 @@ expanded the same way. ``__ns:=`` and ``__node:=`` rules rename the node's names
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 from servicebot_cli.description.extensions import Plugin, param, params_all
+from servicebot_cli.description.parameter_files import is_ros2_control_plugin
 
 Rule = tuple[str | None, str, str]
 """A remap rule: the node it is for (None: any), its match and its replacement."""
@@ -93,3 +95,25 @@ class PluginNode:
         full = self.expand(name)
         return next((replacement for node, match, replacement in self.rules
                      if node in (None, self.name) and self.expand(match) == full), None)
+
+
+def manager_node(plugins: Iterable[Plugin]) -> PluginNode | None:
+    """The node of the first ros2_control Gazebo plugin, whose controllers share its names.
+
+    gazebo_ros2_control and gz_ros2_control hand its ``<ros><namespace>`` (as ``__ns:=``)
+    and ``<ros><remapping>`` rules to rcl for the whole process: every controller runs in
+    that namespace, under those rules. None without such a plugin.
+    """
+    return next((PluginNode.of(plugin) for plugin in plugins if is_ros2_control_plugin(plugin)),
+                None)
+
+
+def controller_topic(manager: PluginNode | None, controller: str, topic: str) -> str:
+    """The fully qualified, remapped name of ``topic`` of the controller node ``controller``.
+
+    ``~/odom`` of ``diff_controller`` is ``/diff_controller/odom`` at the root, and
+    ``/robot1/odom`` under a plugin in namespace ``robot1`` with ``~/odom:=odom``.
+    """
+    node = PluginNode(controller, manager.namespace if manager else "/",
+                      manager.rules if manager else ())
+    return node.expand(node.remapped(topic) or topic)

@@ -14,6 +14,7 @@ from typing import Any
 
 from servicebot_cli.description.extensions import Plugin
 from servicebot_cli.description.model_plugins import model_plugin_rows
+from servicebot_cli.description.ros_names import PluginNode, controller_topic, manager_node
 from servicebot_cli.inspect.controllers import Controller, Controllers
 from servicebot_cli.inspect.plugins import HardwareInfo, PluginInfo
 from servicebot_cli.inspect.sensors import SensorInfo
@@ -67,7 +68,7 @@ def _trajectory(c: Controller) -> list[tuple[str, str, str, str, str | None]]:
 
 def _joint_states(c: Controller) -> list[tuple[str, str, str, str, str | None]]:
     local = c.params.get("use_local_topics", False) is True
-    prefix = "~/" if local else "/"
+    prefix = "~/" if local else ""  # relative: in the controller manager's namespace
     return [("out", "topic", f"{prefix}joint_states", "sensor_msgs/msg/JointState", None)]
 
 
@@ -86,8 +87,13 @@ _KNOWN = {
 }
 
 
-def controller_topics(controllers: Controllers) -> list[TopicInfo]:
-    """What each controller of a known type consumes and publishes."""
+def controller_topics(controllers: Controllers,
+                      manager: PluginNode | None = None) -> list[TopicInfo]:
+    """What each controller of a known type consumes and publishes.
+
+    Named as ROS names them in ``manager``'s namespace, under its remap rules
+    (:func:`~servicebot_cli.description.ros_names.manager_node`); at the root without one.
+    """
     rows = []
     file_name = controllers.file.rsplit("/", 1)[-1]
     for c in controllers.controllers:
@@ -96,7 +102,7 @@ def controller_topics(controllers: Controllers) -> list[TopicInfo]:
             continue
         source = f"{file_name}: {c.name} ({c.type})"
         for direction, kind, name, message, note in derive(c):
-            resolved = f"/{c.name}/{name[2:]}" if name.startswith("~/") else name
+            resolved = controller_topic(manager, c.name, name)
             rows.append(TopicInfo(direction, kind, resolved, message, c.name, source, note))
     return rows
 
@@ -145,6 +151,9 @@ def topics_info(sensors: tuple[SensorInfo, ...], hardware: tuple[HardwareInfo, .
     ``gazebo``: the description's Gazebo plugins (``PluginsInfo.gazebo``); the model-level
     ones that drive the base or publish joint states add their topics.
     """
-    rows = (controller_topics(controllers) if controllers else []) + plugin_topics(gazebo) \
-        + device_topics(hardware) + sensor_topics(sensors)
+    manager = manager_node(Plugin(info.name, info.filename,
+                                  tuple((p.name, p.value) for p in info.params))
+                           for info in gazebo if info.attached_to == "model")
+    rows = (controller_topics(controllers, manager) if controllers else []) \
+        + plugin_topics(gazebo) + device_topics(hardware) + sensor_topics(sensors)
     return tuple(sorted(rows, key=lambda r: r.direction != "in"))

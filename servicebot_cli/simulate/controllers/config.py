@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING, Any
 
 from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.description.parameter_files import merged_parameters, parameter_files
+from servicebot_cli.description.ros_names import PluginNode, controller_topic
 from servicebot_cli.description.ros_parameters import (
     controller_types,
     node_parameters,
@@ -117,12 +118,14 @@ def controllers_beside(robot: RobotDescription) -> Path | None:
     return near if os.path.isfile(near) else None
 
 
-def read_controllers_file(path: Path | tuple[Path, ...] | None) -> ControllersFile:
+def read_controllers_file(path: Path | tuple[Path, ...] | None,
+                          plugin_node: PluginNode | None = None) -> ControllersFile:
     """The scenario fields the diff-drive controller in ``path`` sets.
 
     Several files are read in order, later values overriding earlier ones, as ROS reads
     several ``--params-file`` (:func:`~servicebot_cli.description.parameter_files.
-    merged_parameters`).
+    merged_parameters`). Topics and frames are named in ``plugin_node``'s namespace, under
+    its remap rules (the ros2_control Gazebo plugin's node; the root without one).
 
     Raises:
         ControllersFileError: Unreadable, not YAML, or a parameter that is not a number.
@@ -158,21 +161,25 @@ def read_controllers_file(path: Path | tuple[Path, ...] | None) -> ControllersFi
             if not isinstance(diagonal, list) or len(diagonal) != 6:
                 raise ControllersFileError(f"{where}: {name}.{key}: expected 6 numbers")
             values[key] = tuple(_number(where, key, v) for v in diagonal)
-    odom_frame, base_frame = _frames(where, params) if name else (None, None)
+    namespace = plugin_node.namespace if plugin_node else "/"
+    odom_frame, base_frame = _frames(where, params, namespace) if name else (None, None)
     return ControllersFile(where, values, name, source=label, publishes_odometry=bool(name),
+                           odom_topic=controller_topic(plugin_node, name, "~/odom")
+                           if name else None,
                            odom_tf=bool(name) and params.get("enable_odom_tf") is not False,
                            odom_frame=odom_frame, base_frame=base_frame,
-                           joint_state_topics=_broadcaster_topics(nodes, types))
+                           joint_state_topics=_broadcaster_topics(nodes, types, plugin_node))
 
 
-def _broadcaster_topics(nodes: Mapping[str, Any],
-                        types: Mapping[str, str]) -> tuple[str, ...]:
-    """Where each joint_state_broadcaster publishes: ``/joint_states``, else ``~/joint_states``.
+def _broadcaster_topics(nodes: Mapping[str, Any], types: Mapping[str, str],
+                        manager: PluginNode | None) -> tuple[str, ...]:
+    """Where each joint_state_broadcaster publishes: ``joint_states``, else ``~/joint_states``.
 
-    ``~/`` (the controller's namespace, at the root here) with ``use_local_topics: true``.
+    ``~/`` (the controller's own namespace) with ``use_local_topics: true``; either in the
+    controller manager's namespace.
     """
-    return tuple(f"/{name}/joint_states" if _flat(nodes.get(name, {})).get("use_local_topics")
-                 is True else "/joint_states"
+    return tuple(controller_topic(manager, name, "~/joint_states" if _flat(
+                     nodes.get(name, {})).get("use_local_topics") is True else "joint_states")
                  for name, kind in types.items()
                  if kind == JOINT_STATE_BROADCASTER)
 
@@ -186,11 +193,11 @@ def _document(path: Path) -> Any:
     return read_parameters_file(path, ControllersFileError)
 
 
-def _frames(path: Path, params: Mapping[str, Any]) -> tuple[str, str]:
+def _frames(path: Path, params: Mapping[str, Any], namespace: str = "/") -> tuple[str, str]:
     """``odom_frame_id`` (default ``odom``) and ``base_frame_id`` (``base_link``), prefixed.
 
     diff_drive_controller puts ``tf_frame_prefix`` before both (``~`` is the controller's
-    namespace, taken as the root; a trailing ``/`` added, a leading one dropped), unless
+    ``namespace``; a trailing ``/`` added, a leading one dropped), unless
     ``tf_frame_prefix_enable`` is false; an empty prefix is the namespace's, none at the root.
     """
     frames = []
@@ -199,9 +206,10 @@ def _frames(path: Path, params: Mapping[str, Any]) -> tuple[str, str]:
         if not isinstance(value, str):
             raise ControllersFileError(f"{path}: {key}: expected a frame name, got {value!r}")
         frames.append(value)
-    prefix = params.get("tf_frame_prefix", "")
-    if params.get("tf_frame_prefix_enable") is not False and isinstance(prefix, str) and prefix:
-        prefix = prefix.replace("~", "/", 1)
+    prefix = params.get("tf_frame_prefix", "") or namespace
+    if params.get("tf_frame_prefix_enable") is not False and isinstance(prefix, str) \
+            and prefix.strip("/"):
+        prefix = prefix.replace("~", namespace.rstrip("/") + "/", 1)
         prefix = (prefix if prefix.endswith("/") else prefix + "/").removeprefix("/")
         frames = [prefix + frame for frame in frames]
     return frames[0], frames[1]

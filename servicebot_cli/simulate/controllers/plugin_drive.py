@@ -44,6 +44,7 @@ from servicebot_cli.description.model_plugins import (
     ros1_plugin,
     wheel_tf_joints,
 )
+from servicebot_cli.description.ros_names import manager_node
 from servicebot_cli.simulate.controllers.classic_drive import ClassicDrive, odometry_source
 from servicebot_cli.simulate.controllers.config import (
     ControllersFile,
@@ -75,7 +76,9 @@ def controllers_for(robot: RobotDescription, explicit: str | None) -> Controller
         ControllersFileError: An unreadable file, or a parameter that is not a number.
     """
     named = named_controllers_file(robot, explicit)
-    from_file = None if named is None else read_controllers_file(named)
+    manager = manager_node(plugin for block in robot.gazebo if block.reference is None
+                           for plugin in block.plugins)
+    from_file = None if named is None else read_controllers_file(named, manager)
     plugin = drive_plugin(robot) if from_file is None or from_file.name is None else None
     if plugin is not None:
         chosen = read_drive_plugin(robot, plugin)
@@ -84,7 +87,7 @@ def controllers_for(robot: RobotDescription, explicit: str | None) -> Controller
                 chosen, joint_state_topics=from_file.joint_state_topics,
                 joint_state_update_hz=from_file.values.get("update_rate_hz"))
     else:
-        chosen = from_file or read_controllers_file(controllers_beside(robot))
+        chosen = from_file or read_controllers_file(controllers_beside(robot), manager)
     missing = missing_parameter_files(robot, explicit)
     if not missing:
         return chosen
