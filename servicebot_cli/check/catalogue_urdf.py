@@ -110,7 +110,9 @@ URDF_RULES: tuple[Rule, ...] = (
          "instead of the errors a robot without a name, links or root would get. The files "
          "that include it are checked, with it, as the robot. A named robot that other files "
          "of a walk include is left out too, unless none of them expands (each needs a "
-         "launch argument, say): then it is checked alone.",
+         "launch argument, say): then it is checked alone. So is a part only a comment "
+         "includes (an alternative tool), without what the link it hangs from being "
+         "absent causes.",
          "Nothing to fix: name a file that includes it (or its directory) to check it."),
     # -- tree and names --------------------------------------------------------------------------
     Rule("SB101", "duplicate-link", E, "Two links have the same name",

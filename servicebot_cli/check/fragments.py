@@ -38,6 +38,8 @@ if TYPE_CHECKING:
 _OWN_CONTENT = re.compile(rb"<(?:link|joint)\b")
 _MACRO_CALL = re.compile(rb"<xacro:(?!include\b|property\b|arg\b|macro\b|if\b|unless\b)[\w.-]+\b")
 _ROOT_FRAMES = {"world", "map", "odom"}
+ALTERNATIVE_PART = "an alternative part"
+"""How :func:`part_evidence` starts when only a comment includes the part."""
 
 
 def external_parent(robot: RobotDescription) -> str | None:
@@ -68,7 +70,7 @@ def part_evidence(path: Path, parent: str) -> str | None:
         return f"included by {includer}"
     includer = files.includer_nearby(path, in_comments=True)
     if includer is not None:
-        return f"an alternative part: {includer} includes it in a comment"
+        return f"{ALTERNATIVE_PART}: {includer} includes it in a comment"
     if parent not in _ROOT_FRAMES and _only_macro_calls(path, parent):
         return "built only by the macros it includes"
     return None

@@ -76,7 +76,12 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv,
 
     part = _part_of_another(robot, source)
     if part is not None:
-        return _report(source.display, place_issues(robot, [part], settings),
+        note, parent = part
+        own: list[Issue] = []
+        if parent is not None:  # nothing includes it: its own defects, without its parent's
+            own = [issue for issue in _issues(robot, settings, env)
+                   if not _from_missing_parent(issue, parent)]
+        return _report(source.display, place_issues(robot, [note, *own], settings),
                        packages.used(robot, env.search))
     ahead = _model_ahead(robot, settings, env)
     try:
@@ -88,13 +93,16 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv,
             ahead.close()  # at once when no verdict was asked for
 
 
-def _part_of_another(robot: RobotDescription, source: RobotSource) -> Issue | None:
+def _part_of_another(robot: RobotDescription,
+                     source: RobotSource) -> tuple[Issue, str | None] | None:
     """SB018 for a xacro part that hangs from a link of the robot that includes it.
 
     Only with evidence that it is one (:func:`fragments.part_evidence`); a robot file that
-    merely lacks its root's parent is checked, and fails with SB103.
+    merely lacks its root's parent is checked, and fails with SB103. With the link it hangs
+    from when nothing includes it but in a comment (an alternative part, stretch's tools):
+    no robot checks it, so it is checked alone, but for what that link's absence causes.
     """
-    from servicebot_cli.check.fragments import external_parent, part_evidence
+    from servicebot_cli.check.fragments import ALTERNATIVE_PART, external_parent, part_evidence
     from servicebot_cli.description.robot import is_xacro_name
 
     if not is_xacro_name(source.path) or not os.path.isfile(source.path):
@@ -105,9 +113,20 @@ def _part_of_another(robot: RobotDescription, source: RobotSource) -> Issue | No
     why = part_evidence(source.path, parent)
     if why is None:
         return None
+    if why.startswith(ALTERNATIVE_PART):
+        return Issue("SB018", f"a part of another robot ({why}): every link hangs from "
+                     f"'{parent}', which it does not define; nothing includes it, so it is "
+                     f"checked alone, without what the absence of '{parent}' causes",
+                     where=(robot.display, 0, 0),
+                     fix="the other findings of the file are the part's own"), parent
     return Issue("SB018", f"a part of another robot ({why}): every link hangs from "
                  f"'{parent}', which it does not define; checked through the files that "
-                 "include it, not alone", where=(robot.display, 0, 0))
+                 "include it, not alone", where=(robot.display, 0, 0)), None
+
+
+def _from_missing_parent(issue: Issue, parent: str) -> bool:
+    """Whether ``issue`` is about the link ``parent`` a part hangs from, which it lacks."""
+    return issue.code.startswith("SB1") and f"'{parent}'" in issue.message
 
 
 def _model_ahead(robot: RobotDescription, settings: Settings, env: CheckEnv) -> ModelAhead | None:

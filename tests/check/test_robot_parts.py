@@ -141,3 +141,23 @@ def test_a_part_only_a_comment_includes_is_an_alternative_part(run, tmp_path):
     assert ("marker.xacro", "SB018") in found and ("marker.xacro", "SB103") not in found
     robot.write_text(robot.read_text().replace("marker.xacro", "other.xacro"))
     assert run("check", "urdf", marker, "--isolated").exit_code == 1  # named nowhere: a robot
+
+
+def test_an_alternative_part_is_checked_alone_but_for_its_missing_parent(run, tmp_path):
+    """Nothing includes it with its robot but a comment, so nothing else would report its
+    own defects (stretch_gripper_with_puller.xacro's were hidden behind the SB018 note)."""
+    urdf = tmp_path / "urdf"
+    urdf.mkdir()
+    tool = urdf / "tool.xacro"
+    tool.write_text(f'<robot name="tool" {XACRO_NS}><link name="pen"><inertial>'
+                    '<mass value="-1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" '
+                    'izz="1"/></inertial></link><joint name="mount" type="fixed">'
+                    '<parent link="link_wrist_yaw"/><child link="pen"/></joint></robot>\n')
+    (urdf / "robot.urdf.xacro").write_text(
+        f'<robot name="r" {XACRO_NS}><link name="link_wrist_yaw">{INERTIAL}</link>'
+        '<!--<xacro:include filename="tool.xacro" />--></robot>\n')
+    result = run("check", "urdf", tool, "--format", "json", "--isolated")
+    assert result.exit_code == 1, result.stdout
+    codes = [f["code"] for f in findings(result.stdout)]
+    assert codes[0] == "SB018" and "SB302" in codes  # its negative mass
+    assert not {"SB103", "SB104", "SB105", "SB701", "SB702"} & set(codes)
