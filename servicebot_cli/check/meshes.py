@@ -16,7 +16,6 @@ import numpy as np
 
 from servicebot_cli.common.library_logs import captured
 from servicebot_cli.description import mesh_readers
-from servicebot_cli.description.mesh_obj_assimp import assimp_misread
 
 if TYPE_CHECKING:
     from servicebot_cli.check.mesh_store import MeshStore
@@ -87,11 +86,9 @@ def _read(path: Path, data: bytes, suffix: str, with_mass: bool) -> MeshInfo:
     """:func:`load_mesh` once the file is read."""
     if suffix == ".dae" and not with_mass:
         return _bounds_only(*mesh_readers.read_dae_bounds(data))
-    if suffix == ".obj":
-        misread = assimp_misread(data)
-        if misread is not None:
-            raise MeshError(misread)
-        return summarise_indexed(*mesh_readers.read_indexed(suffix, data), with_mass)
+    if suffix == ".obj":  # as Assimp reads it: RViz, Gazebo and MoveIt do
+        return summarise_indexed(*mesh_readers.read_indexed(suffix, data, as_assimp=True),
+                                 with_mass)
     if suffix in mesh_readers.SUFFIXES:  # every triangle's corners, as summarise takes them
         triangles = mesh_readers.read_triangles(suffix, data)
     else:

@@ -21,43 +21,58 @@ from servicebot_cli.description.mesh_arrays import (
     fan_counts,
     numbers,
 )
+from servicebot_cli.description.mesh_obj_assimp import assimp_misread
 from servicebot_cli.description.mesh_obj_faces import face_corners
+from servicebot_cli.description.number_text import plain_numbers
 
 # an OBJ's vertex and face lines after a newline; the first line is matched on its own
 _OBJ_VERTEX = re.compile(rb"\n[ \t]*v[ \t]([^\r\n]*)")
 _OBJ_FACE = re.compile(rb"\n[ \t]*f[ \t]([^\r\n]*)")
 _OBJ_FIRST_LINE = re.compile(rb"[ \t]*([vf])[ \t]([^\r\n]*)")
-_V, _F, _SPACE, _TAB, _NEWLINE = 118, 102, 32, 9, 10
+_V, _F, _T, _SPACE, _TAB, _NEWLINE = 118, 102, 116, 32, 9, 10
 _FEW_RUNS = 64  # runs of vertex or face lines cut out one by one; more, if a line in eight
 
 Lines = tuple[bytes, int]  # the contents of some lines after their keyword, joined by newlines
 
 
-def read_obj_indexed(data: bytes) -> tuple[FloatArray, IntArray]:
+def read_obj_indexed(data: bytes, *, as_assimp: bool = False) -> tuple[FloatArray, IntArray]:
     """A Wavefront OBJ's vertex table (V, 3) and triangles as rows of it (F, 3), from 0.
 
     Polygons are fan-triangulated. Vertex and face lines are cut out of the file in runs
     of neighbouring lines and parsed by numpy; a file this cannot read in one pass
     (negative indices, continued lines, a corner that is not an index) is read line by
-    line, which also says what is wrong with it.
+    line, which also says what is wrong with it. ``as_assimp`` also refuses what Assimp
+    reads wrong (:mod:`.mesh_obj_assimp`), looked for only where the vertex numbers are
+    not written plainly.
 
     Raises:
         MeshFormatError: A vertex without three numbers, or a face naming a vertex that does
-            not exist.
+            not exist; with ``as_assimp``, a line Assimp reads wrong.
     """
     if data.startswith(b"\xef\xbb\xbf"):  # a UTF-8 byte order mark, as Assimp skips it
         data = data[3:]
     if b"\r" in data and b"\n" not in data:  # classic Mac OS line ends: CR only
         data = data.replace(b"\r", b"\n")
     if b"\\" in data and (b"\\\n" in data or b"\\\r" in data):  # continued lines
+        _refuse_misread(data, as_assimp)
         return _read_obj_lines(data)
-    found = _in_runs(data) or _by_expression(data)
-    (vertex_text, vertex_count), (face_text, face_count) = found
+    found = _in_runs(data)
+    if found is None:  # lines that start with blanks, and the like: the whole file is read
+        _refuse_misread(data, as_assimp)
+        found = _by_expression(data), False
+    ((vertex_text, vertex_count), (face_text, face_count)), dotted_textures = found
+    if dotted_textures:
+        _refuse_misread(data, as_assimp)
     faces = face_corners(face_text, face_count)
     if faces is None:
+        _refuse_misread(data, as_assimp)
         return _read_obj_lines(data)
     indices, counts = faces
-    table = _obj_vertices(vertex_text, vertex_count)
+    values = plain_numbers(vertex_text)
+    if values is None:
+        _refuse_misread(data, as_assimp)
+        values = numbers(vertex_text)
+    table = _obj_vertices(vertex_text, vertex_count, values)
     if len(counts) and counts.min() == 3 == counts.max():  # triangles only, as most are
         return table, checked(len(table), (indices - 1).reshape(-1, 3))
     polygons = counts >= 3  # a face of one or two corners has no area: left out
@@ -65,11 +80,13 @@ def read_obj_indexed(data: bytes) -> tuple[FloatArray, IntArray]:
                               counts[polygons])
 
 
-def _in_runs(data: bytes) -> tuple[Lines, Lines] | None:
+def _in_runs(data: bytes) -> tuple[tuple[Lines, Lines], bool] | None:
     """The vertex and face lines, cut out of ``data`` a run of neighbouring lines at a time.
 
-    None where the regular expressions must find them: a line that starts with a blank, a
-    carriage return inside a line, more runs than a line in eight.
+    Also whether a texture coordinate (``vt``) line holds a blank before a point, which
+    Assimp may read wrong (:mod:`.mesh_obj_assimp`). None where the regular expressions must
+    find them: a line that starts with a blank, a carriage return inside a line, more runs
+    than a line in eight.
     """
     chars = np.frombuffer(data + b"\n\n", dtype=np.uint8)
     newlines = np.flatnonzero(chars[:len(data)] == _NEWLINE)
@@ -84,7 +101,20 @@ def _in_runs(data: bytes) -> tuple[Lines, Lines] | None:
     faces = _runs(data, keyword == _F, starts, ends, b"f")
     if vertices is None or faces is None:
         return None
-    return vertices, faces
+    return (vertices, faces), _hold_dotted(data, (first == _V) & (second == _T), starts, ends)
+
+
+def _hold_dotted(data: bytes, chosen: npt.NDArray[np.bool_], starts: IntArray,
+                 ends: IntArray) -> bool:
+    """Whether one of the ``chosen`` lines holds a blank before a point (``vt .5 0.5``)."""
+    if not chosen.any():
+        return False
+    edges = np.flatnonzero(np.diff(np.concatenate(([False], chosen, [False]))))
+    for first, after in zip(edges[0::2].tolist(), edges[1::2].tolist(), strict=True):
+        run = data[starts[first]:ends[after - 1]]
+        if b" ." in run or b"\t." in run:
+            return True
+    return False
 
 
 def _runs(data: bytes, chosen: npt.NDArray[np.bool_], starts: IntArray, ends: IntArray,
@@ -121,9 +151,16 @@ def _by_expression(data: bytes) -> tuple[Lines, Lines]:
                                                           len(face_lines))
 
 
-def _obj_vertices(text: bytes, count: int) -> FloatArray:
-    """``x y z`` of ``count`` ``v`` lines (a fourth weight or vertex colours ignored)."""
-    values = numbers(text)
+def _refuse_misread(data: bytes, as_assimp: bool) -> None:
+    """With ``as_assimp``, raise MeshFormatError for a line of ``data`` Assimp reads wrong."""
+    misread = assimp_misread(data) if as_assimp else None
+    if misread is not None:
+        raise MeshFormatError(misread)
+
+
+def _obj_vertices(text: bytes, count: int, values: FloatArray) -> FloatArray:
+    """``x y z`` of ``count`` ``v`` lines (a fourth weight or vertex colours ignored), from
+    their ``values``."""
     if len(values) == 3 * count:
         table: FloatArray = values.reshape(-1, 3)
         return table

@@ -58,17 +58,19 @@ def read_file(path: Path) -> bytes:
     return declaration_first(data) if path.suffix.lower() == ".dae" else data
 
 
-def read_indexed(suffix: str, data: bytes) -> tuple[FloatArray, IntArray]:
+def read_indexed(suffix: str, data: bytes, *,
+                 as_assimp: bool = False) -> tuple[FloatArray, IntArray]:
     """A mesh's vertices (V, 3) and its triangles as rows of them (F, 3), by file suffix.
 
-    An OBJ gives its vertex table; STL and COLLADA a vertex per triangle corner.
+    An OBJ gives its vertex table; STL and COLLADA a vertex per triangle corner. With
+    ``as_assimp``, an OBJ that Assimp reads wrong is refused (:func:`read_obj_indexed`).
 
     Raises:
         MeshFormatError: Not a readable mesh of its format.
         ValueError: ``suffix`` is none of :data:`SUFFIXES`.
     """
     if suffix.lower() == ".obj":
-        return read_obj_indexed(data)
+        return read_obj_indexed(data, as_assimp=as_assimp)
     triangles = read_triangles(suffix, data)
     return triangles.reshape(-1, 3), np.arange(3 * len(triangles), dtype=np.int64).reshape(-1, 3)
 

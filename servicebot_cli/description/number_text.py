@@ -35,7 +35,7 @@ def numbers(text: str | bytes | None, dtype: type = np.float64) -> np.ndarray:
     """
     if not text or text.isspace():
         return np.zeros(0, dtype=dtype)
-    fast = _as_json(text, dtype)
+    fast = plain_numbers(text, dtype)
     if fast is not None:
         return fast
     with warnings.catch_warnings():
@@ -46,8 +46,11 @@ def numbers(text: str | bytes | None, dtype: type = np.float64) -> np.ndarray:
             raise NumberListError("a number list holding something that is not a number") from None
 
 
-def _as_json(text: str | bytes, dtype: type) -> np.ndarray | None:
+def plain_numbers(text: str | bytes, dtype: type = np.float64) -> np.ndarray | None:
     """``text`` read as a JSON array, or None when JSON would read it otherwise than numpy.
+
+    None also tells a list that is not written plainly: its numbers are still numbers to
+    :func:`numbers`, but other readers may take them otherwise (Assimp and ``.5``).
 
     What JSON refuses (a sign or a point JSON does not write: ``+1``, ``.5``, ``1.``;
     ``01``, ``nan``; strings, literals, objects) goes to numpy; so do blank runs, once

@@ -134,7 +134,6 @@ def _read(path: Path, size: int) -> str | None:
 
 def _mesh_problem(suffix: str, data: bytes) -> str | None:
     from servicebot_cli.description import mesh_readers
-    from servicebot_cli.description.mesh_obj_assimp import assimp_misread
     from servicebot_cli.description.safe_xml import declaration_first
     from servicebot_cli.kinematics.mesh_ply import read_ply
 
@@ -147,12 +146,8 @@ def _mesh_problem(suffix: str, data: bytes) -> str | None:
         if not (np.isfinite(lower).all() and np.isfinite(upper).all()):
             return _NOT_FINITE
         return None
-    if suffix == ".obj":
-        misread = assimp_misread(data)
-        if misread is not None:
-            return misread
     vertices, faces = (read_ply(data) if suffix == ".ply"
-                       else mesh_readers.read_indexed(suffix, data))
+                       else mesh_readers.read_indexed(suffix, data, as_assimp=True))
     if not len(faces):
         return _NO_TRIANGLES
     corners = vertices[faces]

@@ -15,7 +15,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from servicebot_cli.description.number_text import NumberListError, _as_json, numbers
+from servicebot_cli.description.number_text import NumberListError, plain_numbers, numbers
 from tests.check.corpus import erd_root, pybullet_urdfs
 
 
@@ -61,10 +61,10 @@ def test_edge_cases_read_as_numpy_reads_them(text, dtype):
 
 
 def test_plain_lists_take_the_json_path():
-    assert _as_json("0.5 -1.25e-05 3\n4", np.float64) is not None
-    assert _as_json("0 1 2\t3", np.int64) is not None
-    assert _as_json("-0 1", np.float64) is None
-    assert _as_json("1.0 2", np.int64) is None
+    assert plain_numbers("0.5 -1.25e-05 3\n4", np.float64) is not None
+    assert plain_numbers("0 1 2\t3", np.int64) is not None
+    assert plain_numbers("-0 1", np.float64) is None
+    assert plain_numbers("1.0 2", np.int64) is None
 
 
 _FORMATS = st.sampled_from(["{!r}", "{:.7g}", "{:.9e}", "{:.3f}", "{:g}", "{:.17g}"])
@@ -130,7 +130,7 @@ def test_lists_read_at_once_in_several_threads_are_each_their_own():
 
 
 def test_a_refused_list_leaves_the_parser_ready_for_the_next():
-    assert _as_json("1 true", np.float64) is None  # a JSON literal: not a number to numpy
-    assert _as_json("1 2.5", np.int64) is None  # a float where indices are wanted
-    assert _as_json("1 [2 3]", np.float64) is None  # nesting, which would be flattened
+    assert plain_numbers("1 true", np.float64) is None  # a JSON literal: not a number to numpy
+    assert plain_numbers("1 2.5", np.int64) is None  # a float where indices are wanted
+    assert plain_numbers("1 [2 3]", np.float64) is None  # nesting, which would be flattened
     assert numbers("4 5 6").tolist() == [4.0, 5.0, 6.0]

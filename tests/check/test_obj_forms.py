@@ -137,6 +137,6 @@ def test_exporters_forms_take_the_one_pass_path(text, counts):
 
     found = mesh_obj._in_runs(text)
     assert found is not None
-    (_, vertex_count), (face_text, face_count) = found
-    assert (vertex_count, face_count) == counts
+    ((_, vertex_count), (face_text, face_count)), dotted_textures = found
+    assert (vertex_count, face_count, dotted_textures) == (*counts, False)
     assert mesh_obj_faces._plain_corners(face_text, face_count) is not None
