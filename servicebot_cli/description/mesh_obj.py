@@ -159,8 +159,7 @@ def _refuse_misread(data: bytes, as_assimp: bool) -> None:
 
 
 def _obj_vertices(text: bytes, count: int, values: FloatArray) -> FloatArray:
-    """``x y z`` of ``count`` ``v`` lines (a fourth weight or vertex colours ignored), from
-    their ``values``."""
+    """``x y z`` of ``count`` ``v`` lines from their ``values`` (a weight, colours ignored)."""
     if len(values) == 3 * count:
         table: FloatArray = values.reshape(-1, 3)
         return table

@@ -15,7 +15,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from servicebot_cli.description.number_text import NumberListError, plain_numbers, numbers
+from servicebot_cli.description.number_text import NumberListError, numbers, plain_numbers
 from tests.check.corpus import erd_root, pybullet_urdfs
 
 
