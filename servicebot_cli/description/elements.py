@@ -23,9 +23,16 @@ ONE_AXIS_TYPES = ("revolute", "continuous", "prismatic")
 
 
 def parse_float(text: str | None) -> float | None:
-    """A float, ``None`` when absent, NaN when present but not a number."""
+    """A float, ``None`` when absent, NaN when present but not a number to urdfdom.
+
+    Python's ``float`` also reads ``1_000``, digits of other scripts (``０.１``) and blanks
+    after the number, all of which urdfdom refuses (check's SB013): NaN here, so that no
+    rule computes with a value the file does not give urdfdom.
+    """
     if text is None:
         return None
+    if "_" in text or not text.isascii() or text[-1:].isspace():
+        return math.nan
     try:
         return float(text)
     except ValueError:
