@@ -173,6 +173,8 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
         yield Issue("SB017", warning.removeprefix(f"{robot.display}: "),
                     where=(robot.display, 0, 0))
     found = list(syntax.check(robot.root))
+    if not robot.expanded:  # xacro's own parser turned such blanks into spaces already
+        found += syntax.vectors_split_wrong(robot.xml_text, robot.display)
     yield from found
     if any(i.code in ("SB008", "SB015") for i in found):
         return

@@ -20,6 +20,12 @@ from servicebot_cli.description.elements import FARTHEST_M
 
 _VERSION = re.compile(r"(\d+)\.(\d+)")
 _C_SPACES = " \t\n\r\f\v"  # what istringstream skips; not NBSP or other Unicode blanks
+_OTHER_BLANKS = re.compile(r"[\t\n\r\f\v]")
+_BLANK_IN_VALUE = re.compile(r"""=[ \t\n\r]*(?:"[^"]*[\t\n\r]|'[^']*[\t\n\r])""")
+_VECTOR_ATTRIBUTE = re.compile(
+    r"""(?<![\w:.-])(xyz|rpy|size|scale|rgba)[ \t\n\r]*=[ \t\n\r]*(?:"([^"]*)"|'([^']*)')""")
+_COMMENT = re.compile(r"<!--.*?-->", re.DOTALL)
+_TAG_NAME = re.compile(r"[A-Za-z_][\w:.-]*")
 MAX_LINKS = 20_000
 """Most links (or joints) checked; more is refused (SB015)."""
 
@@ -179,9 +185,60 @@ def _attributes(element: ET.Element, allowed: dict[str, int],
 @functools.lru_cache(maxsize=8192)  # "0 0 0", "1": the same values in file after file
 def _plain(value: str, count: int) -> bool:
     """Whether ``value`` is ``count`` finite numbers as urdfdom reads them."""
+    if count > 1 and _OTHER_BLANKS.search(value):
+        return False  # a tab or line break: see _split_by_urdfdom
     parts = [value.lstrip(_C_SPACES)] if count == 1 else value.split()
     return len(parts) == count and all(NUMBER.fullmatch(part) is not None
                                        and math.isfinite(float(part)) for part in parts)
+
+
+def _split_by_urdfdom(value: str) -> str | None:
+    """The first piece of a vector urdfdom cannot read for the blank in it, or None.
+
+    urdfdom splits ``xyz``, ``rpy``, ``size``, ``scale`` and ``rgba`` at spaces only, and
+    reads each piece as one number, blanks before it skipped, none after it allowed:
+    ``0<tab>0<tab>0.1`` is one piece, and ``0.1<line break>`` a number with a blank after it.
+    Gazebo, Pinocchio and robot_state_publisher then drop the element, or refuse a joint.
+    """
+    for piece in value.split(" "):
+        if piece and _OTHER_BLANKS.search(piece) and \
+                NUMBER.fullmatch(piece.lstrip(_C_SPACES)) is None:
+            return piece
+    return None
+
+
+def _blank_kind(piece: str) -> str:
+    return "a tab" if "\t" in piece else "a line break"
+
+
+def _shown(text: str) -> str:
+    """``text`` with its tabs and line breaks written as escapes."""
+    return text.replace("\t", "\\t").replace("\r", "\\r").replace("\n", "\\n")
+
+
+def vectors_split_wrong(text: str, display: str) -> Iterator[Issue]:
+    """SB013 for each vector attribute whose tab or line break urdfdom reads in a number.
+
+    Read from the file's text: an XML parser turns a tab or line break written inside an
+    attribute into a space, as the XML standard says; urdfdom's does not. A file with no
+    blank but a space inside an attribute value costs one search.
+    """
+    if _BLANK_IN_VALUE.search(text) is None:
+        return
+    text = _COMMENT.sub(lambda c: re.sub(r"[^\n]", " ", c[0]), text)  # offsets kept
+    for found in _VECTOR_ATTRIBUTE.finditer(text):
+        value = found[2] if found[2] is not None else found[3]
+        piece = _split_by_urdfdom(value)
+        if piece is None:
+            continue
+        line = text.count("\n", 0, found.start()) + 1
+        column = found.start() - text.rfind("\n", 0, found.start())
+        tag = _TAG_NAME.match(text, text.rfind("<", 0, found.start()) + 1)
+        name = tag[0] if tag is not None else "element"
+        yield Issue("SB013", f"<{name} {found[1]}=\"{_shown(value)}\">: {_blank_kind(piece)} "
+                    f"inside '{_shown(piece)}': urdfdom separates numbers by spaces only, so "
+                    f"it cannot read them", where=(display, line, column),
+                    fix="put single spaces between the numbers")
 
 
 def _number(element: ET.Element, key: str, value: str, count: int) -> Iterator[Issue]:
@@ -194,7 +251,13 @@ def _number(element: ET.Element, key: str, value: str, count: int) -> Iterator[I
     if _plain(value, count):
         return  # the common case, without building the message's text
     parts = [value.lstrip(_C_SPACES)] if count == 1 else value.split()
-    where = f"<{element.tag}{_named(element)} {key}=\"{value}\">"
+    where = f"<{element.tag}{_named(element)} {key}=\"{_shown(value)}\">"
+    piece = _split_by_urdfdom(value) if count > 1 else None
+    if piece is not None:  # written as &#9; or &#10;, which XML keeps
+        yield Issue("SB013", f"{where}: {_blank_kind(piece)} inside '{_shown(piece)}': "
+                    "urdfdom separates numbers by spaces only, so it cannot read them",
+                    element, fix="put single spaces between the numbers")
+        return
     if len(parts) != count:
         yield Issue("SB013", f"{where}: expected {count} numbers, found {len(parts)}", element)
         return

@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
+import subprocess
 from pathlib import Path
 
 import pytest
 
-from tests.check.corpus import check_urdf_drops
+from tests.check.corpus import check_urdf_commands, check_urdf_drops
 from tests.check.helpers import findings
 
 LINK = """<robot name="r">
@@ -52,25 +53,47 @@ def test_a_unicode_blank_before_a_number_is_refused_as_urdfdom_refuses_it(run, t
     assert [f["code"] for f in findings(result.stdout)] == ["SB013"]
 
 
-@pytest.mark.parametrize(("xyz", "shown", "kind"), [
+@pytest.mark.parametrize(("xyz", "piece", "kind"), [
     ("0\t0\t0.3", r"0\t0\t0.3", "tab"),
     ("0 0\n0.3", r"0\n0.3", "line break"),
+    ("0 0 0.3&#9;", r"0.3\t", "tab"),  # a character reference, which XML keeps as a tab
 ])
-def test_a_tab_inside_a_vector_is_named_at_its_element(run, tmp_path, xyz, shown, kind):
+def test_a_tab_inside_a_vector_is_named_at_its_element(run, tmp_path, xyz, piece, kind):
     """urdfdom splits ``xyz`` at spaces only and refuses ``0<tab>0<tab>0.3``; the XML parser
-    here reads the tab as a space, so the refusal pointed at <robot> and printed a valid-looking
-    ``[0 0 0.3]``."""
+    here reads a written tab as a space, so check passed such a file, or put SB701 on
+    ``<robot>`` and printed a valid-looking ``[0 0 0.3]``."""
     path = tmp_path / "robot.urdf"
     path.write_text('<robot name="r">\n  <link name="a"/>\n  <link name="b"/>\n'
                     '  <joint name="j" type="fixed"><parent link="a"/><child link="b"/>\n'
                     f'    <origin xyz="{xyz}"/>\n  </joint>\n</robot>\n')
     assert check_urdf_drops(path)
     result = run("check", path, "--format", "json", "--isolated")
-    (found,) = findings(result.stdout)
-    assert (found["code"], found["line"]) == ("SB701", 5)
-    assert found["message"] == (f"not a valid URDF: a vector value holds a {kind} ('{shown}'): "
-                                "urdfdom separates the numbers of xyz, rpy, scale and axis by "
-                                "spaces only")
-    assert found["fix"] == "put spaces between the numbers"
+    (found, skipped) = findings(result.stdout)
+    assert (found["code"], found["line"], skipped["code"]) == ("SB013", 5, "SB702")
+    assert found["message"].endswith(f"{kind} inside '{piece}': urdfdom separates numbers by "
+                                     "spaces only, so it cannot read them")
+    assert found["fix"] == "put single spaces between the numbers"
     shown_by_fk = run("fk", path)
-    assert shown_by_fk.exit_code == 2 and f"holds a {kind} ('{shown}')" in shown_by_fk.stderr
+    assert shown_by_fk.exit_code == 2 and f"holds a {kind} (" in shown_by_fk.stderr
+
+
+@pytest.mark.parametrize("element", [
+    '<inertial><origin xyz="0\t0\t0.1"/><mass value="5"/><inertia ixx="1" ixy="0" ixz="0" '
+    'iyy="1" iyz="0" izz="1"/></inertial>',
+    '<visual><geometry><box size="1\t1\t1"/></geometry></visual>',
+    '<collision><origin xyz="0\n0 0"/><geometry><sphere radius="1"/></geometry></collision>',
+    '<visual><geometry><sphere radius="1"/></geometry><material name="m"><color '
+    'rgba="1\t0\t0\t1"/></material></visual>',
+])
+def test_a_tab_that_makes_urdfdom_drop_an_element_fails(run, tmp_path, element):
+    """urdfdom logs 'Could not parse' and loads the robot without the element (check_urdf
+    still exits 0; Pinocchio builds it massless): the robot silently changes."""
+    path = tmp_path / "robot.urdf"
+    path.write_text(f'<robot name="r">\n  <link name="base">\n    {element}\n  </link>\n'
+                    '</robot>\n')
+    _, native, env = check_urdf_commands()
+    said = subprocess.run([*native, str(path)], capture_output=True, text=True, env=env)
+    assert "Could not parse" in said.stdout + said.stderr or "malformed color" in said.stderr
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB013")
+    assert result.exit_code == 1
+    assert [f["line"] for f in findings(result.stdout)] == [3]
