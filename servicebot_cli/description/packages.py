@@ -156,6 +156,9 @@ class PackageResolver:
             rel = unquote(rel)
             if not name:  # package:///abs: some loaders read it as a plain path
                 return self._rooted(rel, base_dir)
+            # package://pkg//meshes/x.stl: resource_retriever joins the two, and the path is
+            # the package's, not the root's
+            rel = rel.lstrip("/")
             location = (self._ros_location(name, base_dir)
                         or self._loader_location(name, base_dir)
                         or self._relative_location(name, rel, base_dir))

@@ -223,3 +223,12 @@ def test_a_ros2_workspace_checks_clean_from_anywhere(workspace, tmp_path):
     for cwd in (tmp_path, workspace, urdf.parent):
         result = run_servicebot("check", urdf, "--select", "SB4", cwd=cwd, env=NO_ROS)
         assert "SB401" not in result.stdout, (cwd, result.stdout)
+
+
+def test_a_doubled_slash_after_the_package_stays_in_the_package(workspace):
+    """package://foo_description//meshes/link.stl: resource_retriever joins the package's
+    directory and '//meshes/link.stl', which is the package's file; read as '/meshes/...',
+    it made SB401 'does not exist' on a file that is there."""
+    foo = workspace / "src" / "foo_description"
+    found = _resolver().resolve_uri("package://foo_description//meshes/link.stl", foo / "urdf")
+    assert found == foo / "meshes" / "link.stl" and found.is_file()
