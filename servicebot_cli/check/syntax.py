@@ -96,12 +96,25 @@ def _element_tree(top: ET.Element) -> Iterator[Issue]:
         yield from _empty_reference(element)
         if element.tag == "origin":
             yield from _far_origin(element)
+        elif element.tag == "joint":
+            yield from _empty_links(element)
         if element.tag == "dynamics" and not element.attrib.keys() & {"damping", "friction"}:
             yield Issue("SB012", "<dynamics> has neither damping nor friction", element,
                         fix="add damping=\"...\" or friction=\"...\", or remove <dynamics>")
 
 
 _FLOAT32_MAX = 3.4028234663852886e38  # past it, single-precision renderers hold infinity
+
+
+def _empty_links(joint: ET.Element) -> Iterator[Issue]:
+    """SB012 for a joint's ``<parent link="">`` or ``<child link="">``: urdfdom refuses it."""
+    for end in ("parent", "child"):
+        element = joint.find(end)
+        link = element.get("link") if element is not None else None
+        if element is not None and link is not None and not link.strip():
+            yield Issue("SB012", f"joint{_named(joint)} has <{end} link=\"{link}\">: it names no "
+                        "link, and urdfdom refuses the joint", element,
+                        fix=f"name the {end} link")
 
 
 def _far_origin(origin: ET.Element) -> Iterator[Issue]:

@@ -25,15 +25,17 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     edges: list[Joint] = []
     half_joined: set[str] = set()  # links a joint with a missing end names: SB103 says so
     for joint in robot.joints:
-        missing = [end for end in (joint.parent, joint.child) if end and end not in known]
-        if missing:
+        missing = [end for end in (joint.parent, joint.child)
+                   if end and end.strip() and end not in known]
+        unnamed = not (joint.parent or "").strip() or not (joint.child or "").strip()
+        if missing or unnamed:  # an end unnamed: SB012 says so
             half_joined |= {end for end in (joint.parent, joint.child) if end in known}
         for name in missing:
             role = "parent" if name == joint.parent else "child"
             hint = str(NameNotFound.for_name(name, links)).split("; ", 1)[-1]
             yield Issue("SB103", f"joint '{joint.name}' has {role} link '{name}', which does not "
                         f"exist; {hint}", joint.element)
-        if joint.parent and joint.child and not missing:
+        if not (missing or unnamed):
             edges.append(joint)
     yield from _parents(edges)
     yield from _loops(edges)
