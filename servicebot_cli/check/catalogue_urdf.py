@@ -167,7 +167,8 @@ URDF_RULES: tuple[Rule, ...] = (
     Rule("SB202", "missing-limits", E, "A revolute or prismatic joint without <limit>",
          "urdfdom refuses revolute and prismatic joints without limits; continuous joints "
          "need none.",
-         "Add <limit lower upper effort velocity>, or make the joint continuous."),
+         "Add <limit lower upper effort velocity> (a revolute joint that turns without end: "
+         "make it continuous)."),
     Rule("SB203", "lower-above-upper", W, "A lower limit above the upper limit",
          "pybullet reads lower > upper as 'no limit' and some pybullet_data models rely on "
          "it; urdfdom accepts it. Elsewhere no position satisfies the limits: MoveIt's "

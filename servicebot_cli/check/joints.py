@@ -120,7 +120,8 @@ def _limits(joint: Joint, simulator: str | None) -> Iterator[Issue]:
         if joint.type in ("revolute", "prismatic"):
             yield Issue("SB202", f"{joint.type} joint '{joint.name}' has no <limit>",
                         joint.element, fix='add <limit lower="..." upper="..." effort="..." '
-                        'velocity="..."/>, or make the joint continuous')
+                        'velocity="..."/>' + (", or make the joint continuous"
+                                              if joint.type == "revolute" else ""))
         return
     if not joint.movable:
         return
@@ -204,7 +205,8 @@ def _mimics(robot: RobotDescription) -> Iterator[Issue]:
         if target == joint.name:
             yield Issue("SB210", f"joint '{joint.name}' mimics itself", joint.element)
         elif target not in names:
-            hint = str(NameNotFound.for_name(target, names)).split("; ", 1)[-1]
+            others = [name for name in names if name != joint.name]  # not itself: SB210
+            hint = str(NameNotFound.for_name(target, others)).split("; ", 1)[-1]
             yield Issue("SB209", f"joint '{joint.name}' mimics '{target}', which does not "
                         f"exist; {hint}", joint.element)
         else:

@@ -97,3 +97,14 @@ def test_a_tab_that_makes_urdfdom_drop_an_element_fails(run, tmp_path, element):
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB013")
     assert result.exit_code == 1
     assert [f["line"] for f in findings(result.stdout)] == [3]
+
+
+@pytest.mark.parametrize("version", ["1.0", "01.0", "001.1", " 1.0", "+1.0", "1.02", "1.3",
+                                     "1.0 ", "2.0", "1", "1.x"])
+def test_a_robot_version_is_read_as_urdfdom_reads_it(run, tmp_path, version):
+    """urdfdom reads the two parts as unsigned numbers ("01.0" is 1.0), blanks before them
+    allowed, none after; 1.0 to 1.2 are supported."""
+    path = tmp_path / "robot.urdf"
+    path.write_text(f'<robot name="r" version="{version}"><link name="a"/></robot>')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB016")
+    assert (result.exit_code == 1) is check_urdf_drops(path)

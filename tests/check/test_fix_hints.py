@@ -1,0 +1,31 @@
+"""What a finding suggests fits the joint it is about."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.check.helpers import findings
+
+ARM = ('<robot name="r"><link name="a"/><link name="b"/><link name="c"/>'
+       '<joint name="j" type="{kind}"><parent link="a"/><child link="b"/>{limit}</joint>'
+       '<joint name="j2" type="revolute"><parent link="b"/><child link="c"/>'
+       '<limit lower="-1" upper="1" effort="1" velocity="1"/>{mimic}</joint></robot>')
+
+
+@pytest.mark.parametrize(("kind", "continuous"), [("revolute", True), ("prismatic", False)])
+def test_a_missing_limit_suggests_continuous_only_for_a_revolute_joint(run, tmp_path, kind,
+                                                                       continuous):
+    path = tmp_path / "r.urdf"
+    path.write_text(ARM.format(kind=kind, limit="", mimic=""))
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB202")
+    (found,) = findings(result.stdout)
+    assert ("continuous" in found["fix"]) is continuous
+
+
+def test_a_mimic_of_a_missing_joint_never_suggests_the_joint_itself(run, tmp_path):
+    """'j2x' on joint j2 suggested 'j2', which would mimic itself (SB210)."""
+    path = tmp_path / "r.urdf"
+    path.write_text(ARM.format(kind="fixed", limit="", mimic='<mimic joint="j2x"/>'))
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB209")
+    (found,) = findings(result.stdout)
+    assert found["message"].endswith("which does not exist; did you mean 'j'?")
