@@ -27,6 +27,8 @@ BREAKS: dict[str, str] = {
     "SB012": _URDFDOM + _OR_DROPS + " (a <mesh filename=\"\"> passes urdfdom, but Gazebo, "
              "RViz and Pinocchio's collision model cannot open it)",
     "SB013": _URDFDOM + _OR_DROPS,
+    "SB113": "urdfdom refuses the colour and drops the material ('not defined in file'): "
+             "RViz and Gazebo draw every link that uses it in their default colour",
     "SB014": _URDFDOM + "; Pinocchio and MuJoCo would compute with NaN",
     "SB019": "RViz and Gazebo hold poses in single precision: the link's place becomes "
              "infinity, and every pose computed from it after a rotation is NaN",

@@ -155,8 +155,9 @@ URDF_RULES: tuple[Rule, ...] = (
          "<gazebo> block). A named material with a colour in a link's visual is defined for "
          "the links after it, as urdfdom reads them (motoman's arms colour every link so).",
          "Define the material at the top level with a <color rgba>."),
-    Rule("SB113", "color-out-of-range", W, "An rgba component outside [0, 1]",
-         "Colours are four numbers between 0 and 1, not 0-255.",
+    Rule("SB113", "color-out-of-range", E, "An rgba component outside [0, 1]",
+         "Colours are four numbers between 0 and 1, not 0-255. urdfdom refuses any other "
+         "and drops the material: every link that uses it loses its colour.",
          "Divide 0-255 values by 255."),
     # -- joints ----------------------------------------------------------------------------------
     Rule("SB201", "unknown-joint-type", E, "A joint type URDF does not have",

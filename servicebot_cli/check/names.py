@@ -81,5 +81,6 @@ def _rgba(material: ET.Element) -> Iterator[Issue]:
     if len(values) == 4 and not all(0.0 <= v <= 1.0 for v in values):
         scaled = " ".join(f"{min(v / 255.0, 1.0):.3g}" if v > 1 else f"{v:g}" for v in values)
         yield Issue("SB113", f"rgba '{color.get('rgba')}' of material "
-                    f"'{material.get('name', '')}' is outside [0, 1]", color,
+                    f"'{material.get('name', '')}' is outside [0, 1]: urdfdom drops the "
+                    "material", color,
                     fix=f'rgba="{scaled}"')

@@ -7,6 +7,8 @@ the others, and check_urdf accepts the file. SB112 said "not defined at the top 
 
 from __future__ import annotations
 
+import subprocess
+
 import pytest
 
 from tests.check.corpus import check_urdf_commands
@@ -44,3 +46,18 @@ def test_a_colour_in_an_earlier_visual_defines_the_material(run, tmp_path, mater
     said = subprocess.run([*native, str(path)], capture_output=True, text=True, env=env)
     assert said.stdout.count("material 'blue' undefined") + said.stderr.count(
         "material 'blue' undefined") == 2 * undefined  # urdfdom prints each warning twice
+
+
+@pytest.mark.parametrize(("rgba", "dropped"), [("255 128 0 1", True), ("1.0000001 0 0 1", True),
+                                               ("-0.1 0 0 1", True), ("0.5 0.5 0.5 1", False)])
+def test_a_colour_outside_zero_to_one_is_an_error_as_urdfdom_drops_it(run, tmp_path, rgba,
+                                                                      dropped):
+    path = tmp_path / "r.urdf"
+    path.write_text(f'<robot name="r"><material name="m"><color rgba="{rgba}"/></material>'
+                    '<link name="a"><visual><geometry><sphere radius="1"/></geometry>'
+                    '<material name="m"/></visual></link></robot>')
+    _, native, env = check_urdf_commands()
+    said = subprocess.run([*native, str(path)], capture_output=True, text=True, env=env)
+    assert ("Material [m] not defined" in said.stderr) is dropped
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB113")
+    assert [f["severity"] for f in findings(result.stdout)] == (["error"] if dropped else [])
