@@ -27,6 +27,8 @@ BREAKS: dict[str, str] = {
     "SB012": _URDFDOM + _OR_DROPS + " (a <mesh filename=\"\"> passes urdfdom, but Gazebo, "
              "RViz and Pinocchio's collision model cannot open it)",
     "SB013": _URDFDOM + _OR_DROPS,
+    "SB407": "without <robot version=\"1.1\"> urdfdom drops the whole <visual> or "
+             "<collision> holding the capsule ('Could not parse'): Pinocchio and Gazebo lose it",
     "SB113": "urdfdom refuses the colour and drops the material ('not defined in file'): "
              "RViz and Gazebo draw every link that uses it in their default colour",
     "SB014": _URDFDOM + "; Pinocchio and MuJoCo would compute with NaN",

@@ -326,8 +326,10 @@ URDF_RULES += (
          "http:// and https:// meshes (Gazebo Fuel models) are fetched by Gazebo when the "
          "model loads; check never downloads them, so they are neither missing nor checked.",
          None),
-    Rule("SB407", "capsule", W, "A <capsule>, which URDF does not define",
-         "pybullet and Drake read capsules; urdfdom, Pinocchio, RViz and Gazebo Classic "
-         "ignore the shape, so the link has no collision there.",
-         "Use a cylinder and two spheres for tools that need them."),
+    Rule("SB407", "capsule", W, "A <capsule>, which URDF defines from version 1.1 on",
+         "urdfdom reads a capsule only in a <robot version=\"1.1\"> (or later): in any other "
+         "file it drops the whole <visual> or <collision>, and Pinocchio and Gazebo lose it "
+         "(an error). In a 1.1 file, urdfdom and Pinocchio read it, while older URDF readers "
+         "(ROS 1's, pybullet aside) drop the shape: a warning.",
+         "Set version=\"1.1\", or use a cylinder and two spheres."),
 )

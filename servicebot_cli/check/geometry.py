@@ -15,6 +15,7 @@ from servicebot_cli.check import values
 from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound, RemoteMesh
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.packages import FileTally
+from servicebot_cli.check.syntax import URDF_VERSION
 
 if TYPE_CHECKING:
     from servicebot_cli.description.elements import Link, Shape
@@ -37,6 +38,19 @@ def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
     yield from tally.issues()
 
 
+def _capsule(robot: RobotDescription, where: str, capsule: ET.Element) -> Issue:
+    """SB407: urdfdom reads a capsule only in a ``<robot version="1.1">`` or later."""
+    version = URDF_VERSION.fullmatch(robot.root.get("version") or "1.0")
+    if version is not None and (int(version[1]), int(version[2])) >= (1, 1):
+        return Issue("SB407", f"the {where} is a capsule: urdfdom (ROS 2) and Pinocchio read "
+                     "it in this URDF 1.1 file, older URDF readers drop the shape", capsule,
+                     fix="a cylinder and two spheres, for tools without URDF 1.1")
+    return Issue("SB407", f"the {where} is a capsule, which urdfdom reads only from URDF 1.1 "
+                 "on: here it drops the whole element, and Pinocchio and Gazebo lose it",
+                 capsule, severity=Severity.ERROR,
+                 fix='<robot version="1.1">, or a cylinder and two spheres')
+
+
 def _shape(robot: RobotDescription, link: Link, kind: str, shape: Shape,
            env: CheckEnv, tally: FileTally) -> Iterator[Issue]:
     element = shape.element.find("geometry") if shape.element is not None else None
@@ -50,8 +64,7 @@ def _shape(robot: RobotDescription, link: Link, kind: str, shape: Shape,
                     "sphere or mesh", element)
         return
     if found[0].tag == "capsule":
-        yield Issue("SB407", f"the {where} is a capsule, which only pybullet and Drake read",
-                    found[0])
+        yield _capsule(robot, where, found[0])
         return
     yield from _sizes(found[0], where, visual=kind == "visual")
     if found[0].tag == "mesh" and shape.geometry.filename and env.resolve_meshes:

@@ -18,7 +18,7 @@ from servicebot_cli.check.urdf_schema import EXTENSIONS, SPEC, TOP_LEVEL
 from servicebot_cli.check.values import NON_FINITE, NUMBER  # ASCII digits only, as urdfdom
 from servicebot_cli.description.elements import FARTHEST_M
 
-_VERSION = re.compile(r"[ \t\n\r\f\v]*\+?(\d+)\.(\d+)")  # as urdfdom reads two unsigned
+URDF_VERSION = re.compile(r"[ \t\n\r\f\v]*\+?(\d+)\.(\d+)")  # as urdfdom reads two unsigned
 _C_SPACES = " \t\n\r\f\v"  # what istringstream skips; not NBSP or other Unicode blanks
 _OTHER_BLANKS = re.compile(r"[\t\n\r\f\v]")
 _BLANK_IN_VALUE = re.compile(r"""=[ \t\n\r]*(?:"[^"]*[\t\n\r]|'[^']*[\t\n\r])""")
@@ -63,7 +63,7 @@ def _robot_attributes(root: ET.Element) -> Iterator[Issue]:
                     "gets none", root, fix='write name="my_robot"', severity=Severity.WARNING)
     version = root.get("version")
     if version is not None:
-        match = _VERSION.fullmatch(version)
+        match = URDF_VERSION.fullmatch(version)
         if not match:
             yield Issue("SB016", f"version '{version}' is not in the form x.y", root)
         elif not (int(match.group(1)) == 1 and int(match.group(2)) <= 2):
