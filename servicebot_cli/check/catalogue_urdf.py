@@ -275,7 +275,9 @@ URDF_RULES: tuple[Rule, ...] = (
     Rule("SB310", "inertia-without-mass", E, "Mass 0 with a non-zero inertia",
          "Inertia is the integral of r^2 dm: a body without mass has none. A link with "
          "<mass value=\"0\"> and non-zero moments is no body at all; each consumer reads it "
-         "differently (a massless frame, a body that turns but does not translate).",
+         "differently (a massless frame, a body that turns but does not translate). The "
+         "root link is the exception, a warning: pybullet reads its mass 0 as a base fixed "
+         "to the world (cartpole.urdf, kuka_iiwa), whose inertia moves nothing.",
          "Give the link its real mass, or zero the inertia for a massless frame."),
     # -- geometry and files ----------------------------------------------------------------------
     Rule("SB401", "mesh-not-found", E, "A mesh file cannot be found",

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -93,3 +94,16 @@ def test_a_product_of_inertia_that_is_only_rounding_is_written_as_0(run):
         largest = max(abs(values[k]) for k in ("ixx", "iyy", "izz"))
         products = [values.get(k, 0.0) for k in ("ixy", "ixz", "iyz")]
         assert all(v == 0 or abs(v) > 1e-9 * largest for v in products), fix
+
+
+def test_a_massless_root_with_inertia_is_pybullets_fixed_base_a_warning(run):
+    """pybullet's own cartpole.urdf and kuka_iiwa/model.urdf give the root link mass 0 and
+    an inertia (pybullet: a base fixed to the world); check_urdf and Pinocchio load them.
+    A moving link so written is still an error."""
+    import pybullet_data
+
+    path = Path(pybullet_data.getDataPath()) / "cartpole.urdf"
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB310")
+    (found,) = findings(result.stdout)
+    assert (found["severity"], result.exit_code) == ("warning", 0)
+    assert found["message"].startswith("root link 'slideBar' has mass 0")
