@@ -80,6 +80,13 @@ URDF_RULES: tuple[Rule, ...] = (
          "nan, inf and numbers too large for a double make every computation that touches "
          "them meaningless; urdfdom refuses them.",
          "Write a finite number."),
+    Rule("SB020", "ignored-duplicate", W, "A second element where URDF reads one",
+         "urdfdom reads a joint's <origin>, <parent>, <child>, <axis>, <limit>, <dynamics>, "
+         "<mimic>, <safety_controller> and <calibration>, a link's <inertial>, an "
+         "inertial's <origin>, <mass> and <inertia>, a visual's or collision's <origin>, "
+         "<geometry> and <material>, once: the first. A second one, meant as an override or "
+         "left from an edit, changes nothing, and is not judged further.",
+         "Merge the two, or remove the one you do not mean."),
     Rule("SB019", "far-origin", E, "An origin farther than any robot reaches",
          "An <origin xyz> beyond 1e6 m (1,000 km) is a typo or a wrong unit; servicebot's "
          "fk, ik and simulate refuse it. Past 3.4e38 m, where single precision ends, it is "

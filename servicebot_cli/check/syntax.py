@@ -81,9 +81,16 @@ def _element_tree(top: ET.Element) -> Iterator[Issue]:
         spec = SPEC[element.tag]
         yield from _attributes(element, spec.attributes, spec.required)
         present = set()
+        once = _READ_ONCE.get(element.tag, ())
         for child in _read_children(element):
             if _is_extension(child.tag):
                 continue
+            if child.tag in present and child.tag in once:
+                yield Issue("SB020", f"<{element.tag}>{_named(element)} has a second "
+                            f"<{child.tag}>: urdfdom, and Gazebo, Pinocchio and "
+                            "robot_state_publisher through it, read the first and ignore this "
+                            "one", child, fix="merge the two, or remove the one you do not mean")
+                continue  # not read, so not judged
             present.add(child.tag)
             if child.tag in spec.children:
                 stack.append(child)
@@ -103,6 +110,16 @@ def _element_tree(top: ET.Element) -> Iterator[Issue]:
                         fix="add damping=\"...\" or friction=\"...\", or remove <dynamics>")
 
 
+_READ_ONCE = {
+    "joint": ("origin", "parent", "child", "axis", "limit", "dynamics", "mimic",
+              "safety_controller", "calibration"),
+    "link": ("inertial",),
+    "inertial": ("origin", "mass", "inertia"),
+    "visual": ("origin", "geometry", "material"),
+    "collision": ("origin", "geometry"),
+    "material": ("color", "texture"),
+}
+"""Children urdfdom reads once (its FirstChildElement): a second one is ignored (SB020)."""
 _FLOAT32_MAX = 3.4028234663852886e38  # past it, single-precision renderers hold infinity
 
 
