@@ -85,6 +85,8 @@ def _element_tree(top: ET.Element) -> Iterator[Issue]:
         for child in _read_children(element):
             if _is_extension(child.tag):
                 continue
+            if element.tag == "joint" and child.tag in _UNREAD.get(element.get("type", ""), ()):
+                continue  # urdfdom does not read it for this type: nothing to judge
             if child.tag in present and child.tag in once:
                 yield Issue("SB020", f"<{element.tag}>{_named(element)} has a second "
                             f"<{child.tag}>: urdfdom, and Gazebo, Pinocchio and "
@@ -110,6 +112,8 @@ def _element_tree(top: ET.Element) -> Iterator[Issue]:
                         fix="add damping=\"...\" or friction=\"...\", or remove <dynamics>")
 
 
+_UNREAD = {"fixed": ("axis",), "floating": ("axis",)}  # its <limit> it reads, for any type
+"""A joint's children urdfdom does not read for its type."""
 _READ_ONCE = {
     "joint": ("origin", "parent", "child", "axis", "limit", "dynamics", "mimic",
               "safety_controller", "calibration"),

@@ -108,3 +108,15 @@ def test_a_robot_version_is_read_as_urdfdom_reads_it(run, tmp_path, version):
     path.write_text(f'<robot name="r" version="{version}"><link name="a"/></robot>')
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB016")
     assert (result.exit_code == 1) is check_urdf_drops(path)
+
+
+@pytest.mark.parametrize(("kind", "read"), [("fixed", False), ("floating", False),
+                                            ("planar", True), ("continuous", True)])
+def test_an_axis_is_judged_only_where_urdfdom_reads_it(run, tmp_path, kind, read):
+    path = tmp_path / "robot.urdf"
+    path.write_text(f'<robot name="r"><link name="a"/><link name="b"/><joint name="j" '
+                    f'type="{kind}"><parent link="a"/><child link="b"/><axis xyz="a b c"/>'
+                    '</joint></robot>')
+    assert check_urdf_drops(path) is read
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB013")
+    assert (result.exit_code == 1) is read
