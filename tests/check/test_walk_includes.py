@@ -185,3 +185,23 @@ def test_a_robot_whose_every_includer_needs_a_launch_argument_is_checked_alone(r
     (src / "bot_gazebo" / "urdf" / "sim.xacro").write_text(sim.replace("$(arg use_sim)", "1"))
     result = run("check", src, "--isolated", "--format", "json")
     assert [Path(f["file"]).name for f in json.loads(result.stdout)["files"]] == ["sim.xacro"]
+
+
+def test_a_part_hung_from_its_includers_links_is_not_checked_alone(run, tmp_path):
+    """stretch's stretch_aruco.xacro hangs from base_link and link_lift of the robot file
+    that includes it; that file could not be expanded (an include the repository lacks),
+    and checked alone the part gave SB103 for every link it hangs from."""
+    src = tmp_path / "ws" / "src"
+    _package(src, "bot_description", {
+        "urdf/robot.xacro": (f'<robot name="bot" {XACRO_NS}><link name="base_link"/>'
+                             '<xacro:include filename="missing_wrist.xacro"/>'
+                             '<xacro:include filename="markers.xacro"/></robot>'),
+        "urdf/markers.xacro": (f'<robot name="markers" {XACRO_NS}><link name="marker"/>'
+                               '<joint name="m" type="fixed"><parent link="base_link"/>'
+                               '<child link="marker"/></joint><link name="marker2"/>'
+                               '<joint name="m2" type="fixed"><parent link="link_lift"/>'
+                               '<child link="marker2"/></joint></robot>')})
+    result = run("check", src, "--isolated", "--format", "json")
+    reports = {Path(f["file"]).name: [x["code"] for x in f["findings"]]
+               for f in json.loads(result.stdout)["files"]}
+    assert reports == {"robot.xacro": ["SB001"]}
