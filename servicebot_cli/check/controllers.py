@@ -20,9 +20,9 @@ if TYPE_CHECKING:
     from servicebot_cli.kinematics.drive_geometry import DriveGeometry
 
 TOLERANCE = 0.01
+"""Relative difference allowed between the YAML and the URDF's wheel numbers."""
 CALIBRATED = 0.10
 """Within this, a wheel value off the URDF's may be odometry calibrated to the floor: a warning."""
-"""Relative difference allowed between the YAML and the URDF's wheel numbers."""
 
 ROS2_CONTROLLERS = frozenset((
     "ackermann_steering_controller", "admittance_controller", "bicycle_steering_controller",

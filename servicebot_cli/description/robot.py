@@ -252,7 +252,7 @@ class RobotDescription:
                     f"{check_hint(self.display, self.xacro_args)}")
 
     def refuse_far_origins(self) -> None:
-        """Refuse an ``<origin>`` farther than :data:`~.elements.FARTHEST_M` (check's SB217).
+        """Refuse an ``<origin>`` farther than :data:`~.elements.FARTHEST_M` (check's SB019).
 
         Each pose past it is computed from a number no robot measures, and overflows to
         infinity once rotated or squared (``1e308``).
