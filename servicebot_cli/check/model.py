@@ -7,9 +7,10 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.syntax import vectors_split_wrong
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.common.forked import WorkerEnded
-from servicebot_cli.description.model import vector_with_other_blanks
+from servicebot_cli.description.model import refused_for_blanks
 
 if TYPE_CHECKING:
     from servicebot_cli.check.model_ahead import ModelAhead
@@ -27,16 +28,15 @@ def check(robot: RobotDescription, ahead: ModelAhead | None = None) -> Iterator[
     refused = _refusal(robot, ahead)
     if refused is not None:
         text = _HINT.sub("", refused.removeprefix(f"{robot.display}: "))
-        piece = vector_with_other_blanks(text)
-        if piece is None:
+        if not refused_for_blanks(text):
             yield Issue("SB701", text, robot.root)
             return
-        # the parser here reads a tab in an attribute as a space, as XML says; urdfdom's does not
-        as_read = re.sub(r"\r\n|[\t\n\r]", " ", piece)
-        element = next((element for element in robot.root.iter()
-                        if any(as_read in value for value in element.attrib.values())),
-                       robot.root)
-        yield Issue("SB701", text, element, fix="put spaces between the numbers")
+        # the XML parser here reads a written tab as a space, as XML says; urdfdom's does not:
+        # the file's text says where (SB013's own search, when that rule is not selected)
+        found = None if robot.expanded else next(
+            iter(vectors_split_wrong(robot.xml_text, robot.display)), None)
+        yield Issue("SB701", text, None if found else robot.root,
+                    where=found.where if found else None, fix="put spaces between the numbers")
 
 
 def _refusal(robot: RobotDescription, ahead: ModelAhead | None) -> str | None:

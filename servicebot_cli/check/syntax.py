@@ -16,7 +16,7 @@ from collections.abc import Iterator
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.urdf_schema import EXTENSIONS, SPEC, TOP_LEVEL
 from servicebot_cli.check.values import NON_FINITE, NUMBER  # ASCII digits only, as urdfdom
-from servicebot_cli.description.elements import FARTHEST_M
+from servicebot_cli.description.elements import FARTHEST_M, escaped_blanks
 
 URDF_VERSION = re.compile(r"[ \t\n\r\f\v]*\+?(\d+)\.(\d+)")  # as urdfdom reads two unsigned
 _C_SPACES = " \t\n\r\f\v"  # what istringstream skips; not NBSP or other Unicode blanks
@@ -241,13 +241,13 @@ def _split_by_urdfdom(value: str) -> str | None:
     return None
 
 
-def _blank_kind(piece: str) -> str:
-    return "a tab" if "\t" in piece else "a line break"
-
-
-def _shown(text: str) -> str:
-    """``text`` with its tabs and line breaks written as escapes."""
-    return text.replace("\t", "\\t").replace("\r", "\\r").replace("\n", "\\n")
+def _split_wrong(attribute: str, piece: str, element: ET.Element | None = None,
+                 where: tuple[str, int, int] | None = None) -> Issue:
+    """SB013 for ``piece`` of the vector ``attribute`` (as shown), split by urdfdom."""
+    kind = "a tab" if "\t" in piece else "a line break"
+    return Issue("SB013", f"{attribute}: {kind} inside '{escaped_blanks(piece)}': urdfdom "
+                 "separates numbers by spaces only, so it cannot read them", element,
+                 where=where, fix="put single spaces between the numbers")
 
 
 def vectors_split_wrong(text: str, display: str) -> Iterator[Issue]:
@@ -269,10 +269,8 @@ def vectors_split_wrong(text: str, display: str) -> Iterator[Issue]:
         column = found.start() - text.rfind("\n", 0, found.start())
         tag = _TAG_NAME.match(text, text.rfind("<", 0, found.start()) + 1)
         name = tag[0] if tag is not None else "element"
-        yield Issue("SB013", f"<{name} {found[1]}=\"{_shown(value)}\">: {_blank_kind(piece)} "
-                    f"inside '{_shown(piece)}': urdfdom separates numbers by spaces only, so "
-                    f"it cannot read them", where=(display, line, column),
-                    fix="put single spaces between the numbers")
+        yield _split_wrong(f"<{name} {found[1]}=\"{escaped_blanks(value)}\">", piece,
+                           where=(display, line, column))
 
 
 def _number(element: ET.Element, key: str, value: str, count: int) -> Iterator[Issue]:
@@ -285,12 +283,10 @@ def _number(element: ET.Element, key: str, value: str, count: int) -> Iterator[I
     if _plain(value, count):
         return  # the common case, without building the message's text
     parts = [value.lstrip(_C_SPACES)] if count == 1 else value.split()
-    where = f"<{element.tag}{_named(element)} {key}=\"{_shown(value)}\">"
+    where = f"<{element.tag}{_named(element)} {key}=\"{escaped_blanks(value)}\">"
     piece = _split_by_urdfdom(value) if count > 1 else None
     if piece is not None:  # written as &#9; or &#10;, which XML keeps
-        yield Issue("SB013", f"{where}: {_blank_kind(piece)} inside '{_shown(piece)}': "
-                    "urdfdom separates numbers by spaces only, so it cannot read them",
-                    element, fix="put single spaces between the numbers")
+        yield _split_wrong(where, piece, element)
         return
     if len(parts) != count:
         yield Issue("SB013", f"{where}: expected {count} numbers, found {len(parts)}", element)

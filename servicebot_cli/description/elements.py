@@ -39,6 +39,11 @@ def parse_float(text: str | None) -> float | None:
         return math.nan
 
 
+def escaped_blanks(text: str) -> str:
+    """``text`` with its tabs and line breaks written as ``\\t``, ``\\r`` and ``\\n``."""
+    return text.replace("\t", "\\t").replace("\r", "\\r").replace("\n", "\\n")
+
+
 @functools.lru_cache(maxsize=4096)  # "0 0 0" and "1 1 1" fill most files
 def parse_vec3(text: str | None, default: Vec3 | None = ZERO3) -> Vec3 | None:
     """Three floats from ``"x y z"``; NaNs when malformed, ``default`` when absent."""

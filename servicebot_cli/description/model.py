@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.common.native_stderr import captured_fd2
+from servicebot_cli.description.elements import escaped_blanks
 
 if TYPE_CHECKING:
     import pinocchio as pin
@@ -75,27 +76,21 @@ _URDFDOM_ERROR = re.compile(r"Error:(.*?)(?:\n\s+at line \d|(?=\nError:)|\Z)", r
 # urdfdom splits a vector at spaces alone; a tab or line break stays inside a piece
 _VECTOR_PIECE = re.compile(r"Unable to parse component \[(.*?[\t\n\r].*?)\] to a double "
                            r"\(while parsing a vector value\)", re.DOTALL)
-
-
-def vector_with_other_blanks(message: str) -> str | None:
-    """The vector text, as written, of a refusal :func:`build_model` made for a tab in it."""
-    found = _SHOWN_PIECE.search(message)
-    if found is None:
-        return None
-    return found[1].replace("\\t", "\t").replace("\\r", "\r").replace("\\n", "\n")
-
 _SPACES_ONLY = "urdfdom separates the numbers of xyz, rpy, scale and axis by spaces only"
-_SHOWN_PIECE = re.compile(r"a vector value holds a [a-z ]+ \('(.*?)'\): " + _SPACES_ONLY)
+
+
+def refused_for_blanks(message: str) -> bool:
+    """Whether :func:`build_model` refused for a tab or line break inside a vector."""
+    return _SPACES_ONLY in message
 
 
 def _spaces_only(match: re.Match[str]) -> str:
     """The refusal of ``0<tab>0<tab>0.3`` by urdfdom, with the tab named and shown."""
     piece = match[1]
-    shown = piece.replace("\t", "\\t").replace("\r", "\\r").replace("\n", "\\n")
     kinds = [name for char, name in (("\t", "tab"), ("\n", "line break"), ("\r", "line break"))
              if char in piece]
-    return (f"a vector value holds a {' and a '.join(dict.fromkeys(kinds))} ('{shown}'): "
-            f"{_SPACES_ONLY}")
+    return (f"a vector value holds a {' and a '.join(dict.fromkeys(kinds))} "
+            f"('{escaped_blanks(piece)}'): {_SPACES_ONLY}")
 
 
 def build_model(xml_text: str, display: str, base: str = "fixed",

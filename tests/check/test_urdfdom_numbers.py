@@ -120,3 +120,16 @@ def test_an_axis_is_judged_only_where_urdfdom_reads_it(run, tmp_path, kind, read
     assert check_urdf_drops(path) is read
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB013")
     assert (result.exit_code == 1) is read
+
+
+def test_sb701_alone_points_at_the_origin_that_holds_the_tab(run, tmp_path):
+    """With SB013 not selected, Pinocchio's refusal is placed by the file's text: it was put
+    on the first element whose value read the same with spaces (a visual origin above)."""
+    path = tmp_path / "robot.urdf"
+    path.write_text('<robot name="r">\n  <link name="a"><visual><origin xyz="0 0 0"/>'
+                    '<geometry><sphere radius="1"/></geometry></visual></link>\n'
+                    '  <link name="b"/>\n  <joint name="j" type="fixed"><parent link="a"/>'
+                    '<child link="b"/>\n    <origin xyz="0\t0\t0"/>\n  </joint>\n</robot>\n')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB701")
+    (found,) = findings(result.stdout)
+    assert (found["code"], found["line"], found["column"]) == ("SB701", 5, 13)
