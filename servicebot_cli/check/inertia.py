@@ -15,6 +15,8 @@ from servicebot_cli.check.simulators import simulated_by
 from servicebot_cli.kinematics.transforms import rpy_matrix
 
 if TYPE_CHECKING:
+    import xml.etree.ElementTree as ET
+
     from servicebot_cli.description.elements import Link
     from servicebot_cli.description.robot import RobotDescription
 
@@ -40,7 +42,7 @@ def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
                 or not values.plain_numbers(inertial.element)):
             continue  # SB012/SB013/SB014 report it
         if inertial.mass_kg == 0.0 and any(moments):
-            yield _inertia_without_mass(link, link.name == robot.root_link)
+            yield _inertia_without_mass(link.name, inertial.element, link.name == robot.root_link)
             continue
         physical = yield from _possible(link, moments, link.name in moved)
         if physical and _mass(link) > 0 and values.bounded((_mass(link),), values.LARGEST_INERTIA):
@@ -55,17 +57,15 @@ def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
                     "if KDL users matter")
 
 
-def _inertia_without_mass(link: Link, root: bool) -> Issue:
+def _inertia_without_mass(name: str, element: ET.Element | None, root: bool) -> Issue:
     """SB310; a warning for the root link, which pybullet's mass 0 makes a fixed base."""
     if root:  # cartpole.urdf, kuka_iiwa/model.urdf: every consumer loads them as written
-        return Issue("SB310", f"root link '{link.name}' has mass 0 and a non-zero inertia: "
+        return Issue("SB310", f"root link '{name}' has mass 0 and a non-zero inertia: "
                      "pybullet reads mass 0 as a base fixed to the world, and a fixed base's "
-                     "inertia moves nothing; a base that moves needs its mass",
-                     link.inertial.element if link.inertial else link.element,
+                     "inertia moves nothing; a base that moves needs its mass", element,
                      fix="give the link its real mass if the robot is not fixed to the world",
                      severity=Severity.WARNING)
-    return Issue("SB310", f"link '{link.name}' has mass 0 and a non-zero inertia",
-                 link.inertial.element if link.inertial else link.element,
+    return Issue("SB310", f"link '{name}' has mass 0 and a non-zero inertia", element,
                  fix="give the link its real mass, or zero the inertia (or remove the "
                  "<inertial>) for a massless frame")
 

@@ -139,6 +139,11 @@ class RobotDescription:
         return tuple(s for block in self.gazebo for s in block.sensors)
 
     @cached_property
+    def model_plugins(self) -> tuple[ext.Plugin, ...]:
+        """The plugins of the ``<gazebo>`` blocks that name no link: the model's own."""
+        return tuple(p for block in self.gazebo if block.reference is None for p in block.plugins)
+
+    @cached_property
     def plugins(self) -> tuple[ext.Plugin, ...]:
         """Every Gazebo ``<plugin>``: model-level ones, then those inside sensors."""
         model_level = [p for block in self.gazebo for p in block.plugins]

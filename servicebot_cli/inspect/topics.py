@@ -9,6 +9,7 @@ listed as a device, since the motors are reached through it.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
@@ -132,15 +133,20 @@ def device_topics(hardware: tuple[HardwareInfo, ...]) -> list[TopicInfo]:
 def plugin_topics(plugins: tuple[PluginInfo, ...]) -> list[TopicInfo]:
     """What the model-level Gazebo plugins of a known kind consume and publish."""
     rows = []
-    for info in plugins:
-        if info.attached_to != "model":
-            continue
-        plugin = Plugin(info.name, info.filename, tuple((p.name, p.value) for p in info.params))
+    for info, plugin in _model_plugins(plugins):
         source = f"Gazebo plugin {info.filename or info.name} (model)"
         rows += [TopicInfo(direction, "topic", name, message, info.name or info.filename,
                            source, note)
                  for direction, name, message, note in model_plugin_rows(plugin)]
     return rows
+
+
+def _model_plugins(plugins: tuple[PluginInfo, ...]) -> Iterator[tuple[PluginInfo, Plugin]]:
+    """Each model-level plugin of ``plugins``, as listed and as the description reads it."""
+    for info in plugins:
+        if info.attached_to == "model":
+            yield info, Plugin(info.name, info.filename,
+                               tuple((p.name, p.value) for p in info.params))
 
 
 def topics_info(sensors: tuple[SensorInfo, ...], hardware: tuple[HardwareInfo, ...],
@@ -151,9 +157,7 @@ def topics_info(sensors: tuple[SensorInfo, ...], hardware: tuple[HardwareInfo, .
     ``gazebo``: the description's Gazebo plugins (``PluginsInfo.gazebo``); the model-level
     ones that drive the base or publish joint states add their topics.
     """
-    manager = manager_node(Plugin(info.name, info.filename,
-                                  tuple((p.name, p.value) for p in info.params))
-                           for info in gazebo if info.attached_to == "model")
+    manager = manager_node(plugin for _, plugin in _model_plugins(gazebo))
     rows = (controller_topics(controllers, manager) if controllers else []) \
         + plugin_topics(gazebo) + device_topics(hardware) + sensor_topics(sensors)
     return tuple(sorted(rows, key=lambda r: r.direction != "in"))

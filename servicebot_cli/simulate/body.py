@@ -282,8 +282,7 @@ def _model_imu(robot: RobotDescription, placement: Placement) -> Mounted[ImuSpec
     that is not in the model stops it (nothing is published).
     """
     links = {link.name for link in robot.links}
-    found = next((found for block in robot.gazebo if block.reference is None
-                  for plugin in block.plugins for found in [model_imu(plugin)]
+    found = next((found for plugin in robot.model_plugins for found in [model_imu(plugin)]
                   if found and found[0] in links), None)
     if found is None:
         return None

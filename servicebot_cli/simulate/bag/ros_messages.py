@@ -79,16 +79,14 @@ def absolute(topic: str | None, fallback: str) -> str:
 
 
 def odom_topic(controllers: ControllersFile) -> str | None:
-    """Where the diff-drive controller of ``controllers`` publishes odometry (``~/odom``).
+    """Where the base's controller of ``controllers`` publishes odometry.
 
-    A Gazebo drive plugin's topic when the plugin drives the base; None when it publishes
-    none.
+    The diff-drive controller's ``~/odom`` as the controllers file names it, or a Gazebo
+    drive plugin's topic when the plugin drives the base; None when it publishes none.
     """
     if not controllers.publishes_odometry:
         return None
-    if controllers.odom_topic:
-        return controllers.odom_topic
-    return f"/{controllers.name}/odom" if controllers.name else ODOM_TOPIC
+    return controllers.odom_topic or ODOM_TOPIC  # a controllers file names its diff drive's
 
 
 def odom_frames(controllers: ControllersFile, body: SimRobot) -> tuple[str, str]:

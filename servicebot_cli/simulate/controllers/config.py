@@ -57,7 +57,8 @@ class ControllersFile:
     source: str | None = None
     """Where the values come from, when not from ``path`` (a Gazebo drive plugin)."""
     odom_topic: str | None = None
-    """Where odometry is published, when not ``/NAME/odom``."""
+    """Where odometry is published (the diff drive's ``~/odom``, named in the ros2_control
+    plugin's namespace); None: the simulator's default, when it publishes any."""
     publishes_odometry: bool = True
     """False when the base's controller publishes no Odometry (a Classic diff-drive plugin
     without ``<publish_odom>true``, a controllers file without a diff drive, or none)."""

@@ -78,8 +78,7 @@ def joint_state_topics(robot: RobotDescription, controllers: ControllersFile) ->
     topics = list(controllers.joint_state_topics)
     notes: list[str] = []
     sources: list[Plugin] = []
-    for plugin in (p for block in robot.gazebo if block.reference is None
-                   for p in block.plugins):
+    for plugin in robot.model_plugins:
         before = len(topics)
         _plugin_topics(robot, plugin, topics, notes)
         sources += [plugin] * (len(topics) > before)

@@ -76,8 +76,7 @@ def controllers_for(robot: RobotDescription, explicit: str | None) -> Controller
         ControllersFileError: An unreadable file, or a parameter that is not a number.
     """
     named = named_controllers_file(robot, explicit)
-    manager = manager_node(plugin for block in robot.gazebo if block.reference is None
-                           for plugin in block.plugins)
+    manager = manager_node(robot.model_plugins)
     from_file = None if named is None else read_controllers_file(named, manager)
     plugin = drive_plugin(robot) if from_file is None or from_file.name is None else None
     if plugin is not None:
@@ -103,8 +102,7 @@ def controllers_for(robot: RobotDescription, explicit: str | None) -> Controller
 
 def drive_plugin(robot: RobotDescription) -> Plugin | None:
     """The first model-level Gazebo plugin that drives a differential base, or None."""
-    return next((plugin for block in robot.gazebo if block.reference is None
-                 for plugin in block.plugins if diff_drive_kind(plugin)), None)
+    return next((plugin for plugin in robot.model_plugins if diff_drive_kind(plugin)), None)
 
 
 def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFile:
