@@ -79,7 +79,7 @@ def _possible(link: Link, values: tuple[float, ...],
     on a link a joint moves. A link fixed to others (anymal's dummy ``base``) is lumped with
     them by Gazebo (sdformat) and Pinocchio, so only the sum has to be a body: a warning there.
     """
-    moments = np.linalg.eigvalsh(solids.tensor(values))
+    moments = solids.principal_moments(values)
     scale = float(np.abs(moments).max())
     shown = ", ".join(f"{m:.6g}" for m in moments)
     element = link.inertial.element if link.inertial else None
@@ -147,7 +147,7 @@ def _against_geometry(robot: RobotDescription, link: Link, env: CheckEnv) -> Ite
     want = np.linalg.eigvalsh(expected)
     if not want.min() > 0:
         return  # a flat solid: no inertia to compare with
-    have = np.linalg.eigvalsh(solids.tensor(inertial.inertia_kg_m2))
+    have = solids.principal_moments(inertial.inertia_kg_m2)
     with np.errstate(all="ignore"):  # a mass of 1e-320 kg: moments beyond a double's range
         ratios = have / want
         worst = float(max(ratios.max(), 1.0 / ratios.min()))

@@ -107,3 +107,18 @@ def test_a_massless_root_with_inertia_is_pybullets_fixed_base_a_warning(run):
     (found,) = findings(result.stdout)
     assert (found["severity"], result.exit_code) == ("warning", 0)
     assert found["message"].startswith("root link 'slideBar' has mass 0")
+
+
+@pytest.mark.parametrize("exponent", [-200, -160, -60, -9, -3, 0, 4, 12, 60, 160, 200])
+def test_principal_moments_of_a_diagonal_are_lapacks_bits(exponent):
+    """The sorted diagonal stands for LAPACK's eigenvalues only where it gives the same bits."""
+    from servicebot_cli.check.solids import principal_moments, tensor
+
+    rng = np.random.default_rng(exponent + 1000)
+    for _ in range(300):
+        diagonal = rng.uniform(-1, 1, 3) * 10.0 ** exponent * rng.choice([1.0, 0.0, -0.0], 3)
+        values = (diagonal[0], 0.0, 0.0, diagonal[1], 0.0, diagonal[2])
+        lapack = np.linalg.eigvalsh(tensor(values))
+        assert principal_moments(values).tobytes() == lapack.tobytes(), values
+    turned = (1.0, 0.2, 0.0, 2.0, 0.0, 3.0)  # not diagonal: LAPACK's own answer
+    assert principal_moments(turned).tobytes() == np.linalg.eigvalsh(tensor(turned)).tobytes()
