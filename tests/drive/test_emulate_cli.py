@@ -61,6 +61,21 @@ def test_a_link_to_a_pty_in_use_is_never_touched(run, tmp_path, fake_device):
     assert os.readlink(link) == device.path
 
 
+def test_a_link_older_than_the_pty_it_names_is_a_dead_emulators(run, tmp_path, fake_device):
+    """The pty number of a killed emulator, since taken by another program: replaced."""
+    device = fake_device()  # made after the link, as a program that got the freed number
+    link = tmp_path / "tty"
+    link.symlink_to(device.path)
+    made_s = os.stat(device.path).st_ctime
+    os.utime(link, (made_s - 60, made_s - 60), follow_symlinks=False)  # the link: a minute older
+    result = run("emulate", "--link", link, "--die-after-s", "0.3")
+    assert result.exit_code == 0, result.output
+    assert "in use" not in result.output
+    assert str(link) in result.stdout  # announced as the emulator's device
+    assert not link.is_symlink()  # and removed when it stopped
+    assert os.path.exists(device.path)  # the other program's pty is left alone
+
+
 def test_a_robot_the_binary_protocol_cannot_carry(run, tmp_path):
     from tests.conftest import REAL_URDF
 

@@ -245,14 +245,15 @@ def link_problem(link: Path) -> str:
     """Why ``link`` may not become the emulator's symlink; empty when it may.
 
     A free path may, and so may a stale link an emulator left behind: a symlink to a
-    pseudo-terminal that no longer exists (its emulator was killed). Anything else is not
-    ours: a file, a directory, another symlink, or a link to a pty in use.
+    pseudo-terminal that no longer exists (its emulator was killed), or to one made after the
+    link, which another program got with the dead emulator's number. Anything else is not
+    ours: a file, a directory, another symlink, or a link to the pty it was made for, in use.
     """
     if not os.path.lexists(link):
         return ""
     if os.path.islink(link):
         target = os.readlink(link)
-        if target.startswith(PTS_DIR) and not os.path.exists(target):
+        if target.startswith(PTS_DIR) and not _made_before(target, link):
             return ""
         if target.startswith(PTS_DIR):
             return (f"links to {target}, which is in use (another emulator?); stop that "
@@ -261,6 +262,19 @@ def link_problem(link: Path) -> str:
     if os.path.isdir(link):
         return "is a directory; give the path of a link to make"
     return "already exists and is not an emulator's link; give another path (it is left as is)"
+
+
+def _made_before(device: str, link: Path) -> bool:
+    """Whether the pseudo-terminal ``device`` exists and was made before ``link`` was.
+
+    An emulator makes its pty, then the link. A pty whose inode is newer than the link
+    (its change time is set when the kernel makes it) is another's that got a freed number.
+    """
+    try:
+        made_ns = os.stat(device).st_ctime_ns
+    except OSError:
+        return False
+    return made_ns <= os.lstat(link).st_mtime_ns
 
 
 def _counts(state: State) -> str:
