@@ -271,10 +271,10 @@ def _made_before(device: str, link: Path) -> bool:
     (its change time is set when the kernel makes it) is another's that got a freed number.
     """
     try:
-        made_ns = os.stat(device).st_ctime_ns
-    except OSError:
+        made_ns, linked_ns = os.stat(device).st_ctime_ns, os.lstat(link).st_mtime_ns
+    except OSError:  # no such pty (or the link went meanwhile): nothing in use
         return False
-    return made_ns <= os.lstat(link).st_mtime_ns
+    return made_ns <= linked_ns
 
 
 def _counts(state: State) -> str:
