@@ -10,7 +10,7 @@ listed as a device, since the motors are reached through it.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from servicebot_cli.description.extensions import Plugin
@@ -47,12 +47,24 @@ class TopicInfo:
     note: str | None = None
 
 
+_UNSTAMPED = "~/cmd_vel_unstamped"
+_UNSTAMPED_NOTE = (f"Humble subscribes {_UNSTAMPED} when use_stamped_vel is false; remap it to "
+                   "~/cmd_vel")
+
+
+def _unstamped_note(manager: PluginNode | None, controller: str) -> str:
+    """:data:`_UNSTAMPED_NOTE`, or where the plugin's own remap rule already sends that topic."""
+    remapped = controller_topic(manager, controller, _UNSTAMPED)
+    if manager is None or remapped == controller_topic(replace(manager, rules=()), controller,
+                                                       _UNSTAMPED):
+        return _UNSTAMPED_NOTE
+    return (f"Humble subscribes {_UNSTAMPED} when use_stamped_vel is false, which the "
+            f"ros2_control plugin remaps to {remapped}")
+
+
 def _diff_drive(c: Controller) -> list[tuple[str, str, str, str, str | None]]:
     stamped = c.params.get("use_stamped_vel", True) is not False
-    note = None if stamped else (
-        "Humble subscribes ~/cmd_vel_unstamped when use_stamped_vel is false; "
-        "remap it to ~/cmd_vel"
-    )
+    note = None if stamped else _UNSTAMPED_NOTE
     rows = [("in", "topic", "~/cmd_vel",
              "geometry_msgs/msg/TwistStamped" if stamped else "geometry_msgs/msg/Twist", note),
             ("out", "topic", "~/odom", "nav_msgs/msg/Odometry", None)]
@@ -104,6 +116,8 @@ def controller_topics(controllers: Controllers,
         source = f"{file_name}: {c.name} ({c.type})"
         for direction, kind, name, message, note in derive(c):
             resolved = controller_topic(manager, c.name, name)
+            if note == _UNSTAMPED_NOTE:
+                note = _unstamped_note(manager, c.name)
             rows.append(TopicInfo(direction, kind, resolved, message, c.name, source, note))
     return rows
 

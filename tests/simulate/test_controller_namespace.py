@@ -41,6 +41,19 @@ def test_inspect_names_controller_topics_in_the_plugins_namespace(tmp_path):
     assert not {name for _, name in listed} & {"/diff_controller/odom", "/joint_states"}
 
 
+@pytest.mark.parametrize(("rule", "expected"), [
+    ("~/cmd_vel_unstamped:=platform/cmd_vel_unstamped",  # clearpath_common's gazebo.urdf.xacro
+     "which the ros2_control plugin remaps to /robot1/platform/cmd_vel_unstamped"),
+    ("~/odom:=odom", "remap it to ~/cmd_vel"),  # no rule for it: the advice stands
+])
+def test_the_unstamped_note_follows_the_plugins_own_remap(tmp_path, rule, expected):
+    robot = _namespaced(tmp_path, f"<namespace>robot1</namespace><remapping>{rule}</remapping>")
+    [cmd_vel] = [t for t in listed_topics(robot) if t["name"].endswith("/cmd_vel")]
+    assert cmd_vel["note"].startswith("Humble subscribes ~/cmd_vel_unstamped when "
+                                      "use_stamped_vel is false")
+    assert cmd_vel["note"].endswith(expected)
+
+
 def test_simulate_publishes_there_with_the_namespaces_frames(tmp_path):
     pytest.importorskip("rosbags")
     robot = _namespaced(tmp_path, "<namespace>/robot1</namespace>")
