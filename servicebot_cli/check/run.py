@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from servicebot_cli.check import files, model_ahead, workers
-from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.findings import Finding, Issue
 from servicebot_cli.check.result import CheckResult
 from servicebot_cli.check.runner import FileReport, place_issues
 from servicebot_cli.check.settings import Settings, find_pyproject, load_settings
@@ -115,12 +115,20 @@ def run(request: CheckRequest) -> CheckResult:
                   if not named and any(f.code in _NOT_EXPANDED for f in report.findings)}
     alone = [_walked(path, request.targets) for path, by in left_out.items()
              if by and {str(includer) for includer in by} <= unexpanded]
-    # a part that hangs from links of the robot including it (stretch's aruco markers) is
-    # no robot alone: its SB103s on those parents would be false; a whole robot (andino) is
     reports += [report for report in _check_urdfs(alone, request.targets, settings)
-                if not any(f.code == "SB103" and " has parent link '" in f.message
-                           for f in report.findings)]
+                if not any(_no_robot_alone(f) for f in report.findings)]
     return CheckResult(tuple(reports), settings.strict, includes_only)
+
+
+def _no_robot_alone(finding: Finding) -> bool:
+    """Whether a file its includers could not expand is, by ``finding``, no robot alone.
+
+    A part that hangs from links of the robot including it (stretch's aruco markers) gets
+    SB103 on those parents; a file of constants (unitree's const.xacro, properties and an
+    include) gets SB109. A whole robot (andino) gets neither, and is checked alone.
+    """
+    return finding.code == "SB109" or (finding.code == "SB103"
+                                        and " has parent link '" in finding.message)
 
 
 _NOT_EXPANDED = ("SB001", "SB006", "SB007")  # an include missing, xacro failed, no package

@@ -187,6 +187,29 @@ def test_a_robot_whose_every_includer_needs_a_launch_argument_is_checked_alone(r
     assert [Path(f["file"]).name for f in json.loads(result.stdout)["files"]] == ["sim.xacro"]
 
 
+def test_a_file_of_constants_whose_includer_needs_an_argument_is_not_checked_alone(run,
+                                                                                   tmp_path):
+    """unitree_ros's aliengoZ1 robot.xacro needs DEBUG:=, which its launch files pass; the
+    const.xacro it includes (a named robot of properties and one include) was then checked
+    alone, and failed with SB109 "the robot has no <link>"."""
+    src = tmp_path / "ws" / "src"
+    _package(src, "dog_description", {
+        "xacro/robot.xacro": (f'<robot name="dog" {XACRO_NS}><xacro:include '
+                              'filename="$(find dog_description)/xacro/const.xacro"/>'
+                              '<xacro:if value="$(arg DEBUG)"><link name="debug"/></xacro:if>'
+                              '<link name="trunk"/></robot>'),
+        "xacro/const.xacro": (f'<robot name="dog" {XACRO_NS}>'
+                              '<xacro:include filename="base_const.xacro"/>'
+                              '<xacro:property name="offset" value="${length / 2}"/></robot>'),
+        "xacro/base_const.xacro": (f'<robot name="base" {XACRO_NS}>'
+                                   '<xacro:property name="length" value="0.5"/></robot>')})
+    result = run("check", src, "--isolated", "--format", "json")
+    reports = {Path(f["file"]).name: [x["code"] for x in f["findings"]]
+               for f in json.loads(result.stdout)["files"]}
+    assert reports == {"robot.xacro": ["SB006"]}  # DEBUG: check it by name with DEBUG:=...
+    assert result.exit_code == 0, result.stdout
+
+
 def test_a_part_hung_from_its_includers_links_is_not_checked_alone(run, tmp_path):
     """stretch's stretch_aruco.xacro hangs from base_link and link_lift of the robot file
     that includes it; that file could not be expanded (an include the repository lacks),
