@@ -170,10 +170,19 @@ def _axis(joint: Joint) -> Iterator[Issue]:
     if norm == 0.0:
         yield Issue("SB207", f"{joint.type} joint '{joint.name}' has axis 0 0 0", joint.element,
                     fix='write the axis, e.g. <axis xyz="0 0 1"/>')
-    elif abs(norm - 1.0) > 1e-6:
+    elif abs(norm - 1.0) > _AXIS_ROUNDING:
         unit = " ".join(f"{c / norm:.6g}" for c in (x, y, z))
-        yield Issue("SB208", f"joint '{joint.name}' axis has length {norm:.6g}, not 1",
+        yield Issue("SB208", f"joint '{joint.name}' axis has length {norm:.8g}, not 1",
                     joint.element, fix=f'<axis xyz="{unit}"/>')
+
+
+_AXIS_ROUNDING = 1e-4
+"""How far from 1 an axis's length may be from the rounding of its written digits.
+
+A CAD export's ``0.041054 0 -0.99916`` (length 1.0000031) and a hand-written 45 degrees,
+``0.7071 0 0.7071`` (0.99999), are unit axes written with five or four digits: a tool that
+does not normalise them moves the joint a hundred-thousandth too far or short.
+"""
 
 
 def _safety(joint: Joint) -> Iterator[Issue]:

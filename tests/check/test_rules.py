@@ -75,3 +75,23 @@ def test_a_joint_to_a_missing_link_is_one_finding_not_two(run, tmp_path):
     codes = [f["code"] for f in findings(result.stdout) if f["severity"] == "error"]
     assert codes == ["SB103"]
     assert "parent link 'world', which does not exist" in findings(result.stdout)[0]["message"]
+
+
+@pytest.mark.parametrize(("axis", "message"), [
+    ("0.041054 0 -0.99916", None),  # ugv_gazebo_sim's ranger_mini: a CAD export, 1.0000031
+    ("0.7071 0 0.7071", None),  # 45 degrees with four digits: 0.99999
+    ("0 0 1.001", "axis has length 1.001, not 1"),
+    ("0.6 0 0.8002", "axis has length 1.00016, not 1"),  # shown with the digits that differ
+])
+def test_an_axis_is_a_unit_vector_up_to_its_written_digits(run, tmp_path, axis, message):
+    from tests.conftest import SIM_URDF
+
+    robot = tmp_path / "r.urdf"
+    text = SIM_URDF.read_text()
+    assert '<axis xyz="0 0 1"/>' in text
+    robot.write_text(text.replace('<axis xyz="0 0 1"/>', f'<axis xyz="{axis}"/>', 1))
+    done = run("check", "urdf", str(robot), "--format", "json", "--isolated")
+    found = [f["message"] for f in findings(done.stdout) if f["code"] == "SB208"]
+    assert found == ([] if message is None else [found[0]])
+    if message is not None:
+        assert found[0].endswith(message)
