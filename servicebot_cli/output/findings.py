@@ -42,18 +42,26 @@ def text_lines(result: CheckResult, colour: bool = False,
                packages: bool = False) -> Iterator[str]:
     """Compiler-style lines, ``file:line:col: severity CODE message``, then a summary.
 
-    With ``packages``, the packages each file uses come before the summary.
+    With ``packages``, the packages each file uses come before the summary. Of several
+    files, a finding in another file than the one checked (a xacro include's) names the
+    one checked, unless its macro calls lead there: two robots including one macro file can
+    both fail in it.
     """
-    for finding in result.findings:
-        level = finding.severity.value
-        code = f"{finding.code} [{RULES[finding.code].name}]"
-        if colour:
-            level = click.style(level, fg=_COLOURS[finding.severity], bold=True)
-            code = click.style(code, bold=True)
-        yield f"{finding.location()}: {level} {code} {finding.message}"
-        yield from _call_lines(finding)
-        if finding.fix:
-            yield f"    fix: {finding.fix}"
+    several = len(result.reports) > 1
+    for report in result.reports:
+        for finding in report.findings:
+            level = finding.severity.value
+            code = f"{finding.code} [{RULES[finding.code].name}]"
+            if colour:
+                level = click.style(level, fg=_COLOURS[finding.severity], bold=True)
+                code = click.style(code, bold=True)
+            yield f"{finding.location()}: {level} {code} {finding.message}"
+            yield from _call_lines(finding)
+            if several and finding.file != report.file and not (
+                    finding.calls and finding.calls[-1].startswith(f"{report.file}:")):
+                yield f"    while checking {report.file}"  # (unless a call above says so)
+            if finding.fix:
+                yield f"    fix: {finding.fix}"
     if packages:
         yield from package_lines(result)
     summary = result.summary()

@@ -228,3 +228,27 @@ def test_a_part_hung_from_its_includers_links_is_not_checked_alone(run, tmp_path
     reports = {Path(f["file"]).name: [x["code"] for x in f["findings"]]
                for f in json.loads(result.stdout)["files"]}
     assert reports == {"robot.xacro": ["SB001"]}
+
+
+def test_a_defect_in_a_shared_include_names_the_robot_checked(run, tmp_path):
+    """ros2_kortex: two robot files include kortex_robot.xacro, which fails on a parameter
+    both pass; the text report printed the same include's line twice, naming neither robot."""
+    src = tmp_path / "ws" / "src"
+    macro = (f'<robot {XACRO_NS}><xacro:macro name="arm" params="prefix">'
+             '<link name="${prefix}base"/></xacro:macro>'
+             '<xacro:macro name="load_robot" params="prefix">'
+             '<xacro:arm prefix="${prefix}" gripper="none"/></xacro:macro></robot>')
+    robot = (f'<robot name="{{}}" {XACRO_NS}><xacro:include filename="arm.xacro"/>'
+             '<xacro:load_robot prefix="{{}}_"/></robot>')
+    _package(src, "arm_description", {"urdf/arm.xacro": macro,
+                                       "urdf/left.urdf.xacro": robot.format("left", "left"),
+                                       "urdf/right.urdf.xacro": robot.format("right", "right")})
+    result = run("check", src, "--isolated")
+    lines = result.stdout.splitlines()
+    failing = [i for i, line in enumerate(lines) if " error SB006 " in line]
+    assert len(failing) == 2 and all("arm.xacro:" in lines[i] for i in failing)
+    assert sorted(lines[i + 1].strip() for i in failing) == [
+        f"while checking {src / 'arm_description/urdf/left.urdf.xacro'}",
+        f"while checking {src / 'arm_description/urdf/right.urdf.xacro'}"]
+    one = run("check", src / "arm_description/urdf/left.urdf.xacro", "--isolated")
+    assert "while checking" not in one.stdout  # one file named: the report is its own
