@@ -5,7 +5,8 @@ servicebot checks the whole corpus in one call (worker processes: one per core; 
 --jobs 1; and with --mesh-cache, once the cache holds every mesh); check_urdf (urdfdom) runs
 once per file,
 both as the pip-installed command (a Python wrapper from cmeel-urdfdom) and as the native
-binary it wraps. servicebot is timed with every rule, and with the URDF rules only (no mesh
+binary it wraps, run from Python (the fastest way to loop) and from a bash loop (as a CI
+script runs it). servicebot is timed with every rule, and with the URDF rules only (no mesh
 files read: --ignore SB4,SB301), which is closer to what check_urdf looks at. Last, a single
 UR5 check from a cold process. Medians of REPEATS runs of the wall time, and of the CPU
 time (user + system, every process) that a shared machine disturbs less; a ratio is a
@@ -42,6 +43,11 @@ from tests.check.corpus import (  # noqa: E402
 
 SERVICEBOT = [sys.executable, "-m", "servicebot_cli", "check", "urdf", "--isolated",
               "--format", "json", "--package", f"example-robot-data={erd_root()}"]
+
+
+# what a CI step writes: ``for f in urdf/*.urdf; do check_urdf "$f"; done`` (bash forks a
+# copy of itself for each file, where Python's subprocess uses vfork)
+_SHELL_LOOP = 'command=$1; shift; for f; do "$command" "$f" >/dev/null 2>&1; done'
 
 
 def _cpu_s() -> float:
@@ -94,6 +100,9 @@ def main(repeats: int = 3) -> None:
                 _median(repeats, [wrapper + [f] for f in files], env),
             "check_urdf (native binary), once per file":
                 _median(repeats, [native + [f] for f in files], native_env),
+            "check_urdf (native binary), from a shell loop": _median(
+                repeats, [["bash", "-c", _SHELL_LOOP, "check_urdf", *native, *files]],
+                native_env),
         }
         single = {
             "servicebot check urdf ur5_robot.urdf (cold process)":
