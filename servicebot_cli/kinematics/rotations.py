@@ -14,6 +14,7 @@ whole chunk of poses in one call. Pure numpy.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -46,12 +47,18 @@ def matrix_from_rpy(rpy_rad: FloatArray) -> FloatArray:
     cr, sr = np.cos(a[..., 0]), np.sin(a[..., 0])
     cp, sp = np.cos(a[..., 1]), np.sin(a[..., 1])
     cy, sy = np.cos(a[..., 2]), np.sin(a[..., 2])
-    rows = [
-        [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
-        [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
-        [-sp, cp * sr, cp * cr],
-    ]
+    rows = rpy_rows(cr, sr, cp, sp, cy, sy)
     return np.stack([np.stack(row, axis=-1) for row in rows], axis=-2)
+
+
+def rpy_rows(cr: Any, sr: Any, cp: Any, sp: Any, cy: Any, sy: Any) -> list[list[Any]]:
+    """The rows of ``Rz(yaw) @ Ry(pitch) @ Rx(roll)``, from the angles' cosines and sines.
+
+    Floats for one matrix, arrays for many: the same products either way.
+    """
+    return [[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+            [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+            [-sp, cp * sr, cp * cr]]
 
 
 def quaternion_from_matrix(rotation: FloatArray) -> FloatArray:

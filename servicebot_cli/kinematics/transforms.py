@@ -8,6 +8,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.description.elements import Pose
+from servicebot_cli.kinematics.rotations import rpy_rows
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -22,9 +23,7 @@ def rpy_matrix(roll_rad: float, pitch_rad: float, yaw_rad: float) -> FloatArray:
     cr, sr = float(np.cos(roll_rad)), float(np.sin(roll_rad))
     cp, sp = float(np.cos(pitch_rad)), float(np.sin(pitch_rad))
     cy, sy = float(np.cos(yaw_rad)), float(np.sin(yaw_rad))
-    return np.array([[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
-                     [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
-                     [-sp, cp * sr, cp * cr]])
+    return np.array(rpy_rows(cr, sr, cp, sp, cy, sy))
 
 
 def pose_matrix(pose: Pose) -> FloatArray:
