@@ -56,10 +56,7 @@ def text_lines(result: CheckResult, colour: bool = False,
                 level = click.style(level, fg=_COLOURS[finding.severity], bold=True)
                 code = click.style(code, bold=True)
             yield f"{finding.location()}: {level} {code} {finding.message}"
-            yield from _call_lines(finding)
-            if several and finding.file != report.file and not (
-                    finding.calls and finding.calls[-1].startswith(f"{report.file}:")):
-                yield f"    while checking {report.file}"  # (unless a call above says so)
+            yield from _context_lines(finding, report.file if several else None)
             if finding.fix:
                 yield f"    fix: {finding.fix}"
     if packages:
@@ -71,6 +68,19 @@ def text_lines(result: CheckResult, colour: bool = False,
 
 
 _MOST_CALLS_SHOWN = 4
+
+
+def _context_lines(finding: Finding, checked: str | None) -> Iterator[str]:
+    """Where the finding's element came from: its macro calls, then the file ``checked``.
+
+    ``checked`` (None: one file in the run) is named when the finding lies in another
+    file and no macro call leads back to it: two robots including one macro file can both
+    fail in it, at one line.
+    """
+    yield from _call_lines(finding)
+    if checked is not None and finding.file != checked and not (
+            finding.calls and finding.calls[-1].startswith(f"{checked}:")):
+        yield f"    while checking {checked}"
 
 
 def _call_lines(finding: Finding) -> Iterator[str]:
@@ -147,9 +157,14 @@ def _escape_property(text: str) -> str:
 
 
 def github_lines(result: CheckResult) -> Iterator[str]:
-    """GitHub Actions workflow commands: ``::error file=F,line=L,col=C,title=T::message``."""
+    """GitHub Actions workflow commands: ``::error file=F,line=L,col=C,title=T::message``.
+
+    The message's later lines (``%0A``) are the text report's: the macro calls that made
+    the element, and the file checked when it is not the finding's own.
+    """
     levels = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
-    for finding in result.findings:
+    several = len(result.reports) > 1
+    for report, finding in ((r, f) for r in result.reports for f in r.findings):
         level = "error" if result.fails(finding) else levels[finding.severity]
         properties = [f"file={_escape_property(finding.file)}"]
         if finding.line:
@@ -158,7 +173,10 @@ def github_lines(result: CheckResult) -> Iterator[str]:
                 properties.append(f"col={finding.column}")
         title = f"{finding.code} {RULES[finding.code].name}"
         properties.append(f"title={_escape_property(title)}")
-        message = finding.message + (f" (fix: {finding.fix})" if finding.fix else "")
+        context = [line.strip() for line in _context_lines(finding,
+                                                           report.file if several else None)]
+        message = "\n".join([finding.message + (f" (fix: {finding.fix})" if finding.fix else ""),
+                              *context])
         yield f"::{level} {','.join(properties)}::{_escape_data(message)}"
     yield result.summary()
 

@@ -252,3 +252,11 @@ def test_a_defect_in_a_shared_include_names_the_robot_checked(run, tmp_path):
         f"while checking {src / 'arm_description/urdf/right.urdf.xacro'}"]
     one = run("check", src / "arm_description/urdf/left.urdf.xacro", "--isolated")
     assert "while checking" not in one.stdout  # one file named: the report is its own
+    annotations = [line for line in run("check", src, "--isolated", "--format",
+                                         "github").stdout.splitlines() if "SB006" in line]
+    assert len(annotations) == 2 and all(
+        line.startswith(f"::error file={src / 'arm_description/urdf/arm.xacro'},")
+        for line in annotations)  # one line each, the robot checked after an escaped break
+    assert sorted(line.rsplit("%0A", 1)[1] for line in annotations) == [
+        f"while checking {src / 'arm_description/urdf/left.urdf.xacro'}",
+        f"while checking {src / 'arm_description/urdf/right.urdf.xacro'}"]
