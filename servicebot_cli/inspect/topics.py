@@ -62,9 +62,13 @@ def _unstamped_note(manager: PluginNode | None, controller: str) -> str:
             f"ros2_control plugin remaps to {remapped}")
 
 
-def _diff_drive(c: Controller) -> list[tuple[str, str, str, str, str | None]]:
+Row = tuple[str, str, str, str, str | None]
+"""direction, kind, name (before the manager's namespace and remap rules), message, note."""
+
+
+def _diff_drive(c: Controller, manager: PluginNode | None) -> list[Row]:
     stamped = c.params.get("use_stamped_vel", True) is not False
-    note = None if stamped else _UNSTAMPED_NOTE
+    note = None if stamped else _unstamped_note(manager, c.name)
     rows = [("in", "topic", "~/cmd_vel",
              "geometry_msgs/msg/TwistStamped" if stamped else "geometry_msgs/msg/Twist", note),
             ("out", "topic", "~/odom", "nav_msgs/msg/Odometry", None)]
@@ -73,19 +77,19 @@ def _diff_drive(c: Controller) -> list[tuple[str, str, str, str, str | None]]:
     return rows
 
 
-def _trajectory(c: Controller) -> list[tuple[str, str, str, str, str | None]]:
+def _trajectory(c: Controller, manager: PluginNode | None) -> list[Row]:
     return [("in", "topic", "~/joint_trajectory", "trajectory_msgs/msg/JointTrajectory", None),
             ("in", "action", "~/follow_joint_trajectory",
              "control_msgs/action/FollowJointTrajectory", None)]
 
 
-def _joint_states(c: Controller) -> list[tuple[str, str, str, str, str | None]]:
+def _joint_states(c: Controller, manager: PluginNode | None) -> list[Row]:
     local = c.params.get("use_local_topics", False) is True
     prefix = "~/" if local else ""  # relative: in the controller manager's namespace
     return [("out", "topic", f"{prefix}joint_states", "sensor_msgs/msg/JointState", None)]
 
 
-def _commands(c: Controller) -> list[tuple[str, str, str, str, str | None]]:
+def _commands(c: Controller, manager: PluginNode | None) -> list[Row]:
     return [("in", "topic", "~/commands", "std_msgs/msg/Float64MultiArray", None)]
 
 
@@ -114,10 +118,8 @@ def controller_topics(controllers: Controllers,
         if derive is None:
             continue
         source = f"{file_name}: {c.name} ({c.type})"
-        for direction, kind, name, message, note in derive(c):
+        for direction, kind, name, message, note in derive(c, manager):
             resolved = controller_topic(manager, c.name, name)
-            if note == _UNSTAMPED_NOTE:
-                note = _unstamped_note(manager, c.name)
             rows.append(TopicInfo(direction, kind, resolved, message, c.name, source, note))
     return rows
 
