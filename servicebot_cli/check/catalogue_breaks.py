@@ -100,6 +100,8 @@ BREAKS: dict[str, str] = {
     "SB604": "diff_drive_controller accepts it and turns at the wrong rate",
     "SB605": "diff_drive_controller turns the robot the wrong way",
     "SB606": "the controller fails to claim an interface of a joint that cannot move",
+    "SB607": "the controller manager refuses to activate the controller (the interface is "
+             "not available), and the joints it should move stay still",
     "SB701": "Pinocchio refuses the description",
 }
 """For each rule that is (or can be) an error, what breaks."""

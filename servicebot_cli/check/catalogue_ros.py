@@ -98,6 +98,16 @@ ROS_RULES = (
          "Swap the names between left_wheel_names and right_wheel_names."),
     Rule("SB606", "controller-fixed-joint", E, "A controller commands a joint that cannot move",
          "The joint is fixed in the URDF.", "Remove it from the controller."),
+    Rule("SB607", "controller-interface", E,
+         "A controller claims an interface the URDF's <ros2_control> does not export",
+         "The controller manager activates a controller once the hardware exports every "
+         "interface it claims: diff_drive_controller each wheel's velocity command and its "
+         "position state (velocity with position_feedback false), "
+         "joint_trajectory_controller its command_interfaces and state_interfaces, "
+         "forward_command_controller its interface_name, the JointGroup controllers the "
+         "interface of their type. A URDF without <ros2_control> joints is not judged: its "
+         "hardware is described elsewhere.",
+         "Export the interface in the joint's <ros2_control> entry, or claim one it exports."),
     # -- model -----------------------------------------------------------------------------------
     Rule("SB701", "model-build", E, "Pinocchio cannot build the model",
          "Every servicebot command builds the same Pinocchio model; this is what Pinocchio "

@@ -1,4 +1,4 @@
-"""Controller configuration rules: a ros2_control controllers YAML against a URDF (SB601-SB606).
+"""Controller configuration rules: a ros2_control controllers YAML against a URDF (SB601-SB607).
 
 Pure: YAML text and a RobotDescription in, issues out, each placed at its YAML line.
 """
@@ -16,6 +16,7 @@ from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
 
 if TYPE_CHECKING:
+    from servicebot_cli.check.controller_interfaces import Claim
     from servicebot_cli.description.robot import RobotDescription
     from servicebot_cli.kinematics.drive_geometry import DriveGeometry
 
@@ -48,6 +49,7 @@ def check(found: Sections, display: str, robot: RobotDescription) -> Iterator[Is
         if name != "controller_manager" and _names_joints(types.get(name)):
             for section in checker.for_this_robot(params):
                 yield from checker.section(name, section)
+                yield from checker.interfaces(name, types.get(name), section)
 
 
 def _names_joints(controller_type: str | None) -> bool:
@@ -84,6 +86,7 @@ class _Checker:
         self.controllers = controllers
         self.joints = {j.name: j for j in robot.joints}
         self._geometry: DriveGeometry | None | str = None
+        self._exported: dict[str, dict[str, list[str]]] | None = None
 
     def where(self, node: yaml.Node) -> tuple[str, int, int]:
         return (self.display, node.start_mark.line + 1, node.start_mark.column + 1)
@@ -154,6 +157,65 @@ class _Checker:
             elif not joint.movable:
                 yield Issue("SB606", f"{section}.{key}: joint '{item.value}' is {joint.type} "
                             "in the URDF", where=self.where(item))
+
+    def exported(self) -> dict[str, dict[str, list[str]]]:
+        """Each joint's exported interfaces by kind (``command``, ``state``).
+
+        Of every ``<ros2_control>`` block: one joint may be in two (an actuator and a sensor).
+        """
+        if self._exported is None:
+            self._exported = {}
+            for block in self.robot.ros2_control:
+                for item in block.joints:
+                    kinds = self._exported.setdefault(item.name, {"command": [], "state": []})
+                    for kind, interfaces in (("command", item.command_interfaces),
+                                             ("state", item.state_interfaces)):
+                        kinds[kind] += [i.name for i in interfaces if i.name not in kinds[kind]]
+        return self._exported
+
+    def interfaces(self, section: str, controller_type: str | None,
+                   params: yaml.MappingNode) -> Iterator[Issue]:
+        """SB607 for what the controller claims and the URDF's ``<ros2_control>`` lacks.
+
+        Only where the URDF has ``<ros2_control>`` joints (else the hardware is described
+        elsewhere), and for URDF joints that can move (a fixed one is SB606; an unknown one
+        SB602; a chained controller's reference is that controller's, not the hardware's).
+        """
+        from servicebot_cli.check.controller_interfaces import claims
+
+        exported = self.exported()
+        if controller_type is None or not exported:
+            return
+        absent: dict[str, Claim] = {}
+        lacking: dict[tuple[str, str, int], list[Claim]] = {}
+        for claim in claims(controller_type, params):
+            name = str(claim.joint.value)
+            joint = self.joints.get(name)
+            if joint is None or not joint.movable or _substituted(claim.interface) \
+                    or self.not_a_joint(name):
+                continue
+            if name not in exported:
+                absent.setdefault(name, claim)
+            elif claim.interface not in exported[name][claim.kind]:
+                lacking.setdefault((claim.kind, claim.interface, id(claim.named_at)),
+                                   []).append(claim)
+        for name, claim in absent.items():
+            yield Issue("SB607", f"{section}.{claim.key}: joint '{name}' is in no "
+                        f"<ros2_control> of {self.robot.display}: the hardware exports none of "
+                        f"its interfaces, and the controller manager cannot activate {section}",
+                        where=self.where(claim.joint),
+                        fix=f"add '{name}' with its interfaces to the URDF's <ros2_control>")
+        for (kind, interface, _), found in lacking.items():
+            names = list(dict.fromkeys(str(c.joint.value) for c in found))
+            which = (f"joint '{names[0]}'" if len(names) == 1
+                     else "joints " + ", ".join(f"'{n}'" for n in names))
+            yield Issue("SB607", f"{section} claims the {kind} interface '{interface}' of "
+                        f"{which}, which {self.robot.display} does not export "
+                        f"({_exports(exported, names, kind)}): the controller manager cannot "
+                        "activate it",
+                        where=self.where(found[0].named_at),
+                        fix=f"add <{kind}_interface name=\"{interface}\"/> to the joint's "
+                        "<ros2_control> entry, or claim an interface it exports")
 
     def not_a_joint(self, name: str) -> bool:
         """A name that is not a URDF joint's and is right as written.
@@ -245,6 +307,16 @@ class _Checker:
                     + (" (a calibration to the floor, if on purpose)" if calibrated else ""),
                     where=self.where(node), fix=f"{key}: {expected:.6g}",
                     severity=Severity.WARNING if calibrated else None)
+
+
+def _exports(exported: dict[str, dict[str, list[str]]], names: list[str], kind: str) -> str:
+    """What the joints ``names`` export of ``kind``: once when they all export the same."""
+    def listed(name: str) -> str:
+        return ", ".join(exported[name][kind]) or "none"
+
+    if len({listed(name) for name in names}) == 1:
+        return f"{kind} interfaces: {listed(names[0])}"
+    return "; ".join(f"'{name}' exports {listed(name)}" for name in names)
 
 
 def _stated(given: float, effective: float, expected: float) -> str:

@@ -1,0 +1,104 @@
+"""What a controller claims of the hardware: each joint's command and state interfaces.
+
+The controller manager activates a controller only once the hardware exports every interface
+the controller claims; the URDF's ``<ros2_control>`` blocks say what it exports. What each
+ros2_controllers type claims follows from its parameters (Humble to Jazzy). Pure: YAML nodes
+in, claims out.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
+
+from servicebot_cli.check.controller_sections import get
+
+_GROUPS = {
+    "position_controllers/JointGroupPositionController": "position",
+    "velocity_controllers/JointGroupVelocityController": "velocity",
+    "effort_controllers/JointGroupEffortController": "effort",
+}
+"""Controllers that command one interface, named by their type, of each of their ``joints``."""
+_FALSE = ("false", "False", "FALSE", "no", "No", "NO", "off", "Off", "OFF")  # rcl's booleans
+
+
+@dataclass(frozen=True)
+class Claim:
+    """One interface of one joint that a controller claims.
+
+    Attributes:
+        kind: ``command`` or ``state``.
+        interface: Its name (``position``, ``velocity``...).
+        key: The parameter naming the joint (``joints``, ``left_wheel_names``...).
+        joint: Where the joint is named.
+        named_at: Where the interface is named; the joint's node when the type implies it.
+    """
+
+    kind: str
+    interface: str
+    key: str
+    joint: yaml.ScalarNode
+    named_at: yaml.Node
+
+
+def claims(controller_type: str, params: yaml.MappingNode) -> Iterator[Claim]:
+    """The interfaces a controller of ``controller_type`` claims, by its ``params``.
+
+    Nothing for a type whose claims this does not know (joint_state_broadcaster reads
+    whatever is exported; a third party's controller).
+    """
+    if controller_type == "diff_drive_controller/DiffDriveController":
+        yield from _diff_drive(params)
+    elif controller_type == "joint_trajectory_controller/JointTrajectoryController":
+        yield from _trajectory(params)
+    elif controller_type == "forward_command_controller/ForwardCommandController":
+        for name in _scalars(get(params, "interface_name")):
+            yield from _each(params, "joints", "command", name)
+    elif controller_type == "forward_command_controller/MultiInterfaceForwardCommandController":
+        for name in _scalars(get(params, "interface_names")):
+            yield from _each(params, "joint", "command", name)
+    elif controller_type in _GROUPS:
+        for joint in _scalars(get(params, "joints")):
+            yield Claim("command", _GROUPS[controller_type], "joints", joint, joint)
+
+
+def _diff_drive(params: yaml.MappingNode) -> Iterator[Claim]:
+    """Each wheel's velocity command, and its position (or velocity) state.
+
+    ``position_feedback`` (true by default) reads the wheels' positions for odometry; false,
+    their velocities.
+    """
+    feedback = get(params, "position_feedback")
+    state = "velocity" if isinstance(feedback, yaml.ScalarNode) and \
+        feedback.value in _FALSE else "position"
+    for key in ("left_wheel_names", "right_wheel_names"):
+        for wheel in _scalars(get(params, key)):
+            yield Claim("command", "velocity", key, wheel, wheel)
+            yield Claim("state", state, key, wheel, wheel)
+
+
+def _trajectory(params: yaml.MappingNode) -> Iterator[Claim]:
+    """JointTrajectoryController's claims.
+
+    Its ``command_interfaces`` of its ``command_joints`` (else of its ``joints``), and its
+    ``state_interfaces`` of its ``joints``.
+    """
+    commanded = "command_joints" if _scalars(get(params, "command_joints")) else "joints"
+    for interface in _scalars(get(params, "command_interfaces")):
+        yield from _each(params, commanded, "command", interface)
+    for interface in _scalars(get(params, "state_interfaces")):
+        yield from _each(params, "joints", "state", interface)
+
+
+def _each(params: yaml.MappingNode, key: str, kind: str,
+          interface: yaml.ScalarNode) -> Iterator[Claim]:
+    for joint in _scalars(get(params, key)):
+        yield Claim(kind, str(interface.value), key, joint, interface)
+
+
+def _scalars(node: yaml.Node | None) -> list[yaml.ScalarNode]:
+    """The names a list (or a single name) holds; anything else holds none."""
+    items = node.value if isinstance(node, yaml.SequenceNode) else [node]
+    return [item for item in items if isinstance(item, yaml.ScalarNode) and item.value]

@@ -1,0 +1,126 @@
+"""SB607: a controller claims an interface the URDF's <ros2_control> does not export."""
+
+from __future__ import annotations
+
+import re
+
+from tests.check.helpers import findings
+from tests.conftest import REPO, SIM_URDF
+
+BUNDLED = (REPO / "robots" / "controllers.yaml").read_text()
+EXAMPLE_14 = REPO / "tests" / "realworld" / "ws" / "src" / "example_14"
+
+
+def _check(run, tmp_path, yaml_text: str, urdf_text: str | None = None,
+           *urdf_args: str) -> tuple[int, list[dict[str, object]]]:
+    path = tmp_path / "controllers.yaml"
+    path.write_text(yaml_text)
+    urdf = SIM_URDF
+    if urdf_text is not None:
+        urdf = tmp_path / "robot.urdf"
+        urdf.write_text(urdf_text)
+    result = run("check", "controllers", path, "--urdf", urdf, *urdf_args, "--format", "json",
+                 "--isolated")
+    return result.exit_code, findings(result.stdout)
+
+
+def _without_state(interface: str) -> str:
+    """The bundled robot, its joints exporting no ``interface`` state."""
+    text = SIM_URDF.read_text()
+    cut = text.replace(f'      <state_interface name="{interface}"/>\n', "")
+    assert cut != text
+    return cut
+
+
+def test_the_bundled_controllers_claim_what_the_bundled_robots_export(run, tmp_path):
+    assert _check(run, tmp_path, BUNDLED) == (0, [])
+
+
+def test_a_trajectory_controller_commanding_velocity_of_position_joints(run, tmp_path):
+    text = BUNDLED.replace("    command_interfaces:\n      - position\n",
+                           "    command_interfaces:\n      - velocity\n")
+    code, found = _check(run, tmp_path, text)
+    assert code == 1 and [f["code"] for f in found] == ["SB607"]  # one for the four joints
+    message = str(found[0]["message"])
+    assert "command interface 'velocity'" in message and "'arm_link3_to_link4'" in message
+    assert "(command interfaces: position)" in message
+    line = text.splitlines()[int(found[0]["line"]) - 1]  # placed at the claim
+    assert line.strip() == "- velocity"
+    assert "arm_tool_joint" not in message  # fixed: SB606's, not this rule's
+
+
+def test_diff_drive_reads_wheel_positions_unless_told_velocities(run, tmp_path):
+    # by default (position_feedback true) diff_drive_controller claims each wheel's position
+    code, found = _check(run, tmp_path, BUNDLED, _without_state("position"))
+    assert code == 1 and {f["code"] for f in found} == {"SB607"}
+    assert len(found) == 4 and all("state interface 'position'" in str(f["message"])
+                                   for f in found)  # the four wheels (the arm's: JTC's claim)
+    told = BUNDLED.replace("    open_loop: false\n",
+                           "    open_loop: false\n    position_feedback: false\n")
+    code, found = _check(run, tmp_path, told, _without_state("position"))
+    wheels = [f for f in found if "wheel" in str(f["message"])]
+    assert wheels == []
+    code, found = _check(run, tmp_path, told, _without_state("velocity"))
+    wheels = [str(f["message"]) for f in found if str(f["message"]).startswith("diff_controller")]
+    assert len(wheels) == 4 and all("state interface 'velocity'" in m for m in wheels)
+    assert sum("'front_left_wheel_joint'" in m for m in wheels) == 1
+
+
+def test_a_joint_in_no_ros2_control_block(run, tmp_path):
+    urdf = SIM_URDF.read_text()
+    block = re.search(r'    <joint name="arm_link3_to_link4">.*?</joint>\n', urdf, re.DOTALL)
+    assert block is not None
+    code, found = _check(run, tmp_path, BUNDLED, urdf.replace(block[0], ""))
+    assert code == 1 and [f["code"] for f in found] == ["SB607"]
+    assert "joint 'arm_link3_to_link4' is in no <ros2_control>" in str(found[0]["message"])
+
+
+def test_a_robot_without_ros2_control_is_not_judged(run, tmp_path):
+    urdf = re.sub(r"<ros2_control .*?</ros2_control>", "", SIM_URDF.read_text(),
+                  flags=re.DOTALL)
+    assert "<ros2_control" not in urdf
+    assert _check(run, tmp_path, BUNDLED, urdf) == (0, [])
+
+
+def test_forward_and_group_controllers_claim_their_interface(run, tmp_path):
+    declared = BUNDLED.replace(
+        "    joint_state_broadcaster:\n",
+        "    forward:\n      type: forward_command_controller/ForwardCommandController\n"
+        "    group:\n      type: velocity_controllers/JointGroupVelocityController\n"
+        "    joint_state_broadcaster:\n")
+    text = declared + ("\nforward:\n  ros__parameters:\n    joints: [arm_base_to_link1]\n"
+                       "    interface_name: effort\n"
+                       "\ngroup:\n  ros__parameters:\n    joints: [front_left_wheel_joint, "
+                       "arm_link1_to_link2]\n")
+    code, found = _check(run, tmp_path, text)
+    messages = sorted(str(f["message"]) for f in found)
+    assert code == 1 and len(messages) == 2, messages
+    assert messages[0].startswith("forward claims the command interface 'effort' of joint "
+                                  "'arm_base_to_link1'")
+    assert messages[1].startswith("group claims the command interface 'velocity' of joint "
+                                  "'arm_link1_to_link2'")  # the wheel exports velocity
+
+
+def test_an_actuator_and_a_sensor_export_one_joints_interfaces_together(run, tmp_path):
+    # ros2_control_demos example 14: joint1's velocity command is in an actuator component,
+    # its position state in a sensor component; a trajectory controller may claim both
+    urdf = (EXAMPLE_14 / "description" / "urdf" / "rrbot_modular_actuators_without_feedback_"
+            "sensors_for_position_feedback.urdf.xacro")
+    package = f"ros2_control_demo_example_14={EXAMPLE_14}"
+    yaml_text = ("controller_manager:\n  ros__parameters:\n    trajectory:\n      type: "
+                 "joint_trajectory_controller/JointTrajectoryController\n"
+                 "trajectory:\n  ros__parameters:\n    joints: [joint1, joint2]\n"
+                 "    command_interfaces: [velocity]\n    state_interfaces: [position]\n")
+    path = tmp_path / "controllers.yaml"
+    path.write_text(yaml_text)
+    args = ("--urdf", urdf, "prefix:=", "slowdown:=50.0", "--package", package,
+            "--format", "json", "--isolated")
+    result = run("check", "controllers", path, *args)
+    assert result.exit_code == 0 and findings(result.stdout) == [], result.stdout
+    path.write_text(yaml_text.replace("state_interfaces: [position]",
+                                      "state_interfaces: [position, velocity]"))
+    result = run("check", "controllers", path, *args)
+    found = findings(result.stdout)
+    assert [f["code"] for f in found] == ["SB607"], result.stdout
+    assert "state interface 'velocity' of joints 'joint1', 'joint2'" in str(found[0]["message"])
+    assert "(state interfaces: position)" in str(found[0]["message"])
