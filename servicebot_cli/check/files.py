@@ -276,15 +276,18 @@ def _named(target: str, includer: Path, packages: dict[str, set[Path]]) -> list[
 
 
 def _include_targets(path: Path, *, in_comments: bool = False) -> list[str]:
-    """The filenames of the ``<xacro:include>`` elements of a xacro file.
+    """The filenames of the ``<xacro:include>`` elements of a robot file.
 
-    Those inside XML comments only with ``in_comments``.
+    A ``.urdf`` file's too: one with xacro in it is expanded with xacro by the launch files
+    that load it (roverrobotics_ros2's ``max.urdf`` includes its payloads), so what it
+    includes is a part of it, not a robot. Those inside XML comments only with
+    ``in_comments``.
     """
-    if not is_xacro_name(path):
+    text = _head(path)
+    if text is None or (not is_xacro_name(path) and b"xacro:include" not in text):
         return []
-    text = _head(path) if in_comments else head_without_comments(path)
-    if text is None:
-        return []
+    if not in_comments:
+        text = without_comments(text)
     targets = ((double or single).decode("utf-8", "replace").strip()
                for double, single in _INCLUDE.findall(text))
     return [t for t in targets if t and "${" not in t and "$(arg" not in t]

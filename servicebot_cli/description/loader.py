@@ -22,6 +22,12 @@ from servicebot_cli.description.robot import RobotDescription, is_xacro_name
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
 
 _COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
+_SUBSTITUTION = re.compile(rb"\$\{|\$\(find\s")
+"""What only xacro substitutes: an expression, or a package's directory.
+
+Not ``$(optenv NAME default)``: pybullet_data's husky.urdf holds it in an ``<origin>``, and
+pybullet and check_urdf read that file as it is (and refuse the origin).
+"""
 
 
 @dataclass(frozen=True)
@@ -90,21 +96,23 @@ def is_xacro(path: Path, data: bytes) -> bool:
 
 
 def needs_xacro(data: bytes) -> bool:
-    """Whether the bytes hold ``${...}`` expressions and xacro, both outside comments.
+    """Whether the bytes hold xacro substitutions and xacro, both outside comments.
 
-    No URDF reader takes ``${base_length}`` for a number, so such a file is only ever given
-    to xacro (navigation2_tutorials' ``sam_bot_description.urdf``, which its launch file
-    expands with ``Command(['xacro ', model])``). Xacro is its elements, or its namespace
-    declared (turtlebot3_simulations' ``common_properties.urdf``: ``${255/255}`` in colours,
-    no xacro element).
+    No URDF reader takes ``${base_length}`` for a number, or ``$(find pkg)`` for a
+    directory, so such a file is only ever given to xacro (navigation2_tutorials'
+    ``sam_bot_description.urdf``, which its launch file expands with
+    ``Command(['xacro ', model])``; roverrobotics_ros2's ``rplidar_s2.urdf``, whose mesh is
+    ``file://$(find ...)``). Xacro is its elements, or its namespace declared
+    (turtlebot3_simulations' ``common_properties.urdf``: ``${255/255}`` in colours, no xacro
+    element).
     """
     def xacro(text: bytes) -> bool:
         return _xacro_words(text) or b"xmlns:xacro" in text
 
-    if b"${" not in data or not xacro(data):
+    if b"$" not in data or _SUBSTITUTION.search(data) is None or not xacro(data):
         return False
     text = without_comments(data)
-    return b"${" in text and xacro(text)
+    return _SUBSTITUTION.search(text) is not None and xacro(text)
 
 
 def uses_xacro(data: bytes) -> bool:
@@ -159,8 +167,10 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
     document = parse_xml(expansion.xml_text.encode("utf-8"), source.display, max_bytes=max_bytes)
     for element, origin in zip(document.root.iter(), expansion.origins, strict=True):
         element.origin = origin  # type: ignore[attr-defined]
+    what = "expressions (${...})" if b"${" in without_comments(data) else \
+        "package paths ($(find ...))"
     named = () if is_xacro_name(source.path) else (
-        f"{source.display}: holds xacro expressions (${{...}}), but is not a .xacro file: "
+        f"{source.display}: holds xacro {what}, but is not a .xacro file: "
         "expanded with xacro, as only xacro can read it (name it .urdf.xacro)",)
     return RobotDescription(
         display=source.display, path=source.path, xml_text=expansion.xml_text,

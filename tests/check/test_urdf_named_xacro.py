@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+
 from tests.check.helpers import findings
 
 SAM_BOT_LIKE = """<?xml version="1.0"?>
@@ -65,3 +67,48 @@ def test_a_mesh_named_with_an_unexpanded_find_says_so(run, tmp_path):
     (found,) = findings(result.stdout)
     assert found["message"].endswith("does not exist; its '$(...)' is xacro's, and nothing "
                                      "substitutes it in a file xacro does not expand")
+
+
+def _package(root, name: str) -> None:
+    root.mkdir(parents=True)
+    (root / "package.xml").write_text(f"<package format='3'><name>{name}</name></package>")
+
+
+def test_a_urdf_with_a_find_and_the_xacro_namespace_is_expanded(run, tmp_path):
+    """roverrobotics_ros2's rplidar_s2.urdf: a mesh at file://$(find ...)/meshes/..., the
+    xacro namespace declared, no ${...}: the mesh was 'missing', the file being read as it is."""
+    package = tmp_path / "demo_description"
+    _package(package, "demo_description")
+    (package / "meshes").mkdir()
+    (package / "meshes" / "part.stl").write_bytes(
+        b"solid p\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+        b"endloop\nendfacet\nendsolid p\n")
+    (package / "urdf").mkdir()
+    path = package / "urdf" / "robot.urdf"
+    path.write_text('<robot name="demo" xmlns:xacro="http://www.ros.org/wiki/xacro"><link '
+                    'name="base_link"><visual><geometry><mesh filename="file://$(find '
+                    'demo_description)/meshes/part.stl"/></geometry></visual></link></robot>')
+    result = run("check", path, "--format", "json", "--isolated")
+    found = [(f["code"], f["message"]) for f in findings(result.stdout)]
+    assert result.exit_code == 0 and [code for code, _ in found] == ["SB017"], found
+    assert "holds xacro package paths ($(find ...))" in found[0][1]
+
+
+def test_what_a_xacro_urdf_includes_is_a_part_not_a_robot(run, tmp_path):
+    """roverrobotics_ros2: max.urdf (xacro, expanded by every launch file) includes
+    accessories/*.urdf, which hang from its payload_link and read its properties; a walk
+    checked each alone: SB103 and SB006, false errors."""
+    package = tmp_path / "ws" / "src" / "demo_description"
+    _package(package, "demo_description")
+    (package / "urdf" / "parts").mkdir(parents=True)
+    (package / "urdf" / "robot.urdf").write_text(
+        '<robot name="demo" xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:property '
+        'name="z" value="0.1"/><link name="base_link"/><xacro:include '
+        'filename="$(find demo_description)/urdf/parts/sensor.urdf"/></robot>')
+    (package / "urdf" / "parts" / "sensor.urdf").write_text(
+        '<robot name="sensor" xmlns:xacro="http://www.ros.org/wiki/xacro"><link '
+        'name="sensor_link"/><joint name="j" type="fixed"><parent link="base_link"/><child '
+        'link="sensor_link"/><origin xyz="0 0 ${z}"/></joint></robot>')
+    result = run("check", tmp_path / "ws", "--format", "json", "--isolated", "--ignore", "SB309")
+    checked = [f["file"].rsplit("/", 1)[-1] for f in json.loads(result.stdout)["files"]]
+    assert result.exit_code == 0 and checked == ["robot.urdf"], result.stdout
