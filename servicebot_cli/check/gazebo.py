@@ -32,7 +32,8 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     """Every Gazebo issue of ``robot``."""
     names = [link.name for link in robot.links] + [joint.name for joint in robot.joints]
     known = set(names)
-    unknown = [b for b in robot.gazebo if b.reference is not None and b.reference not in known]
+    # reference="" is no reference: sdformat applies the block to the model, as without one
+    unknown = [b for b in robot.gazebo if b.reference and b.reference not in known]
     # a reference still holding xacro's braces is a typo, no optional part ('{side}' for '${side}')
     optional = defined_elsewhere(robot, {block.reference or "" for block in unknown
                                          if not _UNEXPANDED.search(block.reference or "")})
@@ -41,6 +42,7 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     for sensor in robot.sensors:
         for problem in _sensor_problems(sensor):
             yield Issue("SB502", f"sensor '{sensor.name}': {problem}", sensor.element)
+        yield from _rate(sensor)
     yield from _mixed(robot)
 
 
@@ -78,10 +80,28 @@ def _empty(element: ET.Element) -> bool:
             and element.attrib.keys() <= {"reference"})
 
 
-def _sensor_problems(sensor: Sensor) -> Iterator[str]:
+def _rate(sensor: Sensor) -> Iterator[Issue]:
+    """SB502 for an update_rate Gazebo cannot read, a warning for one it reads as 0.
+
+    0 is SDF's default: the sensor updates at every simulation step (gz-sensors and Gazebo
+    Classic alike), and so does a negative or infinite rate, which cannot be what was meant.
+    """
     rate = sensor.update_rate_hz
-    if rate is not None and not (rate > 0 and math.isfinite(rate)):
-        yield f"update_rate {rate:g} Hz must be positive"
+    if rate is None or 0 <= rate < math.inf:
+        return
+    where = f"sensor '{sensor.name}': update_rate"
+    if math.isnan(rate):
+        text = sensor.element.findtext("update_rate") if sensor.element is not None else None
+        yield Issue("SB502", f"{where} '{(text or '').strip()}' is not a number: sdformat "
+                    "cannot read it", sensor.element, fix="write the rate in Hz, or 0 for "
+                    "every simulation step")
+        return
+    yield Issue("SB502", f"{where} {rate:g} Hz: Gazebo updates the sensor at every simulation "
+                "step, as for 0 (SDF's default)", sensor.element, severity=Severity.WARNING,
+                fix="write the rate in Hz, or 0 for every simulation step")
+
+
+def _sensor_problems(sensor: Sensor) -> Iterator[str]:
     if sensor.type in specs.LIDAR_TYPES:
         yield from _lidar(sensor)
     elif sensor.type in specs.CAMERA_TYPES:
@@ -117,8 +137,10 @@ def _camera(camera: specs.CameraSpec) -> Iterator[str]:
         if value is not None and value <= 0:
             yield f"image {label} {value} px must be positive"
     fov = camera.horizontal_fov_rad
-    if fov is not None and not 0 < fov < 2 * math.pi:
-        yield f"horizontal_fov {fov:g} rad must be between 0 and 2 pi"
+    if fov is not None and math.isnan(fov):
+        yield "horizontal_fov is not a number"
+    elif fov is not None and not 0 < fov < 2 * math.pi:
+        yield f"horizontal_fov {fov:g} rad must be more than 0 and less than 2 pi"
     near, far = camera.near_clip_m, camera.far_clip_m
     if near is not None and far is not None and not 0 < near < far:
         yield f"clip near {near:g} m and far {far:g} m need 0 < near < far"
@@ -129,7 +151,9 @@ def _noise(noise: NoiseSpec | None) -> Iterator[str]:
     if noise is None:
         return
     for label, value in (("stddev", noise.stddev), ("bias_stddev", noise.bias_stddev)):
-        if not value >= 0:
+        if math.isnan(value):
+            yield f"noise {label} is not a number"
+        elif value < 0:
             yield f"noise {label} {value:g} must not be negative"
 
 
