@@ -86,7 +86,7 @@ def combined(solids: list[Solid]) -> Solid:
         moment += s.second_moment + s.volume_m3 * np.outer(d, d)
     label = solids[0].label
     if len(solids) > 1:
-        label = f"its {len(solids)} collision shapes as one solid"
+        label = f"solid of its {len(solids)} collision shapes"
     return Solid(volume, centroid, moment, label)
 
 

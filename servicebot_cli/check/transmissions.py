@@ -50,8 +50,10 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
             reader = (f"; {consumer} does not start with it" if refuses else
                       "; nothing in this file that reads transmissions refuses it (ros2_control "
                       "ignores top-level ones)")
-            yield Issue("SB511", f"transmission '{transmission.name}' names joint '{name}', "
-                        f"which does not exist{reader}; {_hint(name, joints)}",
+            named = (f"names joint '{name}', which does not exist" if name
+                     else "has a <joint> without a name")
+            yield Issue("SB511", f"transmission '{transmission.name}' {named}{reader}; "
+                        f"{_hint(name, joints)}",
                         transmission.element,
                         severity=Severity.ERROR if refuses else Severity.WARNING)
     for block in robot.ros2_control:

@@ -32,7 +32,9 @@ _POSE = {"xyz": 3, "rpy": 3}
 
 SPEC: dict[str, ElementSpec] = {
     "link": ElementSpec({"name": 0}, children=("inertial", "visual", "collision"),
-                        extensions=("contact", "self_collision_checking", "surface")),
+                        # Pinocchio's (and HPP's): a capsule or convex hull for a shape
+                        extensions=("contact", "self_collision_checking", "surface",
+                                    "collision_checking")),
     "inertial": ElementSpec(children=("origin", "mass", "inertia"),
                             required_children=("mass", "inertia")),
     "origin": ElementSpec(dict(_POSE)),

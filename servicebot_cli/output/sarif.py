@@ -7,6 +7,7 @@ relative URIs (from the current directory) when the file is below it, else ``fil
 from __future__ import annotations
 
 from pathlib import Path
+from urllib.parse import quote
 
 from servicebot_cli import __version__
 from servicebot_cli.check.catalogue import RULES
@@ -86,10 +87,14 @@ def _via(via: str, index: int = 0) -> dict[str, object]:
 
 
 def _uri(file: str) -> str:
+    """``file`` as a percent-encoded URI reference, relative where it lies under here.
+
+    A ``#`` or a space in a file name is then no fragment or separator.
+    """
     path = Path(file)
     if not path.is_absolute():
-        return path.as_posix()
+        return quote(path.as_posix())
     try:
-        return path.relative_to(Path.cwd()).as_posix()
+        return quote(path.relative_to(Path.cwd()).as_posix())
     except ValueError:
         return path.as_uri()

@@ -92,3 +92,16 @@ def test_github_annotations(run, tmp_path):
         in result.stdout
     assert "a%2Cb%3Ac.urdf" in result.stdout
     assert lines[-1].startswith("3 files checked")
+
+
+def test_sarif_uris_are_percent_encoded(run, tmp_path, monkeypatch):
+    """DART's 'KR5 sixx R650.urdf': a space (or a '#', a fragment) went into the URI as is."""
+    from urllib.parse import unquote
+
+    odd = tmp_path / "KR5 sixx #2.urdf"
+    odd.write_text(fixture("SB208").read_text())
+    monkeypatch.chdir(tmp_path)
+    log = json.loads(run("check", odd.name, "--format", "sarif", "--isolated").stdout)
+    uris = {r["locations"][0]["physicalLocation"]["artifactLocation"]["uri"]
+            for r in log["runs"][0]["results"]}
+    assert uris == {"KR5%20sixx%20%232.urdf"} and unquote(uris.pop()) == odd.name
