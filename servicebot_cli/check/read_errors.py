@@ -72,7 +72,26 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
                      "passes it; a directory walk passes none, so it is not checked here",
                      where=(file, line, column), severity=Severity.WARNING,
                      fix=f"check it by name with {name}:=VALUE (and its other arguments)")
-    return Issue("SB006", text, where=(file, line, column))
+    return Issue("SB006", text, where=(file, line, column), fix=_xacro_fix(text, undefined))
+
+
+_UNDEFINED_NAME = re.compile(r"name '([^']+)' is not defined")
+
+
+def _xacro_fix(text: str, undefined: re.Match[str] | None) -> str | None:
+    """What to do about xacro's ``text``: an argument is passed, a property defined.
+
+    A property is no argument: ``NAME:=VALUE`` does not define it (roverrobotics_ros2's
+    payload parts read their includer's ``payload_z_offset``).
+    """
+    if undefined is not None:
+        return f"pass {undefined[1]}:=VALUE, or give the argument a default"
+    name = _UNDEFINED_NAME.search(text)
+    if name is not None:
+        return (f"define '{name[1]}' (<xacro:property name=\"{name[1]}\" value=\"...\"/>) "
+                "before this line, or include the file that defines it; a property is not an "
+                "argument, so NAME:=VALUE does not define it")
+    return None
 
 
 def _built_from_empty_arguments(text: str, file: str, line: int, column: int) -> bool:

@@ -29,3 +29,19 @@ def test_a_mimic_of_a_missing_joint_never_suggests_the_joint_itself(run, tmp_pat
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB209")
     (found,) = findings(result.stdout)
     assert found["message"].endswith("which does not exist; did you mean 'j'?")
+
+
+@pytest.mark.parametrize(("body", "fix"), [
+    # roverrobotics_ros2's payload parts read their includer's property: an argument
+    # (NAME:=VALUE, as the rule's general fix said) does not define it
+    ('<link name="l"><visual><geometry><box size="1 1 ${size}"/></geometry></visual></link>',
+     "define 'size' (<xacro:property name=\"size\""),
+    ('<link name="$(arg name)"/>', "pass name:=VALUE, or give the argument a default"),
+])
+def test_a_xacro_failure_says_whether_an_argument_or_a_property_is_missing(run, tmp_path, body,
+                                                                           fix):
+    path = tmp_path / "r.urdf.xacro"
+    path.write_text(f'<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">{body}</robot>')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB006")
+    (found,) = findings(result.stdout)
+    assert found["fix"].startswith(fix)
