@@ -105,8 +105,8 @@ def walk_robots(directory: Path) -> tuple[list[Path], dict[Path, set[Path]]]:
     robots: list[Path] = []
     fragments: list[Path] = []
     semantic: list[Path] = []
-    for path in _files(directory, lambda p: is_robot_file(p) or _is_semantic_name(p)):
-        if _is_semantic_name(path):
+    for path in _files(directory, lambda p: is_robot_file(p) or is_semantic_name(p)):
+        if is_semantic_name(path):
             semantic.append(path)
         else:
             (fragments if is_fragment(path) else robots).append(path)
@@ -129,12 +129,17 @@ def robot_file_count(directory: Path) -> int:
     return sum(1 for _ in robot_files(directory))
 
 
+def semantic_file_count(directory: Path) -> int:
+    """How many MoveIt semantic descriptions (``*.srdf.xacro``) ``directory`` holds."""
+    return sum(1 for _ in _files(directory, is_semantic_name))
+
+
 def robot_files(directory: Path) -> Iterator[Path]:
     """Every robot file under ``directory`` (includes too), as :func:`walk` finds them."""
     yield from _files(directory, is_robot_file)
 
 
-def _is_semantic_name(path: Path) -> bool:
+def is_semantic_name(path: Path) -> bool:
     """A MoveIt semantic description (``*.srdf.xacro``), never checked as a robot."""
     return path.name.lower().endswith(NOT_URDF_SUFFIXES)
 

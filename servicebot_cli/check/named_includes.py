@@ -27,7 +27,7 @@ from servicebot_cli.description.safe_xml import parse_xml
 
 def include_reports(sources: Sequence[tuple[RobotSource, bool]],
                     settings: Settings) -> dict[int, FileReport]:
-    """The SB018 report of each named xacro include of ``sources``, by its index.
+    """The SB018 report of each named xacro include (or SRDF) of ``sources``, by its index.
 
     An include is a xacro file :func:`files.is_fragment` tells (macros or properties only,
     an unnamed ``<robot>``, another root), or one that another named file includes.
@@ -37,10 +37,16 @@ def include_reports(sources: Sequence[tuple[RobotSource, bool]],
     includer = files.includers(list(candidates.values()))
     reports: dict[int, FileReport] = {}
     for index, path in candidates.items():
+        display = sources[index][0].display
+        if files.is_semantic_name(path):  # MoveIt's *.srdf.xacro, which a walk leaves out
+            issue = Issue("SB018", "a MoveIt semantic description (SRDF), not a URDF: nothing "
+                          "for check urdf here", where=(display, 0, 0),
+                          fix="check the URDF it describes; MoveIt reads this file beside it")
+            reports[index] = FileReport(display, tuple(place_issues(None, [issue], settings)))
+            continue
         by = includer.get(path)
         if (by is None and not files.is_fragment(path)) or not _well_formed(path):
             continue
-        display = sources[index][0].display
         what = (f"included by {by}" if by is not None
                 else "an include (macros, properties or parts, no robot of its own)")
         issue = Issue("SB018", f"{what}: checked through the files that include it, not alone",

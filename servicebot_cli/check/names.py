@@ -12,11 +12,23 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 
+_SRDF_ELEMENTS = frozenset(("group", "group_state", "disable_collisions", "virtual_joint",
+                            "end_effector", "passive_joint"))
+"""What a MoveIt SRDF's <robot> holds, and a URDF's does not."""
+
+
 def check(robot: RobotDescription) -> Iterator[Issue]:
     """Duplicate, empty and undefined names."""
     if not robot.links:
-        yield Issue("SB109", "the robot has no <link>", robot.root,
-                    fix='add at least one <link name="base_link"/>')
+        semantic = sorted({child.tag for child in robot.root if child.tag in _SRDF_ELEMENTS})
+        if semantic:  # MoveIt's baxter.srdf.xacro, named by the user
+            yield Issue("SB109", "the robot has no <link>: with its "
+                        f"{', '.join(f'<{tag}>' for tag in semantic)} it is a MoveIt semantic "
+                        "description (SRDF), not a URDF", robot.root,
+                        fix="check the URDF it describes; MoveIt reads this file beside it")
+        else:
+            yield Issue("SB109", "the robot has no <link>", robot.root,
+                        fix='add at least one <link name="base_link"/>')
     for kind, code, items in (("link", "SB101", robot.links), ("joint", "SB102", robot.joints)):
         first: dict[str, ET.Element | None] = {}
         for item in items:

@@ -162,8 +162,12 @@ def _sources(targets: UrdfTargets) -> tuple[list[tuple[RobotSource, bool]],
         if not inside:
             held = files.robot_file_count(path)
             if not held:
-                raise DescriptionError(f"{name}: is a directory with no robot files "
-                                       f"({', '.join('*' + s for s in files.SUFFIXES)})")
+                semantic = files.semantic_file_count(path)
+                raise DescriptionError(
+                    f"{name}: is a directory with no robot files "
+                    f"({', '.join('*' + s for s in files.SUFFIXES)})"
+                    + (f"; its {semantic} *.srdf.xacro file(s) are MoveIt semantic "
+                       "descriptions, not URDF" if semantic else ""))
             includes_only.append((name, held))
         found += [_walked(file, targets) for file in inside]
     return found, tuple(includes_only), left_out
