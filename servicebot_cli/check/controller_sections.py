@@ -44,23 +44,36 @@ def sections(text: str, display: str) -> Sections | Issue:
     sections = _sections(root)
     if not sections:
         ros1 = _ros1_controllers(root)
-        found = (f"a ROS 1 ros_control file ('{ros1}: type: ...' with no ros__parameters), "
-                 "which ros2_control does not read; ") if ros1 else ""
+        found, fix = "", ("name the ros2_control controllers file (each controller's "
+                          "parameters under NAME: ros__parameters:)")
+        if ros1:
+            found = (f"a ROS 1 ros_control file ('{ros1}: type: ...' with no "
+                     "ros__parameters), which ros2_control does not read; ")
+            fix = ("check ROS 2 controllers files only, or port this one: each controller's "
+                   "parameters under NAME: ros__parameters:")
+        elif get(root, "controller_list") is not None:
+            found = ("a MoveIt controller_list (moveit_simple_controller_manager's), which "
+                     "names controllers for MoveIt and configures none; ")
         return Issue("SB601", f"{found}no controller sections (NAME: ros__parameters: ...) "
-                     "found", where=(display, 1, 1),
-                     fix="check ROS 2 controllers files only, or port this one: each "
-                         "controller's parameters under NAME: ros__parameters:" if ros1 else None)
+                     "found", where=(display, 1, 1), fix=fix)
     return sections
 
 
-def _ros1_controllers(root: yaml.Node | None) -> str | None:
-    """The first controller a ROS 1 file declares (``NAME: {type: pkg/Class}``), or None."""
+def _ros1_controllers(root: yaml.Node | None, depth: int = 0) -> str | None:
+    """The first controller a ROS 1 file declares (``NAME: {type: pkg/Class}``), or None.
+
+    Under a namespace too (op3_gazebo's ``robotis: joint_state_controller: type: ...``).
+    """
     if not isinstance(root, yaml.MappingNode):
         return None
     for key, value in root.value:
         kind = get(value, "type")
         if isinstance(kind, yaml.ScalarNode) and "/" in str(kind.value):
             return str(key.value)
+    for _, value in root.value if depth < 2 else ():
+        found = _ros1_controllers(value, depth + 1)
+        if found is not None:
+            return found
     return None
 
 

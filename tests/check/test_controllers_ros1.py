@@ -27,3 +27,19 @@ def test_a_file_of_no_controllers_keeps_the_plain_message(run, tmp_path):
     path.write_text("costmap:\n  width: 10\n")
     result = run("check", "controllers", path, "--robot", "sim")
     assert "no controller sections" in result.stdout and "ROS 1" not in result.stdout
+    assert "Fix the YAML" not in result.stdout  # valid YAML: another kind of file
+    assert "fix: name the ros2_control controllers file" in result.stdout
+
+
+def test_a_namespaced_ros1_file_and_a_moveit_controller_list_are_named(run, tmp_path):
+    """op3_gazebo's position_controller.yaml (under robotis:) and atlas_v3_moveit_config's
+    controller_list got 'Fix the YAML at the reported line'; the YAML is valid."""
+    path = tmp_path / "c.yaml"
+    path.write_text("robotis:\n" + "".join(f"  {line}\n" for line in ROS1.splitlines()))
+    result = run("check", "controllers", path, "--robot", "sim")
+    assert "a ROS 1 ros_control file ('mobile_base_controller: type: ...'" in result.stdout
+    path.write_text("controller_list:\n  - name: arm_controller\n    action_ns: "
+                    "follow_joint_trajectory\n    type: FollowJointTrajectory\n")
+    result = run("check", "controllers", path, "--robot", "sim")
+    assert "a MoveIt controller_list (moveit_simple_controller_manager's)" in result.stdout
+    assert "Fix the YAML" not in result.stdout
