@@ -254,9 +254,10 @@ URDF_RULES: tuple[Rule, ...] = (
     Rule("SB304", "missing-inertial", W, "A moving link without <inertial>",
          "The link is moved by a joint but has no mass of its own or of links fixed to it; "
          "links further down, past other moving joints, do. Gazebo (sdformat) drops a "
-         "massless link with everything below it, KDL ignores it. Links fixed to it (a "
-         "gripper on a flange link) lend it their mass: sdformat and Pinocchio merge them, "
-         "so that is not reported.",
+         "massless link with everything below it, KDL ignores it: an error when the "
+         "description is meant for a simulator (as for SB303), a warning otherwise. Links "
+         "fixed to it (a gripper on a flange link) lend it their mass: sdformat and Pinocchio "
+         "merge them, so that is not reported.",
          "Add an <inertial>, or merge the link into its child."),
     Rule("SB305", "zero-mass", W, "Zero mass on a moving link",
          "The link is moved by a joint and has mass 0 (links below it have mass).",

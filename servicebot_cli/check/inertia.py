@@ -205,9 +205,13 @@ def _moving_masses(robot: RobotDescription) -> Iterator[Issue]:
                         severity=Severity.ERROR if simulator else Severity.WARNING)
         elif _lumped_mass(link.name, by_name, fixed_below) > 0.0:
             continue  # links fixed to it lend it their mass: sdformat and Pinocchio merge them
-        elif link.inertial is None:
+        elif link.inertial is None:  # sdformat drops it, and what hangs below it
+            dropped = ("" if not simulator else "; MuJoCo refuses a moving body without mass"
+                       if simulator == "MuJoCo" else
+                       f"; {simulator} drops it, and every link below it")
             yield Issue("SB304", f"link '{link.name}' is moved by joint '{joint.name}' but has "
-                        "no <inertial>", link.element, fix="add an <inertial>")
+                        f"no <inertial>{dropped}", link.element, fix="add an <inertial>",
+                        severity=Severity.ERROR if simulator else None)
         elif _mass(link) == 0.0 and link.inertial.mass_kg == 0.0:
             yield Issue("SB305", f"link '{link.name}' is moved by joint '{joint.name}' and has "
                         "mass 0", link.inertial.element, fix="give the link its real mass")

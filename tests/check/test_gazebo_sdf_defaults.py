@@ -59,3 +59,34 @@ def test_a_camera_field_of_view_of_0_says_what_is_allowed(run, tmp_path):
                         "than 2 pi"]
     messages = [m for _, _, m in _found(run, tmp_path, camera.format(fov="${fov}"))[1]]
     assert messages == ["sensor 'cam': horizontal_fov is not a number"]
+
+
+CHAIN = """<robot name="r">
+  <link name="base"><inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01"
+    iyz="0" izz="0.01"/></inertial></link>
+  <link name="a"/>
+  <link name="b"><inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01"
+    iyz="0" izz="0.01"/></inertial></link>
+  <joint name="j1" type="continuous"><parent link="base"/><child link="a"/></joint>
+  <joint name="j2" type="continuous"><parent link="a"/><child link="b"/></joint>
+  {gazebo}
+</robot>"""
+
+
+def test_a_massless_link_between_moving_joints_fails_where_gazebo_runs_it(run, tmp_path):
+    """sdformat's ZeroMassIntermediateLinkWithNoFixedJoints: link 'a' and all below it are
+    not modelled. It was a warning even in a file with <gazebo>, where a massless leaf link
+    (SB303) is an error."""
+    path = tmp_path / "r.urdf"
+    path.write_text(CHAIN.format(gazebo=""))
+    result = run("check", path, "--format", "json", "--isolated", "--ignore", "SB309")
+    assert result.exit_code == 0
+    assert [(f["code"], f["severity"]) for f in findings(result.stdout)] == [
+        ("SB304", "warning")]
+    path.write_text(CHAIN.format(gazebo='<gazebo reference="b"><material>Gazebo/Red</material>'
+                                        '</gazebo>'))
+    result = run("check", path, "--format", "json", "--isolated", "--ignore", "SB309,SB702")
+    found = findings(result.stdout)
+    assert result.exit_code == 1 and [(f["code"], f["severity"]) for f in found] == [
+        ("SB304", "error")]
+    assert found[0]["message"].endswith("; Gazebo drops it, and every link below it")
