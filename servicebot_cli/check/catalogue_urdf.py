@@ -237,7 +237,10 @@ URDF_RULES: tuple[Rule, ...] = (
          "The principal moments of the inertia are compared, in any frame, with those of a "
          "solid of the link's mass filling its collision geometry (boxes, cylinders and "
          "spheres by formula, closed meshes by their volume). Beyond a factor (2 by default, "
-         "inertia-factor in the settings) the values are printed with the ones that match.",
+         "inertia-factor in the settings) the values are printed with the ones that match. "
+         "Collision geometry under 1 cm^3 that the mass would make denser than any material "
+         "is a placeholder (Baxter's 1 mm spheres): the visual geometry stands for the body "
+         "where its volume is known (primitives, closed meshes), else nothing is compared.",
          "Use the printed values, or compute the inertia from CAD."),
     Rule("SB302", "negative-mass", E, "A negative mass",
          "Mass is positive or zero; no body has a negative mass.",

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Generator, Iterator
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -17,7 +18,7 @@ from servicebot_cli.kinematics.transforms import rpy_matrix
 if TYPE_CHECKING:
     import xml.etree.ElementTree as ET
 
-    from servicebot_cli.description.elements import Link
+    from servicebot_cli.description.elements import Link, Shape
     from servicebot_cli.description.robot import RobotDescription
 
 
@@ -106,10 +107,18 @@ def _possible(link: Link, values: tuple[float, ...],
     return True
 
 
-def _expected(robot: RobotDescription, link: Link, env: CheckEnv) -> solids.Solid | None:
-    """The link's collision geometry as one solid, or None when it cannot be known."""
+_PLACEHOLDER_M3 = 1e-6
+"""Collision geometry this small (1 cm^3) may stand in for a body it does not describe..."""
+_DENSEST_KG_M3 = 1e5
+"""...when the link's mass in it would be denser than any material (osmium: 22,590 kg/m^3):
+then the visual geometry, where its volume is known, stands for the body."""
+
+
+def _expected(robot: RobotDescription, link: Link, env: CheckEnv,
+              shapes: tuple[Shape, ...]) -> solids.Solid | None:
+    """The link's ``shapes`` (its collisions, or visuals) as one solid; None: not known."""
     parts = []
-    for shape in link.collisions:
+    for shape in shapes:
         if not values.usable_shape(shape):
             return None  # SB012-SB014 and SB405 report it
         geometry = shape.geometry
@@ -129,7 +138,8 @@ def _expected(robot: RobotDescription, link: Link, env: CheckEnv) -> solids.Soli
         parts.append(solids.placed(info.mass.volume, np.array(info.mass.centroid),
                                    info.mass.second_moment, geometry.scale, shape.origin,
                                    f"closed mesh '{geometry.filename}'"))
-    return solids.combined(parts) if parts else None
+    kind = "visual" if shapes is link.visuals and shapes else "collision"
+    return solids.combined(parts, kind) if parts else None
 
 
 def _against_geometry(robot: RobotDescription, link: Link, env: CheckEnv) -> Iterator[Issue]:
@@ -137,32 +147,72 @@ def _against_geometry(robot: RobotDescription, link: Link, env: CheckEnv) -> Ite
     if inertial is None or inertial.inertia_kg_m2 is None or not values.usable_pose(
             inertial.origin):
         return
-    solid = _expected(robot, link, env)
+    solid = _expected(robot, link, env, link.collisions)
     if solid is None or not solids.usable(solid):
         return
     mass = _mass(link)
-    expected = solids.inertia_of(solid, mass)
-    if not np.all(np.isfinite(expected)):
-        return
-    want = np.linalg.eigvalsh(expected)
-    if not want.min() > 0:
-        return  # a flat solid: no inertia to compare with
     have = solids.principal_moments(inertial.inertia_kg_m2)
-    with np.errstate(all="ignore"):  # a mass of 1e-320 kg: moments beyond a double's range
-        ratios = have / want
-        worst = float(max(ratios.max(), 1.0 / ratios.min()))
-    if not math.isfinite(worst) or worst <= env.inertia_factor:
-        return  # no comparison a number can state (SB30x reports such a mass)
+    found = _mismatch(have, solid, mass, env.inertia_factor)
+    if found is None:
+        return
+    if _placeholder(solid, mass) and link.visuals:  # baxter_simple's 1 mm collision spheres
+        visual = _expected(robot, link, env, link.visuals)
+        if visual is None or not solids.usable(visual):
+            return  # nothing known of the body: its visual mesh is open
+        if _placeholder(visual, mass):  # drawn as small: the body is, and the inertia wrong
+            yield _issue(link, have, solid, mass, found)
+            return
+        found = _mismatch(have, visual, mass, env.inertia_factor)
+        if found is None:
+            return
+        solid = replace(visual, label=f"{visual.label} (the visual geometry; the collision "
+                        f"geometry, {solid.label}, is a placeholder)")
+    yield _issue(link, have, solid, mass, found)
+
+
+def _issue(link: Link, have: np.ndarray, solid: solids.Solid, mass: float,
+           found: tuple[np.ndarray, np.ndarray, np.ndarray, float]) -> Issue:
+    """SB301: the inertia ``have`` against ``mass`` filling ``solid``, as ``found`` differ."""
+    inertial = link.inertial
+    assert inertial is not None  # (compared only with one)
+    expected, want, ratios, worst = found
     rotation = rpy_matrix(*inertial.origin.rpy)
     local = rotation.T @ expected @ rotation  # the geometry's inertia in the inertial's axes
     direction = "too large" if ratios.max() >= 1.0 / ratios.min() else "too small"
-    yield Issue(
+    return Issue(
         "SB301",
         f"link '{link.name}' inertia (principal moments {_join(have)} kg m^2) does not match a "
         f"{mass:g} kg {solid.label} ({_join(want)} kg m^2): up to {worst:.3g} times {direction}",
         inertial.element,
         fix=f"use {_components(local)}",
     )
+
+
+def _mismatch(have: np.ndarray, solid: solids.Solid, mass: float, factor: float
+              ) -> tuple[np.ndarray, np.ndarray, np.ndarray, float] | None:
+    """How the principal moments ``have`` differ from those of ``mass`` filling ``solid``.
+
+    The solid's inertia, its principal moments, the ratios and the worst of them; None when
+    they agree within ``factor``, or when no number can state it (a flat solid, a mass of
+    1e-320 kg: SB30x reports such a mass).
+    """
+    expected = solids.inertia_of(solid, mass)
+    if not np.all(np.isfinite(expected)):
+        return None
+    want = np.linalg.eigvalsh(expected)
+    if not want.min() > 0:
+        return None
+    with np.errstate(all="ignore"):  # moments beyond a double's range
+        ratios = have / want
+        worst = float(max(ratios.max(), 1.0 / ratios.min()))
+    if not math.isfinite(worst) or worst <= factor:
+        return None
+    return expected, want, ratios, worst
+
+
+def _placeholder(solid: solids.Solid, mass: float) -> bool:
+    """Whether ``solid`` is too small to be the body: under 1 cm^3, denser than any material."""
+    return solid.volume_m3 <= _PLACEHOLDER_M3 and mass > _DENSEST_KG_M3 * solid.volume_m3
 
 
 def _join(values: np.ndarray) -> str:

@@ -73,8 +73,8 @@ def usable(solid: Solid) -> bool:
             and bool(np.all(np.isfinite(solid.second_moment))))
 
 
-def combined(solids: list[Solid]) -> Solid:
-    """The solids as one body of uniform density (parallel-axis theorem).
+def combined(solids: list[Solid], kind: str = "collision") -> Solid:
+    """The solids (``kind`` shapes of a link) as one body of uniform density (parallel axes).
 
     Callers pass shapes with positive, bounded sizes (:mod:`values`), so the volume is positive.
     """
@@ -86,7 +86,7 @@ def combined(solids: list[Solid]) -> Solid:
         moment += s.second_moment + s.volume_m3 * np.outer(d, d)
     label = solids[0].label
     if len(solids) > 1:
-        label = f"solid of its {len(solids)} collision shapes"
+        label = f"solid of its {len(solids)} {kind} shapes"
     return Solid(volume, centroid, moment, label)
 
 

@@ -43,3 +43,39 @@ def test_a_transmission_joint_without_a_name_says_so(run, tmp_path):
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB511")
     (found,) = findings(result.stdout)
     assert found["message"].startswith("transmission 't' has a <joint> without a name;")
+
+
+HEAD = """<robot name="r"><link name="head">
+  <inertial><mass value="0.547767"/>
+    <inertia ixx="{i}" ixy="0" ixz="0" iyy="{i}" iyz="0" izz="{i}"/></inertial>
+  {visual}
+  <collision><geometry><sphere radius="0.001"/></geometry></collision>
+</link></robot>"""
+
+
+def _sb301(run, tmp_path, inertia: str, visual: str) -> list[dict[str, object]]:
+    path = tmp_path / "head.urdf"
+    path.write_text(HEAD.format(i=inertia, visual=visual))
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB301")
+    return findings(result.stdout)
+
+
+def test_a_placeholder_collision_gives_way_to_the_visual(run, tmp_path):
+    """pinocchio's baxter_simple.urdf: 1 mm collision spheres ('no collision') on links of
+    half a kilo; SB301 told the head's inertia to shrink 21,600 times."""
+    box = '<visual><geometry><box size="0.15 0.15 0.15"/></geometry></visual>'
+    assert _sb301(run, tmp_path, "0.002", box) == []  # what a 15 cm box of 0.55 kg has
+    (found,) = _sb301(run, tmp_path, "0.2", box)  # a hundred times that
+    assert "solid box 0.15 x 0.15 x 0.15 m (the visual geometry; the collision geometry, " \
+        "solid sphere r=0.001 m, is a placeholder)" in str(found["message"])
+    assert found["fix"] == "use ixx=0.00205413 iyy=0.00205413 izz=0.00205413 (ixy=ixz=iyz=0)"
+
+
+def test_a_small_body_is_still_compared_with_its_only_shape(run, tmp_path):
+    """pybullet_data's sphere_1cm.urdf: no visual, the collision is the body, and its
+    inertia of 1 kg m^2 is a million times too large."""
+    (found,) = _sb301(run, tmp_path, "1", "")
+    assert "solid sphere r=0.001 m (" in str(found["message"])
+    drawn_as_small = '<visual><geometry><sphere radius="0.001"/></geometry></visual>'
+    (found,) = _sb301(run, tmp_path, "1", drawn_as_small)
+    assert "placeholder" not in str(found["message"])
