@@ -126,10 +126,52 @@ def build_model(xml_text: str, display: str, base: str = "fixed",
             failure: Exception = exc
     # an error may span lines: urdfdom quotes a vector with its line break
     reasons = [found.strip() for found in _URDFDOM_ERROR.findall("\n".join(noise))]
-    reason = reasons[0] if reasons else " ".join(str(failure).split())
-    reason = _VECTOR_PIECE.sub(_spaces_only, reason)
-    raise DescriptionError(
-        f"{display}: not a valid URDF: {reason} {check_hint(display, xacro_args)}")
+    if reasons:
+        reason = _VECTOR_PIECE.sub(_spaces_only, reasons[0])
+        raise DescriptionError(
+            f"{display}: not a valid URDF: {reason} {check_hint(display, xacro_args)}")
+    reason = " ".join(str(failure).split())  # urdfdom read it: Pinocchio's own refusal
+    raise DescriptionError(f"{display}: Pinocchio cannot build its model: {reason}"
+                           f"{_bound_culprits(xml_text, reason)} "
+                           f"{check_hint(display, xacro_args)}")
+
+
+_LIMIT_BOUNDS = {"min_velocity": "velocity", "min_effort": "effort"}
+
+
+def _bound_culprits(xml_text: str, reason: str) -> str:
+    """``(joints 'a', 'b' have a negative velocity limit)`` for Pinocchio's bounds refusal.
+
+    Pinocchio makes [-limit, limit] of a joint's velocity and effort limits, and refuses a
+    model where a minimum is above its maximum (moveit_robots' Atlas: velocity="-1").
+    """
+    kind = next((key for name, key in _LIMIT_BOUNDS.items() if name in reason), None)
+    if kind is None:
+        return ""
+    negative = []
+    for attributes, body in _JOINT_TAG.findall(xml_text):
+        name, limit = _NAME.search(attributes), _LIMIT.search(body)
+        if name is not None and limit is not None and _attribute(limit[0], kind) < 0:
+            negative.append(name[1])
+    if not negative:
+        return ""
+    listed = ", ".join(f"'{name}'" for name in negative[:5])
+    more = f" and {len(negative) - 5} more" if len(negative) > 5 else ""
+    return f" (joint{'s' if len(negative) > 1 else ''} {listed}{more}: a negative {kind} limit)"
+
+
+_JOINT_TAG = re.compile(r"<joint\b([^>]*?)(?<!/)>(.*?)</joint>", re.DOTALL)
+_NAME = re.compile(r"\bname\s*=\s*[\"']([^\"']*)[\"']")
+_LIMIT = re.compile(r"<limit\b[^>]*>")
+
+
+def _attribute(tag: str, key: str) -> float:
+    """The number ``key`` of a ``<limit ...>`` tag, 0 when absent or no number."""
+    found = re.search(rf"\b{key}\s*=\s*[\"']\s*([^\"']*)[\"']", tag)
+    try:
+        return float(found[1]) if found else 0.0
+    except ValueError:
+        return 0.0
 
 
 def new_data(model: pin.Model, display: str) -> pin.Data:

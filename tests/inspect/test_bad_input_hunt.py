@@ -145,3 +145,20 @@ def test_no_numpy_warning_reaches_a_real_terminal(tmp_path):
     urdf.write_text(FAR_INERTIALS)
     done = run_servicebot("inspect", urdf, "--section", "totals")
     assert (done.returncode, done.stderr) == (0, "")
+
+
+def test_pinocchios_own_refusal_names_the_joints_and_is_not_called_invalid_urdf(run, tmp_path):
+    """moveit_robots' Atlas: 24 Sandia finger joints with velocity="-1". urdfdom reads them;
+    Pinocchio makes [-(-1), -1] of each and refuses the model. inspect said 'not a valid
+    URDF: Some components of min_velocity are greater than max_velocity'."""
+    urdf = tmp_path / "fingers.urdf"
+    joints = "".join(
+        f'<link name="l{i}"/><joint name="finger_j{i}" type="revolute"><parent link="l{i - 1}"/>'
+        f'<child link="l{i}"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" '
+        f'velocity="{-1 if i % 2 else 1}"/></joint>' for i in range(1, 5))
+    urdf.write_text(f'<robot name="r"><link name="l0"/>{joints}</robot>')
+    result = run("inspect", urdf)
+    assert_one_line_error(result, 2, "Pinocchio cannot build its model: Some components of "
+                          "min_velocity are greater than max_velocity (joints 'finger_j1', "
+                          "'finger_j3': a negative velocity limit)", f"servicebot check {urdf}")
+    assert "not a valid URDF" not in result.stderr
