@@ -50,8 +50,9 @@ URDF_RULES: tuple[Rule, ...] = (
          "Pass --package NAME=DIR, or source the ROS workspace that holds the package."),
     Rule("SB008", "not-a-robot", E, "The root element is not <robot>",
          "A URDF's root element is <robot>; SDF files (<sdf>) and xacro fragments are not "
-         "robot descriptions.",
-         "Check the right file (for SDF use gz sdf --check)."),
+         "robot descriptions. A URDF <world> (DART reads it, placing the robots it "
+         "includes) is a warning: a file of another kind, with nothing wrong in it.",
+         "Check the right file."),
     Rule("SB009", "robot-unnamed", E, "<robot> has no name",
          "urdfdom refuses a robot without a name attribute. An empty name it loads (as "
          "Pinocchio and yourdfpy do): a warning, since what goes by the robot's name "

@@ -33,7 +33,7 @@ MAX_LINKS = 20_000
 def check(root: ET.Element) -> Iterator[Issue]:
     """Every parse-level issue of the document under ``root``."""
     if root.tag != "robot":
-        yield Issue("SB008", f"root element is <{root.tag}>, not <robot>; is this a URDF?", root)
+        yield _not_a_robot(root)
         return
     yield from _robot_attributes(root)
     counts = {tag: len(root.findall(tag)) for tag in ("link", "joint")}
@@ -52,6 +52,16 @@ def check(root: ET.Element) -> Iterator[Issue]:
             if close:
                 yield Issue("SB010", f"<{child.tag}> is not a URDF element; did you mean "
                             f"<{close[0]}>?", child, fix=f"rename it <{close[0]}>")
+
+
+def _not_a_robot(root: ET.Element) -> Issue:
+    """SB008, saying what the file is where its root tells: SDF, or a URDF world."""
+    if root.tag == "world":  # DART's parseWorld reads it (urdfdom's urdf_world)
+        return Issue("SB008", "root element is <world>: a URDF world (DART's), which places "
+                     "robots it includes, is not a robot", root, severity=Severity.WARNING,
+                     fix="check the robots it includes")
+    return Issue("SB008", f"root element is <{root.tag}>, not <robot>; is this a URDF?", root,
+                 fix="for SDF use gz sdf --check" if root.tag == "sdf" else None)
 
 
 def _robot_attributes(root: ET.Element) -> Iterator[Issue]:

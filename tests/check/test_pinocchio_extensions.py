@@ -79,3 +79,18 @@ def test_a_small_body_is_still_compared_with_its_only_shape(run, tmp_path):
     drawn_as_small = '<visual><geometry><sphere radius="0.001"/></geometry></visual>'
     (found,) = _sb301(run, tmp_path, "1", drawn_as_small)
     assert "placeholder" not in str(found["message"])
+
+
+def test_a_urdf_world_is_named_as_one_and_sdf_pointed_to_gz(run, tmp_path):
+    """DART's testWorld.urdf (its parseWorld reads it) got 'for SDF use gz sdf --check', and
+    failed a directory run as an error."""
+    world = tmp_path / "world.urdf"
+    world.write_text('<world name="w"><include filename="r.urdf" model_name="r"/></world>')
+    sdf = tmp_path / "model.urdf"
+    sdf.write_text('<sdf version="1.6"><model name="m"/></sdf>')
+    result = run("check", world, "--format", "json", "--isolated")
+    (found,) = findings(result.stdout)
+    assert result.exit_code == 0 and found["severity"] == "warning"
+    assert "a URDF world (DART's)" in found["message"] and "gz sdf" not in str(found["fix"])
+    (found,) = findings(run("check", sdf, "--format", "json", "--isolated").stdout)
+    assert (found["severity"], found["fix"]) == ("error", "for SDF use gz sdf --check")
