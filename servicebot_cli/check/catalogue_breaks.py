@@ -94,6 +94,8 @@ BREAKS: dict[str, str] = {
              "controller runs); in <ros2_control>, ros2_control's component parser refuses the "
              "component (the controller manager, gazebo_ros2_control and gz_ros2_control do not "
              "start)",
+    "SB513": "sdformat's conversion of the URDF throws (std::invalid_argument): Gazebo "
+             "spawns nothing of the robot",
     "SB601": "the controller manager refuses parameters that are not valid YAML",
     "SB602": "the controller fails to configure: the joint's interfaces do not exist",
     "SB603": "diff_drive_controller accepts it and drives at the wrong speed and odometry",

@@ -75,6 +75,12 @@ ROS_RULES = (
          "numbers; text it cannot read (a value in quotes, a unit, a decimal comma) makes it "
          "log \"Error parsing the limits\" and go on without the interface's limits.",
          "Write a plain decimal number."),
+    Rule("SB513", "gazebo-number", E, "A <gazebo> setting sdformat cannot read as a number",
+         "sdformat's URDF converter reads mu1, mu2, kp, kd, maxVel, minDepth, dampingFactor, "
+         "maxContacts, laserRetro, springReference, springStiffness, stopCfm, stopErp and "
+         "fudgeFactor as numbers (std::stod, std::stoi), which fail on text that does not "
+         "start as one: an unexpanded ${mu}, a word, nothing.",
+         "Write a plain number (expand the xacro property)."),
     # -- controller configuration ----------------------------------------------------------------
     Rule("SB601", "controllers-yaml", E, "The controllers YAML cannot be read",
          "Not YAML, or not the shape of a ros2_control parameters file "

@@ -1,4 +1,7 @@
-"""Gazebo rules: references name real parts, sensors are sane, one simulator (SB501-SB503)."""
+"""Gazebo rules: references name real parts, sensors are sane, one simulator, numbers.
+
+SB501-SB503, and SB513 for settings sdformat reads as numbers.
+"""
 
 from __future__ import annotations
 
@@ -44,6 +47,38 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
             yield Issue("SB502", f"sensor '{sensor.name}': {problem}", sensor.element)
         yield from _rate(sensor)
     yield from _mixed(robot)
+    yield from _numbers(robot)
+
+
+# what sdformat's URDF converter reads with std::stod or std::stoi (parser_urdf.cc), which
+# throws on text that does not start as a number: the conversion fails, Gazebo loads nothing
+_NUMERIC = frozenset(("mu1", "mu2", "kp", "kd", "maxVel", "minDepth", "dampingFactor",
+                      "maxContacts", "laserRetro", "springReference", "springStiffness",
+                      "stopCfm", "stopErp", "fudgeFactor"))
+_NUMBER_START = re.compile(r"[ \t\n\r\f\v]*[+-]?(?:[0-9]|\.[0-9]|inf|nan)", re.IGNORECASE)
+
+
+def _numbers(robot: RobotDescription) -> Iterator[Issue]:
+    """SB513 for a <gazebo> setting sdformat converts to a number and cannot."""
+    for block in robot.gazebo:
+        if block.element is None:
+            continue
+        for child in block.element:
+            if not isinstance(child.tag, str) or child.tag not in _NUMERIC or len(child):
+                continue
+            text = child.text if (child.text or "").strip() else child.get("value", "")
+            if _NUMBER_START.match(text or "") is None:
+                shown = (text or "").strip()
+                yield Issue("SB513", f"<gazebo{_referring(block.reference)}> <{child.tag}>"
+                            f"{shown}</{child.tag}>: "
+                            + (f"'{shown}' is not a number" if shown else "no number")
+                            + "; sdformat's conversion of the URDF fails, and Gazebo loads "
+                            "nothing of the robot", child,
+                            fix=f"write <{child.tag}> as a plain number")
+
+
+def _referring(reference: str | None) -> str:
+    return f' reference="{reference}"' if reference is not None else ""
 
 
 def _unknown_reference(reference: str, names: list[str],

@@ -90,3 +90,17 @@ def test_a_massless_link_between_moving_joints_fails_where_gazebo_runs_it(run, t
     assert result.exit_code == 1 and [(f["code"], f["severity"]) for f in found] == [
         ("SB304", "error")]
     assert found[0]["message"].endswith("; Gazebo drops it, and every link below it")
+
+
+def test_a_setting_sdformat_reads_as_a_number_must_start_as_one(run, tmp_path):
+    """sdformat's ParseGazeboInvalidDampingFactor: <dampingFactor>foo</dampingFactor> makes
+    the conversion throw; std::stod reads ' 0.5', '1e3' and '.5', and stops at trailing text."""
+    def codes(settings: str) -> list[str]:
+        block = f'<gazebo reference="base_link">{settings}</gazebo>'
+        return [c for c, _, _ in _found(run, tmp_path, block)[1]]
+
+    assert codes("<mu1> 0.5</mu1><kp>1e3</kp><kd>.5</kd><maxContacts>10</maxContacts>"
+                 "<dampingFactor value='0.1'/><minDepth>0.001m</minDepth>") == []
+    assert codes("<dampingFactor>foo</dampingFactor>") == ["SB513"]
+    assert codes("<mu2></mu2>") == ["SB513"]
+    assert codes("<material>Gazebo/Grey</material><selfCollide>true</selfCollide>") == []
