@@ -261,7 +261,9 @@ URDF_RULES: tuple[Rule, ...] = (
          "massless link with everything below it, KDL ignores it: an error when the "
          "description is meant for a simulator (as for SB303), a warning otherwise. Links "
          "fixed to it (a gripper on a flange link) lend it their mass: sdformat and Pinocchio "
-         "merge them, so that is not reported.",
+         "merge them, so that is not reported. A fixed joint that a <gazebo reference> keeps "
+         "apart (disableFixedJointLumping, preserveFixedJoint) is not merged: its child needs "
+         "mass of its own, an error.",
          "Add an <inertial>, or merge the link into its child."),
     Rule("SB305", "zero-mass", W, "Zero mass on a moving link",
          "The link is moved by a joint and has mass 0 (links below it have mass).",

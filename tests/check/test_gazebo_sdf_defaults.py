@@ -1,6 +1,9 @@
-"""Gazebo blocks as sdformat reads them: its defaults are no defects (sdformat's own tests)."""
+"""Gazebo blocks as sdformat reads them (sdformat's own tests): its defaults are no defects,
+what it cannot read or model is."""
 
 from __future__ import annotations
+
+import pytest
 
 from tests.check.helpers import findings
 
@@ -104,3 +107,33 @@ def test_a_setting_sdformat_reads_as_a_number_must_start_as_one(run, tmp_path):
     assert codes("<dampingFactor>foo</dampingFactor>") == ["SB513"]
     assert codes("<mu2></mu2>") == ["SB513"]
     assert codes("<material>Gazebo/Grey</material><selfCollide>true</selfCollide>") == []
+
+
+KEPT = """<robot name="r">
+  <link name="base"><inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01"
+    iyz="0" izz="0.01"/></inertial></link>
+  <link name="imu"/>
+  <link name="chip">{chip}</link>
+  <joint name="imu_joint" type="fixed"><parent link="base"/><child link="imu"/></joint>
+  <joint name="chip_joint" type="fixed"><parent link="imu"/><child link="chip"/></joint>
+  <gazebo reference="imu_joint"><{setting}>true</{setting}></gazebo>
+</robot>"""
+MASS = ('<inertial><mass value="0.01"/><inertia ixx="1e-6" ixy="0" ixz="0" iyy="1e-6" iyz="0" '
+        'izz="1e-6"/></inertial>')
+
+
+@pytest.mark.parametrize("setting", ["disableFixedJointLumping", "preserveFixedJoint"])
+def test_a_fixed_joint_kept_apart_needs_a_child_with_mass(run, tmp_path, setting):
+    """sdformat's ZeroMassLeafLink and ZeroMassIntermediateLinkWithFixedParentJoint: with
+    lumping off, a massless child of a fixed joint is not modelled, nor anything below it.
+    Mass rules took every fixed child as merged into its parent: nothing was reported."""
+    path = tmp_path / "r.urdf"
+    path.write_text(KEPT.format(setting=setting, chip=""))
+    result = run("check", path, "--format", "json", "--isolated", "--ignore", "SB309,SB702")
+    found = findings(result.stdout)
+    assert result.exit_code == 1 and [(f["code"], f["severity"]) for f in found] == [
+        ("SB304", "error")]
+    assert f"fixed joint 'imu_joint', which <{setting}> keeps a body" in found[0]["message"]
+    path.write_text(KEPT.format(setting=setting, chip=MASS))  # lumped into imu: it has mass
+    result = run("check", path, "--format", "json", "--isolated", "--ignore", "SB309")
+    assert result.exit_code == 0 and findings(result.stdout) == []
