@@ -22,7 +22,8 @@ ROS_RULES = (
          "\"ray\" sensor may start at range min 0; a GPU lidar's range min is a camera's "
          "near clip, which must be positive), image width and height > 0, clip near < far, "
          "noise stddev >= 0, an update_rate sdformat can read (0, SDF's default, updates at "
-         "every simulation step; a negative one does too, a warning).",
+         "every simulation step; a negative one does too, a warning). A force_torque sensor "
+         "on a fixed joint that Gazebo lumps away measures nothing (a warning).",
          "Write the sensor's real values."),
     Rule("SB503", "mixed-gazebo", W, "Gazebo Classic and gz-sim plugins in one file",
          "libgazebo_ros_* plugins load only in Gazebo Classic, gz-sim-* (ignition-gazebo-*) "

@@ -12,6 +12,7 @@ import numpy as np
 from servicebot_cli.check import solids, values
 from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound
 from servicebot_cli.check.findings import Issue, Severity
+from servicebot_cli.check.gazebo import NOT_LUMPED
 from servicebot_cli.check.simulators import simulated_by
 from servicebot_cli.kinematics.transforms import rpy_matrix
 
@@ -277,15 +278,12 @@ def _moving_masses(robot: RobotDescription) -> Iterator[Issue]:
                         "mass 0", link.inertial.element, fix="give the link its real mass")
 
 
-_NOT_LUMPED = ("disableFixedJointLumping", "preserveFixedJoint")
-
-
 def _kept_apart(robot: RobotDescription) -> dict[str, str]:
     """The fixed joints a ``<gazebo reference>`` keeps from lumping, with the setting's name."""
     kept: dict[str, str] = {}
     for block in robot.gazebo:
         for key, value in block.properties:
-            if key in _NOT_LUMPED and value.strip().lower() in ("true", "1") and block.reference:
+            if key in NOT_LUMPED and value.strip().lower() in ("true", "1") and block.reference:
                 kept[block.reference] = key
     return kept
 

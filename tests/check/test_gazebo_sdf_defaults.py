@@ -137,3 +137,30 @@ def test_a_fixed_joint_kept_apart_needs_a_child_with_mass(run, tmp_path, setting
     path.write_text(KEPT.format(setting=setting, chip=MASS))  # lumped into imu: it has mass
     result = run("check", path, "--format", "json", "--isolated", "--ignore", "SB309")
     assert result.exit_code == 0 and findings(result.stdout) == []
+
+
+FT = """<robot name="r">
+  <link name="base"><inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01"
+    iyz="0" izz="0.01"/></inertial></link>
+  <link name="tool">{mass}</link>
+  <joint name="wrist" type="{kind}"><parent link="base"/><child link="tool"/>{limit}</joint>
+  <gazebo reference="wrist"><sensor name="ft" type="force_torque"><update_rate>100
+    </update_rate></sensor>{setting}</gazebo>
+</robot>"""
+
+
+def test_a_force_torque_sensor_on_a_lumped_joint_measures_nothing(run, tmp_path):
+    """sdformat's invalid_force_torque_sensor_lumped_and_reduced.urdf: 'users need to be
+    wary' (its test); the joint becomes a frame, the sensor attaches to nothing."""
+    def found(kind: str, setting: str = "") -> list[tuple[str, str, str]]:
+        limit = '<limit lower="-1" upper="1" effort="1" velocity="1"/>' if kind != "fixed" else ""
+        text = FT.format(kind=kind, limit=limit, setting=setting, mass=MASS)
+        path = tmp_path / "r.urdf"
+        path.write_text(text)
+        result = run("check", path, "--format", "json", "--isolated", "--ignore", "SB309")
+        return [(f["code"], f["severity"], f["message"]) for f in findings(result.stdout)]
+
+    (lumped,) = found("fixed")
+    assert lumped[:2] == ("SB502", "warning") and "the sensor measures nothing" in lumped[2]
+    assert found("fixed", "<preserveFixedJoint>true</preserveFixedJoint>") == []
+    assert found("revolute") == []
