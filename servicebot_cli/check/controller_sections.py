@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
-from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.description.yaml_size import MOST_NODES, unfolded_nodes
 
 _NAMESPACE_DEPTH = 3
@@ -56,7 +56,19 @@ def sections(text: str, display: str) -> Sections | Issue:
                      "names controllers for MoveIt and configures none; ")
         return Issue("SB601", f"{found}no controller sections (NAME: ros__parameters: ...) "
                      "found", where=(display, 1, 1), fix=fix)
+    if not controller_types(sections) and not any(
+            get(section, key) is not None for found in sections.values() for section in found
+            for key in JOINT_KEYS):
+        names = ", ".join(sorted(sections)[:3]) + (", ..." if len(sections) > 3 else "")
+        return Issue("SB601", f"no controller here: its sections ({names}) give no controller "
+                     "type and name no joint (a node's parameters?); nothing was checked",
+                     where=(display, 1, 1), severity=Severity.INFO,
+                     fix="name the ros2_control controllers file")
     return sections
+
+
+JOINT_KEYS = ("left_wheel_names", "right_wheel_names", "joints", "joint")
+"""The parameters of ros2_controllers that name URDF joints."""
 
 
 def _ros1_controllers(root: yaml.Node | None, depth: int = 0) -> str | None:

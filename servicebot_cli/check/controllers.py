@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
-from servicebot_cli.check.controller_sections import Sections, controller_types, get
+from servicebot_cli.check.controller_sections import JOINT_KEYS, Sections, controller_types, get
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
 
@@ -38,7 +38,6 @@ ROS2_CONTROLLERS = frozenset((
     "velocity_controllers",
 ))
 """The packages of ros-controls/ros2_controllers: their ``joint``/``joints`` name URDF joints."""
-_JOINT_KEYS = ("left_wheel_names", "right_wheel_names", "joints", "joint")
 
 
 def check(found: Sections, display: str, robot: RobotDescription) -> Iterator[Issue]:
@@ -108,7 +107,7 @@ class _Checker:
         this robot's, when some are: the others configure another robot's controller (the
         other controller manager of ros2_control_demos' example 15). Else every section.
         """
-        naming = [s for s in sections if any(get(s, key) is not None for key in _JOINT_KEYS)]
+        naming = [s for s in sections if any(get(s, key) is not None for key in JOINT_KEYS)]
         fitting = [s for s in naming if self.fits(s)]
         if not fitting or len(fitting) == len(naming):
             return sections
@@ -116,7 +115,7 @@ class _Checker:
 
     def fits(self, params: yaml.MappingNode) -> bool:
         """Whether every joint name of ``params`` is a joint of the robot."""
-        for key in _JOINT_KEYS:
+        for key in JOINT_KEYS:
             node = get(params, key)
             items = node.value if isinstance(node, yaml.SequenceNode) else [node]
             for item in items:
@@ -129,7 +128,7 @@ class _Checker:
         return True
 
     def section(self, name: str, params: yaml.MappingNode) -> Iterator[Issue]:
-        for key in _JOINT_KEYS:
+        for key in JOINT_KEYS:
             node = get(params, key)
             if node is not None:
                 yield from self.names(name, key, node)

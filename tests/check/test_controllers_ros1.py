@@ -43,3 +43,15 @@ def test_a_namespaced_ros1_file_and_a_moveit_controller_list_are_named(run, tmp_
     result = run("check", "controllers", path, "--robot", "sim")
     assert "a MoveIt controller_list (moveit_simple_controller_manager's)" in result.stdout
     assert "Fix the YAML" not in result.stdout
+
+
+def test_a_node_parameters_file_says_nothing_was_checked(run, tmp_path):
+    """roverrobotics_driver's max_100_config.yaml: a driver node's parameters, no controller;
+    check controllers passed it with no word of having checked nothing."""
+    path = tmp_path / "max_100_config.yaml"
+    path.write_text("roverrobotics_driver:\n  ros__parameters:\n    device_port: /dev/rover\n"
+                    "    wheel_radius: 0.08\n")
+    result = run("check", "controllers", path, "--robot", "sim")
+    assert result.exit_code == 0
+    assert "info SB601 [controllers-yaml] no controller here: its sections " \
+        "(roverrobotics_driver) give no controller type and name no joint" in result.stdout
