@@ -1,9 +1,10 @@
 """Macro calls written without ``xacro:``, which xacro leaves in the URDF as they are.
 
-xacro expands ``<xacro:wheel .../>``. ROS 1 Melodic's xacro also took a bare ``<wheel .../>``
-(with a deprecation warning); Noetic's and ROS 2's leave it untouched, and every URDF reader
-skips an element it does not know: the wheel is silently missing. Descriptions written for
-Melodic (Robotnik's rbkairos) still do this.
+xacro expands ``<xacro:wheel .../>``. xacro before 1.14 (ROS 1 up to Melodic) and ROS 2's
+before 2.0.8 (October 2022) also took a bare ``<wheel .../>``, with a deprecation warning;
+later ones leave it untouched, and every URDF reader skips an element it does not know: the
+wheel is silently missing. Descriptions written for those (Robotnik's rbkairos, velodyne_
+simulator's dashing branch) still do this.
 """
 
 from __future__ import annotations
@@ -42,6 +43,6 @@ def bare_macro_calls(doc: xml.dom.minidom.Document, macros: Mapping[str, SourceR
         warnings.append(
             f"{where}: <{name}> is not a macro call: xacro expands <xacro:{name}> (macro "
             f"'{name}' of {defined.location()}), so it leaves <{name}> in the URDF, where every "
-            f"reader skips it (only ROS 1 Melodic's xacro took the bare name); write "
+            f"reader skips it (xacro before 1.14 and 2.0.8 took the bare name); write "
             f"<xacro:{name} .../>")
     return tuple(warnings)

@@ -1,4 +1,5 @@
-"""A macro called without ``xacro:`` (ROS 1 Melodic style): xacro leaves it, check says so.
+"""A macro called without ``xacro:`` (as xacro before 1.14 and 2.0.8 took it): xacro leaves it,
+check says so.
 
 ugv_gazebo_sim's steerbot.xacro and Robotnik's rbkairos call their wheel macros as
 ``<front_wheel .../>``. Noetic's and ROS 2's xacro expand only ``<xacro:front_wheel>``; the
@@ -40,6 +41,7 @@ def test_a_bare_macro_call_is_one_warning_at_the_call(run, tmp_path):
                                  '  <wheel side="left"/>'))
     [message] = _warnings(run, path)
     assert f"{path}:16:3: <wheel> is not a macro call" in message
+    assert "(xacro before 1.14 and 2.0.8 took the bare name)" in message  # not Melodic only
     assert f"macro 'wheel' of {path}:4:3" in message
     assert "write <xacro:wheel .../>" in message
     expanded = run("expand", path).stdout  # as xacro does: the bare element is left as it is
