@@ -42,10 +42,20 @@ def as_typed(path: str) -> str:
     A file reached through ``$(find pkg)`` comes as an absolute path, the same file reached
     by a relative include as a relative one; shown the same way, a finding points at one
     file, and GitHub annotations (which want paths in the repository) attach to it.
-    Symbolic links are not followed: the path stays the one the user's tools name.
+    Symbolic links are not followed: the path stays the one the user's tools name. A ``..``
+    is taken out (realsense's ``tests/../urdf/_d415.urdf.xacro`` is ``urdf/_d415.urdf.xacro``)
+    where the shorter path is the same file: a symbolic link before it may lead elsewhere.
     """
-    if not os.path.isabs(path) or ".." in Path(path).parts:
-        return path  # a symbolic link before '..' leads elsewhere than the text says
+    if ".." in Path(path).parts:
+        shorter = os.path.normpath(path)
+        try:
+            if not os.path.samefile(path, shorter):
+                return path
+        except OSError:  # either is missing: what the text says is all there is
+            return path
+        path = shorter
+    if not os.path.isabs(path):
+        return path
     try:
         here = os.getcwd()
     except OSError:  # no working directory any more

@@ -82,6 +82,16 @@ def test_a_file_outside_the_working_directory_keeps_its_absolute_path(workspace)
     assert found["file"] == str(urdf / "parts.xacro") and found["via"] == f"{robot}:5:3"
 
 
+def test_an_include_through_dot_dot_is_named_by_its_shorter_path(workspace):
+    """realsense-ros' tests/*.xacro include ../urdf/_d415.urdf.xacro: findings named
+    tests/../urdf/..., one file under two names in a run, and GitHub could not attach them."""
+    tests = workspace / "src" / "demo_description" / "tests"
+    tests.mkdir()
+    (tests / "test.urdf.xacro").write_text(ROBOT.format(include="../urdf/parts.xacro"))
+    found = _sb203(workspace, "src/demo_description/tests/test.urdf.xacro")
+    assert [f["file"] for f in found] == ["src/demo_description/urdf/parts.xacro"]
+
+
 def test_a_path_through_a_symbolic_link_and_dot_dot_is_kept_as_written(tmp_path):
     """ws/a is a link to real/a; a/robot includes ../common/parts.xacro, which xacro opens
     as ws/a/../common, that is real/common. Folding '..' as text named ws/common, which does
