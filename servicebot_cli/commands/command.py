@@ -37,9 +37,18 @@ class Command(click.Command):
     """A command that refuses a single-valued option given twice."""
 
     def parse_args(self, ctx: click.Context, args: list[str]) -> list[str]:
-        """Refuse repeated options, then parse as Click does."""
+        """Refuse repeated options, then parse as Click does.
+
+        Click's parser reports an option without its value with no context; the command's
+        own is given, so that the message points at this command's ``--help``.
+        """
         refuse_repeated_options(self, ctx, args)
-        return super().parse_args(ctx, args)
+        try:
+            return super().parse_args(ctx, args)
+        except click.UsageError as exc:
+            if exc.ctx is None:
+                exc.ctx = ctx
+            raise
 
 
 class Group(click.Group):

@@ -176,6 +176,11 @@ def test_two_files_for_a_single_robot_command(run):
 def test_missing_option_value_points_at_the_subcommand_help(run):
     assert_one_line_error(run("expand", "-o"), 2, "requires an argument",
                           "servicebot expand --help")
+    # a subcommand of check: its own help, not the group's (which shows check urdf's)
+    assert_one_line_error(run("check", "controllers", "--urdf"), 2, "requires an argument",
+                          "servicebot check controllers --help")
+    assert_one_line_error(run("check", "urdf", "x.urdf", "--select"), 2,
+                          "requires an argument", "servicebot check urdf --help")
 
 
 def test_unknown_option_is_one_line(run):
