@@ -54,24 +54,25 @@ def defined_elsewhere(robot: RobotDescription, names: Collection[str]) -> dict[s
         return {}
     wanted = {name.encode(): name for name in names}
     found: dict[str, Definition] = {}
+    sources = []
     for path in included_files([Path(file) for file in robot.files]):
         try:
             with path.open("rb") as handle:
                 text = comments_blanked(handle.read(_HEAD_BYTES))
-            text = _GAZEBO_BLOCK.sub(_line_breaks, text)
         except OSError:
             continue
+        sources.append((path, _GAZEBO_BLOCK.sub(_line_breaks, text)))
+    texts = [text for _, text in sources]
+    for path, text in sources:
         for match in _DEFINITION.finditer(text):
             named = _NAME.search(match[2])
             if named is None or (match[1] == b"joint" and not _TYPE.search(match[2])):
                 continue
             written = named[1] if named[1] is not None else named[2]
             line = text.count(b"\n", 0, match.start()) + 1
-            for name in _defined(written, wanted):
+            for name in _defined(written, wanted, texts):
                 found.setdefault(name, (display_path(path), line, match[1].decode(),
                                         written.decode("utf-8", "replace")))
-        if len(found) == len(wanted):
-            break
     return found
 
 
@@ -80,8 +81,14 @@ def _line_breaks(block: re.Match[bytes]) -> bytes:
     return b"\n" * block[0].count(b"\n")
 
 
-def _defined(written: bytes, wanted: dict[bytes, str]) -> list[str]:
-    """The names of ``wanted`` that the name ``written`` in a source defines."""
+def _defined(written: bytes, wanted: dict[bytes, str], texts: list[bytes]) -> list[str]:
+    """The names of ``wanted`` that the name ``written`` in a source defines.
+
+    Of a name written with expressions, only where what the expressions stand for is written
+    in the sources (``texts``, comments blanked) as a word of its own: the argument of a call
+    the expansion left out. create_robot's ``${prefix}_wheel_link`` is called with left and
+    right; its ``rear_wheel_link`` is only in a comment, so a reference to it is a stale one.
+    """
     if written in wanted:
         return [wanted[written]]
     if b"$" not in written:
@@ -90,6 +97,14 @@ def _defined(written: bytes, wanted: dict[bytes, str]) -> list[str]:
     if sum(len(_GENERIC.sub(b"", part)) for part in parts) < _FEWEST_LITERAL:
         return []  # ${name}_link says nothing of which link: any typo of one would match
     # an expression may expand to nothing (${prefix}tool0 with the usual empty prefix)
-    pattern = re.compile(b".*".join(re.escape(part) for part in parts), re.DOTALL)
-    return [name for raw, name in wanted.items() if pattern.fullmatch(raw)]
+    pattern = re.compile(b"(.*)".join(re.escape(part) for part in parts), re.DOTALL)
+    return [name for raw, name in wanted.items()
+            if (match := pattern.fullmatch(raw)) is not None
+            and all(_written(value, texts) for value in match.groups() if value)]
+
+
+def _written(value: bytes, texts: list[bytes]) -> bool:
+    """Whether ``value`` stands as a word of its own in one of ``texts``."""
+    word = re.compile(rb"(?<![\w$])" + re.escape(value) + rb"(?!\w)")
+    return any(word.search(text) for text in texts)
 

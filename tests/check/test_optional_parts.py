@@ -181,6 +181,33 @@ def test_a_name_template_that_says_nothing_hides_no_typo(run, tmp_path):
     assert found["tool0"]["severity"] == "warning"
 
 
+def test_a_template_stands_for_a_part_only_where_its_argument_is_written(run, tmp_path):
+    """create_robot: create_wheel (${prefix}_wheel_link) is called with left and right; the
+    rear wheel is in a comment, and <gazebo reference="rear_wheel_link"> was 'a part it
+    leaves out', a warning. Called under a condition not taken, it is one."""
+    calls = {"commented": '<!-- <xacro:wheel prefix="rear"/> -->',
+             "conditional": '<xacro:if value="$(arg back)"><xacro:wheel prefix="rear"/>'
+                            '</xacro:if>'}
+    severity = {}
+    for kind, call in calls.items():
+        robot = tmp_path / f"{kind}.urdf.xacro"
+        robot.write_text(f"""<robot name="r" {XACRO}>
+  <xacro:arg name="back" default="false"/>
+  <xacro:macro name="wheel" params="prefix">
+    <link name="${{prefix}}_wheel_link"/>
+    <joint name="${{prefix}}_wheel_joint" type="continuous"><parent link="base_link"/>
+      <child link="${{prefix}}_wheel_link"/></joint>
+  </xacro:macro>
+  <link name="base_link"/>
+  <xacro:wheel prefix="left"/>
+  <xacro:wheel prefix="right"/>
+  {call}
+  <gazebo reference="rear_wheel_link"><mu1>1</mu1></gazebo>
+</robot>""")
+        severity[kind] = _sb501(run, robot)[1]["rear_wheel_link"]["severity"]
+    assert severity == {"commented": "error", "conditional": "warning"}
+
+
 def test_an_sdf_link_inside_a_gazebo_block_is_no_part_left_out(run, tmp_path):
     """PR2's gripper.gazebo.xacro adds ``parallel_link`` to the model as SDF inside a
     ``<gazebo>`` block; a ``<gazebo reference>`` to it names no URDF link, as in the .urdf."""
