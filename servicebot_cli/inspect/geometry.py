@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.common.errors import ServicebotError
+from servicebot_cli.common.errors import PackageNotFound, ServicebotError
 from servicebot_cli.description import mesh_readers
 from servicebot_cli.description.elements import Shape
 from servicebot_cli.description.safe_xml import declaration_first
@@ -65,6 +65,18 @@ class MeshLibrary:
     base_dir: Path
     problems: list[str] = field(default_factory=list)
     _cache: dict[str, Mesh | None] = field(default_factory=dict)
+    # a missing package's message: its problem line, its first mesh, how many it hides
+    _hidden: dict[str, tuple[int, str, int]] = field(default_factory=dict)
+
+    def _no_package(self, filename: str, message: str) -> None:
+        """One problem line per missing package, saying how many meshes it hides."""
+        line, first, count = self._hidden.get(message, (len(self.problems), filename, 0))
+        count += 1
+        if count == 1:
+            self.problems.append(f"mesh {filename}: {message}")
+        else:
+            self.problems[line] = f"{count} meshes ({first} and others): {message}"
+        self._hidden[message] = (line, first, count)
 
     def get(self, filename: str) -> Mesh | None:
         """The mesh at ``filename`` (as written in the URDF), unscaled; None if unusable."""
@@ -75,6 +87,9 @@ class MeshLibrary:
     def _load(self, filename: str) -> Mesh | None:
         try:
             path = self.resolver.resolve_uri(filename, self.base_dir)
+        except PackageNotFound as exc:  # once per package: Pepper's hid 47 meshes
+            self._no_package(filename, str(exc))
+            return None
         except ServicebotError as exc:
             self.problems.append(f"mesh {filename}: {exc}")
             return None

@@ -11,6 +11,7 @@ casters are left out (:mod:`~servicebot_cli.kinematics.running_gear`).
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -137,10 +138,40 @@ def _without_ball_casters(robot: RobotDescription, wheels: list[Wheel],
 
 
 def _why_not_wheels(robot: RobotDescription, left_out: dict[str, list[str]]) -> str:
-    """Why the continuous joints are not wheels, joints grouped by reason (three at most)."""
+    """Why the continuous joints are not wheels, joints grouped by reason (three at most).
+
+    Joints that mimic another come last: a finger that follows its neighbour is less likely
+    the wheel the reader looks for (Pepper's three mimic fingers hid its wheels behind '...').
+    Joints whose links lack a round shape are one group, their links named.
+    """
     if not left_out:
         return "it has no continuous joint" if not any(
             turns_freely(j) for j in robot.joints) else "no other continuous joint is one"
-    reasons = [f"{', '.join(joints)} {'turns' if len(joints) == 1 else 'turn'} {reason}"
-               for reason, joints in left_out.items()]
+    mimics = {j.name for j in robot.joints if j.mimic is not None}
+    groups: dict[str, list[str]] = {}
+    for reason, joints in left_out.items():
+        shapeless = _NO_ROUND_SHAPE.fullmatch(reason)
+        key = _NO_ROUND_SHAPE.pattern if shapeless else reason
+        groups.setdefault(key, []).extend(
+            f"{joint} (link '{shapeless[1]}')" if shapeless and len(joints) == 1 else joint
+            for joint in joints)
+    reasons = []
+    for key, joints in sorted(groups.items(), key=lambda item: all(
+            j.split(" ")[0] in mimics for j in item[1])):
+        joints.sort(key=lambda joint: joint.split(" ")[0] in mimics)
+        if key == _NO_ROUND_SHAPE.pattern:
+            reasons.append(f"{_listed(joints)} {'turns' if len(joints) == 1 else 'turn'} but "
+                           f"{'its link has' if len(joints) == 1 else 'their links have'} no "
+                           "<cylinder> or <sphere> collision or visual to take a radius from")
+        else:
+            reasons.append(f"{_listed(joints)} {'turns' if len(joints) == 1 else 'turn'} {key}")
     return "; ".join(reasons[:3]) + ("; ..." if len(reasons) > 3 else "")
+
+
+_NO_ROUND_SHAPE = re.compile(r"but link '(.*)' has no <cylinder> or <sphere> collision or "
+                             r"visual to take its radius from")
+
+
+def _listed(joints: list[str]) -> str:
+    """The first six of ``joints``, then how many more."""
+    return ", ".join(joints[:6]) + (f" and {len(joints) - 6} more" if len(joints) > 6 else "")

@@ -162,3 +162,20 @@ def test_pinocchios_own_refusal_names_the_joints_and_is_not_called_invalid_urdf(
                           "min_velocity are greater than max_velocity (joints 'finger_j1', "
                           "'finger_j3': a negative velocity limit)", f"servicebot check {urdf}")
     assert "not a valid URDF" not in result.stderr
+
+
+def test_a_missing_package_is_one_note_however_many_meshes_it_hides(run, tmp_path):
+    """ros-naoqi's pepper.urdf: pepper_meshes is a separate download; inspect printed one
+    'package not found' note per mesh, 47 of them (check says it once)."""
+    links = "".join(f'<link name="l{i}"><visual><geometry><mesh filename="package://'
+                    f'pepper_meshes/meshes/{i}.dae"/></geometry></visual></link>'
+                    for i in range(3))
+    joints = "".join(f'<joint name="j{i}" type="fixed"><parent link="l0"/><child link="l{i}"/>'
+                     '</joint>' for i in (1, 2))
+    urdf = tmp_path / "pepper.urdf"
+    urdf.write_text(f'<robot name="p">{links}{joints}</robot>')
+    result = run("inspect", urdf, "--format", "json")
+    notes = [n for n in json.loads(result.stdout)["totals"]["notes"] if "pepper_meshes" in n]
+    assert len(notes) == 1 and notes[0].startswith(
+        "3 meshes (package://pepper_meshes/meshes/0.dae and others): package 'pepper_meshes' "
+        "not found")

@@ -34,9 +34,24 @@ def test_wheels_turning_about_x_are_named_with_their_axis():
 
 def test_continuous_joints_without_a_cylinder_are_named_with_their_link():
     why = _refusal(SRC / "example_1" / "description" / "urdf" / "rrbot.urdf.xacro")
-    assert why == ("joint1 turns but link 'link1' has no <cylinder> or <sphere> collision or "
-                   "visual to take its radius from; joint2 turns but link 'link2' has no "
-                   "<cylinder> or <sphere> collision or visual to take its radius from")
+    assert why == ("joint1 (link 'link1'), joint2 (link 'link2') turn but their links have no "
+                   "<cylinder> or <sphere> collision or visual to take a radius from")
+
+
+def test_mimic_joints_come_after_the_joints_that_could_be_wheels(tmp_path):
+    """ros-naoqi's Pepper: three mimic fingers were named first, one reason each, and its
+    mesh wheels were cut off behind '...'."""
+    links = "".join(f'<link name="{n}_link"/>' for n in ("F1", "F2", "F3", "WL", "WR"))
+    joints = "".join(
+        f'<joint name="{n}" type="continuous"><parent link="base"/><child link="{n}_link"/>'
+        f'<axis xyz="0 1 0"/>{mimic}</joint>'
+        for n, mimic in (("F1", ""), ("F2", '<mimic joint="F1"/>'), ("F3", '<mimic joint="F1"/>'),
+                         ("WL", ""), ("WR", "")))
+    robot = tmp_path / "pepper.urdf"
+    robot.write_text(f'<robot name="p"><link name="base"/>{links}{joints}</robot>')
+    why = _refusal(robot)
+    assert why.startswith("F1 (link 'F1_link'), WL (link 'WL_link'), WR (link 'WR_link'), "
+                          "F2 (link 'F2_link'), F3 (link 'F3_link') turn but their links")
 
 
 def test_an_arm_without_continuous_joints_says_so():
