@@ -155,6 +155,14 @@ def test_a_name_written_with_expressions_defines_the_names_it_expands_to(run, tm
     assert right["severity"] == "error"
 
 
+def _wheel_macro(param: str, part: str, kind: str) -> str:
+    """A macro ``wheel`` making link ``${PARAM}PART_link`` on a ``kind`` joint to base_link."""
+    name = "${" + param + "}" + part
+    return (f'<xacro:macro name="wheel" params="{param}"><link name="{name}_link"/>'
+            f'<joint name="{name}_joint" type="{kind}"><parent link="base_link"/>'
+            f'<child link="{name}_link"/></joint></xacro:macro>')
+
+
 def test_a_name_template_that_says_nothing_hides_no_typo(run, tmp_path):
     """A used macro writing ${name}_link would match any *_link, so a typo in a <gazebo
     reference> became a warning; an empty ${prefix} before tool0 matched nothing."""
@@ -163,11 +171,7 @@ def test_a_name_template_that_says_nothing_hides_no_typo(run, tmp_path):
 <robot name="arm" {XACRO}>
   <xacro:arg name="tool" default="false"/>
   <xacro:property name="prefix" value=""/>
-  <xacro:macro name="wheel" params="name">
-    <link name="${{name}}_link"/>
-    <joint name="${{name}}_joint" type="fixed"><parent link="base_link"/>
-      <child link="${{name}}_link"/></joint>
-  </xacro:macro>
+  {_wheel_macro("name", "", "fixed")}
   <link name="base_link"/>
   <xacro:wheel name="lidar"/>
   <xacro:if value="$(arg tool)"><link name="${{prefix}}tool0"/></xacro:if>
@@ -193,11 +197,7 @@ def test_a_template_stands_for_a_part_only_where_its_argument_is_written(run, tm
         robot = tmp_path / f"{kind}.urdf.xacro"
         robot.write_text(f"""<robot name="r" {XACRO}>
   <xacro:arg name="back" default="false"/>
-  <xacro:macro name="wheel" params="prefix">
-    <link name="${{prefix}}_wheel_link"/>
-    <joint name="${{prefix}}_wheel_joint" type="continuous"><parent link="base_link"/>
-      <child link="${{prefix}}_wheel_link"/></joint>
-  </xacro:macro>
+  {_wheel_macro("prefix", "_wheel", "continuous")}
   <link name="base_link"/>
   <xacro:wheel prefix="left"/>
   <xacro:wheel prefix="right"/>
