@@ -33,13 +33,17 @@ from servicebot_cli.kinematics.chain import Chain
 from servicebot_cli.kinematics.frames import link_names
 from servicebot_cli.kinematics.inverse import IkSolver
 robot = load(RobotSource.bundled("sim"))
-IkSolver(Chain(robot.model, robot.joint_space, "arm_tool_link", link_names(robot))).prepare()
+solver = IkSolver(Chain(robot.model, robot.joint_space, "arm_tool_link", link_names(robot)))
+solver.prepare()
+# a batch's chunks run the loop over a series of targets, a loop of its own in numba's cache
+solver._compiled.ready(series=True)
 """
 
 
 @pytest.fixture(scope="session", autouse=True)
 def compiled_ik_loop(tmp_path_factory: pytest.TempPathFactory) -> None:
-    """Batch ik's loop compiled before any test, as on a machine that has run it once.
+    """Batch ik's loops (one target, a series) compiled before any test, as on a machine that
+    has run them once.
 
     The first batch on a machine compiles it (seconds, and a line on stderr saying so); tests
     of what a batch prints must not depend on which of them ran first. Readied here for this
