@@ -153,20 +153,21 @@ def links_of_unknown_mass(robot: RobotDescription) -> list[str]:
 
 def arm_reach(tree: KinematicTree, arm_joints: list[Joint],
               transforms: Mapping[str, FloatArray]) -> ArmReach | None:
-    """The reach of the chain that starts at the first arm joint.
+    """The reach of the arm joints' longest chain, from the arm joint that starts it.
 
-    None without an arm, or where the reach is no finite length (:data:`REACH_UNKNOWN`).
+    Of the arm joints no other arm joint moves, the first whose chain to its deepest tip
+    holds the most arm joints: on a robot with one arm, its first joint; on Pepper, not the
+    head's two joints that come first in the file. None without an arm, or where the reach
+    is no finite length (:data:`REACH_UNKNOWN`).
     """
-    first = arm_joints[0] if arm_joints else None
-    if first is None or first.child is None:
-        return None
-    below = descendants(tree, first.child)
-    tip = max(below, key=lambda item: item[1])[0] if below else first.child
     parent_joint = {j.child or "": j for j in tree.edges}
-    path = [parent_joint[tip]] if tip != first.child else [first]
-    while path[-1] is not first:
-        path.append(parent_joint[path[-1].parent or ""])
-    path.reverse()
+    names = {joint.name for joint in arm_joints}
+    starts = [j for j in arm_joints if not _arm_above(j.parent, parent_joint, names)]
+    chains = [chain for joint in starts if (chain := _chain(tree, joint, parent_joint))]
+    if not chains:
+        return None
+    path = max(chains, key=lambda chain: sum(j.name in names for j in chain))  # the first one
+    tip = path[-1].child or ""
     points = [transforms[j.child or ""][:3, 3] for j in path]
     start = 0
     with np.errstate(all="ignore"):  # an origin of 1e308: inf or nan, refused below
@@ -177,6 +178,32 @@ def arm_reach(tree: KinematicTree, arm_joints: list[Joint],
     if not math.isfinite(reach):
         return None
     return ArmReach(path[start].name, tip, clean(reach))
+
+
+def _arm_above(link: str | None, parent_joint: Mapping[str, Joint], names: set[str]) -> bool:
+    """Whether an arm joint (of ``names``) moves ``link``, through the joints above it."""
+    seen = set()
+    while link is not None and link in parent_joint and link not in seen:  # safe on loops
+        seen.add(link)
+        joint = parent_joint[link]
+        if joint.name in names:
+            return True
+        link = joint.parent
+    return False
+
+
+def _chain(tree: KinematicTree, first: Joint, parent_joint: Mapping[str, Joint]
+           ) -> list[Joint] | None:
+    """The joints from ``first`` down to the deepest link below it; None without a child."""
+    if first.child is None:
+        return None
+    below = descendants(tree, first.child)
+    tip = max(below, key=lambda item: item[1])[0] if below else first.child
+    path = [parent_joint[tip]] if tip != first.child else [first]
+    while path[-1] is not first:
+        path.append(parent_joint[path[-1].parent or ""])
+    path.reverse()
+    return path
 
 
 def _adds_no_reach(joint: Joint, points: list[FloatArray], i: int,

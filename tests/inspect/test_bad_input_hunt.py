@@ -179,3 +179,23 @@ def test_a_missing_package_is_one_note_however_many_meshes_it_hides(run, tmp_pat
     assert len(notes) == 1 and notes[0].startswith(
         "3 meshes (package://pepper_meshes/meshes/0.dae and others): package 'pepper_meshes' "
         "not found")
+
+
+def test_the_arm_reach_is_the_arms_not_the_head_written_first(run, tmp_path):
+    """ros-naoqi's Pepper: HeadYaw and HeadPitch come first in the file; 'arm reach' measured
+    from HeadYaw to a camera frame (0.18 m) instead of along an arm."""
+    def revolute(name: str, parent: str, child: str, xyz: str) -> str:
+        return (f'<link name="{child}"/><joint name="{name}" type="revolute"><parent '
+                f'link="{parent}"/><child link="{child}"/><origin xyz="{xyz}"/><axis '
+                'xyz="0 1 0"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>')
+
+    parts = [revolute("HeadYaw", "torso", "neck", "0 0 0.3"),
+             revolute("HeadPitch", "neck", "head", "0 0 0.05"),
+             revolute("ShoulderPitch", "torso", "shoulder", "0 0.15 0.2"),
+             revolute("ElbowRoll", "shoulder", "forearm", "0.2 0 0"),
+             revolute("WristYaw", "forearm", "hand", "0.2 0 0")]
+    urdf = tmp_path / "pepper.urdf"
+    urdf.write_text(f'<robot name="p"><link name="torso"/>{"".join(parts)}</robot>')
+    arm = json.loads(run("inspect", urdf, "--section", "totals", "--format", "json")
+                     .stdout)["totals"]["arm"]
+    assert (arm["tip"], arm["reach_m"]) == ("hand", pytest.approx(0.4))
