@@ -13,6 +13,7 @@ import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.controller_sections import JOINT_KEYS, Sections, controller_types, get
 from servicebot_cli.check.findings import Issue, Severity
+from servicebot_cli.check.ros2_control import exported_as
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
 
 if TYPE_CHECKING:
@@ -169,7 +170,8 @@ class _Checker:
                     kinds = self._exported.setdefault(item.name, {"command": [], "state": []})
                     for kind, interfaces in (("command", item.command_interfaces),
                                              ("state", item.state_interfaces)):
-                        kinds[kind] += [i.name for i in interfaces if i.name not in kinds[kind]]
+                        names = (exported_as(i.name, block.plugin) for i in interfaces)
+                        kinds[kind] += [name for name in names if name not in kinds[kind]]
         return self._exported
 
     def interfaces(self, section: str, controller_type: str | None,
@@ -212,9 +214,7 @@ class _Checker:
                         f"{which}, which {self.robot.display} does not export "
                         f"({_exports(exported, names, kind)}): the controller manager cannot "
                         "activate it",
-                        where=self.where(found[0].named_at),
-                        fix=f"add <{kind}_interface name=\"{interface}\"/> to the joint's "
-                        "<ros2_control> entry, or claim an interface it exports")
+                        where=self.where(found[0].named_at), fix=_interface_fix(kind, interface))
 
     def not_a_joint(self, name: str) -> bool:
         """A name that is not a URDF joint's and is right as written.
@@ -306,6 +306,16 @@ class _Checker:
                     + (" (a calibration to the floor, if on purpose)" if calibrated else ""),
                     where=self.where(node), fix=f"{key}: {expected:.6g}",
                     severity=Severity.WARNING if calibrated else None)
+
+
+def _interface_fix(kind: str, interface: str) -> str:
+    """Export the interface; or, for a name the hardware renames, claim what it exports."""
+    plain = exported_as(interface, "gazebo_ros2_control/GazeboSystem")
+    if plain != interface:
+        return (f"claim '{plain}': gazebo_ros2_control exports its {interface} loop under "
+                "that name")
+    return (f"add <{kind}_interface name=\"{interface}\"/> to the joint's <ros2_control> "
+            "entry, or claim an interface it exports")
 
 
 def _exports(exported: dict[str, dict[str, list[str]]], names: list[str], kind: str) -> str:

@@ -20,6 +20,16 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 INTERFACES = ("position", "velocity", "acceleration", "effort")
+_GAZEBO_PID = {"position_pid": "position", "velocity_pid": "velocity"}
+"""gazebo_ros2_control's GazeboSystem runs a PID loop for these, and exports them under the
+plain interface's name (gazebo_system.cpp)."""
+
+
+def exported_as(name: str, plugin: str | None) -> str:
+    """The name under which the hardware ``plugin`` exports the interface ``name``."""
+    if name in _GAZEBO_PID and (plugin or "").strip().startswith("gazebo_ros2_control/"):
+        return _GAZEBO_PID[name]
+    return name
 BAUD_RATES = (50, 75, 110, 134, 150, 200, 300, 600, 1200, 1800, 2400, 4800, 9600, 19200, 38400,
               57600, 115200, 230400, 460800, 500000, 576000, 921600, 1000000, 1152000, 1500000,
               2000000, 2500000, 3000000, 3500000, 4000000)
@@ -134,6 +144,8 @@ def _joint(item: ControlJoint, joints: dict[str, Joint], block: Ros2Control) -> 
         yield Issue("SB506", f"fixed joint '{item.name}' has command interface(s) "
                     f"{', '.join(i.name for i in item.command_interfaces)}", item.element)
     for interface in (*item.command_interfaces, *item.state_interfaces):
+        if exported_as(interface.name, block.plugin) != interface.name:
+            continue  # position_pid for Gazebo: a name of its own, not a misspelling
         close = difflib.get_close_matches(interface.name, INTERFACES, n=1, cutoff=0.75)
         if close and close[0] != interface.name:
             yield Issue("SB505", f"joint '{item.name}' interface '{interface.name}' is not "

@@ -124,3 +124,30 @@ def test_an_actuator_and_a_sensor_export_one_joints_interfaces_together(run, tmp
     assert [f["code"] for f in found] == ["SB607"], result.stdout
     assert "state interface 'velocity' of joints 'joint1', 'joint2'" in str(found[0]["message"])
     assert "(state interfaces: position)" in str(found[0]["message"])
+
+
+def test_gazebos_pid_interfaces_are_exported_under_the_plain_names(run, tmp_path):
+    """gazebo_ros2_control_demos' vertical cart: <command_interface name="position_pid"/>,
+    which GazeboSystem exports as 'position' (gazebo_system.cpp), and a position controller
+    claiming 'position'; SB607 refused the demo, and SB505 called the name a misspelling."""
+    urdf = SIM_URDF.read_text()
+    arm = re.search(r'    <joint name="arm_base_to_link1">.*?</joint>\n', urdf, re.DOTALL)
+    assert arm is not None
+    pid = arm[0].replace('<command_interface name="position">',
+                         '<command_interface name="position_pid">')
+    gazebo = urdf.replace(arm[0], pid)
+    assert "gazebo_ros2_control/GazeboSystem" in gazebo
+    assert _check(run, tmp_path, BUNDLED, gazebo) == (0, [])
+    path = tmp_path / "robot.urdf"
+    result = run("check", "urdf", path, "--format", "json", "--isolated", "--select", "SB505")
+    assert findings(result.stdout) == []
+    # another plugin exports the name as written: the trajectory controller lacks 'position'
+    real = gazebo.replace("gazebo_ros2_control/GazeboSystem", "robot_control/HardwareInterface")
+    code, found = _check(run, tmp_path, BUNDLED, real)
+    assert code == 1 and "(command interfaces: position_pid)" in str(found[0]["message"])
+    # a controller claiming the loop's own name is refused, told what to claim
+    claiming = BUNDLED.replace("    command_interfaces:\n      - position\n",
+                               "    command_interfaces:\n      - position_pid\n")
+    code, found = _check(run, tmp_path, claiming, gazebo)
+    assert code == 1 and found[0]["fix"] == ("claim 'position': gazebo_ros2_control exports "
+                                             "its position_pid loop under that name")
