@@ -109,8 +109,11 @@ def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str
             tally.add_missing(exc.resolved, element)
             return
         tally.add_found(exc.resolved, element)
+        unexpanded = "$(" in (shape.geometry.filename or "")
         yield Issue("SB401", f"{where}: {exc}", element,
-                    fix="fix the path: the package or directory holds no such file")
+                    fix="name the file .urdf.xacro, so that xacro expands it, or write the "
+                        "path as package://PKG/..." if unexpanded else
+                        "fix the path: the package or directory holds no such file")
         return
     except MeshError as exc:
         yield Issue("SB402", f"{where}: mesh '{shape.geometry.filename}' cannot be loaded: {exc}",

@@ -23,6 +23,7 @@ from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
 
 _COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
 _SUBSTITUTION = re.compile(rb"\$\{|\$\(find\s")
+_FIND = re.compile(rb"\$\(find\s")
 """What only xacro substitutes: an expression, or a package's directory.
 
 Not ``$(optenv NAME default)``: pybullet_data's husky.urdf holds it in an ``<origin>``, and
@@ -96,23 +97,29 @@ def is_xacro(path: Path, data: bytes) -> bool:
 
 
 def needs_xacro(data: bytes) -> bool:
-    """Whether the bytes hold xacro substitutions and xacro, both outside comments.
+    """Whether the bytes hold what only xacro reads, outside comments.
 
     No URDF reader takes ``${base_length}`` for a number, or ``$(find pkg)`` for a
     directory, so such a file is only ever given to xacro (navigation2_tutorials'
     ``sam_bot_description.urdf``, which its launch file expands with
     ``Command(['xacro ', model])``; roverrobotics_ros2's ``rplidar_s2.urdf``, whose mesh is
-    ``file://$(find ...)``). Xacro is its elements, or its namespace declared
-    (turtlebot3_simulations' ``common_properties.urdf``: ``${255/255}`` in colours, no xacro
-    element).
+    ``file://$(find ...)``). An expression needs xacro beside it: its elements, or its
+    namespace declared (turtlebot3_simulations' ``common_properties.urdf``: ``${255/255}`` in
+    colours, no xacro element); a package path is xacro's alone (ocs2's ``quadrotor.urdf``,
+    which its launch file expands, declares nothing).
     """
     def xacro(text: bytes) -> bool:
         return _xacro_words(text) or b"xmlns:xacro" in text
 
-    if b"$" not in data or _SUBSTITUTION.search(data) is None or not xacro(data):
+    if b"$" not in data or _SUBSTITUTION.search(data) is None:
+        return False
+    if b"$(find" not in data and not xacro(data):
         return False
     text = without_comments(data)
-    return _SUBSTITUTION.search(text) is not None and xacro(text)
+    # a package path needs no xacro namespace to be xacro's: ocs2's quadrotor.urdf has none,
+    # and its launch file expands it with xacro
+    return _FIND.search(text) is not None or (
+        _SUBSTITUTION.search(text) is not None and xacro(text))
 
 
 def uses_xacro(data: bytes) -> bool:

@@ -56,17 +56,41 @@ def test_a_urdf_with_expressions_and_only_the_xacro_namespace_is_expanded(run, t
     assert "SB013" in {code for code, _ in _check(run, tmp_path, without)[1]}
 
 
-def test_a_mesh_named_with_an_unexpanded_find_says_so(run, tmp_path):
-    """sjtu_drone's stale .urdf: file://$(find sjtu_drone_description)/models/... . The
-    message showed only /models/..., where the substitution had gone."""
+def test_a_mesh_named_with_a_substitution_xacro_never_sees_says_so(run, tmp_path):
+    """A .urdf read as it is (no package path, no xacro in it) naming its mesh
+    $(optenv DRONE_MESHES /opt)/...: the message showed only the part after the
+    substitution, and the fix said the package held no such file."""
     path = tmp_path / "drone.urdf"
     path.write_text('<robot name="d"><link name="base_link"><visual><geometry><mesh filename='
-                    '"file://$(find sjtu_drone_description)/models/quadrotor.dae"/></geometry>'
-                    '</visual></link></robot>')
+                    '"$(optenv DRONE_MESHES /opt)/quadrotor.dae"/></geometry></visual></link>'
+                    '</robot>')
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB401")
     (found,) = findings(result.stdout)
     assert found["message"].endswith("does not exist; its '$(...)' is xacro's, and nothing "
                                      "substitutes it in a file xacro does not expand")
+    assert found["fix"].startswith("name the file .urdf.xacro, so that xacro expands it")
+
+
+def test_a_package_path_makes_a_urdf_xacro_input_without_its_namespace(run, tmp_path):
+    """ocs2_robotic_assets' quadrotor.urdf: file://$(find ocs2_robotic_assets)/... and no
+    xacro namespace; ocs2's visualize.launch expands it with xacro. It was SB401, an error,
+    for a mesh its package holds."""
+    package = tmp_path / "demo_description"
+    _package(package, "demo_description")
+    (package / "meshes").mkdir()
+    (package / "meshes" / "part.stl").write_bytes(STL)
+    (package / "urdf").mkdir()
+    path = package / "urdf" / "robot.urdf"
+    path.write_text('<robot name="demo"><link name="base_link"><visual><geometry><mesh '
+                    'filename="file://$(find demo_description)/meshes/part.stl"/></geometry>'
+                    '</visual></link></robot>')
+    result = run("check", path, "--format", "json", "--isolated")
+    found = [(f["code"], f["message"]) for f in findings(result.stdout)]
+    assert result.exit_code == 0 and [code for code, _ in found] == ["SB017"], found
+
+
+STL = (b"solid p\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+       b"endloop\nendfacet\nendsolid p\n")
 
 
 def _package(root, name: str) -> None:
@@ -80,9 +104,7 @@ def test_a_urdf_with_a_find_and_the_xacro_namespace_is_expanded(run, tmp_path):
     package = tmp_path / "demo_description"
     _package(package, "demo_description")
     (package / "meshes").mkdir()
-    (package / "meshes" / "part.stl").write_bytes(
-        b"solid p\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
-        b"endloop\nendfacet\nendsolid p\n")
+    (package / "meshes" / "part.stl").write_bytes(STL)
     (package / "urdf").mkdir()
     path = package / "urdf" / "robot.urdf"
     path.write_text('<robot name="demo" xmlns:xacro="http://www.ros.org/wiki/xacro"><link '
