@@ -261,8 +261,8 @@ class PackageResolver:
                       self._relative_location(name, rel, base_dir)):
             if other is not None and other.path != first.path and os.path.exists(other.path / rel):
                 return PackageLocation(
-                    name, other.path, f"{other.how}, which holds '{rel}'; the one found as "
-                    f"{first.how} does not", ros_finds_it=False)
+                    name, other.path, f"{other.how}, which holds '{rel}'; the one ROS finds, "
+                    f"through {first.how}, does not", ros_finds_it=False)
         return None
 
     def _relative_location(self, name: str, rel: str, base_dir: Path) -> PackageLocation | None:

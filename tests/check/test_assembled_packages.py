@@ -55,7 +55,7 @@ def test_a_mesh_the_workspace_package_lacks_is_found_in_the_directory_named_so(r
     assert "icub-models/iCub above the file" in found[0]["message"]
     assert "iCub_manual/package.xml" in found[0]["message"]
     # robot_properties_solo read 'where the package found by the package holding the file'
-    assert "; the one found as the package holding the file (" in found[0]["message"]
+    assert "sim_root_link.stl'; the one ROS finds, through workspace " in found[0]["message"]
     assert exit_code == 0
     assert packages["iCub"]["path"].endswith("icub-models/iCub")
     assert packages["iCub"]["ros_finds_it"] is False
