@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import json
 
+import pytest
+
 from tests.check.helpers import findings
 
 SAM_BOT_LIKE = """<?xml version="1.0"?>
@@ -71,24 +73,6 @@ def test_a_mesh_named_with_a_substitution_xacro_never_sees_says_so(run, tmp_path
     assert found["fix"].startswith("name the file .urdf.xacro, so that xacro expands it")
 
 
-def test_a_package_path_makes_a_urdf_xacro_input_without_its_namespace(run, tmp_path):
-    """ocs2_robotic_assets' quadrotor.urdf: file://$(find ocs2_robotic_assets)/... and no
-    xacro namespace; ocs2's visualize.launch expands it with xacro. It was SB401, an error,
-    for a mesh its package holds."""
-    package = tmp_path / "demo_description"
-    _package(package, "demo_description")
-    (package / "meshes").mkdir()
-    (package / "meshes" / "part.stl").write_bytes(STL)
-    (package / "urdf").mkdir()
-    path = package / "urdf" / "robot.urdf"
-    path.write_text('<robot name="demo"><link name="base_link"><visual><geometry><mesh '
-                    'filename="file://$(find demo_description)/meshes/part.stl"/></geometry>'
-                    '</visual></link></robot>')
-    result = run("check", path, "--format", "json", "--isolated")
-    found = [(f["code"], f["message"]) for f in findings(result.stdout)]
-    assert result.exit_code == 0 and [code for code, _ in found] == ["SB017"], found
-
-
 STL = (b"solid p\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
        b"endloop\nendfacet\nendsolid p\n")
 
@@ -98,18 +82,21 @@ def _package(root, name: str) -> None:
     (root / "package.xml").write_text(f"<package format='3'><name>{name}</name></package>")
 
 
-def test_a_urdf_with_a_find_and_the_xacro_namespace_is_expanded(run, tmp_path):
-    """roverrobotics_ros2's rplidar_s2.urdf: a mesh at file://$(find ...)/meshes/..., the
-    xacro namespace declared, no ${...}: the mesh was 'missing', the file being read as it is."""
+@pytest.mark.parametrize("namespace", [' xmlns:xacro="http://www.ros.org/wiki/xacro"', ""])
+def test_a_urdf_with_a_package_path_is_expanded(run, tmp_path, namespace):
+    """A mesh at file://$(find ...)/meshes/... and no ${...}: read as it is, the mesh was
+    'missing' (SB401, an error) though its package holds it. roverrobotics_ros2's
+    rplidar_s2.urdf declares the xacro namespace; ocs2_robotic_assets' quadrotor.urdf does
+    not, and ocs2's visualize.launch expands it with xacro all the same."""
     package = tmp_path / "demo_description"
     _package(package, "demo_description")
     (package / "meshes").mkdir()
     (package / "meshes" / "part.stl").write_bytes(STL)
     (package / "urdf").mkdir()
     path = package / "urdf" / "robot.urdf"
-    path.write_text('<robot name="demo" xmlns:xacro="http://www.ros.org/wiki/xacro"><link '
-                    'name="base_link"><visual><geometry><mesh filename="file://$(find '
-                    'demo_description)/meshes/part.stl"/></geometry></visual></link></robot>')
+    path.write_text(f'<robot name="demo"{namespace}><link name="base_link"><visual><geometry>'
+                    '<mesh filename="file://$(find demo_description)/meshes/part.stl"/>'
+                    '</geometry></visual></link></robot>')
     result = run("check", path, "--format", "json", "--isolated")
     found = [(f["code"], f["message"]) for f in findings(result.stdout)]
     assert result.exit_code == 0 and [code for code, _ in found] == ["SB017"], found
