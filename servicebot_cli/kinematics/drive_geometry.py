@@ -5,7 +5,9 @@ carries a cylinder turning about the joint's axis, or a sphere, with that axis h
 across the robot (the root link's y). Wheels on +y are
 left, on -y right. Nothing here is a constant: change the URDF and the numbers follow.
 One joint is judged in :mod:`~servicebot_cli.kinematics.wheel_joints`; wheels on passive
-casters are left out (:mod:`~servicebot_cli.kinematics.running_gear`).
+casters are left out (:mod:`~servicebot_cli.kinematics.running_gear`). Where the links give
+no such wheels, a Gazebo diff-drive plugin's wheel joints and diameter stand in
+(:mod:`~servicebot_cli.kinematics.plugin_wheels`).
 """
 
 from __future__ import annotations
@@ -93,6 +95,11 @@ def drive_geometry(robot: RobotDescription) -> DriveGeometry:
             left_out.setdefault(wheel, []).append(joint.name)
     wheels = _without_ball_casters(robot, wheels, left_out)
     sides = {side: [w for w in wheels if w.side == side] for side in ("left", "right")}
+    if not sides["left"] or not sides["right"]:  # mesh wheels a diff-drive plugin names?
+        from servicebot_cli.kinematics.plugin_wheels import plugin_wheels
+
+        wheels = plugin_wheels(robot, world) or wheels
+        sides = {side: [w for w in wheels if w.side == side] for side in ("left", "right")}
     if not sides["left"] or not sides["right"]:
         found = ", ".join(f"{w.joint} ({w.side})" for w in wheels) or "none"
         raise DescriptionError(

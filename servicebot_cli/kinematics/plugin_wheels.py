@@ -1,0 +1,92 @@
+"""Drive wheels a Gazebo diff-drive plugin names, for wheels the URDF gives no round shape.
+
+Pepper's wheels are meshes: nothing in the links says their radius, but its
+``libgazebo_ros_diff_drive`` plugin names the wheel joints and their diameter, and Gazebo
+drives them so. Gazebo Classic's plugin (ROS 1 ``leftJoint``/``rightJoint``/``wheelDiameter``;
+ROS 2 ``left_joint``/``right_joint``/``wheel_diameter``, a pair per ``num_wheel_pairs``) and
+gz-sim's DiffDrive system (``left_joint``/``right_joint``/``wheel_radius``) are read. A
+wheel's centre is its joint's origin; its side, as for every wheel, the sign of its y.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from servicebot_cli.description.extensions import Plugin, param, params_all
+from servicebot_cli.description.model_plugins import ros1_plugin
+from servicebot_cli.kinematics.wheel_joints import PARALLEL, Wheel, turns_freely
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.robot import RobotDescription
+
+_GZ_DIFF_DRIVE = ("gz-sim-diff-drive-system", "ignition-gazebo-diff-drive-system",
+                  "gz::sim::systems::DiffDrive", "ignition::gazebo::systems::DiffDrive")
+
+
+def plugin_wheels(robot: RobotDescription, world: dict[str, np.ndarray]) -> list[Wheel]:
+    """The wheels of the first diff-drive plugin that names usable ones; none without."""
+    for plugin in robot.plugins:
+        named = _named(plugin)
+        if named is None:
+            continue
+        joints, radius_m = named
+        wheels = [wheel for name in joints
+                  if (wheel := _wheel(robot, name, world, radius_m)) is not None]
+        if {w.side for w in wheels} == {"left", "right"}:
+            return wheels
+    return []
+
+
+def _named(plugin: Plugin) -> tuple[list[str], float] | None:
+    """The wheel joints and the wheel radius [m] a diff-drive ``plugin`` gives, if it is one."""
+    if "gazebo_ros_diff_drive" in plugin.filename:
+        if ros1_plugin(plugin):
+            joints = [param(plugin.params, "leftJoint"), param(plugin.params, "rightJoint")]
+            diameter = param(plugin.params, "wheelDiameter")
+        else:
+            joints = [*params_all(plugin.params, "left_joint"),
+                      *params_all(plugin.params, "right_joint")]
+            diameter = param(plugin.params, "wheel_diameter")
+        radius_m = _number(diameter) / 2
+    elif any(kind in (plugin.filename, plugin.name) for kind in _GZ_DIFF_DRIVE):
+        joints = [*params_all(plugin.params, "left_joint"),
+                  *params_all(plugin.params, "right_joint")]
+        radius_m = _number(param(plugin.params, "wheel_radius"))
+    else:
+        return None
+    names = [name.strip() for name in joints if name and name.strip()]
+    if not names or not (math.isfinite(radius_m) and radius_m > 0):
+        return None
+    return names, radius_m
+
+
+def _number(text: str | None) -> float:
+    try:
+        return float(text) if text is not None else math.nan
+    except ValueError:
+        return math.nan
+
+
+def _wheel(robot: RobotDescription, name: str, world: dict[str, np.ndarray],
+           radius_m: float) -> Wheel | None:
+    """The wheel on joint ``name``: one that turns freely, across the robot; else None."""
+    joint = next((j for j in robot.joints if j.name == name), None)
+    if joint is None or not turns_freely(joint) or joint.child not in world:
+        return None
+    axis = np.array(joint.axis, dtype=float)
+    if not np.all(np.isfinite(axis)) or np.linalg.norm(axis) == 0:
+        return None
+    transform = world[joint.child]
+    axis_in_root = transform[:3, :3] @ (axis / np.linalg.norm(axis))
+    position = transform[:3, 3]
+    if abs(axis_in_root[1]) < PARALLEL or not np.all(np.isfinite(position)):
+        return None
+    limit = joint.limits.velocity if joint.limits and joint.limits.velocity else math.inf
+    return Wheel(joint=joint.name, side="left" if position[1] > 0 else "right",
+                 radius_m=float(radius_m),
+                 position_m=(float(position[0]), float(position[1]), float(position[2])),
+                 axis_sign=1 if axis_in_root[1] > 0 else -1,
+                 velocity_limit_rad_s=float(limit))
