@@ -13,7 +13,6 @@ no such wheels, a Gazebo diff-drive plugin's wheel joints and diameter stand in
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -23,6 +22,7 @@ from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.kinematics.link_poses import link_transforms
 from servicebot_cli.kinematics.running_gear import swivels_above
 from servicebot_cli.kinematics.wheel_joints import (
+    NO_ROUND_SHAPE,
     Wheel,
     as_wheel,
     rolls_on_cylinder,
@@ -149,34 +149,25 @@ def _why_not_wheels(robot: RobotDescription, left_out: dict[str, list[str]]) -> 
 
     Joints that mimic another come last: a finger that follows its neighbour is less likely
     the wheel the reader looks for (Pepper's three mimic fingers hid its wheels behind '...').
-    Joints whose links lack a round shape are one group, their links named.
+    Joints whose links lack a round shape are named with their links.
     """
     if not left_out:
         return "it has no continuous joint" if not any(
             turns_freely(j) for j in robot.joints) else "no other continuous joint is one"
     mimics = {j.name for j in robot.joints if j.mimic is not None}
-    groups: dict[str, list[str]] = {}
-    for reason, joints in left_out.items():
-        shapeless = _NO_ROUND_SHAPE.fullmatch(reason)
-        key = _NO_ROUND_SHAPE.pattern if shapeless else reason
-        groups.setdefault(key, []).extend(
-            f"{joint} (link '{shapeless[1]}')" if shapeless and len(joints) == 1 else joint
-            for joint in joints)
     reasons = []
-    for key, joints in sorted(groups.items(), key=lambda item: all(
-            j.split(" ")[0] in mimics for j in item[1])):
-        joints.sort(key=lambda joint: joint.split(" ")[0] in mimics)
-        if key == _NO_ROUND_SHAPE.pattern:
-            reasons.append(f"{_listed(joints)} {'turns' if len(joints) == 1 else 'turn'} but "
-                           f"{'its link has' if len(joints) == 1 else 'their links have'} no "
-                           "<cylinder> or <sphere> collision or visual to take a radius from")
+    for reason, joints in sorted(left_out.items(),
+                                 key=lambda item: all(j in mimics for j in item[1])):
+        joints = sorted(joints, key=lambda joint: joint in mimics)
+        one = len(joints) == 1
+        if reason == NO_ROUND_SHAPE:
+            named = [f"{joint} (link '{robot.joint(joint).child}')" for joint in joints]
+            reasons.append(f"{_listed(named)} {'turns' if one else 'turn'} but "
+                           f"{'its link has' if one else 'their links have'} no <cylinder> or "
+                           "<sphere> collision or visual to take a radius from")
         else:
-            reasons.append(f"{_listed(joints)} {'turns' if len(joints) == 1 else 'turn'} {key}")
+            reasons.append(f"{_listed(joints)} {'turns' if one else 'turn'} {reason}")
     return "; ".join(reasons[:3]) + ("; ..." if len(reasons) > 3 else "")
-
-
-_NO_ROUND_SHAPE = re.compile(r"but link '(.*)' has no <cylinder> or <sphere> collision or "
-                             r"visual to take its radius from")
 
 
 def _listed(joints: list[str]) -> str:

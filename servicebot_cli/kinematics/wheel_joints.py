@@ -62,6 +62,10 @@ def turns_freely(joint: Joint) -> bool:
         and limits.upper >= _ENDLESS_RAD
 
 
+NO_ROUND_SHAPE = "but no <cylinder> or <sphere> on its link to take a radius from"
+"""Why a joint that turns freely is no wheel, when its link gives no round shape."""
+
+
 def as_wheel(robot: RobotDescription, joint: Joint,
               world: dict[str, np.ndarray]) -> Wheel | str | None:
     """The wheel ``joint`` drives; why it is not one (a joint that turns freely); or None.
@@ -76,8 +80,7 @@ def as_wheel(robot: RobotDescription, joint: Joint,
     round_shape = next((s for s in shapes if s.geometry.kind == "cylinder"), None) \
         or next((s for s in shapes if s.geometry.kind == "sphere"), None)
     if round_shape is None or not round_shape.geometry.radius:
-        return (f"but link '{link.name}' has no <cylinder> or <sphere> collision or visual to "
-                "take its radius from")
+        return NO_ROUND_SHAPE
     axis = np.array(joint.axis, dtype=float)
     if not np.all(np.isfinite(axis)) or np.linalg.norm(axis) == 0:
         return "about a zero axis"
