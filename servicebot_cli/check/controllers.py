@@ -13,7 +13,7 @@ import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.controller_sections import JOINT_KEYS, Sections, controller_types, get
 from servicebot_cli.check.findings import Issue, Severity
-from servicebot_cli.check.ros2_control import exported_as
+from servicebot_cli.check.ros2_control import GAZEBO_PID, exported_as
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
 
 if TYPE_CHECKING:
@@ -310,8 +310,8 @@ class _Checker:
 
 def _interface_fix(kind: str, interface: str) -> str:
     """Export the interface; or, for a name the hardware renames, claim what it exports."""
-    plain = exported_as(interface, "gazebo_ros2_control/GazeboSystem")
-    if plain != interface:
+    plain = GAZEBO_PID.get(interface)
+    if plain is not None:
         return (f"claim '{plain}': gazebo_ros2_control exports its {interface} loop under "
                 "that name")
     return (f"add <{kind}_interface name=\"{interface}\"/> to the joint's <ros2_control> "

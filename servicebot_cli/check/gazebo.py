@@ -43,13 +43,12 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     for block in unknown:
         yield _unknown_reference(block.reference or "", names, optional, block.element)
     fixed = {joint.name for joint in robot.joints if joint.type == "fixed"}
-    kept = {block.reference for block in robot.gazebo for key, value in block.properties
-            if key in NOT_LUMPED and value.strip().lower() in ("true", "1")}
+    kept = kept_apart(robot)
     for sensor in robot.sensors:
         for problem in _sensor_problems(sensor):
             yield Issue("SB502", f"sensor '{sensor.name}': {problem}", sensor.element)
         yield from _rate(sensor)
-        if sensor.type == "force_torque" and sensor.reference in fixed - kept:
+        if sensor.type == "force_torque" and sensor.reference in fixed - kept.keys():
             yield Issue("SB502", f"sensor '{sensor.name}' (force_torque) is on fixed joint "
                         f"'{sensor.reference}', which Gazebo lumps into its parent: the "
                         "joint becomes a frame, and the sensor measures nothing",
@@ -61,8 +60,19 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     yield from _numbers(robot)
 
 
-NOT_LUMPED = ("disableFixedJointLumping", "preserveFixedJoint")
+_NOT_LUMPED = ("disableFixedJointLumping", "preserveFixedJoint")
 """<gazebo reference="JOINT"> settings that keep a fixed joint from being lumped away."""
+
+
+def kept_apart(robot: RobotDescription) -> dict[str, str]:
+    """The fixed joints a ``<gazebo reference>`` keeps from lumping, with the setting's name."""
+    kept: dict[str, str] = {}
+    for block in robot.gazebo:
+        for key, value in block.properties:
+            if key in _NOT_LUMPED and value.strip().lower() in ("true", "1") and block.reference:
+                kept[block.reference] = key
+    return kept
+
 # what sdformat's URDF converter reads with std::stod or std::stoi (parser_urdf.cc), which
 # throws on text that does not start as a number: the conversion fails, Gazebo loads nothing
 _NUMERIC = frozenset(("mu1", "mu2", "kp", "kd", "maxVel", "minDepth", "dampingFactor",

@@ -12,7 +12,7 @@ import numpy as np
 from servicebot_cli.check import solids, values
 from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound
 from servicebot_cli.check.findings import Issue, Severity
-from servicebot_cli.check.gazebo import NOT_LUMPED
+from servicebot_cli.check.gazebo import kept_apart
 from servicebot_cli.check.simulators import simulated_by
 from servicebot_cli.kinematics.transforms import rpy_matrix
 
@@ -236,20 +236,20 @@ def _moving_masses(robot: RobotDescription) -> Iterator[Issue]:
     by_name = {link.name: link for link in robot.links}
     below: dict[str, list[str]] = {}
     fixed_below: dict[str, list[str]] = {}  # the links fixed to each: lumped with it
-    kept_apart = _kept_apart(robot)
+    kept = kept_apart(robot)
     for joint in robot.joints:
         if joint.parent in by_name and joint.child in by_name:
             below.setdefault(joint.parent or "", []).append(joint.child or "")
-            if joint.type == "fixed" and joint.name not in kept_apart:
+            if joint.type == "fixed" and joint.name not in kept:
                 fixed_below.setdefault(joint.parent or "", []).append(joint.child or "")
     carried = _subtree_masses(by_name, below)
     simulator = simulated_by(robot)
     for joint in robot.joints:  # sdformat does not lump these: each child is a body
         link = by_name.get(joint.child or "")
-        if joint.type == "fixed" and joint.name in kept_apart and link is not None and \
+        if joint.type == "fixed" and joint.name in kept and link is not None and \
                 _lumped_mass(link.name, by_name, fixed_below) == 0.0:
             yield Issue("SB304", f"link '{link.name}' hangs from fixed joint '{joint.name}', "
-                        f"which <{kept_apart[joint.name]}> keeps a body of its own, and has no "
+                        f"which <{kept[joint.name]}> keeps a body of its own, and has no "
                         "mass: Gazebo drops it, and every link below it", link.element,
                         fix="add an <inertial>, or let Gazebo lump the joint",
                         severity=Severity.ERROR)
@@ -276,16 +276,6 @@ def _moving_masses(robot: RobotDescription) -> Iterator[Issue]:
         elif _mass(link) == 0.0 and link.inertial.mass_kg == 0.0:
             yield Issue("SB305", f"link '{link.name}' is moved by joint '{joint.name}' and has "
                         "mass 0", link.inertial.element, fix="give the link its real mass")
-
-
-def _kept_apart(robot: RobotDescription) -> dict[str, str]:
-    """The fixed joints a ``<gazebo reference>`` keeps from lumping, with the setting's name."""
-    kept: dict[str, str] = {}
-    for block in robot.gazebo:
-        for key, value in block.properties:
-            if key in NOT_LUMPED and value.strip().lower() in ("true", "1") and block.reference:
-                kept[block.reference] = key
-    return kept
 
 
 def _lumped_mass(name: str, by_name: dict[str, Link], fixed_below: dict[str, list[str]]) -> float:

@@ -20,16 +20,9 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 INTERFACES = ("position", "velocity", "acceleration", "effort")
-_GAZEBO_PID = {"position_pid": "position", "velocity_pid": "velocity"}
+GAZEBO_PID = {"position_pid": "position", "velocity_pid": "velocity"}
 """gazebo_ros2_control's GazeboSystem runs a PID loop for these, and exports them under the
 plain interface's name (gazebo_system.cpp)."""
-
-
-def exported_as(name: str, plugin: str | None) -> str:
-    """The name under which the hardware ``plugin`` exports the interface ``name``."""
-    if name in _GAZEBO_PID and (plugin or "").strip().startswith("gazebo_ros2_control/"):
-        return _GAZEBO_PID[name]
-    return name
 BAUD_RATES = (50, 75, 110, 134, 150, 200, 300, 600, 1200, 1800, 2400, 4800, 9600, 19200, 38400,
               57600, 115200, 230400, 460800, 500000, 576000, 921600, 1000000, 1152000, 1500000,
               2000000, 2500000, 3000000, 3500000, 4000000)
@@ -42,6 +35,13 @@ _NO_DEVICE_PLUGINS = ("gz_ros2_control/", "ign_ros2_control/", "gazebo_ros2_cont
                       "mock_components/", "fake_components/")
 """Hardware plugins that open no device: Gazebo's systems and ros2_control's mock."""
 _PORT_RE = re.compile(r"(/dev/\S+|COM\d+|(socket|rfc2217|loop|spy|hwgrep)://\S*)")
+
+
+def exported_as(name: str, plugin: str | None) -> str:
+    """The name under which the hardware ``plugin`` exports the interface ``name``."""
+    if name in GAZEBO_PID and (plugin or "").strip().startswith("gazebo_ros2_control/"):
+        return GAZEBO_PID[name]
+    return name
 
 
 def check(robot: RobotDescription) -> Iterator[Issue]:
