@@ -22,9 +22,8 @@ from servicebot_cli.description.robot import RobotDescription, is_xacro_name
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
 
 _COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
-_SUBSTITUTION = re.compile(rb"\$\{|\$\(find\s")
 _FIND = re.compile(rb"\$\(find\s")
-"""What only xacro substitutes: an expression, or a package's directory.
+"""A package's directory, which only xacro substitutes (as it does ``${...}`` expressions).
 
 Not ``$(optenv NAME default)``: pybullet_data's husky.urdf holds it in an ``<origin>``, and
 pybullet and check_urdf read that file as it is (and refuse the origin).
@@ -111,15 +110,12 @@ def needs_xacro(data: bytes) -> bool:
     def xacro(text: bytes) -> bool:
         return _xacro_words(text) or b"xmlns:xacro" in text
 
-    if b"$" not in data or _SUBSTITUTION.search(data) is None:
-        return False
-    if b"$(find" not in data and not xacro(data):
-        return False
-    text = without_comments(data)
-    # a package path needs no xacro namespace to be xacro's: ocs2's quadrotor.urdf has none,
-    # and its launch file expands it with xacro
-    return _FIND.search(text) is not None or (
-        _SUBSTITUTION.search(text) is not None and xacro(text))
+    def xacro_input(text: bytes) -> bool:
+        # a package path needs no xacro namespace to be xacro's: ocs2's quadrotor.urdf has
+        # none, and its launch file expands it with xacro
+        return _FIND.search(text) is not None or (b"${" in text and xacro(text))
+
+    return b"$" in data and xacro_input(data) and xacro_input(without_comments(data))
 
 
 def uses_xacro(data: bytes) -> bool:
