@@ -11,9 +11,10 @@ import shlex
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
-from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.common.errors import DescriptionError, ServicebotError
 from servicebot_cli.common.native_stderr import captured_fd2
-from servicebot_cli.description.elements import escaped_blanks
+from servicebot_cli.description.elements import escaped_blanks, read_joint
+from servicebot_cli.description.safe_xml import parse_xml
 
 if TYPE_CHECKING:
     import pinocchio as pin
@@ -148,30 +149,18 @@ def _bound_culprits(xml_text: str, reason: str) -> str:
     kind = next((key for name, key in _LIMIT_BOUNDS.items() if name in reason), None)
     if kind is None:
         return ""
-    negative = []
-    for attributes, body in _JOINT_TAG.findall(xml_text):
-        name, limit = _NAME.search(attributes), _LIMIT.search(body)
-        if name is not None and limit is not None and _attribute(limit[0], kind) < 0:
-            negative.append(name[1])
+    try:  # the text urdfdom just read: it parses
+        root = parse_xml(xml_text.encode("utf-8"), "").root
+    except ServicebotError:  # pragma: no cover - only a file read before comes here
+        return ""
+    joints = (read_joint(element) for element in root.findall("joint"))
+    negative = [joint.name for joint in joints if joint.limits is not None
+                and (getattr(joint.limits, kind) or 0.0) < 0]
     if not negative:
         return ""
     listed = ", ".join(f"'{name}'" for name in negative[:5])
     more = f" and {len(negative) - 5} more" if len(negative) > 5 else ""
     return f" (joint{'s' if len(negative) > 1 else ''} {listed}{more}: a negative {kind} limit)"
-
-
-_JOINT_TAG = re.compile(r"<joint\b([^>]*?)(?<!/)>(.*?)</joint>", re.DOTALL)
-_NAME = re.compile(r"\bname\s*=\s*[\"']([^\"']*)[\"']")
-_LIMIT = re.compile(r"<limit\b[^>]*>")
-
-
-def _attribute(tag: str, key: str) -> float:
-    """The number ``key`` of a ``<limit ...>`` tag, 0 when absent or no number."""
-    found = re.search(rf"\b{key}\s*=\s*[\"']\s*([^\"']*)[\"']", tag)
-    try:
-        return float(found[1]) if found else 0.0
-    except ValueError:
-        return 0.0
 
 
 def new_data(model: pin.Model, display: str) -> pin.Data:
