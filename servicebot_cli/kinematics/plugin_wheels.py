@@ -17,7 +17,13 @@ import numpy as np
 
 from servicebot_cli.description.extensions import Plugin, param, params_all
 from servicebot_cli.description.model_plugins import ros1_plugin
-from servicebot_cli.kinematics.wheel_joints import PARALLEL, Wheel, turns_freely
+from servicebot_cli.kinematics.wheel_joints import (
+    PARALLEL,
+    Wheel,
+    turns_freely,
+    unit_axis,
+    wheel_at,
+)
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -76,17 +82,12 @@ def _wheel(robot: RobotDescription, name: str, world: dict[str, np.ndarray],
     joint = next((j for j in robot.joints if j.name == name), None)
     if joint is None or not turns_freely(joint) or joint.child not in world:
         return None
-    axis = np.array(joint.axis, dtype=float)
-    if not np.all(np.isfinite(axis)) or np.linalg.norm(axis) == 0:
+    axis = unit_axis(joint)
+    if axis is None:
         return None
     transform = world[joint.child]
-    axis_in_root = transform[:3, :3] @ (axis / np.linalg.norm(axis))
+    axis_in_root = transform[:3, :3] @ axis
     position = transform[:3, 3]
     if abs(axis_in_root[1]) < PARALLEL or not np.all(np.isfinite(position)):
         return None
-    limit = joint.limits.velocity if joint.limits and joint.limits.velocity else math.inf
-    return Wheel(joint=joint.name, side="left" if position[1] > 0 else "right",
-                 radius_m=float(radius_m),
-                 position_m=(float(position[0]), float(position[1]), float(position[2])),
-                 axis_sign=1 if axis_in_root[1] > 0 else -1,
-                 velocity_limit_rad_s=float(limit))
+    return wheel_at(joint, position, radius_m, axis_in_root)

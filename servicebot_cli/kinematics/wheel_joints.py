@@ -81,10 +81,9 @@ def as_wheel(robot: RobotDescription, joint: Joint,
         or next((s for s in shapes if s.geometry.kind == "sphere"), None)
     if round_shape is None or not round_shape.geometry.radius:
         return NO_ROUND_SHAPE
-    axis = np.array(joint.axis, dtype=float)
-    if not np.all(np.isfinite(axis)) or np.linalg.norm(axis) == 0:
+    axis = unit_axis(joint)
+    if axis is None:
         return "about a zero axis"
-    axis /= np.linalg.norm(axis)
     if round_shape.geometry.kind == "cylinder" \
             and abs(float(axis @ _cylinder_axis(round_shape))) < PARALLEL:
         return f"about an axis that is not the axis of the cylinder on '{link.name}'"
@@ -99,11 +98,29 @@ def as_wheel(robot: RobotDescription, joint: Joint,
     position = (transform @ pose_matrix(round_shape.origin))[:3, 3]
     if round_shape.geometry.kind == "sphere" and abs(position[1]) <= round_shape.geometry.radius:
         return BALL_CASTER
+    return wheel_at(joint, position, float(round_shape.geometry.radius), axis_in_root)
+
+
+def unit_axis(joint: Joint) -> np.ndarray | None:
+    """``joint``'s axis of unit length in its own frame; None when it is zero or no number."""
+    axis = np.array(joint.axis, dtype=float)
+    if not np.all(np.isfinite(axis)) or np.linalg.norm(axis) == 0:
+        return None
+    unit: np.ndarray = axis / np.linalg.norm(axis)
+    return unit
+
+
+def wheel_at(joint: Joint, position: np.ndarray, radius_m: float,
+             axis_in_root: np.ndarray) -> Wheel:
+    """The wheel of ``joint`` centred at ``position``, turning about ``axis_in_root``.
+
+    Its side is the sign of its y; its speed limit the joint's ``<limit velocity>``.
+    """
     limit = joint.limits.velocity if joint.limits and joint.limits.velocity else math.inf
     return Wheel(
         joint=joint.name,
         side="left" if position[1] > 0 else "right",
-        radius_m=float(round_shape.geometry.radius),
+        radius_m=radius_m,
         position_m=(float(position[0]), float(position[1]), float(position[2])),
         axis_sign=1 if axis_in_root[1] > 0 else -1,
         velocity_limit_rad_s=float(limit),
