@@ -16,6 +16,7 @@ import re
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
+from servicebot_cli.check.names import SRDF_ELEMENTS
 from servicebot_cli.description.install_layout import installed_source
 from servicebot_cli.description.loader import without_comments
 from servicebot_cli.description.package_dirs import holding_package
@@ -32,8 +33,7 @@ _CONTENT = re.compile(rb"<(?:link|joint|xacro:(?!include\b|property\b|arg\b|macr
 _INCLUDE = re.compile(rb"<xacro:include\b[^>]*?\bfilename\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
 _FIND = re.compile(r"^\$\(find\s+([^)\s]+)\s*\)/*(.*)$")
 _HEAD_BYTES = 1 << 20
-_SRDF_ELEMENT = re.compile(rb"<(?:group|group_state|disable_collisions|virtual_joint|end_effector"
-                           rb"|passive_joint)\b")
+_SRDF_ELEMENT = re.compile(rb"<(?:" + "|".join(SRDF_ELEMENTS).encode() + rb")\b")
 _JOINT_DEFINITION = re.compile(rb"<joint\b[^>]*\btype\s*=")
 
 

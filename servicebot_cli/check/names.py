@@ -12,15 +12,15 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 
-_SRDF_ELEMENTS = frozenset(("group", "group_state", "disable_collisions", "virtual_joint",
-                            "end_effector", "passive_joint"))
+SRDF_ELEMENTS = ("group", "group_state", "disable_collisions", "virtual_joint", "end_effector",
+                 "passive_joint")
 """What a MoveIt SRDF's <robot> holds, and a URDF's does not."""
 
 
 def check(robot: RobotDescription) -> Iterator[Issue]:
     """Duplicate, empty and undefined names."""
     if not robot.links:
-        semantic = sorted({child.tag for child in robot.root if child.tag in _SRDF_ELEMENTS})
+        semantic = sorted({child.tag for child in robot.root if child.tag in SRDF_ELEMENTS})
         if semantic:  # MoveIt's baxter.srdf.xacro, named by the user
             yield Issue("SB109", "the robot has no <link>: with its "
                         f"{', '.join(f'<{tag}>' for tag in semantic)} it is a MoveIt semantic "
