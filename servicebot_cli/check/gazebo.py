@@ -14,7 +14,7 @@ from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.optional_parts import Definition, defined_elsewhere
 from servicebot_cli.common.errors import NameNotFound
 from servicebot_cli.description import sensors as specs
-from servicebot_cli.description.extensions import Sensor, param
+from servicebot_cli.description.extensions import Sensor, param, sdf_true
 from servicebot_cli.description.sensors import NoiseSpec
 
 if TYPE_CHECKING:
@@ -69,7 +69,7 @@ def kept_apart(robot: RobotDescription) -> dict[str, str]:
     kept: dict[str, str] = {}
     for block in robot.gazebo:
         for key, value in block.properties:
-            if key in _NOT_LUMPED and value.strip().lower() in ("true", "1") and block.reference:
+            if key in _NOT_LUMPED and sdf_true(value) and block.reference:
                 kept[block.reference] = key
     return kept
 

@@ -49,6 +49,11 @@ def param(params: Params, path: str, default: str | None = None) -> str | None:
     return found
 
 
+def sdf_true(text: str | None) -> bool:
+    """Whether SDF reads ``text`` as true: ``true`` or ``1``, in any case, blanks around."""
+    return (text or "").strip().lower() in ("1", "true")
+
+
 def params_all(params: Params, path: str) -> tuple[str, ...]:
     """Every value at ``path``, in document order (``ros/remapping``, ``joint_name``)."""
     return tuple(value for key, value in params if key == path)

@@ -39,7 +39,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from servicebot_cli.description.elements import parse_float
-from servicebot_cli.description.extensions import Plugin, param, params_all
+from servicebot_cli.description.extensions import Plugin, param, params_all, sdf_true
 from servicebot_cli.description.sensors import ImuSpec, NoiseSpec, plugin_topic
 
 Row = tuple[str, str, str, str | None]
@@ -53,8 +53,8 @@ MODEL_NOTE = GZ_NOTE + "; MODEL: the name the robot is spawned with"
 
 
 def _flag(plugin: Plugin, key: str, default: bool) -> bool:
-    text = (param(plugin.params, key) or "").strip().lower()
-    return default if not text else text in ("1", "true")
+    text = (param(plugin.params, key) or "").strip()
+    return default if not text else sdf_true(text)
 
 
 def _absolute(topic: str) -> str:
