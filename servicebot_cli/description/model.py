@@ -12,6 +12,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from servicebot_cli.common.errors import DescriptionError, ServicebotError
+from servicebot_cli.common.listing import some_of
 from servicebot_cli.common.native_stderr import captured_fd2
 from servicebot_cli.description.elements import escaped_blanks, read_joint
 from servicebot_cli.description.safe_xml import parse_xml
@@ -158,9 +159,8 @@ def _bound_culprits(xml_text: str, reason: str) -> str:
                 and (getattr(joint.limits, kind) or 0.0) < 0]
     if not negative:
         return ""
-    listed = ", ".join(f"'{name}'" for name in negative[:5])
-    more = f" and {len(negative) - 5} more" if len(negative) > 5 else ""
-    return f" (joint{'s' if len(negative) > 1 else ''} {listed}{more}: a negative {kind} limit)"
+    listed = some_of([f"'{name}'" for name in negative], 5)
+    return f" (joint{'s' if len(negative) > 1 else ''} {listed}: a negative {kind} limit)"
 
 
 def new_data(model: pin.Model, display: str) -> pin.Data:

@@ -17,6 +17,7 @@ from collections.abc import Sequence
 from typing import Protocol
 
 from servicebot_cli.common.errors import LinkError, LinkLost, ServicebotError
+from servicebot_cli.common.listing import some_of
 
 WRITE_TIMEOUT_S = 0.5  # a write that cannot leave in this long means the port is dead
 _MAX_LISTED = 8
@@ -191,8 +192,7 @@ def describe_ports() -> str:
 
 
 def _listed(names: list[str]) -> str:
-    shown = ", ".join(names[:_MAX_LISTED])
-    return shown + (f" and {len(names) - _MAX_LISTED} more" if len(names) > _MAX_LISTED else "")
+    return some_of(names, _MAX_LISTED)
 
 
 def _group_of(path: str) -> str:

@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.common.listing import some_of
 from servicebot_cli.kinematics.link_poses import link_transforms
 from servicebot_cli.kinematics.running_gear import swivels_above
 from servicebot_cli.kinematics.wheel_joints import (
@@ -33,6 +34,7 @@ if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
 
+_MOST_JOINTS_NAMED = 6  # of one reason, in the note of what is no differential drive
 _SMALLEST_RADIUS_M = 1e-4  # a wheel of a tenth of a millimetre: a typo, or no number
 _LARGEST_RADIUS_M = 100.0
 
@@ -162,14 +164,11 @@ def _why_not_wheels(robot: RobotDescription, left_out: dict[str, list[str]]) -> 
         one = len(joints) == 1
         if reason == NO_ROUND_SHAPE:
             named = [f"{joint} (link '{robot.joint(joint).child}')" for joint in joints]
-            reasons.append(f"{_listed(named)} {'turns' if one else 'turn'} but "
-                           f"{'its link has' if one else 'their links have'} no <cylinder> or "
-                           "<sphere> collision or visual to take a radius from")
+            reasons.append(f"{some_of(named, _MOST_JOINTS_NAMED)} {'turns' if one else 'turn'}"
+                           f" but {'its link has' if one else 'their links have'} no <cylinder>"
+                           " or <sphere> collision or visual to take a radius from")
         else:
-            reasons.append(f"{_listed(joints)} {'turns' if one else 'turn'} {reason}")
+            reasons.append(f"{some_of(joints, _MOST_JOINTS_NAMED)} "
+                           f"{'turns' if one else 'turn'} {reason}")
     return "; ".join(reasons[:3]) + ("; ..." if len(reasons) > 3 else "")
 
-
-def _listed(joints: list[str]) -> str:
-    """The first six of ``joints``, then how many more."""
-    return ", ".join(joints[:6]) + (f" and {len(joints) - 6} more" if len(joints) > 6 else "")
