@@ -182,15 +182,17 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
     env.load_meshes = any(wanted(c) for c in ("SB402", "SB403", "SB404", "SB301"))
     env.resolve_meshes = env.load_meshes or any(wanted(c) for c in ("SB401", "SB408", "SB409",
                                                                     "SB410"))
-    families: list[tuple[str, Callable[[], Iterable[Issue]]]] = [
-        ("SB1", lambda: names.check(robot)), ("SB1", lambda: tree.check(robot)),
-        ("SB2", lambda: joints.check(robot)), ("SB3", lambda: inertia.check(robot, env)),
-        ("SB4", lambda: geometry.check(robot, env)), ("SB50", lambda: gazebo.check(robot)),
-        ("SB5", lambda: ros2_control.check(robot)),
-        ("SB511", lambda: transmissions.check(robot)),
+    # each family by the code prefixes of its rules (gazebo's: SB501-SB503 and SB513)
+    families: list[tuple[tuple[str, ...], Callable[[], Iterable[Issue]]]] = [
+        (("SB1",), lambda: names.check(robot)), (("SB1",), lambda: tree.check(robot)),
+        (("SB2",), lambda: joints.check(robot)), (("SB3",), lambda: inertia.check(robot, env)),
+        (("SB4",), lambda: geometry.check(robot, env)),
+        (("SB50", "SB513"), lambda: gazebo.check(robot)),
+        (("SB5",), lambda: ros2_control.check(robot)),
+        (("SB511",), lambda: transmissions.check(robot)),
     ]
-    for prefix, family in families:
-        if settings.any_enabled(prefix):
+    for prefixes, family in families:
+        if any(settings.any_enabled(prefix) for prefix in prefixes):
             yield from family()
 
 

@@ -43,6 +43,14 @@ def test_rule_fires_on_its_fixture(run, code):
             assert finding["line"] > 0 and finding["column"] > 0, finding
 
 
+@pytest.mark.parametrize("code", [c for c in RULES if not c.startswith(("SB6", "SB70"))])
+def test_rule_fires_when_it_alone_is_selected(run, code):
+    """--select CODE runs the family that holds CODE: SB513 sat outside gazebo's 'SB50'."""
+    result = run("check", "urdf", fixture(code), "--format", "json", "--isolated",
+                 "--select", code)
+    assert {f["code"] for f in findings(result.stdout)} == {code}, result.stdout
+
+
 @pytest.mark.parametrize("code", [c for c in RULES if not c.startswith("SB6")])
 def test_fixture_has_no_other_defect(run, code):
     """Fixtures show one defect each (the root link's inertia note aside)."""
