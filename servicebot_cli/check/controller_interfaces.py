@@ -99,6 +99,10 @@ def _each(params: yaml.MappingNode, key: str, kind: str,
 
 
 def _scalars(node: yaml.Node | None) -> list[yaml.ScalarNode]:
-    """The names a list (or a single name) holds; anything else holds none."""
+    """The names a list (or a single name) holds; anything else (``~``, a list) holds none."""
     items = node.value if isinstance(node, yaml.SequenceNode) else [node]
-    return [item for item in items if isinstance(item, yaml.ScalarNode) and item.value]
+    return [item for item in items if isinstance(item, yaml.ScalarNode) and item.value
+            and item.tag != _NULL]
+
+
+_NULL = "tag:yaml.org,2002:null"

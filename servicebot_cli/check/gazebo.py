@@ -78,7 +78,10 @@ def kept_apart(robot: RobotDescription) -> dict[str, str]:
 _NUMERIC = frozenset(("mu1", "mu2", "kp", "kd", "maxVel", "minDepth", "dampingFactor",
                       "maxContacts", "laserRetro", "springReference", "springStiffness",
                       "stopCfm", "stopErp", "fudgeFactor"))
-_NUMBER_START = re.compile(r"[ \t\n\r\f\v]*[+-]?(?:[0-9]|\.[0-9]|inf|nan)", re.IGNORECASE)
+_INTEGER_START = re.compile(r"[ \t\n\r\f\v]*([+-]?[0-9]+)")
+_INT_MAX = 2**31 - 1
+_NUMBER_START = re.compile(r"[ \t\n\r\f\v]*([+-]?(?:inf|nan|(?:[0-9]+\.?[0-9]*|\.[0-9]+)"
+                           r"(?:[eE][+-]?[0-9]+)?))", re.IGNORECASE)
 
 
 def _numbers(robot: RobotDescription) -> Iterator[Issue]:
@@ -90,14 +93,32 @@ def _numbers(robot: RobotDescription) -> Iterator[Issue]:
             if not isinstance(child.tag, str) or child.tag not in _NUMERIC or len(child):
                 continue
             text = child.text if (child.text or "").strip() else child.get("value", "")
-            if _NUMBER_START.match(text or "") is None:
-                shown = (text or "").strip()
-                yield Issue("SB513", f"<gazebo{_referring(block.reference)}> <{child.tag}>"
-                            f"{shown}</{child.tag}>: "
-                            + (f"'{shown}' is not a number" if shown else "no number")
-                            + "; sdformat's conversion of the URDF fails, and Gazebo loads "
-                            "nothing of the robot", child,
-                            fix=f"write <{child.tag}> as a plain number")
+            shown = (text or "").strip()
+            why = _unread(child.tag, text or "")
+            if why is None:
+                continue
+            yield Issue("SB513", f"<gazebo{_referring(block.reference)}> <{child.tag}>"
+                        f"{shown}</{child.tag}>: {why}; sdformat's conversion of the URDF "
+                        "fails, and Gazebo loads nothing of the robot", child,
+                        fix=f"write <{child.tag}> as a plain number")
+
+
+def _unread(tag: str, text: str) -> str | None:
+    """Why sdformat's std::stoi (maxContacts) or std::stod cannot read ``text``; None: it can.
+
+    Both skip leading blanks and stop at the first character that is no part of a number;
+    both throw when no number starts the text, or when it is beyond their type's range.
+    """
+    shown = text.strip()
+    integer = tag == "maxContacts"
+    start = (_INTEGER_START if integer else _NUMBER_START).match(text)
+    if start is None:
+        return f"'{shown}' is not a number" if shown else "no number"
+    if integer and abs(int(start[1])) > _INT_MAX:
+        return f"'{shown}' is beyond an int's range"
+    if not integer and math.isinf(float(start[1])) and "inf" not in start[1].lower():
+        return f"'{shown}' is beyond a double's range"
+    return None
 
 
 def _referring(reference: str | None) -> str:

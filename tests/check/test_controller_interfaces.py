@@ -151,3 +151,14 @@ def test_gazebos_pid_interfaces_are_exported_under_the_plain_names(run, tmp_path
     code, found = _check(run, tmp_path, claiming, gazebo)
     assert code == 1 and found[0]["fix"] == ("claim 'position': gazebo_ros2_control exports "
                                              "its position_pid loop under that name")
+
+
+def test_a_null_interface_name_claims_nothing(run, tmp_path):
+    """interface_name: [position, ~]: a YAML null is no interface '~'."""
+    declared = BUNDLED.replace(
+        "    joint_state_broadcaster:\n",
+        "    fwd:\n      type: forward_command_controller/ForwardCommandController\n"
+        "    joint_state_broadcaster:\n")
+    text = declared + ("\nfwd:\n  ros__parameters:\n    joints: [arm_base_to_link1]\n"
+                       "    interface_name: [position, ~]\n")
+    assert _check(run, tmp_path, text) == (0, [])

@@ -105,6 +105,10 @@ def test_a_setting_sdformat_reads_as_a_number_must_start_as_one(run, tmp_path):
     assert codes("<mu1> 0.5</mu1><kp>1e3</kp><kd>.5</kd><maxContacts>10</maxContacts>"
                  "<dampingFactor value='0.1'/><minDepth>0.001m</minDepth>") == []
     assert codes("<dampingFactor>foo</dampingFactor>") == ["SB513"]
+    # beyond the type's range, stod and stoi throw too; stoi stops at a point or an exponent
+    assert codes("<kp>1e999</kp>") == ["SB513"] and codes("<mu1>-inf</mu1>") == []
+    assert codes("<maxContacts>99999999999</maxContacts>") == ["SB513"]
+    assert codes("<maxContacts>1e999</maxContacts>") == []
     assert codes("<mu2></mu2>") == ["SB513"]
     assert codes("<material>Gazebo/Grey</material><selfCollide>true</selfCollide>") == []
 
