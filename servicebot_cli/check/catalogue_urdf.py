@@ -213,7 +213,8 @@ URDF_RULES: tuple[Rule, ...] = (
     Rule("SB212", "limits-in-degrees", W, "Angular limits that look like degrees",
          "URDF angles are radians. Revolute limits beyond 2 pi that are whole numbers from "
          "30 to 720 (90, 180, 360) were almost certainly written in degrees.",
-         "Convert to radians (180 -> 3.14159)."),
+         "Convert to radians (180 -> 3.14159); where a symmetric range of half a turn or "
+         "more each way stands for no limit, make the joint continuous."),
     Rule("SB213", "soft-limits-outside", W, "safety_controller soft limits outside the hard limits",
          "soft_lower_limit must be >= lower and soft_upper_limit <= upper (and soft lower <= "
          "soft upper), or the safety controller allows what the joint cannot do.",

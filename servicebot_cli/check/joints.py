@@ -26,6 +26,7 @@ _ADVICE = {
     "gearbox": "URDF has no gearbox joint: use a revolute joint with <mimic>",
 }
 _TWO_PI = 2.0 * math.pi
+_HALF_TURN_DEG = 180.0  # SB212: limits of +-180 degrees or more may stand for no limit
 
 
 def check(robot: RobotDescription) -> Iterator[Issue]:
@@ -149,9 +150,14 @@ def _limits(joint: Joint, simulator: str | None) -> Iterator[Issue]:
         yield Issue("SB204", f"joint '{joint.name}' has lower = upper = {lower:g}: it cannot "
                     "move", joint.element, fix="make it fixed, or give it its real range")
     if joint.type == "revolute" and _degrees(lower, upper):
+        # a symmetric range of half a turn or more each way is also how some descriptions
+        # (ocs2's Kinova and PR2 roll joints, +-300) write a joint that turns without limit
+        endless = ', or type="continuous" if it turns without limit' if (
+            -lower == upper >= _HALF_TURN_DEG) else ""
         yield Issue("SB212", f"joint '{joint.name}' limits [{lower:g}, {upper:g}] look like "
                     "degrees; URDF angles are radians", joint.element,
-                    fix=f'lower="{math.radians(lower):.6g}" upper="{math.radians(upper):.6g}"')
+                    fix=f'lower="{math.radians(lower):.6g}" upper="{math.radians(upper):.6g}"'
+                    + endless)
 
 
 def _degrees(lower: float, upper: float) -> bool:

@@ -45,3 +45,19 @@ def test_a_xacro_failure_says_whether_an_argument_or_a_property_is_missing(run, 
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB006")
     (found,) = findings(result.stdout)
     assert found["fix"].startswith(fix)
+
+
+@pytest.mark.parametrize(("limit", "continuous"), [
+    ('<limit lower="-300" upper="300" effort="1" velocity="1"/>', True),  # ocs2's Kinova roll
+    ('<limit lower="-90" upper="90" effort="1" velocity="1"/>', False),
+    ('<limit lower="-30" upper="200" effort="1" velocity="1"/>', False),
+])
+def test_limits_in_degrees_suggest_continuous_only_for_a_wide_symmetric_range(run, tmp_path,
+                                                                              limit,
+                                                                              continuous):
+    path = tmp_path / "r.urdf"
+    path.write_text(ARM.format(kind="revolute", limit=limit, mimic=""))
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB212")
+    (found,) = findings(result.stdout)
+    assert found["fix"].startswith('lower="')
+    assert ("continuous" in found["fix"]) is continuous
