@@ -311,7 +311,8 @@ URDF_RULES: tuple[Rule, ...] = (
          "Export the mesh again."),
     Rule("SB404", "mesh-scale", W, "A mesh of implausible size",
          "A mesh larger than 20 m or smaller than 1 mm across (after scale) is usually in the "
-         "wrong unit: a mesh in millimetres is 1000 times too large.",
+         "wrong unit: a mesh in millimetres is 1000 times too large. A description of one "
+         "massless link (a ground plane, a scene) may be of any size.",
          "Set <mesh scale=\"0.001 0.001 0.001\"> or export in metres."),
     Rule("SB405", "non-positive-size", E, "A primitive with a zero or negative size",
          "Box sizes, cylinder radius and length, and sphere radius must be positive. A "

@@ -139,13 +139,24 @@ def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str
                     f"point{unit}" + (
                         "; a visual of zero size draws nothing" if visual else ""), element,
                     severity=Severity.WARNING if visual else None)
-    elif extent_m > LARGEST_M:
+    elif extent_m > LARGEST_M and not _scenery(robot):
         yield Issue("SB404", f"{where}: mesh '{name}' is {extent_m:.4g} m across; is it in "
                     "millimetres?", element, fix=_scale_fix(scale, 0.001))
     elif 0 < extent_m < SMALLEST_M:
         yield Issue("SB404", f"{where}: mesh '{name}' is {extent_m:.3g} m across; is a "
                     "millimetre scale applied to a mesh already in metres?", element,
                     fix=_scale_fix(scale, 1000.0))
+
+
+def _scenery(robot: RobotDescription) -> bool:
+    """A single link without mass: a ground plane or a scene, of any size.
+
+    pybullet's plane.urdf and samurai.urdf and solo's plane load as static bodies.
+    """
+    if len(robot.links) != 1:
+        return False
+    inertial = robot.links[0].inertial
+    return inertial is None or not inertial.mass_kg
 
 
 def _scale_fix(scale: tuple[float, float, float], factor: float) -> str:
