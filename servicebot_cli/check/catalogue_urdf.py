@@ -106,7 +106,7 @@ URDF_RULES: tuple[Rule, ...] = (
          "prefix or an unused argument); newer xacro versions refuse it. A file whose name "
          "does not say xacro but that holds xacro gets the same warning, with how ROS tools "
          "read it.",
-         "Do what the message advises."),
+         "Each finding's fix says what to change for its warning."),
     Rule("SB018", "xacro-include", N, "A xacro include: checked through its includers",
          "A xacro file that only defines macros or properties, or holds parts of a robot that "
          "another file includes, or whose links all hang from one link it does not define "

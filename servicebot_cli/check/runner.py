@@ -19,6 +19,7 @@ from servicebot_cli.check.catalogue import RULES
 from servicebot_cli.check.env import CheckEnv
 from servicebot_cli.check.findings import Finding, Issue, Severity
 from servicebot_cli.check.settings import Settings
+from servicebot_cli.check.xacro_warnings import xacro_fix
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.description.safe_xml import MAX_BYTES
 
@@ -171,7 +172,7 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
 
     for warning in robot.warnings:  # the place is the finding's: not again in its message
         yield Issue("SB017", warning.removeprefix(f"{robot.display}: "),
-                    where=(robot.display, 0, 0))
+                    where=(robot.display, 0, 0), fix=xacro_fix(warning))
     found = list(syntax.check(robot.root))
     if not robot.expanded:  # xacro's own parser turned such blanks into spaces already
         found += syntax.vectors_split_wrong(robot.xml_text, robot.display)
