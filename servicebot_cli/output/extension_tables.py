@@ -36,9 +36,13 @@ def _details(s: SensorInfo) -> list[tuple[str, str]]:
         rows.append(("topics from", s.topics_from))
     if s.lidar is not None:
         lidar = s.lidar
-        rows += [("scan", f"{lidar.samples} samples over "
-                          f"{d.span(lidar.min_angle_rad, lidar.max_angle_rad)} rad"),
-                 ("range", f"{d.span(lidar.min_range_m, lidar.max_range_m)} m, resolution "
+        rows.append(("scan", f"{lidar.samples} samples over "
+                             f"{d.span(lidar.min_angle_rad, lidar.max_angle_rad)} rad"))
+        if lidar.vertical_samples is not None and lidar.vertical_samples > 1:  # a 3D lidar
+            rows.append(("vertical scan", f"{lidar.vertical_samples} rings over "
+                         f"{d.span(lidar.vertical_min_angle_rad, lidar.vertical_max_angle_rad)}"
+                         " rad"))
+        rows += [("range", f"{d.span(lidar.min_range_m, lidar.max_range_m)} m, resolution "
                            f"{d.quantity(lidar.range_resolution_m, 'm')}"),
                  ("noise", d.noise(lidar.noise, "m"))]
     if s.camera is not None:
