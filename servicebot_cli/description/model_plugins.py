@@ -13,6 +13,7 @@ Gazebo Classic's ROS 2 plugins (gazebo_ros_pkgs) name relative topics in their n
   joint states on ``joint_states`` with ``<publishWheelJointState>true``;
 - ``gazebo_ros_planar_move``: ``cmd_vel`` in, ``odom`` and ``/tf`` out (both default true);
 - ``gazebo_ros_joint_state_publisher``: ``joint_states`` out;
+- ``gazebo_ros_p3d``: ``odom`` out (ROS 1: ``<topicName>``), its body's ground truth;
 - ``gazebo_ros_imu`` (ROS 1 only, a model plugin: ROS 2 has the sensor plugin instead):
   ``<topicName>`` out (default ``/default_imu``), stamped ``<frameName>`` (default
   ``<bodyName>``), the link it measures.
@@ -179,6 +180,20 @@ def _imu(plugin: Plugin) -> list[Row]:
     return [("out", _absolute(plugin_topic(plugin, "/default_imu")), IMU, None)]
 
 
+def _p3d(plugin: Plugin) -> list[Row]:
+    """``gazebo_ros_p3d``: its body's pose and twist as Odometry, the simulator's ground truth.
+
+    ROS 2 publishes on ``odom`` and loads nothing without ``<body_name>``; ROS 1 publishes on
+    ``<topicName>`` and needs it and ``<bodyName>`` (gazebo_plugins' gazebo_ros_p3d.cpp).
+    """
+    body = _text(plugin, "body_name") or _text(plugin, "bodyName")
+    legacy = ros1_plugin(plugin) or bool(_text(plugin, "bodyName"))
+    if not body or (legacy and not _text(plugin, "topicName")):
+        return []
+    return [("out", _absolute(plugin_topic(plugin, "odom")), ODOMETRY,
+             f"ground truth of {body}")]
+
+
 def model_imu(plugin: Plugin) -> tuple[str, ImuSpec] | None:
     """A ROS 1 ``gazebo_ros_imu`` model plugin's link and the IMU it publishes; None for others.
 
@@ -234,6 +249,7 @@ _KNOWN: tuple[tuple[tuple[str, ...], Callable[[Plugin], list[Row]]], ...] = (
     (("gazebo_ros_planar_move",), _planar_move),
     (("gazebo_ros_joint_state_publisher",), _joint_states),
     (("gazebo_ros_imu.so",), _imu),
+    (("gazebo_ros_p3d",), _p3d),
     (("diff-drive-system", "::DiffDrive"), _gz_diff_drive),
     (("odometry-publisher-system", "::OdometryPublisher"), _gz_odometry),
     (("joint-state-publisher-system", "::JointStatePublisher"), _gz_joint_states),

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import json
 
+import pytest
+
 from servicebot_cli.description.loader import RobotSource, load
 from servicebot_cli.inspect.plugins import plugins_info
 from servicebot_cli.inspect.sensors import sensors_info
@@ -63,3 +65,33 @@ def test_the_topics_section_lists_the_plugins_topics(run, monkeypatch):
     assert {"direction": "in", "name": "/demo/cmd_vel"}.items() <= next(
         t for t in topics if t["name"] == "/demo/cmd_vel").items()
     assert any(t["name"] == "/demo/odom" and t["direction"] == "out" for t in topics)
+
+
+CREATE3 = REPO / "tests" / "realworld" / "ws" / "src" / "irobot_create_description" / "urdf" \
+    / "create3.urdf.xacro"
+
+
+def test_create3_ground_truth_pose_from_its_p3d_plugin(monkeypatch):
+    """create3's ``gazebo_ros_p3d`` remaps ``odom`` to ``sim_ground_truth_pose``."""
+    monkeypatch.setenv("ROS_PACKAGE_PATH", "")
+    rows, everything = _plugin_topics(CREATE3)
+    assert ("out", "/sim_ground_truth_pose", "nav_msgs/msg/Odometry",
+            "gazebo_ros_p3d_robot") in rows
+    (truth,) = [t for t in everything if t.name == "/sim_ground_truth_pose"]
+    assert truth.note == "ground truth of base_link"
+
+
+@pytest.mark.parametrize(("params", "topic"), [
+    ("<ros><namespace>r1</namespace></ros><body_name>a</body_name>", "/r1/odom"),
+    ("<body_name>a</body_name>", "/odom"),
+    ("<frame_name>world</frame_name>", None),  # no <body_name>: it loads nothing
+    ("<bodyName>a</bodyName><topicName>truth</topicName>", "/truth"),  # ROS 1
+    ("<bodyName>a</bodyName>", None),  # ROS 1 without <topicName>: it does not run
+])
+def test_p3d_topic_as_gazebo_ros_p3d_reads_its_tags(tmp_path, monkeypatch, params, topic):
+    monkeypatch.setenv("ROS_PACKAGE_PATH", "")
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r"><link name="a"/><gazebo><plugin name="truth" '
+                    f'filename="libgazebo_ros_p3d.so">{params}</plugin></gazebo></robot>')
+    rows, _ = _plugin_topics(path)
+    assert rows == ([("out", topic, "nav_msgs/msg/Odometry", "truth")] if topic else [])
