@@ -33,7 +33,8 @@ URDF_RULES: tuple[Rule, ...] = (
     Rule("SB005", "unsafe-xml", E, "A DTD declares entities or names an external DTD",
          "Entities can read local files (<!ENTITY x SYSTEM \"file:///etc/passwd\">) or expand "
          "exponentially (billion laughs). They are refused, never resolved, and the network "
-         "is never used.",
+         "is never used. An external DTD that is only named is a warning: no robot "
+         "description reader loads it; a reference to an entity it would declare is an error.",
          "Remove the DOCTYPE; use xacro properties for repeated values."),
     Rule("SB006", "xacro-failed", E, "xacro cannot expand the file",
          "An unknown macro or property, a bad expression, a missing argument or include. The "

@@ -173,6 +173,12 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
     for warning in robot.warnings:  # the place is the finding's: not again in its message
         yield Issue("SB017", warning.removeprefix(f"{robot.display}: "),
                     where=(robot.display, 0, 0), fix=xacro_fix(warning))
+    if robot.external_dtd is not None:  # named, never loaded: by no reader either
+        dtd = robot.external_dtd
+        yield Issue("SB005", f"external DTD '{dtd.identifier}' is never loaded, as no robot "
+                    "description reader loads it", severity=Severity.WARNING,
+                    where=(robot.display, 0, 0) if robot.expanded else
+                    (robot.display, dtd.line, dtd.column), fix="remove the DOCTYPE")
     found = list(syntax.check(robot.root))
     if not robot.expanded:  # xacro's own parser turned such blanks into spaces already
         found += syntax.vectors_split_wrong(robot.xml_text, robot.display)

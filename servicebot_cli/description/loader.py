@@ -161,7 +161,8 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
                     ) if uses_xacro(data) else ()
         return RobotDescription(
             display=source.display, path=source.path, xml_text=document.text,
-            root=document.root, doctype=document.doctype, files=(source.display,),
+            root=document.root, doctype=document.doctype, external_dtd=document.external_dtd,
+            files=(source.display,),
             warnings=warnings,
         )
     from servicebot_cli.description.xacro_expand import expand
@@ -178,6 +179,7 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
     return RobotDescription(
         display=source.display, path=source.path, xml_text=expansion.xml_text,
         root=document.root, files=expansion.files, xacro_args=source.xacro_args,
+        doctype=document.doctype, external_dtd=document.external_dtd,
         warnings=(*named, *expansion.warnings),
     )
 

@@ -23,7 +23,7 @@ from servicebot_cli.common.errors import (
 from servicebot_cli.description import elements as el
 from servicebot_cli.description import extensions as ext
 from servicebot_cli.description.model import build_model, check_hint, new_data
-from servicebot_cli.description.safe_xml import PositionedElement
+from servicebot_cli.description.safe_xml import ExternalDtd, PositionedElement
 from servicebot_cli.description.sources import SourceRef
 
 if TYPE_CHECKING:
@@ -75,6 +75,7 @@ class RobotDescription:
         xml_text: The URDF text (expanded, for xacro input).
         root: The parsed root element; every element has ``sourceline`` and ``column``.
         doctype: The DOCTYPE name when the document has one.
+        external_dtd: The external DTD the DOCTYPE names, never loaded, and where.
         files: Every file read: the top one, then xacro includes.
         xacro_args: ``name:=value`` arguments the xacro was expanded with.
         warnings: Warnings from xacro.
@@ -85,6 +86,7 @@ class RobotDescription:
     xml_text: str
     root: PositionedElement
     doctype: str | None = None
+    external_dtd: ExternalDtd | None = None
     files: tuple[str, ...] = ()
     xacro_args: tuple[tuple[str, str], ...] = ()
     warnings: tuple[str, ...] = ()

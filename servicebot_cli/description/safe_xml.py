@@ -1,13 +1,16 @@
 """A strict, safe XML parser that remembers where every element came from.
 
 Expat, driven directly: never recovers from an error, never loads a DTD or an entity,
-never touches the network. Entity declarations and external DTDs are refused outright,
-which also rules out "billion laughs" expansion. Each element records its 1-based line and
-column, and the comments just before it (``check`` reads suppression comments there).
+never touches the network. Entity declarations are refused outright, which also rules out
+"billion laughs" expansion. An external DTD is named only: never loaded, as no robot
+description reader loads it; a reference to an entity it would declare is refused. Each
+element records its 1-based line and column, and the comments just before it (``check``
+reads suppression comments there).
 """
 
 from __future__ import annotations
 
+import re
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from typing import NoReturn
@@ -49,11 +52,26 @@ class XmlDocument:
         root: The root element.
         text: The decoded document text.
         doctype: Name in ``<!DOCTYPE name>`` if the document has one, else ``None``.
+        external_dtd: The external DTD the DOCTYPE names (never loaded) and where, if any.
     """
 
     root: PositionedElement
     text: str
     doctype: str | None
+    external_dtd: ExternalDtd | None = None
+
+
+@dataclass(frozen=True)
+class ExternalDtd:
+    """An external DTD named by ``<!DOCTYPE name SYSTEM "...">``: its identifier and place."""
+
+    identifier: str
+    line: int
+    column: int
+
+
+_ENTITY_REFERENCE = re.compile(r"&(?!(?:amp|lt|gt|quot|apos|#[0-9]+|#x[0-9a-fA-F]+);)"
+                               r"([A-Za-z_:][\w.:-]*);")
 
 
 def parse_xml(
@@ -73,7 +91,8 @@ def parse_xml(
 
     Raises:
         XmlError: Empty, too large, not UTF-8, or not well-formed; with line and column.
-        UnsafeXmlError: The document declares entities or references an external DTD.
+        UnsafeXmlError: The document declares entities, or refers to one that only an
+            external DTD could declare.
     """
     if len(data) > max_bytes:
         raise XmlError(
@@ -159,6 +178,7 @@ class _Builder:
         self.count = 0
         self.depth = 0
         self.doctype: str | None = None
+        self.external_dtd: ExternalDtd | None = None
         self.comments: list[str] = []
         self.tree = ET.TreeBuilder(element_factory=PositionedElement)
         self.parser = expat.ParserCreate()
@@ -184,7 +204,26 @@ class _Builder:
             ) from None
         root = self.tree.close()
         assert isinstance(root, PositionedElement)  # the element_factory makes every element
-        return XmlDocument(root=root, text=text, doctype=self.doctype)
+        if self.external_dtd is not None:
+            self._entities_of_the_dtd(text, self.external_dtd)
+        return XmlDocument(root=root, text=text, doctype=self.doctype,
+                           external_dtd=self.external_dtd)
+
+    def _entities_of_the_dtd(self, text: str, dtd: ExternalDtd) -> None:
+        """Refuse a reference to an entity the unloaded DTD would declare.
+
+        With an external DTD, expat drops such a reference silently (from an attribute
+        too), where tinyxml2 (urdfdom, Gazebo, MuJoCo) keeps the text ``&name;``.
+        """
+        found = _ENTITY_REFERENCE.search(text)
+        if found is not None:
+            line = text.count("\n", 0, found.start()) + 1
+            column = found.start() - (text.rfind("\n", 0, found.start()) + 1) + 1
+            raise UnsafeXmlError(
+                self.filename,
+                f"entity '&{found[1]};' would come from the external DTD '{dtd.identifier}', "
+                "which no robot description reader loads; write its value instead",
+                line, column)
 
     def _where(self) -> tuple[int, int]:
         return self.parser.CurrentLineNumber, self.parser.CurrentColumnNumber + 1
@@ -220,11 +259,7 @@ class _Builder:
 
     def _doctype(self, name: str, system_id: str | None, public_id: str | None, _: int) -> None:
         if system_id or public_id:
-            raise UnsafeXmlError(
-                self.filename,
-                f"external DTD '{system_id or public_id}' is never loaded; remove the DOCTYPE",
-                *self._where(),
-            )
+            self.external_dtd = ExternalDtd(system_id or public_id or "", *self._where())
         self.doctype = name
 
     def _entity(self, name: str, *_: object) -> None:

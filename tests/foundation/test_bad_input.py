@@ -145,9 +145,20 @@ def test_billion_laughs_is_refused_at_once():
         parse_xml(lol, "lol.urdf")
 
 
-def test_external_dtd_is_never_fetched():
-    with pytest.raises(UnsafeXmlError, match="never loaded"):
-        parse_xml(b'<!DOCTYPE robot SYSTEM "http://example.com/urdf.dtd"><robot name="r"/>', "x")
+def test_an_external_dtd_is_named_never_loaded(tmp_path):
+    """As in tinyxml2 (urdfdom, Gazebo, MuJoCo): the DTD a DOCTYPE names is never read."""
+    dtd = tmp_path / "evil.dtd"
+    dtd.write_text('<!ENTITY secret "LEAKED">')
+    head = f'<?xml version="1.0"?>\n<!DOCTYPE robot SYSTEM "{dtd.as_uri()}">\n'.encode()
+    doc = parse_xml(head + b'<robot name="r"><link name="a"/></robot>', "x")
+    assert doc.root.get("name") == "r" and doc.doctype == "robot"
+    assert doc.external_dtd is not None
+    assert (doc.external_dtd.identifier, doc.external_dtd.line) == (dtd.as_uri(), 2)
+    # expat would drop the reference silently, tinyxml2 keep '&secret;': refused
+    with pytest.raises(UnsafeXmlError, match="'&secret;' would come from the external DTD"):
+        parse_xml(head + b'<robot name="r"><link name="a&secret;"/></robot>', "x")
+    plain = parse_xml(head + b'<robot name="r&amp;&#65;&#x42;"/>', "x")
+    assert plain.root.get("name") == "r&AB"
 
 
 def test_size_limit_refuses_quickly():
