@@ -28,6 +28,7 @@ from servicebot_cli.kinematics import diff_drive
 from servicebot_cli.simulate.body import Mounted, SimRobot
 from servicebot_cli.simulate.controllers.arm_trajectory import ArmLimits, ArmMotion
 from servicebot_cli.simulate.controllers.classic_drive import ENCODER, NEITHER, WORLD
+from servicebot_cli.simulate.controllers.controller_wheels import ControllerWheels
 from servicebot_cli.simulate.controllers.diff_drive import WheelPlan, WheelPlanner
 from servicebot_cli.simulate.model_facts import FactsAhead
 from servicebot_cli.simulate.pose_work import FromPoses, PoseJob, PoseWork
@@ -214,9 +215,7 @@ class _Run:
         self.motion = blocking.BlockedMotion((start.x_m, start.y_m, start.yaw_rad), self.dt_s,
                                              [o.name for o in self.tester.world],
                                              body.shape.links, self.arm)
-        self.odometer = odometry.Odometer(
-            self.dt_s, wheel_radius_m=geometry.wheel_radius_m,
-            track_m=geometry.track_m * ctrl.wheel_separation_multiplier)
+        self.odometer = odometry.Odometer(self.dt_s, ControllerWheels.of(ctrl, geometry))
         self.wheel_angles = np.zeros(2)  # left, right at the piece's first boundary [rad]
         self.wheel_sums = np.array([-0.0, -0.0])  # -0.0 + v == v: an empty running sum
         self.twist_before = (0.0, 0.0)  # the followed twist of the tick before the piece

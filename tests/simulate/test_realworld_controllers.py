@@ -66,3 +66,62 @@ def test_streams_are_published_at_most_once_a_control_tick(tmp_path):
     # the file asks odometry at 50 Hz and joint states default to 50 Hz: 30 Hz is the most
     assert messages["/diffbot_base_controller/odom"] == 12 * 30
     assert messages["/joint_states"] == 12 * 30
+
+
+SLOW = """\
+duration_s: 20
+initial_pose: {x_m: 0, y_m: 0, yaw_rad: 0}
+cmd_vel:
+  - {duration_s: 10, linear_m_s: 0.01}
+  - {duration_s: 10, angular_rad_s: 0.1}
+"""
+"""Slow enough that no wheel reaches its 1 rad/s limit: 0.67 and 0.33 rad/s."""
+
+
+def _slow_run(tmp_path, **geometry: float) -> dict:
+    text = CONTROLLERS.read_text()
+    for key, value in geometry.items():
+        text = text.replace(f"    {key}: ", f"    {key}: {value}  # was ")
+    controllers = tmp_path / "controllers.yaml"
+    controllers.write_text(text)
+    scenario = tmp_path / "slow.yaml"
+    scenario.write_text(SLOW)
+    result = run_servicebot("simulate", DIFFBOT, "--headless", "-s", scenario, "--format",
+                            "json", "--controllers", controllers, env=NO_ROS)
+    assert result.returncode == 0, result.stderr
+    return json.loads(result.stdout)
+
+
+@pytest.mark.parametrize(("geometry", "ratios"), [
+    ({}, (1.0, 1.0)),  # the file's geometry is the URDF's (0.015 m, 0.10 m)
+    # twice the radius: the controller asks half the wheel speed; its odometry believes it
+    ({"wheel_radius": 0.03}, (0.5, 0.5)),
+    # a wider track than the robot's: the wheels part more, the robot turns 1.2 times
+    ({"wheel_separation": 0.12}, (1.0, 1.2)),
+    ({"wheel_separation_multiplier": 1.2}, (1.0, 1.2)),
+])
+def test_the_files_wheel_geometry_commands_the_wheels_and_reads_the_odometry(
+        tmp_path, geometry, ratios):
+    """diff_drive_controller computes with its parameters; the robot moves on its wheels."""
+    summary = _slow_run(tmp_path, **geometry)
+    final, odom = summary["final_pose"], summary["odometry_final_pose"]
+    # 10 s straight, then a turn in place: x is the distance, yaw the turn; the odometry
+    # says what was commanded (the file's acceleration limits take a little off each)
+    assert (odom["x_m"], odom["yaw_rad"]) == pytest.approx((0.1, 1.0), rel=0.01)
+    assert (final["x_m"] / odom["x_m"], final["yaw_rad"] / odom["yaw_rad"]) == pytest.approx(
+        ratios, rel=1e-6)
+    for key, value in geometry.items():
+        field = {"wheel_radius": "wheel_radius_m",
+                 "wheel_separation": "wheel_separation_m"}.get(key, key)
+        assert summary["controller"][field]["value"] == value
+
+
+def test_a_wheel_radius_that_is_not_positive_is_one_line(tmp_path):
+    controllers = tmp_path / "controllers.yaml"
+    controllers.write_text(CONTROLLERS.read_text().replace("wheel_radius: 0.015",
+                                                           "wheel_radius: 0.0"))
+    result = run_servicebot("simulate", DIFFBOT, "--headless", "--controllers", controllers,
+                            env=NO_ROS)
+    assert result.returncode == 2
+    assert result.stderr.strip().splitlines() == [
+        f"Error: {controllers}: diffbot_base_controller.wheel_radius: must be positive, got 0.0"]

@@ -40,6 +40,11 @@ if TYPE_CHECKING:
 DIFF_DRIVE = "diff_drive_controller/DiffDriveController"
 JOINT_STATE_BROADCASTER = "joint_state_broadcaster/JointStateBroadcaster"
 _AXES = (("linear.x", "linear", "m_s"), ("angular.z", "angular", "rad_s"))
+_GEOMETRY = (("wheel_separation", "wheel_separation_m"), ("wheel_radius", "wheel_radius_m"),
+             ("wheel_separation_multiplier", "wheel_separation_multiplier"),
+             ("left_wheel_radius_multiplier", "left_wheel_radius_multiplier"),
+             ("right_wheel_radius_multiplier", "right_wheel_radius_multiplier"))
+"""diff_drive_controller's wheel geometry parameters, by scenario field name."""
 
 
 class ControllersFileError(ServicebotError):
@@ -150,10 +155,15 @@ def read_controllers_file(path: Path | tuple[Path, ...] | None,
     if "update_rate" in manager:
         values["update_rate_hz"] = _number(where, "update_rate", manager["update_rate"])
     for key, field in (("publish_rate", "publish_rate_hz"),
-                       ("cmd_vel_timeout", "cmd_vel_timeout_s"),
-                       ("wheel_separation_multiplier", "wheel_separation_multiplier")):
+                       ("cmd_vel_timeout", "cmd_vel_timeout_s")):
         if key in params:
             values[field] = _number(where, key, params[key])
+    for key, field in _GEOMETRY:  # the controller refuses a geometry that is not positive
+        if key in params:
+            values[field] = _number(where, key, params[key])
+            if values[field] <= 0:
+                raise ControllersFileError(f"{where}: {name}.{key}: must be positive, "
+                                           f"got {params[key]!r}")
     for prefix, axis, unit in _AXES:
         values.update(_limits(where, params, prefix, axis, unit))
     for key in ("pose_covariance_diagonal", "twist_covariance_diagonal"):

@@ -3,7 +3,7 @@
 It follows diff_drive_controller's update: a command older than ``cmd_vel_timeout_s`` is
 replaced by zero, the twist goes through the speed limiter (jerk, acceleration, velocity,
 from the last limited command; so a timed-out robot ramps to a stop), turned into wheel
-speeds with ``wheel_separation * multiplier``,
+speeds with the controller's ``wheel_separation * multiplier`` and wheel radius,
 and the wheel speeds are saturated at the URDF's velocity limit: both sides scaled together
 (curvature kept) or each wheel clipped alone (``per-wheel``, what Gazebo does).
 
@@ -26,6 +26,7 @@ import numpy.typing as npt
 from servicebot_cli.kinematics import diff_drive
 from servicebot_cli.kinematics.drive_geometry import DriveGeometry
 from servicebot_cli.simulate.controllers.classic_drive import ClassicDrive, WheelRamp
+from servicebot_cli.simulate.controllers.controller_wheels import ControllerWheels
 from servicebot_cli.simulate.controllers.limiter import (
     DIFF_DRIVE_CONTROLLER,
     AxisLimits,
@@ -129,8 +130,12 @@ def plan_wheels(segments: Sequence[CmdVel], controller: Controller, geometry: Dr
 
 def _saturated_wheels(linear: FloatArray, angular: FloatArray, controller: Controller,
                       geometry: DriveGeometry) -> tuple[FloatArray, FloatArray]:
-    """Wheel speeds per tick, computed once per run of equal commands."""
-    track = geometry.track_m * controller.wheel_separation_multiplier
+    """Wheel speeds per tick, computed once per run of equal commands.
+
+    The controller's own geometry makes them (:mod:`.controller_wheels`); the URDF's
+    velocity limit saturates them.
+    """
+    wheels = ControllerWheels.of(controller, geometry)
     saturate = (diff_drive.saturate_per_wheel if controller.saturation == "per-wheel"
                 else diff_drive.saturate_keep_curvature)
     starts = np.flatnonzero((np.diff(linear) != 0) | (np.diff(angular) != 0)) + 1
@@ -138,8 +143,6 @@ def _saturated_wheels(linear: FloatArray, angular: FloatArray, controller: Contr
     lengths = np.diff(np.concatenate((starts, [len(linear)])))
     left_runs, right_runs = np.empty(len(starts)), np.empty(len(starts))
     for i, k in enumerate(starts):
-        left, right = diff_drive.wheel_speeds(float(linear[k]), float(angular[k]),
-                                              wheel_radius_m=geometry.wheel_radius_m,
-                                              track_m=track)
+        left, right = wheels.wheel_speeds(float(linear[k]), float(angular[k]))
         left_runs[i], right_runs[i] = saturate(left, right, geometry.max_wheel_speed_rad_s)
     return np.repeat(left_runs, lengths), np.repeat(right_runs, lengths)

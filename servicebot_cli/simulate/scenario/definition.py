@@ -42,13 +42,20 @@ class Controller:
     """diff_drive_controller parameters (its names, with units); infinite: no limit.
 
     ``min_*`` limits are negative (a minimum acceleration of -0.05 brakes at 0.05 m/s^2);
-    the covariance diagonals go into every Odometry message.
+    the covariance diagonals go into every Odometry message. ``wheel_separation_m`` and
+    ``wheel_radius_m`` are the controller's (None: the URDF's); it turns commands into wheel
+    speeds and wheel turns into odometry with them, while the robot moves as its URDF wheels
+    carry it.
     """
 
     update_rate_hz: float = 100.0
     publish_rate_hz: float = 50.0
     cmd_vel_timeout_s: float = 0.5
+    wheel_separation_m: float | None = None
+    wheel_radius_m: float | None = None
     wheel_separation_multiplier: float = 1.0
+    left_wheel_radius_multiplier: float = 1.0
+    right_wheel_radius_multiplier: float = 1.0
     saturation: str = "keep-curvature"
     max_linear_velocity_m_s: float = math.inf
     min_linear_velocity_m_s: float = -math.inf

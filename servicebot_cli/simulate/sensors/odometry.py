@@ -1,7 +1,8 @@
 """Wheel odometry as diff_drive_controller computes it: dead reckoning from the encoders.
 
 Each control tick the controller reads how far the left and right wheels turned, turns that
-into a body twist with its own ``wheel_separation * multiplier`` and wheel radius, and
+into a body twist with its own ``wheel_separation * multiplier`` and wheel radii
+(:mod:`~servicebot_cli.simulate.controllers.controller_wheels`), and
 integrates the arc exactly. The floor's slip is unknown to it, so with slip configured (or a
 multiplier that does not match the floor) the odometry drifts from the ground truth.
 
@@ -16,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.kinematics import diff_drive
+from servicebot_cli.simulate.controllers.controller_wheels import ControllerWheels
 from servicebot_cli.simulate.world import motion
 
 FloatArray = npt.NDArray[np.float64]
@@ -45,8 +46,8 @@ class Odometry:
 class Odometer:
     """The controller's dead reckoning, a stretch of ticks at a time, from the wheel speeds."""
 
-    def __init__(self, dt_s: float, *, wheel_radius_m: float, track_m: float) -> None:
-        self.dt_s, self.wheel_radius_m, self.track_m = dt_s, wheel_radius_m, track_m
+    def __init__(self, dt_s: float, wheels: ControllerWheels) -> None:
+        self.dt_s, self.wheels = dt_s, wheels
         self.integrator = motion.Integrator((0.0, 0.0, 0.0))
         self.pose = (0.0, 0.0, 0.0)
         self.twist: tuple[float, float] | None = None  # of the last tick integrated
@@ -58,10 +59,7 @@ class Odometer:
         The path has a pose at each of the ticks' boundaries (one more than ticks); the twist
         before the run's first tick is None.
         """
-        # body_twist is plain arithmetic, so it takes whole arrays of wheel speeds.
-        twist = diff_drive.body_twist(left_rad_s, right_rad_s,  # type: ignore[arg-type]  # typed for floats
-                                      wheel_radius_m=self.wheel_radius_m, track_m=self.track_m)
-        linear, angular = np.asarray(twist[0], float), np.asarray(twist[1], float)
+        linear, angular = self.wheels.twist(left_rad_s, right_rad_s)
         x, y, yaw, sums = self.integrator.trial(linear, angular, self.dt_s)
         self.integrator.keep(sums, len(linear))
         x, y, yaw = (np.concatenate(([start], after)) for start, after in zip(
