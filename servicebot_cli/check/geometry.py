@@ -105,7 +105,7 @@ def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str
         tally.remote.append((shape.geometry.filename or "", element))
         return
     except MeshNotFound as exc:
-        if exc.resolved.path is None:
+        if exc.resolved.path is None or tally.guessed_wrong(exc.resolved, element):
             tally.add_missing(exc.resolved, element)
             return
         tally.add_found(exc.resolved, element)

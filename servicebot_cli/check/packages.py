@@ -135,6 +135,25 @@ class FileTally:
         count, message, first = self.missing.get(name, (0, resolved.error or "", element))
         self.missing[name] = (count + 1, message, first)
 
+    def guessed_wrong(self, resolved: Resolved, element: ET.Element) -> bool:
+        """Whether a missing mesh's package was only guessed, by a directory of its name.
+
+        Where ROS would not find the package and the directory some loaders take for it
+        does not hold the file, the package is as good as nowhere (SB408, a warning, as for
+        a package not found): a folder that happens to share the name (a dataset's
+        ``drake/``, a repository's ``ranger_mini/`` beside package ``ranger_mini_v2``) says
+        nothing about the file.
+        """
+        location = resolved.location
+        if location is None or location.ros_finds_it or location.three_slashes:
+            return False
+        name = resolved.package or ""
+        if name not in self.missing:
+            self.missing[name] = (0, f"package '{name}' not found as ROS finds packages (by "
+                                     f"package.xml); looked in {location.how}, which holds "
+                                     "no such file", element)
+        return True
+
     def add_found(self, resolved: Resolved, element: ET.Element) -> None:
         """Remember a package found only the way some loaders find it."""
         if resolved.location is not None and not resolved.location.ros_finds_it:

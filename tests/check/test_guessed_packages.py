@@ -1,0 +1,53 @@
+"""A package found only as a directory of its name: a missing mesh there is not an error.
+
+ROS finds packages by package.xml; where none names the package, only some loaders take a
+directory of that name above the file for it. A dataset's ``urdf_files/drake/`` folder or a
+repository's ``ranger_mini/`` beside package ``ranger_mini_v2`` (agilexrobotics'
+ugv_gazebo_sim) shares the name by chance: that it lacks the file says nothing about the
+URDF, which check_urdf accepts. A package ROS finds and that lacks the file is SB401.
+"""
+
+from __future__ import annotations
+
+from tests.check.helpers import findings, tetrahedron_stl
+
+ROBOT = ('<robot name="r"><link name="a"><visual><geometry><mesh filename="package://{pkg}/'
+         'meshes/{mesh}"/></geometry></visual></link></robot>')
+
+
+def _layout(tmp_path, package_xml: bool, mesh_present: bool):
+    root = tmp_path / "models" / "drake"
+    (root / "robot" / "urdf").mkdir(parents=True)
+    (root / "meshes").mkdir()
+    if package_xml:
+        (root / "package.xml").write_text("<package><name>drake</name></package>")
+    if mesh_present:
+        (root / "meshes" / "base.stl").write_bytes(tetrahedron_stl(0.1))
+    path = root / "robot" / "urdf" / "arm.urdf"
+    path.write_text(ROBOT.format(pkg="drake", mesh="base.stl"))
+    return path
+
+
+def _codes(run, path):
+    result = run("check", "urdf", path, "--format", "json", "--isolated")
+    return result.exit_code, {f["code"]: f for f in findings(result.stdout)}
+
+
+def test_a_directory_that_shares_the_name_and_lacks_the_mesh_is_a_missing_package(run,
+                                                                                  tmp_path):
+    code, found = _codes(run, _layout(tmp_path, package_xml=False, mesh_present=False))
+    assert code == 0 and "SB401" not in found
+    assert found["SB408"]["severity"] == "warning"
+    assert "package 'drake' not found as ROS finds packages" in found["SB408"]["message"]
+    assert "1 mesh not checked" in found["SB408"]["message"]
+
+
+def test_a_directory_that_shares_the_name_and_holds_the_mesh_is_loader_only(run, tmp_path):
+    code, found = _codes(run, _layout(tmp_path, package_xml=False, mesh_present=True))
+    assert code == 0 and set(found) & {"SB401", "SB408"} == set()
+    assert found["SB409"]["severity"] == "warning"
+
+
+def test_a_package_ros_finds_that_lacks_the_mesh_is_an_error(run, tmp_path):
+    code, found = _codes(run, _layout(tmp_path, package_xml=True, mesh_present=False))
+    assert code == 1 and found["SB401"]["severity"] == "error"
