@@ -27,8 +27,31 @@ NOT_URDF_SUFFIXES = (".srdf.xacro",)
 SKIPPED_DIRS = {"build", "install", "log", "node_modules", "__pycache__", "site-packages"}
 _ROBOT_TAG = re.compile(rb"<robot\b[^>]*>", re.DOTALL)
 _XACRO_ROOT = re.compile(rb"<[\w.:-]+\b[^>]*\bxmlns:xacro\s*=", re.DOTALL)
-MACRO_BLOCK = re.compile(rb"<xacro:macro\b.*?</xacro:macro>", re.DOTALL)
-"""A ``<xacro:macro>`` definition, to leave out what only runs where the macro is called."""
+_MACRO_TAG = re.compile(rb"<xacro:macro\b[^>]*?(/?)>|</xacro:macro\s*>")
+
+
+def without_macros(text: bytes) -> bytes:
+    """``text`` without its ``<xacro:macro>`` definitions: what runs where a macro is called.
+
+    Macros defined inside a macro (clearpath's robotiq_2f_140) end with their outer one.
+    """
+    kept, depth, start = [], 0, 0
+    for tag in _MACRO_TAG.finditer(text):
+        if tag[0].startswith(b"</"):
+            if depth:
+                depth -= 1
+                if not depth:
+                    start = tag.end()
+        elif not tag[1]:  # <xacro:macro ...> opens a body; <xacro:macro .../> has none
+            if not depth:
+                kept.append(text[start:tag.start()])
+            depth += 1
+        elif not depth:
+            kept.append(text[start:tag.start()])
+            start = tag.end()
+    if not depth:
+        kept.append(text[start:])
+    return b"".join(kept)
 _CONTENT = re.compile(rb"<(?:link|joint|xacro:(?!include\b|property\b|arg\b|macro\b)[\w.-]+)\b")
 _INCLUDE = re.compile(rb"<xacro:include\b[^>]*?\bfilename\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
 _FIND = re.compile(r"^\$\(find\s+([^)\s]+)\s*\)/*(.*)$")
@@ -80,7 +103,7 @@ def is_fragment(path: Path) -> bool:
         return xacro or b"<link" not in head or b"<xacro:" in head
     if not xacro:
         return False
-    outside = MACRO_BLOCK.sub(b"", head)
+    outside = without_macros(head)
     if _CONTENT.search(outside) is not None:
         return False
     return outside != head or _INCLUDE.search(head) is None

@@ -83,6 +83,6 @@ def _only_macro_calls(path: Path, parent: str) -> bool:
     text = files.head_without_comments(path)
     if text is None:
         return False
-    outside = files.MACRO_BLOCK.sub(b"", text)
+    outside = files.without_macros(text)
     return (_OWN_CONTENT.search(outside) is None and _MACRO_CALL.search(outside) is not None
             and parent.encode() not in text)

@@ -53,3 +53,28 @@ def test_find_of_another_package_or_a_computed_name_names_nothing_here(tmp_path)
     _write(package / "urdf/b.xacro", "b")
     _write(package / "urdf/c.urdf.xacro", "c", "$(arg parts)/b.xacro")
     assert _walked(package) == ["urdf/a.urdf.xacro", "urdf/b.xacro", "urdf/c.urdf.xacro"]
+
+
+NESTED = ('<robot name="gripper" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+          '<xacro:macro name="gripper" params="prefix">'
+          '<xacro:macro name="finger" params="side"><link name="${prefix}${side}"/>'
+          '</xacro:macro>'
+          '<link name="${prefix}palm"/><xacro:finger side="l"/>'
+          '<joint name="${prefix}j" type="fixed"><parent link="${prefix}palm"/>'
+          '<child link="${prefix}l"/></joint>'
+          '</xacro:macro>{after}</robot>')
+
+
+def test_a_macro_library_with_a_macro_inside_a_macro_is_no_robot(tmp_path):
+    """clearpath's robotiq_2f_140: the inner </xacro:macro> ended the outer definition."""
+    (tmp_path / "nested.urdf.xacro").write_text(NESTED.replace("{after}", ""))
+    (tmp_path / "robot.urdf.xacro").write_text(NESTED.replace("{after}", '<link name="base"/>'))
+    assert _walked(tmp_path) == ["robot.urdf.xacro"]
+
+
+def test_a_nested_macro_library_checked_by_name_is_an_include(run, tmp_path):
+    path = tmp_path / "nested.urdf.xacro"
+    path.write_text(NESTED.replace("{after}", ""))
+    result = run("check", "urdf", path, "--format", "json", "--isolated")
+    assert result.exit_code == 0, result.stdout
+    assert "SB018" in result.stdout and "SB109" not in result.stdout
