@@ -114,6 +114,7 @@ def expand(
             raise
         except Exception as exc:  # xacro raises bare Python errors from expressions, too
             raise tracer.error(exc, xacro.filestack) from None
+    _refuse_unwritable(doc, display, tracer)
     bare = bare_macro_calls(doc, tracer.macros, tracer.ref_of)
     origins = tracer.take_origins(doc)
     _add_banner(doc, Path(display).name, given)
@@ -135,6 +136,23 @@ def _recursion_limit(frames: int) -> Iterator[None]:
         yield
     finally:
         sys.setrecursionlimit(saved)
+
+
+def _refuse_unwritable(doc: xml.dom.minidom.Document, display: str, tracer: _Tracer) -> None:
+    """Refuse an attribute whose value is a number, not text, as xacro fails to write it.
+
+    ``<xacro:attribute name="size" value="${0.5}"/>`` sets the float 0.5, which xacro's
+    writer cannot escape (AttributeError): xacro itself stops there.
+    """
+    for node in doc.getElementsByTagName("*"):
+        for name, value in node.attributes.items():
+            if not isinstance(value, str):
+                ref = tracer.ref_of(node)
+                where = ref.location() if ref is not None else display
+                raise XacroError(
+                    f"{where}: xacro: attribute '{name}' of <{node.tagName}> is the "
+                    f"{type(value).__name__} {value!r}, not text, which xacro cannot write; "
+                    f"write it as text (value=\"{value}\")")
 
 
 def _unread_args(display: str, given: Mapping[str, str], tracer: _Tracer) -> tuple[str, ...]:

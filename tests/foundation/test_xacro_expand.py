@@ -253,3 +253,17 @@ def test_a_recursive_macro_as_deep_as_xacro_expands_it_is_no_endless_nest(tmp_pa
     expanded = run_servicebot("expand", path)
     assert expanded.returncode == 0, expanded.stderr
     assert expanded.stdout.count("<joint ") == 220
+
+
+@pytest.mark.parametrize("value", ["${0.5}", "${2}", "${1 == 1}"])
+def test_an_attribute_xacro_cannot_write_is_one_line_not_a_crash(run, tmp_path, value):
+    """xacro:attribute with a number (or a boolean): xacro's writer fails on it, so does xacro."""
+    path = tmp_path / "r.urdf.xacro"
+    path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                    '<link name="a"><visual><geometry>\n'
+                    f'<box><xacro:attribute name="size" value="{value}"/></box>\n'
+                    '</geometry></visual></link></robot>')
+    assert_one_line_error(run("expand", path), 2, f"{path}:3:1", "attribute 'size' of <box>",
+                          "not text")
+    result = run("check", "urdf", path, "--format", "json", "--isolated")
+    assert result.exit_code == 1 and '"SB006"' in result.stdout
