@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from servicebot_cli.inspect.geometry import (
+    FAR_M,
     FloatArray,
     MeshLibrary,
     PosedShape,
@@ -68,12 +69,17 @@ def pose_robot(robot: RobotDescription, values: Mapping[str, float],
     drawn = [shape for shape, reason in zip(visuals, why, strict=True) if not reason]
     standing = [shape for shape in posed_visuals(robot, link_transforms(robot))
                 if not unusable(shape)]
+    near = {name: t for name, t in frames.items()
+            if np.all(np.isfinite(t)) and np.abs(t[:3, 3]).max() <= FAR_M}
+    undrawn += tuple(f"frame '{name}' not drawn: {np.abs(t[:3, 3]).max():.3g} m from the root, "
+                     "beyond any robot" for name, t in frames.items()
+                     if name not in near and np.all(np.isfinite(t)))
     return PosedRobot(
         name=robot.name, display=robot.display, values=dict(values),
-        frames={name: t for name, t in frames.items() if np.all(np.isfinite(t))},
+        frames=near,
         visuals=tuple(drawn), standing=tuple(standing),
         meshes=mesh_library(robot, resolver), materials=robot.materials,
-        labels=_labels(robot, frames), undrawn=undrawn,
+        labels=_labels(robot, near), undrawn=undrawn,
     )
 
 

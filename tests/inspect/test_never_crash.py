@@ -87,3 +87,18 @@ def test_bad_values_give_a_report_and_no_library_warning(tmp_path, origin, geome
                             env={"PYTHONWARNINGS": "error"})
     assert result.returncode == 0, result.stderr
     assert "Warning" not in result.stderr and "Traceback" not in result.stderr
+
+
+@pytest.mark.parametrize("distance", ["1e7", "1e200", "1e300"])
+def test_a_bare_frame_beyond_any_robot_is_left_out_of_the_picture(tmp_path, distance):
+    """A tool frame 1e200 m away made matplotlib's 3-D projection singular: exit 3."""
+    path = tmp_path / "far.urdf"
+    path.write_text('<robot name="far"><link name="base_link"><visual><geometry>'
+                    '<box size="0.1 0.1 0.1"/></geometry></visual></link>'
+                    '<joint name="j" type="fixed"><parent link="base_link"/><child link="tool"/>'
+                    f'<origin xyz="{distance} 0 0"/></joint><link name="tool"/></robot>')
+    result = run_servicebot("inspect", path, "--render", "far.png", cwd=tmp_path,
+                            env={"PYTHONWARNINGS": "error"})
+    assert result.returncode == 0, result.stderr
+    assert f"frame 'tool' not drawn: {float(distance):.3g} m from the root" in result.stderr
+    assert (tmp_path / "far.png").read_bytes().startswith(b"\x89PNG")
