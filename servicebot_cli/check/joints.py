@@ -170,10 +170,16 @@ def _axis(joint: Joint) -> Iterator[Issue]:
     if not joint.movable or joint.type == "floating":
         return
     x, y, z = joint.axis
-    norm = math.sqrt(x * x + y * y + z * z)
-    if not math.isfinite(norm):
+    if not all(math.isfinite(c) for c in (x, y, z)):
         return  # SB013/SB014 report it
-    if norm == 0.0:
+    norm = math.hypot(x, y, z)  # no overflow: an axis of 1e160 has length 1e160
+    if x * x + y * y + z * z == math.inf:  # Eigen's normalize() squares it: a zero axis
+        yield Issue("SB208", f"joint '{joint.name}' axis has length {norm:.8g}, too long to "
+                    "normalise: Pinocchio squares it to infinity and turns the joint about a "
+                    "zero axis", joint.element, severity=Severity.ERROR,
+                    fix='write the unit axis: xyz="' + " ".join(
+                        f"{c / norm:.6g}" for c in (x, y, z)) + '"')
+    elif norm == 0.0:
         yield Issue("SB207", f"{joint.type} joint '{joint.name}' has axis 0 0 0", joint.element,
                     fix='write the axis, e.g. <axis xyz="0 0 1"/>')
     elif abs(norm - 1.0) > _AXIS_ROUNDING:

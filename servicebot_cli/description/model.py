@@ -121,11 +121,14 @@ def build_model(xml_text: str, display: str, base: str = "fixed",
     ]
     with captured_fd2() as noise:
         try:
-            if root_joint is None:
-                return pin.buildModelFromXML(xml_text)
-            return pin.buildModelFromXML(xml_text, root_joint())
+            model = pin.buildModelFromXML(xml_text) if root_joint is None else \
+                pin.buildModelFromXML(xml_text, root_joint())
         except (ValueError, RuntimeError) as exc:
             failure: Exception = exc
+        else:
+            if _HUGE_EXPONENT.search(xml_text):  # rare: only then are the axes looked at
+                _refuse_lost_axes(model, display, xml_text, xacro_args)
+            return model
     # an error may span lines: urdfdom quotes a vector with its line break
     reasons = [found.strip() for found in _URDFDOM_ERROR.findall("\n".join(noise))]
     if reasons:
@@ -139,6 +142,26 @@ def build_model(xml_text: str, display: str, base: str = "fixed",
 
 
 _LIMIT_BOUNDS = {"min_velocity": "velocity", "min_effort": "effort"}
+_HUGE_EXPONENT = re.compile(r"\d[eE]\+?(?:1[5-9]\d|[2-9]\d\d)")
+"""A number of 1e150 or more, whose square overflows: an axis that long normalises to zero."""
+
+
+def _refuse_lost_axes(model: pin.Model, display: str, xml_text: str,
+                      xacro_args: Sequence[tuple[str, str]]) -> None:
+    """Refuse a joint whose axis Pinocchio normalised to zero (an axis of 1e160).
+
+    Eigen's normalize() squares the axis: beyond about 1e154 the square is infinite and the
+    axis becomes 0 0 0, so the joint turns about nothing (its rotation a scaled identity).
+    """
+    import numpy as np
+
+    for joint, name in zip(model.joints, model.names, strict=True):
+        axis = getattr(joint.extract(), "axis", None)
+        if axis is not None and not np.any(axis):
+            raise DescriptionError(
+                f"{display}: joint '{name}' has an axis too long to normalise: Pinocchio "
+                "squares it to infinity and turns the joint about 0 0 0; write the unit axis "
+                f"{check_hint(display, xacro_args)}")
 
 
 def _bound_culprits(xml_text: str, reason: str) -> str:
