@@ -110,7 +110,8 @@ ROS_RULES = (
          "A controller claims an interface the URDF's <ros2_control> does not export",
          "The controller manager activates a controller once the hardware exports every "
          "interface it claims: diff_drive_controller each wheel's velocity command and its "
-         "position state (velocity with position_feedback false), "
+         "position state (velocity with position_feedback false; with open_loop true only "
+         "Humble's claims a state, a warning), "
          "joint_trajectory_controller its command_interfaces and state_interfaces, "
          "forward_command_controller its interface_name, the JointGroup controllers the "
          "interface of their type. A URDF without <ros2_control> joints is not judged: its "

@@ -21,7 +21,9 @@ _GROUPS = {
     "effort_controllers/JointGroupEffortController": "effort",
 }
 """Controllers that command one interface, named by their type, of each of their ``joints``."""
-_FALSE = ("false", "False", "FALSE", "no", "No", "NO", "off", "Off", "OFF")  # rcl's booleans
+# rcl_yaml_param_parser's booleans (parse.c): y and n are booleans there, as in YAML 1.1
+_TRUE = ("true", "True", "TRUE", "yes", "Yes", "YES", "on", "On", "ON", "y", "Y")
+_FALSE = ("false", "False", "FALSE", "no", "No", "NO", "off", "Off", "OFF", "n", "N")
 
 
 @dataclass(frozen=True)
@@ -34,6 +36,7 @@ class Claim:
         key: The parameter naming the joint (``joints``, ``left_wheel_names``...).
         joint: Where the joint is named.
         named_at: Where the interface is named; the joint's node when the type implies it.
+        humble_only: Only Humble's controller claims it (later ones do not, as configured).
     """
 
     kind: str
@@ -41,6 +44,7 @@ class Claim:
     key: str
     joint: yaml.ScalarNode
     named_at: yaml.Node
+    humble_only: bool = False
 
 
 def claims(controller_type: str, params: yaml.MappingNode) -> Iterator[Claim]:
@@ -68,15 +72,19 @@ def _diff_drive(params: yaml.MappingNode) -> Iterator[Claim]:
     """Each wheel's velocity command, and its position (or velocity) state.
 
     ``position_feedback`` (true by default) reads the wheels' positions for odometry; false,
-    their velocities.
+    their velocities. With ``open_loop: true`` the odometry integrates the commands, and
+    since ros2_controllers' Jazzy releases the controller claims no state interface then;
+    Humble's still claims it.
     """
     feedback = get(params, "position_feedback")
     state = "velocity" if isinstance(feedback, yaml.ScalarNode) and \
         feedback.value in _FALSE else "position"
+    open_loop = get(params, "open_loop")
+    humble_only = isinstance(open_loop, yaml.ScalarNode) and open_loop.value in _TRUE
     for key in ("left_wheel_names", "right_wheel_names"):
         for wheel in _scalars(get(params, key)):
             yield Claim("command", "velocity", key, wheel, wheel)
-            yield Claim("state", state, key, wheel, wheel)
+            yield Claim("state", state, key, wheel, wheel, humble_only)
 
 
 def _trajectory(params: yaml.MappingNode) -> Iterator[Claim]:

@@ -210,6 +210,16 @@ class _Checker:
             names = list(dict.fromkeys(str(c.joint.value) for c in found))
             which = (f"joint '{names[0]}'" if len(names) == 1
                      else "joints " + ", ".join(f"'{n}'" for n in names))
+            if all(c.humble_only for c in found):  # open_loop: only Humble claims it
+                yield Issue("SB607", f"{section} has open_loop: true, and Humble's "
+                            f"diff_drive_controller still claims the {kind} interface "
+                            f"'{interface}' of {which}, which {self.robot.display} does not "
+                            f"export ({_exports(exported, names, kind)}): on Humble the "
+                            "controller manager cannot activate it (from Jazzy on, an open "
+                            "loop claims no state interface)", severity=Severity.WARNING,
+                            where=self.where(found[0].named_at),
+                            fix=_interface_fix(kind, interface) + ", for Humble")
+                continue
             yield Issue("SB607", f"{section} claims the {kind} interface '{interface}' of "
                         f"{which}, which {self.robot.display} does not export "
                         f"({_exports(exported, names, kind)}): the controller manager cannot "

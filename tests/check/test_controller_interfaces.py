@@ -162,3 +162,20 @@ def test_a_null_interface_name_claims_nothing(run, tmp_path):
     text = declared + ("\nfwd:\n  ros__parameters:\n    joints: [arm_base_to_link1]\n"
                        "    interface_name: [position, ~]\n")
     assert _check(run, tmp_path, text) == (0, [])
+
+
+def test_an_open_loop_diff_drive_claims_wheel_states_on_humble_only(run, tmp_path):
+    """ros2_controllers#1731: from Jazzy on, open_loop: true claims no state interface."""
+    without = SIM_URDF.read_text()
+    for interface in ("position", "velocity"):
+        without = without.replace(f'      <state_interface name="{interface}"/>\n', "")
+    # the arm's trajectory controller would claim the arm's states: only the wheels' part
+    wheels_only = BUNDLED[:BUNDLED.index("arm_controller:\n  ros__parameters")]
+    code, found = _check(run, tmp_path, wheels_only.replace("open_loop: false",
+                                                            "open_loop: true"), without)
+    assert code == 0 and len(found) == 4
+    assert all(f["code"] == "SB607" and f["severity"] == "warning"
+               and "Humble's diff_drive_controller still claims" in str(f["message"])
+               for f in found)
+    code, found = _check(run, tmp_path, wheels_only, without)  # closed loop: every release
+    assert code == 1 and {f["severity"] for f in found} == {"error"}
