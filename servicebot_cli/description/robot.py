@@ -304,10 +304,11 @@ class RobotDescription:
             if joint.type in ("revolute", "prismatic") and limits is not None \
                     and limits.lower is not None and limits.upper is not None \
                     and limits.lower > limits.upper:
-                raise DescriptionError(
+                raise DescriptionError(  # check's SB203 is a warning (pybullet: no limit)
                     f"{self.display}: joint '{joint.name}' has lower limit {limits.lower:g} "
-                    f"above its upper limit {limits.upper:g}: no position lies between them; "
-                    f"write them in order {check_hint(self.display, self.xacro_args)}")
+                    f"above its upper limit {limits.upper:g}: no position lies between them "
+                    "(pybullet reads it as no limit, and check only warns: SB203); write them "
+                    "in order, or make the joint continuous if it turns without limit")
         names = {joint.name for joint in self.joints}
         for joint in self.joints:
             if joint.mimic is None or (joint.mimic.joint in names

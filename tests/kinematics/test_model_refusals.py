@@ -94,3 +94,18 @@ def test_inspect_shows_such_a_file_as_it_is(tmp_path):
     result = run_servicebot("inspect", path, "--section", "joints")
     assert result.returncode == 0, result.stderr
     assert "j2" in result.stdout
+
+
+@pytest.mark.parametrize("command", COMMANDS, ids=[c[0] for c in COMMANDS])
+def test_limits_in_the_wrong_order_are_one_line_that_says_check_only_warns(tmp_path, command):
+    """check passes such a file (SB203, a warning: pybullet reads it as no limit); the
+    refusal pointed at check 'for details', which then said 'passed'."""
+    path = tmp_path / "r.urdf"
+    path.write_text(ROBOT.format(leader="j1").replace('lower="-1" upper="1"',
+                                                      'lower="2.775" upper="-2.775"', 1))
+    extra = ("--out", str(tmp_path / "run")) if command[0] == "simulate" else ()
+    result = run_servicebot(command[0], path, *command[1:], *extra)
+    line = assert_one_line_error(result, 2, "joint 'j1' has lower limit 2.775 above its upper "
+                                 "limit -2.775", "check only warns: SB203", "continuous")
+    assert "for details" not in line
+    assert run_servicebot("check", "urdf", path, "--isolated").returncode == 0
