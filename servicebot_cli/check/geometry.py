@@ -116,8 +116,10 @@ def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str
                         "fix the path: the package or directory holds no such file")
         return
     except MeshError as exc:
+        lfs = "git lfs pull" in str(exc)
         yield Issue("SB402", f"{where}: mesh '{shape.geometry.filename}' cannot be loaded: {exc}",
-                    element)
+                    element, fix="run 'git lfs pull' in the repository that holds it" if lfs
+                    else None)
         return
     tally.add_found(env.resolve(robot, shape), element)
     if info is None:  # only where it leads was asked for

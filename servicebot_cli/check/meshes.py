@@ -70,6 +70,8 @@ def load_mesh(path: Path, with_mass: bool = False) -> MeshInfo:
     """
     try:
         data = mesh_readers.read_file(path)
+    except mesh_readers.LfsPointer as exc:
+        raise MeshError(str(exc)) from None
     except mesh_readers.MeshFormatError as exc:  # too large
         raise MeshError(f"{exc}; is it the right file?") from None
     except OSError as exc:
@@ -109,6 +111,13 @@ def _with_trimesh(path: Path) -> np.ndarray:
         import trimesh
     except ImportError:  # pragma: no cover - trimesh is a dependency
         raise MeshError(f"no reader for '{path.suffix}' files (install trimesh)") from None
+    try:
+        with path.open("rb") as handle:
+            mesh_readers.refuse_lfs_pointer(handle.read(64))
+    except mesh_readers.LfsPointer as exc:
+        raise MeshError(str(exc)) from None
+    except OSError:
+        pass  # trimesh says why below
     try:
         with captured():  # texture chatter: check reports geometry, with its own findings
             loaded = trimesh.load(path, force="mesh", process=False)

@@ -26,8 +26,9 @@ from servicebot_cli.description.mesh_collada import read_dae, read_dae_bounds
 from servicebot_cli.description.mesh_obj import read_obj_indexed
 from servicebot_cli.description.safe_xml import declaration_first
 
-__all__ = ["MOST_BYTES", "SUFFIXES", "MeshFormatError", "bounds", "read_dae_bounds", "read_file",
-           "read_indexed", "read_stl", "read_triangles", "too_large"]
+__all__ = ["MOST_BYTES", "SUFFIXES", "LfsPointer", "MeshFormatError", "bounds", "read_dae_bounds",
+           "read_file", "read_indexed", "read_stl", "read_triangles", "refuse_lfs_pointer",
+           "too_large"]
 
 MOST_BYTES = 1_000_000_000
 """The largest mesh file read (a scanned building is a few hundred MB); a 3 GB sparse file
@@ -44,6 +45,25 @@ def too_large(size: int) -> str | None:
     return f"the file is {size / 1e9:.1f} GB, over the {MOST_BYTES / 1e9:.0f} GB a mesh is read to"
 
 
+_LFS_POINTER = b"version https://git-lfs.github.com/spec/"
+
+
+class LfsPointer(MeshFormatError):
+    """A Git LFS pointer file where the mesh should be: the repository's LFS files not pulled."""
+
+
+def refuse_lfs_pointer(head: bytes) -> None:
+    """Raise :class:`LfsPointer` when a file begins as a Git LFS pointer does.
+
+    A clone without git-lfs (or a download of the repository's archive) has a few lines of
+    text naming the mesh's hash where the mesh should be: NVIDIA's urdf-importer-extension
+    holds 168 of them.
+    """
+    if head.startswith(_LFS_POINTER):
+        raise LfsPointer("a Git LFS pointer, not the mesh: the repository's large files were "
+                         "not fetched; run 'git lfs pull' in it")
+
+
 def read_file(path: Path) -> bytes:
     """The bytes of the mesh at ``path``; a COLLADA file's with its XML declaration first.
 
@@ -55,6 +75,7 @@ def read_file(path: Path) -> bytes:
     if why is not None:
         raise MeshFormatError(why)
     data = path.read_bytes()
+    refuse_lfs_pointer(data)
     return declaration_first(data) if path.suffix.lower() == ".dae" else data
 
 
