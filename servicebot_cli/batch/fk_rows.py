@@ -27,7 +27,7 @@ from servicebot_cli.batch.stream import RowKind
 from servicebot_cli.common.errors import JointNotFound
 from servicebot_cli.description.model import new_data
 from servicebot_cli.kinematics.forward import configurations, frame_transforms, pose_table
-from servicebot_cli.kinematics.frames import frame_id, link_names
+from servicebot_cli.kinematics.frames import frame_ids, link_names
 from servicebot_cli.kinematics.json_types import JsonObject, JsonValue
 from servicebot_cli.kinematics.mimics import Mimics
 from servicebot_cli.kinematics.user_joints import (
@@ -71,8 +71,7 @@ class FkBatch:
         self.space = robot.joint_space
         self.mimics = Mimics.of(robot.joints, self.space)
         self.frames = list(frames)
-        self.ids = [frame_id(self.model, f, known) for f in frames]
-        self.reference = frame_id(self.model, relative_to, known)
+        *self.ids, self.reference = frame_ids(self.model, [*frames, relative_to], known)
         self.deg, self.clamp = deg, clamp
         self.in_world = in_world
         self.unit = "deg" if deg else "rad"

@@ -16,7 +16,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.kinematics import rotations
-from servicebot_cli.kinematics.frames import frame_id
+from servicebot_cli.kinematics.frames import frame_ids
 
 if TYPE_CHECKING:
     import pinocchio as pin
@@ -150,8 +150,8 @@ def frame_poses(model: pin.Model, data: pin.Data, q: FloatArray, frames: Sequenc
 
     if known is None:
         known = [f.name for f in model.frames if f.type == pin.FrameType.BODY]
-    ids = [frame_id(model, name, known) for name in frames]
-    matrices = transforms(model, data, q, ids, frame_id(model, relative_to, known))
+    *ids, reference = frame_ids(model, [*frames, relative_to], known)
+    matrices = transforms(model, data, q, ids, reference)
     return [FramePose(name, relative_to, m) for name, m in zip(frames, matrices, strict=True)]
 
 

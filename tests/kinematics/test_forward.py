@@ -83,3 +83,19 @@ def test_pose_table_matches_the_pose_properties():
 def test_default_tool_frame(name, tool):
     choice = default_tool_frame(load(RobotSource.of(ARMS[name][0])))
     assert choice.name == tool and choice.obvious
+
+
+@pytest.mark.parametrize("name", list(ARMS))
+def test_frame_ids_in_one_pass_are_pinocchios_own(name):
+    """``frame_ids`` (one pass over the frames) against Pinocchio's look-up, name by name."""
+    from servicebot_cli.common.errors import FrameNotFound
+    from servicebot_cli.kinematics.frames import frame_id, frame_ids
+
+    robot = load(RobotSource.of(ARMS[name][0]))
+    links = list(link_names(robot))
+    assert frame_ids(robot.model, links[::-1], links) == [
+        robot.model.getFrameId(link) for link in links[::-1]]
+    assert frame_ids(robot.model, links, links) == [frame_id(robot.model, n, links)
+                                                    for n in links]
+    with pytest.raises(FrameNotFound):
+        frame_ids(robot.model, [links[0], links[0] + "_typo"], links)
