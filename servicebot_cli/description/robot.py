@@ -120,6 +120,12 @@ class RobotDescription:
         """Joints that are not fixed, in URDF order."""
         return tuple(j for j in self.joints if j.movable)
 
+    @property
+    def unvalued_joints(self) -> dict[str, str]:
+        """Joints no single value sets (fixed, floating, planar), by name: their types."""
+        return {j.name: j.type for j in self.joints
+                if not j.movable or j.type in ("floating", "planar")}
+
     @cached_property
     def materials(self) -> dict[str, tuple[float, float, float, float] | None]:
         """Top-level materials: name to RGBA."""

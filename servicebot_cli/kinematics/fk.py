@@ -136,7 +136,7 @@ def run(request: FkRequest) -> FkResult:
     values, clamped = clamped_user_vector(space, request.joints, deg=query.deg,
                                           clamp=query.clamp,
                                           mimics=Mimics.of(robot.joints, space),
-                                          fixed=[j.name for j in robot.joints if not j.movable])
+                                          fixed=robot.unvalued_joints)
     outside = unnamed_outside(space, values)
     if outside:
         notes += (f"note: {', '.join(outside)} not given: 0, outside the limits "

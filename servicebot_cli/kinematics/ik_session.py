@@ -76,7 +76,7 @@ class IkSession:
         chain = Chain(model, space, frame, link_names(robot), Mimics.of(robot.joints, space))
         values, clamped = clamped_user_vector(
             space, problem.start, deg=problem.deg, clamp=problem.clamp,
-            fixed=[j.name for j in robot.joints if not j.movable])
+            fixed=robot.unvalued_joints)
         # a start is a starting point: joints it does not name start inside their limits
         self.robot: RobotDescription = robot
         self.space = space

@@ -23,6 +23,7 @@ if TYPE_CHECKING:
     from servicebot_cli.description.joint_space import JointSpace
 
 FloatArray = npt.NDArray[np.float64]
+_DIMENSIONS = {"floating": "six", "planar": "three"}
 
 
 class BadNumber(ServicebotError):
@@ -89,10 +90,12 @@ def user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *, deg: b
 
 def clamped_user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *,
                         deg: bool = False, clamp: bool = False, mimics: Mimics | None = None,
-                        fixed: Collection[str] = ()) -> tuple[FloatArray, tuple[Clamped, ...]]:
+                        fixed: Collection[str] | Mapping[str, str] = ()
+                        ) -> tuple[FloatArray, tuple[Clamped, ...]]:
     """As :func:`user_vector`, with what ``clamp`` moved onto a limit, joint by joint.
 
-    ``fixed`` names the robot's fixed joints: giving one a value is refused as such.
+    ``fixed`` names the robot's joints that take no single value (fixed, floating, planar;
+    with their types, when a mapping): giving one a value is refused as such.
 
     Raises:
         JointNotFound: An unknown name, nearest names first; a fixed joint, as fixed.
@@ -105,8 +108,11 @@ def clamped_user_vector(space: JointSpace, pairs: Iterable[tuple[str, float]], *
             raise BadNumber(f"joint '{name}' is given twice; give each joint once")
         if name in fixed and name not in space.names:
             near = difflib.get_close_matches(name, space.names, n=3, cutoff=0.0)
-            raise JointNotFound(f"joint '{name}' is fixed: it has no value to give; name a "
-                                f"movable joint ({', '.join(near)}, ...)")
+            kind = fixed[name] if isinstance(fixed, Mapping) else "fixed"
+            what = "it has no value to give" if kind == "fixed" else \
+                f"it moves in {_DIMENSIONS.get(kind, 'several')} dimensions, not by one value"
+            raise JointNotFound(f"joint '{name}' is {kind}: {what}; name a joint of one degree "
+                                f"of freedom ({', '.join(near)}, ...)")
         assignments[name] = value
     values = np.zeros(len(space.names))
     named = np.zeros(len(space.names), dtype=bool)
