@@ -94,7 +94,7 @@ class NameNotFound(ServicebotError):
     @classmethod
     def for_name(cls, name: str, candidates: Iterable[str], *, robot: str = "") -> NameNotFound:
         """Make the error for ``name`` with up to three close matches from ``candidates``."""
-        names = tuple(candidates)
+        names = tuple(dict.fromkeys(candidates))  # a name defined twice is suggested once
         owner = f" in {robot}" if robot else ""
         hint = _hint(name, names) if names else f"the robot has no {cls.kind}s"
         return cls(f"no {cls.kind} '{name}'{owner}; {hint}")

@@ -61,3 +61,14 @@ def test_limits_in_degrees_suggest_continuous_only_for_a_wide_symmetric_range(ru
     (found,) = findings(result.stdout)
     assert found["fix"].startswith('lower="')
     assert ("continuous" in found["fix"]) is continuous
+
+
+def test_a_name_defined_twice_is_suggested_once(run, tmp_path):
+    """ros2/urdf's fail_pr2_desc_double.urdf: 'did you mean 'wheel_link' or 'wheel_link''."""
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r"><link name="base_link"/><link name="wheel_link"/>'
+                    '<link name="wheel_link"/><joint name="j" type="fixed">'
+                    '<parent link="base_link"/><child link="wheel_lnk"/></joint></robot>')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB103")
+    (found,) = findings(result.stdout)
+    assert found["message"].endswith("did you mean 'wheel_link' or 'base_link'?")
