@@ -94,6 +94,8 @@ BREAKS: dict[str, str] = {
              "controller runs); in <ros2_control>, ros2_control's component parser refuses the "
              "component (the controller manager, gazebo_ros2_control and gz_ros2_control do not "
              "start)",
+    "SB514": "ros2_control's component parser throws 'invalid tag name': the controller "
+             "manager and Gazebo's ros2_control plugins do not start",
     "SB513": "sdformat's conversion of the URDF throws (std::invalid_argument): Gazebo "
              "spawns nothing of the robot",
     "SB601": "the controller manager refuses parameters that are not valid YAML",

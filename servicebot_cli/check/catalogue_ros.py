@@ -36,7 +36,9 @@ ROS_RULES = (
          "look for those names. A close misspelling is almost certainly a typo.",
          "Use the suggested name."),
     Rule("SB506", "control-fixed-joint", E, "A command interface on a fixed joint",
-         "A fixed joint cannot be commanded.", "Remove the command interface."),
+         "A fixed joint cannot be commanded. A fixed joint with state interfaces only is a "
+         "warning: from Jazzy on, ros2_control refuses any fixed joint in <ros2_control>; "
+         "Humble exports its states.", "Remove the command interface."),
     Rule("SB507", "control-joint-twice", E, "A joint interface in two ros2_control components",
          "Two hardware components export the same command or state interface of a joint "
          "(joint/position twice); the resource manager refuses the duplicate. One joint in an "
@@ -83,6 +85,18 @@ ROS_RULES = (
          "start as one: an unexpanded ${mu}, a word, nothing.",
          "Write a plain number (expand the xacro property)."),
     # -- controller configuration ----------------------------------------------------------------
+    Rule("SB514", "control-unknown-element", E, "An element <ros2_control> does not read",
+         "ros2_control's component parser reads <hardware>, <joint>, <sensor>, <gpio>, "
+         "<transmission> (and <properties>) in <ros2_control>, and throws 'invalid tag name' "
+         "for anything else: the controller manager and Gazebo's ros2_control plugins do not "
+         "start.", "Remove it, fix its name, or move a parameter into <hardware>."),
+    Rule("SB515", "control-mimic-joint", W, "A mimic joint ros2_control refuses (Jazzy on)",
+         "From Jazzy on, ros2_control takes a joint with a URDF <mimic> as following its "
+         "leader unless mimic=\"false\": it may have no command interface and its leader must "
+         "be a joint of the same <ros2_control>; mimic=\"true\" on a joint without a URDF "
+         "<mimic> is refused too. Humble ignores both, so a warning.",
+         "Drop the mimic joint's command interfaces, or put its leader in the same "
+         "component."),
     Rule("SB601", "controllers-yaml", E, "The controllers YAML cannot be read",
          "Not YAML, or not the shape of a ros2_control parameters file "
          "(controller: ros__parameters: ...).",

@@ -1,4 +1,7 @@
-"""ros2_control rules (SB504-SB510, SB512); transmissions (SB511) are in :mod:`transmissions`."""
+"""ros2_control rules: SB504-SB510, SB512, SB514 and SB515.
+
+Transmissions (SB511) are in :mod:`transmissions`.
+"""
 
 from __future__ import annotations
 
@@ -52,10 +55,61 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     for block in robot.ros2_control:
         if not block.plugin:
             yield _no_plugin(block, simulator)
+        yield from _unknown_elements(block)
         yield from _hardware(block)
         for item in block.joints:
             yield from _joint(item, joints, block)
             yield from _twice(item, block, owner)
+        yield from _mimics(block, joints)
+
+
+_CHILDREN = ("hardware", "joint", "sensor", "gpio", "transmission", "properties")
+"""What ros2_control's component parser reads in <ros2_control> (component_parser.cpp)."""
+
+
+def _unknown_elements(block: Ros2Control) -> Iterator[Issue]:
+    """SB514: ros2_control's parser throws 'invalid tag name' for any other child element."""
+    for child in block.element if block.element is not None else ():
+        if isinstance(child.tag, str) and child.tag not in _CHILDREN:
+            close = difflib.get_close_matches(child.tag, _CHILDREN, n=1, cutoff=0.6)
+            yield Issue("SB514", f"<{child.tag}> in <ros2_control name=\"{block.name}\">: "
+                        "ros2_control's parser reads only "
+                        f"{', '.join(f'<{c}>' for c in _CHILDREN)} there, and refuses the "
+                        "robot ('invalid tag name')", child,
+                        fix=f"write <{close[0]}>" if close else
+                        "remove it, or move it into <hardware> as a <param>")
+
+
+def _mimics(block: Ros2Control, joints: dict[str, Joint]) -> Iterator[Issue]:
+    """SB515: mimic joints in <ros2_control>, as ros2_control reads them from Jazzy on.
+
+    A joint with a URDF <mimic> follows its leader unless ``mimic="false"``: it may have no
+    command interface, and its leader must be a joint of the same component; ``mimic="true"``
+    on a joint without a URDF <mimic> is refused too (component_parser.cpp). Humble ignores
+    both.
+    """
+    names = {item.name for item in block.joints if item.element is not None
+             and item.element.tag == "joint"}
+    for item in block.joints:
+        element = item.element
+        if element is None or element.tag != "joint" or item.name not in joints:
+            continue
+        urdf_mimic = joints[item.name].mimic
+        said = (element.get("mimic") or "").strip().lower()
+        problem = None
+        if urdf_mimic is None and said == "true":
+            problem = "has mimic=\"true\", but no <mimic> in the URDF"
+        elif urdf_mimic is not None and said != "false":
+            leader = urdf_mimic.joint or ""
+            if item.command_interfaces:
+                problem = (f"mimics '{leader}' in the URDF and has a command interface; a "
+                           "mimic joint only follows (or write mimic=\"false\")")
+            elif leader not in names:
+                problem = (f"mimics '{leader}', which is not a joint of this <ros2_control>; "
+                           "its leader must be in the same component")
+        if problem is not None:
+            yield Issue("SB515", f"ros2_control '{block.name}': joint '{item.name}' {problem}: "
+                        "from Jazzy on, ros2_control refuses the robot", element)
 
 
 def _simulator(robot: RobotDescription) -> str | None:
@@ -143,6 +197,13 @@ def _joint(item: ControlJoint, joints: dict[str, Joint], block: Ros2Control) -> 
     if joint.type == "fixed" and item.command_interfaces:
         yield Issue("SB506", f"fixed joint '{item.name}' has command interface(s) "
                     f"{', '.join(i.name for i in item.command_interfaces)}", item.element)
+    elif joint.type == "fixed" and item.element is not None and item.element.tag == "joint":
+        yield Issue("SB506", f"fixed joint '{item.name}' is in ros2_control "
+                    f"'{block.name}': from Jazzy on, ros2_control refuses the robot ('Fixed "
+                    "joints do not make sense in ros2_control'); Humble exports its states",
+                    item.element, severity=Severity.WARNING,
+                    fix="remove the joint from <ros2_control>, or report its values as a "
+                        "<sensor>")
     for interface in (*item.command_interfaces, *item.state_interfaces):
         if exported_as(interface.name, block.plugin) != interface.name:
             continue  # position_pid for Gazebo: a name of its own, not a misspelling
