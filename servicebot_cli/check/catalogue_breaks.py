@@ -104,6 +104,8 @@ BREAKS: dict[str, str] = {
     "SB604": "diff_drive_controller accepts it and turns at the wrong rate",
     "SB605": "diff_drive_controller turns the robot the wrong way",
     "SB606": "the controller fails to claim an interface of a joint that cannot move",
+    "SB608": "rcl refuses the file (a list of mixed types), or the controller refuses the "
+             "value at configure ('Wrong parameter type'): the controller does not start",
     "SB607": "the controller manager refuses to activate the controller (the interface is "
              "not available), and the joints it should move stay still",
     "SB701": "Pinocchio refuses the description",

@@ -22,8 +22,8 @@ _GROUPS = {
 }
 """Controllers that command one interface, named by their type, of each of their ``joints``."""
 # rcl_yaml_param_parser's booleans (parse.c): y and n are booleans there, as in YAML 1.1
-_TRUE = ("true", "True", "TRUE", "yes", "Yes", "YES", "on", "On", "ON", "y", "Y")
-_FALSE = ("false", "False", "FALSE", "no", "No", "NO", "off", "Off", "OFF", "n", "N")
+RCL_TRUE = ("true", "True", "TRUE", "yes", "Yes", "YES", "on", "On", "ON", "y", "Y")
+RCL_FALSE = ("false", "False", "FALSE", "no", "No", "NO", "off", "Off", "OFF", "n", "N")
 
 
 @dataclass(frozen=True)
@@ -78,9 +78,9 @@ def _diff_drive(params: yaml.MappingNode) -> Iterator[Claim]:
     """
     feedback = get(params, "position_feedback")
     state = "velocity" if isinstance(feedback, yaml.ScalarNode) and \
-        feedback.value in _FALSE else "position"
+        feedback.value in RCL_FALSE else "position"
     open_loop = get(params, "open_loop")
-    humble_only = isinstance(open_loop, yaml.ScalarNode) and open_loop.value in _TRUE
+    humble_only = isinstance(open_loop, yaml.ScalarNode) and open_loop.value in RCL_TRUE
     for key in ("left_wheel_names", "right_wheel_names"):
         for wheel in _scalars(get(params, key)):
             yield Claim("command", "velocity", key, wheel, wheel)

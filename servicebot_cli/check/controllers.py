@@ -1,4 +1,4 @@
-"""Controller configuration rules: a ros2_control controllers YAML against a URDF (SB601-SB607).
+"""Controller configuration rules: a ros2_control controllers YAML against a URDF (SB601-SB608).
 
 Pure: YAML text and a RobotDescription in, issues out, each placed at its YAML line.
 """
@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
+from servicebot_cli.check.controller_params import declared_types, mixed_lists
 from servicebot_cli.check.controller_sections import JOINT_KEYS, Sections, controller_types, get
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.ros2_control import GAZEBO_PID, exported_as
@@ -46,6 +47,9 @@ def check(found: Sections, display: str, robot: RobotDescription) -> Iterator[Is
     checker = _Checker(display, robot, frozenset(found))
     types = controller_types(found)
     for name, params in found.items():
+        for section in params:
+            yield from mixed_lists(section, name, display)
+            yield from declared_types(types.get(name), section, name, display)
         if name != "controller_manager" and _names_joints(types.get(name)):
             for section in checker.for_this_robot(params):
                 yield from checker.section(name, section)

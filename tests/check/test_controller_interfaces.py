@@ -161,7 +161,10 @@ def test_a_null_interface_name_claims_nothing(run, tmp_path):
         "    joint_state_broadcaster:\n")
     text = declared + ("\nfwd:\n  ros__parameters:\n    joints: [arm_base_to_link1]\n"
                        "    interface_name: [position, ~]\n")
-    assert _check(run, tmp_path, text) == (0, [])
+    code, found = _check(run, tmp_path, text)
+    assert not [f for f in found if f["code"] == "SB607"]
+    # a list where the controller declares one string: refused at configure, as SB608 says
+    assert [f["code"] for f in found] == ["SB608"] and "declares a string" in found[0]["message"]
 
 
 def test_an_open_loop_diff_drive_claims_wheel_states_on_humble_only(run, tmp_path):

@@ -1,0 +1,178 @@
+"""SB608: controller parameters of a type rcl reads and the controller then refuses.
+
+rcl_yaml_param_parser types each plain scalar by its text: a boolean word (``true``, ``on``,
+``y``...), an integer, a floating-point number, else a string; a quoted scalar is a string
+whatever it holds, and a list takes the one type of its items. A list whose items differ in
+type (``[0.001, 0]``, or joints ``[x, y, z]`` where ``y`` is a boolean) makes rcl refuse the
+whole file ("Sequence should be of same type"). A ros2_controllers controller declares each
+of its parameters with one type (generate_parameter_library) and, at configure, refuses a
+value of another ("Wrong parameter type ... setting it to {string} is not allowed"): a
+wheel_separation of ``"0.10"`` or ``1``, a wheel list written as one name. Pure: YAML nodes
+in, issues out.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+
+import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
+
+from servicebot_cli.check.controller_interfaces import RCL_FALSE, RCL_TRUE
+from servicebot_cli.check.findings import Issue
+
+_INTEGER = re.compile(r"[+-]?(?:0[xX][0-9a-fA-F]+|[0-9]+)")  # strtol, base 0
+_DOUBLE = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*(?:[eE][+-]?[0-9]+)?|\.[0-9]+(?:[eE][+-]?[0-9]+)?"
+                     r"|0[xX][0-9a-fA-F.]+(?:[pP][+-]?[0-9]+)?"
+                     r"|(?i:inf|infinity|nan|\.inf|\.nan))")  # strtod, and rcl's .inf, .nan
+_LIMITS = tuple(f"{axis}.{limit}" for axis in ("linear.x", "angular.z") for limit in (
+    "max_velocity", "min_velocity", "max_acceleration", "min_acceleration", "max_deceleration",
+    "min_deceleration", "max_acceleration_reverse", "max_deceleration_reverse", "max_jerk",
+    "min_jerk"))
+_LIMIT_FLAGS = tuple(f"{axis}.has_{kind}_limits" for axis in ("linear.x", "angular.z")
+                     for kind in ("velocity", "acceleration", "jerk"))
+_DIFF_DRIVE = {
+    "left_wheel_names": "string_array", "right_wheel_names": "string_array",
+    "wheel_separation": "double", "wheel_radius": "double", "wheels_per_side": "integer",
+    "wheel_separation_multiplier": "double", "left_wheel_radius_multiplier": "double",
+    "right_wheel_radius_multiplier": "double", "odom_frame_id": "string",
+    "base_frame_id": "string", "pose_covariance_diagonal": "double_array",
+    "twist_covariance_diagonal": "double_array", "open_loop": "bool",
+    "position_feedback": "bool", "enable_odom_tf": "bool", "cmd_vel_timeout": "double",
+    "publish_limited_velocity": "bool", "velocity_rolling_window_size": "integer",
+    "publish_rate": "double", "use_stamped_vel": "bool", "tf_frame_prefix_enable": "bool",
+    "tf_frame_prefix": "string",
+    **dict.fromkeys(_LIMITS, "double"), **dict.fromkeys(_LIMIT_FLAGS, "bool"),
+}
+_JOINT_GROUP = {"joints": "string_array"}
+DECLARED: dict[str, dict[str, str]] = {
+    "diff_drive_controller/DiffDriveController": _DIFF_DRIVE,
+    "joint_trajectory_controller/JointTrajectoryController": {
+        "joints": "string_array", "command_joints": "string_array",
+        "command_interfaces": "string_array", "state_interfaces": "string_array",
+        "allow_partial_joints_goal": "bool", "open_loop_control": "bool",
+        "allow_integration_in_goal_trajectories": "bool", "state_publish_rate": "double",
+        "action_monitor_rate": "double", "interpolation_method": "string",
+        "allow_nonzero_velocity_at_trajectory_end": "bool",
+        "constraints.stopped_velocity_tolerance": "double", "constraints.goal_time": "double",
+    },
+    "forward_command_controller/ForwardCommandController": {
+        "joints": "string_array", "interface_name": "string"},
+    "position_controllers/JointGroupPositionController": _JOINT_GROUP,
+    "velocity_controllers/JointGroupVelocityController": _JOINT_GROUP,
+    "effort_controllers/JointGroupEffortController": _JOINT_GROUP,
+    "joint_state_broadcaster/JointStateBroadcaster": {
+        "joints": "string_array", "interfaces": "string_array",
+        "extra_joints": "string_array", "use_local_topics": "bool"},
+}
+"""The parameter types ros2_controllers declare (their ``*_parameters.yaml``), by type."""
+
+_ARTICLE = {"integer": "an integer", "double": "a double", "bool": "a boolean",
+            "string": "a string"}
+
+
+def rcl_type(node: yaml.ScalarNode) -> str:
+    """``bool``, ``integer``, ``double`` or ``string``: what rcl makes of a scalar."""
+    if node.style in ("'", '"'):
+        return "string"
+    text = str(node.value)
+    if text in RCL_TRUE or text in RCL_FALSE:
+        return "bool"
+    if _INTEGER.fullmatch(text):
+        return "integer"
+    return "double" if _DOUBLE.fullmatch(text) else "string"
+
+
+def mixed_lists(params: yaml.MappingNode, section: str,
+                display: str) -> Iterator[Issue]:
+    """SB608 for each list under ``params`` whose items rcl reads as different types."""
+    for key, node in _flat(params):
+        if not isinstance(node, yaml.SequenceNode):
+            continue
+        scalars = [item for item in node.value if isinstance(item, yaml.ScalarNode)]
+        if _filled_in(node):
+            continue
+        kinds = list(dict.fromkeys(rcl_type(item) for item in scalars))
+        if len(kinds) > 1:
+            odd = next(item for item in scalars if rcl_type(item) != kinds[0])
+            yield Issue("SB608", f"{section}.{key}: rcl reads '{odd.value}' as "
+                        f"{_ARTICLE[rcl_type(odd)]} among {kinds[0]}s, and refuses the whole "
+                        "file ('Sequence should be of same type')", where=_where(display, odd),
+                        fix=_fix(odd, kinds[0]))
+
+
+def declared_types(controller_type: str | None, params: yaml.MappingNode, section: str,
+                   display: str) -> Iterator[Issue]:
+    """SB608 for each parameter of a known controller that rcl reads as another type."""
+    declared = DECLARED.get(controller_type or "")
+    if declared is None:
+        return
+    for key, node in _flat(params):
+        wanted = declared.get(key)
+        if wanted is None or (isinstance(node, yaml.ScalarNode) and node.tag.endswith(":null")
+                              and node.style is None and not node.value) or _filled_in(node):
+            continue
+        got = _type_of(node)
+        if got is None or got == wanted or (got == "empty_array" and wanted.endswith("_array")):
+            continue
+        if got.endswith("_array") and wanted.endswith("_array"):
+            shown = next(i for i in node.value if rcl_type(i) != wanted.removesuffix("_array"))
+            what = f"its items as {got.removesuffix('_array')}s ('{shown.value}')"
+            fix = _fix(shown, wanted.removesuffix("_array"))
+        elif isinstance(node, yaml.ScalarNode):
+            what = f"'{node.value}' as {_ARTICLE[got]}"
+            fix = f"{key}: [{node.value}]" if wanted.endswith("_array") else _fix(node, wanted)
+        else:
+            what, fix = f"it as a {got.replace('_', ' ')}", None
+        yield Issue("SB608", f"{section}.{key}: rcl reads {what}, and {controller_type} "
+                    f"declares a {wanted.replace('_', ' ')}: it refuses the value at configure "
+                    "('Wrong parameter type')", where=_where(display, node), fix=fix)
+
+
+def _filled_in(node: yaml.Node) -> bool:
+    """Whether a launch file fills the value in (``$(var wheel_separation)``) before rcl."""
+    scalars = node.value if isinstance(node, yaml.SequenceNode) else [node]
+    return any(isinstance(item, yaml.ScalarNode) and ("$(" in str(item.value)
+                                                       or "${" in str(item.value))
+               for item in scalars)
+
+
+def _type_of(node: yaml.Node) -> str | None:
+    """The type rcl gives a parameter's value; None for what it reads otherwise (a mapping)."""
+    if isinstance(node, yaml.ScalarNode):
+        return rcl_type(node)
+    if isinstance(node, yaml.SequenceNode):
+        kinds = {rcl_type(i) for i in node.value if isinstance(i, yaml.ScalarNode)}
+        if not node.value:
+            return "empty_array"
+        return f"{kinds.pop()}_array" if len(kinds) == 1 else None  # mixed: mixed_lists says
+    return None
+
+
+def _fix(node: yaml.ScalarNode, wanted: str) -> str | None:
+    """How to write ``node`` so that rcl reads it as ``wanted``."""
+    text = str(node.value)
+    if wanted == "double" and rcl_type(node) == "integer":
+        return f"write {text}.0"
+    if (wanted in ("double", "integer") and _DOUBLE.fullmatch(text)) or (
+            wanted == "bool" and (text in RCL_TRUE or text in RCL_FALSE)):
+        return f"write {text} without quotes"
+    if wanted == "string":
+        return f"quote it: '{text}'"
+    return None
+
+
+def _flat(node: yaml.MappingNode, prefix: str = "") -> Iterator[tuple[str, yaml.Node]]:
+    """Each parameter under ``node`` by its dotted name, as rcl flattens nested mappings."""
+    for key, value in node.value:
+        if not isinstance(key, yaml.ScalarNode):
+            continue
+        name = f"{prefix}{key.value}"
+        if isinstance(value, yaml.MappingNode):
+            yield from _flat(value, f"{name}.")
+        else:
+            yield name, value
+
+
+def _where(display: str, node: yaml.Node) -> tuple[str, int, int]:
+    return (display, node.start_mark.line + 1, node.start_mark.column + 1)
