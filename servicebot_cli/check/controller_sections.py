@@ -25,7 +25,7 @@ def sections(text: str, display: str) -> Sections | Issue:
     not YAML, empty, or without a ``NAME: ros__parameters:`` section.
     """
     try:
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
+        root = _composed(text)
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         where = (display, mark.line + 1, mark.column + 1) if mark else (display, 0, 0)
@@ -42,6 +42,8 @@ def sections(text: str, display: str) -> Sections | Issue:
                      where=(display, 0, 0),
                      fix="write each controller's parameters under NAME: ros__parameters:")
     sections = _sections(root)
+    if not sections and _collection_key(root) is not None:
+        return next(i for i in file_issues(text, display) if "used as a key" in i.message)
     if not sections:
         ros1 = _ros1_controllers(root)
         found, fix = "", ("name the ros2_control controllers file (each controller's "
@@ -65,6 +67,74 @@ def sections(text: str, display: str) -> Sections | Issue:
                      where=(display, 1, 1), severity=Severity.INFO,
                      fix="name the ros2_control controllers file")
     return sections
+
+
+def _composed(text: str) -> yaml.Node | None:
+    """The YAML node tree of ``text``; several documents (``---``) as one, as rcl reads them."""
+    try:
+        return yaml.compose(text, Loader=yaml.SafeLoader)
+    except yaml.composer.ComposerError as exc:
+        if "expected a single document" not in str(exc):
+            raise
+    documents = [d for d in yaml.compose_all(text, Loader=yaml.SafeLoader) if d is not None]
+    if not all(isinstance(d, yaml.MappingNode) for d in documents):
+        raise yaml.YAMLError("several documents that are not all mappings")
+    return yaml.MappingNode(documents[0].tag, [pair for d in documents for pair in d.value],
+                            documents[0].start_mark, documents[-1].end_mark)
+
+
+def file_issues(text: str, display: str) -> list[Issue]:
+    """SB601 for what rcl makes of the file itself, which the checks of its content go past.
+
+    rcl refuses aliases (``*name``, "Will not support aliasing") and keys that are lists or
+    mappings; it reads several documents as one file, which the controller spawner's
+    ``--param-file`` (``yaml.safe_load``) refuses.
+    """
+    issues: list[Issue] = []
+    try:
+        events = list(yaml.parse(text, Loader=yaml.SafeLoader))
+    except yaml.YAMLError:
+        return issues  # sections() says it is not YAML
+    alias = next((e for e in events if isinstance(e, yaml.AliasEvent)), None)
+    if alias is not None:
+        issues.append(Issue("SB601", f"an alias (*{alias.anchor}): rcl refuses the whole file "
+                            "('Will not support aliasing'), so ros2_control_node cannot load it",
+                            where=_at(display, alias.start_mark),
+                            fix="write the values out where the alias stands"))
+    starts = [e for e in events if isinstance(e, yaml.DocumentStartEvent)]
+    if len(starts) > 1:
+        issues.append(Issue("SB601", f"{len(starts)} YAML documents (---): rcl reads them as "
+                            "one file, the controller spawner's --param-file refuses it",
+                            where=_at(display, starts[1].start_mark), severity=Severity.WARNING,
+                            fix="keep one document"))
+    key = _collection_key(_composed(text))
+    if key is not None:
+        issues.append(Issue("SB601", "a list or mapping used as a key: rcl refuses the whole "
+                            "file", where=_at(display, key.start_mark),
+                            fix="write each parameter under a name"))
+    return issues
+
+
+def _collection_key(root: yaml.Node | None) -> yaml.Node | None:
+    """The first key of a mapping under ``root`` that is a list or a mapping, if any."""
+    stack, seen = [root], set()
+    while stack:
+        node = stack.pop()
+        if node is None or id(node) in seen:
+            continue
+        seen.add(id(node))
+        if isinstance(node, yaml.MappingNode):
+            for key, value in node.value:
+                if not isinstance(key, yaml.ScalarNode):
+                    return key
+                stack.append(value)
+        elif isinstance(node, yaml.SequenceNode):
+            stack.extend(node.value)
+    return None
+
+
+def _at(display: str, mark: yaml.Mark) -> tuple[str, int, int]:
+    return (display, mark.line + 1, mark.column + 1)
 
 
 JOINT_KEYS = ("left_wheel_names", "right_wheel_names", "joints", "joint")
@@ -116,6 +186,8 @@ def _collect(root: yaml.Node | None, depth: int,
     if not isinstance(root, yaml.MappingNode) or depth > _NAMESPACE_DEPTH:
         return found
     for key, value in root.value:
+        if not isinstance(key, yaml.ScalarNode):
+            continue  # a list or mapping as a key: file_issues says rcl refuses it
         text = str(key.value)
         params = get(value, "ros__parameters")
         if isinstance(params, yaml.MappingNode):

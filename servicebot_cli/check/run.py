@@ -223,9 +223,11 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
         robot = read_description(sources[0])
         return [FileReport(display, tuple(place_issues(robot, [found], settings)))]
     reports = []
+    whole_file = controller_sections.file_issues(text, display)  # said once, in the first
     for source in sources:
         robot = read_description(source)
-        issues = controllers.check(found, display, robot)
+        issues = [*whole_file, *controllers.check(found, display, robot)]
+        whole_file = []
         reports.append(FileReport(f"{display} against {source.display}",
                                   tuple(place_issues(robot, issues, settings))))
     return reports

@@ -1,0 +1,51 @@
+"""What rcl makes of a controllers file as a whole: aliases, several documents, odd keys.
+
+rcl_yaml_param_parser refuses an alias ('Will not support aliasing') and a key that is a
+list or a mapping; it reads several documents as one file, which the spawner's
+--param-file (yaml.safe_load) refuses.
+"""
+
+from __future__ import annotations
+
+from tests.check.helpers import findings
+from tests.conftest import REPO, SIM_URDF
+
+BUNDLED = (REPO / "robots" / "controllers.yaml").read_text()
+
+
+def _check(run, tmp_path, text: str) -> tuple[int, list[dict[str, object]]]:
+    path = tmp_path / "controllers.yaml"
+    path.write_text(text)
+    result = run("check", "controllers", path, "--urdf", SIM_URDF, "--format", "json",
+                 "--isolated")
+    return result.exit_code, findings(result.stdout)
+
+
+def test_an_alias_is_refused_as_rcl_refuses_it(run, tmp_path):
+    text = BUNDLED.replace("    wheel_separation: 0.54\n", "    wheel_separation: &track 0.54\n"
+                           ).replace("    publish_rate: 50.0", "    publish_rate: *track")
+    code, found = _check(run, tmp_path, text)
+    (alias,) = [f for f in found if f["code"] == "SB601"]
+    assert code == 1 and alias["severity"] == "error"
+    assert "an alias (*track): rcl refuses the whole file" in str(alias["message"])
+    assert BUNDLED.splitlines()[int(alias["line"]) - 1].strip().startswith("publish_rate")
+
+
+def test_several_documents_are_read_as_one_with_a_warning(run, tmp_path):
+    head, tail = BUNDLED.split("arm_controller:\n  ros__parameters:", 1)
+    code, found = _check(run, tmp_path, head + "---\narm_controller:\n  ros__parameters:" + tail)
+    assert code == 0
+    assert [(f["code"], f["severity"]) for f in found] == [("SB601", "warning")]
+    assert "2 YAML documents (---)" in str(found[0]["message"])
+    code, found = _check(run, tmp_path, head + "---\narm_controller:\n  ros__parameters:"
+                         + tail.replace("arm_link3_to_link4", "arm_link3_to_link9"))
+    assert code == 1 and "SB602" in {f["code"] for f in found}  # the second one is checked
+
+
+def test_a_key_that_is_a_list_is_named_not_printed_as_a_parser_object(run, tmp_path):
+    code, found = _check(run, tmp_path, BUNDLED + "? [a, b]\n: ros__parameters:\n"
+                         "    joints: [jointQ]\n")
+    assert code == 1
+    messages = [str(f["message"]) for f in found]
+    assert any("a list or mapping used as a key" in m for m in messages)
+    assert not any("ScalarNode" in m for m in messages)
