@@ -138,7 +138,8 @@ ROS_RULES = (
          "its items' one type. A list that mixes types (0.001 beside 0; joints [x, y, z], "
          "where y is a boolean) makes rcl refuse the whole file. ros2_controllers declare "
          "each parameter's type and refuse another at configure (\"Wrong parameter type\"): "
-         "wheel_separation \"0.10\" or 1, a wheel list written as one name.",
+         "wheel_separation \"0.10\" or 1, a wheel list written as one name. A type a "
+         "letter or two off a ros2_controllers plugin is no class pluginlib can load.",
          "Write the value in the declared type: 1.0 for a double, no quotes for a number, a "
          "list for an array."),
     # -- model -----------------------------------------------------------------------------------

@@ -176,3 +176,56 @@ def _flat(node: yaml.MappingNode, prefix: str = "") -> Iterator[tuple[str, yaml.
 
 def _where(display: str, node: yaml.Node) -> tuple[str, int, int]:
     return (display, node.start_mark.line + 1, node.start_mark.column + 1)
+
+
+KNOWN_TYPES = (
+    "ackermann_steering_controller/AckermannSteeringController",
+    "admittance_controller/AdmittanceController",
+    "battery_state_broadcaster/BatteryStateBroadcaster",
+    "bicycle_steering_controller/BicycleSteeringController",
+    "chained_filter_controller/ChainedFilter",
+    "diff_drive_controller/DiffDriveController",
+    "effort_controllers/GripperActionController", "effort_controllers/JointGroupEffortController",
+    "force_torque_sensor_broadcaster/ForceTorqueSensorBroadcaster",
+    "forward_command_controller/ForwardCommandController",
+    "forward_command_controller/MultiInterfaceForwardCommandController",
+    "gpio_controllers/GpioCommandController", "gps_sensor_broadcaster/GPSSensorBroadcaster",
+    "imu_sensor_broadcaster/IMUSensorBroadcaster",
+    "joint_state_broadcaster/JointStateBroadcaster",
+    "joint_trajectory_controller/JointTrajectoryController",
+    "magnetometer_broadcaster/MagnetometerBroadcaster",
+    "mecanum_drive_controller/MecanumDriveController",
+    "motion_primitives_controllers/MotionPrimitivesForwardController",
+    "omni_wheel_drive_controller/OmniWheelDriveController",
+    "parallel_gripper_action_controller/GripperActionController",
+    "pid_controller/PidController", "pose_broadcaster/PoseBroadcaster",
+    "position_controllers/GripperActionController",
+    "position_controllers/JointGroupPositionController",
+    "range_sensor_broadcaster/RangeSensorBroadcaster",
+    "state_interfaces_broadcaster/StateInterfacesBroadcaster",
+    "tricycle_controller/TricycleController",
+    "tricycle_steering_controller/TricycleSteeringController",
+    "velocity_controllers/JointGroupVelocityController",
+)
+"""ros2_controllers' plugin names (each package's plugin ``.xml``, on every branch)."""
+
+
+def misspelled_type(node: yaml.ScalarNode, section: str, display: str) -> Issue | None:
+    """SB608 for a ``type`` whose class is a letter or two off one of :data:`KNOWN_TYPES`.
+
+    In a namespace of ros2_controllers' plugins (``diff_drive_controller/``), pluginlib finds
+    no such class, and the controller manager cannot load the controller. Another namespace
+    may be a third party's (or a newer release's) controller: not judged.
+    """
+    import difflib
+
+    written = str(node.value).strip()
+    namespace = written.partition("/")[0] + "/"
+    siblings = [known for known in KNOWN_TYPES if known.startswith(namespace)]
+    if written in KNOWN_TYPES or not siblings:
+        return None
+    close = difflib.get_close_matches(written, siblings, n=1, cutoff=0.9)
+    if not close:
+        return None
+    return Issue("SB608", f"{section}.type '{written}' is no controller pluginlib can load; did "
+                 f"you mean '{close[0]}'?", where=_where(display, node), fix=f"type: {close[0]}")

@@ -42,8 +42,10 @@ def sections(text: str, display: str) -> Sections | Issue:
                      where=(display, 0, 0),
                      fix="write each controller's parameters under NAME: ros__parameters:")
     sections = _sections(root)
-    if not sections and _collection_key(root) is not None:
-        return next(i for i in file_issues(text, display) if "used as a key" in i.message)
+    misread = _misspelled_parameters(root, display) or (
+        None if sections else _key_not_a_name(root, display))
+    if misread is not None:  # says more than 'no controller here'
+        return misread
     if not sections:
         ros1 = _ros1_controllers(root)
         found, fix = "", ("name the ros2_control controllers file (each controller's "
@@ -107,12 +109,44 @@ def file_issues(text: str, display: str) -> list[Issue]:
                             "one file, the controller spawner's --param-file refuses it",
                             where=_at(display, starts[1].start_mark), severity=Severity.WARNING,
                             fix="keep one document"))
-    key = _collection_key(_composed(text))
-    if key is not None:
-        issues.append(Issue("SB601", "a list or mapping used as a key: rcl refuses the whole "
-                            "file", where=_at(display, key.start_mark),
-                            fix="write each parameter under a name"))
+    root = _composed(text)
+    issues += [i for i in (_misspelled_parameters(root, display), _key_not_a_name(root, display))
+               if i is not None]
     return issues
+
+
+def _misspelled_parameters(root: yaml.Node | None, display: str) -> Issue | None:
+    near = _near_ros_parameters(root)
+    if near is None:
+        return None
+    return Issue("SB601", f"'{near.value}' is not ros__parameters (two underscores): rcl does "
+                 "not read what it holds as the node's parameters (and refuses the file where "
+                 "a list sits under it)", where=_at(display, near.start_mark),
+                 fix="ros__parameters:")
+
+
+def _key_not_a_name(root: yaml.Node | None, display: str) -> Issue | None:
+    key = _collection_key(root)
+    if key is None:
+        return None
+    return Issue("SB601", "a list or mapping used as a key: rcl refuses the whole file",
+                 where=_at(display, key.start_mark), fix="write each parameter under a name")
+
+
+def _near_ros_parameters(root: yaml.Node | None, depth: int = 0) -> yaml.ScalarNode | None:
+    """A key a node's parameters are meant under, misspelled (``ros_parameters``)."""
+    if not isinstance(root, yaml.MappingNode) or depth > _NAMESPACE_DEPTH + 1:
+        return None
+    for key, value in root.value:
+        if not isinstance(key, yaml.ScalarNode) or key.value == "ros__parameters":
+            continue
+        squeezed = str(key.value).lower().replace("_", "").replace("-", "")
+        if squeezed in ("rosparameters", "rosparams", "rosparameter", "rosparam"):
+            return key
+        found = _near_ros_parameters(value, depth + 1)
+        if found is not None:
+            return found
+    return None
 
 
 def _collection_key(root: yaml.Node | None) -> yaml.Node | None:
@@ -218,7 +252,12 @@ def controller_types(sections: Sections) -> dict[str, str]:
     key: rcl flattens both to one parameter), or in the controller's own (ros2_control since
     Jazzy).
     """
-    types: dict[str, str] = {}
+    return {name: str(node.value) for name, node in type_nodes(sections).items()}
+
+
+def type_nodes(sections: Sections) -> dict[str, yaml.ScalarNode]:
+    """Where each controller's ``type`` is written (the last one rcl reads), by name."""
+    types: dict[str, yaml.ScalarNode] = {}
     managers = sections.get("controller_manager", [])
     for name, params in sections.items():
         # "NAME.type:" is the same parameter as "NAME: {type:}" (Clearpath's control.yaml)
@@ -227,7 +266,7 @@ def controller_types(sections: Sections) -> dict[str, str]:
         nodes += [get(section, "type") for section in params]  # "/**/NAME": every namespace
         for node in nodes:
             if isinstance(node, yaml.ScalarNode) and node.value:
-                types[name] = str(node.value)
+                types[name] = node
     return types
 
 

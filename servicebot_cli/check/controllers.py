@@ -11,8 +11,14 @@ from typing import TYPE_CHECKING
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
-from servicebot_cli.check.controller_params import declared_types, mixed_lists
-from servicebot_cli.check.controller_sections import JOINT_KEYS, Sections, controller_types, get
+from servicebot_cli.check.controller_params import declared_types, misspelled_type, mixed_lists
+from servicebot_cli.check.controller_sections import (
+    JOINT_KEYS,
+    Sections,
+    controller_types,
+    get,
+    type_nodes,
+)
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.ros2_control import GAZEBO_PID, exported_as
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
@@ -46,6 +52,10 @@ def check(found: Sections, display: str, robot: RobotDescription) -> Iterator[Is
     """Every issue of the controller sections ``found`` (of file ``display``) against ``robot``."""
     checker = _Checker(display, robot, frozenset(found))
     types = controller_types(found)
+    for name, node in type_nodes(found).items():
+        typo = misspelled_type(node, name, display)
+        if typo is not None:
+            yield typo
     for name, params in found.items():
         for section in params:
             yield from mixed_lists(section, name, display)

@@ -49,3 +49,24 @@ def test_a_key_that_is_a_list_is_named_not_printed_as_a_parser_object(run, tmp_p
     messages = [str(f["message"]) for f in found]
     assert any("a list or mapping used as a key" in m for m in messages)
     assert not any("ScalarNode" in m for m in messages)
+
+
+def test_a_misspelled_ros_parameters_is_named(run, tmp_path):
+    """rcl does not read 'ros_parameters' as the node's parameters: check said 'no controller
+    here' (an info) and passed."""
+    code, found = _check(run, tmp_path, BUNDLED.replace(
+        "arm_controller:\n  ros__parameters:", "arm_controller:\n  ros_parameters:"))
+    assert code == 1 and [f["code"] for f in found] == ["SB601"]
+    assert "'ros_parameters' is not ros__parameters" in str(found[0]["message"])
+
+
+def test_a_controller_type_a_letter_off_is_no_plugin(run, tmp_path):
+    code, found = _check(run, tmp_path, BUNDLED.replace(
+        "type: diff_drive_controller/DiffDriveController",
+        "type: diff_drive_controller/DiffDriveControler"))
+    assert code == 1 and [f["code"] for f in found] == ["SB608"]
+    assert str(found[0]["message"]).endswith(
+        "did you mean 'diff_drive_controller/DiffDriveController'?")
+    code, found = _check(run, tmp_path, BUNDLED.replace(
+        "type: diff_drive_controller/DiffDriveController", "type: my_robot/BaseController"))
+    assert code == 0 and found == []  # a third party's controller is not judged
