@@ -79,7 +79,8 @@ def warn_if_scaled(step: Step, motors: MotorMap, where: str,
     shaper = WheelShaper(motors, 1.0)
     wanted = shaper.unlimited(step.linear_m_s, step.angular_rad_s)
     left, right = shaper.target(step.linear_m_s, step.angular_rad_s)
-    if (left, right) == wanted:
+    if all(math.isclose(got, asked, rel_tol=1e-9) for got, asked in zip(
+            (left, right), wanted, strict=True)):  # at the limit but for rounding
         return
     linear, angular = body_twist(left, right, wheel_radius_m=motors.wheel_radius_m,
                                  track_m=motors.track_m)

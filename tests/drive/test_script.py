@@ -89,3 +89,16 @@ def test_a_twist_beyond_the_limit_is_scaled_with_a_warning(run, tmp_path):
     assert f"warning: {script}:1: twist 1 m/s, 0 rad/s needs 14.3 rad/s of the wheels" in \
         result.stderr
     assert "scaled to 0.035 m/s, 0 rad/s (curvature kept)" in result.stderr
+
+
+def test_a_twist_exactly_at_the_limit_is_not_said_to_be_scaled(run):
+    """0.01 m/s and 0.1 rad/s need exactly the diffbot's 1 rad/s (r 0.015 m, track 0.10 m);
+    rounding made it 1.0000000000000002 and a warning that scaled nothing."""
+    from tests.simulate.helpers import DIFFBOT
+
+    args = ("drive", DIFFBOT, "--dry-run", "--protocol", "arduino", "--ticks-per-rev", "1000",
+            "--baud", "57600", "--duration-s", "1", "--linear", "0.01")
+    result = run(*args, "--angular", "0.1")
+    assert result.exit_code == 0 and "scaled" not in result.stderr, result.stderr
+    result = run(*args, "--angular", "0.11")
+    assert "needs 1.03 rad/s of the wheels" in result.stderr
