@@ -163,7 +163,8 @@ def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> T
     from servicebot_cli.inspect.geometry import mesh_library
     from servicebot_cli.inspect.poses import link_transforms
     from servicebot_cli.kinematics.drive_geometry import drive_geometry
-    from servicebot_cli.kinematics.running_gear import chassis_joints
+    from servicebot_cli.kinematics.link_poses import link_transforms as kinematic_poses
+    from servicebot_cli.kinematics.running_gear import chassis_joints, loose_wheels
 
     notes: list[str] = []
     try:
@@ -171,7 +172,9 @@ def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> T
     except DescriptionError as exc:
         drive = None
         notes.append(str(exc).split(": ", 1)[-1])
-    wheels = {w.joint for w in drive.wheels} if drive else set()
+    # no drive: its wheels (one side's, or drawn as meshes only) are still no arm
+    wheels = {w.joint for w in drive.wheels} if drive else set(
+        loose_wheels(robot, kinematic_poses(robot)))
     chassis = frozenset(chassis_joints(robot, sorted(wheels)))
     zero = link_transforms(robot)
     posed = link_transforms(robot, request.configuration, clamp=request.clamp)

@@ -16,7 +16,14 @@ import numpy as np
 
 from servicebot_cli.description.elements import ONE_AXIS_TYPES, Joint
 from servicebot_cli.kinematics.link_poses import link_transforms
-from servicebot_cli.kinematics.wheel_joints import BALL_CASTER, PARALLEL, as_wheel, turns_freely
+from servicebot_cli.kinematics.wheel_joints import (
+    BALL_CASTER,
+    NO_ROUND_SHAPE,
+    PARALLEL,
+    as_wheel,
+    turns_freely,
+    unit_axis,
+)
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -106,9 +113,48 @@ def swivels_above(robot: RobotDescription, world: dict[str, np.ndarray]) -> dict
             continue
         link = robot.link(joint.child)
         if any(s.geometry.kind in ("cylinder", "sphere")
-               for s in (*link.collisions, *link.visuals)):
+               for s in (*link.collisions, *link.visuals)) or _mesh_leaf(robot, link.name):
             found[joint.name] = swivel.name
     return found
+
+
+def loose_wheels(robot: RobotDescription, world: dict[str, np.ndarray]) -> tuple[str, ...]:
+    """Wheel joints of a robot no differential drive was made of: wheels, and no arm either.
+
+    Each joint that turns a wheel (one side's only; the Pioneer's caster), and each that
+    turns freely across the robot (about the root's y) carrying a link that ends the tree,
+    with a mesh and no cylinder or sphere to take a radius from (scout_mini's wheels,
+    without a Gazebo plugin to name them). URDF order.
+    """
+    found = []
+    for joint in robot.joints:
+        wheel = as_wheel(robot, joint, world)
+        if wheel is not None and not isinstance(wheel, str):
+            found.append(joint.name)
+            continue
+        if wheel != NO_ROUND_SHAPE or joint.child is None or not _mesh_leaf(robot, joint.child):
+            continue
+        axis = unit_axis(joint)
+        if axis is not None and abs((world[joint.child][:3, :3] @ axis)[1]) >= PARALLEL:
+            found.append(joint.name)
+    return tuple(found)
+
+
+def _mesh_leaf(robot: RobotDescription, link_name: str) -> bool:
+    """Whether ``link_name`` has a mesh and carries nothing that moves (a wheel's link)."""
+    link = robot.link(link_name)
+    if not any(s.geometry.kind == "mesh" for s in (*link.collisions, *link.visuals)):
+        return False
+    stack, seen = [link_name], set()
+    while stack:  # only fixed joints below it
+        current = stack.pop()
+        seen.add(current)
+        for joint in robot.joints:
+            if joint.parent == current and joint.child not in seen:
+                if joint.type != "fixed":
+                    return False
+                stack.append(joint.child or "")
+    return True
 
 
 def _fixed_to_root(robot: RobotDescription) -> set[str]:

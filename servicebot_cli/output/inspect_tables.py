@@ -96,7 +96,8 @@ def totals_tables(totals: Totals) -> list[Table]:
     at = f"at {config}" if config else "at the zero configuration"
     dof = totals.dof
     rows: list[tuple[object, ...]] = [
-        ("degrees of freedom", f"{dof.total}: {dof.wheels} wheels + {dof.arm} arm"
+        ("degrees of freedom", f"{dof.total}: {dof.wheels} wheel{'s' * (dof.wheels != 1)} "
+         f"+ {dof.arm} arm"
          + (f" + {dof.chassis} casters and suspension" if dof.chassis else "")),
         ("total mass", d.quantity(totals.mass_kg, "kg")),
         ("centre of mass", "-" if totals.centre_of_mass_m is None

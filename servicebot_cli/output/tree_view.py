@@ -32,8 +32,9 @@ def branch(row: TreeRow) -> str:
 
 def tree_table(tree: TreeInfo) -> Table:
     """One row per link: the drawing, then the joint from its parent."""
-    table = Table(f"Kinematic tree ({len(tree.edges) + len(tree.roots)} links, "
-                  f"{len(tree.edges)} joints)", ("link", "joint", "motion", "limits"))
+    links, joints = len(tree.edges) + len(tree.roots), len(tree.edges)
+    table = Table(f"Kinematic tree ({links} link{'s' * (links != 1)}, "
+                  f"{joints} joint{'s' * (joints != 1)})", ("link", "joint", "motion", "limits"))
     for row in tree.tree.rows():
         name = branch(row) + row.link
         if row.joint is None:
