@@ -58,7 +58,11 @@ class Box:
 
 @dataclass(frozen=True)
 class ArmReach:
-    """The farthest the arm reaches from its shoulder, arm straight.
+    """The farthest the arm may reach from its shoulder: its links end to end.
+
+    A bound: exact where the segments can line up (the bundled arm, an iiwa), above the
+    real reach where a segment is offset along a joint's axis (a UR10's 1.75 m against the
+    1.3 m it reaches).
 
     Attributes:
         shoulder: The first arm joint whose next segment does not lie along its own axis

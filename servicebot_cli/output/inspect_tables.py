@@ -106,7 +106,8 @@ def totals_tables(totals: Totals) -> list[Table]:
     ]
     if totals.arm is not None:
         rows.append(("arm reach", f"{d.quantity(totals.arm.reach_m, 'm')}, "
-                     f"{totals.arm.shoulder} to {totals.arm.tip}, arm straight"))
+                     f"{totals.arm.shoulder} to {totals.arm.tip}, at most (its links end "
+                     "to end)"))
     drive = totals.drive
     if drive is not None:
         rows += [("wheel radius", d.quantity(drive.wheel_radius_m, "m")),
