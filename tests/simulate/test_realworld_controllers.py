@@ -125,3 +125,24 @@ def test_a_wheel_radius_that_is_not_positive_is_one_line(tmp_path):
     assert result.returncode == 2
     assert result.stderr.strip().splitlines() == [
         f"Error: {controllers}: diffbot_base_controller.wheel_radius: must be positive, got 0.0"]
+
+
+def test_a_base_controller_simulate_does_not_model_is_named(tmp_path):
+    """Clearpath's do100 names a mecanum controller: it was driven as a differential drive
+    without a word."""
+    controllers = tmp_path / "mecanum.yaml"
+    controllers.write_text(
+        "controller_manager:\n  ros__parameters:\n    update_rate: 50\n"
+        "    platform_velocity_controller:\n"
+        "      type: clearpath_mecanum_drive_controller/MecanumDriveController\n"
+        "platform_velocity_controller:\n  ros__parameters:\n    wheels_radius: 0.05\n")
+    scenario = tmp_path / "drive.yaml"
+    scenario.write_text(DRIVE_ONLY)
+    result = run_servicebot("simulate", DIFFBOT, "--headless", "-s", scenario,
+                            "--controllers", controllers, env=NO_ROS)
+    assert result.returncode == 0, result.stderr
+    assert ("the base's controller 'platform_velocity_controller' is a clearpath_mecanum_drive_"
+            "controller/MecanumDriveController, which simulate does not model") in result.stderr
+    plain = run_servicebot("simulate", DIFFBOT, "--headless", "-s", scenario, "--controllers",
+                           CONTROLLERS, env=NO_ROS)
+    assert "does not model" not in plain.stderr

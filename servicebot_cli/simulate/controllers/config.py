@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -40,6 +41,9 @@ if TYPE_CHECKING:
 DIFF_DRIVE = "diff_drive_controller/DiffDriveController"
 JOINT_STATE_BROADCASTER = "joint_state_broadcaster/JointStateBroadcaster"
 _AXES = (("linear.x", "linear", "m_s"), ("angular.z", "angular", "rad_s"))
+_OTHER_BASE = re.compile(r"(?i)mecanum|omni|tricycle|steering|ackermann|bicycle|swerve")
+"""Base controllers other than a differential drive, by words in their type (Clearpath's
+``clearpath_mecanum_drive_controller/MecanumDriveController`` too)."""
 _GEOMETRY = (("wheel_separation", "wheel_separation_m"), ("wheel_radius", "wheel_radius_m"),
              ("wheel_separation_multiplier", "wheel_separation_multiplier"),
              ("left_wheel_radius_multiplier", "left_wheel_radius_multiplier"),
@@ -174,12 +178,17 @@ def read_controllers_file(path: Path | tuple[Path, ...] | None,
             values[key] = tuple(_number(where, key, v) for v in diagonal)
     namespace = plugin_node.namespace if plugin_node else "/"
     odom_frame, base_frame = _frames(where, params, namespace) if name else (None, None)
+    other = next(((n, kind) for n, kind in types.items() if _OTHER_BASE.search(kind)), None)
+    notes = (f"note: {where}: the base's controller '{other[0]}' is a {other[1]}, which "
+             "simulate does not model: the base is driven as a differential drive on its "
+             "wheels, and no odometry is published",) if other and not name else ()
     return ControllersFile(where, values, name, source=label, publishes_odometry=bool(name),
                            odom_topic=controller_topic(plugin_node, name, "~/odom")
                            if name else None,
                            odom_tf=bool(name) and params.get("enable_odom_tf") is not False,
                            odom_frame=odom_frame, base_frame=base_frame,
-                           joint_state_topics=_broadcaster_topics(nodes, types, plugin_node))
+                           joint_state_topics=_broadcaster_topics(nodes, types, plugin_node),
+                           notes=notes)
 
 
 def _broadcaster_topics(nodes: Mapping[str, Any], types: Mapping[str, str],
