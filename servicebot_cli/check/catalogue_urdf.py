@@ -168,6 +168,12 @@ URDF_RULES: tuple[Rule, ...] = (
          "Colours are four numbers between 0 and 1, not 0-255. urdfdom refuses any other "
          "and drops the material: every link that uses it loses its colour.",
          "Divide 0-255 values by 255."),
+    Rule("SB114", "material-redefined", W, "A link's material reuses a name with another colour",
+         "urdfdom keeps the first definition of a material name (at the top level, or in an "
+         "earlier link's visual) and gives it to every later visual of that name, whatever "
+         "colour the visual writes: RViz, robot_state_publisher and Gazebo draw the first "
+         "colour (urdf-rs's sample.urdf comes out white all over).",
+         "Give each colour its own material name."),
     # -- joints ----------------------------------------------------------------------------------
     Rule("SB201", "unknown-joint-type", E, "A joint type URDF does not have",
          "URDF joints are revolute, continuous, prismatic, fixed, floating and planar. There "

@@ -69,6 +69,14 @@ def _materials(robot: RobotDescription) -> Iterator[Issue]:
                 continue
             yield from _rgba(used)
             used_name = used.get("name")
+            if used_name and used_name in defined and _has_colour(used) \
+                    and _look(used) != _look(defined[used_name]):
+                yield Issue("SB114", f"material '{used_name}' of link '{link.name}' has "
+                            f"{_shown(used)}, but '{used_name}' is already "
+                            f"{_shown(defined[used_name])} (at "
+                            f"{robot.source_of(defined[used_name])}): urdfdom gives the link "
+                            "that first definition, and RViz and Gazebo draw it so", used,
+                            fix=f"give this colour a name of its own, not '{used_name}'")
             if not used_name or used_name in defined:
                 continue
             if _has_colour(used):  # urdfdom keeps it: later links may use it by name
@@ -80,6 +88,25 @@ def _materials(robot: RobotDescription) -> Iterator[Issue]:
                         f"(defined: {known})", used,
                         fix=f'define <material name="{used_name}"><color rgba="..."/>'
                         "</material>")
+
+
+def _look(material: ET.Element) -> tuple[tuple[float, ...] | str | None, str | None]:
+    """A material's colour (rgba numbers, or the text where they are none) and texture."""
+    color, texture = material.find("color"), material.find("texture")
+    text = color.get("rgba", "") if color is not None else None
+    try:
+        rgba: tuple[float, ...] | str | None = None if text is None else tuple(
+            round(float(v), 6) for v in text.split())
+    except ValueError:
+        rgba = text
+    return rgba, texture.get("filename") if texture is not None else None
+
+
+def _shown(material: ET.Element) -> str:
+    color = material.find("color")
+    if color is not None:
+        return f"rgba '{color.get('rgba', '')}'"
+    return f"texture '{_look(material)[1]}'"
 
 
 def _rgba(material: ET.Element) -> Iterator[Issue]:

@@ -72,3 +72,26 @@ def test_a_name_defined_twice_is_suggested_once(run, tmp_path):
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB103")
     (found,) = findings(result.stdout)
     assert found["message"].endswith("did you mean 'wheel_link' or 'base_link'?")
+
+
+@pytest.mark.parametrize(("second", "expected"), [
+    ('<color rgba="1 0 0 1"/>', True),  # urdfdom draws it white, the first definition
+    ('<color rgba="1 1 1 1.0"/>', False),  # the same colour, written otherwise
+    ("", False),  # a reference to the first definition by name
+])
+def test_a_material_name_reused_with_another_colour_is_the_first(run, tmp_path, second,
+                                                                 expected):
+    """urdfdom's model.cpp gives a visual the first definition of its material's name."""
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r"><link name="a"><visual><geometry><box size="1 1 1"/>'
+                    '</geometry><material name="paint"><color rgba="1 1 1 1"/></material>'
+                    '</visual></link><link name="b"><visual><geometry><box size="1 1 1"/>'
+                    f'</geometry><material name="paint">{second}</material></visual></link>'
+                    '<joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint>'
+                    '</robot>')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB114")
+    found = findings(result.stdout)
+    assert bool(found) is expected
+    if expected:
+        assert "has rgba '1 0 0 1', but 'paint' is already rgba '1 1 1 1'" in \
+            found[0]["message"]
