@@ -68,6 +68,8 @@ BREAKS: dict[str, str] = {
              "explodes and Pinocchio's dynamics are wrong",
     "SB308": "MuJoCo refuses it ('inertia must satisfy A + B >= C'); Gazebo simulates a body "
              "that cannot exist",
+    "SB311": "Pinocchio's dynamics overflow (infinite total mass, NaN gravity torques) and "
+             "MuJoCo refuses an inertia that breaks the triangle inequality",
     "SB310": "each consumer reads a different body: Gazebo (sdformat) takes mass 0 as no "
              "inertia at all, Pinocchio keeps a rotational inertia without mass",
     "SB401": "RViz and Gazebo show and collide with nothing there; Pinocchio's collision model "

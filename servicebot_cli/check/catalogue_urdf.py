@@ -301,6 +301,12 @@ URDF_RULES: tuple[Rule, ...] = (
          "root link is the exception, a warning: pybullet reads its mass 0 as a base fixed "
          "to the world (cartpole.urdf, kuka_iiwa), whose inertia moves nothing.",
          "Give the link its real mass, or zero the inertia for a massless frame."),
+    Rule("SB311", "implausible-mass", E, "A mass or inertia no robot's link has",
+         "A mass over 1e12 kg or an inertia component over 1e12 kg m^2 is a unit or typing "
+         "error (two links of 1e308 kg make the total mass infinite and Pinocchio's gravity "
+         "torques NaN; an ixx of 1e13 beside 1 breaks the triangle inequality MuJoCo holds "
+         "inertias to). The other inertia rules do not compute with such values.",
+         "Write the mass in kg and the inertia in kg m^2."),
     # -- geometry and files ----------------------------------------------------------------------
     Rule("SB401", "mesh-not-found", E, "A mesh file cannot be found",
          "Relative paths resolve from the URDF's directory, file:// from the root, "

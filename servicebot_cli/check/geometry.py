@@ -129,8 +129,8 @@ def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str
                     element)
         return
     scale = shape.geometry.scale
-    if not values.usable_geometry(shape.geometry) or not values.plain_numbers(element):
-        return
+    if not values.plain_numbers(element) or not values.finite(scale) or not all(scale):
+        return  # SB013, SB014 and SB405 report such a scale
     extent_m = max(abs(hi - lo) * abs(s) for lo, hi, s in zip(info.lower, info.upper, scale,
                                                                   strict=True))
     name = shape.geometry.filename

@@ -40,6 +40,13 @@ def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
                         inertial.element)
             continue
         moments = inertial.inertia_kg_m2
+        huge = _beyond_any_robot(inertial.mass_kg, moments)
+        if huge is not None:
+            yield Issue("SB311", f"link '{link.name}' has {huge}, beyond the "
+                        f"{values.LARGEST_INERTIA:g} of any robot: the dynamics computed "
+                        "with it overflow or lose the other links", inertial.element,
+                        fix="write the link's mass in kg and its inertia in kg m^2")
+            continue
         if (moments is None or not values.bounded(moments, values.LARGEST_INERTIA)
                 or not values.plain_numbers(inertial.element)):
             continue  # SB012/SB013/SB014 report it
@@ -57,6 +64,18 @@ def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
                     "(robot_state_publisher) ignore a root link's inertia", link.element,
                     fix="add a massless root link (base_footprint) with a fixed joint to it, "
                     "if KDL users matter")
+
+
+def _beyond_any_robot(mass_kg: float | None,
+                      moments: tuple[float, ...] | None) -> str | None:
+    """``mass 1e+308 kg`` or ``ixx 1e+13 kg m^2``: a finite value no robot's link has."""
+    if mass_kg is not None and math.isfinite(mass_kg) and mass_kg > values.LARGEST_INERTIA:
+        return f"mass {mass_kg:g} kg"
+    for name, value in zip(("ixx", "ixy", "ixz", "iyy", "iyz", "izz"), moments or (),
+                           strict=False):
+        if math.isfinite(value) and abs(value) > values.LARGEST_INERTIA:
+            return f"{name} {value:g} kg m^2"
+    return None
 
 
 def _inertia_without_mass(name: str, element: ET.Element | None, root: bool) -> Issue:
