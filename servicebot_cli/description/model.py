@@ -131,6 +131,10 @@ def build_model(xml_text: str, display: str, base: str = "fixed",
             return model
     # an error may span lines: urdfdom quotes a vector with its line break
     reasons = [found.strip() for found in _URDFDOM_ERROR.findall("\n".join(noise))]
+    # urdfdom keeps a link whose part it cannot parse (model.cpp ignores parseLink's
+    # verdict): what failed the model comes after the last of those links' errors
+    last_link = max((k for k, r in enumerate(reasons) if "for Link [" in r), default=-1)
+    reasons = reasons[last_link + 1:] or reasons
     if reasons:
         reason = _VECTOR_PIECE.sub(_spaces_only, reasons[0])
         raise DescriptionError(

@@ -109,3 +109,17 @@ def test_limits_in_the_wrong_order_are_one_line_that_says_check_only_warns(tmp_p
                                  "limit -2.775", "check only warns: SB203", "continuous")
     assert "for details" not in line
     assert run_servicebot("check", "urdf", path, "--isolated").returncode == 0
+
+
+def test_the_refusal_names_what_failed_the_model_not_a_link_urdfdom_kept(tmp_path):
+    """urdfdom logs a link's unparsable <inertial> and keeps the link (model.cpp ignores
+    parseLink's verdict); what fails the model is the joint without limits after it
+    (urdf-importer-extension's crash_test.urdf)."""
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r"><link name="base_link"><inertial><mass value="1"/>'
+                    '</inertial></link><joint name="slide" type="prismatic">'
+                    '<parent link="base_link"/><child link="carriage"/><axis xyz="1 0 0"/>'
+                    '</joint><link name="carriage"/></robot>')
+    line = assert_one_line_error(run_servicebot("fk", path, "-f", "carriage"), 2)
+    assert "Joint [slide] is of type PRISMATIC without limits" in line
+    assert "Inertial element" not in line
