@@ -8,6 +8,7 @@ data. Nothing heavy is built until asked for, so ``check`` on a broken file stay
 
 from __future__ import annotations
 
+import math
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -282,7 +283,11 @@ class RobotDescription:
             places += [(f"the {kind} of link '{link.name}'", origin, "the link's frame")
                        for kind, origin in origins]
         for what, origin, reference in places:
-            if not origin.offset_m <= el.FARTHEST_M:  # NaN too
+            if math.isnan(origin.offset_m):  # a number urdfdom cannot read, or nan
+                raise DescriptionError(
+                    f"{self.display}: {what} has an <origin xyz> that is not three finite "
+                    f"numbers {check_hint(self.display, self.xacro_args)}")
+            if not origin.offset_m <= el.FARTHEST_M:
                 raise DescriptionError(
                     f"{self.display}: {what} is placed {origin.offset_m:g} m from {reference}, "
                     f"beyond the {el.FARTHEST_M:g} m of any robot; write its <origin xyz> in "

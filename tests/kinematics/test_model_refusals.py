@@ -123,3 +123,14 @@ def test_the_refusal_names_what_failed_the_model_not_a_link_urdfdom_kept(tmp_pat
     line = assert_one_line_error(run_servicebot("fk", path, "-f", "carriage"), 2)
     assert "Joint [slide] is of type PRISMATIC without limits" in line
     assert "Inertial element" not in line
+
+
+@pytest.mark.parametrize("xyz", ["0,0,0.45", "nan 0 0", "0 0"])
+def test_an_origin_that_is_not_three_numbers_is_said_so(tmp_path, xyz):
+    """fk said 'placed nan m from link ..., beyond the 1e+06 m of any robot'."""
+    path = tmp_path / "r.urdf"
+    path.write_text(ROBOT.format(leader="j1").replace('<origin xyz="0.1 0 0"/>',
+                                                      f'<origin xyz="{xyz}"/>'))
+    line = assert_one_line_error(run_servicebot("fk", path, "-f", "b"), 2)
+    assert "joint 'j2' has an <origin xyz> that is not three finite numbers" in line
+    assert "nan m" not in line
