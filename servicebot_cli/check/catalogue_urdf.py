@@ -77,7 +77,7 @@ URDF_RULES: tuple[Rule, ...] = (
     Rule("SB013", "bad-number", E, "A value is not a number or has the wrong count",
          "Numbers are plain decimals (1, -0.5, 2e-3); vectors have exactly three "
          "components (rgba: four). urdfdom refuses anything else, including trailing spaces.",
-         "Write the value as the message shows."),
+         "Write plain decimal numbers, as many as the attribute takes, separated by spaces."),
     Rule("SB014", "non-finite", E, "NaN or infinity in a value",
          "nan, inf and numbers too large for a double make every computation that touches "
          "them meaningless; urdfdom refuses them.",

@@ -172,7 +172,8 @@ class FileTally:
             if not location.name:
                 message = ("package:///PATH (three slashes) is read as an absolute path by some "
                            "loaders; ROS resolves package:// by package name and would not find it")
-            named = f"give the package a package.xml with <name>{location.name}</name>"
+            named = ("write package://NAME/... with a package's name" if location.name in (
+                ".", "..") else f"give the package a package.xml with <name>{location.name}</name>")
             fix = (f"write package://{location.name}/... with two slashes" + (
                        "" if location.named_ros_finds else f", and {named}")
                    if location.three_slashes else

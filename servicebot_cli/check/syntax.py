@@ -299,7 +299,8 @@ def _number(element: ET.Element, key: str, value: str, count: int) -> Iterator[I
         yield _split_wrong(where, piece, element)
         return
     if len(parts) != count:
-        yield Issue("SB013", f"{where}: expected {count} numbers, found {len(parts)}", element)
+        yield Issue("SB013", f"{where}: expected {count} numbers, found {len(parts)}", element,
+                    fix=f"write {count} numbers separated by spaces")
         return
     for part in parts:
         if NON_FINITE.fullmatch(part.strip()):

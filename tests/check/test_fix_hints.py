@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.check.helpers import findings
+from tests.check.helpers import findings, tetrahedron_stl
 
 ARM = ('<robot name="r"><link name="a"/><link name="b"/><link name="c"/>'
        '<joint name="j" type="{kind}"><parent link="a"/><child link="b"/>{limit}</joint>'
@@ -95,3 +95,25 @@ def test_a_material_name_reused_with_another_colour_is_the_first(run, tmp_path, 
     if expected:
         assert "has rgba '1 0 0 1', but 'paint' is already rgba '1 1 1 1'" in \
             found[0]["message"]
+
+
+def test_a_package_named_dot_dot_is_not_told_to_get_a_package_xml(run, tmp_path):
+    """package://../meshes/part.stl: 'give the package a package.xml with <name>..</name>'."""
+    (tmp_path / "meshes").mkdir()
+    (tmp_path / "meshes" / "part.stl").write_bytes(tetrahedron_stl(0.1))
+    (tmp_path / "urdf").mkdir()
+    path = tmp_path / "urdf" / "r.urdf"
+    path.write_text('<robot name="r"><link name="a"><visual><geometry><mesh filename='
+                    '"package://../meshes/part.stl"/></geometry></visual></link></robot>')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB409")
+    (found,) = findings(result.stdout)
+    assert found["fix"].startswith("write package://NAME/... with a package's name")
+
+
+def test_a_vector_with_too_few_numbers_says_how_many(run, tmp_path):
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r"><link name="a"><visual><origin xyz="0 0"/><geometry>'
+                    '<box size="1 1 1"/></geometry></visual></link></robot>')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB013")
+    (found,) = findings(result.stdout)
+    assert found["fix"] == "write 3 numbers separated by spaces"
