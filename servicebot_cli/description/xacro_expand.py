@@ -187,6 +187,11 @@ def _warning_lines(stderr_text: str) -> tuple[str, ...]:
                  if line and not line.startswith(noise))
 
 
+_ATTRIBUTE_READERS = ("check_attrs", "reqd_attrs", "replace_node")
+"""xacro's functions that read a directive's attributes (xacro:if, xacro:attribute,
+xacro:element), and the one that ends its work."""
+
+
 class _Tracer:
     """Positions of xacro's DOM nodes, and the patches that record them."""
 
@@ -200,6 +205,7 @@ class _Tracer:
         self.files: list[str] = []
         self.known_args: set[str] = set()
         self.macros: dict[str, SourceRef] = {}  # where each macro is defined, by name
+        self.reading: tuple[int, int] | None = None  # the directive whose attributes are read
 
     def record(self, node: xml.dom.minidom.Element, file: str, line: int, column: int) -> None:
         self.refs.append(SourceRef(file, line, column))
@@ -265,6 +271,10 @@ class _Tracer:
             setattr(xacro, name, self._tracking(saved[name]))
         xacro.handle_macro_call = self._tracking(
             self._macro_call(MacroBudget().wrap(saved["handle_macro_call"])))
+        attrs = {name: getattr(xacro, name) for name in _ATTRIBUTE_READERS}
+        for name, fn in attrs.items():
+            setattr(xacro, name, self._reading(fn, clears=name == "replace_node"))
+        saved.update(attrs)
         subst._eval_find = lambda pkg: str(self.resolver.find(pkg))
         captured = io.StringIO()
         try:
@@ -322,11 +332,30 @@ class _Tracer:
                 return fn(node, *args, **kwargs)
             except Exception:
                 if self.failed_at is None and self.current:
-                    self.failed_at = self.current[-1]
+                    # a directive's attributes (xacro:if's value) are read while its parent
+                    # is processed: the directive read last at this depth failed
+                    reading = self.reading
+                    self.failed_at = reading[0] if reading is not None \
+                        and reading[1] == len(self.current) else self.current[-1]
                 raise
             finally:
                 if index is not None:
                     self.current.pop()
+
+        return wrapper
+
+    def _reading(self, fn: Callable[..., object], clears: bool) -> Callable[..., object]:
+        """``fn`` (xacro's attribute readers, or replace_node), noting the directive it reads.
+
+        replace_node ends a directive's work: what fails after it is its parent's.
+        """
+        def wrapper(node: object, *args: object, **kwargs: object) -> object:
+            if clears:
+                self.reading = None
+            else:
+                index = self.index_of(node)
+                self.reading = None if index is None else (index, len(self.current))
+            return fn(node, *args, **kwargs)
 
         return wrapper
 

@@ -267,3 +267,30 @@ def test_an_attribute_xacro_cannot_write_is_one_line_not_a_crash(run, tmp_path, 
                           "not text")
     result = run("check", "urdf", path, "--format", "json", "--isolated")
     assert result.exit_code == 1 and '"SB006"' in result.stdout
+
+
+@pytest.mark.parametrize(("directive", "said"), [
+    ('<xacro:if value="$(arg enable_crane)">', "Undefined substitution argument enable_crane"),
+    ('<xacro:if value="maybe">', "not a boolean expression"),
+    ('<xacro:unless value="${undefined_flag}">', "name 'undefined_flag' is not defined"),
+])
+def test_a_directive_that_fails_is_placed_at_its_line_not_the_robots(run, tmp_path, directive,
+                                                                     said):
+    """TALOS's talos_full files were all reported at <robot> (11:1) for an argument a
+    <xacro:if value> reads."""
+    path = tmp_path / "r.urdf.xacro"
+    closing = "</xacro:unless>" if "unless" in directive else "</xacro:if>"
+    path.write_text('<?xml version="1.0"?>\n<robot name="r" '
+                    'xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <link name="a"/>\n\n'
+                    f'  {directive}\n    <link name="b"/>\n  {closing}\n  <link name="c"/>\n'
+                    '</robot>\n')
+    assert_one_line_error(run("expand", path), 2, f"{path}:5:3", said)
+
+
+def test_an_error_after_a_directive_is_placed_at_its_own_element(run, tmp_path):
+    path = tmp_path / "r.urdf.xacro"
+    path.write_text('<?xml version="1.0"?>\n<robot name="r" '
+                    'xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                    '  <xacro:if value="true"><link name="b"/></xacro:if>\n'
+                    '  <link name="${missing}"/>\n</robot>\n')
+    assert_one_line_error(run("expand", path), 2, f"{path}:4:3", "missing")
