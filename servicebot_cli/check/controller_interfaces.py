@@ -66,6 +66,8 @@ def claims(controller_type: str, params: yaml.MappingNode) -> Iterator[Claim]:
     elif controller_type in _GROUPS:
         for joint in _scalars(get(params, "joints")):
             yield Claim("command", _GROUPS[controller_type], "joints", joint, joint)
+    elif controller_type == "pid_controller/PidController":
+        yield from _pid(params)
 
 
 def _diff_drive(params: yaml.MappingNode) -> Iterator[Claim]:
@@ -85,6 +87,21 @@ def _diff_drive(params: yaml.MappingNode) -> Iterator[Claim]:
         for wheel in _scalars(get(params, key)):
             yield Claim("command", "velocity", key, wheel, wheel)
             yield Claim("state", state, key, wheel, wheel, humble_only)
+
+
+def _pid(params: yaml.MappingNode) -> Iterator[Claim]:
+    """pid_controller's claims: its ``command_interface`` of each of its ``dof_names``.
+
+    And its ``reference_and_state_interfaces`` as states, unless it takes the measured states
+    from a topic (``use_external_measured_states``).
+    """
+    external = get(params, "use_external_measured_states")
+    states = [] if isinstance(external, yaml.ScalarNode) and external.value in RCL_TRUE \
+        else _scalars(get(params, "reference_and_state_interfaces"))
+    for command in _scalars(get(params, "command_interface")):
+        yield from _each(params, "dof_names", "command", command)
+    for state in states:
+        yield from _each(params, "dof_names", "state", state)
 
 
 def _trajectory(params: yaml.MappingNode) -> Iterator[Claim]:

@@ -171,7 +171,15 @@ def _at(display: str, mark: yaml.Mark) -> tuple[str, int, int]:
     return (display, mark.line + 1, mark.column + 1)
 
 
-JOINT_KEYS = ("left_wheel_names", "right_wheel_names", "joints", "joint")
+JOINT_KEYS = (
+    "left_wheel_names", "right_wheel_names", "joints", "joint",
+    # steering_controllers_library (Ackermann, bicycle, tricycle steering): Jazzy, Humble
+    "traction_joints_names", "steering_joints_names", "rear_wheels_names", "front_wheels_names",
+    "traction_joint_name", "steering_joint_name",  # tricycle_controller
+    "wheel_names",  # omni_wheel_drive_controller
+    *(f"{corner}_wheel_command_joint_name" for corner in (  # mecanum_drive_controller
+        "front_left", "front_right", "rear_left", "rear_right")),
+)
 """The parameters of ros2_controllers that name URDF joints."""
 
 
@@ -271,9 +279,13 @@ def type_nodes(sections: Sections) -> dict[str, yaml.ScalarNode]:
 
 
 def get(node: yaml.Node | None, key: str) -> yaml.Node | None:
-    """The value of ``key`` in the mapping ``node``; None when it is not one, or has none."""
+    """The value of ``key`` in the mapping ``node``; None when it is not one, or has none.
+
+    A key written twice has its last value, as rcl reads it.
+    """
+    found = None
     if isinstance(node, yaml.MappingNode):
         for k, v in node.value:
             if isinstance(k, yaml.ScalarNode) and k.value == key:
-                return v
-    return None
+                found = v
+    return found

@@ -50,7 +50,7 @@ ROS2_CONTROLLERS = frozenset((
 
 def check(found: Sections, display: str, robot: RobotDescription) -> Iterator[Issue]:
     """Every issue of the controller sections ``found`` (of file ``display``) against ``robot``."""
-    checker = _Checker(display, robot, frozenset(found))
+    checker = _Checker(display, robot, found)
     types = controller_types(found)
     for name, node in type_nodes(found).items():
         typo = misspelled_type(node, name, display)
@@ -94,10 +94,11 @@ def _number(node: yaml.Node | None) -> float | None:
 
 class _Checker:
     def __init__(self, display: str, robot: RobotDescription,
-                 controllers: frozenset[str] = frozenset()) -> None:
+                 sections: Sections | None = None) -> None:
         self.display = display
         self.robot = robot
-        self.controllers = controllers
+        self.sections = sections or {}
+        self.controllers = frozenset(self.sections)
         self.joints = {j.name: j for j in robot.joints}
         self._geometry: DriveGeometry | None | str = None
         self._exported: dict[str, dict[str, list[str]]] | None = None
@@ -161,6 +162,11 @@ class _Checker:
                 yield Issue("SB601", f"{section}.{key} must be a list of joint names",
                             where=self.where(item))
                 continue
+            reference = self.unexported_reference(str(item.value))
+            if reference is not None:
+                yield Issue("SB602", f"{section}.{key}: '{item.value}' names {reference}",
+                            where=self.where(item))
+                continue
             if self.not_a_joint(item.value):
                 continue
             joint = self.joints.get(item.value)
@@ -203,9 +209,13 @@ class _Checker:
             return
         absent: dict[str, Claim] = {}
         lacking: dict[tuple[str, str, int], list[Claim]] = {}
+        unknown_dofs: dict[str, Claim] = {}
         for claim in claims(controller_type, params):
             name = str(claim.joint.value)
             joint = self.joints.get(name)
+            if joint is None and claim.key == "dof_names" and name not in exported \
+                    and not self.not_a_joint(name):
+                unknown_dofs.setdefault(name, claim)
             if joint is None or not joint.movable or _substituted(claim.interface) \
                     or self.not_a_joint(name):
                 continue
@@ -214,6 +224,11 @@ class _Checker:
             elif claim.interface not in exported[name][claim.kind]:
                 lacking.setdefault((claim.kind, claim.interface, id(claim.named_at)),
                                    []).append(claim)
+        for name, claim in unknown_dofs.items():
+            hint = str(NameNotFound.for_name(name, [*self.joints, *exported])).split("; ", 1)
+            yield Issue("SB602", f"{section}.dof_names: '{name}' is no joint and no "
+                        f"<ros2_control> component of {self.robot.display}: its interfaces do "
+                        f"not exist; {hint[-1]}", where=self.where(claim.joint))
         for name, claim in absent.items():
             yield Issue("SB607", f"{section}.{claim.key}: joint '{name}' is in no "
                         f"<ros2_control> of {self.robot.display}: the hardware exports none of "
@@ -249,6 +264,24 @@ class _Checker:
         which launch_pal's ``parse_parametric_yaml`` rewrites).
         """
         return _substituted(name) or name.partition("/")[0] in self.controllers
+
+    def unexported_reference(self, name: str) -> str | None:
+        """Why a chained reference ``CONTROLLER/DOF`` names no reference that controller has.
+
+        A chainable controller with ``dof_names`` (pid_controller) exports a reference
+        interface per name: ``pid_controller_left_wheel_joint/left_wheel_joint``. None when
+        the reference is one of them, or its controller names no dof_names here.
+        """
+        head, slash, rest = name.partition("/")
+        if not slash or head not in self.controllers or _substituted(name):
+            return None
+        dofs = [str(item.value) for section in self.sections.get(head, [])
+                if isinstance(node := get(section, "dof_names"), yaml.SequenceNode)
+                for item in node.value if isinstance(item, yaml.ScalarNode)]
+        if not dofs or rest.partition("/")[0] in dofs:
+            return None
+        return (f"a reference of controller '{head}', which exports references of its "
+                f"dof_names only ({', '.join(dofs)})")
 
     def joint_of(self, name: str) -> str:
         """The joint a chain of controller references ends at, or ``name`` itself.

@@ -265,3 +265,37 @@ def test_a_separation_just_off_names_the_value_that_nearly_matched(run, tmp_path
                  "--format", "json", "--isolated", env=NO_ROS)
     (found,) = findings(result.stdout)
     assert found["code"] == "SB604" and stated in found["message"], found["message"]
+
+
+CHAINED = SRC / "example_16" / "bringup" / "config" / "diffbot_chained_controllers.yaml"
+CARLIKE = SRC / "example_11" / "bringup" / "config" / "carlikebot_controllers.yaml"
+
+
+@pytest.mark.parametrize(("example", "before", "after", "code", "says"), [
+    # a reference of a chained pid_controller that it does not export
+    ("example_16", "pid_controller_left_wheel_joint/left_wheel_joint\"",
+     "pid_controller_left_wheel_joint/left_wheel_jiont\"", "SB602",
+     "which exports references of its dof_names only (left_wheel_joint)"),
+    # a pid_controller's dof that is no joint
+    ("example_16", "dof_names:\n      - left_wheel_joint", "dof_names:\n      - left_wheel_jiont",
+     "SB602", "'left_wheel_jiont' is no joint and no <ros2_control> component"),
+    # a command interface the pid's joint does not export
+    ("example_16", "command_interface: velocity", "command_interface: effort", "SB607",
+     "claims the command interface 'effort' of joint 'left_wheel_joint'"),
+    # steering_controllers_library's joints are joints
+    ("example_11", "virtual_rear_wheel_joint", "virtual_rear_wheel_jiont", "SB602",
+     "joint 'virtual_rear_wheel_jiont' is not in"),
+])
+def test_mistakes_in_real_chained_and_steering_controllers_are_found(
+        run, installed, tmp_path, example, before, after, code, says):
+    urdf_name, args, yaml_name, _ = EXAMPLES[example]
+    source = CHAINED if example == "example_16" else CARLIKE
+    text = source.read_text()
+    assert before in text, before
+    broken = tmp_path / yaml_name
+    broken.write_text(text.replace(before, after, 1))
+    result = run("check", "controllers", broken, "--urdf",
+                 SRC / example / "description" / "urdf" / urdf_name, *args, *installed,
+                 "--format", "json", "--isolated", env=NO_ROS)
+    found = [f for f in findings(result.stdout) if f["code"] == code]
+    assert any(says in str(f["message"]) for f in found), result.stdout
