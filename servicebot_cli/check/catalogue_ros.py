@@ -131,15 +131,18 @@ ROS_RULES = (
          "interface of their type. A URDF without <ros2_control> joints is not judged: its "
          "hardware is described elsewhere.",
          "Export the interface in the joint's <ros2_control> entry, or claim one it exports."),
-    Rule("SB608", "controller-parameter-type", E,
-         "A controller parameter of a type rcl reads and the controller refuses",
+    Rule("SB608", "controller-parameter", E,
+         "A controller parameter the controller refuses: its type, or its value",
          "rcl types each value by its text: a boolean word (true, on, y...), an integer, a "
          "floating-point number, else a string; a quoted value is a string, and a list takes "
          "its items' one type. A list that mixes types (0.001 beside 0; joints [x, y, z], "
          "where y is a boolean) makes rcl refuse the whole file. ros2_controllers declare "
          "each parameter's type and refuse another at configure (\"Wrong parameter type\"): "
          "wheel_separation \"0.10\" or 1, a wheel list written as one name. A type a "
-         "letter or two off a ros2_controllers plugin is no class pluginlib can load.",
+         "letter or two off a ros2_controllers plugin is no class pluginlib can load. "
+         "JointTrajectoryController validates its lists (unique, not empty, known "
+         "interfaces; no velocity state without position), ForwardCommandController needs "
+         "an interface_name.",
          "Write the value in the declared type: 1.0 for a double, no quotes for a number, a "
          "list for an array."),
     # -- model -----------------------------------------------------------------------------------

@@ -114,7 +114,8 @@ def _trajectory(params: yaml.MappingNode) -> Iterator[Claim]:
     for interface in _scalars(get(params, "command_interfaces")):
         yield from _each(params, commanded, "command", interface)
     for interface in _scalars(get(params, "state_interfaces")):
-        yield from _each(params, "joints", "state", interface)
+        if interface.value in ("position", "velocity", "acceleration"):  # it reads no other
+            yield from _each(params, "joints", "state", interface)
 
 
 def _each(params: yaml.MappingNode, key: str, kind: str,

@@ -229,3 +229,61 @@ def misspelled_type(node: yaml.ScalarNode, section: str, display: str) -> Issue 
         return None
     return Issue("SB608", f"{section}.type '{written}' is no controller pluginlib can load; did "
                  f"you mean '{close[0]}'?", where=_where(display, node), fix=f"type: {close[0]}")
+
+
+_JTC = "joint_trajectory_controller/JointTrajectoryController"
+_JTC_LISTS = {  # each list: unique, not empty, and of these (its parameters' validation)
+    "joints": None,
+    "command_interfaces": ("position", "velocity", "acceleration", "effort"),
+    "state_interfaces": ("position", "velocity", "acceleration"),
+}
+
+
+def validated_values(controller_type: str | None, params: yaml.MappingNode, section: str,
+                     display: str) -> Iterator[Issue]:
+    """SB608 for values a controller's parameter validation refuses at configure.
+
+    JointTrajectoryController: its joints and interfaces unique and not empty, command
+    interfaces of position, velocity, acceleration and effort, state interfaces of position,
+    velocity and acceleration, and no velocity state without position nor acceleration
+    without both (state_interface_type_combinations). ForwardCommandController: an
+    interface_name.
+    """
+    if controller_type == "forward_command_controller/ForwardCommandController":
+        node = _last(params, "interface_name")
+        if node is None or (isinstance(node, yaml.ScalarNode) and not str(node.value).strip()):
+            yield Issue("SB608", f"{section}: no interface_name; ForwardCommandController "
+                        "refuses to configure without one", where=_where(display, node or params),
+                        fix="interface_name: position")
+    if controller_type != _JTC:
+        return
+    for key, allowed in _JTC_LISTS.items():
+        node = _last(params, key)
+        if node is None or _filled_in(node) or not isinstance(node, yaml.SequenceNode):
+            continue  # absent: the empty default, which SB601-SB607 and rcl see otherwise
+        names = [str(i.value) for i in node.value if isinstance(i, yaml.ScalarNode)]
+        twice = next((n for k, n in enumerate(names) if n in names[:k]), None)
+        if not names:
+            problem = "is empty"
+        elif twice is not None:
+            problem = f"names '{twice}' twice"
+        elif allowed and (odd := [n for n in names if n not in allowed]):
+            problem = f"holds '{odd[0]}', which is none of {', '.join(allowed)}"
+        elif key == "state_interfaces" and "velocity" in names and "position" not in names:
+            problem = "holds velocity without position"
+        elif key == "state_interfaces" and "acceleration" in names \
+                and not {"position", "velocity"} <= set(names):
+            problem = "holds acceleration without both position and velocity"
+        else:
+            continue
+        yield Issue("SB608", f"{section}.{key} {problem}: JointTrajectoryController refuses "
+                    "it at configure", where=_where(display, node))
+
+
+def _last(params: yaml.MappingNode, dotted: str) -> yaml.Node | None:
+    """The value of the parameter ``dotted`` (the last one written), or None."""
+    found = None
+    for key, node in _flat(params):
+        if key == dotted:
+            found = node
+    return found

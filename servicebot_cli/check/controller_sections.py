@@ -110,9 +110,34 @@ def file_issues(text: str, display: str) -> list[Issue]:
                             where=_at(display, starts[1].start_mark), severity=Severity.WARNING,
                             fix="keep one document"))
     root = _composed(text)
-    issues += [i for i in (_misspelled_parameters(root, display), _key_not_a_name(root, display))
-               if i is not None]
+    issues += [i for i in (_misspelled_parameters(root, display), _key_not_a_name(root, display),
+                           _key_twice(root, display)) if i is not None]
     return issues
+
+
+def _key_twice(root: yaml.Node | None, display: str) -> Issue | None:
+    """SB601 (a warning) for the first key written twice in one mapping: rcl keeps the last."""
+    stack, seen = [root], set()
+    while stack:
+        node = stack.pop()
+        if node is None or id(node) in seen:
+            continue
+        seen.add(id(node))
+        if isinstance(node, yaml.MappingNode):
+            first: dict[str, yaml.Node] = {}
+            for key, value in node.value:
+                if isinstance(key, yaml.ScalarNode):
+                    if key.value in first and key.value != "<<":
+                        return Issue("SB601", f"'{key.value}' is written twice in one mapping "
+                                     f"(first at line {first[key.value].start_mark.line + 1}): "
+                                     "rcl keeps the values of the last one",
+                                     where=_at(display, key.start_mark),
+                                     severity=Severity.WARNING, fix="keep one of the two")
+                    first.setdefault(str(key.value), key)
+                stack.append(value)
+        elif isinstance(node, yaml.SequenceNode):
+            stack.extend(node.value)
+    return None
 
 
 def _misspelled_parameters(root: yaml.Node | None, display: str) -> Issue | None:
@@ -227,14 +252,21 @@ def _collect(root: yaml.Node | None, depth: int,
     found: dict[str, list[tuple[bool, yaml.MappingNode]]] = {}
     if not isinstance(root, yaml.MappingNode) or depth > _NAMESPACE_DEPTH:
         return found
+    here: dict[str, int] = {}  # a key of this mapping written again: rcl merges, last wins
     for key, value in root.value:
         if not isinstance(key, yaml.ScalarNode):
             continue  # a list or mapping as a key: file_issues says rcl refuses it
         text = str(key.value)
         params = get(value, "ros__parameters")
         if isinstance(params, yaml.MappingNode):
-            found.setdefault(text.rstrip("/").rpartition("/")[2], []).append(
-                (wild or "**" in text, params))
+            name = text.rstrip("/").rpartition("/")[2]
+            sections = found.setdefault(name, [])
+            if text in here:
+                kept_wild, kept = sections[here[text]]
+                sections[here[text]] = (kept_wild, _merged([kept, params]))
+                continue
+            here[text] = len(sections)
+            sections.append((wild or "**" in text, params))
         elif isinstance(value, yaml.MappingNode):
             for name, inner in _collect(value, depth + 1, wild or "**" in text).items():
                 found.setdefault(name, []).extend(inner)

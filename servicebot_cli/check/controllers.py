@@ -11,7 +11,12 @@ from typing import TYPE_CHECKING
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
-from servicebot_cli.check.controller_params import declared_types, misspelled_type, mixed_lists
+from servicebot_cli.check.controller_params import (
+    declared_types,
+    misspelled_type,
+    mixed_lists,
+    validated_values,
+)
 from servicebot_cli.check.controller_sections import (
     JOINT_KEYS,
     Sections,
@@ -60,6 +65,7 @@ def check(found: Sections, display: str, robot: RobotDescription) -> Iterator[Is
         for section in params:
             yield from mixed_lists(section, name, display)
             yield from declared_types(types.get(name), section, name, display)
+            yield from validated_values(types.get(name), section, name, display)
         if name != "controller_manager" and _names_joints(types.get(name)):
             for section in checker.for_this_robot(params):
                 yield from checker.section(name, section)

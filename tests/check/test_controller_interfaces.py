@@ -149,8 +149,11 @@ def test_gazebos_pid_interfaces_are_exported_under_the_plain_names(run, tmp_path
     claiming = BUNDLED.replace("    command_interfaces:\n      - position\n",
                                "    command_interfaces:\n      - position_pid\n")
     code, found = _check(run, tmp_path, claiming, gazebo)
-    assert code == 1 and found[0]["fix"] == ("claim 'position': gazebo_ros2_control exports "
-                                             "its position_pid loop under that name")
+    (claim,) = [f for f in found if f["code"] == "SB607"]
+    assert code == 1 and claim["fix"] == ("claim 'position': gazebo_ros2_control exports "
+                                          "its position_pid loop under that name")
+    # and JointTrajectoryController's own validation refuses the name (SB608)
+    assert any(f["code"] == "SB608" and "'position_pid'" in str(f["message"]) for f in found)
 
 
 def test_a_null_interface_name_claims_nothing(run, tmp_path):
