@@ -173,6 +173,8 @@ def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> T
         drive = None
         notes.append(str(exc).split(": ", 1)[-1])
     # no drive: its wheels (one side's, or drawn as meshes only) are still no arm
+    if drive is not None and (unequal := t.unequal_wheels(drive)) is not None:
+        notes.append(unequal)
     wheels = {w.joint for w in drive.wheels} if drive else set(
         loose_wheels(robot, kinematic_poses(robot)))
     chassis = frozenset(chassis_joints(robot, sorted(wheels)))

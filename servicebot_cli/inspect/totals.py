@@ -223,6 +223,17 @@ def _adds_no_reach(joint: Joint, points: list[FloatArray], i: int,
     return norm > 0 and abs(float(axis @ segment)) / (norm * length) >= _PARALLEL
 
 
+def unequal_wheels(drive: DriveGeometry) -> str | None:
+    """A note when the drive wheels' radii differ by more than 1 %, or None."""
+    radii = [w.radius_m for w in drive.wheels]
+    if max(radii) <= min(radii) * 1.01:
+        return None
+    listed = ", ".join(f"{w.joint} {clean(w.radius_m):g} m" for w in drive.wheels)
+    return (f"the drive wheels' radii differ ({listed}): the numbers here use their mean, "
+            f"{clean(drive.wheel_radius_m):g} m, and such a base curves when both sides "
+            "turn at one speed")
+
+
 def drive_info(drive: DriveGeometry) -> DriveInfo:
     """The drive's numbers, with the wheelbase and top speeds the wheel limits allow."""
     xs = [w.position_m[0] for w in drive.wheels]

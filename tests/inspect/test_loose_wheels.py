@@ -45,3 +45,22 @@ def test_an_arm_whose_shoulder_turns_freely_is_still_an_arm(tmp_path):
     out = _totals(tmp_path, WHEEL.format(side="left", y=0.2) + ARM)
     assert "degrees of freedom     3: 1 wheel + 2 arm" in out
     assert "arm reach" in out and "shoulder to hand" in out
+
+
+CYLINDER_WHEEL = ('<link name="{side}_wheel"><collision><origin rpy="1.5708 0 0"/><geometry>'
+                  '<cylinder radius="{radius}" length="0.02"/></geometry></collision></link>'
+                  '<joint name="{side}_wheel_joint" type="continuous"><parent link="base_link"/>'
+                  '<child link="{side}_wheel"/><origin xyz="0 {y} 0"/><axis xyz="0 1 0"/>'
+                  '<limit effort="1" velocity="20"/></joint>')
+
+
+def test_wheels_of_unequal_radii_are_named_in_a_note(tmp_path):
+    """Their mean was shown as the wheel radius, without a word (tracer_mini's 0.01-0.05 m)."""
+    out = _totals(tmp_path, CYLINDER_WHEEL.format(side="left", radius=0.05, y=0.2)
+                  + CYLINDER_WHEEL.format(side="right", radius=0.1, y=-0.2))
+    assert "wheel radius              0.075 m" in out
+    assert "radii differ (left_wheel_joint 0.05 m, right_wheel_joint 0.1 m)" in \
+        " ".join(out.split())
+    same = _totals(tmp_path, CYLINDER_WHEEL.format(side="left", radius=0.05, y=0.2)
+                   + CYLINDER_WHEEL.format(side="right", radius=0.05, y=-0.2))
+    assert "radii differ" not in same
