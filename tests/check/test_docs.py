@@ -37,3 +37,10 @@ def test_pre_commit_hook_runs_check(tmp_path):
     (tmp_path / "broken.urdf").write_text('<robot name="r"><link name="a"/><link name="a"/>'
                                           "</robot>")
     assert run_servicebot(*args, cwd=tmp_path).returncode == 1
+
+
+def test_readme_counts_the_rules_there_are():
+    from servicebot_cli.check.catalogue import RULES
+
+    readme = (REPO / "README.md").read_text()
+    assert f"- {len(RULES)} rules, each with a code" in readme
