@@ -113,7 +113,9 @@ ROS_RULES = (
     Rule("SB604", "wheel-separation", E, "wheel_separation disagrees with the URDF's wheels",
          "Turn rates and odometry scale by the separation of the left and right wheels; the "
          "URDF's wheel positions imply another value. Beyond 10 % an error; from 1 to 10 % "
-         "a warning, since teams calibrate odometry to the floor that way.",
+         "a warning, since teams calibrate odometry to the floor that way. On a base with "
+         "two or more wheels a side, which skid when it turns, a wider track (up to twice "
+         "the wheels') is its effective one: a warning.",
          "Use the value the URDF implies, or fix the URDF."),
     Rule("SB605", "wheel-side", E, "A left wheel on the right, or a right wheel on the left",
          "The URDF puts the wheel on the other side of the robot (y > 0 is left, REP 103).",

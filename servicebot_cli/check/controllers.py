@@ -37,6 +37,8 @@ TOLERANCE = 0.01
 """Relative difference allowed between the YAML and the URDF's wheel numbers."""
 CALIBRATED = 0.10
 """Within this, a wheel value off the URDF's may be odometry calibrated to the floor: a warning."""
+SKID_TRACK = 2.0
+"""A skid-steer base's effective track may be up to this times its wheels' (a warning)."""
 
 ROS2_CONTROLLERS = frozenset((
     "ackermann_steering_controller", "admittance_controller", "bicycle_steering_controller",
@@ -321,8 +323,9 @@ class _Checker:
         radius_m, track_m = self.driven(params, geometry)
         yield from self.value(section, params, "wheel_radius", radius_m, "SB603",
                               ("left_wheel_radius_multiplier",))
+        per_side = [sum(w.side == side for w in geometry.wheels) for side in ("left", "right")]
         yield from self.value(section, params, "wheel_separation", track_m, "SB604",
-                              ("wheel_separation_multiplier",))
+                              ("wheel_separation_multiplier",), skid=min(per_side) >= 2)
 
     def driven(self, params: yaml.MappingNode, geometry: DriveGeometry) -> tuple[float, float]:
         """Wheel radius and track of the wheels the controller drives, as far as it names them.
@@ -343,7 +346,14 @@ class _Checker:
         return radius_m, sum(sides[0]) / len(sides[0]) - sum(sides[1]) / len(sides[1])
 
     def value(self, section: str, params: yaml.MappingNode, key: str, expected: float,
-              code: str, multipliers: tuple[str, ...]) -> Iterator[Issue]:
+              code: str, multipliers: tuple[str, ...], skid: bool = False) -> Iterator[Issue]:
+        """SB603/SB604 where ``key`` is not the URDF's ``expected``.
+
+        ``skid``: the robot has two or more wheels a side, which skid when it turns; a
+        wider effective track, up to :data:`SKID_TRACK` times the wheels', is how its
+        odometry is calibrated (Clearpath's Warthog writes 1.5 m on a 1.14 m track, the
+        Jackal multiplies by 1.5): a warning.
+        """
         node = get(params, key)
         if isinstance(node, yaml.ScalarNode) and _substituted(str(node.value)):
             return  # the launch file fills it in
@@ -364,11 +374,14 @@ class _Checker:
         # A few per cent is how teams calibrate odometry to the floor (limo's 0.172 m on its
         # wheels' 0.175 m); past that, the wrong wheels or the wrong unit.
         calibrated = off <= CALIBRATED * abs(expected)
+        skidding = skid and expected < max(given, effective) <= SKID_TRACK * expected
         yield Issue(code, f"{section}: {key} {_stated(given, effective, expected)} "
                     f"disagrees with the URDF's {expected:.6g} m"
-                    + (" (a calibration to the floor, if on purpose)" if calibrated else ""),
+                    + (" (a calibration to the floor, if on purpose)" if calibrated else
+                       " (a skid-steer base's effective track, if on purpose)" if skidding
+                       else ""),
                     where=self.where(node), fix=f"{key}: {expected:.6g}",
-                    severity=Severity.WARNING if calibrated else None)
+                    severity=Severity.WARNING if calibrated or skidding else None)
 
 
 def _interface_fix(kind: str, interface: str) -> str:

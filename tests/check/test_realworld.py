@@ -299,3 +299,30 @@ def test_mistakes_in_real_chained_and_steering_controllers_are_found(
                  "--format", "json", "--isolated", env=NO_ROS)
     found = [f for f in findings(result.stdout) if f["code"] == code]
     assert any(says in str(f["message"]) for f in found), result.stdout
+
+
+def test_a_skid_steer_track_written_wider_is_a_warning_a_two_wheel_one_an_error(run, installed,
+                                                                                tmp_path):
+    """Clearpath's Warthog writes wheel_separation 1.5 m on its wheels' 1.14 m track, the
+    effective track of a base whose four wheels skid when it turns; the Jackal writes the
+    same with a multiplier of 1.5, and passed. A two-wheel base has no such excuse."""
+    source = SRC / "clearpath_control" / "config" / "j100" / "control.yaml"
+    yaml = tmp_path / "control.yaml"
+    yaml.write_text(source.read_text().replace("wheel_separation: 0.37559",
+                                               "wheel_separation: 0.56").replace(
+        "wheel_separation_multiplier: 1.5", "wheel_separation_multiplier: 1.0"))
+    result = run("check", "controllers", yaml, "--urdf", ROBOTS["jackal"][0], *JACKAL_ARGS,
+                 "--format", "json", "--isolated", env=NO_ROS)
+    (found,) = findings(result.stdout)
+    assert (found["code"], found["severity"]) == ("SB604", "warning")
+    assert "a skid-steer base's effective track" in found["message"]
+    assert result.exit_code == 0
+    urdf_name, args, yaml_name, _ = EXAMPLES["example_2"]
+    two = tmp_path / yaml_name
+    two.write_text((SRC / "example_2" / "bringup" / "config" / yaml_name).read_text().replace(
+        "wheel_separation: 0.10", "wheel_separation: 0.15"))
+    result = run("check", "controllers", two, "--urdf",
+                 SRC / "example_2" / "description" / "urdf" / urdf_name, *args, *installed,
+                 "--format", "json", "--isolated", env=NO_ROS)
+    (wide,) = [f for f in findings(result.stdout) if f["code"] == "SB604"]
+    assert wide["severity"] == "error"
