@@ -7,6 +7,8 @@ makes the text no controllers file at all. Pure: YAML text in, nodes out.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.findings import Issue, Severity
@@ -117,27 +119,35 @@ def file_issues(text: str, display: str) -> list[Issue]:
 
 def _key_twice(root: yaml.Node | None, display: str) -> Issue | None:
     """SB601 (a warning) for the first key written twice in one mapping: rcl keeps the last."""
+    for node in _nodes(root):
+        if isinstance(node, yaml.MappingNode):
+            first: dict[str, yaml.Node] = {}
+            for key, _ in node.value:
+                if not isinstance(key, yaml.ScalarNode):
+                    continue
+                if key.value in first and key.value != "<<":
+                    return Issue("SB601", f"'{key.value}' is written twice in one mapping "
+                                 f"(first at line {first[key.value].start_mark.line + 1}): rcl "
+                                 "keeps the values of the last one",
+                                 where=_at(display, key.start_mark),
+                                 severity=Severity.WARNING, fix="keep one of the two")
+                first.setdefault(str(key.value), key)
+    return None
+
+
+def _nodes(root: yaml.Node | None) -> Iterator[yaml.Node]:
+    """Every node under ``root``, each once (an alias's target too), parents first."""
     stack, seen = [root], set()
     while stack:
         node = stack.pop()
         if node is None or id(node) in seen:
             continue
         seen.add(id(node))
+        yield node
         if isinstance(node, yaml.MappingNode):
-            first: dict[str, yaml.Node] = {}
-            for key, value in node.value:
-                if isinstance(key, yaml.ScalarNode):
-                    if key.value in first and key.value != "<<":
-                        return Issue("SB601", f"'{key.value}' is written twice in one mapping "
-                                     f"(first at line {first[key.value].start_mark.line + 1}): "
-                                     "rcl keeps the values of the last one",
-                                     where=_at(display, key.start_mark),
-                                     severity=Severity.WARNING, fix="keep one of the two")
-                    first.setdefault(str(key.value), key)
-                stack.append(value)
+            stack.extend(value for _, value in reversed(node.value))
         elif isinstance(node, yaml.SequenceNode):
-            stack.extend(node.value)
-    return None
+            stack.extend(reversed(node.value))
 
 
 def _misspelled_parameters(root: yaml.Node | None, display: str) -> Issue | None:
@@ -176,20 +186,8 @@ def _near_ros_parameters(root: yaml.Node | None, depth: int = 0) -> yaml.ScalarN
 
 def _collection_key(root: yaml.Node | None) -> yaml.Node | None:
     """The first key of a mapping under ``root`` that is a list or a mapping, if any."""
-    stack, seen = [root], set()
-    while stack:
-        node = stack.pop()
-        if node is None or id(node) in seen:
-            continue
-        seen.add(id(node))
-        if isinstance(node, yaml.MappingNode):
-            for key, value in node.value:
-                if not isinstance(key, yaml.ScalarNode):
-                    return key
-                stack.append(value)
-        elif isinstance(node, yaml.SequenceNode):
-            stack.extend(node.value)
-    return None
+    return next((key for node in _nodes(root) if isinstance(node, yaml.MappingNode)
+                 for key, _ in node.value if not isinstance(key, yaml.ScalarNode)), None)
 
 
 def _at(display: str, mark: yaml.Mark) -> tuple[str, int, int]:

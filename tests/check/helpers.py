@@ -36,3 +36,16 @@ def tetrahedron_stl(size: float) -> bytes:
         data += struct.pack("<3f", 0, 0, 0)
         data += b"".join(struct.pack("<3f", *corners[i]) for i in face) + b"\0\0"
     return data
+
+
+def check_controllers(run: Any, directory: Path, yaml_text: str,
+                      urdf: Path | None = None) -> tuple[int, list[dict[str, Any]]]:
+    """Exit code and findings of ``check controllers`` on ``yaml_text`` (written to
+    ``directory``) against ``urdf``, the bundled simulated robot by default."""
+    from tests.conftest import SIM_URDF
+
+    path = directory / "controllers.yaml"
+    path.write_text(yaml_text)
+    result = run("check", "controllers", path, "--urdf", urdf or SIM_URDF, "--format", "json",
+                 "--isolated")
+    return result.exit_code, findings(result.stdout)

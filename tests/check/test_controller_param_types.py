@@ -9,18 +9,15 @@ from __future__ import annotations
 
 import pytest
 
-from tests.check.helpers import findings
-from tests.conftest import REPO, SIM_URDF
+from tests.check.helpers import check_controllers
+from tests.conftest import REPO
 
 BUNDLED = (REPO / "robots" / "controllers.yaml").read_text()
 
 
 def _sb608(run, tmp_path, text: str) -> tuple[int, list[dict[str, object]]]:
-    path = tmp_path / "controllers.yaml"
-    path.write_text(text)
-    result = run("check", "controllers", path, "--urdf", SIM_URDF, "--format", "json",
-                 "--isolated")
-    return result.exit_code, [f for f in findings(result.stdout) if f["code"] == "SB608"]
+    code, found = check_controllers(run, tmp_path, text)
+    return code, [f for f in found if f["code"] == "SB608"]
 
 
 @pytest.mark.parametrize(("before", "after", "says", "fix"), [

@@ -10,20 +10,12 @@ from __future__ import annotations
 
 import pytest
 
-from tests.check.helpers import findings
-from tests.conftest import REPO, SIM_URDF
+from tests.check.helpers import check_controllers
+from tests.conftest import REPO
 
 BUNDLED = (REPO / "robots" / "controllers.yaml").read_text()
 STATES = "    state_interfaces:\n      - position\n      - velocity\n"
 COMMANDS = "    command_interfaces:\n      - position\n"
-
-
-def _check(run, tmp_path, text: str) -> tuple[int, list[dict[str, object]]]:
-    path = tmp_path / "controllers.yaml"
-    path.write_text(text)
-    result = run("check", "controllers", path, "--urdf", SIM_URDF, "--format", "json",
-                 "--isolated")
-    return result.exit_code, findings(result.stdout)
 
 
 @pytest.mark.parametrize(("before", "after", "says"), [
@@ -36,7 +28,7 @@ def _check(run, tmp_path, text: str) -> tuple[int, list[dict[str, object]]]:
 ])
 def test_a_trajectory_controller_list_it_refuses(run, tmp_path, before, after, says):
     assert before in BUNDLED
-    code, found = _check(run, tmp_path, BUNDLED.replace(before, after, 1))
+    code, found = check_controllers(run, tmp_path, BUNDLED.replace(before, after, 1))
     assert code == 1
     assert [f["code"] for f in found] == ["SB608"], found
     assert says in str(found[0]["message"])
@@ -46,18 +38,18 @@ def test_a_forward_command_controller_without_interface_name(run, tmp_path):
     text = BUNDLED.replace("    joint_state_broadcaster:\n",
                            "    fwd:\n      type: forward_command_controller/"
                            "ForwardCommandController\n    joint_state_broadcaster:\n")
-    code, found = _check(run, tmp_path, text + "\nfwd:\n  ros__parameters:\n"
+    code, found = check_controllers(run, tmp_path, text + "\nfwd:\n  ros__parameters:\n"
                          "    joints: [arm_base_to_link1]\n")
     assert code == 1 and [f["code"] for f in found] == ["SB608"]
     assert "no interface_name" in str(found[0]["message"])
-    code, found = _check(run, tmp_path, text + "\nfwd:\n  ros__parameters:\n"
+    code, found = check_controllers(run, tmp_path, text + "\nfwd:\n  ros__parameters:\n"
                          "    joints: [arm_base_to_link1]\n    interface_name: position\n")
     assert (code, found) == (0, [])
 
 
 def test_a_parameter_written_twice_keeps_its_last_value(run, tmp_path):
     """rcl keeps the second diff_controller section: its wheel names are checked."""
-    code, found = _check(run, tmp_path, BUNDLED + "\ndiff_controller:\n  ros__parameters:\n"
-                         "    left_wheel_names: [wheel_left]\n")
+    code, found = check_controllers(run, tmp_path, BUNDLED + "\ndiff_controller:\n"
+                                    "  ros__parameters:\n    left_wheel_names: [wheel_left]\n")
     codes = [(f["code"], f["severity"]) for f in found]
     assert ("SB601", "warning") in codes and ("SB602", "error") in codes and code == 1

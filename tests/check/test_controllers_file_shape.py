@@ -7,24 +7,16 @@ list or a mapping; it reads several documents as one file, which the spawner's
 
 from __future__ import annotations
 
-from tests.check.helpers import findings
-from tests.conftest import REPO, SIM_URDF
+from tests.check.helpers import check_controllers
+from tests.conftest import REPO
 
 BUNDLED = (REPO / "robots" / "controllers.yaml").read_text()
-
-
-def _check(run, tmp_path, text: str) -> tuple[int, list[dict[str, object]]]:
-    path = tmp_path / "controllers.yaml"
-    path.write_text(text)
-    result = run("check", "controllers", path, "--urdf", SIM_URDF, "--format", "json",
-                 "--isolated")
-    return result.exit_code, findings(result.stdout)
 
 
 def test_an_alias_is_refused_as_rcl_refuses_it(run, tmp_path):
     text = BUNDLED.replace("    wheel_separation: 0.54\n", "    wheel_separation: &track 0.54\n"
                            ).replace("    publish_rate: 50.0", "    publish_rate: *track")
-    code, found = _check(run, tmp_path, text)
+    code, found = check_controllers(run, tmp_path, text)
     (alias,) = [f for f in found if f["code"] == "SB601"]
     assert code == 1 and alias["severity"] == "error"
     assert "an alias (*track): rcl refuses the whole file" in str(alias["message"])
@@ -33,17 +25,18 @@ def test_an_alias_is_refused_as_rcl_refuses_it(run, tmp_path):
 
 def test_several_documents_are_read_as_one_with_a_warning(run, tmp_path):
     head, tail = BUNDLED.split("arm_controller:\n  ros__parameters:", 1)
-    code, found = _check(run, tmp_path, head + "---\narm_controller:\n  ros__parameters:" + tail)
+    code, found = check_controllers(run, tmp_path,
+                                    head + "---\narm_controller:\n  ros__parameters:" + tail)
     assert code == 0
     assert [(f["code"], f["severity"]) for f in found] == [("SB601", "warning")]
     assert "2 YAML documents (---)" in str(found[0]["message"])
-    code, found = _check(run, tmp_path, head + "---\narm_controller:\n  ros__parameters:"
+    code, found = check_controllers(run, tmp_path, head + "---\narm_controller:\n  ros__parameters:"
                          + tail.replace("arm_link3_to_link4", "arm_link3_to_link9"))
     assert code == 1 and "SB602" in {f["code"] for f in found}  # the second one is checked
 
 
 def test_a_key_that_is_a_list_is_named_not_printed_as_a_parser_object(run, tmp_path):
-    code, found = _check(run, tmp_path, BUNDLED + "? [a, b]\n: ros__parameters:\n"
+    code, found = check_controllers(run, tmp_path, BUNDLED + "? [a, b]\n: ros__parameters:\n"
                          "    joints: [jointQ]\n")
     assert code == 1
     messages = [str(f["message"]) for f in found]
@@ -54,19 +47,19 @@ def test_a_key_that_is_a_list_is_named_not_printed_as_a_parser_object(run, tmp_p
 def test_a_misspelled_ros_parameters_is_named(run, tmp_path):
     """rcl does not read 'ros_parameters' as the node's parameters: check said 'no controller
     here' (an info) and passed."""
-    code, found = _check(run, tmp_path, BUNDLED.replace(
+    code, found = check_controllers(run, tmp_path, BUNDLED.replace(
         "arm_controller:\n  ros__parameters:", "arm_controller:\n  ros_parameters:"))
     assert code == 1 and [f["code"] for f in found] == ["SB601"]
     assert "'ros_parameters' is not ros__parameters" in str(found[0]["message"])
 
 
 def test_a_controller_type_a_letter_off_is_no_plugin(run, tmp_path):
-    code, found = _check(run, tmp_path, BUNDLED.replace(
+    code, found = check_controllers(run, tmp_path, BUNDLED.replace(
         "type: diff_drive_controller/DiffDriveController",
         "type: diff_drive_controller/DiffDriveControler"))
     assert code == 1 and [f["code"] for f in found] == ["SB608"]
     assert str(found[0]["message"]).endswith(
         "did you mean 'diff_drive_controller/DiffDriveController'?")
-    code, found = _check(run, tmp_path, BUNDLED.replace(
+    code, found = check_controllers(run, tmp_path, BUNDLED.replace(
         "type: diff_drive_controller/DiffDriveController", "type: my_robot/BaseController"))
     assert code == 0 and found == []  # a third party's controller is not judged
