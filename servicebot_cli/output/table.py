@@ -7,6 +7,7 @@ the widest text columns are truncated with an ellipsis, never the numbers.
 from __future__ import annotations
 
 import math
+import unicodedata
 from collections.abc import Sequence
 
 ELLIPSIS = "…"
@@ -38,6 +39,28 @@ def _cell(value: object) -> str:
     return str(value)
 
 
+def width(text: str) -> int:
+    """Columns ``text`` takes in a terminal.
+
+    Two for a wide character (CJK), none for a combining mark, one for the others.
+    """
+    if text.isascii():
+        return len(text)
+    return sum(0 if unicodedata.combining(c) else 2 if unicodedata.east_asian_width(c) in "WF"
+               else 1 for c in text)
+
+
+def _cut(text: str, columns: int) -> str:
+    """``text`` cut to ``columns`` terminal columns, an ellipsis last."""
+    kept, used = [], 0
+    for char in text:
+        used += width(char)
+        if used > columns - 1:
+            break
+        kept.append(char)
+    return "".join(kept) + ELLIPSIS
+
+
 def _is_numeric(column: Sequence[object]) -> bool:
     present = [v for v in column if v is not None]
     return bool(present) and all(
@@ -61,7 +84,7 @@ def table(
     columns = list(zip(*rows, strict=True)) if rows else [() for _ in headers]
     numeric = [_is_numeric(col) for col in columns]
     cells = [[_cell(v) for v in row] for row in rows]
-    widths = [max([len(h), *(len(r[i]) for r in cells)]) for i, h in enumerate(headers)]
+    widths = [max([width(h), *(width(r[i]) for r in cells)]) for i, h in enumerate(headers)]
     overflow = sum(widths) + gap * (len(widths) - 1) - max_width
     while overflow > 0:
         candidates = [i for i in range(len(widths)) if not numeric[i] and widths[i] > 8
@@ -77,9 +100,10 @@ def table(
         overflow -= cut
 
     def fit(text: str, i: int) -> str:
-        if len(text) > widths[i]:
-            text = text[: widths[i] - 1] + ELLIPSIS
-        return text.rjust(widths[i]) if numeric[i] else text.ljust(widths[i])
+        if width(text) > widths[i]:
+            text = _cut(text, widths[i])
+        pad = " " * (widths[i] - width(text))
+        return pad + text if numeric[i] else text + pad
 
     spacer = " " * gap
     lines = [spacer.join(fit(h, i) for i, h in enumerate(headers)).rstrip()]

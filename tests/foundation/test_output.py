@@ -73,3 +73,16 @@ def test_documents_with_floats_keep_pythons_float_text():
     assert dumps({"a": [1, {"b": 1e-05}]}) == '{\n  "a": [\n    1,\n    {\n      "b": 1e-05\n' \
         '    }\n  ]\n}\n'
     assert dumps({"a": "\x00\u2028é", "b": []}) == '{\n  "a": "\\u0000\u2028é",\n  "b": []\n}\n'
+
+
+def test_columns_line_up_with_wide_and_combining_characters():
+    """A CJK link name takes two terminal columns a character: the columns after it slid."""
+    from servicebot_cli.output.table import width
+
+    rows = [("底盘", 1.0), ("base_link", 2.5), ("cafe\u0301", 3),
+            ("アーム関節リンク名前がとても長い", 4)]
+    lines = table(["link", "mass [kg]"], rows, max_width=30)
+    ends = {width(line) for line in lines[2:]}
+    assert ends == {width(lines[1])}  # every row as wide as the rule: the numbers line up
+    assert lines[-1].split()[0].endswith("…") and width(lines[-1].split()[0]) <= 21
+    assert width("底盘") == 4 and width("cafe\u0301") == 4
