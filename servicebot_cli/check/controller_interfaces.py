@@ -98,10 +98,13 @@ def _pid(params: yaml.MappingNode) -> Iterator[Claim]:
     external = get(params, "use_external_measured_states")
     states = [] if isinstance(external, yaml.ScalarNode) and external.value in RCL_TRUE \
         else _scalars(get(params, "reference_and_state_interfaces"))
+    # its states (and references) are of reference_and_state_dof_names where it names them
+    state_dofs = "reference_and_state_dof_names" if _scalars(
+        get(params, "reference_and_state_dof_names")) else "dof_names"
     for command in _scalars(get(params, "command_interface")):
         yield from _each(params, "dof_names", "command", command)
     for state in states:
-        yield from _each(params, "dof_names", "state", state)
+        yield from _each(params, state_dofs, "state", state)
 
 
 def _trajectory(params: yaml.MappingNode) -> Iterator[Claim]:

@@ -19,7 +19,7 @@ from collections.abc import Iterator
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.controller_interfaces import RCL_FALSE, RCL_TRUE
-from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.findings import Issue, Severity
 
 _INTEGER = re.compile(r"[+-]?(?:0[xX][0-9a-fA-F]+|[0-9]+)")  # strtol, base 0
 _DOUBLE = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*(?:[eE][+-]?[0-9]+)?|\.[0-9]+(?:[eE][+-]?[0-9]+)?"
@@ -44,6 +44,18 @@ _DIFF_DRIVE = {
     "tf_frame_prefix": "string",
     **dict.fromkeys(_LIMITS, "double"), **dict.fromkeys(_LIMIT_FLAGS, "bool"),
 }
+_SOME_RELEASES = frozenset((
+    "use_stamped_vel", "wheels_per_side", "publish_rate", *_LIMIT_FLAGS,
+    *(f"{axis}.{limit}" for axis in ("linear.x", "angular.z") for limit in (
+        "max_deceleration", "min_deceleration", "max_acceleration_reverse",
+        "max_deceleration_reverse")),
+    "state_publish_rate", "open_loop_control",
+))
+"""Parameters some releases declare and others do not read: Humble's diff drive flags and
+stamped-velocity switch, JTC's state_publish_rate (gone from Jazzy), open_loop_control
+(gone from Kilted), the newer deceleration limits. A controller node takes an undeclared
+override as it is written and never reads it, so a wrong type there breaks only the
+releases that declare it: a warning."""
 _JOINT_GROUP = {"joints": "string_array"}
 DECLARED: dict[str, dict[str, str]] = {
     "diff_drive_controller/DiffDriveController": _DIFF_DRIVE,
@@ -124,9 +136,13 @@ def declared_types(controller_type: str | None, params: yaml.MappingNode, sectio
             fix = f"{key}: [{node.value}]" if wanted.endswith("_array") else _fix(node, wanted)
         else:
             what, fix = f"it as a {got.replace('_', ' ')}", None
+        some = key in _SOME_RELEASES
         yield Issue("SB608", f"{section}.{key}: rcl reads {what}, and {controller_type} "
-                    f"declares a {wanted.replace('_', ' ')}: it refuses the value at configure "
-                    "('Wrong parameter type')", where=_where(display, node), fix=fix)
+                    f"declares a {wanted.replace('_', ' ')}"
+                    + (" in the releases that read it (not all do)" if some else "")
+                    + ": it refuses the value at configure ('Wrong parameter type')",
+                    where=_where(display, node), fix=fix,
+                    severity=Severity.WARNING if some else None)
 
 
 def _filled_in(node: yaml.Node) -> bool:
@@ -240,16 +256,19 @@ _JTC_LISTS = {  # each list: unique, not empty, and of these (its parameters' va
 
 
 def validated_values(controller_type: str | None, params: yaml.MappingNode, section: str,
-                     display: str) -> Iterator[Issue]:
+                     display: str, siblings: tuple[yaml.MappingNode, ...] = ()
+                     ) -> Iterator[Issue]:
     """SB608 for values a controller's parameter validation refuses at configure.
 
     JointTrajectoryController: its joints and interfaces unique and not empty, command
     interfaces of position, velocity, acceleration and effort, state interfaces of position,
     velocity and acceleration, and no velocity state without position nor acceleration
     without both (state_interface_type_combinations). ForwardCommandController: an
-    interface_name.
+    interface_name (in this section or another that configures the same node, ``/fwd``
+    beside ``fwd``: ``siblings``).
     """
-    if controller_type == "forward_command_controller/ForwardCommandController":
+    if controller_type == "forward_command_controller/ForwardCommandController" and not any(
+            _last(other, "interface_name") is not None for other in siblings):
         node = _last(params, "interface_name")
         if node is None or (isinstance(node, yaml.ScalarNode) and not str(node.value).strip()):
             yield Issue("SB608", f"{section}: no interface_name; ForwardCommandController "

@@ -101,9 +101,13 @@ def file_issues(text: str, display: str) -> list[Issue]:
         return issues  # sections() says it is not YAML
     alias = next((e for e in events if isinstance(e, yaml.AliasEvent)), None)
     if alias is not None:
+        template = "${" in text  # launch_pal's parse_parametric_yaml rewrites it, aliases out
         issues.append(Issue("SB601", f"an alias (*{alias.anchor}): rcl refuses the whole file "
-                            "('Will not support aliasing'), so ros2_control_node cannot load it",
+                            "('Will not support aliasing'), so ros2_control_node cannot load it"
+                            + (" unless a launch file rewrites this template first (launch_pal's "
+                               "parse_parametric_yaml writes the values out)" if template else ""),
                             where=_at(display, alias.start_mark),
+                            severity=Severity.WARNING if template else None,
                             fix="write the values out where the alias stands"))
     starts = [e for e in events if isinstance(e, yaml.DocumentStartEvent)]
     if len(starts) > 1:
@@ -118,8 +122,15 @@ def file_issues(text: str, display: str) -> list[Issue]:
 
 
 def _key_twice(root: yaml.Node | None, display: str) -> Issue | None:
-    """SB601 (a warning) for the first key written twice in one mapping: rcl keeps the last."""
-    for node in _nodes(root):
+    """SB601 (a warning) for the first parameter written twice in one mapping.
+
+    rcl keeps the last value of a parameter; a node or namespace key written twice
+    (``/**`` twice) is one node, whose blocks rcl reads both.
+    """
+    parameters = [value for node in _nodes(root) if isinstance(node, yaml.MappingNode)
+                  for key, value in node.value
+                  if isinstance(key, yaml.ScalarNode) and key.value == "ros__parameters"]
+    for node in (inner for block in parameters for inner in _nodes(block)):
         if isinstance(node, yaml.MappingNode):
             first: dict[str, yaml.Node] = {}
             for key, _ in node.value:

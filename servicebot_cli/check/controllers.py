@@ -67,7 +67,8 @@ def check(found: Sections, display: str, robot: RobotDescription) -> Iterator[Is
         for section in params:
             yield from mixed_lists(section, name, display)
             yield from declared_types(types.get(name), section, name, display)
-            yield from validated_values(types.get(name), section, name, display)
+            yield from validated_values(types.get(name), section, name, display,
+                                        tuple(other for other in params if other is not section))
         if name != "controller_manager" and _names_joints(types.get(name)):
             for section in checker.for_this_robot(params):
                 yield from checker.section(name, section)
@@ -173,11 +174,13 @@ class _Checker:
             reference = self.unexported_reference(str(item.value))
             if reference is not None:
                 yield Issue("SB602", f"{section}.{key}: '{item.value}' names {reference}",
-                            where=self.where(item))
+                            where=self.where(item), fix="name one of those references")
                 continue
             if self.not_a_joint(item.value):
                 continue
             joint = self.joints.get(item.value)
+            if joint is None and item.value in self.exported():  # a gpio or sensor component
+                continue
             if joint is None:
                 hint = str(NameNotFound.for_name(item.value, list(self.joints))).split("; ", 1)
                 yield Issue("SB602", f"{section}.{key}: joint '{item.value}' is not in "
@@ -193,8 +196,8 @@ class _Checker:
         """
         if self._exported is None:
             self._exported = {}
-            for block in self.robot.ros2_control:
-                for item in block.joints:
+            for block in self.robot.ros2_control:  # a gpio's or sensor's too: component/name
+                for item in (*block.joints, *block.sensors, *block.gpios):
                     kinds = self._exported.setdefault(item.name, {"command": [], "state": []})
                     for kind, interfaces in (("command", item.command_interfaces),
                                              ("state", item.state_interfaces)):
@@ -221,7 +224,7 @@ class _Checker:
         for claim in claims(controller_type, params):
             name = str(claim.joint.value)
             joint = self.joints.get(name)
-            if joint is None and claim.key == "dof_names" and name not in exported \
+            if joint is None and claim.key.endswith("dof_names") and name not in exported \
                     and not self.not_a_joint(name):
                 unknown_dofs.setdefault(name, claim)
             if joint is None or not joint.movable or _substituted(claim.interface) \
@@ -234,9 +237,10 @@ class _Checker:
                                    []).append(claim)
         for name, claim in unknown_dofs.items():
             hint = str(NameNotFound.for_name(name, [*self.joints, *exported])).split("; ", 1)
-            yield Issue("SB602", f"{section}.dof_names: '{name}' is no joint and no "
+            yield Issue("SB602", f"{section}.{claim.key}: '{name}' is no joint and no "
                         f"<ros2_control> component of {self.robot.display}: its interfaces do "
-                        f"not exist; {hint[-1]}", where=self.where(claim.joint))
+                        f"not exist; {hint[-1]}", where=self.where(claim.joint),
+                        fix="name a joint or a component of the URDF's <ros2_control>")
         for name, claim in absent.items():
             yield Issue("SB607", f"{section}.{claim.key}: joint '{name}' is in no "
                         f"<ros2_control> of {self.robot.display}: the hardware exports none of "
@@ -283,13 +287,17 @@ class _Checker:
         head, slash, rest = name.partition("/")
         if not slash or head not in self.controllers or _substituted(name):
             return None
-        dofs = [str(item.value) for section in self.sections.get(head, [])
-                if isinstance(node := get(section, "dof_names"), yaml.SequenceNode)
-                for item in node.value if isinstance(item, yaml.ScalarNode)]
+        dofs: list[str] = []
+        for section in self.sections.get(head, []):  # its state dofs where it names them
+            for key in ("reference_and_state_dof_names", "dof_names"):
+                node = get(section, key)
+                if isinstance(node, yaml.SequenceNode) and node.value:
+                    dofs += [str(i.value) for i in node.value if isinstance(i, yaml.ScalarNode)]
+                    break
         if not dofs or rest.partition("/")[0] in dofs:
             return None
         return (f"a reference of controller '{head}', which exports references of its "
-                f"dof_names only ({', '.join(dofs)})")
+                f"dof names only ({', '.join(dofs)})")
 
     def joint_of(self, name: str) -> str:
         """The joint a chain of controller references ends at, or ``name`` itself.

@@ -47,9 +47,47 @@ def test_a_forward_command_controller_without_interface_name(run, tmp_path):
     assert (code, found) == (0, [])
 
 
-def test_a_parameter_written_twice_keeps_its_last_value(run, tmp_path):
-    """rcl keeps the second diff_controller section: its wheel names are checked."""
+def test_a_node_written_twice_is_read_merged_its_last_values_winning(run, tmp_path):
+    """rcl reads both diff_controller blocks as one node; its second wheel names win."""
     code, found = check_controllers(run, tmp_path, BUNDLED + "\ndiff_controller:\n"
                                     "  ros__parameters:\n    left_wheel_names: [wheel_left]\n")
     codes = [(f["code"], f["severity"]) for f in found]
-    assert ("SB601", "warning") in codes and ("SB602", "error") in codes and code == 1
+    assert ("SB602", "error") in codes and code == 1
+    assert "SB601" not in {c for c, _ in codes}  # a node twice is no mistake to rcl
+
+
+def test_a_parameter_written_twice_is_a_warning(run, tmp_path):
+    code, found = check_controllers(run, tmp_path, BUNDLED.replace(
+        "    wheel_radius: 0.07\n", "    wheel_radius: 0.07\n    wheel_radius: 0.07\n", 1))
+    assert code == 0 and [(f["code"], f["severity"]) for f in found] == [("SB601", "warning")]
+    assert "'wheel_radius' is written twice" in str(found[0]["message"])
+
+
+WILD = REPO / "tests" / "check" / "controllers_in_the_wild"
+
+
+@pytest.mark.parametrize("name", ["pid_encoder", "gpio_io"])
+def test_pid_state_dofs_and_gpio_components_are_what_the_controllers_claim(run, tmp_path, name):
+    """pid_controller reads its states from reference_and_state_dof_names (a sensor here),
+    and a gpio component's interfaces are component/interface: no joint needed."""
+    code, found = check_controllers(run, tmp_path, (WILD / f"{name}.yaml").read_text(),
+                                    WILD / f"{name}.urdf")
+    assert (code, found) == (0, [])
+
+
+def test_a_forward_command_controller_split_over_two_sections_has_its_interface(run, tmp_path):
+    """'fwd:' and '/fwd:' configure one node: interface_name in either is enough."""
+    text = BUNDLED.replace("    joint_state_broadcaster:\n",
+                           "    fwd:\n      type: forward_command_controller/"
+                           "ForwardCommandController\n    joint_state_broadcaster:\n")
+    code, found = check_controllers(run, tmp_path, text + "\nfwd:\n  ros__parameters:\n"
+                                    "    joints: [arm_base_to_link1]\n/fwd:\n"
+                                    "  ros__parameters:\n    interface_name: position\n")
+    assert (code, found) == (0, [])
+
+
+def test_a_type_only_humble_reads_is_a_warning(run, tmp_path):
+    """JTC's state_publish_rate is gone from Jazzy: an undeclared override is never read."""
+    code, found = check_controllers(run, tmp_path, BUNDLED.replace(
+        "state_publish_rate: 50.0", "state_publish_rate: 50"))
+    assert code == 0 and [(f["code"], f["severity"]) for f in found] == [("SB608", "warning")]

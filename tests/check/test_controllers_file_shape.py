@@ -63,3 +63,24 @@ def test_a_controller_type_a_letter_off_is_no_plugin(run, tmp_path):
     code, found = check_controllers(run, tmp_path, BUNDLED.replace(
         "type: diff_drive_controller/DiffDriveController", "type: my_robot/BaseController"))
     assert code == 0 and found == []  # a third party's controller is not judged
+
+
+def test_an_alias_in_a_launch_pal_template_is_a_warning(run, tmp_path):
+    """pal_hey5's controller file is a ${EE_SIDE_PREFIX} template that launch_pal loads and
+    writes out again, its aliases spelled out, before rcl reads it."""
+    text = BUNDLED.replace("    wheel_separation: 0.54\n", "    wheel_separation: &track 0.54\n"
+                           ).replace("    publish_rate: 50.0", "    publish_rate: *track"
+                                     ).replace("odom_frame_id: odom", "odom_frame_id: ${ODOM}")
+    code, found = check_controllers(run, tmp_path, text)
+    (alias,) = [f for f in found if f["code"] == "SB601"]
+    assert alias["severity"] == "warning" and "launch_pal" in str(alias["message"])
+
+
+def test_a_namespace_written_twice_is_one_node_not_a_mistake(run, tmp_path):
+    """rcl reads both '/**' blocks (open_manipulator's configs write two)."""
+    head, tail = BUNDLED.split("diff_controller:\n  ros__parameters:", 1)
+    text = ("/**:\n" + "".join(f"  {line}\n" for line in head.splitlines())
+            + "/**:\n  diff_controller:\n    ros__parameters:"
+            + "".join(f"\n  {line}" if line else "\n" for line in tail.splitlines()))
+    code, found = check_controllers(run, tmp_path, text)
+    assert not [f for f in found if f["code"] == "SB601"], found

@@ -275,7 +275,7 @@ CARLIKE = SRC / "example_11" / "bringup" / "config" / "carlikebot_controllers.ya
     # a reference of a chained pid_controller that it does not export
     ("example_16", "pid_controller_left_wheel_joint/left_wheel_joint\"",
      "pid_controller_left_wheel_joint/left_wheel_jiont\"", "SB602",
-     "which exports references of its dof_names only (left_wheel_joint)"),
+     "which exports references of its dof names only (left_wheel_joint)"),
     # a pid_controller's dof that is no joint
     ("example_16", "dof_names:\n      - left_wheel_joint", "dof_names:\n      - left_wheel_jiont",
      "SB602", "'left_wheel_jiont' is no joint and no <ros2_control> component"),
