@@ -125,10 +125,13 @@ def _no_robot_alone(finding: Finding) -> bool:
 
     A part that hangs from links of the robot including it (stretch's aruco markers) gets
     SB103 on those parents; a file of constants (unitree's const.xacro, properties and an
-    include) gets SB109. A whole robot (andino) gets neither, and is checked alone.
+    include) gets SB109; a part that reads its includer's properties (TIAGo's
+    gazebo.urdf.xacro: 'is_multiple', where a package its includer needs is missing) gets
+    SB006 for a name not defined. A whole robot (andino) gets none, and is checked alone.
     """
     return finding.code == "SB109" or (finding.code == "SB103"
-                                        and " has parent link '" in finding.message)
+                                        and " has parent link '" in finding.message) or (
+        finding.code == "SB006" and " is not defined" in finding.message)
 
 
 _NOT_EXPANDED = ("SB001", "SB006", "SB007")  # an include missing, xacro failed, no package

@@ -260,3 +260,28 @@ def test_a_defect_in_a_shared_include_names_the_robot_checked(run, tmp_path):
     assert sorted(line.rsplit("%0A", 1)[1] for line in annotations) == [
         f"while checking {src / 'arm_description/urdf/left.urdf.xacro'}",
         f"while checking {src / 'arm_description/urdf/right.urdf.xacro'}"]
+
+
+def test_a_part_whose_includer_stopped_at_a_missing_package_is_not_checked_alone(run,
+                                                                                 tmp_path):
+    """TIAGo includes pmb2_description (not installed), then gazebo.urdf.xacro, which reads
+    its includer's 'is_multiple': checked alone, it failed (SB006), an error where a missing
+    package is a warning (SB007)."""
+    package = tmp_path / "ws" / "src" / "mybot"
+    (package / "robots").mkdir(parents=True)
+    (package / "gazebo").mkdir()
+    (package / "package.xml").write_text("<package format='3'><name>mybot</name></package>")
+    (package / "robots" / "mybot.urdf.xacro").write_text(
+        '<robot name="mybot" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        '  <xacro:property name="is_multiple" value="false"/>\n'
+        '  <xacro:include filename="$(find other_pkg)/urdf/base.urdf.xacro"/>\n'
+        '  <link name="base_link"/>\n'
+        '  <xacro:include filename="$(find mybot)/gazebo/gazebo.urdf.xacro"/>\n</robot>\n')
+    (package / "gazebo" / "gazebo.urdf.xacro").write_text(
+        '<robot name="mybot" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <gazebo>\n'
+        '    <xacro:if value="${is_multiple}"><static>false</static></xacro:if>\n'
+        '  </gazebo>\n</robot>\n')
+    result = run("check", "urdf", package, "--isolated", "--jobs", "1", "--format", "json")
+    assert result.exit_code == 0, result.stdout
+    document = json.loads(result.stdout)
+    assert [f["code"] for file in document["files"] for f in file["findings"]] == ["SB007"]
