@@ -70,6 +70,7 @@ class ExternalDtd:
     column: int
 
 
+_UNREAD = re.compile(r"<!--.*?-->|<!\[CDATA\[.*?\]\]>", re.DOTALL)
 _ENTITY_REFERENCE = re.compile(r"&(?!(?:amp|lt|gt|quot|apos|#[0-9]+|#x[0-9a-fA-F]+);)"
                                r"([A-Za-z_:][\w.:-]*);")
 
@@ -215,6 +216,8 @@ class _Builder:
         With an external DTD, expat drops such a reference silently (from an attribute
         too), where tinyxml2 (urdfdom, Gazebo, MuJoCo) keeps the text ``&name;``.
         """
+        # comments and CDATA sections hold text, never a reference: blanked, lines kept
+        text = _UNREAD.sub(lambda m: re.sub(r"[^\n]", " ", m[0]), text)
         found = _ENTITY_REFERENCE.search(text)
         if found is not None:
             line = text.count("\n", 0, found.start()) + 1

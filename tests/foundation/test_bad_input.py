@@ -159,6 +159,10 @@ def test_an_external_dtd_is_named_never_loaded(tmp_path):
         parse_xml(head + b'<robot name="r"><link name="a&secret;"/></robot>', "x")
     plain = parse_xml(head + b'<robot name="r&amp;&#65;&#x42;"/>', "x")
     assert plain.root.get("name") == "r&AB"
+    # a comment and a CDATA section hold text, never a reference (check_urdf and xacro agree)
+    text = parse_xml(head + b'<robot name="r"><!-- a&nbsp;b --><link name="a">'
+                     b'<![CDATA[ &bar; ]]></link></robot>', "x")
+    assert text.external_dtd is not None
 
 
 def test_size_limit_refuses_quickly():
