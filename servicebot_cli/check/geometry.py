@@ -144,10 +144,14 @@ def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str
     elif extent_m > LARGEST_M and not _scenery(robot):
         yield Issue("SB404", f"{where}: mesh '{name}' is {extent_m:.4g} m across; is it in "
                     "millimetres?", element, fix=_scale_fix(scale, 0.001))
-    elif 0 < extent_m < SMALLEST_M:
+    elif 0 < extent_m < SMALLEST_M and any(s != 1.0 for s in scale):
         yield Issue("SB404", f"{where}: mesh '{name}' is {extent_m:.3g} m across; is a "
                     "millimetre scale applied to a mesh already in metres?", element,
                     fix=_scale_fix(scale, 1000.0))
+    elif 0 < extent_m < SMALLEST_M:  # no scale: a part that small (unitree's fingertip marks)
+        yield Issue("SB404", f"{where}: mesh '{name}' is {extent_m:.3g} m across, unscaled; "
+                    "is its file in metres?", element,
+                    fix="export the mesh in metres, if the part is not that small")
 
 
 def _scenery(robot: RobotDescription) -> bool:

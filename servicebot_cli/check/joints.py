@@ -173,11 +173,13 @@ def _axis(joint: Joint) -> Iterator[Issue]:
     if not all(math.isfinite(c) for c in (x, y, z)):
         return  # SB013/SB014 report it
     norm = math.hypot(x, y, z)  # no overflow: an axis of 1e160 has length 1e160
-    if x * x + y * y + z * z == math.inf:  # Eigen's normalize() squares it: a zero axis
-        yield Issue("SB208", f"joint '{joint.name}' axis has length {norm:.8g}, too long to "
-                    "normalise: Pinocchio squares it to infinity and turns the joint about a "
-                    "zero axis", joint.element, severity=Severity.ERROR,
-                    fix='write the unit axis: xyz="' + " ".join(
+    squared = x * x + y * y + z * z  # as Eigen's normalize() computes it
+    if squared == math.inf or (squared == 0.0 and norm > 0.0):
+        what = "long" if squared else "short"
+        yield Issue("SB208", f"joint '{joint.name}' axis has length {norm:.8g}, too {what} to "
+                    f"normalise: Pinocchio squares it to {'infinity' if squared else 'zero'} "
+                    "and turns the joint by no rotation matrix", joint.element,
+                    severity=Severity.ERROR, fix='write the unit axis: xyz="' + " ".join(
                         f"{c / norm:.6g}" for c in (x, y, z)) + '"')
     elif norm == 0.0:
         yield Issue("SB207", f"{joint.type} joint '{joint.name}' has axis 0 0 0", joint.element,

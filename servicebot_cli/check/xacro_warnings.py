@@ -20,7 +20,7 @@ _XACRO: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), f) for p
     (r"inconsistent namespace redefinitions for (\S+):",
      r"declare \1 with one namespace URI in every included file"),
     (r"Child elements of a <xacro:include> tag are ignored",
-     "move them out of <xacro:include>"),
+     "remove them: the included file already sees the includer's arguments and properties"),
     (r"macro names must not contain prefix 'xacro:': xacro:(\S+)",
      r"name the macro '\1'"),
     (r"(\S+): default property value can only be defined on local scope",

@@ -146,8 +146,9 @@ def build_model(xml_text: str, display: str, base: str = "fixed",
 
 
 _LIMIT_BOUNDS = {"min_velocity": "velocity", "min_effort": "effort"}
-_HUGE_EXPONENT = re.compile(r"\d[eE]\+?(?:1[5-9]\d|[2-9]\d\d)")
-"""A number of 1e150 or more, whose square overflows: an axis that long normalises to zero."""
+_HUGE_EXPONENT = re.compile(r"\d[eE][+-]?(?:1[5-9]\d|[2-9]\d\d)")
+"""A number of 1e150 or more (or 1e-150 or less), whose square overflows (underflows): an
+axis that long normalises to zero, one that short is not normalised at all."""
 
 
 def _refuse_lost_axes(model: pin.Model, display: str, xml_text: str,
@@ -161,11 +162,12 @@ def _refuse_lost_axes(model: pin.Model, display: str, xml_text: str,
 
     for joint, name in zip(model.joints, model.names, strict=True):
         axis = getattr(joint.extract(), "axis", None)
-        if axis is not None and not np.any(axis):
+        if axis is not None and not np.isclose(np.linalg.norm(axis), 1.0):
+            what = "long" if not np.any(axis) else "short"
             raise DescriptionError(
-                f"{display}: joint '{name}' has an axis too long to normalise: Pinocchio "
-                "squares it to infinity and turns the joint about 0 0 0; write the unit axis "
-                f"{check_hint(display, xacro_args)}")
+                f"{display}: joint '{name}' has an axis too {what} to normalise: Pinocchio "
+                "squares its length out of a double's range and turns the joint by no "
+                f"rotation; write the unit axis {check_hint(display, xacro_args)}")
 
 
 def _bound_culprits(xml_text: str, reason: str) -> str:

@@ -19,14 +19,24 @@ ROBOT = ('<robot name="r"><link name="base_link"/><link name="arm"><inertial><ma
 
 
 @pytest.mark.parametrize(("axis", "severity"), [("1e160 0 0", "error"), ("0 -3e200 0", "error"),
-                                                ("1e100 0 0", "warning")])
-def test_an_axis_too_long_to_normalise_is_an_error(run, tmp_path, axis, severity):
+                                                ("1e100 0 0", "warning"),
+                                                ("1e-170 0 0", "error"),  # squared: 0
+                                                ("1e-100 0 0", "warning")])
+def test_an_axis_too_long_or_short_to_normalise_is_an_error(run, tmp_path, axis, severity):
     path = tmp_path / "r.urdf"
     path.write_text(ROBOT.format(axis=axis))
     result = run("check", "urdf", path, "--format", "json", "--isolated")
     (found,) = [f for f in findings(result.stdout) if f["code"] == "SB208"]
     assert found["severity"] == severity
-    assert ("too long to normalise" in found["message"]) is (severity == "error")
+    assert ("to normalise" in found["message"]) is (severity == "error")
+
+
+def test_fk_refuses_an_axis_too_short_to_normalise(run, tmp_path):
+    """Pinocchio leaves an axis of 1e-170 as it is: fk at 0.5 rad gave no rotation matrix."""
+    path = tmp_path / "r.urdf"
+    path.write_text(ROBOT.format(axis="1e-170 0 0"))
+    assert_one_line_error(run("fk", path, "-j", "j=0.5", "-f", "arm"), 2,
+                          "joint 'j' has an axis too short to normalise")
 
 
 def test_fk_refuses_it_in_one_line_instead_of_a_scaled_identity(run, tmp_path):

@@ -49,3 +49,17 @@ def test_a_scale_beyond_the_computed_bounds_still_gets_its_size_warning(run, tmp
     """The tetrahedron is 1 m across: scaled, 1e7 m or 1e-7 m."""
     found = _codes(run, tmp_path, scale=scale)
     assert f"mesh 'part.stl' is {across} m across" in found["SB404"]["message"]
+
+
+def test_a_tiny_unscaled_mesh_is_not_told_to_undo_a_scale_it_has_not(run, tmp_path):
+    """unitree's g1 fingertips are 0.5 mm marks with no scale: the fix was scale 1000."""
+    (tmp_path / "tip.stl").write_bytes(tetrahedron_stl(0.0005))
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r">' + LINK.format(name="a", mass=1, ixx=1, visual="")
+                    + LINK.format(name="b", mass=1, ixx=1, visual='<visual><geometry><mesh '
+                                  'filename="tip.stl"/></geometry></visual>') + JOINT
+                    + "</robot>")
+    result = run("check", "urdf", path, "--format", "json", "--isolated", "--select", "SB404")
+    (found,) = findings(result.stdout)
+    assert "0.0005 m across, unscaled" in found["message"]
+    assert "scale=" not in found["fix"]
