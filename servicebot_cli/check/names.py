@@ -118,7 +118,9 @@ def _rgba(material: ET.Element) -> Iterator[Issue]:
     except ValueError:
         return  # SB013 reports it
     if len(values) == 4 and not all(0.0 <= v <= 1.0 for v in values):
-        scaled = " ".join(f"{min(v / 255.0, 1.0):.3g}" if v > 1 else f"{v:g}" for v in values)
+        # a 0-255 colour divided by 255; 1.0000000001, a rounding past 1, clamped to 1
+        scaled = " ".join(("1" if v <= 1.01 else f"{min(v / 255.0, 1.0):.3g}") if v > 1
+                          else f"{max(v, 0.0):g}" for v in values)
         yield Issue("SB113", f"rgba '{color.get('rgba')}' of material "
                     f"'{material.get('name', '')}' is outside [0, 1]: urdfdom drops the "
                     "material", color,

@@ -70,7 +70,12 @@ _CHILDREN = ("hardware", "joint", "sensor", "gpio", "transmission", "properties"
 def _unknown_elements(block: Ros2Control) -> Iterator[Issue]:
     """SB514: ros2_control's parser throws 'invalid tag name' for any other child element."""
     for child in block.element if block.element is not None else ():
-        if isinstance(child.tag, str) and child.tag not in _CHILDREN:
+        if child.tag == "properties":  # read from Jazzy on; Humble's parser refuses it
+            yield Issue("SB514", f"<properties> in <ros2_control name=\"{block.name}\">: "
+                        "Humble's parser refuses the robot ('invalid tag name'); Jazzy and "
+                        "later read it", child, severity=Severity.WARNING,
+                        fix="leave it out where the robot runs on Humble")
+        elif isinstance(child.tag, str) and child.tag not in _CHILDREN:
             close = difflib.get_close_matches(child.tag, _CHILDREN, n=1, cutoff=0.6)
             yield Issue("SB514", f"<{child.tag}> in <ros2_control name=\"{block.name}\">: "
                         "ros2_control's parser reads only "

@@ -61,3 +61,16 @@ def test_a_colour_outside_zero_to_one_is_an_error_as_urdfdom_drops_it(run, tmp_p
     assert ("Material [m] not defined" in said.stderr) is dropped
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB113")
     assert [f["severity"] for f in findings(result.stdout)] == (["error"] if dropped else [])
+
+
+@pytest.mark.parametrize(("rgba", "fix"), [("255 128 0 1", 'rgba="1 0.502 0 1"'),
+                                           ("1 1 1 1.0000000001", 'rgba="1 1 1 1"'),
+                                           ("-0.1 0 0 1", 'rgba="0 0 0 1"')])
+def test_a_colour_outside_zero_to_one_is_fixed_by_its_kind(run, tmp_path, rgba, fix):
+    """A rounding past 1 is clamped, not divided by 255 into a near-transparent alpha."""
+    path = tmp_path / "r.urdf"
+    path.write_text(f'<robot name="r"><material name="m"><color rgba="{rgba}"/></material>'
+                    '<link name="a"/></robot>')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB113")
+    (found,) = findings(result.stdout)
+    assert found["fix"] == fix

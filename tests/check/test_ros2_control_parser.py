@@ -82,3 +82,10 @@ def test_a_fixed_joint_with_states_only_is_a_warning(run, tmp_path):
     assert code == 0
     assert [(c, s) for c, s, _ in found] == [("SB506", "warning")]
     assert "from Jazzy on, ros2_control refuses the robot" in found[0][2]
+
+
+def test_properties_is_read_from_jazzy_on_and_refused_by_humble(run, tmp_path):
+    code, found = _found(run, tmp_path, body=J1 + "<properties><foo>1</foo></properties>")
+    assert code == 0
+    assert [(c, s) for c, s, _ in found] == [("SB514", "warning")]
+    assert "Humble's parser refuses the robot" in found[0][2]
