@@ -166,13 +166,20 @@ def _unreadable(exc: DescriptionError, source: RobotSource) -> bool:
                                       "cannot read:", "not a xacro file"))
 
 
+_PLACED = re.compile(r"(.+?):(\d+)(?::(\d+))?: (.+)", re.DOTALL)
+"""A warning that starts with where it was written (``file:line:column: ...``)."""
+
+
 def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Iterator[Issue]:
     """Every rule family but the model, skipping families with no selected rule."""
     from servicebot_cli.check import gazebo, geometry, inertia, joints, ros2_control, transmissions
 
-    for warning in robot.warnings:  # the place is the finding's: not again in its message
-        yield Issue("SB017", warning.removeprefix(f"{robot.display}: "),
-                    where=(robot.display, 0, 0), fix=xacro_fix(warning))
+    for warning in dict.fromkeys(robot.warnings):  # a call site's warning once
+        placed = _PLACED.match(warning)  # the place is the finding's: not again in its text
+        where = (placed[1], int(placed[2]), int(placed[3] or 0)) if placed \
+            else (robot.display, 0, 0)
+        yield Issue("SB017", placed[4] if placed else warning.removeprefix(f"{robot.display}: "),
+                    where=where, fix=xacro_fix(warning))
     if robot.external_dtd is not None:  # named, never loaded: by no reader either
         dtd = robot.external_dtd
         yield Issue("SB005", f"external DTD '{dtd.identifier}' is never loaded, as no robot "
