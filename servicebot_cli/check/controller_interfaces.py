@@ -98,13 +98,21 @@ def _pid(params: yaml.MappingNode) -> Iterator[Claim]:
     external = get(params, "use_external_measured_states")
     states = [] if isinstance(external, yaml.ScalarNode) and external.value in RCL_TRUE \
         else _scalars(get(params, "reference_and_state_interfaces"))
-    # its states (and references) are of reference_and_state_dof_names where it names them
-    state_dofs = "reference_and_state_dof_names" if _scalars(
-        get(params, "reference_and_state_dof_names")) else "dof_names"
     for command in _scalars(get(params, "command_interface")):
         yield from _each(params, "dof_names", "command", command)
     for state in states:
-        yield from _each(params, state_dofs, "state", state)
+        yield from _each(params, _state_dofs_key(params), "state", state)
+
+
+def state_dofs(params: yaml.MappingNode) -> list[yaml.ScalarNode]:
+    """A pid_controller's dofs whose states it reads and whose references it exports."""
+    return _scalars(get(params, _state_dofs_key(params)))
+
+
+def _state_dofs_key(params: yaml.MappingNode) -> str:
+    """``reference_and_state_dof_names`` where the controller names them, else ``dof_names``."""
+    return "reference_and_state_dof_names" if _scalars(
+        get(params, "reference_and_state_dof_names")) else "dof_names"
 
 
 def _trajectory(params: yaml.MappingNode) -> Iterator[Claim]:

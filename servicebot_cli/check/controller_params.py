@@ -19,6 +19,7 @@ from collections.abc import Iterator
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.controller_interfaces import RCL_FALSE, RCL_TRUE
+from servicebot_cli.check.controller_sections import at, substituted
 from servicebot_cli.check.findings import Issue, Severity
 
 _INTEGER = re.compile(r"[+-]?(?:0[xX][0-9a-fA-F]+|[0-9]+)")  # strtol, base 0
@@ -109,8 +110,8 @@ def mixed_lists(params: yaml.MappingNode, section: str,
             odd = next(item for item in scalars if rcl_type(item) != kinds[0])
             yield Issue("SB608", f"{section}.{key}: rcl reads '{odd.value}' as "
                         f"{_ARTICLE[rcl_type(odd)]} among {kinds[0]}s, and refuses the whole "
-                        "file ('Sequence should be of same type')", where=_where(display, odd),
-                        fix=_fix(odd, kinds[0]))
+                        "file ('Sequence should be of same type')",
+                        where=at(display, odd.start_mark), fix=_fix(odd, kinds[0]))
 
 
 def declared_types(controller_type: str | None, params: yaml.MappingNode, section: str,
@@ -141,15 +142,14 @@ def declared_types(controller_type: str | None, params: yaml.MappingNode, sectio
                     f"declares a {wanted.replace('_', ' ')}"
                     + (" in the releases that read it (not all do)" if some else "")
                     + ": it refuses the value at configure ('Wrong parameter type')",
-                    where=_where(display, node), fix=fix,
+                    where=at(display, node.start_mark), fix=fix,
                     severity=Severity.WARNING if some else None)
 
 
 def _filled_in(node: yaml.Node) -> bool:
     """Whether a launch file fills the value in (``$(var wheel_separation)``) before rcl."""
     scalars = node.value if isinstance(node, yaml.SequenceNode) else [node]
-    return any(isinstance(item, yaml.ScalarNode) and ("$(" in str(item.value)
-                                                       or "${" in str(item.value))
+    return any(isinstance(item, yaml.ScalarNode) and substituted(str(item.value))
                for item in scalars)
 
 
@@ -188,10 +188,6 @@ def _flat(node: yaml.MappingNode, prefix: str = "") -> Iterator[tuple[str, yaml.
             yield from _flat(value, f"{name}.")
         else:
             yield name, value
-
-
-def _where(display: str, node: yaml.Node) -> tuple[str, int, int]:
-    return (display, node.start_mark.line + 1, node.start_mark.column + 1)
 
 
 KNOWN_TYPES = (
@@ -244,7 +240,8 @@ def misspelled_type(node: yaml.ScalarNode, section: str, display: str) -> Issue 
     if not close:
         return None
     return Issue("SB608", f"{section}.type '{written}' is no controller pluginlib can load; did "
-                 f"you mean '{close[0]}'?", where=_where(display, node), fix=f"type: {close[0]}")
+                 f"you mean '{close[0]}'?", where=at(display, node.start_mark),
+                 fix=f"type: {close[0]}")
 
 
 _JTC = "joint_trajectory_controller/JointTrajectoryController"
@@ -272,7 +269,8 @@ def validated_values(controller_type: str | None, params: yaml.MappingNode, sect
         node = _last(params, "interface_name")
         if node is None or (isinstance(node, yaml.ScalarNode) and not str(node.value).strip()):
             yield Issue("SB608", f"{section}: no interface_name; ForwardCommandController "
-                        "refuses to configure without one", where=_where(display, node or params),
+                        "refuses to configure without one",
+                        where=at(display, (node or params).start_mark),
                         fix="interface_name: position")
     if controller_type != _JTC:
         return
@@ -296,7 +294,7 @@ def validated_values(controller_type: str | None, params: yaml.MappingNode, sect
         else:
             continue
         yield Issue("SB608", f"{section}.{key} {problem}: JointTrajectoryController refuses "
-                    "it at configure", where=_where(display, node))
+                    "it at configure", where=at(display, node.start_mark))
 
 
 def _last(params: yaml.MappingNode, dotted: str) -> yaml.Node | None:

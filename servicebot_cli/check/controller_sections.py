@@ -106,18 +106,19 @@ def file_issues(text: str, display: str) -> list[Issue]:
                             "('Will not support aliasing'), so ros2_control_node cannot load it"
                             + (" unless a launch file rewrites this template first (launch_pal's "
                                "parse_parametric_yaml writes the values out)" if template else ""),
-                            where=_at(display, alias.start_mark),
+                            where=at(display, alias.start_mark),
                             severity=Severity.WARNING if template else None,
                             fix="write the values out where the alias stands"))
     starts = [e for e in events if isinstance(e, yaml.DocumentStartEvent)]
     if len(starts) > 1:
         issues.append(Issue("SB601", f"{len(starts)} YAML documents (---): rcl reads them as "
                             "one file, the controller spawner's --param-file refuses it",
-                            where=_at(display, starts[1].start_mark), severity=Severity.WARNING,
+                            where=at(display, starts[1].start_mark), severity=Severity.WARNING,
                             fix="keep one document"))
     root = _composed(text)
-    issues += [i for i in (_misspelled_parameters(root, display), _key_not_a_name(root, display),
-                           _key_twice(root, display)) if i is not None]
+    # a misspelled ros__parameters is sections()'s own answer: checks of content never follow
+    issues += [i for i in (_key_not_a_name(root, display), _key_twice(root, display))
+               if i is not None]
     return issues
 
 
@@ -140,7 +141,7 @@ def _key_twice(root: yaml.Node | None, display: str) -> Issue | None:
                     return Issue("SB601", f"'{key.value}' is written twice in one mapping "
                                  f"(first at line {first[key.value].start_mark.line + 1}): rcl "
                                  "keeps the values of the last one",
-                                 where=_at(display, key.start_mark),
+                                 where=at(display, key.start_mark),
                                  severity=Severity.WARNING, fix="keep one of the two")
                 first.setdefault(str(key.value), key)
     return None
@@ -167,7 +168,7 @@ def _misspelled_parameters(root: yaml.Node | None, display: str) -> Issue | None
         return None
     return Issue("SB601", f"'{near.value}' is not ros__parameters (two underscores): rcl does "
                  "not read what it holds as the node's parameters (and refuses the file where "
-                 "a list sits under it)", where=_at(display, near.start_mark),
+                 "a list sits under it)", where=at(display, near.start_mark),
                  fix="ros__parameters:")
 
 
@@ -176,7 +177,7 @@ def _key_not_a_name(root: yaml.Node | None, display: str) -> Issue | None:
     if key is None:
         return None
     return Issue("SB601", "a list or mapping used as a key: rcl refuses the whole file",
-                 where=_at(display, key.start_mark), fix="write each parameter under a name")
+                 where=at(display, key.start_mark), fix="write each parameter under a name")
 
 
 def _near_ros_parameters(root: yaml.Node | None, depth: int = 0) -> yaml.ScalarNode | None:
@@ -201,8 +202,14 @@ def _collection_key(root: yaml.Node | None) -> yaml.Node | None:
                  for key, _ in node.value if not isinstance(key, yaml.ScalarNode)), None)
 
 
-def _at(display: str, mark: yaml.Mark) -> tuple[str, int, int]:
+def at(display: str, mark: yaml.Mark) -> tuple[str, int, int]:
+    """``(file, line, column)`` of a YAML position, 1-based."""
     return (display, mark.line + 1, mark.column + 1)
+
+
+def substituted(text: str) -> bool:
+    """Whether a launch file fills ``text`` in: ``$(var ...)``, or a ``${NAME}`` template."""
+    return "$(" in text or "${" in text
 
 
 JOINT_KEYS = (

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
+from servicebot_cli.check.controller_interfaces import state_dofs
 from servicebot_cli.check.controller_params import (
     declared_types,
     misspelled_type,
@@ -20,8 +21,8 @@ from servicebot_cli.check.controller_params import (
 from servicebot_cli.check.controller_sections import (
     JOINT_KEYS,
     Sections,
-    controller_types,
     get,
+    substituted,
     type_nodes,
 )
 from servicebot_cli.check.findings import Issue, Severity
@@ -58,8 +59,9 @@ ROS2_CONTROLLERS = frozenset((
 def check(found: Sections, display: str, robot: RobotDescription) -> Iterator[Issue]:
     """Every issue of the controller sections ``found`` (of file ``display``) against ``robot``."""
     checker = _Checker(display, robot, found)
-    types = controller_types(found)
-    for name, node in type_nodes(found).items():
+    nodes = type_nodes(found)
+    types = {name: str(node.value) for name, node in nodes.items()}
+    for name, node in nodes.items():
         typo = misspelled_type(node, name, display)
         if typo is not None:
             yield typo
@@ -83,11 +85,6 @@ def _names_joints(controller_type: str | None) -> bool:
     ``joint: tcp``, the prefix of interfaces its hardware exports, not a URDF joint.
     """
     return controller_type is None or controller_type.partition("/")[0] in ROS2_CONTROLLERS
-
-
-def _substituted(text: str) -> bool:
-    """Whether a launch file fills ``text`` in: ``$(var ...)``, or a ``${NAME}`` template."""
-    return "$(" in text or "${" in text
 
 
 def _number(node: yaml.Node | None) -> float | None:
@@ -227,7 +224,7 @@ class _Checker:
             if joint is None and claim.key.endswith("dof_names") and name not in exported \
                     and not self.not_a_joint(name):
                 unknown_dofs.setdefault(name, claim)
-            if joint is None or not joint.movable or _substituted(claim.interface) \
+            if joint is None or not joint.movable or substituted(claim.interface) \
                     or self.not_a_joint(name):
                 continue
             if name not in exported:
@@ -275,7 +272,7 @@ class _Checker:
         launch file fills in (``$(var joint_prefix)1``; PAL's ``${EE_SIDE_PREFIX}_...``,
         which launch_pal's ``parse_parametric_yaml`` rewrites).
         """
-        return _substituted(name) or name.partition("/")[0] in self.controllers
+        return substituted(name) or name.partition("/")[0] in self.controllers
 
     def unexported_reference(self, name: str) -> str | None:
         """Why a chained reference ``CONTROLLER/DOF`` names no reference that controller has.
@@ -285,15 +282,10 @@ class _Checker:
         the reference is one of them, or its controller names no dof_names here.
         """
         head, slash, rest = name.partition("/")
-        if not slash or head not in self.controllers or _substituted(name):
+        if not slash or head not in self.controllers or substituted(name):
             return None
-        dofs: list[str] = []
-        for section in self.sections.get(head, []):  # its state dofs where it names them
-            for key in ("reference_and_state_dof_names", "dof_names"):
-                node = get(section, key)
-                if isinstance(node, yaml.SequenceNode) and node.value:
-                    dofs += [str(i.value) for i in node.value if isinstance(i, yaml.ScalarNode)]
-                    break
+        dofs = [str(dof.value) for section in self.sections.get(head, [])
+                for dof in state_dofs(section)]
         if not dofs or rest.partition("/")[0] in dofs:
             return None
         return (f"a reference of controller '{head}', which exports references of its "
@@ -363,7 +355,7 @@ class _Checker:
         Jackal multiplies by 1.5): a warning.
         """
         node = get(params, key)
-        if isinstance(node, yaml.ScalarNode) and _substituted(str(node.value)):
+        if isinstance(node, yaml.ScalarNode) and substituted(str(node.value)):
             return  # the launch file fills it in
         given = _number(node)
         if node is None or given is None:
