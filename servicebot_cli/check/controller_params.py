@@ -19,7 +19,7 @@ from collections.abc import Iterator
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.controller_interfaces import RCL_FALSE, RCL_TRUE
-from servicebot_cli.check.controller_sections import at, substituted
+from servicebot_cli.check.controller_sections import Sections, at, substituted, type_nodes
 from servicebot_cli.check.findings import Issue, Severity
 
 _INTEGER = re.compile(r"[+-]?(?:0[xX][0-9a-fA-F]+|[0-9]+)")  # strtol, base 0
@@ -82,6 +82,22 @@ DECLARED: dict[str, dict[str, str]] = {
 
 _ARTICLE = {"integer": "an integer", "double": "a double", "bool": "a boolean",
             "string": "a string"}
+
+
+def parameter_issues(found: Sections, display: str) -> Iterator[Issue]:
+    """Every SB608 of the controller sections ``found``: the same against every robot."""
+    nodes = type_nodes(found)
+    types = {name: str(node.value) for name, node in nodes.items()}
+    for name, node in nodes.items():
+        typo = misspelled_type(node, name, display)
+        if typo is not None:
+            yield typo
+    for name, params in found.items():
+        for section in params:
+            yield from mixed_lists(section, name, display)
+            yield from declared_types(types.get(name), section, name, display)
+            yield from validated_values(types.get(name), section, name, display,
+                                        tuple(other for other in params if other is not section))
 
 
 def rcl_type(node: yaml.ScalarNode) -> str:

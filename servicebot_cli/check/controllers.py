@@ -1,4 +1,7 @@
-"""Controller configuration rules: a ros2_control controllers YAML against a URDF (SB601-SB608).
+"""Controller configuration rules: a ros2_control controllers YAML against a URDF (SB601-SB607).
+
+What the file's parameters are worth whatever the robot (SB608) is
+:mod:`~servicebot_cli.check.controller_params`'s.
 
 Pure: YAML text and a RobotDescription in, issues out, each placed at its YAML line.
 """
@@ -12,18 +15,12 @@ from typing import TYPE_CHECKING
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.controller_interfaces import state_dofs
-from servicebot_cli.check.controller_params import (
-    declared_types,
-    misspelled_type,
-    mixed_lists,
-    validated_values,
-)
 from servicebot_cli.check.controller_sections import (
     JOINT_KEYS,
     Sections,
+    controller_types,
     get,
     substituted,
-    type_nodes,
 )
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.ros2_control import GAZEBO_PID, exported_as
@@ -59,18 +56,8 @@ ROS2_CONTROLLERS = frozenset((
 def check(found: Sections, display: str, robot: RobotDescription) -> Iterator[Issue]:
     """Every issue of the controller sections ``found`` (of file ``display``) against ``robot``."""
     checker = _Checker(display, robot, found)
-    nodes = type_nodes(found)
-    types = {name: str(node.value) for name, node in nodes.items()}
-    for name, node in nodes.items():
-        typo = misspelled_type(node, name, display)
-        if typo is not None:
-            yield typo
+    types = controller_types(found)
     for name, params in found.items():
-        for section in params:
-            yield from mixed_lists(section, name, display)
-            yield from declared_types(types.get(name), section, name, display)
-            yield from validated_values(types.get(name), section, name, display,
-                                        tuple(other for other in params if other is not section))
         if name != "controller_manager" and _names_joints(types.get(name)):
             for section in checker.for_this_robot(params):
                 yield from checker.section(name, section)

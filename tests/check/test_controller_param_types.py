@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.check.helpers import check_controllers
+from tests.check.helpers import check_controllers, findings
 from tests.conftest import REPO
 
 BUNDLED = (REPO / "robots" / "controllers.yaml").read_text()
@@ -63,3 +63,11 @@ def test_values_rcl_reads_as_declared_pass(run, tmp_path, before, after):
 
 def test_the_bundled_controllers_pass(run, tmp_path):
     assert _sb608(run, tmp_path, BUNDLED) == (0, [])
+
+
+def test_a_parameter_finding_is_said_once_whatever_the_robots(run, tmp_path):
+    """SB608 holds whatever the robot: against the two bundled robots it was said twice."""
+    path = tmp_path / "controllers.yaml"
+    path.write_text(BUNDLED.replace("wheel_separation: 0.54", 'wheel_separation: "0.54"'))
+    result = run("check", "controllers", path, "--format", "json", "--isolated")
+    assert [f["code"] for f in findings(result.stdout)].count("SB608") == 1, result.stdout
