@@ -106,7 +106,9 @@ URDF_RULES: tuple[Rule, ...] = (
          "xacro warns about deprecated syntax (for example a macro call without the xacro: "
          "prefix or an unused argument); newer xacro versions refuse it. A file whose name "
          "does not say xacro but that holds xacro gets the same warning, with how ROS tools "
-         "read it.",
+         "read it. What a file prints itself is reported as it printed it: xacro.warning() "
+         "as a warning, xacro.error() as a warning too (xacro goes on and writes the robot), "
+         "xacro.message() as information.",
          "Each finding's fix says what to change for its warning."),
     Rule("SB018", "xacro-include", N, "A xacro include: checked through its includers",
          "A xacro file that only defines macros or properties, or holds parts of a robot that "

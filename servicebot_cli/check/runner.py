@@ -19,7 +19,7 @@ from servicebot_cli.check.catalogue import RULES
 from servicebot_cli.check.env import CheckEnv
 from servicebot_cli.check.findings import Finding, Issue, Severity
 from servicebot_cli.check.settings import Settings
-from servicebot_cli.check.xacro_warnings import xacro_fix
+from servicebot_cli.check.xacro_warnings import xacro_warning
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.description.safe_xml import MAX_BYTES
 
@@ -166,20 +166,12 @@ def _unreadable(exc: DescriptionError, source: RobotSource) -> bool:
                                       "cannot read:", "not a xacro file"))
 
 
-_PLACED = re.compile(r"(.+?):(\d+)(?::(\d+))?: (.+)", re.DOTALL)
-"""A warning that starts with where it was written (``file:line:column: ...``)."""
-
-
 def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Iterator[Issue]:
     """Every rule family but the model, skipping families with no selected rule."""
     from servicebot_cli.check import gazebo, geometry, inertia, joints, ros2_control, transmissions
 
     for warning in dict.fromkeys(robot.warnings):  # a call site's warning once
-        placed = _PLACED.match(warning)  # the place is the finding's: not again in its text
-        where = (placed[1], int(placed[2]), int(placed[3] or 0)) if placed \
-            else (robot.display, 0, 0)
-        yield Issue("SB017", placed[4] if placed else warning.removeprefix(f"{robot.display}: "),
-                    where=where, fix=xacro_fix(warning))
+        yield xacro_warning(warning, robot.display)
     if robot.external_dtd is not None:  # named, never loaded: by no reader either
         dtd = robot.external_dtd
         yield Issue("SB005", f"external DTD '{dtd.identifier}' is never loaded, as no robot "

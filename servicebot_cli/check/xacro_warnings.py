@@ -1,12 +1,16 @@
 """SB017: what to do about each warning xacro (or the loader, about xacro) gave.
 
-xacro's own warnings say what is wrong and not what to change; the loader's say both, and
-their fix is the advice they end with.
+xacro's own warnings say what is wrong and not what to change; the loader's carry their fix.
+A file's own ``xacro.message()``, ``xacro.error()`` and ``xacro.warning()`` say what its
+author meant to.
 """
 
 from __future__ import annotations
 
 import re
+
+from servicebot_cli.check.findings import Issue, Severity
+from servicebot_cli.description.load_warnings import LoadWarning
 
 # xacro's own warning texts (xacro/__init__.py), each with its fix; \1 is what it names
 _XACRO: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), f) for p, f in (
@@ -30,25 +34,32 @@ _XACRO: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), f) for p
     (r"Using (\w+)\(\) directly is deprecated\. Use ([\w.]+)\(\) instead\.",
      r"write \2()"),
 ))
-# the loader's own warnings end with their advice (servicebot_cli.description)
-_ADVICE = (
-    re.compile(r"\((name it \.urdf\.xacro[^)]*)\)$"),
-    re.compile(r"; (write <xacro:.*/>)$"),
-)
 
 
-def xacro_fix(warning: str) -> str | None:
-    """What to change for ``warning``, if it is one of the warnings known here."""
+def xacro_warning(warning: LoadWarning, display: str) -> Issue:
+    """The SB017 finding for ``warning``, placed where it says, with what to change.
+
+    A file's ``xacro.message()`` is information; its ``xacro.error()`` a warning, as xacro
+    goes on and writes the robot.
+    """
+    where = (warning.file or display, warning.line, warning.column)
+    if warning.said_as == "message":
+        return Issue("SB017", f"the file's xacro.message(): {warning.text}", where=where,
+                     fix="nothing to change: the file prints this while xacro expands it",
+                     severity=Severity.INFO)
+    if warning.said_as == "error":
+        return Issue("SB017", f"the file's xacro.error(), after which xacro goes on: "
+                     f"{warning.text}", where=where,
+                     fix="do what it says: xacro still writes the robot, as the file stands")
+    return Issue("SB017", warning.text, where=where, fix=warning.fix or _xacro_fix(warning.text)
+                 or "do what the warning says: the file wrote it with xacro.warning(), or "
+                 "xacro did")
+
+
+def _xacro_fix(warning: str) -> str | None:
+    """What to change for one of xacro's own warnings, when it is known here."""
     for pattern, fix in _XACRO:
         found = pattern.search(warning)
         if found:
             return found.expand(fix)
-    for advice in _ADVICE:
-        found = advice.search(warning)
-        if found:
-            return found[1]
-    if "is not declared or read by this file" in warning:
-        name = re.search(r"xacro argument '([^']*)'", warning)
-        return (f"drop {name[1] if name else 'the argument'}:=VALUE, or declare it with "
-                "<xacro:arg name=...> where the file reads it")
     return None

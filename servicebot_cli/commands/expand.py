@@ -17,6 +17,10 @@ URDF_SUFFIXES = (".urdf", ".xml")
 """What ``-o`` may be called: ``robot.urdf``, ``robot.urdf.xml`` (as the bundled ones), ``.xml``."""
 
 
+_SAID = {"warning": "warning: ", "error": "warning: the file's xacro.error(): ", "message": ""}
+"""How each kind of thing xacro printed is shown: a file's messages as they are."""
+
+
 @click.command(cls=Command)
 @robot_arguments()
 @click.option("-o", "--output",
@@ -55,8 +59,9 @@ def expand(ctx: click.Context, robot_args: RobotArgs, output: str) -> None:
         path = bundled_file(XACRO_SOURCE)
         source = RobotSource(path, str(path), tuple(args.items()), robot_args.packages)
     robot = read_description(source)
-    for warning in robot.warnings:
-        click.echo(f"warning: {warning}", err=True)
+    for warning in robot.warnings:  # as xacro shows them: a file's messages bare
+        fix = f"; {warning.fix}" if warning.fix else ""
+        click.echo(f"{_SAID[warning.said_as]}{warning}{fix}", err=True)
     if output == "-":
         click.echo(robot.xml_text, nl=False)
     else:

@@ -15,6 +15,7 @@ from pathlib import Path
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.common.inputs import display_path, printable_name, read_input_bytes
 from servicebot_cli.description import resources
+from servicebot_cli.description.load_warnings import LoadWarning
 from servicebot_cli.description.model import check_hint
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.parents import second_parents
@@ -156,8 +157,9 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
                 f"{source.display}: not a xacro file, so xacro arguments ({names}) mean nothing"
             )
         document = parse_xml(data, source.display, max_bytes=max_bytes)
-        warnings = (f"{source.display}: holds xacro elements, but is not a .xacro file: read "
-                    "as plain URDF, as ROS tools read it (name it .urdf.xacro to expand it)",
+        warnings = (LoadWarning("holds xacro elements, but is not a .xacro file: read as "
+                                "plain URDF, as ROS tools read it", source.display,
+                                fix="name it .urdf.xacro to expand it"),
                     ) if uses_xacro(data) else ()
         return RobotDescription(
             display=source.display, path=source.path, xml_text=document.text,
@@ -173,9 +175,9 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
         element.origin = origin  # type: ignore[attr-defined]
     what = "expressions (${...})" if b"${" in without_comments(data) else \
         "package paths ($(find ...))"
-    named = () if is_xacro_name(source.path) else (
-        f"{source.display}: holds xacro {what}, but is not a .xacro file: "
-        "expanded with xacro, as only xacro can read it (name it .urdf.xacro)",)
+    named = () if is_xacro_name(source.path) else (LoadWarning(
+        f"holds xacro {what}, but is not a .xacro file: expanded with xacro, as only xacro "
+        "can read it", source.display, fix="name it .urdf.xacro"),)
     return RobotDescription(
         display=source.display, path=source.path, xml_text=expansion.xml_text,
         root=document.root, files=expansion.files, xacro_args=source.xacro_args,

@@ -23,6 +23,7 @@ from servicebot_cli.common.errors import (
 )
 from servicebot_cli.description import elements as el
 from servicebot_cli.description import extensions as ext
+from servicebot_cli.description.load_warnings import LoadWarning
 from servicebot_cli.description.model import build_model, check_hint, new_data
 from servicebot_cli.description.safe_xml import ExternalDtd, PositionedElement
 from servicebot_cli.description.sources import SourceRef
@@ -79,7 +80,8 @@ class RobotDescription:
         external_dtd: The external DTD the DOCTYPE names, never loaded, and where.
         files: Every file read: the top one, then xacro includes.
         xacro_args: ``name:=value`` arguments the xacro was expanded with.
-        warnings: Warnings from xacro.
+        warnings: What reading it warned of (xacro's warnings, a file's messages, the
+            loader's own).
     """
 
     display: str
@@ -90,7 +92,7 @@ class RobotDescription:
     external_dtd: ExternalDtd | None = None
     files: tuple[str, ...] = ()
     xacro_args: tuple[tuple[str, str], ...] = ()
-    warnings: tuple[str, ...] = ()
+    warnings: tuple[LoadWarning, ...] = ()
     _models: dict[str, pin.Model] = field(default_factory=dict, repr=False)
     _admitted: list[bool] = field(default_factory=list, repr=False)  # past the refusals
 

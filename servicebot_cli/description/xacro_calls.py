@@ -12,6 +12,7 @@ from __future__ import annotations
 import xml.dom.minidom
 from collections.abc import Callable, Mapping
 
+from servicebot_cli.description.load_warnings import LoadWarning
 from servicebot_cli.description.sources import SourceRef
 
 URDF_TOP_LEVEL = frozenset({"link", "joint", "material", "transmission", "gazebo",
@@ -21,7 +22,7 @@ URDF_TOP_LEVEL = frozenset({"link", "joint", "material", "transmission", "gazebo
 
 def bare_macro_calls(doc: xml.dom.minidom.Document, macros: Mapping[str, SourceRef],
                      origin: Callable[[xml.dom.minidom.Element], SourceRef | None]
-                     ) -> tuple[str, ...]:
+                     ) -> tuple[LoadWarning, ...]:
     """A warning per element under ``<robot>`` named like one of ``macros`` without ``xacro:``.
 
     Args:
@@ -29,7 +30,7 @@ def bare_macro_calls(doc: xml.dom.minidom.Document, macros: Mapping[str, SourceR
         macros: Where each macro the files define is defined, by name.
         origin: Where an element of ``doc`` was written, when known.
     """
-    warnings: list[str] = []
+    warnings: list[LoadWarning] = []
     robot = doc.documentElement
     for node in robot.childNodes if robot is not None else ():
         if not isinstance(node, xml.dom.minidom.Element):
@@ -39,10 +40,11 @@ def bare_macro_calls(doc: xml.dom.minidom.Document, macros: Mapping[str, SourceR
         if defined is None or name in URDF_TOP_LEVEL:
             continue
         written = origin(node)
-        where = written.location() if written is not None else defined.file
-        warnings.append(
-            f"{where}: <{name}> is not a macro call: xacro expands <xacro:{name}> (macro "
+        place = (written.file, written.line, written.column) if written is not None \
+            else (defined.file, 0, 0)
+        warnings.append(LoadWarning(
+            f"<{name}> is not a macro call: xacro expands <xacro:{name}> (macro "
             f"'{name}' of {defined.location()}), so it leaves <{name}> in the URDF, where every "
-            f"reader skips it (xacro before 1.14 and 2.0.8 took the bare name); write "
-            f"<xacro:{name} .../>")
+            f"reader skips it (xacro before 1.14 and 2.0.8 took the bare name)",
+            *place, fix=f"write <xacro:{name} .../>"))
     return tuple(warnings)

@@ -30,10 +30,10 @@ ROBOT = """<?xml version="1.0"?>
 
 
 def _warnings(run, path) -> list[str]:
-    """Each SB017 finding as ``file:line:column: message``."""
+    """Each SB017 finding as ``file:line:column: message; fix``."""
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB017")
     assert result.exit_code == 0, result.output
-    return [f"{f['file']}:{f['line']}:{f['column']}: {f['message']}"
+    return [f"{f['file']}:{f['line']}:{f['column']}: {f['message']}; {f['fix']}"
             for f in findings(result.stdout)]
 
 
@@ -46,8 +46,10 @@ def test_a_bare_macro_call_is_one_warning_at_the_call(run, tmp_path):
     assert message.startswith(f"{path}:16:3: <wheel> is not a macro call")
     assert "(xacro before 1.14 and 2.0.8 took the bare name)" in message  # not Melodic only
     assert f"macro 'wheel' of {path}:4:3" in message
-    assert "write <xacro:wheel .../>" in message
-    expanded = run("expand", path).stdout  # as xacro does: the bare element is left as it is
+    assert message.endswith("; write <xacro:wheel .../>")
+    expanded = run("expand", path)  # as xacro does: the bare element is left as it is
+    assert expanded.stderr.strip() == f"warning: {message}"
+    expanded = expanded.stdout
     assert 'name="right_wheel"' in expanded and 'name="left_wheel"' not in expanded
     assert '<wheel side="left"/>' in expanded
 

@@ -25,7 +25,7 @@ def _check(run, tmp_path, text: str) -> tuple[int, list[tuple[str, str]]]:
     path = tmp_path / "sam_bot_description.urdf"
     path.write_text(text)
     result = run("check", path, "--format", "json", "--isolated", "--ignore", "SB309")
-    return result.exit_code, [(str(f["code"]), str(f["message"])) for f in
+    return result.exit_code, [(str(f["code"]), f"{f['message']}; {f['fix']}") for f in
                               findings(result.stdout)]
 
 
@@ -34,7 +34,7 @@ def test_a_urdf_with_xacro_expressions_is_expanded_with_a_warning(run, tmp_path)
     exit_code, found = _check(run, tmp_path, SAM_BOT_LIKE)
     assert exit_code == 0
     assert [code for code, _ in found] == ["SB017"]
-    assert "expanded with xacro" in found[0][1] and "name it .urdf.xacro" in found[0][1]
+    assert "expanded with xacro" in found[0][1] and found[0][1].endswith("; name it .urdf.xacro")
 
 
 def test_a_urdf_with_xacro_elements_but_no_expression_is_read_as_it_is(run, tmp_path):

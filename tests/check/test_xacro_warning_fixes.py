@@ -42,3 +42,42 @@ def test_a_urdf_that_xacro_must_expand_says_to_name_it_xacro(run, tmp_path):
     result = run("check", "urdf", path, "--format", "json", "--isolated", "--select", "SB017")
     (found,) = findings(result.stdout)
     assert found["fix"] == "name it .urdf.xacro"
+
+
+def test_what_a_file_prints_itself_is_reported_as_it_printed_it(run, tmp_path):
+    """xacro.message() is the file's information, xacro.error() a warning (xacro writes the
+    robot all the same), xacro.warning() a warning that says so: a message was a warning
+    with the generic fix "Each finding's fix says what to change"."""
+    path = tmp_path / "r.urdf.xacro"
+    path.write_text(f"{HEAD}<link name=\"a${{xacro.message('using sim', color='green')}}"
+                    "${xacro.error('Unknown', 'gripper')}${xacro.warning('deprecated', 5)}\"/>"
+                    "</robot>")
+    result = run("check", "urdf", path, "--format", "json", "--isolated", "--select", "SB017")
+    said = {f["message"]: (f["severity"], f["fix"]) for f in findings(result.stdout)}
+    assert said == {
+        "the file's xacro.message(): using sim":
+            ("info", "nothing to change: the file prints this while xacro expands it"),
+        "the file's xacro.error(), after which xacro goes on: Unknown gripper":
+            ("warning", "do what it says: xacro still writes the robot, as the file stands"),
+        "deprecated 5": ("warning", "do what the warning says: the file wrote it with "
+                         "xacro.warning(), or xacro did")}
+    assert result.exit_code == 0
+    expanded = run("expand", path)
+    assert expanded.stderr.splitlines() == [
+        "using sim", "warning: the file's xacro.error(): Unknown gripper",
+        "warning: deprecated 5"]
+
+
+def test_a_warning_xacro_writes_on_three_lines_is_one_finding(run, tmp_path):
+    """inconsistent namespace redefinitions: the old and the new URI on lines of their own
+    were two more warnings, each with the generic fix."""
+    (tmp_path / "part.xacro").write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro" xmlns:s="b"/>')
+    path = tmp_path / "r.urdf.xacro"
+    path.write_text(f'{HEAD[:-1]} xmlns:s="a"><xacro:include filename="part.xacro"/>'
+                    f"{LINK}</robot>")
+    result = run("check", "urdf", path, "--format", "json", "--isolated", "--select", "SB017")
+    (found,) = findings(result.stdout)
+    assert found["message"] == ("inconsistent namespace redefinitions for xmlns:s: old: a "
+                                f"new: b ({tmp_path / 'part.xacro'})")
+    assert found["fix"] == "declare xmlns:s with one namespace URI in every included file"
