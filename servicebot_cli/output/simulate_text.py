@@ -29,7 +29,9 @@ def summary_lines(summary: Summary) -> Iterator[str]:
            f"{format_number(summary['duration_s'])} s, seed {summary['seed']}")
     yield f"distance          {format_number(summary['distance_m'])} m"
     yield f"final pose        {_pose(summary['final_pose'])}"
-    yield f"odometry says     {_pose(summary['odometry_final_pose'])}"
+    said = _pose(summary["odometry_final_pose"])
+    yield f"odometry says     {said}" if summary["odometry_published_on"] else \
+        f"wheel odometry    {said} (no controller publishes it)"
     yield (f"odometry drift    {format_number(drift['final_position_m'])} m, "
            f"{format_number(drift['final_yaw_rad'])} rad at the end "
            f"(max {format_number(drift['max_position_m'])} m)")

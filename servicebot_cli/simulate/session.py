@@ -12,7 +12,7 @@ import contextlib
 import dataclasses
 import math
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Protocol, TextIO
@@ -305,12 +305,14 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
         pieces = simulator.pieces(body, scenario, seed=seed, solids=world_solids(scenario.world),
                                   meshes=meshes, piece_s=piece_s, facts=facts)
         stack.enter_context(contextlib.closing(pieces))  # its worker stopped whatever happens
+        topic = odom_topic(controllers_file)
+        odometry_on = [*filter(None, (topic,)), *(("/tf",) if controllers_file.odom_tf else ())]
         summary, last, writers = _write_pieces(
             joint_states.narrowed(pieces),
-            outputs, publishers(body, scenario.camera, odom_topic(controllers_file),
+            outputs, publishers(body, scenario.camera, topic,
                                 controllers_file.odom_tf, odom_frames(controllers_file, body),
                                 joint_states.topics, controllers_file.wheel_tf_joints),
-            stack, bar.advance if bar else None, live)
+            stack, bar.advance if bar else None, live, odometry_on)
     track = None
     if live:
         from servicebot_cli.simulate.files.live import LiveWriter
@@ -349,8 +351,11 @@ def _load_modules(outputs: Outputs, *, camera_images: bool) -> None:
 
 def _write_pieces(pieces: Iterator[SimResult], outputs: Outputs, sources: list[Publisher],
                   stack: contextlib.ExitStack, advance: Callable[[int], None] | None,
-                  live: bool = False) -> tuple[Summary, SimResult, list[Writer]]:
+                  live: bool = False, odometry_on: Sequence[str] = ()
+                  ) -> tuple[Summary, SimResult, list[Writer]]:
     """Give each piece to the summary and to every writer (``live``: the live window's too).
+
+    ``odometry_on``: where the base's controller publishes odometry (a topic, /tf).
 
     Returns the summary, the last piece and the writers.
 
@@ -358,7 +363,7 @@ def _write_pieces(pieces: Iterator[SimResult], outputs: Outputs, sources: list[P
     """
     from servicebot_cli.simulate.summary import Summarizer
 
-    summarizer = Summarizer(sources)
+    summarizer = Summarizer(sources, odometry_on)
     writers: list[Writer] | None = None
     for piece in pieces:
         if writers is None:

@@ -9,6 +9,7 @@ order, so it does not depend on where the pieces split the run.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import TypedDict
 
 import numpy as np
@@ -76,6 +77,7 @@ class Summary(TypedDict):
     final_pose: Pose
     odometry_final_pose: Pose | None
     odometry_drift: Drift
+    odometry_published_on: list[str]
     collisions: list[Collision]
     self_collisions: list[SelfCollision]
     min_obstacle_distance_m: float
@@ -123,8 +125,14 @@ def odometry_drift(result: SimResult) -> tuple[FloatArray, FloatArray]:
 class Summarizer:
     """The summary of a run, gathered from its pieces in order."""
 
-    def __init__(self, publishers: list[Publisher]) -> None:
+    def __init__(self, publishers: list[Publisher], odometry_on: Sequence[str] = ()) -> None:
+        """A summary of a run whose publishers are ``publishers``.
+
+        ``odometry_on``: where the base's controller publishes its odometry (its topic,
+        /tf); none: the run's wheel odometry is the simulator's alone.
+        """
         self.publishers = publishers
+        self.odometry_on = list(odometry_on)
         self.messages = dict.fromkeys((p.topic for p in publishers), 0)
         self.distance_sum = -0.0  # -0.0 + v == v: an empty running sum
         self.max_drift, self.final_drift = 0.0, (0.0, 0.0)
@@ -169,6 +177,7 @@ class Summarizer:
                 "max_position_m": self.max_drift,
                 "final_yaw_rad": float(abs(math.remainder(self.final_drift[1], math.tau))),
             },
+            "odometry_published_on": self.odometry_on,
             "collisions": [_collision(c) for c in self.contacts],
             "self_collisions": self.self_collisions,
             "min_obstacle_distance_m": 0.0 if self.contacts else closest.distance_m,

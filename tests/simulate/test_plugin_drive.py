@@ -115,10 +115,11 @@ def test_sam_bots_plugin_broadcasts_no_odom_tf_and_holds_commands(tmp_path):
 def test_with_publish_odom_tf_the_plugin_broadcasts_odom_to_base(tmp_path):
     pytest.importorskip("rosbags")
     robot = _sam_bot_with(tmp_path, "<publish_odom_tf>false", "<publish_odom_tf>true")
-    _, messages = _run(robot, tmp_path)
+    summary, messages = _run(robot, tmp_path)
     parents = {(t.header.frame_id, t.child_frame_id) for m in messages["/tf"]
                for t in m.transforms}
     assert ("odom", "base_link") in parents
+    assert summary["odometry_published_on"][-1] == "/tf"
 
 
 def test_without_publish_odom_no_odometry_is_published_anywhere(tmp_path):
@@ -127,6 +128,7 @@ def test_without_publish_odom_no_odometry_is_published_anywhere(tmp_path):
     summary, messages = _run(robot, tmp_path)
     assert not [t for t in messages if "odom" in t]
     assert summary["odometry_drift"]["final_position_m"] >= 0  # the summary still has it
+    assert summary["odometry_published_on"] == []  # and says nothing published it
 
 
 def test_a_ros1_plugin_on_its_default_topics_is_read_as_ros1(run, tmp_path):

@@ -8,6 +8,7 @@ ros2_control_demos' example_2 declares its controller's ``type`` in the controll
 from __future__ import annotations
 
 import json
+import re
 
 import pytest
 
@@ -143,6 +144,11 @@ def test_a_base_controller_simulate_does_not_model_is_named(tmp_path):
     assert result.returncode == 0, result.stderr
     assert ("the base's controller 'platform_velocity_controller' is a clearpath_mecanum_drive_"
             "controller/MecanumDriveController, which simulate does not model") in result.stderr
+    # and what it prints does not say odometry was published: it printed 'odometry says'
+    assert re.search(r"^wheel odometry +x \S+ m, .* \(no controller publishes it\)$",
+                     result.stdout, re.MULTILINE), result.stdout
+    assert "odometry says" not in result.stdout
     plain = run_servicebot("simulate", DIFFBOT, "--headless", "-s", scenario, "--controllers",
                            CONTROLLERS, env=NO_ROS)
     assert "does not model" not in plain.stderr
+    assert re.search(r"^odometry says +x \S+ m, [^(]*$", plain.stdout, re.MULTILINE)
