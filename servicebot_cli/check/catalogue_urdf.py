@@ -313,8 +313,9 @@ URDF_RULES: tuple[Rule, ...] = (
     Rule("SB401", "mesh-not-found", E, "A mesh file cannot be found",
          "Relative paths resolve from the URDF's directory, file:// from the root, "
          "package://PKG/PATH in PKG's directory (found as in SB408). The package was found, "
-         "but the file is not in it, or the path names no file. A package that is nowhere "
-         "is SB408 instead.",
+         "but the file is not in it, or the path names no file, or a URI scheme no reader "
+         "resolves (only package://, file://, Gazebo's model:// and http(s):// are). A "
+         "package that is nowhere is SB408 instead.",
          "Fix the path."),
     Rule("SB402", "mesh-unloadable", E, "A mesh file cannot be loaded",
          "The file exists but is not a mesh that trimesh (or the built-in STL, OBJ and "
@@ -345,15 +346,18 @@ URDF_RULES += (
          "holding the file (the nearest package.xml, by its <name>); every package of the "
          "enclosing colcon workspace or repository (skipping COLCON_IGNORE, AMENT_IGNORE, "
          "CATKIN_IGNORE); ROS_PACKAGE_PATH; AMENT_PREFIX_PATH (PREFIX/share/NAME); "
-         "directories named NAME on those paths. A missing package is the environment, not "
+         "directories named NAME on those paths; a Gazebo model://NAME on GAZEBO_MODEL_PATH "
+         "and GZ_SIM_RESOURCE_PATH too. A missing package is the environment, not "
          "the file (check_urdf accepts it), so a warning: the meshes are not checked.",
          "Pass --package NAME=DIR, or check from the workspace that holds the package."),
     Rule("SB409", "package-not-ros", W, "A package only some loaders would find",
          "The package resolved, but not the way ROS finds packages: a directory named NAME "
          "above the file (Pinocchio and yourdfpy read example-robot-data this way), NAME/ "
          "beside the file (pybullet_data's package://meshes/), or package:///abs/path. "
-         "robot_state_publisher, RViz and Gazebo would not find the meshes. One finding per "
-         "file and package; --format json says how each package was found.",
+         "robot_state_publisher, RViz and Gazebo would not find the meshes. Gazebo's "
+         "model://NAME/ (found on GAZEBO_MODEL_PATH or GZ_SIM_RESOURCE_PATH, else as package "
+         "NAME, which gazebo_ros puts on the model path) is read by Gazebo alone. One finding "
+         "per file and package; --format json says how each package was found.",
          "Give the package a package.xml with its <name>, or use paths relative to the file."),
     Rule("SB410", "remote-mesh", N, "Meshes fetched over the network",
          "http:// and https:// meshes (Gazebo Fuel models) are fetched by Gazebo when the "

@@ -105,6 +105,11 @@ def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str
         tally.remote.append((shape.geometry.filename or "", element))
         return
     except MeshNotFound as exc:
+        if exc.resolved.path is None and exc.resolved.package is None:  # foo://
+            yield Issue("SB401", f"{where}: {exc}", element,
+                        fix="write the mesh as package://PKG/..., file:// or a path relative "
+                        "to the file")
+            return
         if exc.resolved.path is None or tally.guessed_wrong(exc.resolved, element):
             tally.add_missing(exc.resolved, element)
             return

@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue
-from servicebot_cli.common.errors import PackageNotFound, RemoteResource
+from servicebot_cli.common.errors import PackageNotFound, RemoteResource, UnknownScheme
 from servicebot_cli.description.packages import PackageLocation, PackageResolver, is_remote
 
 if TYPE_CHECKING:
@@ -34,12 +34,14 @@ class Resolved:
         package: The ``package://`` name, or None for paths and ``file://``.
         location: How the package was found, or None.
         error: Why the package was not found (where it looked), or None.
+        model: Named as Gazebo's ``model://NAME/...``: ``package`` is a model's name.
     """
 
     path: Path | None
     package: str | None = None
     location: PackageLocation | None = None
     error: str | None = None
+    model: bool = False
 
 
 @dataclass
@@ -58,18 +60,20 @@ class PackageSearch:
         return self._resolved[key]
 
     def _resolve(self, uri: str, base_dir: Path) -> Resolved:
-        if not uri.startswith("package://"):
+        if not uri.startswith(("package://", "model://")):
             try:
                 return Resolved(self.resolver.resolve_uri(uri, base_dir))
-            except RemoteResource as exc:  # check says so before it resolves anything
-                return Resolved(None, error=str(exc))
-        name = uri[len("package://"):].partition("/")[0]
-        probe = PackageResolver(self.resolver.explicit, self.resolver.ros_package_path,
-                                self.resolver.ament_prefix_path, self.resolver.context)
+            except (RemoteResource, UnknownScheme) as exc:  # check says so before it
+                return Resolved(None, error=str(exc))  # resolves anything
+        name = uri.partition("://")[2].partition("/")[0]
+        probe = self.resolver.probe()
+        model = uri.startswith("model://")
         try:
             path = probe.resolve_uri(uri, base_dir)
         except PackageNotFound as exc:
-            return Resolved(None, name, None, str(exc))
+            return Resolved(None, name, None, str(exc), model)
+        if model:
+            return Resolved(path, name, probe.found.get(name), model=True)
         if not name and probe.found:  # package:///: an absolute path, or NAME as Pinocchio
             [(name, location)] = probe.found.items()  # reads it: the one the probe found
             return Resolved(path, name, location)
@@ -126,6 +130,7 @@ class FileTally:
     """What one file's mesh references found, gathered while the geometry rules run."""
 
     missing: dict[str, tuple[int, str, ET.Element]] = field(default_factory=dict)
+    models: set[str] = field(default_factory=set)  # which of missing are Gazebo models
     loader_only: dict[str, tuple[PackageLocation, ET.Element]] = field(default_factory=dict)
     remote: list[tuple[str, ET.Element]] = field(default_factory=list)
 
@@ -134,6 +139,8 @@ class FileTally:
         name = resolved.package or ""
         count, message, first = self.missing.get(name, (0, resolved.error or "", element))
         self.missing[name] = (count + 1, message, first)
+        if resolved.model:
+            self.models.add(name)
 
     def guessed_wrong(self, resolved: Resolved, element: ET.Element) -> bool:
         """Whether a missing mesh's package was only guessed, by a directory of its name.
@@ -145,7 +152,8 @@ class FileTally:
         nothing about the file.
         """
         location = resolved.location
-        if location is None or location.ros_finds_it or location.three_slashes:
+        if location is None or location.ros_finds_it or location.three_slashes or \
+                location.gazebo_model:  # Gazebo's model path is no guess: the file is missing
             return False
         name = resolved.package or ""
         if name not in self.missing:
@@ -165,7 +173,9 @@ class FileTally:
             meshes = f"{count} mesh{'es' if count != 1 else ''}"
             yield Issue("SB408", f"{message.split(';', 1)[0]}: {meshes} not checked; looked in"
                         f"{message.split('looked in', 1)[-1]}", element,
-                        fix=f"pass --package {name}=DIR, or check from the workspace that "
+                        fix=f"set GAZEBO_MODEL_PATH to the directory that holds model {name}, "
+                        f"or pass --package {name}=DIR" if name in self.models else
+                        f"pass --package {name}=DIR, or check from the workspace that "
                         "holds the package")
         for location, element in self.loader_only.values():
             message = location.warning or ""
@@ -177,7 +187,10 @@ class FileTally:
             fix = (f"write package://{location.name}/... with two slashes" + (
                        "" if location.named_ros_finds else f", and {named}")
                    if location.three_slashes else
-                   f"{named}, or use a path relative to the file")
+                   f"write package://{location.name}/... if {location.name} is a ROS package "
+                   "(Gazebo reads that too), else a path relative to the file"
+                   if location.gazebo_model
+                   else f"{named}, or use a path relative to the file")
             yield Issue("SB409", message, element, fix=fix)
         if self.remote:
             uri, element = self.remote[0]

@@ -83,6 +83,10 @@ class RemoteResource(DescriptionError):
     """A mesh or file named by an ``http(s)://`` address (Gazebo Fuel): fetched by no one here."""
 
 
+class UnknownScheme(DescriptionError):
+    """A mesh or file named by a URI whose scheme no robot description reader resolves."""
+
+
 class NameNotFound(ServicebotError):
     """A joint, frame, link or other name that the robot does not have.
 

@@ -14,21 +14,25 @@ One resolver for every command. A package is looked for, first hit wins:
 Steps 1-5 are how ROS finds packages. What only some loaders accept resolves too, with a
 warning that ROS would not find it: a directory called NAME above the file (Pinocchio and
 yourdfpy search directory names: example-robot-data's ``package://example-robot-data/``),
-``NAME/...`` beside the file or one of its parents (pybullet's ``package://meshes/...``), and
-``package:///abs/path``. Relative directories are made absolute once, against the current
-directory. Every lookup remembers how it was answered (:attr:`PackageResolver.found`).
+``NAME/...`` beside the file or one of its parents (pybullet's ``package://meshes/...``),
+``package:///abs/path``, and Gazebo's ``model://NAME/...`` (a directory NAME on Gazebo's model
+paths, else a package NAME, as gazebo_ros puts packages on the model path). Relative
+directories are made absolute once, against the current directory. Every lookup remembers
+how it was answered (:attr:`PackageResolver.found`).
 Packages and workspaces on disk are read by :mod:`~servicebot_cli.description.package_dirs`.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import os
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from urllib.parse import unquote, urlparse
 
-from servicebot_cli.common.errors import PackageNotFound, RemoteResource
+from servicebot_cli.common.errors import PackageNotFound, RemoteResource, UnknownScheme
 from servicebot_cli.description.package_dirs import (
     holding_package,
     packages_under,
@@ -36,6 +40,9 @@ from servicebot_cli.description.package_dirs import (
 )
 
 REMOTE_SCHEMES = ("http://", "https://")
+MODEL_PATH_VARIABLES = ("GAZEBO_MODEL_PATH", "GZ_SIM_RESOURCE_PATH", "IGN_GAZEBO_RESOURCE_PATH")
+"""Where Gazebo Classic, Gazebo (gz-sim) and Ignition look for ``model://NAME``."""
+_SCHEME = re.compile(r"([A-Za-z][A-Za-z0-9+.-]*)://")
 
 
 @dataclass(frozen=True)
@@ -50,6 +57,7 @@ class PackageLocation:
             find it the same way; False for what only some loaders accept.
         three_slashes: Named as ``package:///NAME/...``, which ROS reads as an empty name.
         named_ros_finds: With three slashes: whether ROS would find NAME with two.
+        gazebo_model: Named as Gazebo's ``model://NAME/...``.
     """
 
     name: str
@@ -58,12 +66,17 @@ class PackageLocation:
     ros_finds_it: bool = True
     three_slashes: bool = False
     named_ros_finds: bool = True
+    gazebo_model: bool = False
 
     @property
     def warning(self) -> str | None:
         """Why ROS would not find it, or None."""
         if self.ros_finds_it:
             return None
+        if self.gazebo_model:
+            return (f"model://{self.name}/... is resolved only by Gazebo, on its model path "
+                    f"(here: {self.how}); RViz, MoveIt, Pinocchio and MuJoCo do not read "
+                    "model://")
         if self.three_slashes:
             return (f"package:///{self.name}/... has three slashes: ROS reads the package name "
                     f"before the third as empty and would not find it; Pinocchio reads package "
@@ -81,6 +94,8 @@ class PackageResolver:
         explicit: ``--package`` mappings, name to directory (absolute).
         ros_package_path: Directories from ``ROS_PACKAGE_PATH`` (absolute).
         ament_prefix_path: Prefixes from ``AMENT_PREFIX_PATH`` (absolute).
+        model_path: Gazebo's model directories (``GAZEBO_MODEL_PATH``, ``GZ_SIM_RESOURCE_PATH``,
+            ``IGN_GAZEBO_RESOURCE_PATH``; absolute).
         context: The directory of the file being read: where its package and workspace are
             looked for. None: only the paths above.
         found: Every package resolved so far, by name (filled as lookups happen).
@@ -90,6 +105,7 @@ class PackageResolver:
     ros_package_path: tuple[Path, ...] = ()
     ament_prefix_path: tuple[Path, ...] = ()
     context: Path | None = None
+    model_path: tuple[Path, ...] = ()
     found: dict[str, PackageLocation] = field(default_factory=dict, compare=False)
 
     @classmethod
@@ -111,12 +127,18 @@ class PackageResolver:
             ros_package_path=_split_path(env.get("ROS_PACKAGE_PATH", "")),
             ament_prefix_path=_split_path(env.get("AMENT_PREFIX_PATH", "")),
             context=None if context is None else Path(context).absolute(),
+            model_path=tuple(p for name in MODEL_PATH_VARIABLES
+                             for p in _split_path(env.get(name, ""))),
         )
 
     def for_directory(self, directory: Path) -> PackageResolver:
         """The same search for a file in ``directory`` (an included file, another robot)."""
         return PackageResolver(self.explicit, self.ros_package_path, self.ament_prefix_path,
-                               directory.absolute(), self.found)
+                               directory.absolute(), self.model_path, self.found)
+
+    def probe(self) -> PackageResolver:
+        """The same search, remembering its answers apart from this one's."""
+        return dataclasses.replace(self, found={})
 
     def find(self, name: str) -> Path:
         """Directory of package ``name`` (its share directory for ament installs).
@@ -179,8 +201,43 @@ class PackageResolver:
                                  "does not do")
         if uri.startswith("file://"):
             return Path(unquote(urlparse(uri).path))
+        if uri.startswith("model://"):
+            return self._model(uri, base_dir)
+        scheme = _SCHEME.match(uri)
+        if scheme:
+            raise UnknownScheme(f"no robot description reader resolves '{scheme[1]}://' "
+                                "(ROS reads package:// and file://, Gazebo model:// too)")
         path = Path(uri).expanduser()
         return path if path.is_absolute() else base_dir / path
+
+    def _model(self, uri: str, base_dir: Path) -> Path:
+        """Where Gazebo finds ``model://NAME/rel``.
+
+        NAME in a directory of its model path, else package NAME (gazebo_ros exports
+        packages' parents as model directories).
+
+        Raises:
+            PackageNotFound: Neither is anywhere.
+        """
+        name, _, rel = uri[len("model://"):].partition("/")
+        rel = unquote(rel).lstrip("/")
+        location = next((PackageLocation(name, d / name, f"model path entry {_short(d)}",
+                                         ros_finds_it=False,
+                                         gazebo_model=True)
+                         for d in self.model_path if os.path.isdir(d / name)), None)
+        if location is None:
+            package = self._ros_location(name, base_dir)
+            if package is not None:
+                location = dataclasses.replace(package, how=f"package {name} by {package.how}",
+                                               ros_finds_it=False, gazebo_model=True)
+        if location is None:
+            paths = ", ".join(f"{v}=" + os.pathsep.join(str(p) for p in self.model_path)
+                              for v in MODEL_PATH_VARIABLES[:2]) if self.model_path else \
+                "GAZEBO_MODEL_PATH and GZ_SIM_RESOURCE_PATH (unset)"
+            raise PackageNotFound(f"model '{name}' not found; looked in {paths}; "
+                                  f"{self._searched(base_dir)}")
+        self.found.setdefault(name, location)
+        return location.path / rel
 
     def _rooted(self, rel: str, base_dir: Path) -> Path:
         """Where ``package:///rel`` leads, as the loaders that accept it read it.

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from servicebot_cli.common.errors import PackageNotFound, RemoteResource
+from servicebot_cli.common.errors import PackageNotFound, RemoteResource, UnknownScheme
 from servicebot_cli.common.inputs import not_a_file
 
 if TYPE_CHECKING:
@@ -68,6 +68,9 @@ def collision_meshes(robot: RobotDescription, resolver: PackageResolver
                                          "is fetched over the network, which the collision "
                                          "check does not do; --allow-collisions skips the "
                                          "check") from None
+                except UnknownScheme as exc:
+                    raise UnknownScheme(f"collision mesh '{filename}' of link '{link.name}': "
+                                        f"{exc}; --allow-collisions skips the check") from None
                 except PackageNotFound as exc:  # say what needs it, and how to do without
                     raise PackageNotFound(f"collision mesh '{filename}' of link '{link.name}': "
                                           f"{exc}; or --allow-collisions skips the collision "
