@@ -14,8 +14,8 @@ from servicebot_cli.description.load_warnings import LoadWarning
 
 # xacro's own warning texts (xacro/__init__.py), each with its fix; \1 is what it names
 _XACRO: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), f) for p, f in (
-    (r"redefining global symbol: (\S+)",
-     r"define '\1' once, or rename it: a second definition replaces the first everywhere"),
+    (r"redefining global symbol: (\S+)",  # a name xacro defines itself (Python's, math's)
+     r"rename the property: it hides xacro's own '\1' in every ${} expression that follows"),
     (r"Cannot remove global symbol: (\S+)", r"leave '\1' defined, or rename the property"),
     (r"(\S+): unknown attribute\(s\): (.+)",
      r"remove \2 from <\1>, or spell it as xacro names it"),
