@@ -6,7 +6,8 @@ include the robot's options leave out adds (warthog's ``bulkhead_link`` from
 ``accessories/warthog_bulkhead.urdf.xacro`` with ``WARTHOG_BULKHEAD`` set). Gazebo then
 ignores the block, as its author meant. This finds such definitions in the robot's own
 sources: the files the expansion read, and those their ``<xacro:include>`` elements name,
-taken or not (another robot of the package is not this robot's part). A definition is a
+taken or not (another robot of the package is not this robot's part); a definition the
+expansion expanded, with other values, is no part left out. A definition is a
 ``<link>`` or a ``<joint>`` with a ``type``: ``<ros2_control>`` and ``<transmission>`` name
 joints without one. A ``<link>`` inside a ``<gazebo>`` block is SDF that Gazebo adds to the
 model (PR2's gripper), no URDF link a reference could name.
@@ -14,6 +15,7 @@ model (PR2's gripper), no URDF link a reference could name.
 
 from __future__ import annotations
 
+import os
 import re
 from collections.abc import Collection
 from pathlib import Path
@@ -53,6 +55,9 @@ def defined_elsewhere(robot: RobotDescription, names: Collection[str]) -> dict[s
     if not robot.expanded or not names:
         return {}
     wanted = {name.encode(): name for name in names}
+    # where this expansion expanded a definition (with other values)
+    expanded = {(os.path.abspath(ref.file), ref.line) for ref in map(
+        robot.source_of, (*robot.root.findall("link"), *robot.root.findall("joint")))}
     found: dict[str, Definition] = {}
     sources = []
     for path in included_files([Path(file) for file in robot.files]):
@@ -70,7 +75,8 @@ def defined_elsewhere(robot: RobotDescription, names: Collection[str]) -> dict[s
                 continue
             written = named[1] if named[1] is not None else named[2]
             line = text.count(b"\n", 0, match.start()) + 1
-            for name in _defined(written, wanted, texts):
+            here = (os.path.abspath(path), line) in expanded
+            for name in _defined(written, wanted, texts, expanded_here=here):
                 found.setdefault(name, (display_path(path), line, match[1].decode(),
                                         written.decode("utf-8", "replace")))
     return found
@@ -81,13 +87,18 @@ def _line_breaks(block: re.Match[bytes]) -> bytes:
     return b"\n" * block[0].count(b"\n")
 
 
-def _defined(written: bytes, wanted: dict[bytes, str], texts: list[bytes]) -> list[str]:
+def _defined(written: bytes, wanted: dict[bytes, str], texts: list[bytes], *,
+             expanded_here: bool = False) -> list[str]:
     """The names of ``wanted`` that the name ``written`` in a source defines.
 
     Of a name written with expressions, only where what the expressions stand for is written
     in the sources (``texts``, comments blanked) as a word of its own: the argument of a call
     the expansion left out. create_robot's ``${prefix}_wheel_link`` is called with left and
     right; its ``rear_wheel_link`` is only in a comment, so a reference to it is a stale one.
+    A definition the expansion expanded (``expanded_here``) stands for another name only
+    through a call it left out, not by an expression left empty: summit_xl's
+    ``${prefix}base_footprint``, expanded as robot_base_footprint, is no optional
+    base_footprint.
     """
     if written in wanted:
         return [wanted[written]]
@@ -100,7 +111,8 @@ def _defined(written: bytes, wanted: dict[bytes, str], texts: list[bytes]) -> li
     pattern = re.compile(b"(.*)".join(re.escape(part) for part in parts), re.DOTALL)
     return [name for raw, name in wanted.items()
             if (match := pattern.fullmatch(raw)) is not None
-            and all(_written(value, texts) for value in match.groups() if value)]
+            and all(_written(value, texts) if value else not expanded_here
+                    for value in match.groups())]
 
 
 def _written(value: bytes, texts: list[bytes]) -> bool:

@@ -241,3 +241,24 @@ def test_a_reference_whose_expression_lost_its_dollar_is_a_typo(run, tmp_path):
         "'$' before it, so xacro left it as written; did you mean 'caster_left_joint' or "
         "'caster_left_link'?")
     assert found["fix"] == "write '${side}'"
+
+
+def test_a_definition_this_expansion_expanded_with_a_prefix_leaves_nothing_out(run, tmp_path):
+    """summit_xl's <gazebo reference="base_footprint"> beside ``${prefix}base_footprint``,
+    expanded as robot_base_footprint: a warning about a part left out (no part is) where the
+    expanded URDF gets an error. Expanded with the empty prefix, the reference holds."""
+    (tmp_path / "base.xacro").write_text(
+        f'<robot {XACRO}>\n  <gazebo reference="base_footprint"><mu1>1</mu1></gazebo>\n'
+        '  <xacro:macro name="base" params="prefix">\n'
+        '    <link name="${prefix}base_footprint"/>\n'
+        '    <joint name="${prefix}base_joint" type="fixed">\n'
+        '      <parent link="${prefix}base_footprint"/><child link="${prefix}base_link"/>\n'
+        '    </joint>\n    <link name="${prefix}base_link"/>\n  </xacro:macro>\n</robot>\n')
+    robot = tmp_path / "r.urdf.xacro"
+    robot.write_text(f'<robot name="r" {XACRO}><xacro:arg name="prefix" default="robot_"/>'
+                     '<xacro:include filename="base.xacro"/>'
+                     '<xacro:base prefix="$(arg prefix)"/></robot>')
+    exit_code, found = _sb501(run, robot)
+    assert exit_code == 1 and found["base_footprint"]["severity"] == "error"
+    assert "did you mean 'robot_base_footprint'" in found["base_footprint"]["message"]
+    assert _sb501(run, robot, "prefix:=") == (0, {})
