@@ -293,9 +293,11 @@ class _Checker:
     def wheels(self, section: str, params: yaml.MappingNode) -> Iterator[Issue]:
         geometry = self.geometry()
         if isinstance(geometry, str):
-            # The URDF's wheels are not cylinders on continuous joints (gz_ros2_control_demos'
-            # diff drive rolls on spheres): nothing to compare the YAML with, and no defect.
-            return
+            # No round wheels in the URDF (mesh wheels: igus ReBeL's platform): the joints the
+            # controller names still place its wheels, which is all the separation needs
+            geometry = self.named_geometry(params)
+            if geometry is None:
+                return
         for key, side in (("left_wheel_names", "left"), ("right_wheel_names", "right")):
             node = get(params, key)
             items = node.value if isinstance(node, yaml.SequenceNode) else []
@@ -308,11 +310,34 @@ class _Checker:
                                 f"{wheel.side} (y = {wheel.position_m[1]:g} m in the URDF)",
                                 where=self.where(item))
         radius_m, track_m = self.driven(params, geometry)
-        yield from self.value(section, params, "wheel_radius", radius_m, "SB603",
-                              ("left_wheel_radius_multiplier",))
+        if not math.isnan(radius_m):  # mesh wheels: no radius to compare with
+            yield from self.value(section, params, "wheel_radius", radius_m, "SB603",
+                                  ("left_wheel_radius_multiplier",))
         per_side = [sum(w.side == side for w in geometry.wheels) for side in ("left", "right")]
         yield from self.value(section, params, "wheel_separation", track_m, "SB604",
                               ("wheel_separation_multiplier",), skid=min(per_side) >= 2)
+
+    def named_geometry(self, params: yaml.MappingNode) -> DriveGeometry | None:
+        """The wheels on the joints the controller names, radius unknown.
+
+        None unless they are on both sides of the robot.
+        """
+        from servicebot_cli.kinematics.drive_geometry import DriveGeometry
+        from servicebot_cli.kinematics.plugin_wheels import wheels_named
+
+        wheels = wheels_named(self.robot, self.named_wheels(params))
+        sides = [[w.position_m[1] for w in wheels if w.side == side] for side in ("left", "right")]
+        if not all(sides):
+            return None
+        track_m = sum(sides[0]) / len(sides[0]) - sum(sides[1]) / len(sides[1])
+        return DriveGeometry(tuple(wheels), math.nan, track_m, math.inf)
+
+    def named_wheels(self, params: yaml.MappingNode) -> set[str]:
+        """The wheel joints the controller names, chains of references followed."""
+        return {self.joint_of(str(item.value))
+                for key in ("left_wheel_names", "right_wheel_names")
+                for node in [get(params, key)] if isinstance(node, yaml.SequenceNode)
+                for item in node.value if isinstance(item, yaml.ScalarNode)}
 
     def driven(self, params: yaml.MappingNode, geometry: DriveGeometry) -> tuple[float, float]:
         """Wheel radius and track of the wheels the controller drives, as far as it names them.
@@ -321,10 +346,7 @@ class _Checker:
         also turn freely (ball casters off the centre line) are no part of them. Without a
         named wheel on each side, the URDF's drive wheels, all of them.
         """
-        named = {self.joint_of(str(item.value))
-                 for key in ("left_wheel_names", "right_wheel_names")
-                 for node in [get(params, key)] if isinstance(node, yaml.SequenceNode)
-                 for item in node.value if isinstance(item, yaml.ScalarNode)}
+        named = self.named_wheels(params)
         wheels = [w for w in geometry.wheels if w.joint in named]
         sides = [[w.position_m[1] for w in wheels if w.side == side] for side in ("left", "right")]
         if not all(sides):

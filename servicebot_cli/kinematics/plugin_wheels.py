@@ -11,6 +11,7 @@ wheel's centre is its joint's origin; its side, as for every wheel, the sign of 
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -44,6 +45,20 @@ def plugin_wheels(robot: RobotDescription, world: dict[str, np.ndarray]) -> list
         if {w.side for w in wheels} == {"left", "right"}:
             return wheels
     return []
+
+
+def wheels_named(robot: RobotDescription, names: Iterable[str],
+                 radius_m: float = math.nan) -> list[Wheel]:
+    """The wheels on the joints ``names`` (a controller's), each where its joint puts it.
+
+    A joint that does not turn freely across the robot is left out. ``radius_m``: NaN when
+    nothing says it (mesh wheels).
+    """
+    from servicebot_cli.kinematics.link_poses import link_transforms
+
+    world = link_transforms(robot)
+    return [wheel for name in names
+            if (wheel := _wheel(robot, name, world, radius_m)) is not None]
 
 
 def _named(plugin: Plugin) -> tuple[list[str], float] | None:
