@@ -14,7 +14,7 @@ from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.optional_parts import Definition, defined_elsewhere
 from servicebot_cli.common.errors import NameNotFound
 from servicebot_cli.description import sensors as specs
-from servicebot_cli.description.extensions import Sensor, param, sdf_true
+from servicebot_cli.description.extensions import Sensor, param
 from servicebot_cli.description.sensors import NoiseSpec
 
 if TYPE_CHECKING:
@@ -43,7 +43,7 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     for block in unknown:
         yield _unknown_reference(block.reference or "", names, optional, block.element)
     fixed = {joint.name for joint in robot.joints if joint.type == "fixed"}
-    kept = kept_apart(robot)
+    kept = robot.kept_apart
     for sensor in robot.sensors:
         for problem in _sensor_problems(sensor):
             yield Issue("SB502", f"sensor '{sensor.name}': {problem}", sensor.element)
@@ -59,19 +59,6 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     yield from _mixed(robot)
     yield from _numbers(robot)
 
-
-_NOT_LUMPED = ("disableFixedJointLumping", "preserveFixedJoint")
-"""<gazebo reference="JOINT"> settings that keep a fixed joint from being lumped away."""
-
-
-def kept_apart(robot: RobotDescription) -> dict[str, str]:
-    """The fixed joints a ``<gazebo reference>`` keeps from lumping, with the setting's name."""
-    kept: dict[str, str] = {}
-    for block in robot.gazebo:
-        for key, value in block.properties:
-            if key in _NOT_LUMPED and sdf_true(value) and block.reference:
-                kept[block.reference] = key
-    return kept
 
 # what sdformat's URDF converter reads with std::stod or std::stoi (parser_urdf.cc), which
 # throws on text that does not start as a number: the conversion fails, Gazebo loads nothing

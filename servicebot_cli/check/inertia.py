@@ -12,7 +12,6 @@ import numpy as np
 from servicebot_cli.check import solids, values
 from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound
 from servicebot_cli.check.findings import Issue, Severity
-from servicebot_cli.check.gazebo import kept_apart
 from servicebot_cli.check.simulators import simulated_by
 from servicebot_cli.kinematics.transforms import rpy_matrix
 
@@ -255,7 +254,7 @@ def _moving_masses(robot: RobotDescription) -> Iterator[Issue]:
     by_name = {link.name: link for link in robot.links}
     below: dict[str, list[str]] = {}
     fixed_below: dict[str, list[str]] = {}  # the links fixed to each: lumped with it
-    kept = kept_apart(robot)
+    kept = robot.kept_apart
     for joint in robot.joints:
         if joint.parent in by_name and joint.child in by_name:
             below.setdefault(joint.parent or "", []).append(joint.child or "")

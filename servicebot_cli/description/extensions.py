@@ -84,6 +84,8 @@ class Sensor:
         update_rate_hz: ``<update_rate>`` [Hz]; None when absent.
         params: Its non-plugin children as ``(path, text)`` pairs (``ray/scan/horizontal/samples``).
         plugins: The plugins inside the sensor (Gazebo Classic ROS wrappers).
+        carrier: The link Gazebo attaches it to: ``reference``, or the link a fixed joint
+            lumps ``reference`` into (set by the robot; None outside a referenced block).
     """
 
     name: str
@@ -94,6 +96,7 @@ class Sensor:
     params: Params
     plugins: tuple[Plugin, ...]
     element: ET.Element | None = field(default=None, compare=False, repr=False)
+    carrier: str | None = None
 
 
 @dataclass(frozen=True)
@@ -182,6 +185,20 @@ def read_gazebo(element: ET.Element) -> GazeboBlock:
     return GazeboBlock(reference, sensors, plugins, tuple(properties), element)
 
 
+KEEP_APART = ("disableFixedJointLumping", "preserveFixedJoint")
+"""<gazebo reference="JOINT"> settings that keep a fixed joint from being lumped away."""
+
+
+def kept_apart(blocks: tuple[GazeboBlock, ...]) -> dict[str, str]:
+    """The fixed joints ``<gazebo reference>`` blocks keep from lumping, with the setting."""
+    kept: dict[str, str] = {}
+    for block in blocks:
+        for key, value in block.properties:
+            if key in KEEP_APART and sdf_true(value) and block.reference:
+                kept[block.reference] = key
+    return kept
+
+
 def _read_sensor(element: ET.Element, reference: str | None) -> Sensor:
     rate = _text(element.find("update_rate"))
     params = tuple(
@@ -198,6 +215,7 @@ def _read_sensor(element: ET.Element, reference: str | None) -> Sensor:
         params=params,
         plugins=tuple(read_plugin(p) for p in element.findall("plugin")),
         element=element,
+        carrier=reference,
     )
 
 

@@ -8,6 +8,7 @@ data. Nothing heavy is built until asked for, so ``check`` on a broken file stay
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
@@ -146,8 +147,33 @@ class RobotDescription:
 
     @cached_property
     def sensors(self) -> tuple[ext.Sensor, ...]:
-        """Every Gazebo ``<sensor>``, with the link it is attached to."""
-        return tuple(s for block in self.gazebo for s in block.sensors)
+        """Every Gazebo ``<sensor>``, with its link, and the link Gazebo carries it on."""
+        return tuple(dataclasses.replace(s, carrier=self.gazebo_link(s.reference))
+                     if s.reference else s for block in self.gazebo for s in block.sensors)
+
+    @cached_property
+    def kept_apart(self) -> dict[str, str]:
+        """The fixed joints a ``<gazebo reference>`` keeps from lumping, with the setting."""
+        return ext.kept_apart(self.gazebo)
+
+    def gazebo_link(self, name: str) -> str:
+        """The link Gazebo makes of link ``name``.
+
+        sdformat's URDF converter lumps the child of a fixed joint into its parent (unless
+        the joint is kept apart), up to a link that a moving or kept joint holds, or the root.
+        """
+        parents = self._fixed_parents
+        seen = {name}
+        while name in parents and parents[name] not in seen:
+            name = parents[name]
+            seen.add(name)
+        return name
+
+    @cached_property
+    def _fixed_parents(self) -> dict[str, str]:
+        kept = self.kept_apart
+        return {j.child: j.parent for j in self.joints
+                if j.type == "fixed" and j.name not in kept and j.child and j.parent}
 
     @cached_property
     def model_plugins(self) -> tuple[ext.Plugin, ...]:

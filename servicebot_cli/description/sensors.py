@@ -211,12 +211,32 @@ def plugin_topic(plugin: Plugin, default: str, ros1: str = "topicName", within: 
     return full if written.startswith("/") else full[1:]
 
 
+_SENSOR_FRAME_ID = frozenset(("libgazebo_ros_ray_sensor.so", "libgazebo_ros_camera.so",
+                              "libgazebo_ros_imu_sensor.so", "libgazebo_ros_gps_sensor.so"))
+"""gazebo_plugins' ROS 2 sensor plugins that stamp ``gazebo_ros::SensorFrameID``."""
+_ROS1_SENSOR_KEYS = frozenset(("frameName", "topicName", "robotNamespace", "bodyName",
+                               "cameraName", "imageTopicName", "cameraInfoTopicName",
+                               "gaussianNoise", "updateRateHZ"))
+"""Parameters only gazebo_ros_pkgs' ROS 1 sensor plugins read."""
+
+
 def _frame(sensor: Sensor) -> str | None:
+    """The frame its messages are stamped with.
+
+    gazebo_plugins' ROS 2 sensor plugins without ``<frame_name>`` stamp the link Gazebo
+    carries the sensor on (``gazebo_ros::SensorFrameID``: the sensor's parent, after
+    sdformat lumped fixed joints away), not the link the URDF names.
+    """
     plugin = ros_plugin(sensor)
-    named = (param(plugin.params, "frame_name") or param(plugin.params, "frameName")) \
-        if plugin else None
+    named = next(filter(None, (param(plugin.params, key) for key in (
+        "frame_name", "frameName", "frame_id"))), None) if plugin else None
+    if named:
+        return named
+    if plugin is not None and plugin.filename in _SENSOR_FRAME_ID and not any(
+            key in _ROS1_SENSOR_KEYS for key, _ in plugin.params):
+        return sensor.carrier
     gz_named = [param(sensor.params, key) for key in _GZ_FRAME_KEYS]
-    return named or next((n for n in reversed(gz_named) if n), None) or sensor.reference
+    return next((n for n in reversed(gz_named) if n), None) or sensor.reference
 
 
 def lidar_spec(sensor: Sensor) -> LidarSpec:

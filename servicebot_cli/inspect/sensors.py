@@ -19,6 +19,7 @@ from servicebot_cli.description.sensors import (
     gz_topic,
     imu_spec,
     lidar_spec,
+    plugin_topic,
     ros_plugin,
     topic_origin,
 )
@@ -45,6 +46,8 @@ class SensorInfo:
         frame: The frame its messages are stamped with.
         topics: What it publishes.
         topics_from: How the topic names were found (the ROS plugin, or gz-sim's ``<topic>``).
+        carrier: The link Gazebo carries it on: ``link``, or the link a fixed joint lumps
+            ``link`` into.
     """
 
     name: str
@@ -59,6 +62,7 @@ class SensorInfo:
     camera: CameraSpec | None = None
     imu: ImuSpec | None = None
     topics_from: str | None = None
+    carrier: str | None = None
 
 
 def sensor_info(sensor: Sensor) -> SensorInfo:
@@ -66,7 +70,8 @@ def sensor_info(sensor: Sensor) -> SensorInfo:
     plugin = ros_plugin(sensor)
     base = SensorInfo(sensor.name, sensor.type, "other", sensor.reference,
                       sensor.update_rate_hz, plugin.filename if plugin else None,
-                      sensor.reference, (), topics_from=topic_origin(sensor))
+                      sensor.reference, (), topics_from=topic_origin(sensor),
+                      carrier=sensor.carrier)
     if sensor.type in LIDAR_TYPES:
         spec = lidar_spec(sensor)
         # gz-sensors' GPU lidar also publishes its points beside the scan
@@ -92,8 +97,21 @@ def _present(*topics: tuple[str | None, str]) -> tuple[Topic, ...]:
     return tuple(Topic(name, message) for name, message in topics if name)
 
 
+_KNOWN_PLUGINS = {  # gazebo_plugins' gazebo_ros_bumper.cpp: ROS 2 and ROS 1 alike
+    "libgazebo_ros_bumper.so": ("bumper_states", "bumperTopicName",
+                                "gazebo_msgs/msg/ContactsState"),
+}
+"""Gazebo ROS sensor plugins without a typed view: the topic each publishes on (ROS 2's
+name, ROS 1's tag for it) and its message type."""
+
+
 def _other_topics(sensor: Sensor) -> tuple[Topic, ...]:
-    """Topics of a sensor without a typed view: remapping targets, else ``<topic>``."""
+    """Topics of a sensor without a typed view: a known plugin's, or remapping targets."""
+    known = [(plugin, _KNOWN_PLUGINS[plugin.filename]) for plugin in sensor.plugins
+             if plugin.filename in _KNOWN_PLUGINS]
+    if known:
+        return tuple(Topic(plugin_topic(plugin, default, ros1), message)
+                     for plugin, (default, ros1, message) in known)
     targets = [rule.partition(":=")[2].strip() for plugin in sensor.plugins
                for rule in params_all(plugin.params, "ros/remapping")]
     topic = gz_topic(sensor)

@@ -31,7 +31,10 @@ def sensors_tables(sensors: tuple[SensorInfo, ...]) -> list[Table]:
 
 
 def _details(s: SensorInfo) -> list[tuple[str, str]]:
-    rows = [("plugin", s.plugin or "-"), ("frame", s.frame or "-")]
+    lumped = s.plugin is not None and s.frame == s.carrier != s.link  # a ROS 2 plugin
+    # without <frame_name> stamps the link Gazebo carries the sensor on
+    frame = f"{s.frame} (Gazebo lumps {s.link} into it)" if lumped else s.frame or "-"
+    rows = [("plugin", s.plugin or "-"), ("frame", frame)]
     if s.topics and s.plugin is None and s.topics_from:
         rows.append(("topics from", s.topics_from))
     if s.lidar is not None:
