@@ -152,7 +152,8 @@ def declared_types(controller_type: str | None, params: yaml.MappingNode, sectio
             what = f"'{node.value}' as {_ARTICLE[got]}"
             fix = f"{key}: [{node.value}]" if wanted.endswith("_array") else _fix(node, wanted)
         else:
-            what, fix = f"it as a {got.replace('_', ' ')}", None
+            what = f"it as a {got.replace('_', ' ')}"
+            fix = f"write {key} as a {wanted.replace('_', ' ')}"
         some = key in _SOME_RELEASES
         yield Issue("SB608", f"{section}.{key}: rcl reads {what}, and {controller_type} "
                     f"declares a {wanted.replace('_', ' ')}"
@@ -298,19 +299,23 @@ def validated_values(controller_type: str | None, params: yaml.MappingNode, sect
         twice = next((n for k, n in enumerate(names) if n in names[:k]), None)
         if not names:
             problem = "is empty"
+            fix = f"name at least one {'joint' if key == 'joints' else 'interface'}"
         elif twice is not None:
-            problem = f"names '{twice}' twice"
+            problem, fix = f"names '{twice}' twice", f"name '{twice}' once"
         elif allowed and (odd := [n for n in names if n not in allowed]):
             problem = f"holds '{odd[0]}', which is none of {', '.join(allowed)}"
+            fix = f"replace '{odd[0]}' with one of {', '.join(allowed)}"
         elif key == "state_interfaces" and "velocity" in names and "position" not in names:
             problem = "holds velocity without position"
+            fix = f"{key}: [{', '.join(['position', *names])}]"
         elif key == "state_interfaces" and "acceleration" in names \
                 and not {"position", "velocity"} <= set(names):
             problem = "holds acceleration without both position and velocity"
+            fix = f"{key}: [position, velocity, acceleration]"
         else:
             continue
         yield Issue("SB608", f"{section}.{key} {problem}: JointTrajectoryController refuses "
-                    "it at configure", where=at(display, node.start_mark))
+                    "it at configure", where=at(display, node.start_mark), fix=fix)
 
 
 def _last(params: yaml.MappingNode, dotted: str) -> yaml.Node | None:

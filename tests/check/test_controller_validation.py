@@ -18,20 +18,26 @@ STATES = "    state_interfaces:\n      - position\n      - velocity\n"
 COMMANDS = "    command_interfaces:\n      - position\n"
 
 
-@pytest.mark.parametrize(("before", "after", "says"), [
-    (STATES, "    state_interfaces:\n      - velocity\n", "holds velocity without position"),
-    (STATES, STATES + "      - effort\n", "holds 'effort', which is none of position,"),
-    (COMMANDS, "    command_interfaces: []\n", "command_interfaces is empty"),
-    (COMMANDS, COMMANDS + "      - position\n", "names 'position' twice"),
+@pytest.mark.parametrize(("before", "after", "says", "fix"), [
+    (STATES, "    state_interfaces:\n      - velocity\n", "holds velocity without position",
+     "state_interfaces: [position, velocity]"),
+    (STATES, STATES + "      - effort\n", "holds 'effort', which is none of position,",
+     "replace 'effort' with one of position, velocity, acceleration"),
+    (COMMANDS, "    command_interfaces: []\n", "command_interfaces is empty",
+     "name at least one interface"),
+    (COMMANDS, COMMANDS + "      - position\n", "names 'position' twice",
+     "name 'position' once"),
     ("      - arm_link3_to_link4\n", "      - arm_link3_to_link4\n      - arm_base_to_link1\n",
-     "names 'arm_base_to_link1' twice"),
+     "names 'arm_base_to_link1' twice", "name 'arm_base_to_link1' once"),
 ])
-def test_a_trajectory_controller_list_it_refuses(run, tmp_path, before, after, says):
+def test_a_trajectory_controller_list_it_refuses(run, tmp_path, before, after, says, fix):
+    """Each with its own fix: every one said 'Write the value in the declared type'."""
     assert before in BUNDLED
     code, found = check_controllers(run, tmp_path, BUNDLED.replace(before, after, 1))
     assert code == 1
     assert [f["code"] for f in found] == ["SB608"], found
     assert says in str(found[0]["message"])
+    assert found[0]["fix"] == fix
 
 
 def test_a_forward_command_controller_without_interface_name(run, tmp_path):
