@@ -32,13 +32,14 @@ _HALF_TURN_DEG = 180.0  # SB212: limits of +-180 degrees or more may stand for n
 def check(robot: RobotDescription) -> Iterator[Issue]:
     """Every joint issue of ``robot``."""
     simulator = simulated_by(robot)
+    placed = _placed_by_gazebo(robot)
     for joint in robot.joints:
         if joint.type and joint.type not in JOINT_TYPES:
             advice = _ADVICE.get(joint.type.lower(), f"use one of: {', '.join(JOINT_TYPES)}")
             yield Issue("SB201", f"joint '{joint.name}' has type '{joint.type}', which URDF "
                         f"does not have; {advice}", joint.element)
             continue
-        yield from _limits(joint, simulator)
+        yield from _limits(joint, simulator, joint.name in placed)
         yield from _dynamics(joint)
         yield from _axis(joint)
         yield from _safety(joint)
@@ -68,13 +69,15 @@ def _dynamics(joint: Joint) -> Iterator[Issue]:
                     severity=Severity.WARNING if key == "damping" else None)
 
 
-def _zero_limit(joint: Joint, label: str, simulator: str | None) -> Issue:
+def _zero_limit(joint: Joint, label: str, simulator: str | None, placed: bool) -> Issue:
     """SB206: an effort or velocity limit of 0, weighed by who reads it.
 
     MoveIt and position or trajectory control do not read effort: ROS-Industrial's arms
     write ``effort="0"`` and move. A simulator's motors and effort-limited controllers
     cannot drive such a joint (a passive joint moves by springs and contact only). A velocity
     limit of 0 holds the joint still for every planner and controller that enforces limits.
+    Gazebo Classic's ros2_control system sets a position-commanded joint's position
+    (``placed``), whatever its effort limit.
     """
     unit = "m/s" if joint.type == "prismatic" else "rad/s"
     if label == "velocity":
@@ -84,6 +87,11 @@ def _zero_limit(joint: Joint, label: str, simulator: str | None) -> Issue:
     force = "N" if joint.type == "prismatic" else "N m"
     fix = (f"write the actuator's effort limit in {force} (a passive joint: the largest "
            "effort it may take)")
+    if placed:
+        return Issue("SB206", f"joint '{joint.name}' has effort limit 0: gazebo_ros2_control "
+                     "sets its position directly, so it moves in Gazebo Classic, but gz_ros2_"
+                     "control and effort-limited controllers could not drive it",
+                     joint.element, fix=fix, severity=Severity.INFO)
     if simulator is None:
         return Issue("SB206", f"joint '{joint.name}' has effort limit 0: kinematics, MoveIt "
                      "and position control do not read effort, but a simulator or an "
@@ -115,7 +123,22 @@ def _wheel_speeds(robot: RobotDescription) -> Iterator[Issue]:
                         "speed in rad/s")
 
 
-def _limits(joint: Joint, simulator: str | None) -> Iterator[Issue]:
+_CLASSIC_SYSTEM = "gazebo_ros2_control/GazeboSystem"
+
+
+def _placed_by_gazebo(robot: RobotDescription) -> set[str]:
+    """The joints Gazebo Classic's ros2_control system commands by position alone.
+
+    GazeboSystem::write sets such a joint's position (SetPosition), which its effort limit
+    does not bound.
+    """
+    return {joint.name for block in robot.ros2_control if block.plugin == _CLASSIC_SYSTEM
+            for joint in block.joints
+            if joint.command_interfaces
+            and {i.name for i in joint.command_interfaces} == {"position"}}
+
+
+def _limits(joint: Joint, simulator: str | None, placed: bool = False) -> Iterator[Issue]:
     limits = joint.limits
     if limits is None:
         if joint.type in ("revolute", "prismatic"):
@@ -131,7 +154,7 @@ def _limits(joint: Joint, simulator: str | None) -> Iterator[Issue]:
             yield Issue("SB205", f"joint '{joint.name}' has {label} limit {value:g}", joint.element,
                         fix=f"{label}=\"{-value:g}\"")
         elif value == 0:
-            yield _zero_limit(joint, label, simulator)
+            yield _zero_limit(joint, label, simulator, placed)
     if joint.type == "continuous":
         element = joint.element.find("limit") if joint.element is not None else None
         if element is not None and ("lower" in element.attrib or "upper" in element.attrib):

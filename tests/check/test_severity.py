@@ -151,6 +151,25 @@ def test_an_effort_limit_of_0_is_information_where_no_simulator_runs(run, tmp_pa
     assert "never move" not in found["message"]
 
 
+@pytest.mark.parametrize(("plugin", "interface", "severity"), [
+    ("gazebo_ros2_control/GazeboSystem", "position", "info"),
+    ("gazebo_ros2_control/GazeboSystem", "effort", "warning"),
+    ("gz_ros2_control/GazeboSimSystem", "position", "warning"),
+])
+def test_an_effort_limit_of_0_under_classic_position_control_moves(run, tmp_path, plugin,
+                                                                   interface, severity):
+    """Dobot's cra_description: Gazebo Classic's GazeboSystem sets a position-commanded
+    joint's position, which no effort limit bounds; the warning said it cannot be driven."""
+    path = tmp_path / "arm.urdf"
+    control = GZ_CONTROL.format(plugin=plugin).replace('"position"', f'"{interface}"')
+    path.write_text(ARM.format(extra=control + '<gazebo reference="arm"><mu1>1</mu1></gazebo>')
+                    .replace('effort="10"', 'effort="0"'))
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB206")
+    [found] = findings(result.stdout)
+    assert found["severity"] == severity
+    assert ("sets its position directly" in found["message"]) == (severity == "info")
+
+
 def test_a_velocity_limit_of_0_is_a_warning_everywhere(run, tmp_path):
     path = tmp_path / "arm.urdf"
     path.write_text(ARM.format(extra="").replace('velocity="1"', 'velocity="0"'))
