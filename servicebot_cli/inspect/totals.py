@@ -62,18 +62,21 @@ class ArmReach:
 
     A bound: exact where the segments can line up (the bundled arm, an iiwa), above the
     real reach where a segment is offset along a joint's axis (a UR10's 1.75 m against the
-    1.3 m it reaches).
+    1.3 m it reaches). A prismatic joint adds its travel (a rail, a gripper's fingers).
 
     Attributes:
         shoulder: The first arm joint whose next segment does not lie along its own axis
             (a base yaw joint turns its column in place, so the column adds no reach).
         tip: The frame at the end of the longest chain below the first arm joint.
-        reach_m: Sum of segment lengths from the shoulder to the tip [m].
+        reach_m: Sum of segment lengths from the shoulder to the tip, and of the travel of
+            its prismatic joints [m].
+        travel_m: The prismatic joints' part of ``reach_m`` [m].
     """
 
     shoulder: str
     tip: str
     reach_m: float
+    travel_m: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -177,11 +180,23 @@ def arm_reach(tree: KinematicTree, arm_joints: list[Joint],
     with np.errstate(all="ignore"):  # an origin of 1e308: inf or nan, refused below
         while start < len(path) - 1 and _adds_no_reach(path[start], points, start, transforms):
             start += 1
+        travel = sum(map(_travel_m, path[start:]))
         reach = sum(float(np.linalg.norm(points[i + 1] - points[i]))
-                    for i in range(start, len(points) - 1))
+                    for i in range(start, len(points) - 1)) + travel
     if not math.isfinite(reach):
         return None
-    return ArmReach(path[start].name, tip, clean(reach))
+    return ArmReach(path[start].name, tip, clean(reach), clean(travel))
+
+
+def _travel_m(joint: Joint) -> float:
+    """The farthest a prismatic joint moves its child from where it is at zero [m].
+
+    0 for other joints, and for a prismatic one without limits (nothing bounds it).
+    """
+    limits = joint.limits
+    if joint.type != "prismatic" or limits is None:
+        return 0.0
+    return max(abs(limits.lower or 0.0), abs(limits.upper or 0.0))
 
 
 def _arm_above(link: str | None, parent_joint: Mapping[str, Joint], names: set[str]) -> bool:

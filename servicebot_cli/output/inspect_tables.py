@@ -105,9 +105,11 @@ def totals_tables(totals: Totals) -> list[Table]:
         ("bounding box (visual)", _box(totals)),
     ]
     if totals.arm is not None:
+        slides = (f", its slides out by {d.quantity(totals.arm.travel_m, 'm')}"
+                  if totals.arm.travel_m else "")
         rows.append(("arm reach", f"{d.quantity(totals.arm.reach_m, 'm')}, "
                      f"{totals.arm.shoulder} to {totals.arm.tip}, at most (its links end "
-                     "to end)"))
+                     f"to end{slides})"))
     drive = totals.drive
     if drive is not None:
         rows += [("wheel radius", d.quantity(drive.wheel_radius_m, "m")),

@@ -191,7 +191,8 @@ def test_a_robot_without_sensors_or_drive(run, inspect_json, tmp_path):
     assert document["sensors"] == [] and document["totals"]["drive"] is None
     assert "not a differential drive" in document["totals"]["notes"][0]
     # joints 0.1 m apart along z, turning about y: from j0 (z 0.1) to l3 (z 0.3)
-    assert document["totals"]["arm"] == {"shoulder": "j0", "tip": "l3", "reach_m": 0.2}
+    assert document["totals"]["arm"] == {"shoulder": "j0", "tip": "l3", "reach_m": 0.2,
+                                         "travel_m": 0.0}
     text = run("inspect", chain).stdout
     assert "Sensors (0): no sensors" in text and "Totals" in text
 

@@ -1,0 +1,46 @@
+"""inspect's arm reach is a bound: a prismatic joint's travel belongs in it.
+
+A 2 m rail under a 1.2 m arm was 'at most 1.2 m' while fk put the tool 2.7 m from the rail
+and ik's out-of-reach test used 3.2 m; Piper's 0.038 m finger stroke was left out too.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+INERTIAL = ('<inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" '
+            'ixz="0" iyz="0"/></inertial>')
+
+
+def _joint(name: str, kind: str, parent: str, child: str, axis: str, origin: str = "0 0 0",
+           limits: str = 'lower="-3" upper="3"') -> str:
+    return (f'<joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/>'
+            f'<origin xyz="{origin}"/><axis xyz="{axis}"/><limit {limits} effort="10" '
+            'velocity="1"/></joint>')
+
+
+RAILBOT = ('<robot name="railbot"><link name="world"/>'
+           + "".join(f'<link name="{n}">{INERTIAL}</link>' for n in ("carriage", "l1", "l2", "l3"))
+           + _joint("rail", "prismatic", "world", "carriage", "1 0 0", limits='lower="0" upper="2"')
+           + _joint("j1", "revolute", "carriage", "l1", "0 0 1", "0 0 0.5")
+           + _joint("j2", "revolute", "l1", "l2", "0 1 0")
+           + _joint("j3", "revolute", "l2", "l3", "0 1 0", "0 0 0.4")
+           + '<joint name="tool_joint" type="fixed"><parent link="l3"/><child link="tool0"/>'
+           '<origin xyz="0 0 0.3"/></joint><link name="tool0"/></robot>')
+
+
+def test_a_rails_travel_is_part_of_the_arms_reach(run, tmp_path):
+    path = tmp_path / "railbot.urdf"
+    path.write_text(RAILBOT)
+    result = run("inspect", path, "--section", "totals", "--format", "json")
+    assert json.loads(result.stdout)["totals"]["arm"] == {
+        "shoulder": "rail", "tip": "tool0", "reach_m": 3.2, "travel_m": 2.0}
+    text = run("inspect", path, "--section", "totals").stdout
+    assert "3.2 m, rail to tool0, at most (its links end to end, its slides out by 2 m)" in text
+    # the bound holds where fk puts the tool, rail out and arm level
+    fk = run("fk", path, "-j", "rail=2", "-j", f"j2={math.pi / 2}", "--format", "json")
+    x_m, _, z_m = json.loads(fk.stdout)["poses"][0]["position_m"]
+    assert math.hypot(x_m, z_m) <= 3.2 and x_m > 2.69
+    ik = run("ik", path, "--position", "9", "0", "0.6", "--allow-collisions")
+    assert "beyond the arm's reach (3.2 m from joint 'rail')" in ik.output
