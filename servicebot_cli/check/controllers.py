@@ -291,13 +291,12 @@ class _Checker:
         return head if slash and head in self.joints and name not in self.joints else name
 
     def wheels(self, section: str, params: yaml.MappingNode) -> Iterator[Issue]:
-        geometry = self.geometry()
-        if isinstance(geometry, str):
-            # No round wheels in the URDF (mesh wheels: igus ReBeL's platform): the joints the
-            # controller names still place its wheels, which is all the separation needs
-            geometry = self.named_geometry(params)
-            if geometry is None:
-                return
+        found = self.geometry()
+        # No round wheels in the URDF (mesh wheels: igus ReBeL's platform): the joints the
+        # controller names still place its wheels, which is all the separation needs
+        geometry = self.named_geometry(params) if isinstance(found, str) else found
+        if geometry is None:
+            return
         for key, side in (("left_wheel_names", "left"), ("right_wheel_names", "right")):
             node = get(params, key)
             items = node.value if isinstance(node, yaml.SequenceNode) else []
