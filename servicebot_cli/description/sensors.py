@@ -104,6 +104,29 @@ class CameraSpec:
     frame: str | None
     image_topic: str | None
     info_topic: str | None
+    depth_topics: tuple[tuple[str, str], ...] = ()
+    """What its plugin publishes of depth, each topic with its message type: gazebo_ros_camera
+    on a ``depth`` sensor, gazebo_ros_openni_kinect and gazebo_ros_depth_camera (ROS 1)."""
+
+
+_DEPTH_PLUGINS = ("libgazebo_ros_openni_kinect.so", "libgazebo_ros_depth_camera.so")
+"""ROS 1 depth camera plugins (gazebo_ros_pkgs); ROS 2's gazebo_ros_camera on a depth sensor
+publishes the same three."""
+_DEPTH_OUTPUTS = (
+    ("depth/image_raw", "depthImageTopicName", "sensor_msgs/msg/Image"),
+    ("depth/camera_info", "depthImageCameraInfoTopicName", "sensor_msgs/msg/CameraInfo"),
+    ("points", "pointCloudTopicName", "sensor_msgs/msg/PointCloud2"),
+)
+"""Each depth output: its name under the camera's, the ROS 1 tag naming it, its type."""
+
+
+def _depth_topics(sensor: Sensor, plugin: Plugin, name: str) -> tuple[tuple[str, str], ...]:
+    """The depth image, its camera_info and the point cloud a depth camera plugin adds."""
+    ros2_depth = sensor.type == "depth" and plugin.filename == "libgazebo_ros_camera.so"
+    if not ros2_depth and plugin.filename not in _DEPTH_PLUGINS:
+        return ()
+    return tuple((plugin_topic(plugin, f"{name}/{default}", ros1, name), message)
+                 for default, ros1, message in _DEPTH_OUTPUTS)
 
 
 def _float(params: Params, path: str) -> float | None:
@@ -288,11 +311,13 @@ def camera_spec(sensor: Sensor) -> CameraSpec:
     p = sensor.params
     plugin = ros_plugin(sensor)
     image_topic, info_topic = _gz_camera_topics(sensor)
+    depth: tuple[tuple[str, str], ...] = ()
     if plugin is not None:
         name = param(plugin.params, "camera_name") or sensor.name
         name = param(plugin.params, "cameraName") or name
         image_topic = plugin_topic(plugin, f"{name}/image_raw", "imageTopicName", name)
         info_topic = plugin_topic(plugin, f"{name}/camera_info", "cameraInfoTopicName", name)
+        depth = _depth_topics(sensor, plugin, name)
     return CameraSpec(
         width_px=_int(p, "camera/image/width"),
         height_px=_int(p, "camera/image/height"),
@@ -305,6 +330,7 @@ def camera_spec(sensor: Sensor) -> CameraSpec:
         frame=_frame(sensor),
         image_topic=image_topic,
         info_topic=info_topic,
+        depth_topics=depth,
     )
 
 

@@ -83,7 +83,7 @@ def sensor_info(sensor: Sensor) -> SensorInfo:
     if sensor.type in CAMERA_TYPES:
         cam = camera_spec(sensor)
         topics = _present((cam.image_topic, "sensor_msgs/msg/Image"),
-                          (cam.info_topic, "sensor_msgs/msg/CameraInfo"))
+                          (cam.info_topic, "sensor_msgs/msg/CameraInfo"), *cam.depth_topics)
         return replace(base, kind="camera", frame=cam.frame, camera=cam, topics=topics)
     if sensor.type == "imu":
         imu = imu_spec(sensor)

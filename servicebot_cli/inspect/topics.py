@@ -9,7 +9,7 @@ listed as a device, since the motors are reached through it.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -93,7 +93,24 @@ def _commands(c: Controller, manager: PluginNode | None) -> list[Row]:
     return [("in", "topic", "~/commands", "std_msgs/msg/Float64MultiArray", None)]
 
 
+def _published(name: str, message: str) -> Callable[[Controller, PluginNode | None], list[Row]]:
+    """A sensor broadcaster's one topic (force/torque, IMU, range)."""
+    return lambda c, manager: [("out", "topic", name, message, None)]
+
+
+def _gripper(c: Controller, manager: PluginNode | None) -> list[Row]:
+    return [("in", "action", "~/gripper_cmd", "control_msgs/action/GripperCommand", None)]
+
+
 _KNOWN = {
+    "force_torque_sensor_broadcaster/ForceTorqueSensorBroadcaster":
+        _published("~/wrench", "geometry_msgs/msg/WrenchStamped"),
+    "imu_sensor_broadcaster/IMUSensorBroadcaster": _published("~/imu", "sensor_msgs/msg/Imu"),
+    "range_sensor_broadcaster/RangeSensorBroadcaster":
+        _published("~/range", "sensor_msgs/msg/Range"),
+    "position_controllers/GripperActionController": _gripper,
+    "effort_controllers/GripperActionController": _gripper,
+    "parallel_gripper_action_controller/GripperActionController": _gripper,
     "diff_drive_controller/DiffDriveController": _diff_drive,
     "joint_trajectory_controller/JointTrajectoryController": _trajectory,
     "joint_state_broadcaster/JointStateBroadcaster": _joint_states,

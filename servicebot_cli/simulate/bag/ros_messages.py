@@ -45,6 +45,7 @@ JOINT_STATES_TOPIC = "/joint_states"
 CLOCK_TOPIC, DESCRIPTION_TOPIC = "/clock", "/robot_description"
 TF_TYPE = "tf2_msgs/msg/TFMessage"
 IMAGE_TYPE = "sensor_msgs/msg/Image"
+CAMERA_INFO_TYPE = "sensor_msgs/msg/CameraInfo"
 NO_IMAGES = CameraImages()
 
 
@@ -131,15 +132,20 @@ def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
                              qos.SENSOR_DATA,
                              lambda r: r.imu.times_s if r.imu else np.zeros(0), _imu))
     if body.camera is not None:
-        out.append(Publisher(absolute(body.camera.spec.info_topic, "camera_info"),
-                             "sensor_msgs/msg/CameraInfo", qos.SENSOR_DATA,
-                             lambda r: r.camera_times_s, camera_messages.camera_info))
+        spec = body.camera.spec
+        depth = dict(spec.depth_topics)  # a depth camera's plugin: its own depth outputs
+        infos = [spec.info_topic, *(t for t, kind in depth.items() if kind == CAMERA_INFO_TYPE)]
+        out += [Publisher(absolute(topic, "camera_info"), CAMERA_INFO_TYPE, qos.SENSOR_DATA,
+                          lambda r: r.camera_times_s, camera_messages.camera_info)
+                for topic in infos]
         if images.enabled:
-            image_topic = absolute(body.camera.spec.image_topic, "image_raw")
+            image_topic = absolute(spec.image_topic, "image_raw")
             out.append(Publisher(image_topic, IMAGE_TYPE, qos.SENSOR_DATA,
                                  lambda r: r.camera_times_s, camera_messages.colour_images))
             if images.depth:
-                out.append(Publisher(depth_topic(image_topic), IMAGE_TYPE, qos.SENSOR_DATA,
+                named = next((t for t, kind in depth.items() if kind == IMAGE_TYPE), None)
+                out.append(Publisher(absolute(named, "") if named else depth_topic(image_topic),
+                                     IMAGE_TYPE, qos.SENSOR_DATA,
                                      lambda r: r.camera_times_s, camera_messages.depth_images))
     return out
 
