@@ -17,6 +17,8 @@ configuration renames it. A gz camera's info goes beside its image: ``<topic>``'
 
 from __future__ import annotations
 
+import dataclasses
+import math
 import re
 from dataclasses import dataclass
 
@@ -170,6 +172,21 @@ def _noise(params: Params, prefix: str) -> NoiseSpec | None:
     )
 
 
+def _plus_plugin_noise(noise: NoiseSpec | None, plugin: Plugin | None) -> NoiseSpec | None:
+    """``noise`` with a ROS 1 plugin's ``<gaussianNoise>`` added.
+
+    gazebo_ros_range, gazebo_ros_block_laser and gazebo_ros_imu_sensor add N(0, that) to
+    every reading, on top of the sensor's own noise: the two standard deviations add in
+    quadrature.
+    """
+    sigma = parse_float(param(plugin.params, "gaussianNoise")) if plugin else None
+    if sigma is None or not sigma > 0 or not math.isfinite(sigma):
+        return noise
+    if noise is None:
+        return NoiseSpec("gaussian", 0.0, sigma)
+    return dataclasses.replace(noise, stddev=math.hypot(noise.stddev, sigma))
+
+
 _ROS1_KEYS = frozenset(("topicName", "frameName", "robotNamespace", "frame_name", "cameraName",
                         "camera_name", "imageTopicName", "cameraInfoTopicName", "output_type"))
 _GZ_FRAME_KEYS = ("ignition_frame_id", "gz_frame_id", "frame_id")
@@ -278,7 +295,7 @@ def lidar_spec(sensor: Sensor) -> LidarSpec:
         max_range_m=_float(p, f"{root}/range/max"),
         range_resolution_m=_float(p, f"{root}/range/resolution"),
         update_rate_hz=sensor.update_rate_hz,
-        noise=_noise(p, f"{root}/noise"),
+        noise=_plus_plugin_noise(_noise(p, f"{root}/noise"), plugin),
         frame=_frame(sensor),
         topic=topic if output is not None else None,
         vertical_samples=_samples(p, f"{root}/scan/vertical/samples"),
@@ -292,11 +309,13 @@ def imu_spec(sensor: Sensor) -> ImuSpec:
     """The IMU view of an ``imu`` sensor."""
     p = sensor.params
 
+    plugin = ros_plugin(sensor)
+
     def axes(quantity: str) -> tuple[NoiseSpec | None, NoiseSpec | None, NoiseSpec | None]:
-        x, y, z = (_noise(p, f"imu/{quantity}/{axis}/noise") for axis in "xyz")
+        x, y, z = (_plus_plugin_noise(_noise(p, f"imu/{quantity}/{axis}/noise"), plugin)
+                   for axis in "xyz")
         return (x, y, z)
 
-    plugin = ros_plugin(sensor)
     return ImuSpec(
         update_rate_hz=sensor.update_rate_hz,
         angular_velocity_noise=axes("angular_velocity"),

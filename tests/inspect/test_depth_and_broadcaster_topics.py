@@ -65,8 +65,9 @@ def test_sensor_broadcasters_and_a_gripper_controller_list_their_topics(run, tmp
              "imu": "imu_sensor_broadcaster/IMUSensorBroadcaster",
              "range": "range_sensor_broadcaster/RangeSensorBroadcaster",
              "gripper": "position_controllers/GripperActionController"}
-    controllers.write_text("controller_manager:\n  ros__parameters:\n    update_rate: 100\n" + "".join(
-        f"    {name}:\n      type: {kind}\n" for name, kind in types.items()))
+    controllers.write_text("controller_manager:\n  ros__parameters:\n    update_rate: 100\n"
+                           + "".join(f"    {name}:\n      type: {kind}\n"
+                                     for name, kind in types.items()))
     published = _published(run, path, "--controllers", controllers)
     assert {k: v for k, v in published.items() if not k.startswith("cam/")} == {
         "/ft/wrench": "geometry_msgs/msg/WrenchStamped", "/imu/imu": "sensor_msgs/msg/Imu",
