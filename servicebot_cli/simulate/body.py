@@ -80,8 +80,8 @@ class SimRobot:
         ray_sensors: Every published ray sensor (LIDARs, sonars, cliff and IR range
             sensors), the one with the most rays first (the LIDAR), then in URDF order.
         imu, camera: Mounted sensors, None where the URDF has none.
-        ray_notes: A stderr note for each published ray sensor left out, and why (and for
-            each sensor on a link the robot lacks).
+        sensor_notes: A stderr note for each published sensor left out, and why: a ray
+            sensor it cannot cast, a second IMU or camera, a sensor on a link the robot lacks.
         disabled_pairs: Link pairs the self-contact check leaves out (an SRDF's
             ``<disable_collisions>``, as ``ik --srdf``).
         resolver: Finds the ``package://`` collision meshes (the shape's and the self-contact
@@ -97,7 +97,7 @@ class SimRobot:
     ray_sensors: tuple[Mounted[LidarSpec], ...]
     imu: Mounted[ImuSpec] | None
     camera: Mounted[CameraSpec] | None
-    ray_notes: tuple[str, ...] = ()
+    sensor_notes: tuple[str, ...] = ()
     disabled_pairs: tuple[tuple[str, str], ...] = ()
     resolver: PackageResolver | None = None
 
@@ -155,7 +155,8 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
         ray_sensors=tuple(_placed(robot, sensor, spec, placement) for sensor, spec in rays),
         imu=_mount(robot, ("imu",), _published_imu, placement) or _model_imu(robot, placement),
         camera=_mount(robot, CAMERA_TYPES, _published_camera, placement),
-        ray_notes=(*_unplaced(robot), *ray_notes), disabled_pairs=tuple(disabled_pairs),
+        sensor_notes=(*_unplaced(robot), *ray_notes, *_beyond_the_first(robot)),
+        disabled_pairs=tuple(disabled_pairs),
         resolver=resolver,
     )
 
@@ -202,6 +203,16 @@ def _castable_rays(robot: RobotDescription
             f"topic, and this one {message.replace('/msg/', '/')}; give one of them its own "
             "topic")))
     return kept, tuple(notes)
+
+
+def _beyond_the_first(robot: RobotDescription) -> Iterator[str]:
+    """A stderr note for each published IMU or camera after the first, which alone is run."""
+    published = {"IMU": [s for s, _ in _published(robot, ("imu",), _published_imu)],
+                 "camera": [s for s, _ in _published(robot, CAMERA_TYPES, _published_camera)]}
+    for kind, sensors in published.items():
+        for sensor in sensors[1:]:
+            yield (f"note: {kind} '{sensor.name}' is not simulated: simulate runs one "
+                   f"{kind}, the first ('{sensors[0].name}')")
 
 
 def _left_out(sensor: Sensor, spec: LidarSpec, why: str) -> str:

@@ -322,7 +322,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
              *(f"note: the simulator's collision shape of link {skipped}"
                for skipped in body.shape.skipped),
              *filter(None, (unpublished_note(mounted.spec) for mounted in body.ray_sensors)),
-             *body.ray_notes)
+             *body.sensor_notes)
     return SimulateReport(summary, clock() - start, last if keep_run else None,
                           live_track=track, notes=notes)
 
