@@ -140,6 +140,24 @@ def _recursion_limit(frames: int) -> Iterator[None]:
         sys.setrecursionlimit(saved)
 
 
+def _refuse_include_cycle(filestack: list[str | None],
+                          error: Callable[[str], Exception]) -> None:
+    """Refuse a file that is already being included, above itself (``filestack[-1]``).
+
+    Such a file includes itself again and again: xacro gives up only when Python's stack
+    runs out, after expanding everything on the way (a robot including ``*`` from its own
+    directory took minutes). Named at once, with the cycle.
+    """
+    if len(filestack) < 2 or not filestack[-1]:
+        return
+    real = [os.path.realpath(f) if f else None for f in filestack]
+    if real[-1] in real[:-1]:
+        start = real.index(real[-1])
+        cycle = " -> ".join(os.path.basename(f or "") for f in filestack[start:])
+        raise error(f"'{filestack[-1]}' includes itself ({cycle}): an include cycle never "
+                    "ends")
+
+
 def _refuse_unwritable(doc: xml.dom.minidom.Document, display: str, tracer: _Tracer) -> None:
     """Refuse an attribute whose value is a number, not text, as xacro fails to write it.
 
@@ -290,6 +308,7 @@ class _Tracer:
         if inp is not None:
             return xml.dom.minidom.parseString(inp) if isinstance(inp, str) else inp
         path = installed_source(os.path.join(xacro.root_dir, filename or ""))
+        _refuse_include_cycle(xacro.filestack, xacro.XacroException)
         try:
             with open_binary(path) as handle:  # a device: read to the limit only; a
                 # named pipe nothing writes into: empty at once
