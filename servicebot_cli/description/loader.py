@@ -142,6 +142,11 @@ def comments_blanked(data: bytes) -> bytes:
     return _COMMENT.sub(lambda comment: b"\n" * comment[0].count(b"\n"), data)
 
 
+def _no_name(path: Path) -> bool:
+    """A pipe or a device (``<(cat robot.urdf.xacro)``, /dev/stdin): no name to change."""
+    return not os.path.isfile(path)
+
+
 def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDescription:
     """Read, expand and parse ``source`` without judging its content.
 
@@ -169,13 +174,13 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
         )
     from servicebot_cli.description.xacro_expand import expand
 
-    expansion = expand(source.path, dict(source.xacro_args), source.resolver())
+    expansion = expand(source.path, dict(source.xacro_args), source.resolver(), data)
     document = parse_xml(expansion.xml_text.encode("utf-8"), source.display, max_bytes=max_bytes)
     for element, origin in zip(document.root.iter(), expansion.origins, strict=True):
         element.origin = origin  # type: ignore[attr-defined]
     what = "expressions (${...})" if b"${" in without_comments(data) else \
         "package paths ($(find ...))"
-    named = () if is_xacro_name(source.path) else (LoadWarning(
+    named = () if is_xacro_name(source.path) or _no_name(source.path) else (LoadWarning(
         f"holds xacro {what}, but is not a .xacro file: expanded with xacro, as only xacro "
         "can read it", source.display, fix="name it .urdf.xacro"),)
     return RobotDescription(

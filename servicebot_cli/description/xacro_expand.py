@@ -92,8 +92,12 @@ def expand(
     path: str | os.PathLike[str],
     args: Mapping[str, str] | None = None,
     resolver: PackageResolver | None = None,
+    data: bytes | None = None,
 ) -> Expansion:
     """Expand the xacro file at ``path`` with ``name:=value`` arguments.
+
+    ``data``: the file's bytes, when the caller read them already: a pipe
+    (``<(cat robot.urdf.xacro)``) gives its bytes once.
 
     Raises:
         XmlError: A file is not well-formed or unsafe (with its line and column).
@@ -101,7 +105,7 @@ def expand(
         PackageNotFound: ``$(find pkg)`` names a package that is nowhere.
     """
     display = str(path)
-    tracer = _Tracer(resolver or PackageResolver.from_environment())
+    tracer = _Tracer(resolver or PackageResolver.from_environment(), data)
     given = dict(args or {})
     with _LOCK, tracer.patched() as captured:
         import xacro
@@ -206,8 +210,9 @@ xacro:element), and the one that ends its work."""
 class _Tracer:
     """Positions of xacro's DOM nodes, and the patches that record them."""
 
-    def __init__(self, resolver: PackageResolver) -> None:
+    def __init__(self, resolver: PackageResolver, top_data: bytes | None = None) -> None:
         self.resolver = resolver
+        self.top_data = top_data  # the top file's bytes, read already
         self.refs: list[SourceRef] = []
         self.node_refs: dict[int, int] = {}  # id(xacro:* node) -> index into refs
         self.keep: list[object] = []  # keeps nodes alive so their ids stay unique
@@ -309,10 +314,12 @@ class _Tracer:
             return xml.dom.minidom.parseString(inp) if isinstance(inp, str) else inp
         path = installed_source(os.path.join(xacro.root_dir, filename or ""))
         _refuse_include_cycle(xacro.filestack, xacro.XacroException)
+        data = self.top_data if not self.files else None
         try:
-            with open_binary(path) as handle:  # a device: read to the limit only; a
-                # named pipe nothing writes into: empty at once
-                data = handle.read(MAX_BYTES + 1)
+            if data is None:
+                with open_binary(path) as handle:  # a device: read to the limit only; a
+                    # named pipe nothing writes into: empty at once
+                    data = handle.read(MAX_BYTES + 1)
         except OSError as exc:
             xacro.filestack.pop()  # as xacro does: the failing file is not "being processed"
             raise xacro.XacroException(f"{exc.strerror}: {filename}", exc=exc) from None

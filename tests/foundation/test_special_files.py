@@ -112,3 +112,24 @@ def test_a_xacro_include_that_is_a_stale_named_pipe_ends_at_once(tmp_path):
                      '<xacro:include filename="part.xacro"/></robot>')
     result = run_servicebot("expand", robot, timeout=20)
     assert_one_line_error(result, 2, "part.xacro: file is empty")
+
+
+def test_a_xacro_source_through_a_pipe_is_expanded_once_read(tmp_path):
+    """``servicebot check <(cat robot.urdf.xacro)``: the bytes read to tell xacro from URDF
+    used the pipe up, and xacro, opening it again, read an empty file (SB002, 'file is
+    empty'). The real xacro expands it. No advice to rename a pipe, either."""
+    import subprocess
+    import sys
+
+    text = ('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+            '<xacro:property name="w" value="0.5"/><link name="base"><visual><geometry>'
+            '<box size="${w} 1 1"/></geometry></visual></link></robot>')
+    for command in (["expand", "/dev/stdin"], ["check", "urdf", "--isolated", "/dev/stdin"]):
+        result = subprocess.run([sys.executable, "-m", "servicebot_cli", *command], input=text,
+                                capture_output=True, text=True, timeout=60)
+        assert result.returncode == 0, result.stderr
+        assert "empty" not in result.stdout + result.stderr
+        assert ".urdf.xacro" not in result.stdout + result.stderr
+    assert '<box size="0.5 1 1"/>' in subprocess.run(
+        [sys.executable, "-m", "servicebot_cli", "expand", "/dev/stdin"], input=text,
+        capture_output=True, text=True, timeout=60).stdout
