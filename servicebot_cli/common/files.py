@@ -17,6 +17,8 @@ resolves to is replaced atomically, beside itself, and the link stays. ``xacro -
 ``cp`` and ``>`` all write through such a link into the file it names; replacing the link
 with a regular file of its own, as this module once did, left the linked file stale and
 broke the link (a report kept in a shared directory, a dotfiles-style layout).
+
+A file replaced keeps its mode and owner; another hard link to it keeps the old content.
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ import os
 import re
 import shutil
 import signal
+import stat
 import tempfile
 import threading
 from collections.abc import Iterator
@@ -88,12 +91,30 @@ def atomic_output(
         with os.fdopen(fd, mode, **open_kwargs) as handle:
             yield handle
         raise_lost()  # a signal that numpy swallowed still keeps the file out
-        os.chmod(tmp_name, 0o644 & ~_umask())
+        _take_mode(tmp_name, target)
         os.replace(tmp_name, target)
     except OSError as exc:
         raise _cannot_write(target, directory, exc) from None
     finally:
         _remove(tmp_name)
+
+
+def _take_mode(tmp_name: str, target: Path) -> None:
+    """Give the new file the mode and owner of the one it replaces.
+
+    As ``>`` and ``xacro -o`` keep them: a private 0600 report stays private. A new file
+    gets 0644 under the umask. A hard link to the old file keeps the old content: the file
+    is replaced, not rewritten.
+    """
+    try:
+        old = os.stat(target)
+    except OSError:
+        os.chmod(tmp_name, 0o644 & ~_umask())
+        return
+    os.chmod(tmp_name, stat.S_IMODE(old.st_mode))
+    if (old.st_uid, old.st_gid) != (os.getuid(), os.getgid()):
+        with contextlib.suppress(OSError):  # only root, or a group of one's own, may
+            os.chown(tmp_name, old.st_uid, old.st_gid)
 
 
 _FD_DIR = re.compile(r"^/proc/[^/]+/(?:task/[^/]+/)?fd(?:/|$)")

@@ -71,3 +71,29 @@ def test_a_link_to_a_regular_file_replaces_that_file_and_keeps_the_link(tmp_path
     assert link.is_symlink() and link.resolve() == kept.resolve()
     assert b'"format_version"' in kept.read_bytes()
     assert sorted(p.name for p in (tmp_path / "reports").iterdir()) == ["report.json"]
+
+
+def test_a_file_replaced_keeps_its_mode_and_owner(tmp_path: Path) -> None:
+    """expand -o onto a 0600 file left it 0644 (and, as root, root's): a private report or
+    URDF became world-readable. xacro -o, cp and > keep the mode; a new file is 0644."""
+    kept = tmp_path / "private.urdf"
+    kept.write_text("secret\n")
+    kept.chmod(0o600)
+    if os.getuid() == 0:
+        os.chown(kept, 1234, 1234)
+    result = _servicebot("expand", ROBOT, "-o", kept)
+    assert result.returncode == 0, result.stderr
+    assert "<robot" in kept.read_text()
+    mode = kept.stat()
+    assert stat.S_IMODE(mode.st_mode) == 0o600
+    if os.getuid() == 0:
+        assert (mode.st_uid, mode.st_gid) == (1234, 1234)
+    new = tmp_path / "new.urdf"
+    assert _servicebot("expand", ROBOT, "-o", new).returncode == 0
+    assert stat.S_IMODE(new.stat().st_mode) == 0o644 & ~_umask()
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
