@@ -111,10 +111,13 @@ def _take_mode(tmp_name: str, target: Path) -> None:
     except OSError:
         os.chmod(tmp_name, 0o644 & ~_umask())
         return
+    if (old.st_uid, old.st_gid) != (os.getuid(), os.getgid()):  # first: chown clears SUID
+        try:
+            os.chown(tmp_name, old.st_uid, old.st_gid)  # root only
+        except OSError:
+            with contextlib.suppress(OSError):  # a group one belongs to, at least
+                os.chown(tmp_name, -1, old.st_gid)
     os.chmod(tmp_name, stat.S_IMODE(old.st_mode))
-    if (old.st_uid, old.st_gid) != (os.getuid(), os.getgid()):
-        with contextlib.suppress(OSError):  # only root, or a group of one's own, may
-            os.chown(tmp_name, old.st_uid, old.st_gid)
 
 
 _FD_DIR = re.compile(r"^/proc/[^/]+/(?:task/[^/]+/)?fd(?:/|$)")

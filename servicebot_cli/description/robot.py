@@ -160,7 +160,8 @@ class RobotDescription:
         """The link Gazebo makes of link ``name``.
 
         sdformat's URDF converter lumps the child of a fixed joint into its parent (unless
-        the joint is kept apart), up to a link that a moving or kept joint holds, or the root.
+        the joint is kept apart, or the parent is ``world``), up to a link that a moving or
+        kept joint holds, or the root.
         """
         parents = self._fixed_parents
         seen = {name}
@@ -171,9 +172,9 @@ class RobotDescription:
 
     @cached_property
     def _fixed_parents(self) -> dict[str, str]:
-        kept = self.kept_apart
-        return {j.child: j.parent for j in self.joints
-                if j.type == "fixed" and j.name not in kept and j.child and j.parent}
+        kept = self.kept_apart  # and sdformat never lumps a link into "world"
+        return {j.child: j.parent for j in self.joints if j.type == "fixed"
+                and j.name not in kept and j.child and j.parent and j.parent != "world"}
 
     @cached_property
     def model_plugins(self) -> tuple[ext.Plugin, ...]:

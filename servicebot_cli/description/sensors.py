@@ -172,6 +172,11 @@ def _noise(params: Params, prefix: str) -> NoiseSpec | None:
     )
 
 
+_GAUSSIAN_NOISE_PLUGINS = frozenset(("libgazebo_ros_range.so", "libgazebo_ros_block_laser.so",
+                                     "libgazebo_ros_imu_sensor.so"))
+"""ROS 1 sensor plugins that read ``<gaussianNoise>`` (gazebo_ros_laser does not)."""
+
+
 def _plus_plugin_noise(noise: NoiseSpec | None, plugin: Plugin | None) -> NoiseSpec | None:
     """``noise`` with a ROS 1 plugin's ``<gaussianNoise>`` added.
 
@@ -179,7 +184,10 @@ def _plus_plugin_noise(noise: NoiseSpec | None, plugin: Plugin | None) -> NoiseS
     every reading, on top of the sensor's own noise: the two standard deviations add in
     quadrature.
     """
-    sigma = parse_float(param(plugin.params, "gaussianNoise")) if plugin else None
+    if plugin is None or plugin.filename not in _GAUSSIAN_NOISE_PLUGINS or any(
+            key.startswith("ros/") for key, _ in plugin.params):  # ROS 2's read SDF noise only
+        return noise
+    sigma = parse_float(param(plugin.params, "gaussianNoise"))
     if sigma is None or not sigma > 0 or not math.isfinite(sigma):
         return noise
     if noise is None:

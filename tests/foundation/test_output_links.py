@@ -88,6 +88,10 @@ def test_a_file_replaced_keeps_its_mode_and_owner(tmp_path: Path) -> None:
     assert stat.S_IMODE(mode.st_mode) == 0o600
     if os.getuid() == 0:
         assert (mode.st_uid, mode.st_gid) == (1234, 1234)
+    if os.getuid() == 0:  # chown clears set-id bits: the mode is set after the owner
+        kept.chmod(0o6755)
+        assert _servicebot("expand", ROBOT, "-o", kept).returncode == 0
+        assert stat.S_IMODE(kept.stat().st_mode) == 0o6755
     new = tmp_path / "new.urdf"
     assert _servicebot("expand", ROBOT, "-o", new).returncode == 0
     assert stat.S_IMODE(new.stat().st_mode) == 0o644 & ~_umask()

@@ -51,3 +51,19 @@ def test_a_joint_kept_apart_or_a_frame_name_keeps_the_sensors_link(tmp_path):
     assert _lidar(kept)["frame"] == "lidar_link"
     assert _lidar(SAM_BOT)["frame"] == "lidar_link"  # written: <frame_name>lidar_link
     assert _lidar_text(SAM_BOT).split(None, 2)[2] == "lidar_link"
+
+
+def test_gazebo_never_lumps_a_link_into_world(run, tmp_path):
+    """sdformat keeps a fixed joint to ``world`` (it anchors the model): an IMU on the
+    anchored base is stamped base_link, not world."""
+    path = tmp_path / "anchored.urdf"
+    path.write_text('<robot name="a"><link name="world"/><joint name="anchor" type="fixed">'
+                    '<parent link="world"/><child link="base_link"/></joint>'
+                    '<link name="base_link"><inertial><mass value="1"/><inertia ixx="1" '
+                    'iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial></link>'
+                    '<gazebo reference="base_link"><sensor name="imu" type="imu"><plugin '
+                    'filename="libgazebo_ros_imu_sensor.so" name="imu_plugin"><ros>'
+                    '<namespace>/a</namespace></ros></plugin></sensor></gazebo></robot>')
+    (sensor,) = json.loads(run("inspect", path, "--section", "sensors", "--format",
+                               "json").stdout)["sensors"]
+    assert (sensor["frame"], sensor["carrier"]) == ("base_link", "base_link")

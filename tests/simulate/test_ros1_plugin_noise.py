@@ -73,3 +73,13 @@ def test_a_ros1_plugins_gaussian_noise_is_the_sensors(tmp_path, own, gyro_stddev
     # 400 samples; on a flat floor the base never rolls: the roll rate is the noise alone
     spread = float(np.std([float(r["wx_rad_s"]) for r in rows]))
     assert spread == pytest.approx(gyro_stddev, rel=0.15)
+
+
+def test_a_plugin_that_reads_no_gaussian_noise_adds_none(tmp_path):
+    """ROS 1 gazebo_ros_laser reads no <gaussianNoise>; one copied into it changes nothing."""
+    path = tmp_path / "robot.urdf"
+    path.write_text(_robot("").replace("libgazebo_ros_range.so", "libgazebo_ros_laser.so"))
+    result = run_servicebot("inspect", path, "--section", "sensors", "--format", "json",
+                            env=NO_ROS)
+    sensors = {s["name"]: s for s in json.loads(result.stdout)["sensors"]}
+    assert sensors["sonar"]["lidar"]["noise"] is None
