@@ -144,22 +144,34 @@ def _recursion_limit(frames: int) -> Iterator[None]:
         sys.setrecursionlimit(saved)
 
 
-def _refuse_include_cycle(filestack: list[str | None],
-                          error: Callable[[str], Exception]) -> None:
-    """Refuse a file that is already being included, above itself (``filestack[-1]``).
+_INCLUDE_DEPTH = 16
+"""How often a file may be on the include stack: recursion through an include that a condition
+ends (``<xacro:if value="${level > 0}">``) is xacro, one that nothing ends never stops."""
+_INCLUDES = 10_000
+"""Files a description may read: a robot including ``*`` from its own directory includes
+every file there, which include ``*`` again; a real robot reads a few hundred."""
 
+
+def _refuse_include_cycle(filestack: list[str | None], read: int,
+                          error: Callable[[str], Exception]) -> None:
+    """Refuse a file included in itself too deep, or too many files read (``read``).
+
+    A file included in itself :data:`_INCLUDE_DEPTH` deep, or over :data:`_INCLUDES` files.
     Such a file includes itself again and again: xacro gives up only when Python's stack
     runs out, after expanding everything on the way (a robot including ``*`` from its own
-    directory took minutes). Named at once, with the cycle.
+    directory took minutes). Named with its cycle, from the include on the stack.
     """
+    if read > _INCLUDES:
+        raise error(f"over {_INCLUDES} files included; does a file include itself, or '*' "
+                    "from its own directory?")
     if len(filestack) < 2 or not filestack[-1]:
         return
     real = [os.path.realpath(f) if f else None for f in filestack]
-    if real[-1] in real[:-1]:
-        start = real.index(real[-1])
+    if real[:-1].count(real[-1]) >= _INCLUDE_DEPTH:
+        start = len(real) - 2 - real[-2::-1].index(real[-1])  # its last time before this
         cycle = " -> ".join(os.path.basename(f or "") for f in filestack[start:])
-        raise error(f"'{filestack[-1]}' includes itself ({cycle}): an include cycle never "
-                    "ends")
+        raise error(f"'{filestack[-1]}' includes itself ({cycle}), {_INCLUDE_DEPTH} deep: an "
+                    "include cycle that no condition ends")
 
 
 def _refuse_unwritable(doc: xml.dom.minidom.Document, display: str, tracer: _Tracer) -> None:
@@ -313,7 +325,7 @@ class _Tracer:
         if inp is not None:
             return xml.dom.minidom.parseString(inp) if isinstance(inp, str) else inp
         path = installed_source(os.path.join(xacro.root_dir, filename or ""))
-        _refuse_include_cycle(xacro.filestack, xacro.XacroException)
+        _refuse_include_cycle(xacro.filestack, len(self.files), xacro.XacroException)
         data = self.top_data if not self.files else None
         try:
             if data is None:

@@ -306,8 +306,8 @@ def test_an_include_cycle_is_named_at_once(tmp_path):
                      f'{calls}  <xacro:include filename="robot.urdf.xacro"/>\n</robot>\n')
     result = run_servicebot("expand", robot)
     assert_one_line_error(result, 2, "robot.urdf.xacro:43:3: xacro: "
-                          f"'{robot}' includes itself (robot.urdf.xacro -> robot.urdf.xacro): "
-                          "an include cycle never ends")
+                          f"'{robot}' includes itself (robot.urdf.xacro -> robot.urdf.xacro), "
+                          "16 deep: an include cycle that no condition ends")
     (tmp_path / "b.xacro").write_text(
         '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:include filename="a.xacro"/>'
         '</robot>')
@@ -325,4 +325,42 @@ def test_an_include_cycle_is_named_at_once(tmp_path):
                      '<xacro:include filename="a.xacro"/></robot>')
     result = run_servicebot("expand", cycle)
     assert result.returncode == 2
-    assert "includes itself (a.xacro -> b.xacro -> a.xacro)" in result.stderr
+    assert "includes itself (a.xacro -> b.xacro -> a.xacro), 16 deep" in result.stderr
+
+
+def test_an_include_recursion_a_condition_ends_is_expanded_as_xacro_does(tmp_path):
+    """part.xacro includes itself while ${level > 0}, lowering level each time: the real
+    xacro expands three links; refusing every file already on the include stack was wrong."""
+    (tmp_path / "part.xacro").write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">'
+        '<xacro:if value="${level > 0}"><link name="l${level}"/>'
+        '<xacro:property name="level" value="${level - 1}" scope="global" lazy_eval="false"/>'
+        '<xacro:include filename="part.xacro"/></xacro:if></robot>')
+    robot = tmp_path / "top.urdf.xacro"
+    robot.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                     '<xacro:property name="level" value="3"/><link name="base"/>'
+                     '<xacro:include filename="part.xacro"/></robot>')
+    result = run_servicebot("expand", robot)
+    assert result.returncode == 0, result.stderr
+    assert [line.strip() for line in result.stdout.splitlines() if "<link" in line] == [
+        '<link name="base"/>', '<link name="l3"/>', '<link name="l2"/>', '<link name="l1"/>']
+
+
+def test_a_robot_including_star_from_its_own_directory_ends_at_once(tmp_path):
+    """three_robots.urdf.xacro with <xacro:include filename="*"/>: every command ran over 20 s
+    (xacro 11 s, until Python's stack ran out)."""
+    for name in "abc":
+        (tmp_path / f"{name}.urdf.xacro").write_text(
+            f'<robot name="{name}" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+            f'<link name="{name}"/><xacro:include filename="*"/></robot>')
+    result = run_servicebot("expand", tmp_path / "b.urdf.xacro", timeout=20)
+    assert result.returncode == 2
+    assert "includes itself" in result.stderr or "files included" in result.stderr
+
+
+def test_more_files_read_than_any_robot_reads_is_refused():
+    from servicebot_cli.description import xacro_expand
+
+    with pytest.raises(ValueError, match="over 10000 files included"):
+        xacro_expand._refuse_include_cycle(["top.urdf.xacro"], 10_001, ValueError)
+    xacro_expand._refuse_include_cycle(["top.urdf.xacro"], 10_000, ValueError)
