@@ -72,8 +72,10 @@ class PackageSearch:
             path = probe.resolve_uri(uri, base_dir)
         except PackageNotFound as exc:
             return Resolved(None, name, None, str(exc), model)
+        except UnknownScheme as exc:  # model:///abs: no model named
+            return Resolved(None, error=str(exc))
         if model:
-            return Resolved(path, name, probe.found.get(name), model=True)
+            return Resolved(path, name, probe.found.get(f"model://{name}"), model=True)
         if not name and probe.found:  # package:///: an absolute path, or NAME as Pinocchio
             [(name, location)] = probe.found.items()  # reads it: the one the probe found
             return Resolved(path, name, location)
@@ -130,17 +132,15 @@ class FileTally:
     """What one file's mesh references found, gathered while the geometry rules run."""
 
     missing: dict[str, tuple[int, str, ET.Element]] = field(default_factory=dict)
-    models: set[str] = field(default_factory=set)  # which of missing are Gazebo models
+    """By package name, or ``model://NAME`` for a Gazebo model."""
     loader_only: dict[str, tuple[PackageLocation, ET.Element]] = field(default_factory=dict)
     remote: list[tuple[str, ET.Element]] = field(default_factory=list)
 
     def add_missing(self, resolved: Resolved, element: ET.Element) -> None:
         """Count a mesh hidden by a package that is nowhere."""
-        name = resolved.package or ""
+        name = _key(resolved)
         count, message, first = self.missing.get(name, (0, resolved.error or "", element))
         self.missing[name] = (count + 1, message, first)
-        if resolved.model:
-            self.models.add(name)
 
     def guessed_wrong(self, resolved: Resolved, element: ET.Element) -> bool:
         """Whether a missing mesh's package was only guessed, by a directory of its name.
@@ -165,16 +165,17 @@ class FileTally:
     def add_found(self, resolved: Resolved, element: ET.Element) -> None:
         """Remember a package found only the way some loaders find it."""
         if resolved.location is not None and not resolved.location.ros_finds_it:
-            self.loader_only.setdefault(resolved.location.name, (resolved.location, element))
+            self.loader_only.setdefault(_key(resolved), (resolved.location, element))
 
     def issues(self) -> Iterator[Issue]:
         """SB408 per missing package, SB409 per loader-only package, SB410 for remote meshes."""
         for name, (count, message, element) in self.missing.items():
             meshes = f"{count} mesh{'es' if count != 1 else ''}"
+            model = name.removeprefix("model://")
             yield Issue("SB408", f"{message.split(';', 1)[0]}: {meshes} not checked; looked in"
                         f"{message.split('looked in', 1)[-1]}", element,
-                        fix=f"set GAZEBO_MODEL_PATH to the directory that holds model {name}, "
-                        f"or pass --package {name}=DIR" if name in self.models else
+                        fix=f"set GAZEBO_MODEL_PATH to the directory that holds model {model}, "
+                        f"or pass --package {model}=DIR" if model != name else
                         f"pass --package {name}=DIR, or check from the workspace that "
                         "holds the package")
         for location, element in self.loader_only.values():
@@ -197,6 +198,15 @@ class FileTally:
             more = f" and {len(self.remote) - 1} more" if len(self.remote) > 1 else ""
             yield Issue("SB410", f"mesh '{uri}'{more} fetched over the network (Gazebo Fuel): "
                         "not read here", element)
+
+
+def _key(resolved: Resolved) -> str:
+    """What a file's findings about ``resolved`` are gathered under.
+
+    Its package's name, or ``model://NAME``: a model and a package of one name are two things.
+    """
+    name = resolved.package or ""
+    return f"model://{name}" if resolved.model else name
 
 
 __all__ = ["FileTally", "PackageSearch", "Resolved", "is_remote", "mesh_references", "used"]

@@ -221,6 +221,8 @@ class PackageResolver:
         """
         name, _, rel = uri[len("model://"):].partition("/")
         rel = unquote(rel).lstrip("/")
+        if not name or name in (".", ".."):
+            raise UnknownScheme(f"'{uri}' names no model: Gazebo reads model://NAME/PATH")
         location = next((PackageLocation(name, d / name, f"model path entry {_short(d)}",
                                          ros_finds_it=False,
                                          gazebo_model=True)
@@ -231,12 +233,11 @@ class PackageResolver:
                 location = dataclasses.replace(package, how=f"package {name} by {package.how}",
                                                ros_finds_it=False, gazebo_model=True)
         if location is None:
-            paths = ", ".join(f"{v}=" + os.pathsep.join(str(p) for p in self.model_path)
-                              for v in MODEL_PATH_VARIABLES[:2]) if self.model_path else \
-                "GAZEBO_MODEL_PATH and GZ_SIM_RESOURCE_PATH (unset)"
-            raise PackageNotFound(f"model '{name}' not found; looked in {paths}; "
+            paths = os.pathsep.join(map(str, self.model_path)) or "unset"
+            raise PackageNotFound(f"model '{name}' not found; looked in Gazebo's model path "
+                                  f"({', '.join(MODEL_PATH_VARIABLES)}: {paths}); "
                                   f"{self._searched(base_dir)}")
-        self.found.setdefault(name, location)
+        self.found.setdefault(f"model://{name}", location)
         return location.path / rel
 
     def _rooted(self, rel: str, base_dir: Path) -> Path:

@@ -66,8 +66,8 @@ def test_a_model_that_is_nowhere_is_one_warning_saying_where_to_point(run, tmp_p
     exit_code, found = _check(run, _robot(tmp_path, "model://arm/meshes/part.stl"))
     assert exit_code == 0 and set(found) == {"SB408"}
     assert found["SB408"]["message"].startswith(
-        "model 'arm' not found: 1 mesh not checked; looked in GAZEBO_MODEL_PATH and "
-        "GZ_SIM_RESOURCE_PATH (unset)")
+        "model 'arm' not found: 1 mesh not checked; looked in Gazebo's model path "
+        "(GAZEBO_MODEL_PATH, GZ_SIM_RESOURCE_PATH, IGN_GAZEBO_RESOURCE_PATH: unset)")
     assert found["SB408"]["fix"] == ("set GAZEBO_MODEL_PATH to the directory that holds model "
                                      "arm, or pass --package arm=DIR")
 
@@ -78,3 +78,23 @@ def test_a_scheme_no_reader_resolves_is_an_error_that_names_it(run, tmp_path):
     assert found["SB401"]["message"] == (
         "visual of link 'base': mesh 'foo://arm/meshes/part.stl': no robot description reader "
         "resolves 'foo://' (ROS reads package:// and file://, Gazebo model:// too)")
+
+
+def test_a_model_and_a_package_of_one_name_are_told_apart(run, tmp_path):
+    """Both missing, they were one SB408 ('2 meshes') whose fix said GAZEBO_MODEL_PATH for the
+    package:// mesh too; model:/// (no name) took the model path's first directory."""
+    path = tmp_path / "robot.urdf"
+    path.write_text('<robot name="m"><link name="base"><visual><geometry><mesh filename='
+                    '"model://arm/a.stl"/></geometry></visual><collision><geometry><mesh '
+                    'filename="package://arm/b.stl"/></geometry></collision></link></robot>')
+    result = run("check", "urdf", path, "--isolated", "--format", "json",
+                 env={"GAZEBO_MODEL_PATH": "", "GZ_SIM_RESOURCE_PATH": "",
+                      "IGN_GAZEBO_RESOURCE_PATH": ""})
+    fixes = sorted(f["fix"] for f in findings(result.stdout) if f["code"] == "SB408")
+    assert fixes == ["pass --package arm=DIR, or check from the workspace that holds the "
+                     "package", "set GAZEBO_MODEL_PATH to the directory that holds model arm, "
+                     "or pass --package arm=DIR"]
+    exit_code, found = _check(run, _robot(tmp_path, "model:///tmp/a.stl"),
+                              {"GAZEBO_MODEL_PATH": str(tmp_path)})
+    assert exit_code == 1 and set(found) == {"SB401", "SB702"}
+    assert "names no model: Gazebo reads model://NAME/PATH" in found["SB401"]["message"]
