@@ -17,8 +17,10 @@ URDF_SUFFIXES = (".urdf", ".xml")
 """What ``-o`` may be called: ``robot.urdf``, ``robot.urdf.xml`` (as the bundled ones), ``.xml``."""
 
 
-_SAID = {"warning": "warning: ", "error": "warning: the file's xacro.error(): ", "message": ""}
-"""How each kind of thing xacro printed is shown: a file's messages as they are."""
+_SAID = {"warning": ("warning: ", ""), "error": ("warning: ", "the file's xacro.error(): "),
+         "message": ("", "")}
+"""How each kind of thing xacro printed is shown, before and after its place: a file's
+messages as they are."""
 
 
 @click.command(cls=Command)
@@ -61,7 +63,8 @@ def expand(ctx: click.Context, robot_args: RobotArgs, output: str) -> None:
     robot = read_description(source)
     for warning in robot.warnings:  # as xacro shows them: a file's messages bare
         fix = f"; {warning.fix}" if warning.fix else ""
-        click.echo(f"{_SAID[warning.said_as]}{warning}{fix}", err=True)
+        click.echo(f"{_SAID[warning.said_as][0]}{warning.where}{_SAID[warning.said_as][1]}"
+                   f"{warning.text}{fix}", err=True)
     if output == "-":
         click.echo(robot.xml_text, nl=False)
     else:

@@ -8,8 +8,11 @@ The loader adds its own warnings, each with the place it is about and its advice
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Literal
+
+from servicebot_cli.description.sources import SourceRef
 
 Said = Literal["warning", "error", "message"]
 
@@ -36,36 +39,31 @@ class LoadWarning:
     said_as: Said = "warning"
 
     def __str__(self) -> str:
+        return f"{self.where}{self.text}"
+
+    @property
+    def where(self) -> str:
+        """``file:line:column: `` (``file: `` without a line; empty without a file)."""
         if self.file is None:
-            return self.text
-        if not self.line:
-            return f"{self.file}: {self.text}"
-        return f"{self.file}:{self.line}:{self.column}: {self.text}"
+            return ""
+        return f"{self.file}: " if not self.line else f"{self.file}:{self.line}:{self.column}: "
 
 
-_NOISE = ("when processing file:", "included from:", "in file:", "when instantiating macro:",
-          "instantiated from:")
-"""The trail of files and macros xacro prints after a warning (``xacro.print_location()``)."""
-
-
-def printed_by_xacro(stderr_text: str) -> tuple[LoadWarning, ...]:
-    """The warnings, errors and messages in what xacro printed, one each.
+def said_by_xacro(said: Sequence[tuple[str, SourceRef | None]]) -> tuple[LoadWarning, ...]:
+    """A warning, error or message per text xacro printed, at its element (None: none).
 
     Without a terminal, xacro writes ``warning: `` or ``error: `` before a warning or an
-    error, and a message bare. An indented line continues a warning (``inconsistent namespace
-    redefinitions`` gives the old and the new URI on lines of their own).
+    error, and a message as it is; a text of several lines (``inconsistent namespace
+    redefinitions`` gives the old and the new URI on lines of their own) is one.
     """
-    said: list[LoadWarning] = []
-    for raw in stderr_text.splitlines():
-        line = raw.strip()
-        if not line or line.startswith(_NOISE):
-            continue
-        if raw[:1].isspace() and said and said[-1].said_as != "message":
-            said[-1] = LoadWarning(f"{said[-1].text} {line}", said_as=said[-1].said_as)
-        elif line.startswith("warning: "):
-            said.append(LoadWarning(line.removeprefix("warning: ")))
-        elif line.startswith("error: "):
-            said.append(LoadWarning(line.removeprefix("error: "), said_as="error"))
-        else:
-            said.append(LoadWarning(line, said_as="message"))
-    return tuple(said)
+    out = []
+    for printed, ref in said:
+        text = " ".join(line.strip() for line in printed.splitlines() if line.strip())
+        kind: Said = "message"
+        if text.startswith("warning: "):
+            text, kind = text.removeprefix("warning: "), "warning"
+        elif text.startswith("error: "):
+            text, kind = text.removeprefix("error: "), "error"
+        out.append(LoadWarning(text, ref.file, ref.line, ref.column, said_as=kind)
+                   if ref is not None else LoadWarning(text, said_as=kind))
+    return tuple(out)

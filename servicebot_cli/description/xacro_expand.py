@@ -32,7 +32,7 @@ from xml.parsers import expat
 from servicebot_cli.common.errors import DescriptionError, PackageNotFound, XacroError, XmlError
 from servicebot_cli.common.inputs import as_typed, open_binary
 from servicebot_cli.description.install_layout import installed_source
-from servicebot_cli.description.load_warnings import LoadWarning, printed_by_xacro
+from servicebot_cli.description.load_warnings import LoadWarning, said_by_xacro
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
 from servicebot_cli.description.sources import SourceRef
@@ -107,7 +107,7 @@ def expand(
     display = str(path)
     tracer = _Tracer(resolver or PackageResolver.from_environment(), data)
     given = dict(args or {})
-    with _LOCK, tracer.patched() as captured:
+    with _LOCK, tracer.patched():
         import xacro
 
         xacro.all_includes.clear()
@@ -128,7 +128,7 @@ def expand(
         xml_text=doc.toprettyxml(indent="  "),
         origins=tuple(origins),
         files=tuple(tracer.files),
-        warnings=(printed_by_xacro(captured.getvalue()) + bare
+        warnings=(said_by_xacro(tracer.said) + bare
                   + _unread_args(display, given, tracer)),
     )
 
@@ -234,6 +234,7 @@ class _Tracer:
         self.known_args: set[str] = set()
         self.macros: dict[str, SourceRef] = {}  # where each macro is defined, by name
         self.reading: tuple[int, int] | None = None  # the directive whose attributes are read
+        self.said: list[tuple[str, SourceRef | None]] = []  # what xacro printed, and where
 
     def record(self, node: xml.dom.minidom.Element, file: str, line: int, column: int) -> None:
         self.refs.append(SourceRef(file, line, column))
@@ -264,6 +265,11 @@ class _Tracer:
         """Where ``node`` was written, if it was read from a file."""
         index = self.index_of(node)
         return None if index is None else self.refs[index]
+
+    def _said(self, *parts: object, sep: str | None = " ", **_: object) -> None:
+        """xacro.color's print: the text, and the element being processed."""
+        where = self.refs[self.current[-1]] if self.current else None
+        self.said.append(((" " if sep is None else sep).join(map(str, parts)), where))
 
     def index_of(self, node: object) -> int | None:
         if isinstance(node, xml.dom.minidom.Element):
@@ -304,11 +310,17 @@ class _Tracer:
             setattr(xacro, name, self._reading(fn, clears=name == "replace_node"))
         saved.update(attrs)
         subst._eval_find = lambda pkg: str(self.resolver.find(pkg))
-        captured = io.StringIO()
+        import xacro.color
+
+        # every warning, error and message xacro prints (its own, and a file's xacro.warning()
+        # and the like) goes through xacro.color's print: each is kept with its element
+        xacro.color.print = self._said
+        captured = io.StringIO()  # the rest (print_location's trail of files): dropped
         try:
             with contextlib.redirect_stderr(captured), contextlib.redirect_stdout(captured):
                 yield captured
         finally:
+            del xacro.color.print
             for name, fn in saved.items():
                 setattr(xacro, name, fn)
             subst._eval_find = saved_find

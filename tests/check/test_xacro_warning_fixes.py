@@ -66,10 +66,11 @@ def test_what_a_file_prints_itself_is_reported_as_it_printed_it(run, tmp_path):
         "deprecated 5": ("warning", "do what the warning says: the file wrote it with "
                          "xacro.warning(), or xacro did")}
     assert result.exit_code == 0
+    assert {f["line"] for f in findings(result.stdout)} == {1}  # placed at the <link>
     expanded = run("expand", path)
     assert expanded.stderr.splitlines() == [
-        "using sim", "warning: the file's xacro.error(): Unknown gripper",
-        "warning: deprecated 5"]
+        f"{path}:1:61: using sim", f"warning: {path}:1:61: the file's xacro.error(): Unknown "
+        "gripper", f"warning: {path}:1:61: deprecated 5"]
 
 
 def test_a_warning_xacro_writes_on_three_lines_is_one_finding(run, tmp_path):
@@ -85,3 +86,19 @@ def test_a_warning_xacro_writes_on_three_lines_is_one_finding(run, tmp_path):
     assert found["message"] == ("inconsistent namespace redefinitions for xmlns:s: old: a "
                                 f"new: b ({tmp_path / 'part.xacro'})")
     assert found["fix"] == "declare xmlns:s with one namespace URI in every included file"
+
+
+def test_xacros_own_warnings_are_placed_at_the_element_that_warned(run, tmp_path):
+    """xacro names only the file ('when processing file: ...'): SARIF and GitHub annotations
+    had line 0. Baxter's two includes with children are two findings, one at each."""
+    (tmp_path / "part.xacro").write_text('<robot xmlns:xacro="http://www.ros.org/wiki/xacro"/>')
+    path = tmp_path / "r.urdf.xacro"
+    path.write_text(f"{HEAD}\n{LINK}\n"
+                    '<xacro:include filename="part.xacro"><xacro:arg name="g" default="1"/>'
+                    '</xacro:include>\n<xacro:property name="len" value="2"/>\n'
+                    '<xacro:include filename="part.xacro"><xacro:arg name="g" default="1"/>'
+                    "</xacro:include>\n</robot>")
+    result = run("check", "urdf", path, "--format", "json", "--isolated", "--select", "SB017")
+    assert [(f["line"], f["column"], f["message"][:26]) for f in findings(result.stdout)] == [
+        (3, 1, "Child elements of a <xacro"), (4, 1, "redefining global symbol: "),
+        (5, 1, "Child elements of a <xacro")]

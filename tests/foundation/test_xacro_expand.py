@@ -216,9 +216,11 @@ def test_a_xacro_warning_is_said_once_as_a_warning(tmp_path):
                     '  <xacro:property name="pi" value="3"/>\n  <link name="base"/>\n</robot>\n')
     expanded = run_servicebot("expand", path, "-o", tmp_path / "r.urdf")
     assert expanded.returncode == 0
-    assert expanded.stderr.splitlines() == ["warning: redefining global symbol: pi"]
+    # at the property that warned (xacro names only the file)
+    assert expanded.stderr.splitlines() == [f"warning: {path}:2:3: redefining global symbol: pi"]
     checked = run_servicebot("check", "urdf", path, "--isolated")
-    assert "SB017 [xacro-warning] redefining global symbol: pi" in checked.stdout
+    assert f"{path}:2:3: warning SB017 [xacro-warning] redefining global symbol: pi" \
+        in checked.stdout
 
 
 @pytest.mark.parametrize(("expression", "said"), [
