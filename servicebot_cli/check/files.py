@@ -17,6 +17,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 from servicebot_cli.check.names import SRDF_ELEMENTS
+from servicebot_cli.common.inputs import read_again
 from servicebot_cli.description.install_layout import installed_source
 from servicebot_cli.description.loader import without_comments
 from servicebot_cli.description.package_dirs import holding_package
@@ -62,12 +63,15 @@ _JOINT_DEFINITION = re.compile(rb"<joint\b[^>]*\btype\s*=")
 
 def head_without_comments(path: Path) -> bytes | None:
     """The first MiB of ``path`` with its XML comments removed; None: it cannot be read."""
-    head = _head(path)
+    head = head_of(path)
     return None if head is None else without_comments(head)
 
 
-def _head(path: Path) -> bytes | None:
+def head_of(path: Path) -> bytes | None:
     """The first MiB of ``path``; None: it cannot be read."""
+    once = read_again(path, _HEAD_BYTES)
+    if once is not None:
+        return once
     try:
         with path.open("rb") as handle:
             return handle.read(_HEAD_BYTES)
@@ -311,7 +315,7 @@ def _include_targets(path: Path, *, in_comments: bool = False) -> list[str]:
     includes is a part of it, not a robot. Those inside XML comments only with
     ``in_comments``.
     """
-    text = _head(path)
+    text = head_of(path)
     if text is None or (not is_xacro_name(path) and b"xacro:include" not in text):
         return []
     if not in_comments:

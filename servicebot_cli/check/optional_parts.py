@@ -21,7 +21,7 @@ from collections.abc import Collection
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from servicebot_cli.check.files import included_files
+from servicebot_cli.check.files import head_of, included_files
 from servicebot_cli.common.inputs import display_path
 from servicebot_cli.description.loader import comments_blanked
 
@@ -32,7 +32,6 @@ _DEFINITION = re.compile(rb"<(link|joint)\b([^>]*)>")
 _GAZEBO_BLOCK = re.compile(rb"<gazebo(?:\b[^>]*[^/>])?>.*?</gazebo\s*>", re.DOTALL)
 _NAME = re.compile(rb"\bname\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
 _TYPE = re.compile(rb"\btype\s*=")
-_HEAD_BYTES = 1 << 20
 _EXPRESSION = re.compile(rb"\$\{[^}]*\}|\$\([^)]*\)")
 _FEWEST_LITERAL = 4
 """Characters a name written with expressions must spell out, words every name has aside."""
@@ -61,11 +60,10 @@ def defined_elsewhere(robot: RobotDescription, names: Collection[str]) -> dict[s
     found: dict[str, Definition] = {}
     sources = []
     for path in included_files([Path(file) for file in robot.files]):
-        try:
-            with path.open("rb") as handle:
-                text = comments_blanked(handle.read(_HEAD_BYTES))
-        except OSError:
+        head = head_of(path)
+        if head is None:
             continue
+        text = comments_blanked(head)
         sources.append((path, _GAZEBO_BLOCK.sub(_line_breaks, text)))
     texts = [text for _, text in sources]
     for path, text in sources:

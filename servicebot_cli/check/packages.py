@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue
 from servicebot_cli.common.errors import PackageNotFound, RemoteResource, UnknownScheme
+from servicebot_cli.common.inputs import read_again
 from servicebot_cli.description.packages import PackageLocation, PackageResolver, is_remote
 
 if TYPE_CHECKING:
@@ -101,7 +102,8 @@ def used(robot: RobotDescription, search: PackageSearch) -> dict[str, PackageLoc
     for file in robot.files if robot.expanded else ():
         path = Path(file)
         try:
-            text = path.read_text(encoding="utf-8", errors="replace")
+            data = read_again(path)
+            text = (path.read_bytes() if data is None else data).decode("utf-8", "replace")
         except OSError:
             continue
         for name in dict.fromkeys(_FIND.findall(text)):

@@ -135,7 +135,23 @@ def read_input_bytes(path: Path, display: str, *, kind: str,
         data = handle.read() if max_bytes is None else handle.read(max_bytes + 1)
         if max_bytes is not None and len(data) > max_bytes:
             raise _too_large(display, None, max_bytes, error)
+        if not stat.S_ISREG(mode.st_mode):
+            _READ_ONCE[os.path.abspath(path)] = data
         return data
+
+
+_READ_ONCE: dict[str, bytes] = {}
+"""What a pipe or a device the user named gave, by absolute path: it gives it once."""
+
+
+def read_again(path: str | os.PathLike[str], most: int | None = None) -> bytes | None:
+    """What the user's pipe ``path`` gave when it was read (up to ``most`` bytes).
+
+    None for anything else, which the caller reads as it is: ``<(cat robot.urdf.xacro)``
+    read again is empty.
+    """
+    data = _READ_ONCE.get(os.path.abspath(path))
+    return data if data is None or most is None else data[:most]
 
 
 def open_binary(path: str | os.PathLike[str]) -> BinaryIO:

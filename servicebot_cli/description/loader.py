@@ -13,7 +13,12 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from servicebot_cli.common.errors import DescriptionError
-from servicebot_cli.common.inputs import display_path, printable_name, read_input_bytes
+from servicebot_cli.common.inputs import (
+    display_path,
+    not_a_file,
+    printable_name,
+    read_input_bytes,
+)
 from servicebot_cli.description import resources
 from servicebot_cli.description.load_warnings import LoadWarning
 from servicebot_cli.description.model import check_hint
@@ -142,11 +147,6 @@ def comments_blanked(data: bytes) -> bytes:
     return _COMMENT.sub(lambda comment: b"\n" * comment[0].count(b"\n"), data)
 
 
-def _no_name(path: Path) -> bool:
-    """A pipe or a device (``<(cat robot.urdf.xacro)``, /dev/stdin): no name to change."""
-    return not os.path.isfile(path)
-
-
 def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDescription:
     """Read, expand and parse ``source`` without judging its content.
 
@@ -180,14 +180,15 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
         element.origin = origin  # type: ignore[attr-defined]
     what = "expressions (${...})" if b"${" in without_comments(data) else \
         "package paths ($(find ...))"
-    named = () if is_xacro_name(source.path) or _no_name(source.path) else (LoadWarning(
+    renamable = not is_xacro_name(source.path) and not_a_file(source.path) is None
+    named = () if not renamable else (LoadWarning(
         f"holds xacro {what}, but is not a .xacro file: expanded with xacro, as only xacro "
         "can read it", source.display, fix="name it .urdf.xacro"),)
     return RobotDescription(
         display=source.display, path=source.path, xml_text=expansion.xml_text,
         root=document.root, files=expansion.files, xacro_args=source.xacro_args,
         doctype=document.doctype, external_dtd=document.external_dtd,
-        warnings=(*named, *expansion.warnings),
+        warnings=(*named, *expansion.warnings), from_xacro=True,
     )
 
 

@@ -94,6 +94,7 @@ class RobotDescription:
     files: tuple[str, ...] = ()
     xacro_args: tuple[tuple[str, str], ...] = ()
     warnings: tuple[LoadWarning, ...] = ()
+    from_xacro: bool = False  # expanded by xacro, whatever its name (a pipe, nav2's .urdf)
     _models: dict[str, pin.Model] = field(default_factory=dict, repr=False)
     _admitted: list[bool] = field(default_factory=list, repr=False)  # past the refusals
 
@@ -107,7 +108,8 @@ class RobotDescription:
     @property
     def expanded(self) -> bool:
         """True when the description came from xacro."""
-        return bool(self.xacro_args) or is_xacro_name(self.path) or len(self.files) > 1
+        return self.from_xacro or bool(self.xacro_args) or is_xacro_name(self.path) \
+            or len(self.files) > 1
 
     @cached_property
     def links(self) -> tuple[el.Link, ...]:

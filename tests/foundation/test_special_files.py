@@ -7,6 +7,7 @@ itself (as root, ``/dev/full`` became a regular file holding a check report).
 
 from __future__ import annotations
 
+import json
 import os
 import resource
 import stat
@@ -133,3 +134,26 @@ def test_a_xacro_source_through_a_pipe_is_expanded_once_read(tmp_path):
     assert '<box size="0.5 1 1"/>' in subprocess.run(
         [sys.executable, "-m", "servicebot_cli", "expand", "/dev/stdin"], input=text,
         capture_output=True, text=True, timeout=60).stdout
+
+
+def test_rules_that_read_a_piped_xacro_again_see_what_it_gave(tmp_path):
+    """The optional-part rule reads the sources again: a piped xacro read as empty, and a
+    reference to a part its arguments leave out was an error, a warning from the file."""
+    import subprocess
+    import sys
+
+    text = ('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+            '<xacro:property name="with_cam" value="false"/><link name="base"/>'
+            '<xacro:if value="${with_cam}"><link name="cam_link"/><joint name="cam" '
+            'type="fixed"><parent link="base"/><child link="cam_link"/></joint></xacro:if>'
+            '<gazebo reference="cam_link"><material>Gazebo/Red</material></gazebo></robot>')
+    (tmp_path / "r.urdf.xacro").write_text(text)
+    severities = []
+    for source, stdin in ((str(tmp_path / "r.urdf.xacro"), None), ("/dev/stdin", text)):
+        result = subprocess.run(
+            [sys.executable, "-m", "servicebot_cli", "check", "urdf", "--isolated", "--format",
+             "json", "--select", "SB501", source], input=stdin, capture_output=True, text=True,
+            timeout=60)
+        (found,) = [f for file in json.loads(result.stdout)["files"] for f in file["findings"]]
+        severities.append(found["severity"])
+    assert severities == ["warning", "warning"]
