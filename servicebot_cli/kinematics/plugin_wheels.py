@@ -40,23 +40,24 @@ def plugin_wheels(robot: RobotDescription, world: dict[str, np.ndarray]) -> list
         if named is None:
             continue
         joints, radius_m = named
-        wheels = [wheel for name in joints
-                  if (wheel := _wheel(robot, name, world, radius_m)) is not None]
+        wheels = wheels_named(robot, joints, radius_m, world)
         if {w.side for w in wheels} == {"left", "right"}:
             return wheels
     return []
 
 
-def wheels_named(robot: RobotDescription, names: Iterable[str],
-                 radius_m: float = math.nan) -> list[Wheel]:
-    """The wheels on the joints ``names`` (a controller's), each where its joint puts it.
+def wheels_named(robot: RobotDescription, names: Iterable[str], radius_m: float = math.nan,
+                 world: dict[str, np.ndarray] | None = None) -> list[Wheel]:
+    """The wheels on the joints ``names`` (a plugin's, a controller's), where they are.
 
-    A joint that does not turn freely across the robot is left out. ``radius_m``: NaN when
-    nothing says it (mesh wheels).
+    ``world``: each link's pose at zero, computed when not given. A joint that does not
+    turn freely across the robot is left out. ``radius_m``: NaN when nothing says it (mesh
+    wheels a controller names).
     """
-    from servicebot_cli.kinematics.link_poses import link_transforms
+    if world is None:
+        from servicebot_cli.kinematics.link_poses import link_transforms
 
-    world = link_transforms(robot)
+        world = link_transforms(robot)
     return [wheel for name in names
             if (wheel := _wheel(robot, name, world, radius_m)) is not None]
 
