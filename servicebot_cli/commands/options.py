@@ -30,7 +30,22 @@ if TYPE_CHECKING:
 
 F = TypeVar("F", bound=Callable[..., Any])
 
-_XACRO_ARG_RE = re.compile(r"^([A-Za-z_][\w]*):=(.*)$", re.DOTALL)
+_XACRO_ARG_RE = re.compile(r"^\s*([A-Za-z_][\w]*)\s*:=(.*)$", re.DOTALL)
+
+
+def _xacro_arg(value: str) -> re.Match[str] | None:
+    """``value`` as xacro's command line reads ``NAME:=VALUE``: both sides stripped."""
+    return _XACRO_ARG_RE.match(value)
+
+
+def _ignored_by_xacro(match: re.Match[str]) -> bool:
+    """Whether xacro's command line drops the mapping (xacro/cli.py's load_mappings).
+
+    An empty value (``use_sim:=`` from an empty launch variable: the argument keeps its
+    default), or ``_name:=`` (a ROS parameter assignment).
+    """
+    name = match.group(1)
+    return not match.group(2).strip() or (len(name) > 1 and name[0] == "_" and name[1] != "_")
 _JOINT_VALUE_RE = re.compile(r"^([^=\s]+)=(.+)$")
 
 
@@ -94,11 +109,13 @@ class RobotArgs:
         sources = [RobotSource.bundled(self.bundled)] if self.bundled else []
         groups: list[tuple[str, list[tuple[str, str]]]] = []
         for value in self.values:
-            match = _XACRO_ARG_RE.match(value)
+            match = _xacro_arg(value)
             if match is None:
                 groups.append((value, []))
+            elif _ignored_by_xacro(match):
+                continue
             elif groups:
-                groups[-1][1].append((match.group(1), match.group(2)))
+                groups[-1][1].append((match.group(1), match.group(2).strip()))
             else:
                 raise click.UsageError(
                     f"xacro argument '{value}' comes before any FILE; put it after the xacro "
@@ -119,15 +136,18 @@ def split_robot_args(values: Sequence[str]) -> tuple[tuple[str, ...], tuple[tupl
     xacro_args: list[tuple[str, str]] = []
     group: list[tuple[str, str]] = []  # the arguments after the latest file
     for value in values:
-        match = _XACRO_ARG_RE.match(value)
+        match = _xacro_arg(value)
         if match and not _utf8(match.group(2)):
             raise click.BadParameter(
                 f"the value of '{match.group(1)}' is not UTF-8 text, which xacro needs; "
                 "give it in UTF-8", param_hint="xacro argument")
+        if match and _ignored_by_xacro(match):
+            continue
         if match:
-            group.append((match.group(1), match.group(2)))
+            pair = (match.group(1), match.group(2).strip())
+            group.append(pair)
             _refuse_repeated_xacro_args(group)
-            xacro_args.append((match.group(1), match.group(2)))
+            xacro_args.append(pair)
         elif ":=" in value:
             raise click.BadParameter(
                 f"'{value}' is not NAME:=VALUE (NAME is letters, digits and _)",

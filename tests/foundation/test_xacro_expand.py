@@ -366,3 +366,28 @@ def test_more_files_read_than_any_robot_reads_is_refused():
     with pytest.raises(ValueError, match="over 10000 files included"):
         xacro_expand._refuse_include_cycle(["top.urdf.xacro"], 10_001, ValueError)
     xacro_expand._refuse_include_cycle(["top.urdf.xacro"], 10_000, ValueError)
+
+
+@pytest.mark.parametrize(("given", "links"), [
+    (["use_cam:="], ["base", "robot_x"]),  # an empty value: dropped, the default applies
+    (["use_cam:= true"], ["base", "cam", "robot_x"]),  # both sides stripped
+    ([" use_cam :=true"], ["base", "cam", "robot_x"]),
+    (["_use_cam:=true"], ["base", "robot_x"]),  # a ROS parameter assignment: ignored
+    (["prefix:="], ["base", "robot_x"]),  # the string argument keeps its default too
+    (["prefix:=other_"], ["base"]),
+])
+def test_xacro_arguments_are_read_as_xacros_command_line_reads_them(run, tmp_path, given, links):
+    """realsense2_description's use_nominal_extrinsics:= from an empty launch variable: xacro
+    keeps the default, servicebot failed ('"" is not a boolean') or dropped the default."""
+    robot = tmp_path / "r.urdf.xacro"
+    robot.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                     '<xacro:arg name="use_cam" default="false"/>'
+                     '<xacro:arg name="prefix" default="robot_"/><link name="base"/>'
+                     '<xacro:if value="$(arg use_cam)"><link name="cam"/></xacro:if>'
+                     '<xacro:if value="${\'$(arg prefix)\' == \'robot_\'}">'
+                     '<link name="$(arg prefix)x"/></xacro:if></robot>')
+    result = run("expand", robot, *given)
+    assert result.exit_code == 0, result.output
+    import re
+
+    assert re.findall(r'<link name="([^"]+)"', result.stdout) == links
