@@ -69,6 +69,12 @@ def _dynamics(joint: Joint) -> Iterator[Issue]:
                     severity=Severity.WARNING if key == "damping" else None)
 
 
+def _range_unwritten(joint: Joint) -> bool:
+    """Whether the joint's ``<limit>`` writes neither lower nor upper."""
+    element = joint.element.find("limit") if joint.element is not None else None
+    return element is not None and not {"lower", "upper"} & element.attrib.keys()
+
+
 def _zero_limit(joint: Joint, label: str, simulator: str | None, placed: bool) -> Issue:
     """SB206: an effort or velocity limit of 0, weighed by who reads it.
 
@@ -169,6 +175,13 @@ def _limits(joint: Joint, simulator: str | None, placed: bool = False) -> Iterat
                     "pybullet reads that as no limit, other tools as a range no position "
                     "satisfies", joint.element,
                     fix=f'lower="{upper:g}" upper="{lower:g}", or type="continuous" for no limit')
+    elif lower == upper and _range_unwritten(joint):
+        # <limit effort velocity/> alone: urdfdom's lower and upper default to 0
+        turning = ', or type="continuous" if it turns without end (a wheel)' \
+            if joint.type == "revolute" else ""
+        yield Issue("SB204", f"{joint.type} joint '{joint.name}' has a <limit> without lower "
+                    "and upper, which default to 0: it cannot move", joint.element,
+                    fix=f'give its range with lower="..." upper="..."{turning}')
     elif lower == upper:
         yield Issue("SB204", f"joint '{joint.name}' has lower = upper = {lower:g}: it cannot "
                     "move", joint.element, fix="make it fixed, or give it its real range")

@@ -76,6 +76,7 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
 
 
 _UNDEFINED_NAME = re.compile(r"name '([^']+)' is not defined")
+_UNDEFINED_PARAMETERS = re.compile(r"Undefined parameters \[([^\]]*)\]")
 
 
 def _xacro_fix(text: str, undefined: re.Match[str] | None) -> str | None:
@@ -86,6 +87,13 @@ def _xacro_fix(text: str, undefined: re.Match[str] | None) -> str | None:
     """
     if undefined is not None:
         return f"pass {undefined[1]}:=VALUE, or give the argument a default"
+    parameters = _UNDEFINED_PARAMETERS.search(text)
+    if parameters is not None:
+        names = [n.strip() for n in parameters[1].split(",") if n.strip()]
+        written = " ".join(f'{n}="..."' for n in names)
+        return (f"write {written} in this call, or give the macro's parameter a default "
+                f"(params=\"... {names[0]}:=VALUE\"); NAME:=VALUE on the command line sets "
+                "arguments, not parameters")
     name = _UNDEFINED_NAME.search(text)
     if name is not None:
         return (f"define '{name[1]}' (<xacro:property name=\"{name[1]}\" value=\"...\"/>) "

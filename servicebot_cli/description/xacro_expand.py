@@ -454,6 +454,11 @@ class _Tracer:
                               f"{type(inner).__name__}: {' '.join(str(inner).split())}")
         shown = inner if own else exc
         message = " ".join(str(shown).split()) or type(exc).__name__
+        macros = getattr(inner, "macros", None) or [None]  # the innermost first
+        body = getattr(macros[0], "body", None)
+        if message.startswith("Undefined parameters") and isinstance(
+                body, xml.dom.minidom.Element) and body.getAttribute("name"):
+            message = f"{message} of macro '{body.getAttribute('name')}'"
         if not own and not str(inner).strip():  # "when evaluating expression '...'" alone
             reason = "out of memory" if isinstance(inner, MemoryError) else \
                 type(inner).__name__

@@ -228,3 +228,15 @@ def test_fix_lines_fit_their_findings(run, tmp_path):
     assert found["SB206"]["fix"] == "write the joint's top speed in rad/s"
     assert not found["SB017"]["message"].startswith(str(path))  # the place is said once
     assert "xacro's advice" not in found["SB017"]["fix"]
+
+
+def test_a_limit_without_lower_and_upper_says_they_default_to_zero(run, tmp_path):
+    """A revolute wheel with <limit effort velocity/> only: 'lower = upper = 0' for a file
+    that writes neither, and the fix 'make it fixed', for a wheel that should be continuous."""
+    path = tmp_path / "arm.urdf"
+    path.write_text(ARM.format(extra="").replace('lower="-1" upper="1" ', ""))
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB204")
+    [found] = findings(result.stdout)
+    assert found["message"] == ("revolute joint 'shoulder' has a <limit> without lower and "
+                                "upper, which default to 0: it cannot move")
+    assert found["fix"].endswith('or type="continuous" if it turns without end (a wheel)')

@@ -102,3 +102,17 @@ def test_xacros_own_warnings_are_placed_at_the_element_that_warned(run, tmp_path
     assert [(f["line"], f["column"], f["message"][:26]) for f in findings(result.stdout)] == [
         (3, 1, "Child elements of a <xacro"), (4, 1, "redefining global symbol: "),
         (5, 1, "Child elements of a <xacro")]
+
+
+def test_a_macro_parameter_not_passed_names_the_macro_and_the_fix_that_works(run, tmp_path):
+    """'Undefined parameters [mass]' said neither which macro nor a fix that works: its fix
+    was 'pass the missing NAME:=VALUE', which sets an argument, not a macro parameter."""
+    path = tmp_path / "r.urdf.xacro"
+    path.write_text(f'{HEAD}\n<xacro:macro name="wheel" params="side mass"><link name="${{side}}"/>'
+                    '</xacro:macro>\n<xacro:wheel side="l"/>\n</robot>')
+    result = run("check", "urdf", path, "--format", "json", "--isolated")
+    (found,) = findings(result.stdout)
+    assert (found["code"], found["line"]) == ("SB006", 3)
+    assert found["message"] == "Undefined parameters [mass] of macro 'wheel'"
+    assert found["fix"].startswith('write mass="..." in this call, or give the macro\'s '
+                                   'parameter a default (params="... mass:=VALUE")')
