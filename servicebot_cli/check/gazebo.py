@@ -44,9 +44,18 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
         yield _unknown_reference(block.reference or "", names, optional, block.element)
     fixed = {joint.name for joint in robot.joints if joint.type == "fixed"}
     kept = robot.kept_apart
+    child_of = {joint.name: joint.child for joint in robot.joints}
+    links = {link.name for link in robot.links}
     for sensor in robot.sensors:
         for problem in _sensor_problems(sensor):
             yield Issue("SB502", f"sensor '{sensor.name}': {problem}", sensor.element)
+        if sensor.reference in child_of and sensor.reference not in links \
+                and sensor.type != "force_torque":  # physics/Joint.cc: 'A joint cannot load'
+            yield Issue("SB502", f"sensor '{sensor.name}' ({sensor.type}) is in <gazebo "
+                        f"reference=\"{sensor.reference}\">, a joint: Gazebo Classic loads "
+                        "only force_torque sensors on a joint, so there this one never exists",
+                        sensor.element, fix=f"<gazebo reference=\"{child_of[sensor.reference]}"
+                        "\">: the link the joint carries", severity=Severity.WARNING)
         yield from _rate(sensor)
         if sensor.type == "force_torque" and sensor.reference in fixed - kept.keys():
             yield Issue("SB502", f"sensor '{sensor.name}' (force_torque) is on fixed joint "

@@ -93,6 +93,9 @@ def _element_tree(top: ET.Element) -> Iterator[Issue]:
         present = set()
         once = _READ_ONCE.get(element.tag, ())
         for child in _read_children(element):
+            if child.tag == "gazebo" and element.tag in ("link", "joint"):
+                yield _nested_gazebo(child, element)
+                continue
             if _is_extension(child.tag):
                 continue
             if element.tag == "joint" and child.tag in _UNREAD.get(element.get("type", ""), ()):
@@ -184,6 +187,18 @@ def _empty_reference(element: ET.Element) -> Iterator[Issue]:
     elif element.tag == "texture" and not (filename or "").strip():
         yield Issue("SB112", "<texture> has no filename, so it gives the material nothing",
                     element, fix="add filename=\"...\" or remove the <texture>")
+
+
+def _nested_gazebo(gazebo: ET.Element, parent: ET.Element) -> Issue:
+    """SB010 for a ``<gazebo>`` inside a link or joint.
+
+    sdformat reads those under <robot> only (parser_urdf.cc), so Gazebo never sees its
+    plugins, sensors or materials.
+    """
+    name = parent.get("name", "")
+    return Issue("SB010", f"<gazebo> inside <{parent.tag}>{_named(parent)}: sdformat reads "
+                 "<gazebo> only directly under <robot>, so Gazebo never sees what it holds",
+                 gazebo, fix=f"move it under <robot> as <gazebo reference=\"{name}\">")
 
 
 def _unknown(child: ET.Element, parent: ET.Element, allowed: tuple[str, ...]) -> Issue:

@@ -168,3 +168,26 @@ def test_a_force_torque_sensor_on_a_lumped_joint_measures_nothing(run, tmp_path)
     assert lumped[:2] == ("SB502", "warning") and "the sensor measures nothing" in lumped[2]
     assert found("fixed", "<preserveFixedJoint>true</preserveFixedJoint>") == []
     assert found("revolute") == []
+
+
+def test_a_gazebo_block_inside_a_link_and_a_sensor_on_a_joint_are_found(run, tmp_path):
+    """sam_bot's diff-drive <gazebo> moved into base_link, and its lidar referenced by
+    lidar_joint, passed with nothing said; sdformat reads <gazebo> under <robot> only, and
+    Gazebo Classic's Joint.cc loads force_torque sensors alone ('A joint cannot load')."""
+    path = tmp_path / "r.urdf"
+    path.write_text(
+        '<robot name="r"><link name="base_link"><gazebo><plugin name="d" '
+        'filename="libgazebo_ros_diff_drive.so"/></gazebo></link><link name="lidar_link"/>'
+        '<joint name="lidar_joint" type="fixed"><parent link="base_link"/>'
+        '<child link="lidar_link"/></joint><gazebo reference="lidar_joint">'
+        '<sensor name="lidar" type="ray"><update_rate>5</update_rate></sensor>'
+        '<sensor name="ft" type="force_torque"/><preserveFixedJoint>true</preserveFixedJoint>'
+        '</gazebo></robot>')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB010,SB502")
+    found = {f["code"]: f for f in findings(result.stdout)}
+    assert len(findings(result.stdout)) == 2
+    assert found["SB010"]["message"].startswith("<gazebo> inside <link> 'base_link': ")
+    assert found["SB010"]["fix"] == 'move it under <robot> as <gazebo reference="base_link">'
+    assert found["SB502"]["message"].startswith(
+        "sensor 'lidar' (ray) is in <gazebo reference=\"lidar_joint\">, a joint: ")
+    assert found["SB502"]["fix"].startswith('<gazebo reference="lidar_link">')
