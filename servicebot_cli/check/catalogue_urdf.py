@@ -356,8 +356,9 @@ URDF_RULES += (
          "beside the file (pybullet_data's package://meshes/), or package:///abs/path. "
          "robot_state_publisher, RViz and Gazebo would not find the meshes. Gazebo's "
          "model://NAME/ (found on GAZEBO_MODEL_PATH or GZ_SIM_RESOURCE_PATH, else as package "
-         "NAME, which gazebo_ros puts on the model path) is read by Gazebo alone. One finding "
-         "per file and package; --format json says how each package was found.",
+         "NAME, which gazebo_ros puts on the model path) is read by Gazebo alone. A xacro "
+         "$(find NAME) found only as a directory named NAME: ROS's xacro fails on the file. "
+         "One finding per file and package; --format json says how each package was found.",
          "Give the package a package.xml with its <name>, or use paths relative to the file."),
     Rule("SB410", "remote-mesh", N, "Meshes fetched over the network",
          "http:// and https:// meshes (Gazebo Fuel models) are fetched by Gazebo when the "

@@ -18,6 +18,8 @@ from typing import TYPE_CHECKING
 from servicebot_cli.check.findings import Issue
 from servicebot_cli.common.errors import PackageNotFound, RemoteResource, UnknownScheme
 from servicebot_cli.common.inputs import read_again
+from servicebot_cli.description.loader import comments_blanked
+from servicebot_cli.description.package_dirs import package_name
 from servicebot_cli.description.packages import PackageLocation, PackageResolver, is_remote
 
 if TYPE_CHECKING:
@@ -115,6 +117,46 @@ def used(robot: RobotDescription, search: PackageSearch) -> dict[str, PackageLoc
             if resolved.package is not None:
                 found.setdefault(resolved.package, resolved.location)
     return found
+
+
+def find_issues(robot: RobotDescription, search: PackageSearch) -> Iterator[Issue]:
+    """SB409 per package a ``$(find NAME)`` of the xacro sources names that ROS would not find.
+
+    Found only as a directory named NAME (a package.xml whose <name> is another), ROS's xacro
+    fails on the file ('package not found'): it expands here and nowhere else. Once per
+    package and file, at its first ``$(find)``.
+    """
+    for file in robot.files if robot.expanded else ():
+        path = Path(file)
+        try:
+            data = read_again(path)
+            text = comments_blanked(path.read_bytes() if data is None else data).decode(
+                "utf-8", "replace")
+        except OSError:
+            continue
+        seen: set[str] = set()
+        for match in _FIND.finditer(text):
+            name = match[1]
+            if "$" in name or name in seen:
+                continue
+            seen.add(name)
+            location = search.locate(name, path.parent.absolute())
+            if location is None or location.ros_finds_it:
+                continue
+            line = text.count("\n", 0, match.start()) + 1
+            column = match.start() - text.rfind("\n", 0, match.start())
+            yield Issue("SB409", f"$(find {name}) resolves only as {location.how}; ROS finds "
+                        "packages by the <name> of their package.xml, so ROS's xacro fails on "
+                        f"this file ('package {name} not found')", where=(file, line, column),
+                        fix=_find_fix(name, location.path))
+
+
+def _find_fix(name: str, directory: Path) -> str:
+    """Write the package's own name, when its package.xml gives one."""
+    own = package_name(directory)
+    if own and own != name:
+        return f"write $(find {own}), the <name> in its package.xml"
+    return f"give {directory.name} a package.xml with <name>{name}</name>"
 
 
 def mesh_references(robot: RobotDescription) -> Iterator[tuple[ET.Element, str, Path]]:

@@ -168,7 +168,15 @@ def _unreadable(exc: DescriptionError, source: RobotSource) -> bool:
 
 def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Iterator[Issue]:
     """Every rule family but the model, skipping families with no selected rule."""
-    from servicebot_cli.check import gazebo, geometry, inertia, joints, ros2_control, transmissions
+    from servicebot_cli.check import (
+        gazebo,
+        geometry,
+        inertia,
+        joints,
+        packages,
+        ros2_control,
+        transmissions,
+    )
 
     for warning in dict.fromkeys(robot.warnings):  # a call site's warning once
         yield xacro_warning(warning, robot.display)
@@ -193,6 +201,7 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
         (("SB1",), lambda: names.check(robot)), (("SB1",), lambda: tree.check(robot)),
         (("SB2",), lambda: joints.check(robot)), (("SB3",), lambda: inertia.check(robot, env)),
         (("SB4",), lambda: geometry.check(robot, env)),
+        (("SB409",), lambda: packages.find_issues(robot, env.search)),
         (("SB50", "SB513"), lambda: gazebo.check(robot)),
         (("SB5",), lambda: ros2_control.check(robot)),
         (("SB511",), lambda: transmissions.check(robot)),

@@ -51,3 +51,30 @@ def test_a_directory_that_shares_the_name_and_holds_the_mesh_is_loader_only(run,
 def test_a_package_ros_finds_that_lacks_the_mesh_is_an_error(run, tmp_path):
     code, found = _codes(run, _layout(tmp_path, package_xml=True, mesh_present=False))
     assert code == 1 and found["SB401"]["severity"] == "error"
+
+
+def test_a_find_of_a_directory_name_that_is_no_package_name_is_a_warning(run, tmp_path):
+    """$(find my_robot_description) where that directory's package.xml says
+    acme_robot_description: ROS's xacro fails ('package not found'); check passed it."""
+    package = tmp_path / "ws" / "src" / "my_robot_description"
+    (package / "urdf").mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>acme_robot_description</name></package>")
+    (package / "urdf" / "parts.xacro").write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="tool"/></robot>')
+    robot = package / "urdf" / "robot.urdf.xacro"
+    robot.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                     '  <!-- $(find nothing_here) in a comment is never expanded -->\n'
+                     '  <xacro:include filename="$(find my_robot_description)/urdf/parts.xacro"/>\n'
+                     '  <link name="base"/>\n  <joint name="j" type="fixed"><parent link="base"/>'
+                     '<child link="tool"/></joint>\n</robot>\n')
+    result = run("check", "urdf", robot, "--isolated", "--format", "json")
+    assert result.exit_code == 0
+    (found,) = [f for f in findings(result.stdout) if f["code"] == "SB409"]
+    assert (found["line"], found["column"], found["severity"]) == (3, 28, "warning")
+    assert found["message"].startswith("$(find my_robot_description) resolves only as the "
+                                       "directory")
+    assert found["fix"] == "write $(find acme_robot_description), the <name> in its package.xml"
+    (package / "urdf" / "robot.urdf.xacro").write_text(
+        robot.read_text().replace("my_robot_description)", "acme_robot_description)"))
+    assert [f for f in findings(run("check", "urdf", robot, "--isolated", "--format",
+                                    "json").stdout) if f["code"] == "SB409"] == []
