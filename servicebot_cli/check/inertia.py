@@ -129,6 +129,8 @@ def _possible(link: Link, values: tuple[float, ...],
 _PLACEHOLDER_M3 = 1e-6
 """Collision geometry this small (1 cm^3) may stand in for a body it does not describe..."""
 _DENSEST_KG_M3 = 1e5
+_METAL_KG_M3 = 3e4
+"""Denser than osmium (22,590 kg/m^3): no part of a robot is."""
 """...when the link's mass in it would be denser than any material (osmium: 22,590 kg/m^3):
 then the visual geometry, where its volume is known, stands for the body."""
 
@@ -186,7 +188,21 @@ def _against_geometry(robot: RobotDescription, link: Link, env: CheckEnv) -> Ite
             return
         solid = replace(visual, label=f"{visual.label} (the visual geometry; the collision "
                         f"geometry, {solid.label}, is a placeholder)")
+    if mass > _METAL_KG_M3 * solid.volume_m3 and _mismatch(
+            have, solid, mass / 1000, env.inertia_factor) is None:  # the mass is in grams
+        yield _in_grams(link, solid, mass)
+        return
     yield _issue(link, have, solid, mass, found)
+
+
+def _in_grams(link: Link, solid: solids.Solid, mass: float) -> Issue:
+    """SB301 for a mass in grams: the inertia fits a thousandth of it (mp_400's wheels)."""
+    inertial = link.inertial
+    assert inertial is not None
+    return Issue("SB301", f"link '{link.name}' mass {mass:g} kg makes its {solid.label} "
+                 f"{mass / solid.volume_m3:.3g} kg/m^3, denser than any metal, and its inertia "
+                 f"fits {mass / 1000:g} kg: is the mass in grams?", inertial.element,
+                 fix=f'mass value="{mass / 1000:g}"')
 
 
 def _issue(link: Link, have: np.ndarray, solid: solids.Solid, mass: float,

@@ -122,3 +122,25 @@ def test_principal_moments_of_a_diagonal_are_lapacks_bits(exponent):
         assert principal_moments(values).tobytes() == lapack.tobytes(), values
     turned = (1.0, 0.2, 0.0, 2.0, 0.0, 3.0)  # not diagonal: LAPACK's own answer
     assert principal_moments(turned).tobytes() == np.linalg.eigvalsh(tensor(turned)).tobytes()
+
+
+def test_a_mass_in_grams_is_named_as_the_mistake_not_the_inertia(run, tmp_path):
+    """A wheel 8 cm in radius of 1823.62 kg: SB301 said the inertia was 790 times too small,
+    and its fix multiplied the right inertia by 790. The inertia fits 1.82362 kg."""
+    path = tmp_path / "wheel.urdf"
+    path.write_text(
+        '<robot name="w"><link name="base"/><joint name="j" type="continuous"><parent '
+        'link="base"/><child link="wheel"/><axis xyz="0 0 1"/></joint><link name="wheel">'
+        '<inertial><mass value="1823.62"/><inertia ixx="0.004" iyy="0.004" izz="0.0074" '
+        'ixy="0" ixz="0" iyz="0"/></inertial><collision><geometry><cylinder radius="0.08" '
+        'length="0.04"/></geometry></collision></link></robot>')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB301")
+    (found,) = findings(result.stdout)
+    assert found["message"].endswith("denser than any metal, and its inertia fits 1.82362 kg: "
+                                     "is the mass in grams?")
+    assert found["fix"] == 'mass value="1.82362"'
+    heavy = path.read_text().replace('ixx="0.004" iyy="0.004"', 'ixx="4" iyy="4"')
+    path.write_text(heavy)  # an inertia that fits no thousandth: the inertia is named
+    (found,) = findings(run("check", path, "--format", "json", "--isolated", "--select",
+                            "SB301").stdout)
+    assert "does not match a 1823.62 kg solid cylinder" in found["message"]
