@@ -94,6 +94,12 @@ URDF_RULES: tuple[Rule, ...] = (
          "fk, ik and simulate refuse it. Past 3.4e38 m, where single precision ends, it is "
          "an error; nearer, a warning.",
          "Write the origin in metres."),
+    Rule("SB021", "origin-in-degrees", W, "An origin's rpy that looks like degrees",
+         "URDF angles are radians: rpy=\"0 0 90\" turns the frame by 90 rad, 116.6 degrees, "
+         "and check_urdf, Gazebo and robot_state_publisher all accept it. Every angle that "
+         "is not 0 being a whole multiple of 5 from 15 to 360, one of them beyond 2 pi, is "
+         "taken for degrees.",
+         "Write the angles in radians."),
     Rule("SB015", "too-large", E, "The file is over the size or complexity limits",
          "Descriptions over 32 MB, with more than a million elements, nested over 256 deep "
          "or with more than 20000 links are refused at once, instead of a build that takes "

@@ -118,6 +118,7 @@ def _element_tree(top: ET.Element) -> Iterator[Issue]:
         yield from _empty_reference(element)
         if element.tag == "origin":
             yield from _far_origin(element)
+            yield from _degrees_origin(element)
         elif element.tag == "joint":
             yield from _empty_links(element)
         if element.tag == "dynamics" and not element.attrib.keys() & {"damping", "friction"}:
@@ -149,6 +150,28 @@ def _empty_links(joint: ET.Element) -> Iterator[Issue]:
             yield Issue("SB012", f"joint{_named(joint)} has <{end} link=\"{link}\">: it names no "
                         "link, and urdfdom refuses the joint", element,
                         fix=f"name the {end} link")
+
+
+def _degrees_origin(origin: ET.Element) -> Iterator[Issue]:
+    """SB021: an ``<origin rpy>`` written in degrees (``rpy="0 0 90"``).
+
+    Every angle that is not 0 a whole multiple of 5 from 15 to 360, one beyond 2 pi: no
+    radian value is written so, and urdfdom takes 90 for 90 rad, a turn of 116.6 degrees.
+    """
+    value = origin.get("rpy")
+    if value is None or not _plain(value, 3):
+        return  # SB013/SB014 say what is wrong with it
+    angles = [float(part) for part in value.split()]
+    turned = [abs(a) for a in angles if a != 0]
+    if not turned or max(turned) <= 2 * math.pi or not all(
+            15 <= a <= 360 and a % 5 == 0 for a in turned):
+        return
+    radians = " ".join(f"{math.radians(a):.6g}" for a in angles)
+    most = max(turned)
+    turn_deg = math.degrees(math.remainder(most, math.tau))
+    yield Issue("SB021", f"<origin rpy=\"{value}\"> looks like degrees: URDF angles are "
+                f"radians, so {most:g} is a turn of {turn_deg:.1f} degrees", origin,
+                fix=f'rpy="{radians}"')
 
 
 def _far_origin(origin: ET.Element) -> Iterator[Issue]:
