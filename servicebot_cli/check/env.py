@@ -6,6 +6,7 @@ resolved here (as ``expand`` resolves them) and read through one MeshCache per r
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -97,6 +98,9 @@ class CheckEnv:
             if "$(" in filename:  # sjtu_drone's stale .urdf: file://$(find ...)/models/...
                 problem += ("; its '$(...)' is xacro's, and nothing substitutes it in a file "
                             "xacro does not expand")
+            elif (twin := case_twin(path)) is not None:
+                problem += (f"; '{twin}' beside it differs only in case, which Windows and "
+                            "macOS ignore and Linux does not")
             raise MeshNotFound(f"mesh '{filename}': {path} {problem}", resolved)
         return path
 
@@ -111,3 +115,18 @@ class CheckEnv:
 
 
 __all__ = ["CheckEnv", "MeshError", "MeshNotFound", "RemoteMesh"]
+
+
+
+def case_twin(path: Path) -> str | None:
+    """The name of a file beside ``path`` that differs from it only in case, if any.
+
+    A mesh exported on Windows or macOS (Left_Tire.STL named left_tire.stl in the URDF) loads
+    there and nowhere else: Linux file names are case-sensitive.
+    """
+    try:
+        return next((entry.name for entry in os.scandir(path.parent)
+                     if entry.name.lower() == path.name.lower() and entry.name != path.name),
+                    None)
+    except OSError:
+        return None

@@ -12,7 +12,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check import values
-from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound, RemoteMesh
+from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound, RemoteMesh, case_twin
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.packages import FileTally
 from servicebot_cli.check.syntax import URDF_VERSION
@@ -115,9 +115,11 @@ def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str
             return
         tally.add_found(exc.resolved, element)
         unexpanded = "$(" in (shape.geometry.filename or "")
+        twin = case_twin(exc.resolved.path)
         yield Issue("SB401", f"{where}: {exc}", element,
                     fix="name the file .urdf.xacro, so that xacro expands it, or write the "
                         "path as package://PKG/..." if unexpanded else
+                        f"write '{twin}' as the file is named, or rename the file" if twin else
                         "fix the path: the package or directory holds no such file")
         return
     except MeshError as exc:

@@ -342,3 +342,19 @@ def test_each_twice_in_shared_buckets(keys, expected):
     from servicebot_cli.check.meshes import _each_twice
 
     assert _each_twice(np.array(keys, dtype=np.uint64)) is expected
+
+
+def test_a_mesh_named_in_another_case_says_so(run, tmp_path):
+    """Left_Tire.STL exported on Windows, named left_tire.stl in the URDF: it loads there and
+    not on Linux. SB401 said only 'does not exist'."""
+    from tests.check.helpers import findings, tetrahedron_stl
+
+    (tmp_path / "Left_Tire.STL").write_bytes(tetrahedron_stl(0.1))
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r"><link name="base"><visual><geometry><mesh '
+                    'filename="left_tire.stl"/></geometry></visual></link></robot>')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB401")
+    (found,) = findings(result.stdout)
+    assert found["message"].endswith("does not exist; 'Left_Tire.STL' beside it differs only "
+                                     "in case, which Windows and macOS ignore and Linux does not")
+    assert found["fix"] == "write 'Left_Tire.STL' as the file is named, or rename the file"
