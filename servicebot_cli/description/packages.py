@@ -156,8 +156,8 @@ class PackageResolver:
         """
         location = self._ros_location(name, context) or self._loader_location(name, context)
         if location is None:
-            raise PackageNotFound(f"package '{name}' not found; looked in "
-                                  f"{self._searched(context)}")
+            raise PackageNotFound(f"package '{name}' not found{self._close(name, context)}; "
+                                  f"looked in {self._searched(context)}")
         self.found.setdefault(name, location)
         return location
 
@@ -185,8 +185,8 @@ class PackageResolver:
                         or self._loader_location(name, base_dir)
                         or self._relative_location(name, rel, base_dir))
             if location is None:
-                raise PackageNotFound(f"package '{name}' not found; looked in "
-                                      f"{self._searched(base_dir)}")
+                raise PackageNotFound(f"package '{name}' not found{self._close(name, base_dir)}"
+                                      f"; looked in {self._searched(base_dir)}")
             from servicebot_cli.description.install_layout import installed_source
 
             path = Path(installed_source(str(location.path / rel)))
@@ -331,6 +331,17 @@ class PackageResolver:
                                        f"{_short(ancestor / name)} beside the file",
                                        ros_finds_it=False)
         return None
+
+    def _close(self, name: str, context: Path | None) -> str:
+        """`` (did you mean 'NAME'?)`` for a package of the search a letter or two off."""
+        import difflib
+
+        known = set(self.explicit)
+        root = workspace_root(context) if context is not None else None
+        for place in (*((root,) if root is not None else ()), *self.ros_package_path):
+            known.update(packages_under(place))
+        close = difflib.get_close_matches(name, sorted(known), n=1, cutoff=0.85)
+        return f" (did you mean '{close[0]}'?)" if close else ""
 
     def _searched(self, context: Path | None) -> str:
         places = []

@@ -78,3 +78,19 @@ def test_a_find_of_a_directory_name_that_is_no_package_name_is_a_warning(run, tm
         robot.read_text().replace("my_robot_description)", "acme_robot_description)"))
     assert [f for f in findings(run("check", "urdf", robot, "--isolated", "--format",
                                     "json").stdout) if f["code"] == "SB409"] == []
+
+
+def test_a_package_name_a_letter_off_a_workspace_package_is_suggested(run, tmp_path):
+    """package://clearpath_platfrom_description/...: SB408 'not found', as if the package were
+    missing from the environment, with no word of the workspace package it misspells."""
+    package = tmp_path / "ws" / "src" / "foo_description"
+    (package / "urdf").mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>foo_description</name></package>")
+    robot = package / "urdf" / "r.urdf"
+    robot.write_text('<robot name="r"><link name="base"><visual><geometry><mesh filename='
+                     '"package://foo_descripton/meshes/base.stl"/></geometry></visual></link>'
+                     '</robot>')
+    (found,) = findings(run("check", "urdf", robot, "--isolated", "--format", "json",
+                            "--select", "SB408").stdout)
+    assert found["message"].startswith("package 'foo_descripton' not found (did you mean "
+                                       "'foo_description'?): 1 mesh not checked")
