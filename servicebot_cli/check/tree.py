@@ -6,6 +6,7 @@ full of loops takes milliseconds, never a recursion error or a hang.
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
@@ -43,11 +44,17 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
 
 
 def _parents(edges: list[Joint]) -> Iterator[Issue]:
+    children = {joint.child for joint in edges}
+    out = Counter(joint.parent for joint in edges)
     for first, joint in second_parents(edges):
+        # a joint written the wrong way round: its parent is a leaf with no parent of its own
+        swapped = [j for j in (joint, first) if j.parent not in children and out[j.parent] == 1]
+        fix = (f"swap <parent> and <child> of joint '{swapped[0].name}' ('{swapped[0].parent}' "
+               f"then hangs from '{swapped[0].child}'), or remove joint '{joint.name}'"
+               if swapped else f"remove joint '{joint.name}' or give it its own child link")
         yield Issue("SB106", f"link '{joint.child}' has two parents: joint '{first.name}' "
                     f"(from '{first.parent}') and joint '{joint.name}' (from "
-                    f"'{joint.parent}')", joint.element,
-                    fix=f"remove joint '{joint.name}' or give it its own child link")
+                    f"'{joint.parent}')", joint.element, fix=fix)
 
 
 def _loops(edges: list[Joint]) -> Iterator[Issue]:

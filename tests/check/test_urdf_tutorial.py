@@ -46,3 +46,18 @@ def test_the_flexible_step_is_kinematic_only_and_says_so():
     joints = ET.parse(TUTORIAL / "urdf" / "06-flexible.urdf").getroot().iter("joint")
     assert len(moving) == sum(j.get("type") != "fixed" for j in joints) == 8
     assert all(f["severity"] == "warning" for f in moving)
+
+
+def test_a_joint_written_the_wrong_way_round_is_named_with_the_swap(run, tmp_path):
+    """06-flexible with tobox's <parent> and <child> swapped: SB106's fix said to remove the
+    joint or give it a child link of its own, never that it was the wrong way round."""
+    source = (REPO / "tests" / "realworld" / "ws" / "src" / "urdf_tutorial" / "urdf"
+              / "06-flexible.urdf").read_text()
+    written = '<parent link="head"/>\n    <child link="box"/>'
+    assert written in source
+    path = tmp_path / "06-flexible.urdf"
+    path.write_text(source.replace(written, '<parent link="box"/>\n    <child link="head"/>'))
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB106")
+    (found,) = findings(result.stdout)
+    assert found["fix"] == ("swap <parent> and <child> of joint 'tobox' ('box' then hangs from "
+                            "'head'), or remove joint 'tobox'")
