@@ -46,9 +46,11 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
 def _parents(edges: list[Joint]) -> Iterator[Issue]:
     children = {joint.child for joint in edges}
     out = Counter(joint.parent for joint in edges)
+    several_roots = len(set(out) - children) > 1  # one root: a loop, no joint turned round
     for first, joint in second_parents(edges):
-        # a joint written the wrong way round: its parent is a leaf with no parent of its own
-        swapped = [j for j in (joint, first) if j.parent not in children and out[j.parent] == 1]
+        # a joint written the wrong way round: its parent, a leaf, became a second root
+        swapped = [j for j in (joint, first) if several_roots and j.parent not in children
+                   and out[j.parent] == 1]
         fix = (f"swap <parent> and <child> of joint '{swapped[0].name}' ('{swapped[0].parent}' "
                f"then hangs from '{swapped[0].child}'), or remove joint '{joint.name}'"
                if swapped else f"remove joint '{joint.name}' or give it its own child link")
