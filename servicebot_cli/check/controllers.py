@@ -9,7 +9,7 @@ Pure: YAML text and a RobotDescription in, issues out, each placed at its YAML l
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from typing import TYPE_CHECKING
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
@@ -30,6 +30,7 @@ if TYPE_CHECKING:
     from servicebot_cli.check.controller_interfaces import Claim
     from servicebot_cli.description.robot import RobotDescription
     from servicebot_cli.kinematics.drive_geometry import DriveGeometry
+    from servicebot_cli.kinematics.wheel_joints import Wheel
 
 TOLERANCE = 0.01
 """Relative difference allowed between the YAML and the URDF's wheel numbers."""
@@ -325,11 +326,9 @@ class _Checker:
         from servicebot_cli.kinematics.plugin_wheels import wheels_named
 
         wheels = wheels_named(self.robot, self.named_wheels(params))
-        sides = [[w.position_m[1] for w in wheels if w.side == side] for side in ("left", "right")]
-        if not all(sides):
-            return None
-        track_m = sum(sides[0]) / len(sides[0]) - sum(sides[1]) / len(sides[1])
-        return DriveGeometry(tuple(wheels), math.nan, track_m, math.inf)
+        track_m = _track_m(wheels)
+        return None if track_m is None else DriveGeometry(tuple(wheels), math.nan, track_m,
+                                                          math.inf)
 
     def named_wheels(self, params: yaml.MappingNode) -> set[str]:
         """The wheel joints the controller names, chains of references followed."""
@@ -347,11 +346,10 @@ class _Checker:
         """
         named = self.named_wheels(params)
         wheels = [w for w in geometry.wheels if w.joint in named]
-        sides = [[w.position_m[1] for w in wheels if w.side == side] for side in ("left", "right")]
-        if not all(sides):
+        track_m = _track_m(wheels)
+        if track_m is None:
             return geometry.wheel_radius_m, geometry.track_m
-        radius_m = sum(w.radius_m for w in wheels) / len(wheels)
-        return radius_m, sum(sides[0]) / len(sides[0]) - sum(sides[1]) / len(sides[1])
+        return sum(w.radius_m for w in wheels) / len(wheels), track_m
 
     def value(self, section: str, params: yaml.MappingNode, key: str, expected: float,
               code: str, multipliers: tuple[str, ...], skid: bool = False) -> Iterator[Issue]:
@@ -390,6 +388,17 @@ class _Checker:
                        else ""),
                     where=self.where(node), fix=f"{key}: {expected:.6g}",
                     severity=Severity.WARNING if calibrated or skidding else None)
+
+
+def _track_m(wheels: Sequence[Wheel]) -> float | None:
+    """The distance between the mean left and mean right wheel centres.
+
+    None unless there are wheels on both sides.
+    """
+    sides = [[w.position_m[1] for w in wheels if w.side == side] for side in ("left", "right")]
+    if not all(sides):
+        return None
+    return sum(sides[0]) / len(sides[0]) - sum(sides[1]) / len(sides[1])
 
 
 def _interface_fix(kind: str, interface: str) -> str:

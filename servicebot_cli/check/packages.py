@@ -103,12 +103,10 @@ def used(robot: RobotDescription, search: PackageSearch) -> dict[str, PackageLoc
     found: dict[str, PackageLocation | None] = {}
     for file in robot.files if robot.expanded else ():
         path = Path(file)
-        try:
-            data = read_again(path)
-            text = (path.read_bytes() if data is None else data).decode("utf-8", "replace")
-        except OSError:
+        data = _source_bytes(path)
+        if data is None:
             continue
-        for name in dict.fromkeys(_FIND.findall(text)):
+        for name in dict.fromkeys(_FIND.findall(data.decode("utf-8", "replace"))):
             if "$" not in name:
                 found.setdefault(name, search.locate(name, path.parent.absolute()))
     for _, uri, base_dir in mesh_references(robot):
@@ -128,12 +126,10 @@ def find_issues(robot: RobotDescription, search: PackageSearch) -> Iterator[Issu
     """
     for file in robot.files if robot.expanded else ():
         path = Path(file)
-        try:
-            data = read_again(path)
-            text = comments_blanked(path.read_bytes() if data is None else data).decode(
-                "utf-8", "replace")
-        except OSError:
+        data = _source_bytes(path)
+        if data is None:
             continue
+        text = comments_blanked(data).decode("utf-8", "replace")
         seen: set[str] = set()
         for match in _FIND.finditer(text):
             name = match[1]
@@ -149,6 +145,15 @@ def find_issues(robot: RobotDescription, search: PackageSearch) -> Iterator[Issu
                         "packages by the <name> of their package.xml, so ROS's xacro fails on "
                         f"this file ('package {name} not found')", where=(file, line, column),
                         fix=_find_fix(name, location.path))
+
+
+def _source_bytes(path: Path) -> bytes | None:
+    """A source file's bytes (what a pipe gave, read once); None: it cannot be read."""
+    try:
+        data = read_again(path)
+        return path.read_bytes() if data is None else data
+    except OSError:
+        return None
 
 
 def _find_fix(name: str, directory: Path) -> str:
