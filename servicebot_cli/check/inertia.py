@@ -256,8 +256,9 @@ def _join(values: np.ndarray) -> str:
 
 def _components(matrix: np.ndarray) -> str:
     diagonal = f"ixx={matrix[0, 0]:.6g} iyy={matrix[1, 1]:.6g} izz={matrix[2, 2]:.6g}"
-    # a product of inertia a billionth of the largest term is the sums' rounding: 0
-    noise = 1e-9 * abs(matrix).max()
+    # a product of inertia a hundred-thousandth of the largest term is rounding (the sums',
+    # or a right angle written 1.5708): its axes turn by less than that many radians; 0
+    noise = 1e-5 * abs(matrix).max()
     off = {k: 0.0 if abs(v) <= noise else v
            for k, v in (("ixy", matrix[0, 1]), ("ixz", matrix[0, 2]), ("iyz", matrix[1, 2]))}
     if not any(off.values()):

@@ -90,10 +90,20 @@ def test_a_product_of_inertia_that_is_only_rounding_is_written_as_0(run):
     fixes = [f["fix"] for f in findings(result.stdout) if f["code"] == "SB301"]
     assert fixes
     for fix in fixes:
-        values = {k: float(v) for k, v in re.findall(r"(i[xyz]{2})=(\S+)", fix)}
+        values = {k: float(v) for k, v in re.findall(r"(i[xyz]{2})=([-+.\deE]+)", fix)}
         largest = max(abs(values[k]) for k in ("ixx", "iyy", "izz"))
         products = [values.get(k, 0.0) for k in ("ixy", "ixz", "iyz")]
         assert all(v == 0 or abs(v) > 1e-9 * largest for v in products), fix
+
+
+def test_a_product_of_inertia_from_a_rounded_right_angle_is_written_as_0(run, tmp_path):
+    # rpy="1.5708 0 0" is a right angle to five digits: the cylinder's products of inertia
+    # (4e-8 beside 2e-3) are that rounding, not a tilt anyone means
+    rounded = CYLINDER_ALONG_Y.replace("1.5707963267948966", "1.5708")
+    path = _robot(tmp_path, (0, 0, 0), np.eye(3) * 0.2, rounded)
+    (finding,) = [f for f in findings(run("check", path, "--format", "json").stdout)
+                  if f["code"] == "SB301"]
+    assert finding["fix"] == "use ixx=0.00135833 iyy=0.00245 izz=0.00135833 (ixy=ixz=iyz=0)"
 
 
 def test_a_massless_root_with_inertia_is_pybullets_fixed_base_a_warning(run):
