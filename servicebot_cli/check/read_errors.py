@@ -76,6 +76,7 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
 
 
 _UNDEFINED_NAME = re.compile(r"name '([^']+)' is not defined")
+_IN_MACRO = re.compile(r"\(in macro '([^']+)'")
 _UNDEFINED_PARAMETERS = re.compile(r"Undefined parameters \[([^\]]*)\]")
 
 
@@ -95,6 +96,11 @@ def _xacro_fix(text: str, undefined: re.Match[str] | None) -> str | None:
                 f"(params=\"... {names[0]}:=VALUE\"); NAME:=VALUE on the command line sets "
                 "arguments, not parameters")
     name = _UNDEFINED_NAME.search(text)
+    macro = _IN_MACRO.search(text)
+    if name is not None and macro is not None:
+        return (f"give macro '{macro[1]}' a parameter '{name[1]}' (params=\"... {name[1]}\") "
+                f"and pass {name[1]}=\"...\" in the call, or define the property "
+                f"'{name[1]}' before the call")
     if name is not None:
         return (f"define '{name[1]}' (<xacro:property name=\"{name[1]}\" value=\"...\"/>) "
                 "before this line, or include the file that defines it; a property is not an "

@@ -230,6 +230,7 @@ class _Tracer:
         self.keep: list[object] = []  # keeps nodes alive so their ids stay unique
         self.current: list[int] = []
         self.failed_at: int | None = None
+        self.failed_calls: list[tuple[str, int | None]] = []  # macro, call: the innermost first
         self.files: list[str] = []
         self.known_args: set[str] = set()
         self.macros: dict[str, SourceRef] = {}  # where each macro is defined, by name
@@ -406,7 +407,15 @@ class _Tracer:
         def wrapper(node: xml.dom.minidom.Element, *args: object) -> bool:
             call_site = self.node_refs.get(id(node))
             parent, before, after = node.parentNode, node.previousSibling, node.nextSibling
-            handled = fn(node, *args)
+            try:
+                handled = fn(node, *args)
+            except Exception:  # unwinding from the innermost call out
+                if node.tagName.startswith("xacro:"):
+                    name = node.getAttribute("macro") if node.tagName == "xacro:call" \
+                        else node.tagName.removeprefix("xacro:")
+                    if not self.failed_calls or self.failed_calls[-1] != (name, call_site):
+                        self.failed_calls.append((name, call_site))  # xacro:call comes twice
+                raise
             if handled and call_site is not None and parent is not None:
                 child = before.nextSibling if before is not None else parent.firstChild
                 while child is not None and child is not after:
@@ -459,11 +468,28 @@ class _Tracer:
         if message.startswith("Undefined parameters") and isinstance(
                 body, xml.dom.minidom.Element) and body.getAttribute("name"):
             message = f"{message} of macro '{body.getAttribute('name')}'"
+        else:
+            message += self._in_macros(where)
         if not own and not str(inner).strip():  # "when evaluating expression '...'" alone
             reason = "out of memory" if isinstance(inner, MemoryError) else \
                 type(inner).__name__
             message = f"{message}: {reason}"
         return XacroError(f"{where}: xacro: {message}")
+
+    def _in_macros(self, where: str) -> str:
+        """`` (in macro 'wheel', called at r.urdf.xacro:4:3)``: the calls an error came through.
+
+        The innermost call, and the calls around it out to the first written outside any
+        macro (at most three); nothing where the error is at the call itself.
+        """
+        calls = [(name, self.refs[site].location() if site is not None else None)
+                 for name, site in self.failed_calls if name]
+        if not calls or calls[0][1] == where:
+            return ""
+        shown = [f"macro '{name}'" + (f", called at {site}" if site else "")
+                 for name, site in calls[:3]]
+        more = " ..." if len(calls) > 3 else ""
+        return f" (in {', in '.join(shown)}{more})"
 
     def take_origins(self, doc: xml.dom.minidom.Document) -> list[SourceRef | None]:
         """Strip the position tags, returning them per element in document order."""

@@ -116,3 +116,32 @@ def test_a_macro_parameter_not_passed_names_the_macro_and_the_fix_that_works(run
     assert found["message"] == "Undefined parameters [mass] of macro 'wheel'"
     assert found["fix"].startswith('write mass="..." in this call, or give the macro\'s '
                                    'parameter a default (params="... mass:=VALUE")')
+
+
+def test_an_error_inside_a_macro_names_the_macros_and_their_calls(run, tmp_path):
+    """An error in a macro's body was placed in the body alone: which call of which macro
+    (xacro prints 'when instantiating macro: wheel') was not said, nor its parameter fix."""
+    (tmp_path / "parts.xacro").write_text(
+        f'{HEAD}\n<xacro:macro name="tire" params="side">\n'
+        '  <link name="${side}" radius="${radius}"/>\n</xacro:macro>\n'
+        '<xacro:macro name="wheel" params="side">\n  <xacro:tire side="${side}"/>\n'
+        '</xacro:macro>\n</robot>')
+    path = tmp_path / "r.urdf.xacro"
+    path.write_text(f'{HEAD}\n<xacro:include filename="parts.xacro"/>\n{LINK}\n'
+                    '<xacro:call macro="wheel" side="l"/>\n</robot>')
+    result = run("check", "urdf", path, "--format", "json", "--isolated")
+    (found,) = findings(result.stdout)
+    assert (found["code"], found["file"].endswith("parts.xacro"), found["line"]) == \
+        ("SB006", True, 3)
+    assert found["message"].endswith(
+        f"(in macro 'tire', called at {tmp_path / 'parts.xacro'}:6:3, in macro 'wheel', "
+        f"called at {path}:4:1)")
+    assert found["fix"].startswith("give macro 'tire' a parameter 'radius'")
+
+
+def test_an_error_at_the_call_itself_names_no_call(run, tmp_path):
+    path = tmp_path / "r.urdf.xacro"
+    path.write_text(f'{HEAD}\n<xacro:macro name="wheel" params="side"><link name="${{side}}"/>'
+                    '</xacro:macro>\n<xacro:wheel side="l" bogus="1"/>\n</robot>')
+    (found,) = findings(run("check", "urdf", path, "--format", "json", "--isolated").stdout)
+    assert (found["line"], found["message"]) == (3, 'Invalid parameter "bogus"')
