@@ -231,7 +231,7 @@ def _adds_no_reach(joint: Joint, points: list[FloatArray], i: int,
     length = float(np.linalg.norm(segment))
     if length < 1e-12:
         return True
-    if not joint.movable:
+    if not joint.movable or _travel_m(joint) > 0:  # a lift adds its travel
         return False
     axis = transforms[joint.child or ""][:3, :3] @ np.array(joint.axis, dtype=float)
     norm = float(np.linalg.norm(axis))

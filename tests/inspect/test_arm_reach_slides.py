@@ -44,3 +44,19 @@ def test_a_rails_travel_is_part_of_the_arms_reach(run, tmp_path):
     assert math.hypot(x_m, z_m) <= 3.2 and x_m > 2.69
     ik = run("ik", path, "--position", "9", "0", "0.6", "--allow-collisions")
     assert "beyond the arm's reach (3.2 m from joint 'rail')" in ik.output
+
+
+def test_a_lift_under_the_arm_is_part_of_its_reach(run, tmp_path):
+    """A vertical lift, its shoulder straight above it: the reach started at the shoulder
+    (the lift's segment runs along its own axis), leaving out the lift's metre of travel
+    that ik's bound holds."""
+    lift = RAILBOT.replace('"rail" type="prismatic"', '"lift" type="prismatic"').replace(
+        '<axis xyz="1 0 0"/><limit lower="0" upper="2"', '<axis xyz="0 0 1"/><limit lower="0" '
+        'upper="1"')
+    path = tmp_path / "liftbot.urdf"
+    path.write_text(lift)
+    result = run("inspect", path, "--section", "totals", "--format", "json")
+    assert json.loads(result.stdout)["totals"]["arm"] == {
+        "shoulder": "lift", "tip": "tool0", "reach_m": 2.2, "travel_m": 1.0}
+    ik = run("ik", path, "--position", "9", "0", "0.6", "--allow-collisions")
+    assert "beyond the arm's reach (2.2 m from joint 'lift')" in ik.output
