@@ -211,6 +211,10 @@ class RobotDescription:
             if j.type == "fixed"
         )
 
+    def find_link(self, name: str | None) -> el.Link | None:
+        """The link called ``name``, or None where there is none (a joint's misspelt child)."""
+        return next((link for link in self.links if link.name == name), None)
+
     def link(self, name: str) -> el.Link:
         """The link called ``name``.
 

@@ -111,7 +111,9 @@ def swivels_above(robot: RobotDescription, world: dict[str, np.ndarray]) -> dict
                 or not turns_freely(swivel) or swivel.parent not in on_root \
                 or not _vertical(swivel, world):
             continue
-        link = robot.link(joint.child)
+        link = robot.find_link(joint.child)
+        if link is None:
+            continue
         if any(s.geometry.kind in ("cylinder", "sphere")
                for s in (*link.collisions, *link.visuals)) or _mesh_leaf(robot, link.name):
             found[joint.name] = swivel.name
@@ -142,8 +144,9 @@ def loose_wheels(robot: RobotDescription, world: dict[str, np.ndarray]) -> tuple
 
 def _mesh_leaf(robot: RobotDescription, link_name: str) -> bool:
     """Whether ``link_name`` has a mesh and carries nothing that moves (a wheel's link)."""
-    link = robot.link(link_name)
-    if not any(s.geometry.kind == "mesh" for s in (*link.collisions, *link.visuals)):
+    link = robot.find_link(link_name)
+    if link is None or not any(s.geometry.kind == "mesh"
+                               for s in (*link.collisions, *link.visuals)):
         return False
     stack, seen = [link_name], set()
     while stack:  # only fixed joints below it

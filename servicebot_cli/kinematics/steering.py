@@ -69,7 +69,8 @@ def _wheel_bottom(robot: RobotDescription, link: str, pose: np.ndarray) -> float
     ``pose`` is the link's ``transform_link_to_root``.
     """
     bottoms = []
-    for shape in (*robot.link(link).collisions, *robot.link(link).visuals):
+    found = robot.find_link(link)
+    for shape in () if found is None else (*found.collisions, *found.visuals):
         geometry = shape.geometry
         if geometry.kind != "cylinder" or geometry.radius is None:
             continue

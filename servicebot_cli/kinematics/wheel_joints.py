@@ -73,9 +73,10 @@ def as_wheel(robot: RobotDescription, joint: Joint,
     Its radius is that of a cylinder about the joint axis, else of a sphere (a ball turns
     about any axis: neobotix's wheels collide as spheres).
     """
-    if not turns_freely(joint) or joint.child not in world or joint.parent not in world:
+    link = robot.find_link(joint.child)  # a child that is no link: SB103 says so
+    if not turns_freely(joint) or link is None or joint.child not in world \
+            or joint.parent not in world:
         return None
-    link = robot.link(joint.child)
     shapes = (*link.collisions, *link.visuals)
     round_shape = next((s for s in shapes if s.geometry.kind == "cylinder"), None) \
         or next((s for s in shapes if s.geometry.kind == "sphere"), None)
@@ -129,9 +130,9 @@ def wheel_at(joint: Joint, position: np.ndarray, radius_m: float,
 
 def rolls_on_cylinder(robot: RobotDescription, joint: Joint) -> bool:
     """Whether the wheel of ``joint`` takes its radius from a cylinder (else a sphere)."""
-    if joint.child is None:
+    link = robot.find_link(joint.child)
+    if link is None:
         return False
-    link = robot.link(joint.child)
     return any(s.geometry.kind == "cylinder" for s in (*link.collisions, *link.visuals))
 
 
