@@ -131,7 +131,9 @@ ROS_RULES = (
          "joint_trajectory_controller its command_interfaces and state_interfaces, "
          "forward_command_controller its interface_name, the JointGroup controllers the "
          "interface of their type. A URDF without <ros2_control> joints is not judged: its "
-         "hardware is described elsewhere.",
+         "hardware is described elsewhere. Gazebo's systems, the mock and "
+         "topic_based_ros2_control export what the URDF lists; another driver may export "
+         "interfaces of its own (canopen's Cia402System): a warning there.",
          "Export the interface in the joint's <ros2_control> entry, or claim one it exports."),
     Rule("SB608", "controller-parameter", E,
          "A controller parameter the controller refuses: its type, or its value",

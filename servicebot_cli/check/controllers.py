@@ -23,7 +23,7 @@ from servicebot_cli.check.controller_sections import (
     substituted,
 )
 from servicebot_cli.check.findings import Issue, Severity
-from servicebot_cli.check.ros2_control import GAZEBO_PID, exported_as
+from servicebot_cli.check.ros2_control import GAZEBO_PID, exported_as, exports_as_listed
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
 
 if TYPE_CHECKING:
@@ -96,6 +96,7 @@ class _Checker:
         self.joints = {j.name: j for j in robot.joints}
         self._geometry: DriveGeometry | None | str = None
         self._exported: dict[str, dict[str, list[str]]] | None = None
+        self._drivers: dict[str, list[str]] = {}  # plugins that may export more than listed
 
     def where(self, node: yaml.Node) -> tuple[str, int, int]:
         return (self.display, node.start_mark.line + 1, node.start_mark.column + 1)
@@ -184,6 +185,8 @@ class _Checker:
             for block in self.robot.ros2_control:  # a gpio's or sensor's too: component/name
                 for item in (*block.joints, *block.sensors, *block.gpios):
                     kinds = self._exported.setdefault(item.name, {"command": [], "state": []})
+                    if not exports_as_listed(block.plugin):
+                        self._drivers.setdefault(item.name, []).append(str(block.plugin).strip())
                     for kind, interfaces in (("command", item.command_interfaces),
                                              ("state", item.state_interfaces)):
                         names = (exported_as(i.name, block.plugin) for i in interfaces)
@@ -245,6 +248,17 @@ class _Checker:
                             "loop claims no state interface)", severity=Severity.WARNING,
                             where=self.where(found[0].named_at),
                             fix=_interface_fix(kind, interface) + ", for Humble")
+                continue
+            drivers = list(dict.fromkeys(p for n in names for p in self._drivers.get(n, ())))
+            if drivers:  # its driver's code, not the URDF, may say what it exports
+                yield Issue("SB607", f"{section} claims the {kind} interface '{interface}' of "
+                            f"{which}, which {self.robot.display}'s <ros2_control> does not "
+                            f"list ({_exports(exported, names, kind)}): the controller manager "
+                            f"cannot activate it, unless the hardware plugin '{drivers[0]}' "
+                            "exports it unlisted (some drivers export interfaces of their own)",
+                            where=self.where(found[0].named_at), severity=Severity.WARNING,
+                            fix=_interface_fix(kind, interface) + ", if the driver does not "
+                            "export it")
                 continue
             yield Issue("SB607", f"{section} claims the {kind} interface '{interface}' of "
                         f"{which}, which {self.robot.display} does not export "

@@ -40,6 +40,22 @@ _NO_DEVICE_PLUGINS = ("gz_ros2_control/", "ign_ros2_control/", "gazebo_ros2_cont
 _PORT_RE = re.compile(r"(/dev/\S+|COM\d+|(socket|rfc2217|loop|spy|hwgrep)://\S*)")
 
 
+_AS_LISTED_PLUGINS = (*_NO_DEVICE_PLUGINS, "topic_based_ros2_control/", "mujoco_ros2_control/",
+                      "ros2_control_demo_")
+"""Hardware plugins that export what the URDF lists for a joint, and nothing else: Gazebo's
+systems, the mock, topic_based_ros2_control, MuJoCo's, ros2_control_demos' examples. Another
+driver may export interfaces the URDF does not list (canopen's Cia402System exports position,
+velocity and effort of every joint)."""
+
+
+def exports_as_listed(plugin: str | None) -> bool:
+    """Whether the hardware ``plugin`` exports exactly the interfaces the URDF lists.
+
+    True also for a block without a plugin (SB5xx reports that): nothing else exports.
+    """
+    return not plugin or plugin.strip().startswith(_AS_LISTED_PLUGINS)
+
+
 def exported_as(name: str, plugin: str | None) -> str:
     """The name under which the hardware ``plugin`` exports the interface ``name``."""
     if name in GAZEBO_PID and (plugin or "").strip().startswith("gazebo_ros2_control/"):

@@ -141,8 +141,8 @@ def test_gazebos_pid_interfaces_are_exported_under_the_plain_names(run, tmp_path
     path = tmp_path / "robot.urdf"
     result = run("check", "urdf", path, "--format", "json", "--isolated", "--select", "SB505")
     assert findings(result.stdout) == []
-    # another plugin exports the name as written: the trajectory controller lacks 'position'
-    real = gazebo.replace("gazebo_ros2_control/GazeboSystem", "robot_control/HardwareInterface")
+    # the mock exports the name as written: the trajectory controller lacks 'position'
+    real = gazebo.replace("gazebo_ros2_control/GazeboSystem", "mock_components/GenericSystem")
     code, found = _check(run, tmp_path, BUNDLED, real)
     assert code == 1 and "(command interfaces: position_pid)" in str(found[0]["message"])
     # a controller claiming the loop's own name is refused, told what to claim
@@ -185,3 +185,25 @@ def test_an_open_loop_diff_drive_claims_wheel_states_on_humble_only(run, tmp_pat
                for f in found)
     code, found = _check(run, tmp_path, wheels_only, without)  # closed loop: every release
     assert code == 1 and {f["severity"] for f in found} == {"error"}
+
+
+def test_a_driver_that_may_export_unlisted_interfaces_gets_a_warning(run, tmp_path):
+    """ros2_canopen's canopen_tests: Cia402System exports position, velocity and effort of
+    every joint its URDF lists, with no interface written there; SB607 called its
+    maintained test configurations broken. A driver's code, not the URDF, says what it
+    exports: a warning that names the plugin. The mock exports what is listed: an error."""
+    urdf = SIM_URDF.read_text()
+    arm = re.search(r'    <joint name="arm_base_to_link1">.*?</joint>\n', urdf, re.DOTALL)
+    assert arm is not None
+    bare = urdf.replace(arm[0], '    <joint name="arm_base_to_link1"/>\n')
+    plugin = re.search(r"<plugin>([^<]+)</plugin>", bare)
+    assert plugin is not None
+    driver = bare.replace(plugin[0], "<plugin>canopen_ros2_control/Cia402System</plugin>")
+    code, found = _check(run, tmp_path, BUNDLED, driver)
+    claims = [f for f in found if f["code"] == "SB607"]
+    assert code == 0 and claims and {f["severity"] for f in claims} == {"warning"}
+    assert all("unless the hardware plugin 'canopen_ros2_control/Cia402System' exports it"
+               in str(f["message"]) for f in claims)
+    mock = bare.replace(plugin[0], "<plugin>mock_components/GenericSystem</plugin>")
+    code, found = _check(run, tmp_path, BUNDLED, mock)
+    assert code == 1 and {f["severity"] for f in found if f["code"] == "SB607"} == {"error"}
