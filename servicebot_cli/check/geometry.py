@@ -110,17 +110,19 @@ def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str
                         fix="write the mesh as package://PKG/..., file:// or a path relative "
                         "to the file")
             return
-        if exc.resolved.path is None or tally.guessed_wrong(exc.resolved, element):
-            tally.add_missing(exc.resolved, element)
+        if exc.resolved.path is None:
+            tally.add_missing(exc.resolved, element, where, shape.geometry.filename or "")
             return
-        tally.add_found(exc.resolved, element)
         unexpanded = "$(" in (shape.geometry.filename or "")
         twin = case_twin(exc.resolved.path)
-        yield Issue("SB401", f"{where}: {exc}", element,
-                    fix="name the file .urdf.xacro, so that xacro expands it, or write the "
-                        "path as package://PKG/..." if unexpanded else
-                        f"write '{twin}' as the file is named, or rename the file" if twin else
-                        "fix the path: the package or directory holds no such file")
+        missing = Issue("SB401", f"{where}: {exc}", element,
+                        fix="name the file .urdf.xacro, so that xacro expands it, or write the "
+                            "path as package://PKG/..." if unexpanded else
+                            f"write '{twin}' as the file is named, or rename the file" if twin
+                            else "fix the path: the package or directory holds no such file")
+        if not tally.guessed_wrong(exc.resolved, missing):
+            tally.add_found(exc.resolved, element)
+            yield missing
         return
     except MeshError as exc:
         lfs = "git lfs pull" in str(exc)

@@ -184,31 +184,40 @@ class FileTally:
     """By package name, or ``model://NAME`` for a Gazebo model."""
     loader_only: dict[str, tuple[PackageLocation, ET.Element]] = field(default_factory=dict)
     remote: list[tuple[str, ET.Element]] = field(default_factory=list)
+    unfound: dict[str, list[tuple[str, str, ET.Element, Issue | None]]] = field(
+        default_factory=dict)
+    """By package name, each mesh counted missing: where, its URI, its element, its SB401 if
+    made. Where another mesh finds the package (a directory some loaders take for it), the
+    package is no longer nowhere: each of these is a missing file (:meth:`issues`)."""
 
-    def add_missing(self, resolved: Resolved, element: ET.Element) -> None:
+    def add_missing(self, resolved: Resolved, element: ET.Element, where: str = "",
+                    uri: str = "") -> None:
         """Count a mesh hidden by a package that is nowhere."""
         name = _key(resolved)
         count, message, first = self.missing.get(name, (0, resolved.error or "", element))
         self.missing[name] = (count + 1, message, first)
+        self.unfound.setdefault(name, []).append((where, uri, element, None))
 
-    def guessed_wrong(self, resolved: Resolved, element: ET.Element) -> bool:
+    def guessed_wrong(self, resolved: Resolved, missing_file: Issue) -> bool:
         """Whether a missing mesh's package was only guessed, by a directory of its name.
 
         Where ROS would not find the package and the directory some loaders take for it
         does not hold the file, the package is as good as nowhere (SB408, a warning, as for
         a package not found): a folder that happens to share the name (a dataset's
         ``drake/``, a repository's ``ranger_mini/`` beside package ``ranger_mini_v2``) says
-        nothing about the file.
+        nothing about the file. Unless another mesh is found there (:meth:`issues`): then
+        the guess holds, and ``missing_file`` (SB401) stands.
         """
         location = resolved.location
         if location is None or location.ros_finds_it or location.three_slashes or \
                 location.gazebo_model:  # Gazebo's model path is no guess: the file is missing
             return False
-        name = resolved.package or ""
-        if name not in self.missing:
-            self.missing[name] = (0, f"package '{name}' not found as ROS finds packages (by "
-                                     f"package.xml); looked in {location.how}, which holds "
-                                     "no such file", element)
+        name = _key(resolved)
+        count, message, first = self.missing.get(name, (
+            0, f"package '{name}' not found as ROS finds packages (by package.xml); looked in "
+               f"{location.how}, which holds no such file", missing_file.element))
+        self.missing[name] = (count + 1, message, first)
+        self.unfound.setdefault(name, []).append(("", "", first, missing_file))
         return True
 
     def add_found(self, resolved: Resolved, element: ET.Element) -> None:
@@ -219,6 +228,11 @@ class FileTally:
     def issues(self) -> Iterator[Issue]:
         """SB408 per missing package, SB409 per loader-only package, SB410 for remote meshes."""
         for name, (count, message, element) in self.missing.items():
+            found = self.loader_only.get(name)
+            if found is not None:  # another mesh found it: these files are missing there
+                for where, uri, at, issue in self.unfound.get(name, ()):
+                    yield issue or _missing_there(where, uri, at, found[0])
+                continue
             meshes = f"{count} mesh{'es' if count != 1 else ''}"
             model = name.removeprefix("model://")
             yield Issue("SB408", f"{message.split(';', 1)[0]}: {meshes} not checked; looked in"
@@ -247,6 +261,16 @@ class FileTally:
             more = f" and {len(self.remote) - 1} more" if len(self.remote) > 1 else ""
             yield Issue("SB410", f"mesh '{uri}'{more} fetched over the network (Gazebo Fuel): "
                         "not read here", element)
+
+
+def _missing_there(where: str, uri: str, element: ET.Element,
+                   location: PackageLocation) -> Issue:
+    """SB401 for ``uri``, not in the directory ``location`` where the file's other meshes are."""
+    rel = uri.split("://", 1)[-1].partition("/")[2]
+    return Issue("SB401", f"{where}: mesh '{uri}': {location.path / rel} does not exist "
+                 f"(package '{location.name}' is {location.how}, where its other meshes are)",
+                 element,
+                 fix="fix the path: the directory holds no such file")
 
 
 def _key(resolved: Resolved) -> str:
