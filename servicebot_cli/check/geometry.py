@@ -120,7 +120,7 @@ def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str
                             "path as package://PKG/..." if unexpanded else
                             f"write '{twin}' as the file is named, or rename the file" if twin
                             else "fix the path: the package or directory holds no such file")
-        if not tally.guessed_wrong(exc.resolved, missing):
+        if not tally.guessed_wrong(exc.resolved, element, missing):
             tally.add_found(exc.resolved, element)
             yield missing
         return

@@ -198,7 +198,7 @@ class FileTally:
         self.missing[name] = (count + 1, message, first)
         self.unfound.setdefault(name, []).append((where, uri, element, None))
 
-    def guessed_wrong(self, resolved: Resolved, missing_file: Issue) -> bool:
+    def guessed_wrong(self, resolved: Resolved, element: ET.Element, missing_file: Issue) -> bool:
         """Whether a missing mesh's package was only guessed, by a directory of its name.
 
         Where ROS would not find the package and the directory some loaders take for it
@@ -215,9 +215,9 @@ class FileTally:
         name = _key(resolved)
         count, message, first = self.missing.get(name, (
             0, f"package '{name}' not found as ROS finds packages (by package.xml); looked in "
-               f"{location.how}, which holds no such file", missing_file.element))
+               f"{location.how}, which holds no such file", element))
         self.missing[name] = (count + 1, message, first)
-        self.unfound.setdefault(name, []).append(("", "", first, missing_file))
+        self.unfound.setdefault(name, []).append(("", "", element, missing_file))
         return True
 
     def add_found(self, resolved: Resolved, element: ET.Element) -> None:
