@@ -154,6 +154,7 @@ class PackageResolver:
         Raises:
             PackageNotFound: Naming the package and every place searched.
         """
+        context = None if context is None else context.absolute()  # "." has no parents
         location = self._ros_location(name, context) or self._loader_location(name, context)
         if location is None:
             raise PackageNotFound(f"package '{name}' not found{self._close(name, context)}; "
@@ -181,6 +182,7 @@ class PackageResolver:
             # package://pkg//meshes/x.stl: resource_retriever joins the two, and the path is
             # the package's, not the root's
             rel = rel.lstrip("/")
+            base_dir = base_dir.absolute()  # a file named "r.urdf" is in ".", which has no parents
             location = (self._ros_location(name, base_dir)
                         or self._loader_location(name, base_dir)
                         or self._relative_location(name, rel, base_dir))
