@@ -130,7 +130,10 @@ ROS_RULES = (
          "Humble's claims a state, a warning), "
          "joint_trajectory_controller its command_interfaces and state_interfaces, "
          "forward_command_controller its interface_name, the JointGroup controllers the "
-         "interface of their type. A URDF without <ros2_control> joints is not judged: its "
+         "interface of their type, the gripper action controllers their joint's command "
+         "(and max_effort_interface) and its position and velocity, the IMU, force-torque "
+         "and range broadcasters their sensor's states (a sensor_name no <ros2_control> "
+         "sensor has is SB602). A URDF without <ros2_control> joints is not judged: its "
          "hardware is described elsewhere. Gazebo's systems, the mock and "
          "topic_based_ros2_control export what the URDF lists; another driver may export "
          "interfaces of its own (canopen's Cia402System): a warning there.",
@@ -146,7 +149,11 @@ ROS_RULES = (
          "letter or two off a ros2_controllers plugin is no class pluginlib can load. "
          "JointTrajectoryController validates its lists (unique, not empty, known "
          "interfaces; no velocity state without position), ForwardCommandController needs "
-         "an interface_name.",
+         "an interface_name, a gripper's max_effort is not negative. A section whose name "
+         "is a letter or two off a controller controller_manager declares configures "
+         "nothing, and that controller starts with no parameters (an error where it needs "
+         "some); a declared controller with no section in a file that configures others "
+         "is a warning (another file may give its parameters).",
          "Write the value in the declared type: 1.0 for a double, no quotes for a number, a "
          "list for an array."),
     # -- model -----------------------------------------------------------------------------------

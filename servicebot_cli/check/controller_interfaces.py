@@ -37,6 +37,7 @@ class Claim:
         joint: Where the joint is named.
         named_at: Where the interface is named; the joint's node when the type implies it.
         humble_only: Only Humble's controller claims it (later ones do not, as configured).
+        sensor: ``joint`` names a ``<ros2_control>`` sensor (a broadcaster's sensor_name).
     """
 
     kind: str
@@ -45,6 +46,7 @@ class Claim:
     joint: yaml.ScalarNode
     named_at: yaml.Node
     humble_only: bool = False
+    sensor: bool = False
 
 
 def claims(controller_type: str, params: yaml.MappingNode) -> Iterator[Claim]:
@@ -68,6 +70,54 @@ def claims(controller_type: str, params: yaml.MappingNode) -> Iterator[Claim]:
             yield Claim("command", _GROUPS[controller_type], "joints", joint, joint)
     elif controller_type == "pid_controller/PidController":
         yield from _pid(params)
+    elif controller_type in _GRIPPERS:
+        yield from _gripper(params, _GRIPPERS[controller_type])
+    elif controller_type in _SENSOR_STATES:
+        for sensor in _scalars(get(params, "sensor_name")):
+            for state in _SENSOR_STATES[controller_type]:
+                yield Claim("state", state, "sensor_name", sensor, sensor, sensor=True)
+
+
+_GRIPPERS = {
+    "position_controllers/GripperActionController": "position",
+    "effort_controllers/GripperActionController": "effort",
+    "parallel_gripper_action_controller/GripperActionController": "position",
+}
+"""Gripper action controllers, and the interface each commands of its ``joint``."""
+_SENSOR_STATES = {
+    "imu_sensor_broadcaster/IMUSensorBroadcaster": tuple(
+        f"{part}.{axis}" for part, axes in (("orientation", "xyzw"), ("angular_velocity", "xyz"),
+                                            ("linear_acceleration", "xyz")) for axis in axes),
+    "force_torque_sensor_broadcaster/ForceTorqueSensorBroadcaster": tuple(
+        f"{part}.{axis}" for part in ("force", "torque") for axis in "xyz"),
+    "range_sensor_broadcaster/RangeSensorBroadcaster": ("range",),
+}
+"""Broadcasters of one ``<ros2_control>`` sensor (``sensor_name``), and the states they read of
+it (ros2_control's semantic components: IMUSensor, ForceTorqueSensor, RangeSensor)."""
+
+
+def _gripper(params: yaml.MappingNode, command: str) -> Iterator[Claim]:
+    """A gripper action controller's claims: its joint's command, and position and velocity.
+
+    parallel_gripper_action_controller reads the ``state_interfaces`` it is given (position
+    and velocity by default), and commands also the full interface names its
+    ``max_effort_interface`` and ``max_velocity_interface`` give (``joint/effort``).
+    """
+    states = _scalars(get(params, "state_interfaces")) if get(
+        params, "state_interfaces") is not None else None
+    for joint in _scalars(get(params, "joint")):
+        yield Claim("command", command, "joint", joint, joint)
+        if states is None:
+            for state in ("position", "velocity"):
+                yield Claim("state", state, "joint", joint, joint)
+        for state in states or ():
+            yield Claim("state", str(state.value), "joint", joint, state)
+    for key in ("max_effort_interface", "max_velocity_interface"):
+        for full in _scalars(get(params, key)):
+            joint_name, slash, interface = str(full.value).rpartition("/")
+            if slash and joint_name and interface:
+                named = yaml.ScalarNode(full.tag, joint_name, full.start_mark, full.end_mark)
+                yield Claim("command", interface, key, named, full)
 
 
 def _diff_drive(params: yaml.MappingNode) -> Iterator[Claim]:

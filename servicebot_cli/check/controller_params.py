@@ -19,6 +19,7 @@ from collections.abc import Iterator
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.controller_interfaces import RCL_FALSE, RCL_TRUE
+from servicebot_cli.check.controller_presence import presence_issues
 from servicebot_cli.check.controller_sections import Sections, at, substituted, type_nodes
 from servicebot_cli.check.findings import Issue, Severity
 
@@ -58,6 +59,10 @@ stamped-velocity switch, JTC's state_publish_rate (gone from Jazzy), open_loop_c
 override as it is written and never reads it, so a wrong type there breaks only the
 releases that declare it: a warning."""
 _JOINT_GROUP = {"joints": "string_array"}
+_GRIPPER = {"joint": "string", "goal_tolerance": "double", "max_effort": "double",
+            "stall_timeout": "double", "action_monitor_rate": "double",
+            "allow_stalling": "bool", "stall_velocity_threshold": "double"}
+_SENSOR = {"sensor_name": "string", "frame_id": "string"}
 DECLARED: dict[str, dict[str, str]] = {
     "diff_drive_controller/DiffDriveController": _DIFF_DRIVE,
     "joint_trajectory_controller/JointTrajectoryController": {
@@ -74,6 +79,14 @@ DECLARED: dict[str, dict[str, str]] = {
     "position_controllers/JointGroupPositionController": _JOINT_GROUP,
     "velocity_controllers/JointGroupVelocityController": _JOINT_GROUP,
     "effort_controllers/JointGroupEffortController": _JOINT_GROUP,
+    "position_controllers/GripperActionController": _GRIPPER,
+    "effort_controllers/GripperActionController": _GRIPPER,
+    "parallel_gripper_action_controller/GripperActionController": {
+        **_GRIPPER, "state_interfaces": "string_array", "max_effort_interface": "string",
+        "max_velocity": "double", "max_velocity_interface": "string"},
+    "imu_sensor_broadcaster/IMUSensorBroadcaster": _SENSOR,
+    "range_sensor_broadcaster/RangeSensorBroadcaster": _SENSOR,
+    "force_torque_sensor_broadcaster/ForceTorqueSensorBroadcaster": _SENSOR,
     "joint_state_broadcaster/JointStateBroadcaster": {
         "joints": "string_array", "interfaces": "string_array",
         "extra_joints": "string_array", "use_local_topics": "bool"},
@@ -92,6 +105,7 @@ def parameter_issues(found: Sections, display: str) -> Iterator[Issue]:
         typo = misspelled_type(node, name, display)
         if typo is not None:
             yield typo
+    yield from presence_issues(found, display)
     for name, params in found.items():
         for section in params:
             yield from mixed_lists(section, name, display)
@@ -261,6 +275,9 @@ def misspelled_type(node: yaml.ScalarNode, section: str, display: str) -> Issue 
                  fix=f"type: {close[0]}")
 
 
+_AT_LEAST_0 = {"parallel_gripper_action_controller/GripperActionController": (
+    "max_effort", "max_velocity", "goal_tolerance", "stall_timeout")}
+"""Parameters a controller validates as at least 0 (gt_eq), by its type."""
 _JTC = "joint_trajectory_controller/JointTrajectoryController"
 _JTC_LISTS = {  # each list: unique, not empty, and of these (its parameters' validation)
     "joints": None,
@@ -289,6 +306,13 @@ def validated_values(controller_type: str | None, params: yaml.MappingNode, sect
                         "refuses to configure without one",
                         where=at(display, (node or params).start_mark),
                         fix="interface_name: position")
+    for key in _AT_LEAST_0.get(controller_type or "", ()):
+        node = _last(params, key)
+        if isinstance(node, yaml.ScalarNode) and rcl_type(node) in ("double", "integer") \
+                and not _filled_in(node) and float(node.value) < 0:
+            yield Issue("SB608", f"{section}.{key} is {node.value}: {controller_type} refuses a "
+                        "negative value at configure (gt_eq 0)", where=at(display, node.start_mark),
+                        fix=f"{key}: {str(node.value).lstrip('-')}")
     if controller_type != _JTC:
         return
     for key, allowed in _JTC_LISTS.items():

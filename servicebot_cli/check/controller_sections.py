@@ -314,13 +314,20 @@ def controller_types(sections: Sections) -> dict[str, str]:
 def type_nodes(sections: Sections) -> dict[str, yaml.ScalarNode]:
     """Where each controller's ``type`` is written (the last one rcl reads), by name."""
     types: dict[str, yaml.ScalarNode] = {}
-    managers = sections.get("controller_manager", [])
+    for manager in sections.get("controller_manager", []):
+        # "NAME.type:" is the same parameter as "NAME: {type:}" (Clearpath's control.yaml);
+        # a controller declared here needs no section of its own to have its type
+        for key, value in manager.value:
+            if not isinstance(key, yaml.ScalarNode):
+                continue
+            name, dotted = (str(key.value)[:-len(".type")], True) \
+                if str(key.value).endswith(".type") else (str(key.value), False)
+            node = value if dotted else get(value, "type")
+            if isinstance(node, yaml.ScalarNode) and node.value and name:
+                types.pop(name, None)  # the last one written is the one rcl reads
+                types[name] = node
     for name, params in sections.items():
-        # "NAME.type:" is the same parameter as "NAME: {type:}" (Clearpath's control.yaml)
-        nodes = [node for manager in managers
-                 for node in (get(get(manager, name), "type"), get(manager, f"{name}.type"))]
-        nodes += [get(section, "type") for section in params]  # "/**/NAME": every namespace
-        for node in nodes:
+        for node in [get(section, "type") for section in params]:  # "/**/NAME": every namespace
             if isinstance(node, yaml.ScalarNode) and node.value:
                 types[name] = node
     return types

@@ -25,6 +25,7 @@ from servicebot_cli.check.controller_sections import (
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.ros2_control import GAZEBO_PID, exported_as, exports_as_listed
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
+from servicebot_cli.common.listing import some_of
 
 if TYPE_CHECKING:
     from servicebot_cli.check.controller_interfaces import Claim
@@ -209,8 +210,14 @@ class _Checker:
         absent: dict[str, Claim] = {}
         lacking: dict[tuple[str, str, int], list[Claim]] = {}
         unknown_dofs: dict[str, Claim] = {}
+        sensors: dict[str, list[Claim]] = {}  # each sensor's claims it does not export
         for claim in claims(controller_type, params):
             name = str(claim.joint.value)
+            if claim.sensor:
+                if not self.not_a_joint(name) and claim.interface not in exported.get(
+                        name, {}).get(claim.kind, ()):
+                    sensors.setdefault(name, []).append(claim)
+                continue
             joint = self.joints.get(name)
             if joint is None and claim.key.endswith("dof_names") and name not in exported \
                     and not self.not_a_joint(name):
@@ -229,6 +236,7 @@ class _Checker:
                         f"<ros2_control> component of {self.robot.display}: its interfaces do "
                         f"not exist; {hint[-1]}", where=self.where(claim.joint),
                         fix="name a joint or a component of the URDF's <ros2_control>")
+        yield from self.sensor_claims(section, sensors, exported)
         for name, claim in absent.items():
             yield Issue("SB607", f"{section}.{claim.key}: joint '{name}' is in no "
                         f"<ros2_control> of {self.robot.display}: the hardware exports none of "
@@ -265,6 +273,36 @@ class _Checker:
                         f"({_exports(exported, names, kind)}): the controller manager cannot "
                         "activate it",
                         where=self.where(found[0].named_at), fix=_interface_fix(kind, interface))
+
+    def sensor_claims(self, section: str, sensors: dict[str, list[Claim]],
+                      exported: dict[str, dict[str, list[str]]]) -> Iterator[Issue]:
+        """SB602 and SB607 for the sensors a broadcaster reads.
+
+        SB602 for a sensor_name no ``<ros2_control>`` sensor has; SB607 for the states of a
+        sensor it reads and the sensor does not export (one issue a sensor).
+        """
+        for name, found in sensors.items():
+            claim = found[0]
+            wanted = some_of([c.interface for c in found], 4)
+            if name not in exported:
+                components = [n for n in exported if n not in self.joints]
+                hint = str(NameNotFound.for_name(name, components)).split("; ", 1)
+                yield Issue("SB602", f"{section}.sensor_name: '{name}' is no <ros2_control> "
+                            f"sensor of {self.robot.display}: the states it reads ({wanted}) "
+                            f"do not exist, and the controller manager cannot activate "
+                            f"{section}; {hint[-1]}", where=self.where(claim.joint),
+                            fix="name a <sensor> of the URDF's <ros2_control>")
+                continue
+            driver = self._drivers.get(name)
+            yield Issue("SB607", f"{section} reads the state interfaces {wanted} of sensor "
+                        f"'{name}', which {self.robot.display} does not export "
+                        f"({_exports(exported, [name], 'state')}): the controller manager "
+                        "cannot activate it" + (f", unless the hardware plugin '{driver[0]}' "
+                                                "exports them unlisted" if driver else ""),
+                        where=self.where(claim.joint),
+                        severity=Severity.WARNING if driver else None,
+                        fix=f"add <state_interface name=\"{found[0].interface}\"/> and the "
+                        "others to the sensor's <ros2_control> entry")
 
     def not_a_joint(self, name: str) -> bool:
         """A name that is not a URDF joint's and is right as written.

@@ -1,0 +1,80 @@
+"""SB608: a declared controller whose parameters are nowhere in the file, beside a misnamed section.
+
+The controller manager loads each controller it declares (``NAME: type: ...``) with the
+parameters of the section called NAME. A section whose name is a letter or two off
+(``diff_drive_controler:``) configures nothing, and the controller starts with its defaults:
+a ros2_controllers controller whose validation wants a value (diff_drive_controller's wheel
+names, JointTrajectoryController's joints) refuses to configure. Pure: YAML nodes in, issues
+out.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterator
+
+from servicebot_cli.check.controller_sections import Sections, at, type_nodes
+from servicebot_cli.check.findings import Issue, Severity
+
+_FORWARD = ("joints", "interface_name")
+_GROUP = ("joints",)
+_GRIPPER = ("joint",)
+NEEDED: dict[str, tuple[str, ...]] = {
+    "diff_drive_controller/DiffDriveController": ("left_wheel_names", "right_wheel_names"),
+    "joint_trajectory_controller/JointTrajectoryController": (
+        "joints", "command_interfaces", "state_interfaces"),
+    "forward_command_controller/ForwardCommandController": _FORWARD,
+    "position_controllers/JointGroupPositionController": _GROUP,
+    "velocity_controllers/JointGroupVelocityController": _GROUP,
+    "effort_controllers/JointGroupEffortController": _GROUP,
+    "position_controllers/GripperActionController": _GRIPPER,
+    "effort_controllers/GripperActionController": _GRIPPER,
+    "parallel_gripper_action_controller/GripperActionController": _GRIPPER,
+    "imu_sensor_broadcaster/IMUSensorBroadcaster": ("sensor_name", "frame_id"),
+    "force_torque_sensor_broadcaster/ForceTorqueSensorBroadcaster": ("frame_id",),
+}
+"""Parameters each controller refuses to configure without (not_empty, size_gt 0 in its
+``*_parameters.yaml``; the wheel names checked at configure in Humble's diff drive)."""
+
+
+def presence_issues(found: Sections, display: str) -> Iterator[Issue]:
+    """SB608 for each misnamed section, and each declared controller left without parameters.
+
+    A declared controller with no section is judged only where the file configures other
+    controllers (a file of ``controller_manager`` alone may leave them to other files).
+    """
+    types = type_nodes(found)
+    without = [name for name in types if name not in found]
+    stray = [name for name in found if name != "controller_manager" and name not in types]
+    renamed: dict[str, str] = {}
+    for name in stray:
+        close = difflib.get_close_matches(name, [n for n in without if n not in renamed.values()],
+                                          n=1, cutoff=0.8)
+        if close:
+            renamed[name] = close[0]
+    for name, meant in renamed.items():
+        kind = str(types[meant].value)
+        needs = NEEDED.get(kind)
+        result = (f"and refuses to configure without {_listed(needs)}" if needs
+                  else "with its defaults")
+        yield Issue("SB608", f"section '{name}' configures no controller: controller_manager "
+                    f"declares '{meant}' ({kind}), which has no section, so it starts with no "
+                    f"parameters {result}", where=at(display, found[name][0].start_mark),
+                    severity=Severity.ERROR if needs else Severity.WARNING,
+                    fix=f"rename the section '{meant}:'")
+    if not any(name in types for name in found):
+        return
+    for name in without:
+        kind = str(types[name].value)
+        needs = NEEDED.get(kind)
+        if needs is None or name in renamed.values():
+            continue
+        yield Issue("SB608", f"controller '{name}' ({kind}) has no parameters in this file: it "
+                    f"refuses to configure without {_listed(needs)}, unless another parameter "
+                    "file gives them", where=at(display, types[name].start_mark),
+                    severity=Severity.WARNING,
+                    fix=f"add a section '{name}: ros__parameters:' with {_listed(needs)}")
+
+
+def _listed(names: tuple[str, ...]) -> str:
+    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} and {names[-1]}"
