@@ -248,7 +248,9 @@ class FileTally:
                            "loaders; ROS resolves package:// by package name and would not find it")
             named = ("write package://NAME/... with a package's name" if location.name in (
                 ".", "..") else f"give the package a package.xml with <name>{location.name}</name>")
-            fix = (f"write package://{location.name}/... with two slashes" + (
+            fix = ("write the path relative to the file, or package://PKG/... with the name of "
+                   "the package that holds it" if not location.name else
+                   f"write package://{location.name}/... with two slashes" + (
                        "" if location.named_ros_finds else f", and {named}")
                    if location.three_slashes else
                    f"write package://{location.name}/... if {location.name} is a ROS package "

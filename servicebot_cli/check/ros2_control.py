@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.values import is_number
-from servicebot_cli.common.errors import NameNotFound
+from servicebot_cli.common.errors import JointNotFound
 from servicebot_cli.description.elements import parse_float
 
 if TYPE_CHECKING:
@@ -211,9 +211,10 @@ def _ascii_digits(value: str) -> bool:
 def _joint(item: ControlJoint, joints: dict[str, Joint], block: Ros2Control) -> Iterator[Issue]:
     joint = joints.get(item.name)
     if joint is None:
-        hint = str(NameNotFound.for_name(item.name, list(joints))).split("; ", 1)[-1]
+        hint = str(JointNotFound.for_name(item.name, list(joints))).split("; ", 1)[-1]
         yield Issue("SB504", f"ros2_control '{block.name}' names joint '{item.name}', which does "
-                    f"not exist; {hint}", item.element)
+                    f"not exist; {hint}", item.element, fix=None if joints else
+                    "add the joint to the robot, or check the file that includes this one")
         return
     if joint.type == "fixed" and item.command_interfaces:
         yield Issue("SB506", f"fixed joint '{item.name}' has command interface(s) "

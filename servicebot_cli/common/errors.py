@@ -100,7 +100,8 @@ class NameNotFound(ServicebotError):
         """Make the error for ``name`` with up to three close matches from ``candidates``."""
         names = tuple(dict.fromkeys(candidates))  # a name defined twice is suggested once
         owner = f" in {robot}" if robot else ""
-        hint = _hint(name, names) if names else f"the robot has no {cls.kind}s"
+        hint = _hint(name, names) if names else (
+            "there is none to suggest" if cls.kind == "name" else f"the robot has no {cls.kind}s")
         return cls(f"no {cls.kind} '{name}'{owner}; {hint}")
 
 

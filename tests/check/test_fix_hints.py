@@ -117,3 +117,16 @@ def test_a_vector_with_too_few_numbers_says_how_many(run, tmp_path):
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB013")
     (found,) = findings(result.stdout)
     assert found["fix"] == "write 3 numbers separated by spaces"
+
+
+def test_a_ros2_control_of_no_robot_names_no_suggestion(run, tmp_path):
+    """A <robot> holding only <ros2_control> (checked apart from the file including it):
+    'the robot has no names', and a fix to use a suggestion there was none of."""
+    robot = tmp_path / "control.urdf"
+    robot.write_text('<robot name="r"><ros2_control name="s" type="system"><hardware><plugin>'
+                     'mock_components/GenericSystem</plugin></hardware><joint name="w1">'
+                     '<command_interface name="velocity"/></joint></ros2_control></robot>')
+    result = run("check", robot, "--format", "json", "--isolated")
+    (found,) = [f for f in findings(result.stdout) if f["code"] == "SB504"]
+    assert found["message"].endswith("which does not exist; the robot has no joints")
+    assert found["fix"] == "add the joint to the robot, or check the file that includes this one"

@@ -57,3 +57,17 @@ def test_three_slashes_before_a_directory_that_is_no_package_ask_for_both_fixes(
     (found,) = findings(result.stdout)
     assert found["fix"] == ("write package://myrobot/... with two slashes, and give the "
                             "package a package.xml with <name>myrobot</name>")
+
+
+def test_three_slashes_before_an_absolute_path_ask_for_a_path_or_a_package(run, tmp_path):
+    """An absolute path behind package:/// (onshape-to-robot's output): the fix asked for a
+    package.xml with an empty <name></name>."""
+    meshes = tmp_path / "meshes"
+    meshes.mkdir()
+    trimesh.creation.box((0.1, 0.1, 0.1)).export(meshes / "m.stl")
+    robot = tmp_path / "robot.urdf"
+    robot.write_text(URDF.format(f"package://{meshes / 'm.stl'}"))
+    (found,) = findings(run("check", robot, "--format", "json", "--isolated").stdout)
+    assert found["fix"] == ("write the path relative to the file, or package://PKG/... with "
+                            "the name of the package that holds it")
+
