@@ -76,6 +76,7 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
 
 
 _UNDEFINED_NAME = re.compile(r"name '([^']+)' is not defined")
+_BARE_DEFINITION = re.compile(r'\(<(\w+) name="([^"]*)">(?: at \S+)? has no xacro: prefix')
 _IN_MACRO = re.compile(r"\(in macro '([^']+)'")
 _UNDEFINED_PARAMETERS = re.compile(r"Undefined parameters \[([^\]]*)\]")
 
@@ -86,6 +87,9 @@ def _xacro_fix(text: str, undefined: re.Match[str] | None) -> str | None:
     A property is no argument: ``NAME:=VALUE`` does not define it (roverrobotics_ros2's
     payload parts read their includer's ``payload_z_offset``).
     """
+    bare = _BARE_DEFINITION.search(text)
+    if bare is not None:
+        return f"write <xacro:{bare[1]} name=\"{bare[2]}\" .../>"
     if undefined is not None:
         return f"pass {undefined[1]}:=VALUE, or give the argument a default"
     parameters = _UNDEFINED_PARAMETERS.search(text)

@@ -36,7 +36,11 @@ from servicebot_cli.description.load_warnings import LoadWarning, said_by_xacro
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
 from servicebot_cli.description.sources import SourceRef
-from servicebot_cli.description.xacro_calls import bare_macro_calls
+from servicebot_cli.description.xacro_calls import (
+    bare_definition,
+    bare_directives,
+    bare_macro_calls,
+)
 from servicebot_cli.description.xacro_limits import (
     GUARDS,
     ExpansionTooLarge,
@@ -121,7 +125,8 @@ def expand(
         except Exception as exc:  # xacro raises bare Python errors from expressions, too
             raise tracer.error(exc, xacro.filestack) from None
     _refuse_unwritable(doc, display, tracer)
-    bare = bare_macro_calls(doc, tracer.macros, tracer.ref_of)
+    bare = bare_macro_calls(doc, tracer.macros, tracer.ref_of) + bare_directives(
+        doc, tracer.ref_of)
     origins = tracer.take_origins(doc)
     _add_banner(doc, Path(display).name, given)
     return Expansion(
@@ -231,6 +236,7 @@ class _Tracer:
         self.current: list[int] = []
         self.failed_at: int | None = None
         self.failed_calls: list[tuple[str, int | None]] = []  # macro, call: the innermost first
+        self.docs: list[xml.dom.minidom.Document] = []  # each file read, as xacro parsed it
         self.files: list[str] = []
         self.known_args: set[str] = set()
         self.macros: dict[str, SourceRef] = {}  # where each macro is defined, by name
@@ -360,7 +366,9 @@ class _Tracer:
         self.known_args.update(_ARG_USE_RE.findall(text))
         builder = _PositionBuilder(self, display)
         try:
-            return builder.parseString(text.encode("utf-8"))
+            parsed: xml.dom.minidom.Document = builder.parseString(text.encode("utf-8"))
+            self.docs.append(parsed)
+            return parsed
         except expat.ExpatError as exc:  # namespace errors: safe_xml does not track prefixes
             raise XmlError(
                 display, f"XML namespace error: {expat.ErrorString(exc.code)} (is xmlns:xacro "
@@ -469,12 +477,31 @@ class _Tracer:
                 body, xml.dom.minidom.Element) and body.getAttribute("name"):
             message = f"{message} of macro '{body.getAttribute('name')}'"
         else:
-            message += self._in_macros(where)
+            message += self._in_macros(where) + self._bare_definition(message)
         if not own and not str(inner).strip():  # "when evaluating expression '...'" alone
             reason = "out of memory" if isinstance(inner, MemoryError) else \
                 type(inner).__name__
             message = f"{message}: {reason}"
         return XacroError(f"{where}: xacro: {message}")
+
+    def _bare_definition(self, message: str) -> str:
+        """What a bare directive written to define an undefined name says about it.
+
+        `` (<property name="x"> at f.xacro:3:3 has no xacro: prefix ...)``; else nothing.
+        """
+        undefined = _UNDEFINED_RE.search(message)
+        if undefined is None:
+            return ""
+        name = undefined[1] or undefined[2]
+        for doc in self.docs:
+            node = bare_definition(doc, name)
+            if node is not None:
+                ref = self.ref_of(node)
+                at = f" at {ref.location()}" if ref is not None else ""
+                return (f" (<{node.tagName} name=\"{node.getAttribute('name')}\">{at} has no "
+                        f"xacro: prefix, which xacro requires since 1.14 and 2.0.8: it defines "
+                        "nothing)")
+        return ""
 
     def _in_macros(self, where: str) -> str:
         """`` (in macro 'wheel', called at r.urdf.xacro:4:3)``: the calls an error came through.
@@ -509,6 +536,10 @@ class _Tracer:
                 ref = SourceRef(ref.file, ref.line, ref.column, calls=calls)
             origins.append(ref)
         return origins
+
+
+_UNDEFINED_RE = re.compile(r"name '([^']+)' is not defined|Undefined substitution argument "
+                           r"(\S+)")
 
 
 def _add_call(element: xml.dom.minidom.Element, call_site: int) -> None:
