@@ -12,12 +12,14 @@ import numpy as np
 from servicebot_cli.check import solids, values
 from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound
 from servicebot_cli.check.findings import Issue, Severity
+from servicebot_cli.check.geometry import LARGEST_M, SMALLEST_M
 from servicebot_cli.check.simulators import simulated_by
 from servicebot_cli.kinematics.transforms import rpy_matrix
 
 if TYPE_CHECKING:
     import xml.etree.ElementTree as ET
 
+    from servicebot_cli.check.meshes import MeshInfo
     from servicebot_cli.description.elements import Link, Shape
     from servicebot_cli.description.robot import RobotDescription
 
@@ -154,13 +156,24 @@ def _expected(robot: RobotDescription, link: Link, env: CheckEnv,
             info = env.mesh(robot, shape, with_mass=True)
         except (MeshNotFound, MeshError):
             return None
-        if info.mass is None or not info.mass.volume > 0:
+        if info.mass is None or not info.mass.volume > 0 or _unit_in_doubt(info, geometry.scale):
             return None
         parts.append(solids.placed(info.mass.volume, np.array(info.mass.centroid),
                                    info.mass.second_moment, geometry.scale, shape.origin,
                                    f"closed mesh '{geometry.filename}'"))
     kind = "visual" if shapes is link.visuals and shapes else "collision"
     return solids.combined(parts, kind) if parts else None
+
+
+def _unit_in_doubt(info: MeshInfo, scale: tuple[float, float, float]) -> bool:
+    """Whether SB404 doubts the mesh's unit (100 m across: millimetres?).
+
+    Its mass properties, in the wrong unit, would make SB301's fix a million times off (a
+    100 mm cube exported from Fusion in millimetres, unscaled): SB404 says what to fix.
+    """
+    extent_m = max(abs(hi - lo) * abs(s) for lo, hi, s in zip(info.lower, info.upper, scale,
+                                                                 strict=True))
+    return extent_m > LARGEST_M or (0 < extent_m < SMALLEST_M and any(s != 1.0 for s in scale))
 
 
 def _against_geometry(robot: RobotDescription, link: Link, env: CheckEnv) -> Iterator[Issue]:

@@ -154,3 +154,13 @@ def test_a_mass_in_grams_is_named_as_the_mistake_not_the_inertia(run, tmp_path):
     (found,) = findings(run("check", path, "--format", "json", "--isolated", "--select",
                             "SB301").stdout)
     assert "does not match a 1823.62 kg solid cylinder" in found["message"]
+
+
+def test_a_mesh_in_millimetres_leaves_the_inertia_to_sb404(run, tmp_path):
+    """A 100 mm cube exported in millimetres, unscaled (Fusion, SolidWorks): SB301's fix
+    made the inertia a million times the right one, beside SB404's scale fix."""
+    mesh = f'<collision><geometry><mesh filename="{FIXTURES / "meshes" / "cube_mm.stl"}"/>' \
+           "</geometry></collision>"
+    right = np.eye(3) * (1.0 * 0.02 / 12)  # 1 kg cube, 0.1 m
+    result = run("check", _robot(tmp_path, (0, 0, 0), right, mesh), "--format", "json")
+    assert [f["code"] for f in findings(result.stdout)] == ["SB404"]
