@@ -237,6 +237,14 @@ URDF_RULES: tuple[Rule, ...] = (
     Rule("SB214", "limits-ignored", N, "Position limits on a continuous joint are ignored",
          "Continuous joints have no position limits; lower and upper are read by nothing.",
          "Remove them, or make the joint revolute."),
+    Rule("SB217", "mimic-outside-limits", W,
+         "A mimic joint the joint it follows takes outside its own limits",
+         "multiplier x followed + offset, over the followed joint's range, leaves the mimic "
+         "joint's own limits by more than a twentieth of its range: the description "
+         "contradicts itself. A simulator that enforces the limit holds the joint there, "
+         "and the linkage does not follow; servicebot's fk refuses those values. Often a "
+         "multiplier of the wrong sign.",
+         "Fix the multiplier's sign or the offset, or widen the mimic joint's limits."),
     # -- inertia ---------------------------------------------------------------------------------
     Rule("SB215", "wheel-without-velocity-limit", W, "A drive wheel without a velocity limit",
          "A continuous joint that turns a wheel of a differential drive (its link carries a "

@@ -1,4 +1,4 @@
-"""Joint rules: types, limits, dynamics, axes, mimic chains, safety controllers (SB201-SB216)."""
+"""Joint rules: types, limits, dynamics, axes, mimic chains, safety controllers (SB201-SB217)."""
 
 from __future__ import annotations
 
@@ -271,6 +271,59 @@ def _mimics(robot: RobotDescription) -> Iterator[Issue]:
         else:
             follows[joint.name] = target
     yield from _mimic_cycles(robot, follows)
+    yield from _mimic_ranges(robot, follows)
+
+
+_BOUNDED = ("revolute", "prismatic")
+
+
+def _bounds(joint: Joint) -> tuple[float, float] | None:
+    """A revolute or prismatic joint's finite [lower, upper], lower below upper; else None."""
+    limits = joint.limits
+    if joint.type not in _BOUNDED or limits is None or limits.lower is None \
+            or limits.upper is None:
+        return None
+    lower, upper = limits.lower, limits.upper
+    return (lower, upper) if math.isfinite(lower) and math.isfinite(upper) and lower < upper \
+        else None
+
+
+def _beyond(ends: list[float], own: tuple[float, float]) -> bool:
+    """Whether ``ends`` leave ``own`` by over a twentieth of either range (the lesser)."""
+    out = max(own[0] - ends[0], 0.0) + max(ends[1] - own[1], 0.0)
+    return out > 0.05 * min(own[1] - own[0], max(ends[1] - ends[0], 1e-9))
+
+
+def _mimic_ranges(robot: RobotDescription, follows: dict[str, str]) -> Iterator[Issue]:
+    """SB217: a mimic joint the joint it follows takes outside its own limits.
+
+    ``multiplier * followed + offset`` over the followed joint's range must stay in the
+    joint's own: a simulator that enforces the limit holds the joint at it (the linkage does
+    not follow), and servicebot's fk refuses such a value. Beyond a twentieth of that range,
+    or of the joint's own, whichever is less (moveo's gripper: a multiplier of the wrong
+    sign). MoveIt does not check a mimic joint's bounds: nothing says so there.
+    """
+    by_name = {j.name: j for j in robot.joints}
+    for name, target in follows.items():
+        joint, followed = by_name[name], by_name[target]
+        own, range_ = _bounds(joint), _bounds(followed)
+        mimic = joint.mimic
+        if own is None or range_ is None or mimic is None or not (
+                math.isfinite(mimic.multiplier) and math.isfinite(mimic.offset)):
+            continue
+        ends = sorted(mimic.multiplier * end + mimic.offset for end in range_)
+        if not _beyond(ends, own):
+            continue
+        flipped = sorted(-mimic.multiplier * end + mimic.offset for end in range_)
+        fix = (f'multiplier="{-mimic.multiplier:g}", if the two turn the other way round'
+               if not _beyond(flipped, own)
+               else f'make its limits cover [{ends[0]:g}, {ends[1]:g}], or fix the <mimic>')
+        yield Issue("SB217", f"joint '{name}' = {mimic.multiplier:g} x '{target}' + "
+                    f"{mimic.offset:g} (its <mimic>): as '{target}' moves over [{range_[0]:g}, "
+                    f"{range_[1]:g}], it moves over [{ends[0]:g}, {ends[1]:g}], outside its "
+                    f"limits [{own[0]:g}, {own[1]:g}]: the description contradicts itself (a "
+                    "simulator enforcing the limit holds the joint there; servicebot fk refuses "
+                    "such values)", joint.element, fix=fix)
 
 
 def _mimic_cycles(robot: RobotDescription, follows: dict[str, str]) -> Iterator[Issue]:
