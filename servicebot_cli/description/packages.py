@@ -183,6 +183,12 @@ class PackageResolver:
             # the package's, not the root's
             rel = rel.lstrip("/")
             base_dir = base_dir.absolute()  # a file named "r.urdf" is in ".", which has no parents
+            if not rel:  # package://body.stl (onshape-to-robot's MuJoCo output)
+                beside = " (a file of that name is beside the file)" if os.path.isfile(
+                    base_dir / name) else ""
+                raise UnknownScheme(f"no file after the package name '{name}' "
+                                    f"(package://PACKAGE/PATH){beside}: ROS looks for a "
+                                    f"package called '{name}'")
             location = (self._ros_location(name, base_dir)
                         or self._loader_location(name, base_dir)
                         or self._relative_location(name, rel, base_dir))

@@ -71,3 +71,16 @@ def test_three_slashes_before_an_absolute_path_ask_for_a_path_or_a_package(run, 
     assert found["fix"] == ("write the path relative to the file, or package://PKG/... with "
                             "the name of the package that holds it")
 
+
+
+def test_a_package_uri_with_no_path_is_a_missing_mesh_not_a_missing_package(run, tmp_path):
+    """onshape-to-robot's MuJoCo output writes package://body.stl: ROS looks for a package
+    called 'body.stl'. It was SB408 with the fix --package body.stl=DIR."""
+    trimesh.creation.box((0.1, 0.1, 0.1)).export(tmp_path / "body.stl")
+    robot = tmp_path / "robot.urdf"
+    robot.write_text(URDF.format("package://body.stl"))
+    found = findings(run("check", robot, "--format", "json", "--isolated").stdout)[0]
+    assert found["code"] == "SB401" and found["severity"] == "error"
+    assert found["message"].endswith(
+        "no file after the package name 'body.stl' (package://PACKAGE/PATH) (a file of that "
+        "name is beside the file): ROS looks for a package called 'body.stl'")
