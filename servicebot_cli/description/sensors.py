@@ -253,7 +253,10 @@ def plugin_topic(plugin: Plugin, default: str, ros1: str = "topicName", within: 
             topic = f"{plugin.name}/{topic[2:]}"
         namespace = (param(plugin.params, "ros/namespace")
                      or param(plugin.params, "robotNamespace") or "").strip("/")
-        return f"{namespace}/{topic}" if namespace and not topic.startswith("/") else topic
+        full = f"{namespace}/{topic}" if namespace and not topic.startswith("/") else topic
+        # roscpp cleans a name: '//' is one '/', a trailing '/' none (HSR's
+        # '//hsrb/head_rgbd_sensor/...')
+        return re.sub("/{2,}", "/", full).rstrip("/") or full
     written = default if topic is None else topic
     full = node.expand(written)
     return full if written.startswith("/") else full[1:]

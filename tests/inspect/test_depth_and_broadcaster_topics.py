@@ -77,3 +77,13 @@ def test_sensor_broadcasters_and_a_gripper_controller_list_their_topics(run, tmp
     served = [t for t in json.loads(result.stdout)["topics"]["topics"] if t["kind"] == "action"]
     assert [(t["name"], t["message"]) for t in served] == [
         ("/gripper/gripper_cmd", "control_msgs/action/GripperCommand")]
+
+
+def test_a_ros1_topic_is_cleaned_as_roscpp_cleans_it(run, tmp_path):
+    """HSR's openni plugin names '//hsrb/head_rgbd_sensor/rgb/image_rect_color': roscpp's
+    names::clean makes '//' one '/'; inspect listed it as written."""
+    path = tmp_path / "depth.urdf"
+    path.write_text(CAMERA.format(kind="depth", plugin="libgazebo_ros_openni_kinect.so",
+                                  params=KINECT.replace("<imageTopicName>rgb/image_raw",
+                                                        "<imageTopicName>//hsrb/rgb/")))
+    assert "/hsrb/rgb" in _published(run, path)
