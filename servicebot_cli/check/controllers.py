@@ -33,6 +33,7 @@ if TYPE_CHECKING:
     from servicebot_cli.kinematics.drive_geometry import DriveGeometry
     from servicebot_cli.kinematics.wheel_joints import Wheel
 
+_PID = "pid_controller/PidController"
 TOLERANCE = 0.01
 """Relative difference allowed between the YAML and the URDF's wheel numbers."""
 CALIBRATED = 0.10
@@ -211,8 +212,14 @@ class _Checker:
         lacking: dict[tuple[str, str, int], list[Claim]] = {}
         unknown_dofs: dict[str, Claim] = {}
         sensors: dict[str, list[Claim]] = {}  # each sensor's claims it does not export
+        chained: dict[tuple[str, str, str], tuple[Claim, list[str]]] = {}
         for claim in claims(controller_type, params):
             name = str(claim.joint.value)
+            through = self.chained_exports(name)
+            if through is not None:  # a pid_controller's reference: what it exports
+                if claim.interface not in through and not claim.humble_only:
+                    chained.setdefault((name, claim.kind, claim.interface), (claim, through))
+                continue
             if claim.sensor:
                 if not self.not_a_joint(name) and claim.interface not in exported.get(
                         name, {}).get(claim.kind, ()):
@@ -237,6 +244,18 @@ class _Checker:
                         f"not exist; {hint[-1]}", where=self.where(claim.joint),
                         fix="name a joint or a component of the URDF's <ros2_control>")
         yield from self.sensor_claims(section, sensors, exported)
+        for (name, kind, interface), (claim, through) in chained.items():
+            head = name.partition("/")[0]
+            feedback = (kind == "state" and interface == "position" and "velocity" in through
+                        and claim.key.endswith("_wheel_names"))
+            yield Issue("SB607", f"{section} claims the {kind} interface '{interface}' of "
+                        f"'{name}', which pid_controller '{head}' does not export (it exports "
+                        f"{', '.join(through) or 'none'}, its reference_and_state_interfaces): "
+                        "the controller manager cannot activate it",
+                        where=self.where(claim.named_at),
+                        fix="position_feedback: false (odometry from the wheels' velocities)"
+                        if feedback else f"add {interface} to {head}'s "
+                        "reference_and_state_interfaces, or claim one it exports")
         for name, claim in absent.items():
             yield Issue("SB607", f"{section}.{claim.key}: joint '{name}' is in no "
                         f"<ros2_control> of {self.robot.display}: the hardware exports none of "
@@ -303,6 +322,23 @@ class _Checker:
                         severity=Severity.WARNING if driver else None,
                         fix=f"add <state_interface name=\"{found[0].interface}\"/> and the "
                         "others to the sensor's <ros2_control> entry")
+
+    def chained_exports(self, name: str) -> list[str] | None:
+        """What a pid_controller of this file exports for ``name`` (``pid/DOF``), or None.
+
+        Its reference and state interfaces are ``pid/DOF/INTERFACE`` for each of its
+        reference_and_state_interfaces (pid_controller.cpp); None for any other name.
+        """
+        head, slash, dof = name.partition("/")
+        if not slash or controller_types(self.sections).get(head) != _PID:
+            return None
+        for params in self.sections.get(head, []):
+            if dof in {str(d.value) for d in state_dofs(params)}:
+                listed = get(params, "reference_and_state_interfaces")
+                items = listed.value if isinstance(listed, yaml.SequenceNode) else [listed]
+                return [str(i.value) for i in items if isinstance(i, yaml.ScalarNode)
+                        and i.value]
+        return None
 
     def not_a_joint(self, name: str) -> bool:
         """A name that is not a URDF joint's and is right as written.

@@ -301,6 +301,24 @@ def test_mistakes_in_real_chained_and_steering_controllers_are_found(
     assert any(says in str(f["message"]) for f in found), result.stdout
 
 
+def test_a_closed_loop_diff_drive_reads_no_position_through_a_velocity_pid(run, installed,
+                                                                           tmp_path):
+    """example_16 reads velocities (position_feedback: false), since its pid controllers
+    export only theirs; with position feedback and a closed loop the controller manager
+    cannot activate the diff drive."""
+    urdf_name, args, yaml_name, _ = EXAMPLES["example_16"]
+    text = CHAINED.read_text().replace("position_feedback: false", "position_feedback: true")
+    broken = tmp_path / yaml_name
+    broken.write_text(text.replace("open_loop: true", "open_loop: false"))
+    result = run("check", "controllers", broken, "--urdf",
+                 SRC / "example_16" / "description" / "urdf" / urdf_name, *args, *installed,
+                 "--format", "json", "--isolated", env=NO_ROS)
+    found = [f for f in findings(result.stdout) if f["code"] == "SB607"]
+    assert len(found) == 2 and all("does not export (it exports velocity" in str(f["message"])
+                                   for f in found), result.stdout
+    assert found[0]["fix"] == "position_feedback: false (odometry from the wheels' velocities)"
+
+
 def test_a_skid_steer_track_written_wider_is_a_warning_a_two_wheel_one_an_error(run, installed,
                                                                                 tmp_path):
     """Clearpath's Warthog writes wheel_separation 1.5 m on its wheels' 1.14 m track, the
