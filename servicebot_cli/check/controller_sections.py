@@ -12,6 +12,7 @@ from collections.abc import Iterator
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.findings import Issue, Severity
+from servicebot_cli.common.accidents import ACCIDENT_FIXES, accident
 from servicebot_cli.description.yaml_size import MOST_NODES, unfolded_nodes
 
 _NAMESPACE_DEPTH = 3
@@ -26,6 +27,11 @@ def sections(text: str, display: str) -> Sections | Issue:
     Or the SB601 issue that makes ``text`` no controllers file at all, whatever the robot:
     not YAML, empty, or without a ``NAME: ros__parameters:`` section.
     """
+    instead = accident(text)
+    if instead is not None:
+        return Issue("SB601", instead[0], where=(display, instead[1], 1),
+                     fix=next((fix for start, fix in ACCIDENT_FIXES
+                               if instead[0].startswith(start)), None))
     try:
         root = _composed(text)
     except yaml.YAMLError as exc:

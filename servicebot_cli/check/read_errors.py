@@ -9,6 +9,7 @@ from __future__ import annotations
 import re
 
 from servicebot_cli.check.findings import Issue, Severity
+from servicebot_cli.common.accidents import ACCIDENT_FIXES
 from servicebot_cli.common.errors import (
     DescriptionError,
     PackageNotFound,
@@ -46,7 +47,9 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
         if isinstance(error, UnsafeXmlError):
             return Issue("SB005", error.reason, where=where,
                          fix="remove the DOCTYPE; use xacro properties for repeated values")
-        return Issue(_xml_code(error.reason), error.reason, where=where)
+        return Issue(_xml_code(error.reason), error.reason, where=where,
+                     fix=next((fix for start, fix in ACCIDENT_FIXES
+                               if error.reason.startswith(start)), None))
     file, line, column, text = _split(str(error), display)
     if isinstance(error, PackageNotFound):
         return Issue("SB007", text, where=(file, line, column),

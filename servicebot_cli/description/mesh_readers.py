@@ -21,6 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
+from servicebot_cli.common.accidents import LFS_POINTER
 from servicebot_cli.description.mesh_arrays import FloatArray, IntArray, MeshFormatError, bounds
 from servicebot_cli.description.mesh_collada import read_dae, read_dae_bounds
 from servicebot_cli.description.mesh_obj import read_obj_indexed
@@ -45,7 +46,7 @@ def too_large(size: int) -> str | None:
     return f"the file is {size / 1e9:.1f} GB, over the {MOST_BYTES / 1e9:.0f} GB a mesh is read to"
 
 
-_LFS_POINTER = b"version https://git-lfs.github.com/spec/"
+_LFS_POINTER = LFS_POINTER.encode()
 
 
 class LfsPointer(MeshFormatError):

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import NoReturn
 from xml.parsers import expat
 
+from servicebot_cli.common.accidents import accident
 from servicebot_cli.common.errors import UnsafeXmlError, XmlError
 from servicebot_cli.common.text_decoding import NotUtf8, decode_utf8
 
@@ -115,11 +116,36 @@ def parse_xml(
             return _reparsed(text, blanks, filename, max_elements)
         declaration = _declaration_end(text)
         if not (declaration and exc.line == 1 and exc.reason.endswith(_BAD_DECLARATION)):
+            accident = download_accident(text)
+            if accident is not None:
+                raise XmlError(filename, accident[0], accident[1], 1) from None
             raise
         # tinyxml2 (urdfdom, Gazebo, MuJoCo) reads the opening <?xml ...?> without judging
         # what it says (ros/urdf's one_link.urdf: <?xml verison="1.0"?>); so does this,
         # with the declaration blanked out for expat
         return _Builder(filename, max_elements).parse(" " * declaration + text[declaration:])
+
+
+def download_accident(text: str) -> tuple[str, int] | None:
+    """What a file that is no XML is instead, and the line that shows it; None if not known.
+
+    A Git LFS pointer or a merge conflict (:func:`~servicebot_cli.common.accidents.accident`),
+    a web page saved instead of the raw file, or nothing but comments.
+    """
+    found = accident(text)
+    if found is not None:
+        return found
+    head = text.lstrip()[:200].lower()
+    if head.startswith(("<!doctype html", "<html")):
+        return ("an HTML page, not a URDF (a web page saved instead of the raw file?): "
+                "download the raw file"), 1
+    if not _COMMENTS.sub("", _DECLARATION.sub("", text, count=1)).strip():
+        return "file is empty but for comments; a URDF needs a <robot> element", 1
+    return None
+
+
+_COMMENTS = re.compile(r"<!--.*?(?:-->|$)", re.DOTALL)
+_DECLARATION = re.compile(r"^\s*<\?xml[^>]*\?>")
 
 
 def _reparsed(text: str, blanks: int, filename: str, max_elements: int) -> XmlDocument:
