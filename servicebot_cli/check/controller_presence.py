@@ -13,7 +13,7 @@ from __future__ import annotations
 import difflib
 from collections.abc import Iterator
 
-from servicebot_cli.check.controller_sections import Sections, at, type_nodes
+from servicebot_cli.check.controller_sections import Sections, at, get, type_nodes
 from servicebot_cli.check.findings import Issue, Severity
 
 _FORWARD = ("joints", "interface_name")
@@ -62,8 +62,7 @@ def presence_issues(found: Sections, display: str) -> Iterator[Issue]:
                     f"parameters {result}", where=at(display, found[name][0].start_mark),
                     severity=Severity.ERROR if needs else Severity.WARNING,
                     fix=f"rename the section '{meant}:'")
-    if not any(name in types for name in found):
-        return
+    alone = not any(name in types for name in found)  # the manager's file: others may follow
     for name in without:
         kind = str(types[name].value)
         needs = NEEDED.get(kind)
@@ -72,8 +71,20 @@ def presence_issues(found: Sections, display: str) -> Iterator[Issue]:
         yield Issue("SB608", f"controller '{name}' ({kind}) has no parameters in this file: it "
                     f"refuses to configure without {_listed(needs)}, unless another parameter "
                     "file gives them", where=at(display, types[name].start_mark),
-                    severity=Severity.WARNING,
+                    severity=Severity.INFO if alone else Severity.WARNING,
                     fix=f"add a section '{name}: ros__parameters:' with {_listed(needs)}")
+    for name, sections in found.items():
+        needs = NEEDED.get(str(types[name].value)) if name in types else None
+        lacking = [key for key in needs or () if not any(
+            get(section, key) is not None or any(str(k.value).startswith(f"{key}.")
+                                                 for k, _ in section.value)
+            for section in sections)]
+        if lacking:
+            yield Issue("SB608", f"{name} gives no {_listed(tuple(lacking))}: "
+                        f"{types[name].value} refuses to configure without them, unless "
+                        "another parameter file gives them", where=at(
+                            display, sections[0].start_mark), severity=Severity.WARNING,
+                        fix=f"add {_listed(tuple(lacking))} to its ros__parameters")
 
 
 def _listed(names: tuple[str, ...]) -> str:

@@ -7,6 +7,7 @@ makes the text no controllers file at all. Pure: YAML text in, nodes out.
 
 from __future__ import annotations
 
+import difflib
 from collections.abc import Iterator
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
@@ -194,7 +195,9 @@ def _near_ros_parameters(root: yaml.Node | None, depth: int = 0) -> yaml.ScalarN
         if not isinstance(key, yaml.ScalarNode) or key.value == "ros__parameters":
             continue
         squeezed = str(key.value).lower().replace("_", "").replace("-", "")
-        if squeezed in ("rosparameters", "rosparams", "rosparameter", "rosparam"):
+        if squeezed in ("rosparameters", "rosparams", "rosparameter", "rosparam") or (
+                squeezed.startswith("ros") and difflib.SequenceMatcher(
+                    None, squeezed, "rosparameters").ratio() >= 0.85):  # ros__paramters
             return key
         found = _near_ros_parameters(value, depth + 1)
         if found is not None:

@@ -89,9 +89,21 @@ def test_a_file_of_controller_manager_alone_is_checked(run, tmp_path):
     """A misspelt type there was 'no controller here ... nothing was checked' (info)."""
     typo = MANAGER.replace("IMUSensorBroadcaster", "IMUSensorBroadcastr")
     exit_code, found = _check(run, tmp_path, typo)
-    assert exit_code == 1 and [f["code"] for f in found] == ["SB608"]
-    assert "did you mean 'imu_sensor_broadcaster/IMUSensorBroadcaster'" in str(found[0]["message"])
-    assert _check(run, tmp_path, MANAGER) == (0, [])  # its parameters may be another file's
+    errors = [f for f in found if f["severity"] == "error"]
+    assert exit_code == 1 and [f["code"] for f in errors] == ["SB608"]
+    assert "did you mean 'imu_sensor_broadcaster/IMUSensorBroadcaster'" in str(errors[0]["message"])
+    exit_code, found = _check(run, tmp_path, MANAGER)  # its parameters may be another file's
+    assert exit_code == 0 and {(f["code"], f["severity"]) for f in found} == {("SB608", "info")}
+
+
+def test_a_section_without_what_its_controller_needs_is_a_warning(run, tmp_path):
+    """A diff drive section holding only publish_rate: no wheel names, and the controller
+    refuses to configure (not_empty)."""
+    text = GOOD.replace("    sensor_name: imu\n", "")
+    exit_code, found = _check(run, tmp_path, text)
+    assert exit_code == 0 and [(f["code"], f["severity"]) for f in found] == [
+        ("SB608", "warning")]
+    assert found[0]["message"].startswith("imu_broadcaster gives no sensor_name")
 
 
 def test_a_declared_controller_without_parameters_beside_others_is_a_warning(run, tmp_path):
