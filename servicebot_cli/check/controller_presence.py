@@ -16,7 +16,8 @@ from collections.abc import Iterator
 from servicebot_cli.check.controller_sections import Sections, at, get, type_nodes
 from servicebot_cli.check.findings import Issue, Severity
 
-_FORWARD = ("joints", "interface_name")
+_FORWARD = ("joints", "interface_name")  # (interface_name absent from a section: an error of
+# controller_params.validated_values)
 _GROUP = ("joints",)
 _GRIPPER = ("joint",)
 NEEDED: dict[str, tuple[str, ...]] = {
@@ -35,6 +36,10 @@ NEEDED: dict[str, tuple[str, ...]] = {
 }
 """Parameters each controller refuses to configure without (not_empty, size_gt 0 in its
 ``*_parameters.yaml``; the wheel names checked at configure in Humble's diff drive)."""
+
+
+_OWN_RULE = {"forward_command_controller/ForwardCommandController": ("interface_name",)}
+"""Needed parameters that another rule reports missing from a section, as an error."""
 
 
 def presence_issues(found: Sections, display: str) -> Iterator[Issue]:
@@ -75,7 +80,8 @@ def presence_issues(found: Sections, display: str) -> Iterator[Issue]:
                     fix=f"add a section '{name}: ros__parameters:' with {_listed(needs)}")
     for name, sections in found.items():
         needs = NEEDED.get(str(types[name].value)) if name in types else None
-        lacking = [key for key in needs or () if not any(
+        lacking = [key for key in needs or () if key not in _OWN_RULE.get(
+            str(types[name].value), ()) and not any(
             get(section, key) is not None or any(str(k.value).startswith(f"{key}.")
                                                  for k, _ in section.value)
             for section in sections)]
