@@ -164,7 +164,10 @@ def declared_types(controller_type: str | None, params: yaml.MappingNode, sectio
             fix = _fix(shown, wanted.removesuffix("_array"))
         elif isinstance(node, yaml.ScalarNode):
             what = f"'{node.value}' as {_ARTICLE[got]}"
-            fix = f"{key}: [{node.value}]" if wanted.endswith("_array") else _fix(node, wanted)
+            listed = str(node.value).strip()
+            fix = (f"{key}: {listed} (no quotes)" if listed.startswith("[") and
+                   listed.endswith("]") else f"{key}: [{node.value}]") \
+                if wanted.endswith("_array") else _fix(node, wanted)
         else:
             what = f"it as a {got.replace('_', ' ')}"
             fix = f"write {key} as a {wanted.replace('_', ' ')}"

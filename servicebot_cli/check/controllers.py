@@ -149,6 +149,8 @@ class _Checker:
             yield from self.wheels(name, params)
 
     def names(self, section: str, key: str, node: yaml.Node) -> Iterator[Issue]:
+        if isinstance(node, yaml.ScalarNode) and str(node.value).lstrip().startswith("["):
+            return  # a list in quotes: one string, which SB608 reports
         items = node.value if isinstance(node, yaml.SequenceNode) else [node]
         if not items and key.endswith("_wheel_names"):
             yield Issue("SB601", f"{section}.{key} names no wheel: diff_drive_controller "

@@ -8,6 +8,8 @@ SB607 with the advice to export it, after which JTC still refused it.
 
 from __future__ import annotations
 
+import re
+
 import pytest
 
 from tests.check.helpers import check_controllers
@@ -97,3 +99,15 @@ def test_a_type_only_humble_reads_is_a_warning(run, tmp_path):
     code, found = check_controllers(run, tmp_path, BUNDLED.replace(
         "state_publish_rate: 50.0", "state_publish_rate: 50"))
     assert code == 0 and [(f["code"], f["severity"]) for f in found] == [("SB608", "warning")]
+
+
+def test_a_list_in_quotes_is_one_string_fixed_without_quotes(run, tmp_path):
+    """left_wheel_names: "[wheel_left]" is a string to rcl: the fix was the nested
+    [[wheel_left]], beside an SB602 for a joint called '[wheel_left]'."""
+    text = re.sub(r"left_wheel_names: \[([^\]]*)\]", r"left_wheel_names: '[\1]'", BUNDLED,
+                  count=1)
+    assert text != BUNDLED
+    code, found = check_controllers(run, tmp_path, text)
+    (only,) = found
+    assert code == 1 and only["code"] == "SB608"
+    assert only["fix"].endswith("] (no quotes)") and "[[" not in only["fix"]
