@@ -269,9 +269,24 @@ def _plain(value: str, count: int) -> bool:
     """Whether ``value`` is ``count`` finite numbers as urdfdom reads them."""
     if count > 1 and _OTHER_BLANKS.search(value):
         return False  # a tab or line break: see _split_by_urdfdom
-    parts = [value.lstrip(_C_SPACES)] if count == 1 else value.split()
+    parts = [value.lstrip(_C_SPACES)] if count == 1 else _ascii_split(value)
     return len(parts) == count and all(NUMBER.fullmatch(part) is not None
                                        and math.isfinite(float(part)) for part in parts)
+
+
+_UNICODE_BLANK = re.compile(r"[^\S \t\n\r\f\v]")  # a blank to Python, not to istringstream
+
+
+def _ascii_split(value: str) -> list[str]:
+    """``value`` split at the blanks istringstream skips (str.split() also splits at NBSP)."""
+    return [part for part in re.split(r"[ \t\n\r\f\v]+", value) if part]
+
+
+def _blank_name(char: str) -> str:
+    """``non-breaking space (U+00A0)``: a blank that does not show."""
+    import unicodedata
+
+    return f"{unicodedata.name(char, 'blank').lower()} (U+{ord(char):04X})"
 
 
 def _split_by_urdfdom(value: str) -> str | None:
@@ -330,11 +345,18 @@ def _number(element: ET.Element, key: str, value: str, count: int) -> Iterator[I
     """
     if _plain(value, count):
         return  # the common case, without building the message's text
-    parts = [value.lstrip(_C_SPACES)] if count == 1 else value.split()
+    parts = [value.lstrip(_C_SPACES)] if count == 1 else _ascii_split(value)
     where = f"<{element.tag}{_named(element)} {key}=\"{escaped_blanks(value)}\">"
     piece = _split_by_urdfdom(value) if count > 1 else None
     if piece is not None:  # written as &#9; or &#10;, which XML keeps
         yield _split_wrong(where, piece, element)
+        return
+    odd = _UNICODE_BLANK.search(value)
+    if odd is not None and count > 1:
+        shown = next(part for part in parts if odd[0] in part)
+        yield Issue("SB013", f"{where}: a {_blank_name(odd[0])} inside '{shown}': urdfdom "
+                    "separates numbers by plain spaces only, so it cannot read them", element,
+                    fix="retype the blank between the numbers as a plain space")
         return
     if len(parts) != count:
         yield Issue("SB013", f"{where}: expected {count} numbers, found {len(parts)}", element,

@@ -133,3 +133,18 @@ def test_sb701_alone_points_at_the_origin_that_holds_the_tab(run, tmp_path):
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB701")
     (found,) = findings(result.stdout)
     assert (found["code"], found["line"], found["column"]) == ("SB701", 5, 13)
+
+
+@pytest.mark.parametrize("blank", ["\u00a0", "\u2009"], ids=["no-break space", "thin space"])
+def test_a_unicode_blank_between_numbers_is_named_where_it_is(run, tmp_path, blank):
+    """xyz="0<NBSP>0 0.083": Python's split() reads three numbers, urdfdom's (spaces only)
+    two, and drops the origin; check said only Pinocchio's 'Unable to parse component
+    [0 0]' at the <robot> line."""
+    path = tmp_path / "robot.urdf"
+    path.write_text('<robot name="r">\n<link name="a"><visual>\n'
+                    f'<origin xyz="0{blank}0 0.083"/>\n<geometry><box size="1 1 1"/>'
+                    "</geometry></visual></link>\n</robot>\n", encoding="utf-8")
+    assert check_urdf_drops(path)
+    result = run("check", path, "--format", "json", "--isolated")
+    (found,) = [f for f in findings(result.stdout) if f["code"] == "SB013"]
+    assert found["line"] == 3 and f"(U+{ord(blank):04X}) inside" in found["message"]
