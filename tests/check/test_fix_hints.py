@@ -130,3 +130,20 @@ def test_a_ros2_control_of_no_robot_names_no_suggestion(run, tmp_path):
     (found,) = [f for f in findings(result.stdout) if f["code"] == "SB504"]
     assert found["message"].endswith("which does not exist; the robot has no joints")
     assert found["fix"] == "add the joint to the robot, or check the file that includes this one"
+
+
+def test_a_joint_defined_twice_is_judged_by_its_first_definition(run, tmp_path):
+    """urdfdom refuses the file (SB102); ros2_control's rules read the second, fixed 'j1',
+    and told to remove its command interface, which would break the revolute one."""
+    robot = tmp_path / "dup.urdf"
+    robot.write_text(
+        '<robot name="r"><link name="a"/><link name="b"/><link name="c"/>'
+        '<joint name="j1" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/>'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
+        '<joint name="j1" type="fixed"><parent link="b"/><child link="c"/></joint>'
+        '<ros2_control name="s" type="system"><hardware><plugin>mock_components/GenericSystem'
+        '</plugin></hardware><joint name="j1"><command_interface name="position"/>'
+        '<state_interface name="position"/></joint></ros2_control></robot>')
+    codes = {f["code"] for f in findings(run("check", robot, "--format", "json",
+                                             "--isolated").stdout)}
+    assert "SB102" in codes and "SB506" not in codes
