@@ -186,6 +186,11 @@ def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> T
     if unknown:
         notes.append(f"left out of the mass and its centre: {', '.join(unknown)}, whose mass "
                      "is not a finite number (check reports it as SB014)")
+    negative = t.links_of_negative_mass(robot)
+    if negative:
+        notes.append(f"counted as written, though no body has a negative mass: "
+                     f"{', '.join(negative)} (check reports it as SB302); the total and its "
+                     "centre are not the robot's")
     if centre is None and mass > 0:
         notes.append(t.CENTRE_UNKNOWN)
     box = t.box_of(robot, posed, meshes)

@@ -158,6 +158,16 @@ def links_of_unknown_mass(robot: RobotDescription) -> list[str]:
             and link.inertial.mass_kg is not None and not math.isfinite(link.inertial.mass_kg)]
 
 
+def links_of_negative_mass(robot: RobotDescription) -> list[str]:
+    """``arm (-0.5 kg)`` for each link whose mass is negative.
+
+    :func:`mass_and_centre` counts it as written.
+    """
+    return [f"{link.name} ({link.inertial.mass_kg:g} kg)" for link in robot.links
+            if link.inertial is not None and link.inertial.mass_kg is not None
+            and link.inertial.mass_kg < 0]
+
+
 def arm_reach(tree: KinematicTree, arm_joints: list[Joint],
               transforms: Mapping[str, FloatArray]) -> ArmReach | None:
     """The reach of the arm joints' longest chain, from the arm joint that starts it.
