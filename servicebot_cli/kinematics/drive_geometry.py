@@ -111,6 +111,11 @@ def drive_geometry(robot: RobotDescription) -> DriveGeometry:
             + _why_not_wheels(robot, left_out)
         )
     for wheel in wheels:
+        if math.isnan(wheel.radius_m):  # radius="50mm": no number (SB013)
+            raise DescriptionError(
+                f"{robot.display}: wheel joint '{wheel.joint}' rolls on a cylinder whose "
+                "radius is written as no number (a unit after it?); write it in metres, "
+                f"a plain number (run 'servicebot check {robot.display}' for the line)")
         if not (math.isfinite(wheel.radius_m) and _SMALLEST_RADIUS_M <= wheel.radius_m
                 <= _LARGEST_RADIUS_M):
             raise DescriptionError(
