@@ -39,7 +39,12 @@ def sections(text: str, display: str) -> Sections | Issue:
         mark = getattr(exc, "problem_mark", None)
         where = (display, mark.line + 1, mark.column + 1) if mark else (display, 0, 0)
         problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
-        return Issue("SB601", f"not valid YAML: {problem}", where=where)
+        lines = text.splitlines()
+        written = lines[mark.line] if mark and mark.line < len(lines) else ""
+        tabbed = "\t" in written[:len(written) - len(written.lstrip())]
+        return Issue("SB601", f"not valid YAML: {problem}" + (
+            " (a tab in the indentation: YAML indents with spaces only)" if tabbed else ""),
+            where=where, fix="indent with spaces" if tabbed else None)
     except RecursionError:  # PyYAML's composer recurses once per level of nesting
         return Issue("SB601", "not valid YAML: lists and mappings nested too deep to read",
                      where=(display, 0, 0))

@@ -14,7 +14,7 @@ from typing import Any
 
 from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.common.inputs import read_input_text
-from servicebot_cli.description.yaml_size import AliasBomb, bounded_document
+from servicebot_cli.description.yaml_size import AliasBomb, bounded_document, bounded_documents
 
 NAMESPACE_DEPTH = 3
 """Namespaces looked through above a node's own key."""
@@ -34,20 +34,48 @@ def read_parameters_file(path: Path, error: type[ServicebotError]) -> Any:
 
     text = read_input_text(str(path), kind="a ros2_control controllers YAML (--controllers)",
                            error=error, max_bytes=MAX_PARAMETERS_BYTES, allow_empty=False)
-    try:  # libyaml's loader, if built
-        return bounded_document(getattr(yaml, "CSafeLoader", yaml.SafeLoader)(text))
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)  # libyaml's loader, if built
+    try:
+        try:
+            return bounded_document(loader(text))
+        except yaml.composer.ComposerError as exc:
+            if "expected a single document" not in str(exc):
+                raise
+        documents = [d for d in bounded_documents(loader(text)) if d is not None]
+        if all(isinstance(d, dict) for d in documents):  # several documents: rcl reads them
+            merged: dict[Any, Any] = {}  # as one file, a later value winning
+            for document in documents:
+                _merge(merged, document)
+            return merged
+        raise error(f"{path}: several YAML documents (---) that are not all mappings; fix "
+                    "the file or give another with --controllers")
     except AliasBomb as exc:
         raise error(f"{path}: {exc}; give another file with --controllers") from None
     except yaml.YAMLError as exc:
         if "nesting depth" not in str(getattr(exc, "problem", "")):  # libyaml's own bound
             mark = getattr(exc, "problem_mark", None)
             line = f":{mark.line + 1}" if mark is not None else ""
-            raise error(f"{path}{line}: not valid YAML; fix the file or give another with "
-                        "--controllers") from None
+            problem = str(getattr(exc, "problem", None) or "").strip()
+            lines = text.splitlines()
+            written = lines[mark.line] if mark is not None and mark.line < len(lines) else ""
+            tabs = " (YAML indents with spaces, never tabs)" if "\t" in written[
+                :len(written) - len(written.lstrip())] else ""
+            raise error(f"{path}{line}: not valid YAML" + (f": {problem}{tabs}" if problem
+                                                           else "")
+                        + "; fix the file or give another with --controllers") from None
     except RecursionError:  # PyYAML's own composer recurses once per level of nesting
         pass
     raise error(f"{path}: lists and mappings nested too deep to read; is it a controllers "
                 "file? Give another with --controllers")
+
+
+def _merge(into: dict[Any, Any], more: dict[Any, Any]) -> None:
+    """``more``'s entries into ``into``, mappings merged key by key, a later value winning."""
+    for key, value in more.items():
+        if isinstance(value, dict) and isinstance(into.get(key), dict):
+            _merge(into[key], value)
+        else:
+            into[key] = value
 
 
 def node_parameters(document: Any, depth: int = 0) -> dict[str, dict[str, Any]]:

@@ -74,3 +74,21 @@ def bounded_document(loader: Any) -> Any:
         return None if node is None else loader.construct_document(node)
     finally:
         loader.dispose()
+
+
+def bounded_documents(loader: Any) -> list[Any]:
+    """Every document a PyYAML ``loader`` reads (``---`` between them), each bounded so.
+
+    Raises:
+        AliasBomb: One unfolds past :data:`MOST_NODES` items.
+    """
+    documents = []
+    try:
+        while loader.check_node():
+            node = loader.get_node()
+            if node is not None and unfolded_nodes(node) is None:
+                raise AliasBomb
+            documents.append(None if node is None else loader.construct_document(node))
+        return documents
+    finally:
+        loader.dispose()
