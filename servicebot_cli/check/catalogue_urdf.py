@@ -25,7 +25,8 @@ URDF_RULES: tuple[Rule, ...] = (
          "that is not UTF-8 usually means the file was saved as Latin-1 or Windows-1252, a "
          "UTF-16 byte-order mark or NUL bytes that it was saved as UTF-16 (Windows editors' "
          "\"Unicode\"). An image or archive is said to be one: the wrong file was named.",
-         "Save the file as UTF-8, or name the description instead."),
+         "Save the file as UTF-8 (an editor's 'Save with encoding'), or, for an image or "
+         "archive, name the description file instead."),
     Rule("SB004", "malformed-xml", E, "The XML is not well-formed",
          "A strict parser stops at the first error and reports its line and column; nothing "
          "is guessed or recovered, since a recovering parser silently drops elements.",

@@ -80,6 +80,7 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
 
 _UNDEFINED_NAME = re.compile(r"name '([^']+)' is not defined")
 _BARE_DEFINITION = re.compile(r'\(<(\w+) name="([^"]*)">(?: at \S+)? has no xacro: prefix')
+_INVALID_PARAMETER = re.compile(r"Invalid parameter \"([^\"]*)\" of macro '([^']+)'")
 _IN_MACRO = re.compile(r"\(in macro '([^']+)'")
 _UNDEFINED_PARAMETERS = re.compile(r"Undefined parameters \[([^\]]*)\]")
 
@@ -102,6 +103,12 @@ def _xacro_fix(text: str, undefined: re.Match[str] | None) -> str | None:
         return (f"write {written} in this call, or give the macro's parameter a default "
                 f"(params=\"... {names[0]}:=VALUE\"); NAME:=VALUE on the command line sets "
                 "arguments, not parameters")
+    if text.startswith("an empty expression ${}"):
+        return "write the expression inside ${...}, or remove the ${}"
+    invalid = _INVALID_PARAMETER.search(text)
+    if invalid is not None:
+        return (f"write one of the parameters of macro '{invalid[2]}' instead of '{invalid[1]}', "
+                f"or add '{invalid[1]}' to its params")
     name = _UNDEFINED_NAME.search(text)
     macro = _IN_MACRO.search(text)
     if name is not None and macro is not None:

@@ -473,9 +473,15 @@ class _Tracer:
         message = " ".join(str(shown).split()) or type(exc).__name__
         macros = getattr(inner, "macros", None) or [None]  # the innermost first
         body = getattr(macros[0], "body", None)
-        if message.startswith("Undefined parameters") and isinstance(
+        if message.startswith(("Undefined parameters", "Invalid parameter")) and isinstance(
                 body, xml.dom.minidom.Element) and body.getAttribute("name"):
             message = f"{message} of macro '{body.getAttribute('name')}'"
+            if message.startswith("Invalid parameter"):
+                params = body.getAttribute("params").split()
+                message += (f" (its parameters: {', '.join(params)})" if params
+                            else " (it takes no parameters)")
+        elif message.endswith("when evaluating expression ''"):  # ${}: Python's parser text
+            message = "an empty expression ${}: write what it should compute"
         else:
             message += self._in_macros(where) + self._bare_definition(message)
         if not own and not str(inner).strip():  # "when evaluating expression '...'" alone

@@ -144,4 +144,16 @@ def test_an_error_at_the_call_itself_names_no_call(run, tmp_path):
     path.write_text(f'{HEAD}\n<xacro:macro name="wheel" params="side"><link name="${{side}}"/>'
                     '</xacro:macro>\n<xacro:wheel side="l" bogus="1"/>\n</robot>')
     (found,) = findings(run("check", "urdf", path, "--format", "json", "--isolated").stdout)
-    assert (found["line"], found["message"]) == (3, 'Invalid parameter "bogus"')
+    assert (found["line"], found["message"]) == (
+        3, "Invalid parameter \"bogus\" of macro 'wheel' (its parameters: side)")
+    assert found["fix"] == ("write one of the parameters of macro 'wheel' instead of 'bogus', "
+                            "or add 'bogus' to its params")
+
+
+def test_an_empty_expression_is_said_so(run, tmp_path):
+    """${} was Python's 'invalid syntax (<expression>, line 0)'."""
+    path = tmp_path / "r.urdf.xacro"
+    path.write_text(f'{HEAD}\n<link name="a"><visual><geometry><box size="1 1 ${{}}"/>'
+                    "</geometry></visual></link>\n</robot>")
+    (found,) = findings(run("check", "urdf", path, "--format", "json", "--isolated").stdout)
+    assert found["message"] == "an empty expression ${}: write what it should compute"
