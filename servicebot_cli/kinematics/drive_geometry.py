@@ -113,9 +113,10 @@ def drive_geometry(robot: RobotDescription) -> DriveGeometry:
     for wheel in wheels:
         if math.isnan(wheel.radius_m):  # radius="50mm": no number (SB013)
             raise DescriptionError(
-                f"{robot.display}: wheel joint '{wheel.joint}' rolls on a cylinder whose "
-                "radius is written as no number (a unit after it?); write it in metres, "
-                f"a plain number (run 'servicebot check {robot.display}' for the line)")
+                f"{robot.display}: wheel joint '{wheel.joint}' rolls on a radius that is no "
+                "number as written ('nan', or a unit after it: '50mm'); write its cylinder's "
+                "radius in metres, a plain number (run 'servicebot check "
+                f"{robot.display}' for the line)")
         if not (math.isfinite(wheel.radius_m) and _SMALLEST_RADIUS_M <= wheel.radius_m
                 <= _LARGEST_RADIUS_M):
             raise DescriptionError(

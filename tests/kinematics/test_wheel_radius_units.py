@@ -17,4 +17,4 @@ def test_a_radius_with_a_unit_is_named_as_no_number(run, tmp_path):
     result = run("simulate", path, "--headless", "--duration-s", "0.1", "--out",
                  tmp_path / "run.csv")
     line = assert_one_line_error(result, 2)
-    assert "radius is written as no number" in line and "nan" not in line
+    assert "rolls on a radius that is no number as written" in line and "nan m" not in line
