@@ -13,7 +13,7 @@ import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 from servicebot_cli.check.findings import Issue
 from servicebot_cli.common.errors import PackageNotFound, RemoteResource, UnknownScheme
@@ -176,27 +176,32 @@ def mesh_references(robot: RobotDescription) -> Iterator[tuple[ET.Element, str, 
             yield element, uri, Path(robot.source_of(shape.element).file).parent.absolute()
 
 
+class _Unfound(NamedTuple):
+    """A mesh counted missing: why its package is nowhere, where, and its SB401 if made."""
+
+    message: str
+    element: ET.Element
+    where: str = ""
+    uri: str = ""
+    missing_file: Issue | None = None
+
+
 @dataclass
 class FileTally:
     """What one file's mesh references found, gathered while the geometry rules run."""
 
-    missing: dict[str, tuple[int, str, ET.Element]] = field(default_factory=dict)
-    """By package name, or ``model://NAME`` for a Gazebo model."""
+    missing: dict[str, list[_Unfound]] = field(default_factory=dict)
+    """By package name (or ``model://NAME`` for a Gazebo model), each mesh it hides. Where
+    another mesh finds the package (a directory some loaders take for it), the package is no
+    longer nowhere: each of these is a missing file (:meth:`issues`)."""
     loader_only: dict[str, tuple[PackageLocation, ET.Element]] = field(default_factory=dict)
     remote: list[tuple[str, ET.Element]] = field(default_factory=list)
-    unfound: dict[str, list[tuple[str, str, ET.Element, Issue | None]]] = field(
-        default_factory=dict)
-    """By package name, each mesh counted missing: where, its URI, its element, its SB401 if
-    made. Where another mesh finds the package (a directory some loaders take for it), the
-    package is no longer nowhere: each of these is a missing file (:meth:`issues`)."""
 
     def add_missing(self, resolved: Resolved, element: ET.Element, where: str = "",
                     uri: str = "") -> None:
         """Count a mesh hidden by a package that is nowhere."""
-        name = _key(resolved)
-        count, message, first = self.missing.get(name, (0, resolved.error or "", element))
-        self.missing[name] = (count + 1, message, first)
-        self.unfound.setdefault(name, []).append((where, uri, element, None))
+        self.missing.setdefault(_key(resolved), []).append(
+            _Unfound(resolved.error or "", element, where, uri))
 
     def guessed_wrong(self, resolved: Resolved, element: ET.Element, missing_file: Issue) -> bool:
         """Whether a missing mesh's package was only guessed, by a directory of its name.
@@ -213,11 +218,9 @@ class FileTally:
                 location.gazebo_model:  # Gazebo's model path is no guess: the file is missing
             return False
         name = _key(resolved)
-        count, message, first = self.missing.get(name, (
-            0, f"package '{name}' not found as ROS finds packages (by package.xml); looked in "
-               f"{location.how}, which holds no such file", element))
-        self.missing[name] = (count + 1, message, first)
-        self.unfound.setdefault(name, []).append(("", "", element, missing_file))
+        self.missing.setdefault(name, []).append(_Unfound(
+            f"package '{name}' not found as ROS finds packages (by package.xml); looked in "
+            f"{location.how}, which holds no such file", element, missing_file=missing_file))
         return True
 
     def add_found(self, resolved: Resolved, element: ET.Element) -> None:
@@ -227,12 +230,13 @@ class FileTally:
 
     def issues(self) -> Iterator[Issue]:
         """SB408 per missing package, SB409 per loader-only package, SB410 for remote meshes."""
-        for name, (count, message, element) in self.missing.items():
+        for name, unfound in self.missing.items():
             found = self.loader_only.get(name)
             if found is not None:  # another mesh found it: these files are missing there
-                for where, uri, at, issue in self.unfound.get(name, ()):
-                    yield issue or _missing_there(where, uri, at, found[0])
+                for mesh in unfound:
+                    yield mesh.missing_file or _missing_there(mesh, found[0])
                 continue
+            count, message, element = len(unfound), unfound[0].message, unfound[0].element
             meshes = f"{count} mesh{'es' if count != 1 else ''}"
             model = name.removeprefix("model://")
             yield Issue("SB408", f"{message.split(';', 1)[0]}: {meshes} not checked; looked in"
@@ -265,14 +269,12 @@ class FileTally:
                         "not read here", element)
 
 
-def _missing_there(where: str, uri: str, element: ET.Element,
-                   location: PackageLocation) -> Issue:
-    """SB401 for ``uri``, not in the directory ``location`` where the file's other meshes are."""
-    rel = uri.split("://", 1)[-1].partition("/")[2]
-    return Issue("SB401", f"{where}: mesh '{uri}': {location.path / rel} does not exist "
-                 f"(package '{location.name}' is {location.how}, where its other meshes are)",
-                 element,
-                 fix="fix the path: the directory holds no such file")
+def _missing_there(mesh: _Unfound, location: PackageLocation) -> Issue:
+    """SB401 for ``mesh``, not in the directory ``location`` where the file's other meshes are."""
+    rel = mesh.uri.split("://", 1)[-1].partition("/")[2]
+    return Issue("SB401", f"{mesh.where}: mesh '{mesh.uri}': {location.path / rel} does not "
+                 f"exist (package '{location.name}' is {location.how}, where its other meshes "
+                 "are)", mesh.element, fix="fix the path: the directory holds no such file")
 
 
 def _key(resolved: Resolved) -> str:
