@@ -59,12 +59,12 @@ ROS2_CONTROLLERS = frozenset((
 def check(found: Sections, display: str, robot: RobotDescription) -> Iterator[Issue]:
     """Every issue of the controller sections ``found`` (of file ``display``) against ``robot``."""
     checker = _Checker(display, robot, found)
-    types = controller_types(found)
     for name, params in found.items():
-        if name != "controller_manager" and _names_joints(types.get(name)):
+        kind = checker.types.get(name)
+        if name != "controller_manager" and _names_joints(kind):
             for section in checker.for_this_robot(params):
                 yield from checker.section(name, section)
-                yield from checker.interfaces(name, types.get(name), section)
+                yield from checker.interfaces(name, kind, section)
 
 
 def _names_joints(controller_type: str | None) -> bool:
@@ -96,6 +96,7 @@ class _Checker:
         self.sections = sections or {}
         self.controllers = frozenset(self.sections)
         self.joints = {j.name: j for j in robot.joints}
+        self.types = controller_types(self.sections)
         self._geometry: DriveGeometry | None | str = None
         self._exported: dict[str, dict[str, list[str]]] | None = None
         self._drivers: dict[str, list[str]] = {}  # plugins that may export more than listed
@@ -332,7 +333,7 @@ class _Checker:
         reference_and_state_interfaces (pid_controller.cpp); None for any other name.
         """
         head, slash, dof = name.partition("/")
-        if not slash or controller_types(self.sections).get(head) != _PID:
+        if not slash or self.types.get(head) != _PID:
             return None
         for params in self.sections.get(head, []):
             if dof in {str(d.value) for d in state_dofs(params)}:

@@ -65,9 +65,7 @@ def exported_as(name: str, plugin: str | None) -> str:
 
 def check(robot: RobotDescription) -> Iterator[Issue]:
     """Every ros2_control issue of ``robot``."""
-    joints: dict[str, Joint] = {}
-    for joint in robot.joints:  # a name given twice (SB102): the first, as the other rules read it
-        joints.setdefault(joint.name, joint)
+    joints = robot.joints_by_name  # a name given twice (SB102): the first
     owner: dict[tuple[str, str, str], str] = {}
     simulator = _simulator(robot)
     for block in robot.ros2_control:

@@ -122,6 +122,14 @@ class RobotDescription:
         return tuple(el.read_joint(e) for e in self.root.findall("joint"))
 
     @cached_property
+    def joints_by_name(self) -> dict[str, el.Joint]:
+        """Each joint by name; of a name given twice (SB102), the first, as :meth:`joint`."""
+        found: dict[str, el.Joint] = {}
+        for joint in self.joints:
+            found.setdefault(joint.name, joint)
+        return found
+
+    @cached_property
     def movable_joints(self) -> tuple[el.Joint, ...]:
         """Joints that are not fixed, in URDF order."""
         return tuple(j for j in self.joints if j.movable)
@@ -232,10 +240,10 @@ class RobotDescription:
         Raises:
             JointNotFound: With the closest names.
         """
-        for joint in self.joints:
-            if joint.name == name:
-                return joint
-        raise JointNotFound.for_name(name, [j.name for j in self.joints], robot=self.name)
+        joint = self.joints_by_name.get(name)
+        if joint is None:
+            raise JointNotFound.for_name(name, [j.name for j in self.joints], robot=self.name)
+        return joint
 
     def require_frame(self, name: str) -> str:
         """``name`` if it is a link (every link is a frame), else FrameNotFound."""
