@@ -13,6 +13,8 @@ from __future__ import annotations
 import difflib
 from collections.abc import Iterator
 
+import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
+
 from servicebot_cli.check.controller_sections import Sections, at, get, type_nodes
 from servicebot_cli.check.findings import Issue, Severity
 
@@ -79,18 +81,21 @@ def presence_issues(found: Sections, display: str) -> Iterator[Issue]:
                     severity=Severity.INFO if alone else Severity.WARNING,
                     fix=f"add a section '{name}: ros__parameters:' with {_listed(needs)}")
     for name, sections in found.items():
-        needs = NEEDED.get(str(types[name].value)) if name in types else None
-        lacking = [key for key in needs or () if key not in _OWN_RULE.get(
-            str(types[name].value), ()) and not any(
-            get(section, key) is not None or any(str(k.value).startswith(f"{key}.")
-                                                 for k, _ in section.value)
-            for section in sections)]
+        kind = str(types[name].value) if name in types else ""
+        lacking = tuple(key for key in NEEDED.get(kind, ()) if key not in _OWN_RULE.get(kind, ())
+                        and not any(_gives(section, key) for section in sections))
         if lacking:
-            yield Issue("SB608", f"{name} gives no {_listed(tuple(lacking))}: "
-                        f"{types[name].value} refuses to configure without them, unless "
-                        "another parameter file gives them", where=at(
-                            display, sections[0].start_mark), severity=Severity.WARNING,
-                        fix=f"add {_listed(tuple(lacking))} to its ros__parameters")
+            yield Issue("SB608", f"{name} gives no {_listed(lacking)}: {kind} refuses to "
+                        "configure without them, unless another parameter file gives them",
+                        where=at(display, sections[0].start_mark), severity=Severity.WARNING,
+                        fix=f"add {_listed(lacking)} to its ros__parameters")
+
+
+def _gives(section: yaml.MappingNode, key: str) -> bool:
+    """Whether ``section`` writes the parameter ``key`` (or, nested, ``key.*``)."""
+    return get(section, key) is not None or any(
+        isinstance(k, yaml.ScalarNode) and str(k.value).startswith(f"{key}.")
+        for k, _ in section.value)
 
 
 def _listed(names: tuple[str, ...]) -> str:

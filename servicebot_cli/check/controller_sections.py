@@ -13,7 +13,8 @@ from collections.abc import Iterator
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.findings import Issue, Severity
-from servicebot_cli.common.accidents import ACCIDENT_FIXES, accident
+from servicebot_cli.common.accidents import accident, accident_fix
+from servicebot_cli.description.ros_parameters import tab_indented
 from servicebot_cli.description.yaml_size import MOST_NODES, unfolded_nodes
 
 _NAMESPACE_DEPTH = 3
@@ -31,17 +32,14 @@ def sections(text: str, display: str) -> Sections | Issue:
     instead = accident(text)
     if instead is not None:
         return Issue("SB601", instead[0], where=(display, instead[1], 1),
-                     fix=next((fix for start, fix in ACCIDENT_FIXES
-                               if instead[0].startswith(start)), None))
+                     fix=accident_fix(instead[0]))
     try:
         root = _composed(text)
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         where = (display, mark.line + 1, mark.column + 1) if mark else (display, 0, 0)
         problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
-        lines = text.splitlines()
-        written = lines[mark.line] if mark and mark.line < len(lines) else ""
-        tabbed = "\t" in written[:len(written) - len(written.lstrip())]
+        tabbed = tab_indented(text, mark)
         return Issue("SB601", f"not valid YAML: {problem}" + (
             " (a tab in the indentation: YAML indents with spaces only)" if tabbed else ""),
             where=where, fix="indent with spaces" if tabbed else None)

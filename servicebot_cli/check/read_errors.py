@@ -9,7 +9,7 @@ from __future__ import annotations
 import re
 
 from servicebot_cli.check.findings import Issue, Severity
-from servicebot_cli.common.accidents import ACCIDENT_FIXES
+from servicebot_cli.common.accidents import accident_fix
 from servicebot_cli.common.errors import (
     DescriptionError,
     PackageNotFound,
@@ -48,8 +48,7 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
             return Issue("SB005", error.reason, where=where,
                          fix="remove the DOCTYPE; use xacro properties for repeated values")
         return Issue(_xml_code(error.reason), error.reason, where=where,
-                     fix=next((fix for start, fix in ACCIDENT_FIXES
-                               if error.reason.startswith(start)), None))
+                     fix=accident_fix(error.reason))
     file, line, column, text = _split(str(error), display)
     if isinstance(error, PackageNotFound):
         return Issue("SB007", text, where=(file, line, column),

@@ -25,10 +25,15 @@ def accident(text: str) -> tuple[str, int] | None:
     return None
 
 
-ACCIDENT_FIXES = (
+_FIXES = (
     ("a Git LFS pointer", "run 'git lfs pull' in the repository that holds the file"),
     ("a merge conflict", "keep the side you mean between the <<<<<<<, ======= and >>>>>>> "
      "lines, and delete the three markers"),
     ("an HTML page", "download the raw file (GitHub's Raw button, or raw.githubusercontent.com)"),
 )
 """What to do about each accident (by the start of its message)."""
+
+
+def accident_fix(message: str) -> str | None:
+    """What to do about the accident ``message`` says (safe_xml's too); None for another."""
+    return next((fix for start, fix in _FIXES if message.startswith(start)), None)

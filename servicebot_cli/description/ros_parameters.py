@@ -56,10 +56,7 @@ def read_parameters_file(path: Path, error: type[ServicebotError]) -> Any:
             mark = getattr(exc, "problem_mark", None)
             line = f":{mark.line + 1}" if mark is not None else ""
             problem = str(getattr(exc, "problem", None) or "").strip()
-            lines = text.splitlines()
-            written = lines[mark.line] if mark is not None and mark.line < len(lines) else ""
-            tabs = " (YAML indents with spaces, never tabs)" if "\t" in written[
-                :len(written) - len(written.lstrip())] else ""
+            tabs = " (YAML indents with spaces, never tabs)" if tab_indented(text, mark) else ""
             raise error(f"{path}{line}: not valid YAML" + (f": {problem}{tabs}" if problem
                                                            else "")
                         + "; fix the file or give another with --controllers") from None
@@ -67,6 +64,13 @@ def read_parameters_file(path: Path, error: type[ServicebotError]) -> Any:
         pass
     raise error(f"{path}: lists and mappings nested too deep to read; is it a controllers "
                 "file? Give another with --controllers")
+
+
+def tab_indented(text: str, mark: Any) -> bool:
+    """Whether the line of ``text`` a YAML error's ``mark`` points at is indented by a tab."""
+    lines = text.splitlines()
+    written = lines[mark.line] if mark is not None and mark.line < len(lines) else ""
+    return "\t" in written[:len(written) - len(written.lstrip())]
 
 
 def _merge(into: dict[Any, Any], more: dict[Any, Any]) -> None:
