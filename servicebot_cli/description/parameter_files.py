@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any
 
 from servicebot_cli.description.extensions import Plugin, params_all
-from servicebot_cli.description.ros_parameters import node_parameters
+from servicebot_cli.description.ros_parameters import node_parameters, overlaid
 
 ROS2_CONTROL_PLUGINS = ("gazebo_ros2_control", "gz_ros2_control", "ign_ros2_control")
 """Names (in a plugin's file name or name) of the Gazebo plugins that run ros2_control."""
@@ -60,16 +60,5 @@ def merged_parameters(documents: Sequence[Any]) -> dict[str, dict[str, Any]]:
     merged: dict[str, dict[str, Any]] = {}
     for document in documents:
         for node, params in node_parameters(document).items():
-            merged[node] = _overlay(merged.get(node, {}), params)
+            merged[node] = overlaid(merged.get(node, {}), params)
     return {node: {"ros__parameters": params} for node, params in merged.items()}
-
-
-def _overlay(base: dict[str, Any], over: dict[str, Any]) -> dict[str, Any]:
-    """``base`` with ``over``'s parameters set on it (nested mappings overlaid alike)."""
-    out = dict(base)
-    for key, value in over.items():
-        if isinstance(value, dict) and isinstance(out.get(key), dict):
-            out[key] = _overlay(out[key], value)
-        else:
-            out[key] = value
-    return out

@@ -45,7 +45,7 @@ def read_parameters_file(path: Path, error: type[ServicebotError]) -> Any:
         if all(isinstance(d, dict) for d in documents):  # several documents: rcl reads them
             merged: dict[Any, Any] = {}  # as one file, a later value winning
             for document in documents:
-                _merge(merged, document)
+                merged = overlaid(merged, document)
             return merged
         raise error(f"{path}: several YAML documents (---) that are not all mappings; fix "
                     "the file or give another with --controllers")
@@ -73,13 +73,15 @@ def tab_indented(text: str, mark: Any) -> bool:
     return "\t" in written[:len(written) - len(written.lstrip())]
 
 
-def _merge(into: dict[Any, Any], more: dict[Any, Any]) -> None:
-    """``more``'s entries into ``into``, mappings merged key by key, a later value winning."""
-    for key, value in more.items():
-        if isinstance(value, dict) and isinstance(into.get(key), dict):
-            _merge(into[key], value)
+def overlaid(base: dict[Any, Any], over: dict[Any, Any]) -> dict[Any, Any]:
+    """``base`` with ``over``'s parameters set on it (nested mappings overlaid alike)."""
+    out = dict(base)
+    for key, value in over.items():
+        if isinstance(value, dict) and isinstance(out.get(key), dict):
+            out[key] = overlaid(out[key], value)
         else:
-            into[key] = value
+            out[key] = value
+    return out
 
 
 def node_parameters(document: Any, depth: int = 0) -> dict[str, dict[str, Any]]:
