@@ -219,9 +219,17 @@ class RobotDescription:
             if j.type == "fixed"
         )
 
+    @cached_property
+    def links_by_name(self) -> dict[str, el.Link]:
+        """Each link by name; of a name given twice (SB101), the first, as :meth:`link`."""
+        found: dict[str, el.Link] = {}
+        for link in self.links:
+            found.setdefault(link.name, link)
+        return found
+
     def find_link(self, name: str | None) -> el.Link | None:
         """The link called ``name``, or None where there is none (a joint's misspelt child)."""
-        return next((link for link in self.links if link.name == name), None)
+        return None if name is None else self.links_by_name.get(name)
 
     def link(self, name: str) -> el.Link:
         """The link called ``name``.
@@ -229,10 +237,10 @@ class RobotDescription:
         Raises:
             LinkNotFound: With the closest names.
         """
-        for link in self.links:
-            if link.name == name:
-                return link
-        raise LinkNotFound.for_name(name, [lk.name for lk in self.links], robot=self.name)
+        link = self.find_link(name)
+        if link is None:
+            raise LinkNotFound.for_name(name, [lk.name for lk in self.links], robot=self.name)
+        return link
 
     def joint(self, name: str) -> el.Joint:
         """The joint called ``name``.
