@@ -14,7 +14,7 @@ import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 from servicebot_cli.common.errors import (
     DescriptionError,
@@ -124,10 +124,7 @@ class RobotDescription:
     @cached_property
     def joints_by_name(self) -> dict[str, el.Joint]:
         """Each joint by name; of a name given twice (SB102), the first, as :meth:`joint`."""
-        found: dict[str, el.Joint] = {}
-        for joint in self.joints:
-            found.setdefault(joint.name, joint)
-        return found
+        return _first_by_name(self.joints)
 
     @cached_property
     def movable_joints(self) -> tuple[el.Joint, ...]:
@@ -222,10 +219,7 @@ class RobotDescription:
     @cached_property
     def links_by_name(self) -> dict[str, el.Link]:
         """Each link by name; of a name given twice (SB101), the first, as :meth:`link`."""
-        found: dict[str, el.Link] = {}
-        for link in self.links:
-            found.setdefault(link.name, link)
-        return found
+        return _first_by_name(self.links)
 
     def find_link(self, name: str | None) -> el.Link | None:
         """The link called ``name``, or None where there is none (a joint's misspelt child)."""
@@ -422,3 +416,14 @@ class RobotDescription:
         from servicebot_cli.description.joint_space import JointSpace
 
         return JointSpace.of(self.model, self.movable_joints)
+
+
+_Named = TypeVar("_Named", el.Link, el.Joint)
+
+
+def _first_by_name(items: tuple[_Named, ...]) -> dict[str, _Named]:
+    """``items`` by name, the first of a name written twice kept."""
+    found: dict[str, _Named] = {}
+    for item in items:
+        found.setdefault(item.name, item)
+    return found
