@@ -95,7 +95,7 @@ class _Checker:
         self.robot = robot
         self.sections = sections or {}
         self.controllers = frozenset(self.sections)
-        self.joints = {j.name: j for j in robot.joints}
+        self.joints = robot.joints_by_name
         self.types = controller_types(self.sections)
         self._geometry: DriveGeometry | None | str = None
         self._exported: dict[str, dict[str, list[str]]] | None = None

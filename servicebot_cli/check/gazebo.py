@@ -44,7 +44,7 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
         yield _unknown_reference(block.reference or "", names, optional, block.element)
     fixed = {joint.name for joint in robot.joints if joint.type == "fixed"}
     kept = robot.kept_apart
-    child_of = {joint.name: joint.child for joint in robot.joints}
+    child_of = {name: joint.child for name, joint in robot.joints_by_name.items()}
     links = {link.name for link in robot.links}
     for sensor in robot.sensors:
         for problem in _sensor_problems(sensor):

@@ -303,7 +303,7 @@ def _mimic_ranges(robot: RobotDescription, follows: dict[str, str]) -> Iterator[
     or of the joint's own, whichever is less (moveo's gripper: a multiplier of the wrong
     sign). MoveIt does not check a mimic joint's bounds: nothing says so there.
     """
-    by_name = {j.name: j for j in robot.joints}
+    by_name = robot.joints_by_name
     for name, target in follows.items():
         joint, followed = by_name[name], by_name[target]
         own, range_ = _bounds(joint), _bounds(followed)

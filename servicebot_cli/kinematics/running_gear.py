@@ -45,7 +45,7 @@ def chassis_joints(robot: RobotDescription, wheels: Sequence[str] = ()) -> tuple
         joint.name for joint in robot.joints
         if as_wheel(robot, joint, world) == BALL_CASTER}
     by_child = {joint.child: joint for joint in robot.joints}
-    by_name = {joint.name: joint for joint in robot.joints}
+    by_name = robot.joints_by_name
     children: dict[str, list[Joint]] = {}
     for each in robot.joints:
         if each.parent is not None:

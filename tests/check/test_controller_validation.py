@@ -111,3 +111,22 @@ def test_a_list_in_quotes_is_one_string_fixed_without_quotes(run, tmp_path):
     (only,) = found
     assert code == 1 and only["code"] == "SB608"
     assert only["fix"].endswith("] (no quotes)") and "[[" not in only["fix"]
+
+
+def test_a_joint_defined_twice_is_judged_by_its_first_definition(run, tmp_path):
+    """The URDF's 'lift' is prismatic, then (a copy left behind) fixed: the controllers'
+    joint table kept the last, and a controller of 'lift' was told it is fixed (SB606)."""
+    urdf = tmp_path / "r.urdf"
+    urdf.write_text(
+        '<robot name="r"><link name="a"/><link name="b"/><link name="c"/>'
+        '<joint name="lift" type="prismatic"><parent link="a"/><child link="b"/>'
+        '<axis xyz="0 0 1"/><limit lower="0" upper="1" effort="1" velocity="1"/></joint>'
+        '<joint name="lift" type="fixed"><parent link="b"/><child link="c"/></joint>'
+        '<ros2_control name="s" type="system"><hardware><plugin>mock_components/GenericSystem'
+        '</plugin></hardware><joint name="lift"><command_interface name="position"/>'
+        '<state_interface name="position"/></joint></ros2_control></robot>')
+    _, found = check_controllers(run, tmp_path, (
+        "controller_manager:\n  ros__parameters:\n    update_rate: 100\n"
+        "    lift_controller:\n      type: position_controllers/JointGroupPositionController\n"
+        "lift_controller:\n  ros__parameters:\n    joints: [lift]\n"), urdf)
+    assert "SB606" not in {f["code"] for f in found}, found

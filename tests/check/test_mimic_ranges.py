@@ -44,3 +44,23 @@ def test_a_mimic_within_its_limits_is_not_named(run, tmp_path, limits, mimic):
     path = _gripper(tmp_path, limits, mimic)
     result = run("check", "urdf", path, "--format", "json", "--isolated", "--select", "SB217")
     assert findings(result.stdout) == []
+
+
+def test_a_followed_joint_defined_twice_is_judged_by_its_first_definition(run, tmp_path):
+    """urdfdom refuses the file (SB102); SB217 read the second 'gear_joint', whose range
+    [0, 1.5707] the tip would leave, where every other rule reads the first."""
+    path = tmp_path / "gripper.urdf"
+    path.write_text(
+        '<robot name="g"><link name="palm"/><link name="gear"/><link name="tip"/>'
+        '<link name="spare"/>'
+        '<joint name="gear_joint" type="revolute"><parent link="palm"/><child link="gear"/>'
+        '<axis xyz="0 0 1"/><limit lower="-1.5707" upper="0" effort="1" velocity="1"/></joint>'
+        '<joint name="tip_joint" type="revolute"><parent link="gear"/><child link="tip"/>'
+        '<axis xyz="0 0 1"/><limit lower="-1.5707" upper="0" effort="1" velocity="1"/>'
+        '<mimic joint="gear_joint"/></joint>'
+        '<joint name="gear_joint" type="revolute"><parent link="palm"/><child link="spare"/>'
+        '<axis xyz="0 0 1"/><limit lower="0" upper="1.5707" effort="1" velocity="1"/></joint>'
+        "</robot>")
+    codes = [f["code"] for f in findings(run("check", "urdf", path, "--format", "json",
+                                             "--isolated").stdout)]
+    assert "SB102" in codes and "SB217" not in codes
