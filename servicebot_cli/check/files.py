@@ -184,12 +184,29 @@ def _semantic_content(path: Path) -> bool:
 
 
 def _files(directory: Path, wanted: Callable[[Path], bool]) -> Iterator[Path]:
-    for root, dirs, files in os.walk(directory):
-        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in SKIPPED_DIRS)
+    """The ``wanted`` files under ``directory``, through links to directories as colcon goes.
+
+    colcon builds a package linked into ``src/`` (it walks with ``followlinks`` and keeps
+    each real directory once): each directory is entered once, by the first way to it, so a
+    link back up the tree is no loop.
+    """
+    entered = {os.path.realpath(directory)}
+    for root, dirs, files in os.walk(directory, followlinks=True):
+        dirs[:] = [d for d in sorted(dirs) if not d.startswith(".") and d not in SKIPPED_DIRS
+                   and _first_visit(os.path.join(root, d), entered)]
         # a named pipe or a device among the files is no robot file (a stale pipe would
         # block the walk): left out, as the walk leaves out what is not a robot file
         yield from (path for name in sorted(files)
                     if wanted(path := Path(root) / name) and os.path.isfile(path))
+
+
+def _first_visit(directory: str, entered: set[str]) -> bool:
+    """Whether ``directory`` is a way into a real directory not ``entered`` yet (noted now)."""
+    real = os.path.realpath(directory)
+    if real in entered:
+        return False
+    entered.add(real)
+    return True
 
 
 def included_by(paths: list[Path]) -> set[Path]:
