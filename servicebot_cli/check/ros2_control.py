@@ -279,6 +279,24 @@ def _number_fix(text: str) -> str:
     return "write a plain decimal number (a point, no quotes or units)"
 
 
+def _slack(limit: float) -> float:
+    """How far a command limit may pass the URDF's ``limit``: the same value rounded.
+
+    DENSO's descriptions give the command limits to six decimals (-2.617994 for the URDF's
+    -2.61799387799149): the same angle, not a wider range.
+    """
+    return 1e-9 + 1e-6 * abs(limit)
+
+
+def _told_apart(value: float, limit: float) -> tuple[str, str]:
+    """``value`` and ``limit`` written with as few digits as show them different."""
+    for digits in range(6, 18):
+        shown = f"{value:.{digits}g}", f"{limit:.{digits}g}"
+        if shown[0] != shown[1]:
+            return shown
+    return repr(value), repr(limit)
+
+
 def _command_limits(item: ControlJoint, interface: Interface, joint: Joint) -> Iterator[Issue]:
     limits = joint.limits
     if limits is None:
@@ -294,10 +312,10 @@ def _command_limits(item: ControlJoint, interface: Interface, joint: Joint) -> I
     low, high = parse_float(interface.get("min")), parse_float(interface.get("max"))
     lo, hi = allowed
     outside = []
-    if low is not None and lo is not None and math.isfinite(low) and low < lo - 1e-9:
-        outside.append(f"min {low:g} < {lo:g}")
-    if high is not None and hi is not None and math.isfinite(high) and high > hi + 1e-9:
-        outside.append(f"max {high:g} > {hi:g}")
+    if low is not None and lo is not None and math.isfinite(low) and low < lo - _slack(lo):
+        outside.append("min {} < {}".format(*_told_apart(low, lo)))
+    if high is not None and hi is not None and math.isfinite(high) and high > hi + _slack(hi):
+        outside.append("max {} > {}".format(*_told_apart(high, hi)))
     if outside:
         yield Issue("SB508", f"joint '{item.name}' {interface.name} command limits go beyond "
                     f"the URDF: {'; '.join(outside)}", item.element,

@@ -71,6 +71,34 @@ def test_a_zero_velocity_limit_prints_as_0_not_minus_0(run, tmp_path):
     assert messages and all("< 0;" in m and "-0;" not in m for m in messages)
 
 
+def _arm_with_command_limits(tmp_path, low: str, high: str):
+    robot = tmp_path / "arm.urdf"
+    robot.write_text(
+        '<robot name="r"><link name="a"/><link name="b"/><joint name="j1" type="revolute">'
+        '<parent link="a"/><child link="b"/><axis xyz="0 0 1"/><limit '
+        'lower="-2.61799387799149" upper="2.61799387799149" effort="1" velocity="1"/></joint>'
+        '<ros2_control name="s" type="system"><hardware><plugin>mock_components/GenericSystem'
+        '</plugin></hardware><joint name="j1"><command_interface name="position">'
+        f'<param name="min">{low}</param><param name="max">{high}</param></command_interface>'
+        '<state_interface name="position"/></joint></ros2_control></robot>')
+    return robot
+
+
+def test_command_limits_that_round_the_urdfs_are_within_them(run, tmp_path):
+    """DENSO's descriptions give the limits to six decimals: 'min -2.61799 < -2.61799' on
+    ten joints, with the fix to write what was written."""
+    robot = _arm_with_command_limits(tmp_path, "-2.617994", "2.617994")
+    done = run("check", "urdf", robot, "--format", "json", "--isolated", "--select", "SB508")
+    assert findings(done.stdout) == []
+
+
+def test_command_limits_just_beyond_the_urdfs_show_the_digits_that_differ(run, tmp_path):
+    robot = _arm_with_command_limits(tmp_path, "-2.617997", "2.61799387799149")
+    done = run("check", "urdf", robot, "--format", "json", "--isolated", "--select", "SB508")
+    (found,) = findings(done.stdout)
+    assert found["message"].endswith("URDF: min -2.618 < -2.61799")
+
+
 def test_a_joint_to_a_missing_link_is_one_finding_not_two(run, tmp_path):
     """drake's strandbeest: joint floor_weld joins 'floor' to a 'world' the file lacks. That
     is SB103 on the joint; 'floor' is not also 'connected to nothing' (a joint names it)."""
