@@ -100,6 +100,8 @@ BREAKS: dict[str, str] = {
              "manager and Gazebo's ros2_control plugins do not start",
     "SB513": "sdformat's conversion of the URDF throws (std::invalid_argument): Gazebo "
              "spawns nothing of the robot",
+    "SB516": "Gazebo drives the robot at another speed and turn rate than commanded, and "
+             "the plugin's encoder odometry drifts",
     "SB601": "the controller manager refuses parameters that are not valid YAML",
     "SB602": "the controller fails to configure: the joint's interfaces do not exist",
     "SB603": "diff_drive_controller accepts it and drives at the wrong speed and odometry",

@@ -97,6 +97,16 @@ ROS_RULES = (
          "<mimic> is refused too. Humble ignores both, so a warning.",
          "Drop the mimic joint's command interfaces, or put its leader in the same "
          "component."),
+    Rule("SB516", "plugin-wheel-geometry", E,
+         "A Gazebo diff-drive plugin's wheel numbers disagree with the URDF's wheels",
+         "Gazebo's diff-drive plugins (Classic's gazebo_ros_diff_drive, gz-sim's DiffDrive) "
+         "make wheel speeds from their own <wheel_separation> and <wheel_diameter> (gz: "
+         "<wheel_radius>), or their defaults (0.34 m and 0.15 m; gz: 1 m and 0.2 m) where "
+         "not written; the URDF's wheels roll the robot. Beyond 10 % an error; from 1 to "
+         "10 % a warning, since teams calibrate odometry to the floor that way; on a base "
+         "with two or more wheels a side, a wider track (up to twice the wheels') is its "
+         "effective one: a warning.",
+         "Write the value the URDF's wheels imply, or fix the URDF."),
     Rule("SB601", "controllers-yaml", E, "The controllers YAML cannot be read",
          "Not YAML, or not the shape of a ros2_control parameters file "
          "(controller: ros__parameters: ...).",

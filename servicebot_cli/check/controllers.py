@@ -24,6 +24,7 @@ from servicebot_cli.check.controller_sections import (
 )
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.ros2_control import GAZEBO_PID, exported_as, exports_as_listed
+from servicebot_cli.check.wheel_numbers import mismatch
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
 from servicebot_cli.common.listing import some_of
 
@@ -34,12 +35,6 @@ if TYPE_CHECKING:
     from servicebot_cli.kinematics.wheel_joints import Wheel
 
 _PID = "pid_controller/PidController"
-TOLERANCE = 0.01
-"""Relative difference allowed between the YAML and the URDF's wheel numbers."""
-CALIBRATED = 0.10
-"""Within this, a wheel value off the URDF's may be odometry calibrated to the floor: a warning."""
-SKID_TRACK = 2.0
-"""A skid-steer base's effective track may be up to this times its wheels' (a warning)."""
 
 ROS2_CONTROLLERS = frozenset((
     "ackermann_steering_controller", "admittance_controller", "bicycle_steering_controller",
@@ -447,7 +442,7 @@ class _Checker:
         """SB603/SB604 where ``key`` is not the URDF's ``expected``.
 
         ``skid``: the robot has two or more wheels a side, which skid when it turns; a
-        wider effective track, up to :data:`SKID_TRACK` times the wheels', is how its
+        wider effective track, up to twice the wheels' (:mod:`.wheel_numbers`), is how its
         odometry is calibrated (Clearpath's Warthog writes 1.5 m on a 1.14 m track, the
         Jackal multiplies by 1.5): a warning.
         """
@@ -465,20 +460,12 @@ class _Checker:
             effective *= _number(get(params, multiplier)) or 1.0
         # A multiplier calibrates the geometric value to the floor (a skid-steer robot turns
         # as if its wheels were further apart): either may match the URDF's geometry.
-        off = min(abs(value - expected) for value in (given, effective))
-        if off <= TOLERANCE * abs(expected):
+        off = mismatch((given, effective), expected, skid)
+        if off is None:
             return
-        # A few per cent is how teams calibrate odometry to the floor (limo's 0.172 m on its
-        # wheels' 0.175 m); past that, the wrong wheels or the wrong unit.
-        calibrated = off <= CALIBRATED * abs(expected)
-        skidding = skid and expected < max(given, effective) <= SKID_TRACK * expected
         yield Issue(code, f"{section}: {key} {_stated(given, effective, expected)} "
-                    f"disagrees with the URDF's {expected:.6g} m"
-                    + (" (a calibration to the floor, if on purpose)" if calibrated else
-                       " (a skid-steer base's effective track, if on purpose)" if skidding
-                       else ""),
-                    where=self.where(node), fix=f"{key}: {expected:.6g}",
-                    severity=Severity.WARNING if calibrated or skidding else None)
+                    f"disagrees with the URDF's {expected:.6g} m{off.purpose}",
+                    where=self.where(node), fix=f"{key}: {expected:.6g}", severity=off.severity)
 
 
 def _track_m(wheels: Sequence[Wheel]) -> float | None:

@@ -169,6 +169,7 @@ def _unreadable(exc: DescriptionError, source: RobotSource) -> bool:
 def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Iterator[Issue]:
     """Every rule family but the model, skipping families with no selected rule."""
     from servicebot_cli.check import (
+        drive_plugins,
         gazebo,
         geometry,
         inertia,
@@ -204,6 +205,7 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
         (("SB409",), lambda: packages.find_issues(robot, env.search)),
         (("SB50", "SB513"), lambda: gazebo.check(robot)),
         (("SB5",), lambda: ros2_control.check(robot)),
+        (("SB516",), lambda: drive_plugins.check(robot)),
         (("SB511",), lambda: transmissions.check(robot)),
     ]
     for prefixes, family in families:

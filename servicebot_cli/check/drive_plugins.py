@@ -1,0 +1,88 @@
+"""SB516: a Gazebo diff-drive plugin's wheel numbers against the URDF's wheels.
+
+The plugin makes wheel speeds from its own separation and radius (written, or its defaults:
+:mod:`~servicebot_cli.description.drive_plugin_wheels`) and the URDF's wheels roll the robot:
+other numbers drive it at another speed and turn rate than commanded, and its encoder
+odometry drifts. Measured as a diff_drive_controller's are (:mod:`.wheel_numbers`).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.wheel_numbers import mismatch
+from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.description.drive_plugin_wheels import PluginValue, plugin_wheels
+
+if TYPE_CHECKING:
+    from servicebot_cli.description.extensions import Plugin
+    from servicebot_cli.description.robot import RobotDescription
+    from servicebot_cli.kinematics.drive_geometry import DriveGeometry
+
+_WHEEL_KEYS = ("left_joint", "right_joint", "leftJoint", "rightJoint")
+_OWN_DEFAULTS = "skid_steer"
+"""The ROS 1 skid-steer drive has defaults of its own: its numbers are judged where written."""
+
+
+def check(robot: RobotDescription) -> Iterator[Issue]:
+    """SB516 for each diff-drive plugin whose wheel numbers are not the URDF's wheels'."""
+    plugins = [(p, numbers) for p in robot.model_plugins
+               if (numbers := plugin_wheels(p)) is not None]
+    if not plugins:
+        return
+    from servicebot_cli.kinematics.drive_geometry import drive_geometry
+
+    try:
+        geometry = drive_geometry(robot)
+    except DescriptionError:  # no wheels on both sides: inspect and simulate say why
+        return
+    for plugin, numbers in plugins:
+        radius_m, track_m, skid = _driven(plugin, geometry)
+        defaults = _OWN_DEFAULTS not in plugin.filename
+        yield from _judged(plugin, numbers.separation, track_m, "apart", skid, defaults)
+        if not math.isnan(radius_m):  # mesh wheels: no radius to compare with
+            yield from _judged(plugin, numbers.radius, radius_m, "radius", False, defaults)
+
+
+def _driven(plugin: Plugin, geometry: DriveGeometry) -> tuple[float, float, bool]:
+    """Radius and track of the wheels the plugin drives, and whether they skid as it turns.
+
+    The wheels it names; all the URDF's drive wheels where it names none on a side. Two or
+    more a side skid.
+    """
+    named = {value for key, value in plugin.params if key in _WHEEL_KEYS}
+    wheels = [w for w in geometry.wheels if w.joint in named]
+    sides = [[w for w in wheels if w.side == side] for side in ("left", "right")]
+    if not all(sides):
+        wheels = list(geometry.wheels)
+        sides = [[w for w in wheels if w.side == side] for side in ("left", "right")]
+    track_m = (sum(w.position_m[1] for w in sides[0]) / len(sides[0])
+               - sum(w.position_m[1] for w in sides[1]) / len(sides[1]))
+    radius_m = sum(w.radius_m for w in wheels) / len(wheels)
+    return radius_m, track_m, min(len(side) for side in sides) >= 2
+
+
+def _judged(plugin: Plugin, number: PluginValue, expected_m: float, measure: str, skid: bool,
+            defaults: bool) -> Iterator[Issue]:
+    if math.isnan(number.value_m) or not (number.given or defaults):
+        return  # not a number (SB513); or a default this rule does not know
+    diameter = number.key.lower().endswith("diameter")
+    value_m, expected_shown = ((2 * number.value_m, 2 * expected_m) if diameter
+                               else (number.value_m, expected_m))
+    off = mismatch((value_m,), expected_shown, skid)
+    if off is None:
+        return
+    element = plugin.element.find(number.key) if plugin.element is not None else None
+    urdf = (f"the URDF's wheels are {expected_shown:.6g} m apart" if measure == "apart" else
+            f"the URDF's wheel {'diameter' if diameter else 'radius'} is {expected_shown:.6g} m")
+    said = (f"<{number.key}> {value_m:g} m" if number.given
+            else f"<{number.key}> is not written: the plugin's default {value_m:g} m")
+    effect = "turns at another rate" if measure == "apart" else "drives at another speed"
+    yield Issue("SB516", f"Gazebo plugin '{plugin.filename or plugin.name}': {said}, where "
+                f"{urdf}{off.purpose}: the robot {effect} than commanded, and its encoder "
+                "odometry drifts", element if element is not None else plugin.element,
+                fix=f"<{number.key}>{expected_shown:.6g}</{number.key}>",
+                severity=off.severity)
