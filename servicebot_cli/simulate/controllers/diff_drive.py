@@ -104,7 +104,9 @@ class WheelPlanner:
             c.min_angular_jerk_rad_s3, c.max_angular_jerk_rad_s3), self.dt_s)
         self.ramp = None
         if classic_drive is not None and classic_drive.wheel_acceleration_m_s2 > 0:
-            self.ramp = WheelRamp(classic_drive, self.dt_s, geometry.wheel_radius_m)
+            # the plugin turns wheel speeds into surface speeds with its own radius
+            self.ramp = WheelRamp(classic_drive, self.dt_s,
+                                  ControllerWheels.of(controller, geometry).left_radius_m)
 
     def plan(self, ticks: range) -> WheelPlan:
         """The plan of ``ticks``, which must follow the ticks planned before."""

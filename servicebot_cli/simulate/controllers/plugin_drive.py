@@ -22,6 +22,8 @@ rate, with its limits and covariances:
   ``<max_angular_acceleration>``, and so on; a minimum it is not given stays unbounded
   (gz-math's ``SpeedLimiter``, not diff_drive_controller's mirror).
 
+Both make wheel speeds from their own separation and radius, written or their defaults
+(:mod:`~servicebot_cli.description.drive_plugin_wheels`); the URDF's wheels roll the robot.
 Neither plugin times a command out: the last one holds until the next. The odometry topic
 is the one ``inspect`` lists for the plugin (its ROS namespace and
 remapping; a gz ``<odom_topic>``, else ``/model/MODEL/odometry`` with MODEL the robot's
@@ -34,6 +36,7 @@ import dataclasses
 import math
 from typing import TYPE_CHECKING, Any
 
+from servicebot_cli.description.drive_plugin_wheels import plugin_wheels
 from servicebot_cli.description.extensions import Plugin, param
 from servicebot_cli.description.model_plugins import (
     ODOMETRY,
@@ -130,6 +133,7 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
         if rate > 0:
             values["publish_rate_hz"] = rate
         values.update(_gz_limits(plugin, where))
+    values.update(_wheels(plugin))
     topic = next((name for direction, name, message, _ in model_plugin_rows(plugin)
                   if direction == "out" and message == ODOMETRY), None)
     if topic is not None:
@@ -142,6 +146,22 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
                            speed_limiter=DIFF_DRIVE_CONTROLLER if classic else GZ_MATH,
                            classic_drive=classic_drive,
                            wheel_tf_joints=_wheel_tf(robot, plugin))
+
+
+def _wheels(plugin: Plugin) -> dict[str, float]:
+    """The separation and radius the plugin makes wheel speeds with, written or its defaults.
+
+    The ROS 1 skid-steer drive's defaults are its own: only what it writes is taken, and the
+    URDF's wheels stand in for the rest. A value that is no number was refused above.
+    """
+    numbers = plugin_wheels(plugin)
+    if numbers is None:
+        return {}
+    defaults = "skid_steer" not in plugin.filename
+    return {field: number.value_m
+            for field, number in (("wheel_separation_m", numbers.separation),
+                                  ("wheel_radius_m", numbers.radius))
+            if (number.given or defaults) and math.isfinite(number.value_m)}
 
 
 def _wheel_tf(robot: RobotDescription, plugin: Plugin) -> tuple[str, ...]:
