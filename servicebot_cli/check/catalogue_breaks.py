@@ -102,6 +102,8 @@ BREAKS: dict[str, str] = {
              "spawns nothing of the robot",
     "SB516": "Gazebo drives the robot at another speed and turn rate than commanded, and "
              "the plugin's encoder odometry drifts",
+    "SB517": "ros2_control's parser or resource manager refuses the robot: the controller "
+             "manager and Gazebo's ros2_control plugins do not start",
     "SB601": "the controller manager refuses parameters that are not valid YAML",
     "SB602": "the controller fails to configure: the joint's interfaces do not exist",
     "SB603": "diff_drive_controller accepts it and drives at the wrong speed and odometry",

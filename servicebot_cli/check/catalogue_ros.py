@@ -107,6 +107,13 @@ ROS_RULES = (
          "with two or more wheels a side, a wider track (up to twice the wheels') is its "
          "effective one: a warning.",
          "Write the value the URDF's wheels imply, or fix the URDF."),
+    Rule("SB517", "control-markup", E, "<ros2_control> markup ros2_control's parser refuses",
+         "ros2_control's component parser throws on a <ros2_control> without name or type, "
+         "and on a joint, sensor, gpio, interface or <param> without a name; the resource "
+         "manager refuses two components of one name and loads only system, actuator and "
+         "sensor components (Gazebo's ros2_control plugins load any as a system: there a "
+         "warning). No controller runs.",
+         "Add the attribute, rename one of the components, or fix the type."),
     Rule("SB601", "controllers-yaml", E, "The controllers YAML cannot be read",
          "Not YAML, or not the shape of a ros2_control parameters file "
          "(controller: ros__parameters: ...).",

@@ -1,4 +1,4 @@
-"""ros2_control rules: SB504-SB510, SB512, SB514 and SB515.
+"""ros2_control rules: SB504-SB510, SB512, SB514, SB515 and (:mod:`.ros2_control_markup`) SB517.
 
 Transmissions (SB511) are in :mod:`transmissions`.
 """
@@ -12,6 +12,7 @@ import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
+from servicebot_cli.check import ros2_control_markup
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.values import is_number
 from servicebot_cli.common.errors import JointNotFound
@@ -68,6 +69,7 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     joints = robot.joints_by_name  # a name given twice (SB102): the first
     owner: dict[tuple[str, str, str], str] = {}
     simulator = _simulator(robot)
+    yield from ros2_control_markup.check(robot.ros2_control, simulator)
     for block in robot.ros2_control:
         if not block.plugin:
             yield _no_plugin(block, simulator)
@@ -116,8 +118,15 @@ def _mimics(block: Ros2Control, joints: dict[str, Joint]) -> Iterator[Issue]:
         if element is None or element.tag != "joint" or item.name not in joints:
             continue
         urdf_mimic = joints[item.name].mimic
-        said = (element.get("mimic") or "").strip().lower()
+        written = element.get("mimic")
+        said = (written or "").strip().lower()
         problem = None
+        if written is not None and said not in ("true", "false"):
+            yield Issue("SB515", f"ros2_control '{block.name}': joint '{item.name}' has "
+                        f"mimic=\"{written}\": ros2_control reads only true or false (recent "
+                        "releases refuse the robot; older ones take anything else for false)",
+                        element, fix='mimic="true" or mimic="false"')
+            continue
         if urdf_mimic is None and said == "true":
             problem = "has mimic=\"true\", but no <mimic> in the URDF"
         elif urdf_mimic is not None and said != "false":
