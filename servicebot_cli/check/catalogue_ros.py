@@ -170,7 +170,9 @@ ROS_RULES = (
          "is a letter or two off a controller controller_manager declares configures "
          "nothing, and that controller starts with no parameters (an error where it needs "
          "some); a declared controller with no section in a file that configures others "
-         "is a warning (another file may give its parameters).",
+         "is a warning (another file may give its parameters). controller_manager's own "
+         "update_rate is an integer (above 0 from Jazzy on): another type stops the node; a "
+         "controller it declares with no type, given nowhere, it cannot load.",
          "Write the value in the declared type: 1.0 for a double, no quotes for a number, a "
          "list for an array."),
     # -- model -----------------------------------------------------------------------------------

@@ -212,7 +212,12 @@ def _checked(sources: list[tuple[RobotSource, bool]], targets: UrdfTargets,
 
 def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[FileReport]:
     """A report per URDF the controllers YAML is checked against."""
-    from servicebot_cli.check import controller_params, controller_sections, controllers
+    from servicebot_cli.check import (
+        controller_manager_params,
+        controller_params,
+        controller_sections,
+        controllers,
+    )
     from servicebot_cli.common.inputs import display_path, read_input_text
     from servicebot_cli.description.ros_parameters import MAX_PARAMETERS_BYTES
 
@@ -227,7 +232,8 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
         return [FileReport(display, tuple(place_issues(robot, [found], settings)))]
     reports = []
     whole_file = [*controller_sections.file_issues(text, display),  # said once, in the first
-                  *controller_params.parameter_issues(found, display)]
+                  *controller_params.parameter_issues(found, display),
+                  *controller_manager_params.manager_issues(found, display)]
     for source in sources:
         robot = read_description(source)
         issues = [*whole_file, *controllers.check(found, display, robot)]

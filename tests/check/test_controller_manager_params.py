@@ -1,0 +1,56 @@
+"""SB608 for controller_manager's own parameters and for a controller declared without a type.
+
+controller_manager declares update_rate an integer (above 0 from Jazzy on): '100' quoted,
+100.0 or 'fast' stop the node at start; a controller declared as 'name: {}', typed nowhere,
+cannot be loaded ("The 'type' param was not defined"). check passed each of them.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.check.helpers import check_controllers
+
+_BASE = ("controller_manager:\n  ros__parameters:\n    update_rate: {rate}\n"
+         "    joint_state_broadcaster:\n      type: joint_state_broadcaster/JointStateBroadcaster\n"
+         "{more}")
+
+
+def _sb608(run, tmp_path, rate: str = "100", more: str = ""):
+    _, found = check_controllers(run, tmp_path, _BASE.format(rate=rate, more=more))
+    return [(f["severity"], f["message"], f["fix"]) for f in found if f["code"] == "SB608"]
+
+
+def test_an_integer_rate_and_typed_controllers_pass(run, tmp_path):
+    assert _sb608(run, tmp_path, more="    hardware_components_initial_state:\n"
+                  "      unconfigured: [arm]\n") == []
+
+
+@pytest.mark.parametrize(("rate", "read", "fix"), [
+    ('"100"', "'100' as a string", "update_rate: 100"),
+    ("100.0", "'100.0' as a double", "update_rate: 100"),
+    ("fast", "'fast' as a string", "update_rate: 100"),
+])
+def test_a_rate_that_is_no_integer_stops_the_node(run, tmp_path, rate, read, fix):
+    ((severity, message, given_fix),) = _sb608(run, tmp_path, rate)
+    assert severity == "error" and f"controller_manager.update_rate: rcl reads {read}" in message
+    assert given_fix == fix
+
+
+def test_a_rate_of_zero_or_less(run, tmp_path):
+    ((_, message, _),) = _sb608(run, tmp_path, "-5")
+    assert "from Jazzy on the controller manager wants a rate above 0" in message
+
+
+def test_a_controller_declared_without_a_type(run, tmp_path):
+    ((severity, message, fix),) = _sb608(run, tmp_path, more="    velocity_controller: {}\n")
+    assert severity == "error"
+    assert "declares 'velocity_controller' without a type" in message
+    assert fix == "write velocity_controller: {type: package/ControllerClass}"
+
+
+def test_a_type_in_the_controllers_own_section_is_its_type(run, tmp_path):
+    more = ("    velocity_controller: {}\nvelocity_controller:\n  ros__parameters:\n"
+            "    type: velocity_controllers/JointGroupVelocityController\n"
+            "    joints: [left_wheel_joint]\n")
+    assert [m for _, m, _ in _sb608(run, tmp_path, more=more) if "without a type" in m] == []
