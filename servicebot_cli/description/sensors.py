@@ -242,7 +242,8 @@ def plugin_topic(plugin: Plugin, default: str, ros1: str = "topicName", within: 
     ``<ros><namespace>``, ``<ros><argument>`` and ``<ros><remapping>`` rules). A ROS 1 plugin
     (gazebo_ros_pkgs before ROS 2, as TurtleBot3's URDF still writes them) names its topic in
     ``ros1`` (``<topicName>``; under ``within``, a camera's name) and its namespace in
-    ``<robotNamespace>``. The name has no leading ``/`` unless one was written absolute.
+    ``<robotNamespace>``. The name has no leading ``/`` unless it, or the ``<ros><namespace>``
+    it is put in, was written absolute (``/demo``: ``/demo/imu``).
     """
     node = PluginNode.of(plugin)
     topic = node.remapped(default)
@@ -259,7 +260,9 @@ def plugin_topic(plugin: Plugin, default: str, ros1: str = "topicName", within: 
         return re.sub("/{2,}", "/", full).rstrip("/") or full
     written = default if topic is None else topic
     full = node.expand(written)
-    return full if written.startswith("/") else full[1:]
+    # a topic under a namespace written absolute is absolute, as the model plugins' are
+    rooted = (param(plugin.params, "ros/namespace") or "").strip().startswith("/")
+    return full if written.startswith("/") or rooted else full[1:]
 
 
 _SENSOR_FRAME_ID = frozenset(("libgazebo_ros_ray_sensor.so", "libgazebo_ros_camera.so",

@@ -23,9 +23,9 @@ def _contact(name: str, plugin: str) -> str:
 
 
 @pytest.mark.parametrize(("plugin", "topic"), [
-    ("<ros><namespace>/b</namespace></ros><frame_name>base</frame_name>", "b/bumper_states"),
+    ("<ros><namespace>/b</namespace></ros><frame_name>base</frame_name>", "/b/bumper_states"),
     ("<ros><namespace>/b</namespace><remapping>bumper_states:=foot_bumper</remapping></ros>",
-     "b/foot_bumper"),
+     "/b/foot_bumper"),
     ("<bumperTopicName>/hyq/lf_foot_bumper</bumperTopicName><frameName>world</frameName>",
      "/hyq/lf_foot_bumper"),
 ])
