@@ -176,7 +176,34 @@ def _rate(sensor: Sensor) -> Iterator[Issue]:
                 fix="write the rate in Hz, or 0 for every simulation step")
 
 
+_BELONGS_IN = (
+    (specs.CAMERA_TYPES, "camera", ("horizontal_fov", "image", "clip", "distortion", "lens",
+                                    "depth_camera", "save"),
+     "the default camera (320 x 240, horizontal_fov 1.047, clip 0.1 to 100 m)"),
+    (specs.LIDAR_TYPES, "ray> or <lidar", ("scan", "range"),
+     "sdformat's default rays (640 samples, all at 0 rad, range 0 m)"),
+    (("imu",), "imu", ("angular_velocity", "linear_acceleration"), "an IMU without noise"),
+)
+"""Elements of a sensor type sdformat reads only inside its own element: written directly
+under <sensor> (bcr_bot's stereo camera), sdformat warns 'not defined in SDF', keeps them as
+unknown children and gives the sensor its defaults."""
+
+
+def _misplaced(sensor: Sensor) -> Iterator[str]:
+    for types, home, names, defaults in _BELONGS_IN:
+        if sensor.type not in types:
+            continue
+        tops = dict.fromkeys(key.split("/")[0].split("@")[0] for key, _ in sensor.params)
+        found = [name for name in tops if name in names]
+        if found:
+            listed = ", ".join(f"<{name}>" for name in found)
+            yield (f"{listed} directly under <sensor>: sdformat reads "
+                   f"{'it' if len(found) == 1 else 'them'} only inside <{home}>, so Gazebo "
+                   f"runs {defaults}")
+
+
 def _sensor_problems(sensor: Sensor) -> Iterator[str]:
+    yield from _misplaced(sensor)
     if sensor.type in specs.LIDAR_TYPES:
         yield from _lidar(sensor)
     elif sensor.type in specs.CAMERA_TYPES:

@@ -191,3 +191,22 @@ def test_a_gazebo_block_inside_a_link_and_a_sensor_on_a_joint_are_found(run, tmp
     assert found["SB502"]["message"].startswith(
         "sensor 'lidar' (ray) is in <gazebo reference=\"lidar_joint\">, a joint: ")
     assert found["SB502"]["fix"].startswith('<gazebo reference="lidar_link">')
+
+
+def test_camera_settings_outside_camera_leave_gazebo_its_default_camera(run, tmp_path):
+    """bcr_bot's stereo camera: <horizontal_fov>, <image> and <clip> directly under <sensor>.
+    sdformat reads them only inside <camera>: Gazebo ran a 320 x 240 camera, check passed."""
+    camera = ('<gazebo reference="base_link"><sensor name="cam" type="camera">{inside}'
+              '</sensor></gazebo>')
+    settings = ("<horizontal_fov>1.5</horizontal_fov><image><width>1024</width><height>1024"
+                "</height></image><clip><near>0.1</near><far>10</far></clip>")
+    assert _found(run, tmp_path, camera.format(inside=f"<camera>{settings}</camera>"))[1] == []
+    messages = [m for _, _, m in _found(run, tmp_path, camera.format(inside=settings))[1]]
+    assert messages == ["sensor 'cam': <horizontal_fov>, <image>, <clip> directly under "
+                        "<sensor>: sdformat reads them only inside <camera>, so Gazebo runs "
+                        "the default camera (320 x 240, horizontal_fov 1.047, clip 0.1 to 100 m)"]
+    lidar = ('<gazebo reference="base_link"><sensor name="scan" type="ray"><scan><horizontal>'
+             "<samples>360</samples></horizontal></scan></sensor></gazebo>")
+    (message,) = [m for _, _, m in _found(run, tmp_path, lidar)[1]]
+    assert message.startswith("sensor 'scan': <scan> directly under <sensor>: sdformat reads "
+                              "it only inside <ray> or <lidar>")
