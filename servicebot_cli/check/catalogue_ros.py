@@ -114,6 +114,12 @@ ROS_RULES = (
          "sensor components (Gazebo's ros2_control plugins load any as a system: there a "
          "warning). No controller runs.",
          "Add the attribute, rename one of the components, or fix the type."),
+    Rule("SB518", "plugin-ros-element", W,
+         "An element in a Gazebo ROS plugin's <ros> that gazebo_ros does not read",
+         "gazebo_ros' node reads <namespace>, <remapping>, <argument>, <parameter> and <qos> in "
+         "a ROS 2 plugin's <ros>; anything else (roslaunch's <remap from to>) does nothing, "
+         "and the plugin keeps the names it would have without it.",
+         "Write a remapping as <remapping>FROM:=TO</remapping>."),
     Rule("SB601", "controllers-yaml", E, "The controllers YAML cannot be read",
          "Not YAML, or not the shape of a ros2_control parameters file "
          "(controller: ros__parameters: ...).",

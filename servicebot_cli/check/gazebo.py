@@ -1,6 +1,7 @@
 """Gazebo rules: references name real parts, sensors are sane, one simulator, numbers.
 
-SB501-SB503, and SB513 for settings sdformat reads as numbers.
+SB501-SB503, SB513 for settings sdformat reads as numbers, and SB518 for what a plugin's
+``<ros>`` holds that gazebo_ros does not read.
 """
 
 from __future__ import annotations
@@ -67,6 +68,7 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
                             f"(Gazebo Classic) to <gazebo reference=\"{sensor.reference}\">")
     yield from _mixed(robot)
     yield from _numbers(robot)
+    yield from _ros_elements(robot)
 
 
 # what sdformat's URDF converter reads with std::stod or std::stoi (parser_urdf.cc), which
@@ -187,6 +189,30 @@ _BELONGS_IN = (
 """Elements of a sensor type sdformat reads only inside its own element: written directly
 under <sensor> (bcr_bot's stereo camera), sdformat warns 'not defined in SDF', keeps them as
 unknown children and gives the sensor its defaults."""
+
+
+_ROS_NODE = ("namespace", "remapping", "argument", "parameter", "qos")
+"""What gazebo_ros::Node reads in a ROS 2 plugin's <ros> (gazebo_ros' node.cpp, qos.cpp)."""
+
+
+def _ros_elements(robot: RobotDescription) -> Iterator[Issue]:
+    """SB518: an element in a plugin's ``<ros>`` that gazebo_ros does not read.
+
+    sam_bot's ``<remap from="cmd_vel" to="/cmd_vel"/>`` (roslaunch's form): the plugin
+    listens on /demo/cmd_vel, not the /cmd_vel its author meant.
+    """
+    for plugin in robot.plugins:
+        ros = plugin.element.find("ros") if plugin.element is not None else None
+        for child in ros if ros is not None else ():
+            if not isinstance(child.tag, str) or child.tag in _ROS_NODE:
+                continue
+            fix = "write it <remapping>FROM:=TO</remapping>" if child.tag == "remap" else \
+                f"use one of {', '.join(f'<{name}>' for name in _ROS_NODE)}"
+            if child.tag == "remap" and child.get("from") and child.get("to"):
+                fix = f"write <remapping>{child.get('from')}:={child.get('to')}</remapping>"
+            yield Issue("SB518", f"plugin '{plugin.filename or plugin.name}': <{child.tag}> in "
+                        f"<ros>: gazebo_ros reads only {', '.join(f'<{n}>' for n in _ROS_NODE)} "
+                        "there, so it does nothing", child, fix=fix)
 
 
 def _misplaced(sensor: Sensor) -> Iterator[str]:

@@ -203,7 +203,7 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
         (("SB2",), lambda: joints.check(robot)), (("SB3",), lambda: inertia.check(robot, env)),
         (("SB4",), lambda: geometry.check(robot, env)),
         (("SB409",), lambda: packages.find_issues(robot, env.search)),
-        (("SB50", "SB513"), lambda: gazebo.check(robot)),
+        (("SB50", "SB513", "SB518"), lambda: gazebo.check(robot)),
         (("SB5",), lambda: ros2_control.check(robot)),
         (("SB516",), lambda: drive_plugins.check(robot)),
         (("SB511",), lambda: transmissions.check(robot)),

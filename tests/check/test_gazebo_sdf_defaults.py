@@ -210,3 +210,20 @@ def test_camera_settings_outside_camera_leave_gazebo_its_default_camera(run, tmp
     (message,) = [m for _, _, m in _found(run, tmp_path, lidar)[1]]
     assert message.startswith("sensor 'scan': <scan> directly under <sensor>: sdformat reads "
                               "it only inside <ray> or <lidar>")
+
+
+def test_a_roslaunch_remap_in_a_plugins_ros_does_nothing(run, tmp_path):
+    """sam_bot: <remap from="cmd_vel" to="/cmd_vel"/> in the diff drive's <ros>; gazebo_ros
+    reads <remapping>, so the plugin listens on /demo/cmd_vel."""
+    plugin = ('<gazebo><plugin name="d" filename="libgazebo_ros_joint_state_publisher.so"><ros>'
+              '<namespace>/demo</namespace>{inside}</ros></plugin></gazebo>')
+    assert _found(run, tmp_path, plugin.format(
+        inside="<remapping>joint_states:=/joint_states</remapping><qos/>"))[1] == []
+    path = tmp_path / "r.urdf"
+    path.write_text(ROBOT.format(gazebo=plugin.format(
+        inside='<remap from="joint_states" to="/joint_states"/>')))
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB518")
+    ((severity, message, fix),) = [(f["severity"], f["message"], f["fix"])
+                                   for f in findings(result.stdout)]
+    assert severity == "warning" and "<remap> in <ros>: gazebo_ros reads only" in message
+    assert fix == "write <remapping>joint_states:=/joint_states</remapping>"
