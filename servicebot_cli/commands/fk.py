@@ -33,7 +33,8 @@ MOST_BASE_M = 1e6
 @robot_arguments()
 @click.option("-j", "--joint", "joints", type=JointValue(), multiple=True, metavar="NAME=VALUE",
               help="A joint's value [rad, or deg with --deg; m for prismatic joints] "
-              "(repeatable; unnamed joints stay at zero).")
+              "(repeatable; unnamed joints stay at zero, and a <mimic> joint follows its "
+              "leader unless given).")
 @click.option("-f", "--frame", "frames", type=FrameName(), multiple=True, metavar="FRAME",
               help="A frame (link) to place (repeatable; default: the arm's tool frame).")
 @click.option("--relative-to", type=FrameName(), metavar="FRAME", default=None,

@@ -133,10 +133,19 @@ def run(request: FkRequest) -> FkResult:
     robot = load(query.robot)
     frames, reference, notes = resolve_frames(robot, query)
     space = robot.joint_space
+    mimics = Mimics.of(robot.joints, space)
     values, clamped = clamped_user_vector(space, request.joints, deg=query.deg,
-                                          clamp=query.clamp,
-                                          mimics=Mimics.of(robot.joints, space),
+                                          clamp=query.clamp, mimics=mimics,
                                           fixed=robot.unvalued_joints)
+    shown = user_values(space, values, deg=query.deg)
+    for follower, leader, made in mimics.overridden(values, (n for n, _ in request.joints),
+                                                    space):
+        as_made = values.copy()
+        as_made[space.index(follower)] = made
+        made_shown = user_values(space, as_made, deg=query.deg)[follower]
+        notes += (f"note: joint '{follower}' follows '{leader}' (<mimic>), which makes it "
+                  f"{made_shown:g}; the {shown[follower]:g} given is used, as "
+                  "robot_state_publisher takes a value from joint_states",)
     outside = unnamed_outside(space, values)
     if outside:
         notes += (f"note: {', '.join(outside)} not given: 0, outside the limits "
@@ -147,6 +156,5 @@ def run(request: FkRequest) -> FkResult:
     if in_world is not None:
         reference = WORLD
         poses = [FramePose(p.frame, WORLD, in_world @ p.matrix) for p in poses]
-    return FkResult(robot.name, reference, tuple(poses),
-                    user_values(space, values, deg=query.deg), query.deg, query.all_frames,
+    return FkResult(robot.name, reference, tuple(poses), shown, query.deg, query.all_frames,
                     notes + tuple(c.note() for c in clamped))

@@ -75,6 +75,21 @@ class Mimics:
             values[..., f] = k * values[..., lead] + c
         return values
 
+    def overridden(self, values: FloatArray, named: Iterable[str],
+                   space: JointSpace) -> list[tuple[str, str, float]]:
+        """Each follower given a value its ``<mimic>`` does not make, its leader, that value.
+
+        Values in the joint space's units (radians, metres).
+        """
+        given = set(named)
+        out = []
+        for f, lead, k, c in zip(self.follower, self.leader, self.multiplier, self.offset,
+                                 strict=True):
+            made = k * values[lead] + c
+            if space.names[f] in given and abs(values[f] - made) > 1e-9:
+                out.append((space.names[f], space.names[lead], float(made)))
+        return out
+
     def apply(self, values: FloatArray, named: Iterable[str], space: JointSpace) -> FloatArray:
         """``values`` with every follower the user did not name set from its leader."""
         given = set(named)

@@ -108,6 +108,23 @@ def test_mimic_joints_follow_and_unnamed_joints_outside_limits_are_noted(run):
                              "(give panda_joint4=VALUE for a reachable pose)\n")
 
 
+def test_a_mimic_joint_given_a_value_the_mimic_does_not_make_is_noted(run):
+    """A joint_states snapshot may give the followers too: used as given, as
+    robot_state_publisher does, where it agrees silently, and where not with a note (it was
+    used with none)."""
+    agrees = run("fk", PANDA, "-j", "panda_joint4=-1", "-j", "panda_finger_joint1=0.03",
+                 "-j", "panda_finger_joint2=0.03", "-f", "panda_rightfinger",
+                 "--relative-to", "panda_hand", "--format", "json")
+    assert agrees.stderr == ""
+    result = run("fk", PANDA, "-j", "panda_joint4=-1", "-j", "panda_finger_joint1=0.03",
+                 "-j", "panda_finger_joint2=0.01", "-f", "panda_rightfinger",
+                 "--relative-to", "panda_hand", "--format", "json")
+    assert json.loads(result.stdout)["poses"][0]["position_m"][1] == pytest.approx(-0.01)
+    assert result.stderr == ("note: joint 'panda_finger_joint2' follows 'panda_finger_joint1' "
+                             "(<mimic>), which makes it 0.03; the 0.01 given is used, as "
+                             "robot_state_publisher takes a value from joint_states\n")
+
+
 @pytest.mark.parametrize(("args", "needles"), [
     (["-f", "tool"], ["no frame 'tool'", "nearest first: arm_tool_link,"]),
     (["-f", "arm_tol_link"], ["did you mean 'arm_tool_link'"]),
