@@ -238,6 +238,13 @@ def _joint(item: ControlJoint, joints: dict[str, Joint], block: Ros2Control) -> 
     for interface in (*item.command_interfaces, *item.state_interfaces):
         if exported_as(interface.name, block.plugin) != interface.name:
             continue  # position_pid for Gazebo: a name of its own, not a misspelling
+        if interface.name != interface.name.strip() and interface.name.strip() in INTERFACES:
+            # ros2_control strips attribute values from Jazzy on (its get_attribute_value)
+            yield Issue("SB505", f"joint '{item.name}' interface '{interface.name}' has blanks "
+                        "around its name: Jazzy and later strip them, Humble looks for "
+                        f"'{interface.name}' and finds no such interface", item.element,
+                        fix=f'name="{interface.name.strip()}"')
+            continue
         close = difflib.get_close_matches(interface.name, INTERFACES, n=1, cutoff=0.75)
         if close and close[0] != interface.name:
             yield Issue("SB505", f"joint '{item.name}' interface '{interface.name}' is not "

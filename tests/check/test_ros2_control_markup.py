@@ -63,3 +63,11 @@ def test_a_mimic_attribute_that_is_no_boolean(run, tmp_path):
                                                  '<joint name="w" mimic="yes">'))
     assert any(code == "SB515" and 'mimic="yes": ros2_control reads only true or false' in m
                for code, _, m in found), found
+
+
+def test_an_interface_name_with_a_trailing_blank_says_which_releases_read_it(run, tmp_path):
+    found = _found(run, tmp_path, _BLOCK.replace('<command_interface name="velocity"/>',
+                                                 '<command_interface name="velocity "/>'))
+    ((code, severity, message),) = found
+    assert (code, severity) == ("SB505", "warning")
+    assert "has blanks around its name: Jazzy and later strip them, Humble" in message
