@@ -36,6 +36,10 @@ from servicebot_cli.commands.serial_options import arduino_config, serial_option
 @click.option("--mute-after-s", type=Number("S", positive=True), default=None,
               help="Stop answering after this long, port still open (a hung firmware; with "
               "--boot-s, the next open of the port resets it and it answers again) [s].")
+@click.option("--stall-after-s", type=Number("S", positive=True), default=None,
+              help="The wheels stop turning after this long, commands still answered (an "
+              "encoder cable pulled, motor power off, a wheel blocked): the encoders stop "
+              "counting [s].")
 @click.option("--boot-s", type=Number("S", non_negative=True), default=None,
               help="Be a board that resets whenever a host opens the port (an Arduino Uno, "
               "whose DTR line resets it): it forgets its state (speeds, encoder counts), "
@@ -50,7 +54,7 @@ from servicebot_cli.commands.serial_options import arduino_config, serial_option
 def emulate(robot_args: RobotArgs, protocol: str, baud: int | None, ticks_per_rev: float | None,
             pid_rate: float, pace: bool, watchdog_ms: int | None, drop: float, corrupt: float,
             latency_s: float, die_after_s: float | None, mute_after_s: float | None,
-            boot_s: float | None, seed: int, state_file: str | None,
+            stall_after_s: float | None, boot_s: float | None, seed: int, state_file: str | None,
             link_path: str | None) -> None:
     """Act as the robot's motor controller on a pseudo-terminal.
 
@@ -74,7 +78,8 @@ def emulate(robot_args: RobotArgs, protocol: str, baud: int | None, ticks_per_re
     _refuse_without_effect(drop, corrupt, die_after_s, mute_after_s)
     request = EmulateRequest(
         robot_args.source(), protocol, arduino_config(protocol, ticks_per_rev, pid_rate), baud,
-        watchdog_ms, Faults(drop, corrupt, latency_s, die_after_s, mute_after_s), seed, pace,
+        watchdog_ms,
+        Faults(drop, corrupt, latency_s, die_after_s, mute_after_s, stall_after_s), seed, pace,
         Path(state_file) if state_file else None, Path(link_path) if link_path else None,
         boot_s)
     log = emulate_log()

@@ -21,6 +21,7 @@ from servicebot_cli.drive.session.contracts import LinkStatus, Source, Suspender
 from servicebot_cli.drive.session.loop import DriveLoop
 from servicebot_cli.drive.session.reconnect import DEFAULT_ATTEMPTS, ReconnectPolicy
 from servicebot_cli.drive.session.signals import OUTCOMES, StopSignals
+from servicebot_cli.drive.session.stall import WheelsStill
 from servicebot_cli.drive.shaping import WheelShaper
 
 if TYPE_CHECKING:
@@ -176,6 +177,10 @@ def _drive_then_stop(loop: DriveLoop, settings: StreamSettings, source: Source,
     try:
         hello = loop.connect(settings.connect_timeout_s)
         log(f"connected to {loop.where}: {hello.description}")
+        if hello.baud is not None and hello.baud != settings.baud:
+            log(f"warning: the firmware says it runs at {hello.baud} baud, the port at "
+                f"{settings.baud}: a reply garbled on the way, or a board on native USB, where "
+                "the baud rate means nothing; check the firmware's BAUDRATE and --baud")
         loop.run(source)
     except ServicebotError as exc:  # Ctrl-C, the signals and lost links arrive here too
         failure = exc
@@ -184,6 +189,17 @@ def _drive_then_stop(loop: DriveLoop, settings: StreamSettings, source: Source,
         confirmed = loop.stop_motors()
         if loop.port is not None:
             loop.port.close()
+    if isinstance(failure, WheelsStill):
+        confirmed = False  # counts that froze with the wheels show nothing stopping
+    elif confirmed and loop.stall.never_moved() and max(
+            map(abs, loop.commander.travel_rad), default=0.0) >= loop.stall.least_travel_rad:
+        confirmed = False  # counts that never changed show nothing stopping
+        if failure is None:
+            failure = StopUnconfirmed(
+                f"stop not confirmed: no encoder on {loop.where} counted once while the wheels "
+                f"were commanded to turn up to {max(map(abs, loop.commander.travel_rad)):.2g} "
+                "rad, so nothing shows them stopped (an encoder cable pulled, or the motor "
+                "power off?)")
     if failure is None and not confirmed and loop.inbox.hello is not None:
         failure = StopUnconfirmed(
             f"stop not confirmed: the firmware on {loop.where} did not report the wheels "
@@ -225,7 +241,8 @@ def _outcome(failure: ServicebotError | None) -> str:
     if failure is None:
         return "completed"
     outcomes: tuple[tuple[type[ServicebotError], str], ...] = (
-        *OUTCOMES, (LinkLost, "link_lost"), (StopUnconfirmed, "stop_unconfirmed"))
+        *OUTCOMES, (LinkLost, "link_lost"), (StopUnconfirmed, "stop_unconfirmed"),
+        (WheelsStill, "wheels_stalled"))
     for kind, name in outcomes:
         if isinstance(failure, kind):
             return name

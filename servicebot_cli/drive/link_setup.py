@@ -44,6 +44,10 @@ def serial_defaults(robot: RobotDescription) -> tuple[str | None, int | None]:
     return None, None
 
 
+ARDUINO_INT_MAX = 32_767
+"""An AVR's int: the largest speed ROSArduinoBridge's ``m`` carries [ticks per PID frame]."""
+
+
 def make_link(protocol: str, motors: MotorMap, arduino: ArduinoConfig | None) -> HostLink:
     """The host-side adapter for ``protocol`` (``servicebot`` or ``arduino``).
 
@@ -54,6 +58,14 @@ def make_link(protocol: str, motors: MotorMap, arduino: ArduinoConfig | None) ->
     if protocol == "arduino":
         if arduino is None:
             raise ValueError("the arduino protocol needs an ArduinoConfig")
+        top = arduino.max_ticks(motors.max_wheel_rad_s)
+        if top > ARDUINO_INT_MAX:
+            raise BadOption("--ticks-per-rev",
+                f"{arduino.ticks_per_rev:g} at --pid-rate "
+                f"{arduino.pid_rate_hz:g} makes the wheels' top speed {top} ticks a PID frame: "
+                f"ROSArduinoBridge reads 'm' with atoi into an int, at most {ARDUINO_INT_MAX} "
+                "on an Uno or Mega, and a larger number wraps to another speed; check "
+                "--ticks-per-rev (ticks per wheel revolution, after the gearbox)")
         return ArduinoLink(motors, arduino)
     return BinaryLink(motors)
 

@@ -51,6 +51,8 @@ class MotorModel:
         motors: The robot's motors and limits.
         watchdog_s: Stop when no motion command came for this long [s].
         now_s: The time the state is at [s].
+        stall_at_s: From this time on the wheels do not turn, whatever is commanded (the
+            emulator's ``--stall-after-s``); None: never [s].
     """
 
     motors: MotorMap
@@ -63,6 +65,7 @@ class MotorModel:
     last_motion_command_s: float = 0.0
     watchdog_fired: bool = False
     counters: Counters = field(default_factory=Counters)
+    stall_at_s: float | None = None
 
     def __post_init__(self) -> None:
         n_wheels, n_arm = len(self.motors.wheel_joints), len(self.motors.arm_joints)
@@ -87,12 +90,25 @@ class MotorModel:
             self.counters.watchdog_trips += 1
         self._integrate(now_s)
 
+    @property
+    def stalled(self) -> bool:
+        """Whether the wheels no longer turn (``stall_at_s`` has passed)."""
+        return self.stall_at_s is not None and self.now_s >= self.stall_at_s
+
+    @property
+    def measured_wheel_velocity_rad_s(self) -> list[float]:
+        """What the encoders measure: the commanded speeds, or zeros once stalled."""
+        return [0.0] * len(self.wheel_velocity_rad_s) if self.stalled \
+            else list(self.wheel_velocity_rad_s)
+
     def _integrate(self, now_s: float) -> None:
         dt = now_s - self.now_s
         if dt <= 0.0:
             return
+        turning_s = dt if self.stall_at_s is None else \
+            max(0.0, min(now_s, self.stall_at_s) - self.now_s)
         for i, v in enumerate(self.wheel_velocity_rad_s):
-            self.wheel_position_rad[i] += v * dt
+            self.wheel_position_rad[i] += v * turning_s
         for i, (p, target) in enumerate(zip(self.arm_position_rad, self.arm_target_rad,
                                             strict=True)):
             step = self.motors.arm_max_rad_s[i] * dt
@@ -204,7 +220,7 @@ class BinaryFirmware:
         self._faults = msg.Fault(0)
         model = self.model
         return msg.encode_telemetry(seq, msg.Telemetry(
-            tuple(model.wheel_position_rad), tuple(model.wheel_velocity_rad_s),
+            tuple(model.wheel_position_rad), tuple(model.measured_wheel_velocity_rad_s),
             tuple(model.arm_position_rad), faults))
 
     def state(self) -> State:

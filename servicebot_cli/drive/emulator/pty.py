@@ -59,7 +59,7 @@ class PtyEmulator:
         self.master = self.slave = -1
         self.path = ""
         self.link: Path | None = None
-        self.muted = self._mute_done = self._booting = False
+        self.muted = self._mute_done = self._booting = self._stall_told = False
         self.tx_overflow = 0
         self._opens: PortOpens | None = None
         self._start_s = clock()
@@ -134,6 +134,11 @@ class PtyEmulator:
                     and uptime >= self.faults.mute_after_s):
                 self.muted = self._mute_done = True
                 self.log(f"muted: no more answers, {uptime:.1f} s after start (--mute-after-s)")
+            if (not self._stall_told and self.faults.stall_after_s is not None
+                    and uptime >= self.faults.stall_after_s):
+                self._stall_told = True
+                self.log(f"stalled: the wheels stop turning, {uptime:.1f} s after start; "
+                         "commands still answered (--stall-after-s)")
             self._pump(now)
             self._report(now)
             if on_state is not None and now >= next_state_s:

@@ -137,14 +137,20 @@ def build_emulator(request: EmulateRequest, log: Callable[[str], None]) -> PtyEm
     robot = load(request.robot)
     motors = motor_map(robot)
     baud = request.baud or serial_defaults(robot)[1] or 9600
-    board = Board(firmware_builder(request, motors, baud), time.monotonic(), request.boot_s)
+    start_s = time.monotonic()
+    stall = request.faults.stall_after_s
+    board = Board(firmware_builder(request, motors, baud,
+                                   None if stall is None else start_s + stall),
+                  start_s, request.boot_s)
     injector = FaultInjector(request.faults, random.Random(request.seed))
     return PtyEmulator(board, injector, baud=baud, pace=request.pace, log=log)
 
 
-def firmware_builder(request: EmulateRequest, motors: MotorMap,
-                     baud: int) -> Callable[[float], Firmware]:
+def firmware_builder(request: EmulateRequest, motors: MotorMap, baud: int,
+                     stall_at_s: float | None = None) -> Callable[[float], Firmware]:
     """What builds the firmware as it is when the board is powered or reset, at a time [s].
+
+    ``stall_at_s``: when the wheels stop turning (``--stall-after-s``), a reset or not.
 
     Raises:
         DescriptionError: The robot cannot be carried by the binary protocol.
@@ -161,11 +167,13 @@ def firmware_builder(request: EmulateRequest, motors: MotorMap,
         if config is None:
             raise ValueError("the arduino protocol needs an ArduinoConfig")
         return lambda now_s: ArduinoFirmware(
-            MotorModel(motors, watchdog_ms / 1000.0, now_s=now_s), config, baud)
+            MotorModel(motors, watchdog_ms / 1000.0, now_s=now_s, stall_at_s=stall_at_s),
+            config, baud)
     from servicebot_cli.drive.protocols.binary import BinaryLink
 
     BinaryLink(motors)  # refuses a robot the binary protocol cannot carry
-    return lambda now_s: BinaryFirmware(MotorModel(motors, watchdog_ms / 1000.0, now_s=now_s))
+    return lambda now_s: BinaryFirmware(MotorModel(motors, watchdog_ms / 1000.0, now_s=now_s,
+                                                   stall_at_s=stall_at_s))
 
 
 def banner(emulator: PtyEmulator, device: str, seed: int) -> str:

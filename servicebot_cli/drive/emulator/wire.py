@@ -83,6 +83,9 @@ class Faults:
         latency_s: Extra delay before each reply leaves [s].
         die_after_s: Exit (the port disappears) this long after start [s].
         mute_after_s: Stop answering and reading, port still open, after this long [s].
+        stall_after_s: The wheels stop turning this long after start, commands still
+            accepted and answered (an encoder cable pulled, motor power off, a wheel
+            blocked): the encoders stop counting [s].
     """
 
     drop: float = 0.0
@@ -90,6 +93,7 @@ class Faults:
     latency_s: float = 0.0
     die_after_s: float | None = None
     mute_after_s: float | None = None
+    stall_after_s: float | None = None
 
 
 @dataclass

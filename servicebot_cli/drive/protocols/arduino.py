@@ -135,6 +135,7 @@ class ArduinoLink:
     def __init__(self, motors: MotorMap, config: ArduinoConfig) -> None:
         self.motors = motors
         self.config = config
+        self.count_rad = TWO_PI / config.ticks_per_rev
         self._limit = config.max_ticks(motors.max_wheel_rad_s)
         self.command_bytes = len(motor_speeds_command(-self._limit, -self._limit)) + len(
             READ_ENCODERS)
@@ -210,7 +211,8 @@ class ArduinoLink:
             return Refused(f"firmware answered 'Invalid Command' to {what}")
         if line.kind == "baud" and not self._greeted:
             self._greeted = True
-            return Hello(f"ROSArduinoBridge, firmware at {line.values[0]} baud")
+            return Hello(f"ROSArduinoBridge, firmware at {line.values[0]} baud",
+                         baud=line.values[0])
         self.garbled += 1
         return None
 

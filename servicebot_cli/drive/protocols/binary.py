@@ -32,6 +32,7 @@ class BinaryLink:
     has_arm = True
     stop_timeout_s = 0.5  # docs/serial-protocol.md: wait up to 0.5 s, resend after 0.25 s
     stop_resend_s = 0.25
+    count_rad = 0.0  # telemetry carries continuous angles
 
     def __init__(self, motors: MotorMap) -> None:
         if len(motors.wheel_joints) != msg.SLOTS or len(motors.arm_joints) != msg.SLOTS:

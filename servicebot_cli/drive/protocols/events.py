@@ -17,11 +17,13 @@ class Hello:
         description: What the firmware says it is, for people.
         watchdog_ms: Its watchdog timeout [ms], when it says.
         compatible: False when it speaks another version of the protocol.
+        baud: The baud rate it says it runs at, when it says (ROSArduinoBridge's ``b``).
     """
 
     description: str
     watchdog_ms: int | None = None
     compatible: bool = True
+    baud: int | None = None
 
 
 @dataclass(frozen=True)

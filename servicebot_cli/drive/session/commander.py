@@ -25,6 +25,8 @@ class HostLink(Protocol):
     reply_bytes: int
     stop_timeout_s: float
     stop_resend_s: float
+    count_rad: float
+    """The wheel angle of one encoder count the firmware reports [rad]; 0: continuous."""
 
     def hello(self) -> bytes:
         """The handshake request."""

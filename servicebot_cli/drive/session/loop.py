@@ -23,6 +23,7 @@ from servicebot_cli.drive.session.contracts import LinkStatus, Source, Suspender
 from servicebot_cli.drive.session.handshake import boot_wait, handshake
 from servicebot_cli.drive.session.inbox import Inbox
 from servicebot_cli.drive.session.reconnect import ReconnectPolicy, reconnect
+from servicebot_cli.drive.session.stall import StallWatch, WheelsStill
 from servicebot_cli.drive.session.stopping import stop_until_still
 from servicebot_cli.drive.transport import Port
 
@@ -73,6 +74,7 @@ class DriveLoop:
         self.boot_s, self.connect_timeout_s, self.suspender = boot_s, connect_timeout_s, suspender
         self.inbox = Inbox(link, len(commander.motors.wheel_joints), where, clock(), log=log,
                            on_reading=self._on_reading)
+        self.stall = StallWatch(commander.motors.wheel_joints, link.count_rad)
         self.commands = self.reconnects = self.stops_sent = 0
         self.reconnecting = False
         self.t0_s = self.end_s = clock()
@@ -117,6 +119,8 @@ class DriveLoop:
             self._job_control()
             now = self.clock()
             self.inbox.receive(self.port, now)
+            if self.stall.stalled is not None:
+                raise WheelsStill(f"wheels stalled: {self.stall.stalled}")
             if now - self.inbox.last_rx_s > self.link_timeout_s:
                 raise LinkLost(f"link lost: no reply from the firmware on {self.where} for "
                                f"{self.link_timeout_s:g} s")
@@ -164,6 +168,7 @@ class DriveLoop:
 
     def _on_reading(self, now: float, reading: Reading) -> None:
         self.commander.observe_arm(reading.arm_position_rad)
+        self.stall.observe(now, reading.wheel_position_rad, self.commander.commanded_rad_s)
         if self.on_reading is not None:
             self.on_reading(now - self.t0_s, reading, self.commander.commanded_rad_s)
 
