@@ -32,6 +32,19 @@ def body_twist(
     return linear, angular
 
 
+def rolled_twist(left_rad_s: float, right_rad_s: float, *, left_radius_m: float,
+                 right_radius_m: float, track_m: float) -> tuple[float, float]:
+    """:func:`body_twist` of wheels that roll on radii of their own (a base that curves).
+
+    With equal radii, :func:`body_twist`'s arithmetic exactly.
+    """
+    if left_radius_m == right_radius_m:
+        return body_twist(left_rad_s, right_rad_s, wheel_radius_m=left_radius_m,
+                          track_m=track_m)
+    left, right = left_rad_s * left_radius_m, right_rad_s * right_radius_m
+    return (left + right) / 2.0, (right - left) / track_m
+
+
 def saturate_keep_curvature(
     left_rad_s: float, right_rad_s: float, max_rad_s: float
 ) -> tuple[float, float]:

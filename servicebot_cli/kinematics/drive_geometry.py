@@ -67,6 +67,15 @@ class DriveGeometry:
         return tuple(w.joint for w in self.wheels if w.side == "right")
 
     @property
+    def side_radii_m(self) -> tuple[float, float]:
+        """The mean radius of the left wheels and of the right ones [m]: what rolls each side."""
+        left, right = ([w.radius_m for w in self.wheels if w.side == side]
+                       for side in ("left", "right"))
+        if not left or not right:
+            return self.wheel_radius_m, self.wheel_radius_m
+        return float(np.mean(left)), float(np.mean(right))
+
+    @property
     def max_linear_m_s(self) -> float:
         """Top straight-line speed the wheel limits allow [m/s]."""
         return self.max_wheel_speed_rad_s * self.wheel_radius_m

@@ -309,9 +309,10 @@ class _Run:
         arm's positions at the piece's boundaries (n+1, J) and the contacts that began.
         """
         body, slip = self.body, self.scenario.slip
-        linear, angular = diff_drive.body_twist(
-            plan.left_rad_s, plan.right_rad_s,  # type: ignore[arg-type]  # body_twist is typed for floats
-            wheel_radius_m=body.geometry.wheel_radius_m,
+        left_m, right_m = body.geometry.side_radii_m  # unequal sides: the base curves
+        linear, angular = diff_drive.rolled_twist(
+            plan.left_rad_s, plan.right_rad_s,  # type: ignore[arg-type]  # typed for floats
+            left_radius_m=left_m, right_radius_m=right_m,
             track_m=body.geometry.track_m * slip.track_factor)
         keep = 1.0 - slip.longitudinal
         height = body.base_height_m
