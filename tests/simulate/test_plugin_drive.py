@@ -207,3 +207,27 @@ def test_a_sensor_on_a_link_the_robot_lacks_is_left_out_with_a_note(tmp_path):
 </robot>"""))
     quiet = run_servicebot("simulate", on_a_joint, "--headless", "--duration-s", "1")
     assert quiet.returncode == 0 and "not simulated" not in quiet.stderr, quiet.stderr
+
+
+def test_a_ros1_drive_publishing_wheel_joint_states_sends_its_two_wheels_at_its_rate(tmp_path):
+    """GazeboRosDiffDrive::publishWheelJointState sends the left and right joints once per
+    <updateRate>; the run sent every movable joint (a pan joint too) at the control rate."""
+    pytest.importorskip("rosbags")
+    wheel = ('<link name="{s}_wheel"><collision><origin rpy="1.5708 0 0"/><geometry><cylinder '
+             'radius="0.05" length="0.02"/></geometry></collision></link><joint '
+             'name="{s}_wheel_joint" type="continuous"><parent link="base_link"/><child '
+             'link="{s}_wheel"/><origin xyz="0 {y} 0"/><axis xyz="0 1 0"/></joint>')
+    robot = tmp_path / "wheelstates.urdf"
+    robot.write_text(
+        '<robot name="w"><link name="base_link"/>' + wheel.format(s="left", y=0.15)
+        + wheel.format(s="right", y=-0.15) + '<link name="pan"/><joint name="pan_joint" '
+        'type="revolute"><parent link="base_link"/><child link="pan"/><axis xyz="0 0 1"/>'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint><gazebo><plugin '
+        'filename="libgazebo_ros_diff_drive.so" name="d"><updateRate>40</updateRate>'
+        "<leftJoint>left_wheel_joint</leftJoint><rightJoint>right_wheel_joint</rightJoint>"
+        "<wheelSeparation>0.3</wheelSeparation><wheelDiameter>0.1</wheelDiameter>"
+        "<publishWheelJointState>true</publishWheelJointState></plugin></gazebo></robot>")
+    _, messages = run_with_bag(robot, tmp_path, duration_s="5")
+    states = messages["/joint_states"]
+    assert {tuple(m.name) for m in states} == {("left_wheel_joint", "right_wheel_joint")}
+    assert len(states) == 200  # 5 s at <updateRate>40

@@ -11,8 +11,8 @@ transforms, has none to publish. A gz topic that names the world (``/world/WORLD
 default) cannot be named by a run, which has no world name: it is left out with a note. MODEL
 is the robot's name, the name it is usually spawned with. A ``gazebo_ros_joint_state_publisher``
 that is the only publisher sends its ``<joint_name>`` joints, in that order, at its
-``<update_rate>`` (ROS 2 ``gazebo_ros_joint_state_publisher.cpp``); robot_state_publisher
-then has those joints only. Pure.
+``<update_rate>`` (ROS 2 ``gazebo_ros_joint_state_publisher.cpp``), and a ROS 1 diff drive its
+two wheels at its ``<updateRate>``; robot_state_publisher then has those joints only. Pure.
 """
 
 from __future__ import annotations
@@ -83,10 +83,13 @@ def joint_state_topics(robot: RobotDescription, controllers: ControllersFile) ->
         _plugin_topics(robot, plugin, topics, notes)
         sources += [plugin] * (len(topics) > before)
     only = sources[0] if len(sources) == 1 and not controllers.joint_state_topics else None
-    if only is None or "gazebo_ros_joint_state_publisher" not in only.filename:
-        return JointStateTopics(tuple(dict.fromkeys(topics)), tuple(notes))
-    return JointStateTopics(tuple(dict.fromkeys(topics)), tuple(notes),
-                            *_publisher_joints(robot, only))
+    if only is not None and "gazebo_ros_joint_state_publisher" in only.filename:
+        return JointStateTopics(tuple(dict.fromkeys(topics)), tuple(notes),
+                                *_publisher_joints(robot, only))
+    if only is not None and "gazebo_ros_diff_drive" in only.filename:
+        return JointStateTopics(tuple(dict.fromkeys(topics)), tuple(notes),
+                                *_drive_wheel_joints(robot, only))
+    return JointStateTopics(tuple(dict.fromkeys(topics)), tuple(notes))
 
 
 def _publisher_joints(robot: RobotDescription, plugin: Plugin) -> tuple[tuple[str, ...], float]:
@@ -99,6 +102,23 @@ def _publisher_joints(robot: RobotDescription, plugin: Plugin) -> tuple[tuple[st
     names = tuple(n for n in params_all(plugin.params, "joint_name") if n in movable)
     rate = parse_float(param(plugin.params, "update_rate"))
     return names, 100.0 if rate is None else rate
+
+
+def _drive_wheel_joints(robot: RobotDescription,
+                        plugin: Plugin) -> tuple[tuple[str, ...], float]:
+    """The ROS 1 diff drive's ``<publishWheelJointState>``: its two wheels, at its rate.
+
+    ``publishWheelJointState()`` sends the left and the right joint only, from
+    ``UpdateChild`` once per ``<updateRate>`` (default 100 Hz; 0: every step), as gazebo_ros_pkgs'
+    ROS 1 ``gazebo_ros_diff_drive.cpp`` does.
+    """
+    movable = {j.name for j in robot.movable_joints}
+    wheels = tuple(name for side in ("left", "right")
+                   for name in [param(plugin.params, f"{side}Joint")
+                                or param(plugin.params, f"{side}_joint")]
+                   if name is not None and name in movable)
+    rate = parse_float(param(plugin.params, "updateRate"))
+    return wheels, 100.0 if rate is None else rate
 
 
 def _plugin_topics(robot: RobotDescription, plugin: Plugin, topics: list[str],
