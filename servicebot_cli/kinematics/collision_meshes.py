@@ -16,7 +16,7 @@ from __future__ import annotations
 import os
 import re
 import warnings
-from collections.abc import Iterable, Iterator
+from collections.abc import Collection, Iterable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -49,37 +49,42 @@ class CollisionMesh:
     path: Path
 
 
-def collision_meshes(robot: RobotDescription, resolver: PackageResolver
+def collision_meshes(robot: RobotDescription, resolver: PackageResolver,
+                     omit: Collection[str] = (), skippable: bool = True
                      ) -> Iterator[CollisionMesh]:
     """``robot``'s collision meshes, their ``package://`` references resolved.
+
+    Meshes whose filename is in ``omit`` are left out. ``skippable``: the command has
+    ``--allow-collisions`` to do without the check, and the messages say so.
 
     Raises:
         PackageNotFound: A mesh in a package that is nowhere.
     """
     base_dir = robot.path.parent
+    hint = "; --allow-collisions skips the check" if skippable else ""
     for link in robot.links:
         for shape in link.collisions:
             filename = shape.geometry.filename
-            if shape.geometry.kind == "mesh" and filename:
+            if shape.geometry.kind == "mesh" and filename and filename not in omit:
                 try:
                     path = resolver.resolve_uri(filename, base_dir)
                 except RemoteResource:
                     raise RemoteResource(f"collision mesh '{filename}' of link '{link.name}' "
                                          "is fetched over the network, which the collision "
-                                         "check does not do; --allow-collisions skips the "
-                                         "check") from None
+                                         f"check does not do{hint}") from None
                 except UnknownScheme as exc:
                     raise UnknownScheme(f"collision mesh '{filename}' of link '{link.name}': "
-                                        f"{exc}; --allow-collisions skips the check") from None
+                                        f"{exc}{hint}") from None
                 except PackageNotFound as exc:  # say what needs it, and how to do without
                     raise PackageNotFound(f"collision mesh '{filename}' of link '{link.name}': "
-                                          f"{exc}; or --allow-collisions skips the collision "
-                                          "check that reads it") from None
+                                          f"{exc}" + ("; or --allow-collisions skips the "
+                                                      "collision check that reads it"
+                                                      if skippable else "")) from None
                 yield CollisionMesh(link.name, filename, path.absolute())
 
 
-def mesh_problem(robot: RobotDescription, meshes: Iterable[CollisionMesh]
-                 ) -> str | None:
+def mesh_problem(robot: RobotDescription, meshes: Iterable[CollisionMesh],
+                 skippable: bool = True) -> str | None:
     """The line that refuses the first collision mesh coal must not get; None: all fine."""
     for mesh in meshes:
         reason = _problem(mesh.path)
@@ -87,8 +92,8 @@ def mesh_problem(robot: RobotDescription, meshes: Iterable[CollisionMesh]
             continue
         what = "has no triangles" if reason == _NO_TRIANGLES else f"cannot be read: {reason}"
         return (f"{robot.display}: collision mesh '{mesh.filename}' of link '{mesh.link}' "
-                f"{what} (run servicebot check {robot.display}); --allow-collisions skips "
-                "the check")
+                f"{what} (run servicebot check {robot.display})"
+                + ("; --allow-collisions skips the check" if skippable else ""))
     return None
 
 

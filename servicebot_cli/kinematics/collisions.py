@@ -108,7 +108,8 @@ class CollisionCheck:
 
 def build_check(robot: RobotDescription, model: pin.Model, resolver: PackageResolver, *,
                 disabled: Iterable[tuple[str, str]] = (), floor: bool = True,
-                moving: Collection[str] | None = None, samples: int = SAMPLES
+                moving: Collection[str] | None = None, samples: int = SAMPLES,
+                omit_meshes: Collection[str] = (), skippable: bool = True
                 ) -> CollisionCheck:
     """The collision check of ``robot`` on ``model`` (fixed or planar base).
 
@@ -122,6 +123,9 @@ def build_check(robot: RobotDescription, model: pin.Model, resolver: PackageReso
             the fingers of a closed gripper touch, but no arm joint changes that); None:
             every pair.
         samples: Random configurations that decide which pairs always touch.
+        omit_meshes: Collision meshes (as written) left out of the check (simulate's
+            unreadable ones, already named in its notes).
+        skippable: The command has ``--allow-collisions``, which the messages offer.
 
     Raises:
         CollisionSetupError: A collision mesh that cannot be read.
@@ -129,7 +133,7 @@ def build_check(robot: RobotDescription, model: pin.Model, resolver: PackageReso
     """
     import pinocchio as pin
 
-    geometry = _geometry(robot, model, resolver)
+    geometry = _geometry(robot, model, resolver, omit_meshes, skippable)
     links = [model.frames[o.parentFrame].name for o in geometry.geometryObjects]
     at_rest = grounded(model, geometry) if floor else {}
     skip: set[frozenset[str]] = {frozenset((j.parent, j.child)) for j in robot.joints
@@ -147,8 +151,8 @@ def build_check(robot: RobotDescription, model: pin.Model, resolver: PackageReso
     return CollisionCheck(model, geometry, links, floor_z)
 
 
-def _geometry(robot: RobotDescription, model: pin.Model,
-              resolver: PackageResolver) -> pin.GeometryModel:
+def _geometry(robot: RobotDescription, model: pin.Model, resolver: PackageResolver,
+              omit: Collection[str] = (), skippable: bool = True) -> pin.GeometryModel:
     """The ``<collision>`` geometry, with ``package://`` meshes resolved by ``resolver``.
 
     Each mesh is read by the project's own bounded readers first: Assimp (in coal) crashes
@@ -157,8 +161,8 @@ def _geometry(robot: RobotDescription, model: pin.Model,
     import pinocchio as pin
 
     base_dir = robot.path.parent
-    meshes = list(collision_meshes(robot, resolver))
-    problem = mesh_problem(robot, meshes)
+    meshes = list(collision_meshes(robot, resolver, omit, skippable))
+    problem = mesh_problem(robot, meshes, skippable)
     if problem is not None:
         raise CollisionSetupError(problem)
 
@@ -167,7 +171,7 @@ def _geometry(robot: RobotDescription, model: pin.Model,
         path = resolver.resolve_uri(match.group(2), base_dir).absolute()
         return f"filename={match.group(1)}{path}{match.group(1)}"
 
-    xml = re.sub(r"filename\s*=\s*([\"'])(.*?)\1", resolved, robot.xml_text)
+    xml = re.sub(r"filename\s*=\s*([\"'])(.*?)\1", resolved, _without_meshes(robot, omit))
     from servicebot_cli.common.native_stderr import captured_fd2
 
     try:
@@ -177,5 +181,22 @@ def _geometry(robot: RobotDescription, model: pin.Model,
         mesh, reason = coal_reason(str(exc), meshes)
         what = ("cannot read the collision geometry" if mesh is None else
                 f"collision mesh '{mesh.filename}' of link '{mesh.link}' cannot be read")
-        raise CollisionSetupError(f"{robot.display}: {what}: {reason}; --allow-collisions "
-                                  "skips the check") from None
+        raise CollisionSetupError(f"{robot.display}: {what}: {reason}"
+                                  + ("; --allow-collisions skips the check" if skippable
+                                     else "")) from None
+
+
+def _without_meshes(robot: RobotDescription, omit: Collection[str]) -> str:
+    """The robot's XML without the ``<collision>`` elements of the meshes in ``omit``."""
+    if not omit:
+        return robot.xml_text
+    import copy
+    import xml.etree.ElementTree as ET
+
+    root = copy.deepcopy(robot.root)
+    for link in root.iter("link"):
+        for shape in list(link.findall("collision")):
+            mesh = shape.find("geometry/mesh")
+            if mesh is not None and mesh.get("filename") in omit:
+                link.remove(shape)
+    return ET.tostring(root, encoding="unicode")

@@ -75,7 +75,10 @@ class SelfContactWatch:
 
             robot, model = self.robot, self.robot.model
             resolver = self.resolver or PackageResolver(context=robot.path.parent)
-            check = build_check(robot, model, resolver, disabled=self.disabled)
+            # meshes the shape could not read are left out (its notes say so), as the
+            # shape leaves them out; simulate has no --allow-collisions to offer
+            check = build_check(robot, model, resolver, disabled=self.disabled,
+                                omit_meshes=self.shape.unread_meshes, skippable=False)
             columns = [model.joints[model.getJointId(name)].idx_q for name in self.shape.joints]
             self.built = (check, np.array(pin.neutral(model)), columns)
         return self.built

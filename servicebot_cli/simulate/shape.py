@@ -88,6 +88,8 @@ class RobotShape:
         steps: Per link in tree order: (link, parent link, origin (4, 4), joint or None).
         skipped: ``link: reason`` for collision shapes that are not parts (unreadable meshes,
             bad sizes).
+        unread_meshes: The filenames (as written) of the meshes among them, which the
+            self-contact check leaves out too.
     """
 
     root: str
@@ -95,6 +97,7 @@ class RobotShape:
     joints: tuple[str, ...]
     steps: tuple[tuple[str, str, FloatArray, Joint | None], ...]
     skipped: tuple[str, ...]
+    unread_meshes: tuple[str, ...] = ()
 
     @property
     def links(self) -> tuple[str, ...]:
@@ -225,7 +228,7 @@ def robot_shape(robot: RobotDescription, moving_joints: Sequence[str],
                 moving = joint if joint.name in moving_joints else None
                 steps.append((joint.child, parent, pose_matrix(joint.origin), moving))
                 stack.append(joint.child)
-    parts, skipped = [], []
+    parts, skipped, unread = [], [], []
     for link in robot.links:
         for shape in link.collisions if link.name in seen else ():
             origin = pose_matrix(shape.origin)
@@ -237,13 +240,15 @@ def robot_shape(robot: RobotDescription, moving_joints: Sequence[str],
                 except MeshUnreadable as exc:
                     skipped.append(f"{link.name}: mesh '{shape.geometry.filename}' left out: "
                                    f"{exc}")
+                    unread.append(shape.geometry.filename or "")
                 continue
             half = half_extents(shape.geometry)
             if half is None:
                 skipped.append(f"{link.name}: {shape.geometry.kind or 'unknown'} collision shape")
                 continue
             parts.append(Part(link.name, shape.geometry.kind, half, origin))
-    return RobotShape(root, tuple(parts), tuple(moving_joints), tuple(steps), tuple(skipped))
+    return RobotShape(root, tuple(parts), tuple(moving_joints), tuple(steps), tuple(skipped),
+                      tuple(unread))
 
 
 def mesh_part(link: str, vertices_m: FloatArray, faces: IntArray,
