@@ -11,6 +11,7 @@ This module finds the source file an install-space path comes from.
 from __future__ import annotations
 
 import os
+import posixpath
 import re
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
@@ -95,6 +96,37 @@ def directory_rules(cmake: str, package: str) -> list[tuple[str, str]]:
             installed = destination if source.endswith("/") else destination / Path(stripped).name
             rules.append((stripped, "" if str(installed) == "." else str(installed)))
     return rules
+
+
+def included_when_installed(includer: Path, relative: str) -> Path | None:
+    """The source file a relative include of ``includer`` names once both are installed.
+
+    ``includer`` is a source file its package's install rules put under ``share/PKG``; its
+    include ``relative`` is read from there, and the file found there mapped back to its
+    source. None where ``includer`` is installed by no rule, or the include leaves
+    ``share/PKG``, or names no file installed from the sources.
+    """
+    holder = holding_package(includer.parent)
+    if holder is None:
+        return None
+    name, package_dir = holder
+    try:
+        inside = PurePosixPath(includer.relative_to(package_dir).as_posix())
+        cmake = (package_dir / "CMakeLists.txt").read_text(encoding="utf-8", errors="replace")
+    except (ValueError, OSError):
+        return None
+    for source_dir, installed_dir in directory_rules(cmake, name):
+        try:
+            rest = inside.relative_to(source_dir) if source_dir else inside
+        except ValueError:
+            continue
+        target = posixpath.normpath(str(PurePosixPath(installed_dir or ".") / rest.parent
+                                        / relative))
+        if target == ".." or target.startswith("../") or posixpath.isabs(target):
+            return None  # out of share/PKG: nothing installed there
+        found = installed_from(package_dir / target)
+        return None if found is None else found.source
+    return None
 
 
 def installed_source(path: str) -> str:

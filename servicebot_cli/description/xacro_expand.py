@@ -31,7 +31,7 @@ from xml.parsers import expat
 
 from servicebot_cli.common.errors import DescriptionError, PackageNotFound, XacroError, XmlError
 from servicebot_cli.common.inputs import as_typed, open_binary
-from servicebot_cli.description.install_layout import installed_source
+from servicebot_cli.description.install_layout import included_when_installed, installed_source
 from servicebot_cli.description.load_warnings import LoadWarning, said_by_xacro
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
@@ -155,6 +155,23 @@ ends (``<xacro:if value="${level > 0}">``) is xacro, one that nothing ends never
 _INCLUDES = 10_000
 """Files a description may read: a robot including ``*`` from its own directory includes
 every file there, which include ``*`` again; a real robot reads a few hundred."""
+
+
+def _installed_spec(spec: str, joined: str, filestack: list[str | None]) -> str:
+    """Where an include or YAML file ``spec`` (``joined`` to its includer's directory) is read.
+
+    What exists is read where it is. A missing absolute path (``$(find PKG)/...``) is read
+    from the source file the package's install rules put there; a missing relative one from
+    where it lands once its includer is installed, and only there: an include that names no
+    file in the sources nor in the install space stays missing, as for xacro.
+    """
+    if os.path.exists(joined):
+        return joined
+    if os.path.isabs(spec):
+        return installed_source(joined)
+    includer = filestack[-1] if filestack else None
+    found = included_when_installed(Path(includer), spec) if includer else None
+    return joined if found is None else str(found)
 
 
 def _refuse_include_cycle(filestack: list[str | None], read: int,
@@ -301,9 +318,10 @@ class _Tracer:
         xacro.safe_eval = guarded_safe_eval(xacro.XacroException)
         xacro.eval_text = bounded_eval_text(xacro.eval_text)
         xacro._global_symbols.update(GUARDS)
-        # load_yaml opens what abs_filename_spec names: a file of a source package found
-        # where the package's install rules put it
-        xacro.abs_filename_spec = lambda spec: installed_source(saved_spec(spec))
+        # includes and load_yaml open what abs_filename_spec names: a file of a source
+        # package found where the package's install rules put it
+        xacro.abs_filename_spec = lambda spec: _installed_spec(spec, saved_spec(spec),
+                                                               xacro.filestack)
         import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
         saved_load = yaml.safe_load  # what xacro's load_yaml reads with
@@ -343,7 +361,7 @@ class _Tracer:
 
         if inp is not None:
             return xml.dom.minidom.parseString(inp) if isinstance(inp, str) else inp
-        path = installed_source(os.path.join(xacro.root_dir, filename or ""))
+        path = os.path.join(xacro.root_dir, filename or "")  # mapped by abs_filename_spec
         _refuse_include_cycle(xacro.filestack, len(self.files), xacro.XacroException)
         data = self.top_data if not self.files else None
         try:

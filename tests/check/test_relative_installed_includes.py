@@ -1,0 +1,55 @@
+"""A relative include is read as xacro reads it: from the sources, or from where the install
+rules put the file that includes it, and nowhere else.
+
+main.xacro (description/urdf, installed as share/PKG/urdf) includes '../../urdf/part.xacro':
+no such file in the sources nor in the install space, and xacro fails in both; the include
+was mapped as if its source path were an install path, and the robot passed.
+"""
+
+from __future__ import annotations
+
+from tests.check.helpers import findings
+
+_XACRO = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
+
+
+def _package(root, rules: str, files: dict[str, str]):
+    root.mkdir(parents=True)
+    (root / "package.xml").write_text("<package><name>mypkg</name></package>")
+    (root / "CMakeLists.txt").write_text(f"project(mypkg)\n{rules}\n")
+    for name, text in files.items():
+        (root / name).parent.mkdir(parents=True, exist_ok=True)
+        (root / name).write_text(text)
+
+
+def _main(include: str) -> str:
+    return (f'<robot name="r" {_XACRO}><link name="base"/><xacro:include filename="{include}"/>'
+            '<xacro:part/></robot>')
+
+
+_PART = (f'<robot {_XACRO}><xacro:macro name="part"><link name="part"/><joint name="j" '
+         'type="fixed"><parent link="base"/><child link="part"/></joint></xacro:macro></robot>')
+
+
+def test_an_include_in_neither_layout_is_missing(run, tmp_path):
+    package = tmp_path / "mypkg"
+    _package(package, "install(DIRECTORY description/urdf DESTINATION share/${PROJECT_NAME})",
+             {"description/urdf/main.xacro": _main("../../urdf/part.xacro"),
+              "description/urdf/part.xacro": _PART})
+    result = run("expand", package / "description/urdf/main.xacro")
+    assert result.exit_code == 2
+    assert "cannot read included file" in result.output
+
+
+def test_an_include_that_holds_once_installed_is_read_from_its_source(run, tmp_path):
+    """share/mypkg/urdf/main.xacro includes ../ros2_control/part.xacro, installed from the
+    package's ros2_control/ directory, not description/ros2_control."""
+    package = tmp_path / "mypkg"
+    _package(package, "install(DIRECTORY description/urdf ros2_control "
+                      "DESTINATION share/${PROJECT_NAME})",
+             {"description/urdf/main.xacro": _main("../ros2_control/part.xacro"),
+              "ros2_control/part.xacro": _PART})
+    result = run("check", "urdf", package / "description/urdf/main.xacro", "--format", "json",
+                 "--isolated")
+    assert result.exit_code == 0, result.output
+    assert all(f["severity"] != "error" for f in findings(result.stdout))
