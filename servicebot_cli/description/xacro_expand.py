@@ -149,9 +149,10 @@ def _recursion_limit(frames: int) -> Iterator[None]:
         sys.setrecursionlimit(saved)
 
 
-_INCLUDE_DEPTH = 16
+_INCLUDE_DEPTH = 64
 """How often a file may be on the include stack: recursion through an include that a condition
-ends (``<xacro:if value="${level > 0}">``) is xacro, one that nothing ends never stops."""
+ends (``<xacro:if value="${level > 0}">``, xacro's own tests go 16 deep) is xacro, one that
+nothing ends never stops."""
 _INCLUDES = 10_000
 """Files a description may read: a robot including ``*`` from its own directory includes
 every file there, which include ``*`` again; a real robot reads a few hundred."""
@@ -192,8 +193,9 @@ def _refuse_include_cycle(filestack: list[str | None], read: int,
     if real[:-1].count(real[-1]) >= _INCLUDE_DEPTH:
         start = len(real) - 2 - real[-2::-1].index(real[-1])  # its last time before this
         cycle = " -> ".join(os.path.basename(f or "") for f in filestack[start:])
-        raise error(f"'{filestack[-1]}' includes itself ({cycle}), {_INCLUDE_DEPTH} deep: an "
-                    "include cycle that no condition ends")
+        raise error(f"'{filestack[-1]}' includes itself ({cycle}) {_INCLUDE_DEPTH} deep, "
+                    "where servicebot stops: an include cycle that no condition ends, or a "
+                    f"recursion deeper than {_INCLUDE_DEPTH} levels")
 
 
 def _refuse_unwritable(doc: xml.dom.minidom.Document, display: str, tracer: _Tracer) -> None:

@@ -308,8 +308,9 @@ def test_an_include_cycle_is_named_at_once(tmp_path):
                      f'{calls}  <xacro:include filename="robot.urdf.xacro"/>\n</robot>\n')
     result = run_servicebot("expand", robot)
     assert_one_line_error(result, 2, "robot.urdf.xacro:43:3: xacro: "
-                          f"'{robot}' includes itself (robot.urdf.xacro -> robot.urdf.xacro), "
-                          "16 deep: an include cycle that no condition ends")
+                          f"'{robot}' includes itself (robot.urdf.xacro -> robot.urdf.xacro) "
+                          "64 deep, where servicebot stops: an include cycle that no condition "
+                          "ends, or a recursion deeper than 64 levels")
     (tmp_path / "b.xacro").write_text(
         '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:include filename="a.xacro"/>'
         '</robot>')
@@ -327,12 +328,13 @@ def test_an_include_cycle_is_named_at_once(tmp_path):
                      '<xacro:include filename="a.xacro"/></robot>')
     result = run_servicebot("expand", cycle)
     assert result.returncode == 2
-    assert "includes itself (a.xacro -> b.xacro -> a.xacro), 16 deep" in result.stderr
+    assert "includes itself (a.xacro -> b.xacro -> a.xacro) 64 deep" in result.stderr
 
 
 def test_an_include_recursion_a_condition_ends_is_expanded_as_xacro_does(tmp_path):
     """part.xacro includes itself while ${level > 0}, lowering level each time: the real
-    xacro expands three links; refusing every file already on the include stack was wrong."""
+    xacro expands three links; refusing every file already on the include stack was wrong.
+    xacro's own tests recurse 16 deep, which stopped at 16: 60 now expand."""
     (tmp_path / "part.xacro").write_text(
         '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">'
         '<xacro:if value="${level > 0}"><link name="l${level}"/>'
@@ -346,6 +348,10 @@ def test_an_include_recursion_a_condition_ends_is_expanded_as_xacro_does(tmp_pat
     assert result.returncode == 0, result.stderr
     assert [line.strip() for line in result.stdout.splitlines() if "<link" in line] == [
         '<link name="base"/>', '<link name="l3"/>', '<link name="l2"/>', '<link name="l1"/>']
+    robot.write_text(robot.read_text().replace('value="3"', 'value="60"'))
+    result = run_servicebot("expand", robot)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.count("<link") == 61
 
 
 def test_a_robot_including_star_from_its_own_directory_ends_at_once(tmp_path):
