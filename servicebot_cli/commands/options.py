@@ -30,7 +30,8 @@ if TYPE_CHECKING:
 
 F = TypeVar("F", bound=Callable[..., Any])
 
-_XACRO_ARG_RE = re.compile(r"^\s*([A-Za-z_][\w]*)\s*:=(.*)$", re.DOTALL)
+# any name xacro's command line takes (robot-name, arm.side, ns/arg): not blank, no ':' or '='
+_XACRO_ARG_RE = re.compile(r"^\s*([^\s:=](?:[^:=]*[^\s:=])?)\s*:=(.*)$", re.DOTALL)
 
 
 def _xacro_arg(value: str) -> re.Match[str] | None:
@@ -150,7 +151,7 @@ def split_robot_args(values: Sequence[str]) -> tuple[tuple[str, ...], tuple[tupl
             xacro_args.append(pair)
         elif ":=" in value:
             raise click.BadParameter(
-                f"'{value}' is not NAME:=VALUE (NAME is letters, digits and _)",
+                f"'{value}' is not NAME:=VALUE (NAME is not blank, and holds no ':' or '=')",
                 param_hint="xacro argument",
             )
         else:

@@ -130,7 +130,20 @@ def test_an_argument_read_under_a_computed_name_is_used(run, tmp_path):
 
 
 def test_malformed_xacro_argument_is_a_usage_error(run):
-    assert_one_line_error(run("expand", XACRO_SOURCE, "9bad:=x"), 2, "NAME:=VALUE")
+    assert_one_line_error(run("expand", XACRO_SOURCE, ":=x"), 2, "NAME:=VALUE")
+    assert_one_line_error(run("expand", XACRO_SOURCE, "a=b:=x"), 2, "NAME:=VALUE")
+
+
+@pytest.mark.parametrize("name", ["robot-name", "arm.side", "9th", "ns/arg"])
+def test_an_argument_named_as_xacros_command_line_takes_it_is_set(run, tmp_path, name):
+    """xacro's load_mappings takes any name before ':='; 'robot-name:=x' was refused, so
+    such an argument could not be set at all."""
+    (tmp_path / "r.urdf.xacro").write_text(
+        f'<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:arg name="{name}" '
+        f'default="bot"/><link name="$(arg {name})"/></robot>')
+    result = run("expand", tmp_path / "r.urdf.xacro", f"{name}:=x")
+    assert result.exit_code == 0, result.output
+    assert '<link name="x"/>' in result.stdout
 
 
 def test_xacro_expression_error_names_file_and_line(run, tmp_path):
