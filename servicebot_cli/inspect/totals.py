@@ -20,6 +20,7 @@ from servicebot_cli.inspect.joints import DOF
 from servicebot_cli.inspect.numbers import clean, vec3
 from servicebot_cli.inspect.tree import KinematicTree, descendants
 from servicebot_cli.kinematics.drive_geometry import DriveGeometry
+from servicebot_cli.kinematics.frames import looks_like_tool
 
 CENTRE_UNKNOWN = ("centre of mass not shown: the links' masses and <inertial> origins are too "
                   "large to add up to a finite number")
@@ -227,7 +228,11 @@ def _chain(tree: KinematicTree, first: Joint, parent_joint: Mapping[str, Joint]
     if first.child is None:
         return None
     below = descendants(tree, first.child)
-    tip = max(below, key=lambda item: item[1])[0] if below else first.child
+    # of the deepest links, the one fk and ik take without --frame: a tool's name, else the
+    # last in the file (the WAM's second finger, not its first)
+    order = {joint.child: i for i, joint in enumerate(tree.edges)}
+    tip = max(below, key=lambda item: (item[1], looks_like_tool(item[0]),
+                                       order.get(item[0], -1)))[0] if below else first.child
     path = [parent_joint[tip]] if tip != first.child else [first]
     while path[-1] is not first:
         path.append(parent_joint[path[-1].parent or ""])

@@ -151,7 +151,7 @@ def default_tool_frame(robot: RobotDescription) -> ToolChoice:
     def rank(order: int, name: str) -> tuple[int, bool, bool, int, int]:
         joints = [model.names[j] for j in moving_joints(model, frame_id(model, name, links))]
         turning = sum(kinds.get(j) in turning_types for j in joints)
-        return turning, _looks_like_tool(name), name not in parents, len(joints), order
+        return turning, looks_like_tool(name), name not in parents, len(joints), order
 
     ranks = {name: rank(i, name) for i, name in enumerate(links)}
     named = [name for name in links if _names_a_tool(name) and ranks[name][0] > 0]
@@ -159,7 +159,7 @@ def default_tool_frame(robot: RobotDescription) -> ToolChoice:
         name = max(named, key=ranks.__getitem__)
         return ToolChoice(name, ranks[name][3], True)
     name = max(links, key=ranks.__getitem__)
-    return ToolChoice(name, ranks[name][3], _looks_like_tool(name))
+    return ToolChoice(name, ranks[name][3], looks_like_tool(name))
 
 
 def link_names(robot: RobotDescription) -> tuple[str, ...]:
@@ -176,7 +176,8 @@ def _names_a_tool(name: str) -> bool:
     return _TOOL_FRAME.search(name.lower()) is not None
 
 
-def _looks_like_tool(name: str) -> bool:
+def looks_like_tool(name: str) -> bool:
+    """A name with a word of a tool in it (``tool``, ``tcp``, ``ee_link``, ``gripper``...)."""
     lowered = name.lower()
     return any(word in lowered for word in _TOOL_WORDS)
 

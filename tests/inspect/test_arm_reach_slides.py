@@ -60,3 +60,26 @@ def test_a_lift_under_the_arm_is_part_of_its_reach(run, tmp_path):
         "shoulder": "lift", "tip": "tool0", "reach_m": 2.2, "travel_m": 1.0}
     ik = run("ik", path, "--position", "9", "0", "0.6", "--allow-collisions")
     assert "beyond the arm's reach (2.2 m from joint 'lift')" in ik.output
+
+
+def test_of_two_equal_fingers_the_reach_ends_where_fk_and_ik_go(run, tmp_path):
+    """The WAM's BarrettHand: inspect's reach ended at the first finger's tip, fk and ik
+    (without --frame) took the second's: the reach was not that of the frame ik moves."""
+    fingers = "".join(
+        _joint(f"{side}1", "revolute", "palm", f"{side}_prox", "1 0 0", f"0 {y} 0.05",
+               'lower="0" upper="1"')
+        + f'<joint name="{side}2" type="fixed"><parent link="{side}_prox"/>'
+        f'<child link="{side}_tip"/><origin xyz="0 0 0.05"/></joint>'
+        for side, y in (("fa", 0.02), ("fb", -0.02)))
+    links = ("l1", "l2", "palm", "fa_prox", "fa_tip", "fb_prox", "fb_tip")
+    robot = tmp_path / "hand.urdf"
+    robot.write_text('<robot name="h"><link name="base_link"/>'
+                     + "".join(f'<link name="{n}"/>' for n in links)
+                     + _joint("j1", "revolute", "base_link", "l1", "0 0 1", "0 0 0.1")
+                     + _joint("j2", "revolute", "l1", "l2", "0 1 0", "0 0 0.1")
+                     + _joint("j3", "revolute", "l2", "palm", "0 1 0", "0 0 0.3")
+                     + fingers + "</robot>")
+    fk = run("fk", robot)
+    assert "using 'fb_tip'" in fk.stderr
+    arm = json.loads(run("inspect", robot, "--format", "json").stdout)["totals"]["arm"]
+    assert arm["tip"] == "fb_tip"
