@@ -33,9 +33,12 @@ URDF_RULES: tuple[Rule, ...] = (
          "Fix the XML at the reported position (a tag left open, a stray '<' or '&')."),
     Rule("SB005", "unsafe-xml", E, "A DTD declares entities or names an external DTD",
          "Entities can read local files (<!ENTITY x SYSTEM \"file:///etc/passwd\">) or expand "
-         "exponentially (billion laughs). They are refused, never resolved, and the network "
-         "is never used. An external DTD that is only named is a warning: no robot "
-         "description reader loads it; a reference to an entity it would declare is an error.",
+         "exponentially (billion laughs): external and parameter entities, and entities that "
+         "refer to others, are refused, never resolved, and the network is never used. A "
+         "plain internal entity is read as xacro expands it; in a plain URDF a reference to "
+         "one is an error, since urdfdom reads '&name;' as written. An external DTD that is "
+         "only named is a warning: no robot description reader loads it; a reference to an "
+         "entity it would declare is an error.",
          "Remove the DOCTYPE; use xacro properties for repeated values."),
     Rule("SB006", "xacro-failed", E, "xacro cannot expand the file",
          "An unknown macro or property, a bad expression, a missing argument or include. The "

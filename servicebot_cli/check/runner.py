@@ -187,6 +187,11 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
                     "description reader loads it", severity=Severity.WARNING,
                     where=(robot.display, 0, 0) if robot.expanded else
                     (robot.display, dtd.line, dtd.column), fix="remove the DOCTYPE")
+    for name, line, column in robot.entities_used[:1]:  # xacro's output has them expanded
+        yield Issue("SB005", f"entity '&{name};' (its DOCTYPE declares it): urdfdom, under "
+                    "robot_state_publisher, Gazebo and MoveIt, does not expand entities and "
+                    f"reads '&{name};' as written", where=(robot.display, line, column),
+                    fix="write its value there, or name the file .urdf.xacro (xacro expands it)")
     found = list(syntax.check(robot.root))
     if not robot.expanded:  # xacro's own parser turned such blanks into spaces already
         found += syntax.vectors_split_wrong(robot.xml_text, robot.display)

@@ -169,7 +169,7 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
         return RobotDescription(
             display=source.display, path=source.path, xml_text=document.text,
             root=document.root, doctype=document.doctype, external_dtd=document.external_dtd,
-            files=(source.display,),
+            entities_used=document.entities_used, files=(source.display,),
             warnings=warnings,
         )
     from servicebot_cli.description.xacro_expand import expand

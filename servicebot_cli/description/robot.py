@@ -79,6 +79,8 @@ class RobotDescription:
         root: The parsed root element; every element has ``sourceline`` and ``column``.
         doctype: The DOCTYPE name when the document has one.
         external_dtd: The external DTD the DOCTYPE names, never loaded, and where.
+        entities_used: Internal DTD entities a plain URDF refers to, where first (read
+            expanded here; urdfdom does not expand them).
         files: Every file read: the top one, then xacro includes.
         xacro_args: ``name:=value`` arguments the xacro was expanded with.
         warnings: What reading it warned of (xacro's warnings, a file's messages, the
@@ -91,6 +93,7 @@ class RobotDescription:
     root: PositionedElement
     doctype: str | None = None
     external_dtd: ExternalDtd | None = None
+    entities_used: tuple[tuple[str, int, int], ...] = ()
     files: tuple[str, ...] = ()
     xacro_args: tuple[tuple[str, str], ...] = ()
     warnings: tuple[LoadWarning, ...] = ()

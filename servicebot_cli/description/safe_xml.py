@@ -1,8 +1,11 @@
 """A strict, safe XML parser that remembers where every element came from.
 
 Expat, driven directly: never recovers from an error, never loads a DTD or an entity,
-never touches the network. Entity declarations are refused outright, which also rules out
-"billion laughs" expansion. An external DTD is named only: never loaded, as no robot
+never touches the network. An entity the internal DTD subset declares is taken only as plain
+text (no reference to another entity in it, at most :data:`MOST_ENTITY_BYTES` bytes, at most
+:data:`MOST_ENTITIES` of them), as xacro expands it; others are refused, which rules out
+"billion laughs" expansion. Which of them the text refers to is recorded: urdfdom does not
+expand them. An external DTD is named only: never loaded, as no robot
 description reader loads it; a reference to an entity it would declare is refused. Each
 element records its 1-based line and column, and the comments just before it (``check``
 reads suppression comments there).
@@ -27,6 +30,10 @@ MAX_BYTES = 32 * 1024 * 1024
 """Largest description accepted [bytes]; real URDFs are well under 1 MB."""
 MAX_ELEMENTS = 1_000_000
 """Most elements accepted in one document."""
+MOST_ENTITIES = 256
+"""Most entities an internal DTD subset may declare."""
+MOST_ENTITY_BYTES = 4096
+"""Longest entity value taken [characters]."""
 MAX_DEPTH = 256
 """Deepest element nesting accepted; URDF nests about 6 deep."""
 
@@ -54,12 +61,16 @@ class XmlDocument:
         text: The decoded document text.
         doctype: Name in ``<!DOCTYPE name>`` if the document has one, else ``None``.
         external_dtd: The external DTD the DOCTYPE names (never loaded) and where, if any.
+        entities_used: The internal DTD's entities the text refers to (expat expanded
+            them; xacro does too, urdfdom does not), each with the line and column of its
+            first reference.
     """
 
     root: PositionedElement
     text: str
     doctype: str | None
     external_dtd: ExternalDtd | None = None
+    entities_used: tuple[tuple[str, int, int], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -206,6 +217,7 @@ class _Builder:
         self.depth = 0
         self.doctype: str | None = None
         self.external_dtd: ExternalDtd | None = None
+        self.entities: dict[str, str] = {}
         self.comments: list[str] = []
         self.tree = ET.TreeBuilder(element_factory=PositionedElement)
         self.parser = expat.ParserCreate()
@@ -234,7 +246,22 @@ class _Builder:
         if self.external_dtd is not None:
             self._entities_of_the_dtd(text, self.external_dtd)
         return XmlDocument(root=root, text=text, doctype=self.doctype,
-                           external_dtd=self.external_dtd)
+                           external_dtd=self.external_dtd,
+                           entities_used=self._entities_used(text))
+
+    def _entities_used(self, text: str) -> tuple[tuple[str, int, int], ...]:
+        """Each declared entity the text refers to, where first (comments and CDATA aside)."""
+        if not self.entities:
+            return ()
+        text = _UNREAD.sub(lambda m: re.sub(r"[^\n]", " ", m[0]), text)
+        body = text.find("]>")  # after the internal subset, whose declarations refer to none
+        used = []
+        for name in self.entities:
+            at = text.find(f"&{name};", max(body, 0))
+            if at >= 0:
+                line = text.count("\n", 0, at) + 1
+                used.append((name, line, at - (text.rfind("\n", 0, at) + 1) + 1))
+        return tuple(used)
 
     def _entities_of_the_dtd(self, text: str, dtd: ExternalDtd) -> None:
         """Refuse a reference to an entity the unloaded DTD would declare.
@@ -291,11 +318,23 @@ class _Builder:
             self.external_dtd = ExternalDtd(system_id or public_id or "", *self._where())
         self.doctype = name
 
-    def _entity(self, name: str, *_: object) -> None:
+    def _entity(self, name: str, is_parameter: int, value: str | None, _base: str | None,
+                system_id: str | None, public_id: str | None, notation: str | None) -> None:
+        """Take a plain internal entity (xacro expands it); refuse any other."""
+        if is_parameter or value is None or system_id or public_id or notation:
+            why = "a parameter entity" if is_parameter else "an external entity"
+        elif len(value) > MOST_ENTITY_BYTES or "&" in value or "%" in value:
+            why = (f"its value is over {MOST_ENTITY_BYTES} characters" if len(value) >
+                   MOST_ENTITY_BYTES else "its value refers to another entity")
+        elif len(self.entities) >= MOST_ENTITIES:
+            why = f"over {MOST_ENTITIES} entities declared"
+        else:
+            self.entities[name] = value
+            return
         raise UnsafeXmlError(
             self.filename,
-            f"entity declaration '{name}' refused: entities are never expanded in a robot "
-            "description; use xacro properties instead",
+            f"entity declaration '{name}' refused ({why}): only plain internal entities are "
+            "read; use xacro properties instead",
             *self._where(),
         )
 

@@ -12,6 +12,7 @@ import pytest
 
 from servicebot_cli.common.errors import UnsafeXmlError, XmlError
 from servicebot_cli.description.safe_xml import parse_xml
+from tests.check.helpers import findings
 from tests.conftest import SIM_URDF, XACRO_SOURCE, assert_one_line_error, run_servicebot
 
 COMMANDS = ["check", "inspect", "fk", "ik", "simulate", "drive", "emulate", "expand"]
@@ -232,3 +233,36 @@ def test_the_check_hint_names_the_xacro_arguments_the_file_was_expanded_with(tmp
     line = assert_one_line_error(result, 2, "not a valid URDF", "does not specify limits")
     assert line.endswith(f"(run 'servicebot check \"{robot}\" limit:=false' for details)")
     assert run_servicebot("fk", robot).returncode == 0  # its default expansion builds
+
+
+_PLAIN_ENTITY = ('<?xml version="1.0"?>\n<!DOCTYPE robot [<!ENTITY len "0.5">]>\n'
+                 '<robot name="r"{ns}><link name="a"><visual><geometry><box size="&len; 1 1"/>'
+                 "</geometry></visual></link></robot>\n")
+
+
+def test_a_plain_entity_is_expanded_in_a_xacro_as_xacro_does(run, tmp_path):
+    """xacro's expat expands it (and check_urdf takes xacro's output): refused before."""
+    source = tmp_path / "r.urdf.xacro"
+    source.write_text(_PLAIN_ENTITY.format(ns=' xmlns:xacro="http://www.ros.org/wiki/xacro"'))
+    result = run("expand", source)
+    assert result.exit_code == 0, result.output
+    assert '<box size="0.5 1 1"/>' in result.stdout
+    output = tmp_path / "out.urdf"
+    output.write_text(result.stdout)  # the DOCTYPE stays, its entity used nowhere
+    assert run("check", "urdf", output, "--isolated").exit_code == 0
+
+
+def test_a_plain_entity_in_a_urdf_is_an_error_as_urdfdom_reads_it_as_written(run, tmp_path):
+    robot = tmp_path / "r.urdf"
+    robot.write_text(_PLAIN_ENTITY.format(ns=""))
+    result = run("check", "urdf", robot, "--format", "json", "--isolated")
+    (found,) = [f for f in findings(result.stdout) if f["code"] == "SB005"]
+    assert found["severity"] == "error" and (found["line"], found["column"]) == (3, 61)
+    assert "does not expand entities and reads '&len;' as written" in found["message"]
+
+
+@pytest.mark.parametrize("declaration", ['<!ENTITY % p "x">', '<!ENTITY a "&b;">',
+                                         f'<!ENTITY long "{"x" * 5000}">'])
+def test_entities_other_than_plain_text_are_refused(declaration):
+    with pytest.raises(UnsafeXmlError, match="entity declaration .* refused"):
+        parse_xml(f'<!DOCTYPE robot [{declaration}]><robot name="r"/>'.encode(), "e.urdf")
