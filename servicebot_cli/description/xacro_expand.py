@@ -125,6 +125,7 @@ def expand(
         except Exception as exc:  # xacro raises bare Python errors from expressions, too
             raise tracer.error(exc, xacro.filestack) from None
     _refuse_unwritable(doc, display, tracer)
+    _refuse_bad_names(doc, display, tracer)
     bare = bare_macro_calls(doc, tracer.macros, tracer.ref_of) + bare_directives(
         doc, tracer.ref_of)
     origins = tracer.take_origins(doc)
@@ -213,6 +214,31 @@ def _refuse_unwritable(doc: xml.dom.minidom.Document, display: str, tracer: _Tra
                     f"{where}: xacro: attribute '{name}' of <{node.tagName}> is the "
                     f"{type(value).__name__} {value!r}, not text, which xacro cannot write; "
                     f"write it as text (value=\"{value}\")")
+
+
+_XML_NAME = re.compile(r"(?:[^\W\d]|:)[\w.:-]*")
+"""An XML name (letters, '_' or ':' first; then letters, digits, '.', '-', '_', ':')."""
+
+
+def _refuse_bad_names(doc: xml.dom.minidom.Document, display: str, tracer: _Tracer) -> None:
+    """Refuse an element or attribute name that is no XML name, where xacro made it.
+
+    ``<xacro:element xacro:name="${x}">`` with x = '1bad name', or ``<xacro:attribute
+    name="bad name">``: xacro writes XML no reader parses, and the parse error pointed into
+    the expanded text, at a line of the source that was fine.
+    """
+    for node in doc.getElementsByTagName("*"):
+        bad = [(f"element name '{node.tagName}'", "xacro:element")] \
+            if not _XML_NAME.fullmatch(node.tagName) else []
+        bad += [(f"attribute name '{name}' of <{node.tagName}>", "xacro:attribute")
+                for name in node.attributes.keys() if not _XML_NAME.fullmatch(name)]
+        if bad:
+            what, made_by = bad[0]
+            ref = tracer.ref_of(node)
+            where = ref.location() if ref is not None else display
+            raise XacroError(f"{where}: xacro: {what} is no XML name, so the expanded URDF "
+                             f"would not parse (a {made_by} named it); give a name of "
+                             "letters, digits, '_', '-' and '.', starting with a letter")
 
 
 def _unread_args(display: str, given: Mapping[str, str],

@@ -410,3 +410,20 @@ def test_xacro_arguments_are_read_as_xacros_command_line_reads_them(run, tmp_pat
     import re
 
     assert re.findall(r'<link name="([^"]+)"', result.stdout) == links
+
+
+@pytest.mark.parametrize(("body", "says"), [
+    ('<xacro:macro name="m" params="x"><xacro:element xacro:name="${x}" size="1"/>'
+     '</xacro:macro>\n<link name="b"><xacro:m x="1bad name"/></link>',
+     "r.urdf.xacro:2:34: xacro: element name '1bad name' is no XML name"),
+    ('<link name="b">\n<xacro:attribute name="bad name" value="1"/></link>',
+     "r.urdf.xacro:2:1: xacro: attribute name 'bad name' of <link> is no XML name"),
+])
+def test_a_name_xacro_makes_that_is_no_xml_name_is_refused_where_it_is_made(run, tmp_path,
+                                                                            body, says):
+    """xacro writes '<1bad name size="1"/>' with exit 0; the refusal pointed into the
+    expanded text, at a line of the source that was fine."""
+    source = tmp_path / "r.urdf.xacro"
+    source.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link '
+                      f'name="a"/>\n{body}</robot>\n')
+    assert_one_line_error(run("expand", source), 2, says)
