@@ -52,16 +52,11 @@ def installed_from(missing: Path) -> InstalledFrom | None:
     package's CMakeLists.txt installs an existing source file at that place.
     """
     existing = next((p for p in missing.parents if os.path.isdir(p)), None)
-    holder = holding_package(existing) if existing is not None else None
-    if holder is None:
+    placed = _placed(missing, existing) if existing is not None else None
+    if placed is None:
         return None
-    name, package_dir = holder
-    try:
-        relative = PurePosixPath(missing.relative_to(package_dir).as_posix())
-        cmake = (package_dir / "CMakeLists.txt").read_text(encoding="utf-8", errors="replace")
-    except (ValueError, OSError):
-        return None
-    for source_dir, installed_dir in directory_rules(cmake, name):
+    name, package_dir, relative, rules = placed
+    for source_dir, installed_dir in rules:
         try:
             rest = relative.relative_to(installed_dir) if installed_dir else relative
         except ValueError:
@@ -70,6 +65,24 @@ def installed_from(missing: Path) -> InstalledFrom | None:
         if os.path.isfile(source):
             return InstalledFrom(name, package_dir, source, source_dir, installed_dir)
     return None
+
+
+def _placed(path: Path, directory: Path
+            ) -> tuple[str, Path, PurePosixPath, list[tuple[str, str]]] | None:
+    """The package holding ``directory``, ``path`` relative to it, and its install rules.
+
+    None outside a package, or where its CMakeLists.txt cannot be read.
+    """
+    holder = holding_package(directory)
+    if holder is None:
+        return None
+    name, package_dir = holder
+    try:
+        relative = PurePosixPath(path.relative_to(package_dir).as_posix())
+        cmake = (package_dir / "CMakeLists.txt").read_text(encoding="utf-8", errors="replace")
+    except (ValueError, OSError):
+        return None
+    return name, package_dir, relative, directory_rules(cmake, name)
 
 
 def directory_rules(cmake: str, package: str) -> list[tuple[str, str]]:
@@ -106,16 +119,11 @@ def included_when_installed(includer: Path, relative: str) -> Path | None:
     source. None where ``includer`` is installed by no rule, or the include leaves
     ``share/PKG``, or names no file installed from the sources.
     """
-    holder = holding_package(includer.parent)
-    if holder is None:
+    placed = _placed(includer, includer.parent)
+    if placed is None:
         return None
-    name, package_dir = holder
-    try:
-        inside = PurePosixPath(includer.relative_to(package_dir).as_posix())
-        cmake = (package_dir / "CMakeLists.txt").read_text(encoding="utf-8", errors="replace")
-    except (ValueError, OSError):
-        return None
-    for source_dir, installed_dir in directory_rules(cmake, name):
+    _, package_dir, inside, rules = placed
+    for source_dir, installed_dir in rules:
         try:
             rest = inside.relative_to(source_dir) if source_dir else inside
         except ValueError:
