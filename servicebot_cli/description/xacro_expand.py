@@ -119,7 +119,7 @@ def expand(
         try:
             with _recursion_limit(_RECURSION_LIMIT):
                 doc = xacro.parse(None, display)
-                xacro.process_doc(doc, mappings=dict(given))
+                xacro.process_doc(doc, mappings=_ReadArguments(given, tracer.known_args))
         except DescriptionError:
             raise
         except Exception as exc:  # xacro raises bare Python errors from expressions, too
@@ -241,18 +241,33 @@ def _refuse_bad_names(doc: xml.dom.minidom.Document, display: str, tracer: _Trac
                              "letters, digits, '_', '-' and '.', starting with a letter")
 
 
+class _ReadArguments(dict[str, str]):
+    """xacro's ``$(arg)`` values, noting in ``read`` each name the expansion looks up.
+
+    A file may read an argument under a computed name (``$(arg ${'v' + 'ar'})``, from xacro's
+    own tests) that no scan of its text sees.
+    """
+
+    def __init__(self, given: Mapping[str, str], read: set[str]) -> None:
+        super().__init__(given)
+        self.read = read
+
+    def __getitem__(self, name: str) -> str:
+        self.read.add(name)
+        return super().__getitem__(name)
+
+
 def _unread_args(display: str, given: Mapping[str, str],
                  tracer: _Tracer) -> tuple[LoadWarning, ...]:
-    """A warning per argument the file neither declares nor visibly reads.
+    """A warning per argument the file neither declares nor reads (on any path it took).
 
-    Not an error: ROS xacro accepts any argument, and a file can read one under a computed
-    name (``$(arg ${'v' + 'ar'})``) that no scan of its text sees.
+    Not an error: ROS xacro accepts any argument, and a branch not taken with these
+    arguments may read it.
     """
     declared = ", ".join(sorted(tracer.known_args)) or "none"
     return tuple(
         LoadWarning(f"xacro argument '{name}' is not declared or read by this file (its "
-                    f"arguments: {declared}); xacro ignores it unless the file reads it under "
-                    "a computed name", display,
+                    f"arguments: {declared}); xacro ignores it", display,
                     fix=f"drop {name}:=VALUE, or declare it with <xacro:arg name=...> where "
                     "the file reads it")
         for name in sorted(set(given) - tracer.known_args))

@@ -124,9 +124,13 @@ def test_an_argument_read_under_a_computed_name_is_used(run, tmp_path):
     (tmp_path / "r.urdf.xacro").write_text(
         '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
         "  <link name=\"$(arg ${'v' + 'ar'})\"/>\n</robot>\n")
-    result = run("expand", tmp_path / "r.urdf.xacro", "var:=base")
+    result = run("expand", tmp_path / "r.urdf.xacro", "var:=base", "other:=x")
     assert result.exit_code == 0, result.stderr
     assert '<link name="base"/>' in result.stdout
+    # read under its computed name, 'var' is read; 'other' is read nowhere (xacro's own
+    # test_expression_in_extension warned of 'var' too)
+    assert "'var'" not in result.stderr
+    assert "xacro argument 'other' is not declared or read by this file" in result.stderr
 
 
 def test_malformed_xacro_argument_is_a_usage_error(run):
