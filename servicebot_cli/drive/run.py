@@ -9,6 +9,7 @@ the arm's way from where the firmware reports it (see :mod:`~servicebot_cli.driv
 
 from __future__ import annotations
 
+import os
 import sys
 from collections.abc import Callable
 from typing import TYPE_CHECKING, TypeAlias
@@ -27,6 +28,8 @@ from servicebot_cli.drive.session.commander import HostLink
 from servicebot_cli.drive.teleop.terminal import Terminal, keyboard_session
 
 if TYPE_CHECKING:
+    from pathlib import Path
+
     from servicebot_cli.description.robot import RobotDescription
 
 DriveResult: TypeAlias = DryRun | Driven
@@ -58,6 +61,7 @@ def drive(request: DriveRequest, *, log: Callable[[str], None],
         raise BadOption("--max-speed", str(exc)) from None
     link = make_link(request.protocol, motors, request.arduino)
     port, baud = port_and_baud(robot, request.port, request.baud, need_port=not request.dry_run)
+    _refuse_log_into_port(request.log, port)
     check_rate(request.rate_hz, link, baud, None if request.dry_run else request.link_timeout_s,
                log)
     settings = StreamSettings(port, baud, request.rate_hz, request.max_accel_rad_s2,
@@ -107,3 +111,20 @@ def _plan(request: DriveRequest, motors: MotorMap, link: HostLink,
     if isinstance(request.mode, Keyboard):
         raise ValueError("the keyboard has no plan")
     return script_plan(request.mode, motors, link, log)
+
+
+def _refuse_log_into_port(log: Path | None, port: str) -> None:
+    """Refuse a ``--log`` that is the serial port: its rows would go to the motor controller.
+
+    Raises:
+        BadOption: ``log`` and ``port`` are one file (a device the suffix check lets by).
+    """
+    if log is None:
+        return
+    try:
+        same = os.path.samefile(log, port)
+    except OSError:  # either is not there (yet): not the same
+        return
+    if same:
+        raise BadOption("--log", f"{log} is the serial port {port}: the log's rows would go "
+                        "to the motor controller; give a file name (run.csv)")

@@ -36,3 +36,14 @@ def test_speeds_beyond_an_avr_int_are_refused(run):
     fine = run("drive", "--dry-run", "--protocol", "arduino", "--ticks-per-rev", "3436",
                "--linear", "0.02", "--duration-s", "0.1")
     assert fine.exit_code == 0, fine.output
+
+
+def test_a_log_that_is_the_port_is_refused_before_anything_is_sent(emulator):
+    """--log /dev/pts/N passed the suffix check (a device) and wrote the CSV into the port:
+    1041 bytes of text to the motor controller."""
+    emu = emulator()
+    code, _, stderr = finish(servicebot("drive", "--port", emu.path, "--linear", "0.02",
+                                        "--duration-s", "0.3", "--log", emu.path))
+    assert code == 2, stderr
+    assert "is the serial port" in stderr and "the log's rows would go to the motor" in stderr
+    assert emu.state()["counters"]["first_command"] is None
