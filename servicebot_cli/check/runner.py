@@ -41,11 +41,13 @@ class FileReport:
         findings: Its findings.
         packages: Every package the file uses, by name: where and how it was found, or None
             when it was found nowhere.
+        read: Every file reading it read (xacro's includes too), as named in messages.
     """
 
     file: str
     findings: tuple[Finding, ...]
     packages: Mapping[str, PackageLocation | None] = field(default_factory=dict)
+    read: tuple[str, ...] = ()
 
 
 def check_source(source: RobotSource, settings: Settings, env: CheckEnv,
@@ -83,12 +85,12 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv,
             own = [issue for issue in _issues(robot, settings, env)
                    if not _from_missing_parent(issue, parent)]
         return _report(source.display, place_issues(robot, [note, *own], settings),
-                       packages.used(robot, env.search))
+                       packages.used(robot, env.search), robot.files)
     ahead = _model_ahead(robot, settings, env)
     try:
         findings = place_issues(robot, _issues(robot, settings, env), settings)
         return _report(source.display, findings + _model(robot, findings, settings, ahead),
-                       packages.used(robot, env.search))
+                       packages.used(robot, env.search), robot.files)
     finally:
         if ahead is not None:
             ahead.close()  # at once when no verdict was asked for
@@ -271,6 +273,7 @@ def _place(robot: RobotDescription | None, issue: Issue, settings: Settings) -> 
 
 
 def _report(file: str, findings: list[Finding],
-            used: Mapping[str, PackageLocation | None] | None = None) -> FileReport:
+            used: Mapping[str, PackageLocation | None] | None = None,
+            read: tuple[str, ...] = ()) -> FileReport:
     ordered = sorted(findings, key=lambda f: (f.code == "SB702", f.file != file, *f.sort_key()))
-    return FileReport(file, tuple(ordered), dict(used or {}))
+    return FileReport(file, tuple(ordered), dict(used or {}), read)

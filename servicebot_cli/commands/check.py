@@ -208,6 +208,8 @@ def _run(request: CheckRequest, report: ReportOptions, packages: bool = False) -
     from servicebot_cli.output.findings import show
 
     result = run(request)
+    # the report replaces no file the run read: an include the named file pulled in
+    refuse_overwriting(report.output, [f for r in result.reports for f in r.read])
     show(result, report.fmt, report.output, packages)
     if result.failed:
         raise AnswerIsNo("")  # the summary line already says so

@@ -68,4 +68,5 @@ def expand(ctx: click.Context, robot_args: RobotArgs, output: str) -> None:
     if output == "-":
         click.echo(robot.xml_text, nl=False)
     else:
+        refuse_overwriting(output, robot.files)  # an include, too, is a source to keep
         write_atomic(output, robot.xml_text, make_parents=True)

@@ -266,3 +266,22 @@ def test_a_plain_entity_in_a_urdf_is_an_error_as_urdfdom_reads_it_as_written(run
 def test_entities_other_than_plain_text_are_refused(declaration):
     with pytest.raises(UnsafeXmlError, match="entity declaration .* refused"):
         parse_xml(f'<!DOCTYPE robot [{declaration}]><robot name="r"/>'.encode(), "e.urdf")
+
+
+@pytest.mark.parametrize(("command", "include"), [("check", "inc.xacro"),
+                                                   ("expand", "parts.xml")])
+def test_an_output_that_is_a_file_the_xacro_includes_is_refused(run, tmp_path, command,
+                                                                include):
+    """check main.urdf.xacro -o inc.xacro replaced the include with the report."""
+    (tmp_path / include).write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:macro name="part">'
+        '<link name="part"/></xacro:macro></robot>')
+    main = tmp_path / "main.urdf.xacro"
+    main.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                    f'<xacro:include filename="{include}"/><link name="base"/><xacro:part/>'
+                    '<joint name="j" type="fixed"><parent link="base"/><child link="part"/>'
+                    "</joint></robot>")
+    before = (tmp_path / include).read_text()
+    result = run(command, main, "-o", tmp_path / include)
+    assert_one_line_error(result, 2, "is the file it reads")
+    assert (tmp_path / include).read_text() == before
