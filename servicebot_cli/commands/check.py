@@ -49,6 +49,9 @@ class CheckGroup(Group):
         first = args[0] if args else ""
         if first not in self.commands and first.split("=")[0] not in _GROUP_ONLY:
             args = ["urdf", *args]
+        if first.split("=")[0] in ("--list-rules", "--explain"):
+            # what follows is check urdf's (a FILE, --format): said, not silently ignored
+            refuse_catalogue_mix(self.commands["urdf"], ctx, args)
         refuse_catalogue_mix(self, ctx, args[: self._own_args(ctx, args)])
         return super().parse_args(ctx, args)
 

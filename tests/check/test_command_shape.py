@@ -68,6 +68,11 @@ def test_a_failing_check_written_to_a_file_says_so_once_on_stderr(run, tmp_path)
     (["--explain", "SB301", "--list-rules"], ["--list-rules and --explain"]),
     (["urdf", "--explain", "SB301", "--strict"], ["--explain", "checks nothing", "drop --strict"]),
     (["urdf", SIM_URDF, "--list-rules"], ["--list-rules", "drop FILE"]),
+    # the short form too: the FILE, or check urdf's own option, was silently ignored
+    (["--list-rules", SIM_URDF], ["--list-rules", "drop FILE"]),
+    (["--list-rules", "no_such.urdf"], ["--list-rules", "drop FILE"]),
+    (["--explain", "SB301", SIM_URDF], ["--explain", "drop FILE"]),
+    (["--list-rules", "--format", "json"], ["--list-rules", "drop --format"]),
     (["controllers", "--format", "json", "--explain", "SB601"], ["drop --format"]),
     ([SIM_URDF, "--config", "pyproject.toml", "--isolated"], ["--config", "--isolated"]),
     (["controllers", "--package", "pkg=."], ["--package has no effect without --urdf FILE"]),
