@@ -302,13 +302,17 @@ URDF_RULES: tuple[Rule, ...] = (
          "Compute the inertia again (solid formulas, or from CAD)."),
     Rule("SB307", "singular-inertia", W, "Mass with a zero principal moment of inertia",
          "A point or a rod: physically possible in the limit, but simulators need all three "
-         "moments positive.",
+         "moments positive. A point mass (no inertia at all) on a link a joint moves, with no "
+         "fixed child whose inertia Gazebo and MuJoCo lump into it, is an error: MuJoCo "
+         "refuses the robot.",
          "Give the link a small realistic inertia."),
     Rule("SB308", "triangle-inequality", E, "Principal moments that break the triangle inequality",
          "For any body each principal moment is at most the sum of the other two "
          "(Ixx + Iyy >= Izz ...); the printed moments cannot belong to a real body. Two zero "
          "moments (0, 0, I) count on a link a joint moves; on a link fixed to another, which "
-         "consumers lump into it, they are SB307.",
+         "consumers lump into it, they are SB307. Missed by a rounding of the file's numbers "
+         "(within a millionth), a warning: Gazebo and Pinocchio take it, MuJoCo, which tests "
+         "A + B >= C exactly, refuses it.",
          "Compute the inertia again (solid formulas, or from CAD)."),
     Rule("SB309", "root-link-inertia", N, "The root link carries inertia",
          "KDL (robot_state_publisher, many ROS tools) ignores the root link's inertia and "

@@ -32,6 +32,7 @@ def _mass(link: Link) -> float:
 def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
     """Every inertia issue of ``robot``."""
     moved = {joint.child for joint in robot.joints if joint.movable}
+    alone = moved - _given_inertia_by_fixed_children(robot)
     for link in robot.links:
         inertial = link.inertial
         if inertial is None:
@@ -54,7 +55,8 @@ def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
         if inertial.mass_kg == 0.0 and any(moments):
             yield _inertia_without_mass(link.name, inertial.element, link.name == robot.root_link)
             continue
-        physical = yield from _possible(link, moments, link.name in moved)
+        physical = yield from _possible(link, moments, link.name in moved,
+                                        link.name in alone)
         if physical and _mass(link) > 0 and values.bounded((_mass(link),), values.LARGEST_INERTIA):
             yield from _against_geometry(robot, link, env)
     yield from _moving_masses(robot)
@@ -92,13 +94,47 @@ def _inertia_without_mass(name: str, element: ET.Element | None, root: bool) -> 
                  "<inertial>) for a massless frame")
 
 
-def _possible(link: Link, values: tuple[float, ...],
-              moving: bool) -> Generator[Issue, None, bool]:
+def _given_inertia_by_fixed_children(robot: RobotDescription) -> set[str]:
+    """Links a fixed joint (through fixed joints) joins to a child with inertia.
+
+    Gazebo (sdformat) and MuJoCo lump such a child into the link: the body they simulate
+    has the child's inertia, whatever the link's own.
+    """
+    children: dict[str, list[str]] = {}
+    for joint in robot.joints:
+        if joint.type == "fixed" and joint.parent and joint.child:
+            children.setdefault(joint.parent, []).append(joint.child)
+    links = robot.links_by_name
+
+    def has_inertia(name: str) -> bool:
+        inertial = links[name].inertial if name in links else None
+        moments = inertial.inertia_kg_m2 if inertial is not None else None
+        return bool(moments) and any(m != 0 for m in moments or ())
+
+    given: set[str] = set()
+    for top in children:
+        stack, seen = list(children[top]), {top}
+        while stack:
+            name = stack.pop()
+            if name in seen:
+                continue
+            seen.add(name)
+            if has_inertia(name):
+                given.add(top)
+                break
+            stack.extend(children.get(name, ()))
+    return given
+
+
+def _possible(link: Link, values: tuple[float, ...], moving: bool,
+              alone: bool = False) -> Generator[Issue, None, bool]:
     """SB306-SB308; returns True when the inertia is a real body's.
 
     A zero principal moment is an idealisation (a thin rod: 0, I, I), a warning; two of them
     (0, 0, I) are no body at all, which MuJoCo refuses (fetch's gripper fingers): an error
-    on a link a joint moves. A link fixed to others (anymal's dummy ``base``) is lumped with
+    on a link a joint moves. A point mass (mass, no inertia) is an error on a link a joint
+    moves ``alone`` (no fixed child with inertia lumped into it): MuJoCo refuses it. A link
+    fixed to others (anymal's dummy ``base``) is lumped with
     them by Gazebo (sdformat) and Pinocchio, so only the sum has to be a body: a warning there.
     """
     moments = solids.principal_moments(values)
@@ -106,7 +142,13 @@ def _possible(link: Link, values: tuple[float, ...],
     shown = ", ".join(f"{m:.6g}" for m in moments)
     element = link.inertial.element if link.inertial else None
     if scale <= 1e-15:  # all zero, up to rounding in the file
-        if _mass(link) > 0:
+        if _mass(link) > 0 and alone:  # laikago's hip motors: MuJoCo refuses the robot
+            yield Issue("SB307", f"link '{link.name}' has mass {_mass(link):g} kg and zero "
+                        "inertia (a point mass), and a joint moves it: MuJoCo refuses a "
+                        "moving body without inertia ('mass and inertia of moving bodies must "
+                        "be larger than mjMINVAL')", element, severity=Severity.ERROR,
+                        fix="give the link the inertia of its shape")
+        elif _mass(link) > 0:
             yield Issue("SB307", f"link '{link.name}' has mass {_mass(link):g} kg and zero "
                         "inertia (a point mass)", element)
         return False
@@ -119,6 +161,15 @@ def _possible(link: Link, values: tuple[float, ...],
         yield Issue("SB308", f"link '{link.name}' principal moments {shown} kg m^2 break the "
                     f"triangle inequality: {moments[0]:.6g} + {moments[1]:.6g} < "
                     f"{moments[2]:.6g}", element)
+        return False
+    if moments[0] + moments[1] < moments[2] * (1 - 1e-12) and (moving or not degenerate):
+        # within rounding of the file's numbers, but MuJoCo tests A + B >= C exactly
+        yield Issue("SB308", f"link '{link.name}' principal moments {shown} kg m^2 miss the "
+                    f"triangle inequality by {moments[2] - moments[0] - moments[1]:.2g}: "
+                    "rounding for Gazebo and Pinocchio, but MuJoCo refuses the robot ('inertia "
+                    "must satisfy A + B >= C')", element, severity=Severity.WARNING,
+                    fix=f"round {moments[2]:.6g} down, or set <compiler balanceinertia=\"true\"/>"
+                    " in the file's <mujoco> block")
         return False
     if degenerate:
         if _mass(link) > 0:

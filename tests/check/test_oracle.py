@@ -37,6 +37,10 @@ KNOWN_DEFECTS = {
     "anymal_c_simple_description/urdf/anymal.urdf": {"SB308"},
     "pr2_description/urdf/pr2.urdf": {"SB308", "SB501"},
     "bolt_description/robots/bolt.urdf": {"SB310"},
+    # head, l_ankle_2, l_wrist_1...: mass and no inertia on links joints move (MuJoCo:
+    # 'inertia must have positive eigenvalues', checked on the file without its meshes)
+    "icub_description/robots/icub.urdf": {"SB307"},
+    "icub_description/robots/icub_reduced.urdf": {"SB307"},
     "romeo_description/urdf/romeo_laas_small.urdf": {"SB306", "SB308", "SB401"},
     "romeo_description/urdf/romeo_small.urdf": {"SB308"},
     "talos_data/robots/talos_left_arm.urdf": {"SB501"},
