@@ -43,7 +43,8 @@ def _capsule(robot: RobotDescription, where: str, capsule: ET.Element) -> Issue:
     version = URDF_VERSION.fullmatch(robot.root.get("version") or "1.0")
     if version is not None and (int(version[1]), int(version[2])) >= (1, 1):
         return Issue("SB407", f"the {where} is a capsule: urdfdom (ROS 2) and Pinocchio read "
-                     "it in this URDF 1.1 file, older URDF readers drop the shape", capsule,
+                     f"it in this URDF {version[1]}.{version[2]} file, older URDF readers drop "
+                     "the shape", capsule,
                      fix="a cylinder and two spheres, for tools without URDF 1.1")
     return Issue("SB407", f"the {where} is a capsule, which urdfdom reads only from URDF 1.1 "
                  "on: here it drops the whole element, and Pinocchio and Gazebo lose it",

@@ -42,11 +42,13 @@ def check(root: ET.Element) -> Iterator[Issue]:
             yield Issue("SB015", f"{count} <{tag}> elements, over the limit of {MAX_LINKS}; "
                         "refused", root)
             return
+    version = URDF_VERSION.fullmatch(root.get("version") or "1.0")
+    newer = version is not None and (int(version[1]), int(version[2])) >= (1, 2)
     for child in root:
         if not isinstance(child.tag, str):
             continue
         if child.tag in TOP_LEVEL:
-            yield from _element_tree(child)
+            yield from _element_tree(child, newer)
         elif not _is_extension(child.tag):
             close = _close(child.tag, TOP_LEVEL)
             if close:
@@ -84,12 +86,19 @@ def _is_extension(tag: str) -> bool:
     return tag in EXTENSIONS or ":" in tag or tag.startswith("{")
 
 
-def _element_tree(top: ET.Element) -> Iterator[Issue]:
+_FROM_1_2 = {"acceleration": 1, "deceleration": 1, "jerk": 1}
+"""<limit> attributes urdfdom reads from URDF 1.2 on (it ignores them, with a note, before)."""
+
+
+def _element_tree(top: ET.Element, urdf_1_2: bool = False) -> Iterator[Issue]:
     stack = [top]
     while stack:  # iterative: depth is bounded by the parser, but stay uniform
         element = stack.pop()
         spec = SPEC[element.tag]
-        yield from _attributes(element, spec.attributes, spec.required)
+        if element.tag == "limit":
+            yield from _limit_attributes(element, spec.attributes, spec.required, urdf_1_2)
+        else:
+            yield from _attributes(element, spec.attributes, spec.required)
         present = set()
         once = _READ_ONCE.get(element.tag, ())
         for child in _read_children(element):
@@ -246,10 +255,10 @@ def _named(element: ET.Element) -> str:
     return f" '{name}'" if name else ""
 
 
-def _attributes(element: ET.Element, allowed: dict[str, int],
-                required: tuple[str, ...]) -> Iterator[Issue]:
+def _attributes(element: ET.Element, allowed: dict[str, int], required: tuple[str, ...],
+                skip: frozenset[str] = frozenset()) -> Iterator[Issue]:
     for key, value in element.attrib.items():
-        if ":" in key or key.startswith("{"):
+        if ":" in key or key.startswith("{") or key in skip:
             continue
         if key not in allowed:
             close = _close(key, tuple(allowed))
@@ -262,6 +271,26 @@ def _attributes(element: ET.Element, allowed: dict[str, int],
         if key not in element.attrib:
             yield Issue("SB012", f"<{element.tag}>{_named(element)} has no '{key}' attribute",
                         element, fix=f"add {key}=\"...\"")
+
+
+def _limit_attributes(element: ET.Element, allowed: dict[str, int], required: tuple[str, ...],
+                      urdf_1_2: bool) -> Iterator[Issue]:
+    """A ``<limit>``'s attributes: URDF 1.2's acceleration, deceleration and jerk too.
+
+    urdfdom reads them in a ``<robot version="1.2">`` file and ignores them before; they are
+    no misspelling either way.
+    """
+    if urdf_1_2:
+        yield from _attributes(element, {**allowed, **_FROM_1_2}, required)
+        return
+    newer = [key for key in element.attrib if key in _FROM_1_2]
+    if newer:
+        listed = ", ".join(f"'{key}'" for key in newer)
+        yield Issue("SB011", f"<limit> {listed}: urdfdom reads "
+                    f"{'it' if len(newer) == 1 else 'them'} only from URDF 1.2 on, and this "
+                    "file is older (no <robot version=\"1.2\">): ignored", element,
+                    fix='<robot version="1.2"> if it is meant')
+    yield from _attributes(element, allowed, required, skip=frozenset(newer))
 
 
 @functools.lru_cache(maxsize=8192)  # "0 0 0", "1": the same values in file after file
