@@ -271,6 +271,11 @@ class OutputPath(click.ParamType[str]):
             self.fail(f"'{text}': directory '{parent}' does not exist; create it first",
                       param, ctx)
         if not os.access(parent, os.W_OK | os.X_OK):
+            from servicebot_cli.common.files import read_only_file_system
+
+            if read_only_file_system(parent):
+                self.fail(f"'{text}': '{parent}' is on a read-only file system; write "
+                          "somewhere else", param, ctx)
             self.fail(f"'{text}': permission denied writing in '{parent}'", param, ctx)
         return text
 

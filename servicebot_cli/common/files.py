@@ -24,6 +24,7 @@ A file replaced keeps its mode and owner; another hard link to it keeps the old 
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import re
 import shutil
@@ -253,7 +254,19 @@ def _parent(target: Path) -> Path:
     return directory
 
 
+def read_only_file_system(directory: str | os.PathLike[str]) -> bool:
+    """Whether ``directory`` is on a file system mounted read-only (EROFS, not permissions)."""
+    try:
+        return bool(os.statvfs(directory).f_flag & os.ST_RDONLY)
+    except (OSError, AttributeError):  # pragma: no cover - not POSIX
+        return False
+
+
 def _cannot_write(target: Path, directory: Path, exc: OSError) -> OutputError:
+    if exc.errno == errno.EROFS or (isinstance(exc, PermissionError)
+                                    and read_only_file_system(directory)):
+        return OutputError(f"{target}: '{directory}' is on a read-only file system; write "
+                           "somewhere else")
     if isinstance(exc, PermissionError):
         return OutputError(f"{target}: permission denied writing in '{directory}'")
     if exc.errno in NO_ROOM:

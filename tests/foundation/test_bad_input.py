@@ -285,3 +285,19 @@ def test_an_output_that_is_a_file_the_xacro_includes_is_refused(run, tmp_path, c
     result = run(command, main, "-o", tmp_path / include)
     assert_one_line_error(result, 2, "is the file it reads")
     assert (tmp_path / include).read_text() == before
+
+
+def test_a_read_only_file_system_is_named_as_such_not_as_permissions(run, tmp_path):
+    """EROFS was 'permission denied writing in ro', which sends the user to chmod."""
+    mount_point = tmp_path / "ro"
+    mount_point.mkdir()
+    mounted = subprocess.run(["mount", "-t", "tmpfs", "-o", "ro,size=64k", "none",
+                              str(mount_point)], capture_output=True, check=False)
+    if mounted.returncode != 0:
+        pytest.skip("mounting a read-only tmpfs needs root (CI runs as root): "
+                    + mounted.stderr.decode(errors="replace").strip())
+    try:
+        result = run("expand", "-o", mount_point / "out.urdf")
+        assert_one_line_error(result, 2, "is on a read-only file system")
+    finally:
+        subprocess.run(["umount", str(mount_point)], check=False)
