@@ -109,6 +109,10 @@ class CameraSpec:
     depth_topics: tuple[tuple[str, str], ...] = ()
     """What its plugin publishes of depth, each topic with its message type: gazebo_ros_camera
     on a ``depth`` sensor, gazebo_ros_openni_kinect and gazebo_ros_depth_camera (ROS 1)."""
+    centred: bool = False
+    """Its camera_info puts the principal point at the image's centre, (w/2, h/2), as
+    gz-sensors does (gz-rendering's projectionToCameraIntrinsic); gazebo_ros_camera writes
+    ((w + 1)/2, (h + 1)/2)."""
 
 
 _DEPTH_PLUGINS = ("libgazebo_ros_openni_kinect.so", "libgazebo_ros_depth_camera.so")
@@ -360,11 +364,20 @@ def camera_spec(sensor: Sensor) -> CameraSpec:
         far_clip_m=_float(p, "camera/clip/far"),
         update_rate_hz=sensor.update_rate_hz,
         noise=_noise(p, "camera/noise"),
-        frame=_frame(sensor),
+        frame=(_optical_frame(sensor) if plugin is None else None) or _frame(sensor),
         image_topic=image_topic,
         info_topic=info_topic,
         depth_topics=depth,
+        centred=plugin is None,
     )
+
+
+def _optical_frame(sensor: Sensor) -> str | None:
+    """A gz camera's ``<optical_frame_id>``, its images' and camera_info's frame_id.
+
+    gz-sensors' CameraSensor (Fortress on) stamps them so when it is given.
+    """
+    return (param(sensor.params, "camera/optical_frame_id") or "").strip() or None
 
 
 def _gz_camera_topics(sensor: Sensor) -> tuple[str | None, str | None]:

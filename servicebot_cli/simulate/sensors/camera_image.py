@@ -32,7 +32,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.simulate.sensors import camera_mesh, camera_noise
-from servicebot_cli.simulate.sensors.camera_info import Intrinsics
+from servicebot_cli.simulate.sensors.camera_info import Intrinsics, principal_point
 from servicebot_cli.simulate.shape import KINDS, Part
 from servicebot_cli.simulate.world import raycast
 from servicebot_cli.simulate.world.solids import Solid
@@ -105,9 +105,13 @@ class CameraView:
 
     @functools.cached_property
     def pinhole(self) -> FloatArray:
-        """fx, cx, fy, cy of ``intrinsics``, (4,)."""
-        k = self.intrinsics.k
-        return np.array([k[0], k[2], k[4], k[5]], dtype=np.float64)
+        """fx, cx, fy, cy of ``intrinsics``, (4,), the principal point one-based.
+
+        As the culling reads it: a ``centred`` one is given from the image's edge, half a
+        pixel before.
+        """
+        k, shift = self.intrinsics.k, 0.5 if self.intrinsics.centred else 0.0
+        return np.array([k[0], k[2] + shift, k[4], k[5] + shift], dtype=np.float64)
 
     @functools.cached_property
     def half_angle_rad(self) -> float:
@@ -133,7 +137,7 @@ def scaled(intrinsics: Intrinsics, scale: float) -> Intrinsics:
     """``intrinsics`` of the image ``scale`` times the size (at least one pixel each way).
 
     Focal lengths scale with the width actually kept; the principal point keeps its place
-    in the image (gazebo_ros_camera's ``(w + 1) / 2`` of the new size).
+    in the image (gazebo_ros_camera's ``(w + 1) / 2`` of the new size; gz-sensors' centre).
     """
     if not scale > 0.0:
         raise ValueError(f"camera scale {scale} is not positive")
@@ -141,21 +145,23 @@ def scaled(intrinsics: Intrinsics, scale: float) -> Intrinsics:
     height = max(1, round(intrinsics.height_px * scale))
     ratio = width / intrinsics.width_px
     f = intrinsics.k[0] * ratio
-    cx, cy = (width + 1) / 2.0, (height + 1) / 2.0
+    cx, cy = principal_point(width, height, intrinsics.centred)
     return Intrinsics(width, height, (f, 0.0, cx, 0.0, f, cy, 0.0, 0.0, 1.0),
                       (f, 0.0, cx, 0.0, 0.0, f, cy, 0.0, 0.0, 0.0, 1.0, 0.0),
-                      intrinsics.distortion_model, intrinsics.d)
+                      intrinsics.distortion_model, intrinsics.d, intrinsics.centred)
 
 
 def camera_view(intrinsics: Intrinsics, near_m: float, far_m: float) -> CameraView:
     """The ray through the centre of each pixel of ``intrinsics``' image.
 
     Pixel ``(u, v)`` (column, row, from 0) has its centre at ``u + 1, v + 1`` in the one-based
-    coordinates ``camera_info``'s principal point is given in.
+    coordinates gazebo_ros_camera's principal point is given in, at ``u + 0.5, v + 0.5`` from
+    the image's edge in gz-sensors' (``centred``): the same rays.
     """
     width, height = intrinsics.width_px, intrinsics.height_px
     fx, cx, fy, cy = intrinsics.k[0], intrinsics.k[2], intrinsics.k[4], intrinsics.k[5]
-    u, v = np.meshgrid(np.arange(width) + 1.0, np.arange(height) + 1.0)
+    first = 0.5 if intrinsics.centred else 1.0
+    u, v = np.meshgrid(np.arange(width) + first, np.arange(height) + first)
     optical = np.stack([(u - cx) / fx, (v - cy) / fy, np.ones_like(u)], axis=-1).reshape(-1, 3)
     optical /= np.linalg.norm(optical, axis=1, keepdims=True)
     # optical (x right, y down, z forward) to link (x forward, y left, z up)

@@ -1,8 +1,8 @@
 r"""camera_info for a pinhole camera from its resolution and horizontal field of view.
 
 As gazebo_ros_camera computes it: :math:`f = w / (2 \tan(\mathrm{hfov}/2))` for both axes
-(square pixels), principal point :math:`((w + 1)/2, (h + 1)/2)`, no distortion (plumb_bob
-with zero coefficients).
+(square pixels), principal point :math:`((w + 1)/2, (h + 1)/2)` (gz-sensors: the centre,
+:math:`(w/2, h/2)`), no distortion (plumb_bob with zero coefficients).
 """
 
 from __future__ import annotations
@@ -24,6 +24,10 @@ class Intrinsics:
     p: tuple[float, ...]
     distortion_model: str = "plumb_bob"
     d: tuple[float, ...] = (0.0, 0.0, 0.0, 0.0, 0.0)
+    centred: bool = False
+    """The principal point is given from the image's edge, (w/2, h/2) at its centre
+    (gz-sensors); else from the first pixel's centre as 1, ((w + 1)/2, (h + 1)/2)
+    (gazebo_ros_camera). Either way the image is rendered centred."""
 
 
 SDF_WIDTH_PX, SDF_HEIGHT_PX, SDF_HORIZONTAL_FOV_RAD = 320, 240, 1.047
@@ -33,6 +37,13 @@ which Gazebo (Classic and gz-sim) uses when a description leaves them out."""
 
 MAX_SIDE_PX = 65_535
 """The widest and tallest image simulated (JPEG's limit; a camera of 16k pixels is rare)."""
+
+
+def principal_point(width: int, height: int, centred: bool) -> tuple[float, float]:
+    """gz-sensors' (w/2, h/2) when ``centred``, else gazebo_ros_camera's ((w+1)/2, (h+1)/2)."""
+    if centred:
+        return width / 2.0, height / 2.0
+    return (width + 1) / 2.0, (height + 1) / 2.0
 
 
 def intrinsics(spec: CameraSpec) -> Intrinsics:
@@ -51,7 +62,8 @@ def intrinsics(spec: CameraSpec) -> Intrinsics:
     if not 0.0 < fov < math.pi:
         raise DescriptionError(f"camera horizontal_fov {fov:g} rad is not in (0, pi)")
     f = width / (2.0 * math.tan(fov / 2.0))
-    cx, cy = (width + 1) / 2.0, (height + 1) / 2.0
+    cx, cy = principal_point(width, height, spec.centred)
     return Intrinsics(width, height,
                       (f, 0.0, cx, 0.0, f, cy, 0.0, 0.0, 1.0),
-                      (f, 0.0, cx, 0.0, 0.0, f, cy, 0.0, 0.0, 0.0, 1.0, 0.0))
+                      (f, 0.0, cx, 0.0, 0.0, f, cy, 0.0, 0.0, 0.0, 1.0, 0.0),
+                      centred=spec.centred)
