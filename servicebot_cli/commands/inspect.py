@@ -39,7 +39,7 @@ PICTURE_SUFFIXES = (".png", ".svg", ".pdf")
               help="text tables, json for programs, markdown, or the tree as a dot or "
               "mermaid graph.")
 @click.option("--render", "render_path", metavar="FILE.png",
-              type=OutputPath(PICTURE_SUFFIXES, what="picture"),
+              type=OutputPath(PICTURE_SUFFIXES, what="picture", named_format=True),
               help="Draw the robot into FILE (.png, .svg or .pdf), written atomically.")
 @click.option("--joint", "joints", type=JointValue(), multiple=True, metavar="NAME=VALUE",
               help="Joint position [rad or m] for --render and the totals (repeatable; "

@@ -78,7 +78,7 @@ def batch_options(flag: str, help: str) -> Callable[[F], F]:
         )(f)
         f = click.option(
             "-o", "--output", type=OutputPath(suffixes=OUTPUT_SUFFIXES, allow_dash=True,
-                                              what="batch result"),
+                                              what="batch result", named_format=True),
             default=None,
             help=f"Batch results to this file (needs {flag}), written atomically (.csv or "
             ".jsonl; default stdout: CSV with --format text, JSON Lines with --format json).",

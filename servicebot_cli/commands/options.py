@@ -218,6 +218,10 @@ class Number(click.ParamType[float]):
         return number
 
 
+_NAME_MAX = 255
+"""The longest file name (one path component) Linux file systems take [bytes]."""
+
+
 class OutputPath(click.ParamType[str]):
     """A file or directory the command will write, checked before any work is done.
 
@@ -228,8 +232,9 @@ class OutputPath(click.ParamType[str]):
 
     def __init__(self, suffixes: Sequence[str] = (), *, directory: bool = False,
                  fresh: bool = False, allow_dash: bool = False, what: str = "",
-                 parents: bool = False) -> None:
+                 parents: bool = False, named_format: bool = False) -> None:
         self.suffixes = tuple(s.lower() for s in suffixes)
+        self.named_format = named_format  # the writer takes its format from the suffix
         self.directory, self.fresh, self.allow_dash = directory, fresh, allow_dash
         self.parents = parents  # missing directories above it will be created (as xacro -o)
         self.what = what
@@ -248,7 +253,19 @@ class OutputPath(click.ParamType[str]):
             self.fail("'-' (standard output) cannot hold a directory of files; name a "
                       "directory, e.g. ./run1 (write ./- for a directory named '-')", param, ctx)
         if not self.directory and _is_device_or_pipe(path):
+            if self.named_format and not any(text.lower().endswith(s) for s in self.suffixes):
+                dash = ", or '-' for standard output" if self.allow_dash else ""
+                self.fail(f"'{text}' is a device, and its name gives no format "
+                          f"({', '.join(self.suffixes)}): write to a file{dash}", param, ctx)
             return text  # written into as a shell's > would: /dev/stdout, a named pipe
+        if os.path.islink(path) and not os.path.exists(path) \
+                and not os.path.isdir(os.path.dirname(os.path.realpath(path))):
+            self.fail(f"'{text}' is a link to '{os.readlink(path)}', whose directory does not "
+                      "exist; give another path, or remove the link", param, ctx)
+        longest = max((len(os.fsencode(part)) for part in path.parts), default=0)
+        if longest > _NAME_MAX:
+            self.fail(f"'{text[:40]}...': a name of {longest} bytes, over the {_NAME_MAX} a "
+                      "file system takes; give a shorter one", param, ctx)
         if self.suffixes and not any(text.lower().endswith(s) for s in self.suffixes):
             what = f"{self.what} " if self.what else ""
             self.fail(f"'{text}': {what}files end in {' or '.join(self.suffixes)}; "

@@ -55,7 +55,7 @@ class ExpectationParam(click.ParamType["Expectation"]):
               help="Write one CSV per stream and summary.json into this directory.")
 @click.option("--bag", type=OutputPath(directory=True, fresh=True),
               help="Write a ROS 2 bag (MCAP storage) directory; it must not exist yet.")
-@click.option("--plot", type=OutputPath(suffixes=PLOT_SUFFIXES, what="plot"),
+@click.option("--plot", type=OutputPath(suffixes=PLOT_SUFFIXES, what="plot", named_format=True),
               metavar="FILE.png", help="Save a picture of the run (.png, .svg or .pdf).")
 @click.option("--seed", type=click.IntRange(min=0, max=2**63 - 1), default=0, show_default=True,
               help="Seed of all sensor noise.")

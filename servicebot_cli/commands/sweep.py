@@ -51,7 +51,7 @@ class KeepList(click.ParamType[tuple[str, ...]]):
               "the same DIR skips the runs already finished.")
 @click.option("--keep", type=KeepList(), default=None,
               help="Keep each run's outputs under DIR/runs/KEY/: csv, bag, plot.")
-@click.option("--plot", type=OutputPath(suffixes=PLOT_SUFFIXES, what="plot"),
+@click.option("--plot", type=OutputPath(suffixes=PLOT_SUFFIXES, what="plot", named_format=True),
               metavar="FILE.png", help="Each metric against each swept value, over seeds.")
 @click.option("--allow-collisions", is_flag=True,
               help="Run arm trajectory points that put links into each other or the floor "

@@ -301,3 +301,21 @@ def test_a_read_only_file_system_is_named_as_such_not_as_permissions(run, tmp_pa
         assert_one_line_error(result, 2, "is on a read-only file system")
     finally:
         subprocess.run(["umount", str(mount_point)], check=False)
+
+
+@pytest.mark.parametrize(("args", "says"), [
+    (["simulate", "--headless", "--plot", "/dev/full"], "'/dev/full' is a device, and its name"),
+    (["inspect", "--render", "/dev/full"], "its name gives no format (.png, .svg, .pdf)"),
+    (["fk", "--configs", "/dev/null", "-o", "/dev/full"], "or '-' for standard output"),
+    (["simulate", "--headless", "--plot", "a" * 300 + ".png"], "over the 255 a file system"),
+])
+def test_an_output_that_cannot_be_written_is_refused_before_the_work(run, args, says):
+    """simulate --plot /dev/full (or a name too long) was refused after the whole run."""
+    assert_one_line_error(run(*args), 2, says)
+
+
+def test_a_link_into_a_missing_directory_is_refused_before_the_work(run, tmp_path):
+    link = tmp_path / "plot.png"
+    link.symlink_to(tmp_path / "missing" / "plot.png")
+    assert_one_line_error(run("simulate", "--headless", "--plot", link), 2,
+                          "whose directory does not exist")
