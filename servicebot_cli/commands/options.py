@@ -262,10 +262,11 @@ class OutputPath(click.ParamType[str]):
                 and not os.path.isdir(os.path.dirname(os.path.realpath(path))):
             self.fail(f"'{text}' is a link to '{os.readlink(path)}', whose directory does not "
                       "exist; give another path, or remove the link", param, ctx)
-        longest = max((len(os.fsencode(part)) for part in path.parts), default=0)
-        if longest > _NAME_MAX:
-            self.fail(f"'{text[:40]}...': a name of {longest} bytes, over the {_NAME_MAX} a "
-                      "file system takes; give a shorter one", param, ctx)
+        longest = max(path.parts, key=lambda part: len(os.fsencode(part)), default="")
+        if len(os.fsencode(longest)) > _NAME_MAX:
+            self.fail(f"the name '{longest[:40]}...' is too long: {len(os.fsencode(longest))} "
+                      f"bytes, where a file system takes {_NAME_MAX}; give a shorter one",
+                      param, ctx)
         if self.suffixes and not any(text.lower().endswith(s) for s in self.suffixes):
             what = f"{self.what} " if self.what else ""
             self.fail(f"'{text}': {what}files end in {' or '.join(self.suffixes)}; "

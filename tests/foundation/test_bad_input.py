@@ -307,7 +307,7 @@ def test_a_read_only_file_system_is_named_as_such_not_as_permissions(run, tmp_pa
     (["simulate", "--headless", "--plot", "/dev/full"], "'/dev/full' is a device, and its name"),
     (["inspect", "--render", "/dev/full"], "its name gives no format (.png, .svg, .pdf)"),
     (["fk", "--configs", "/dev/null", "-o", "/dev/full"], "or '-' for standard output"),
-    (["simulate", "--headless", "--plot", "a" * 300 + ".png"], "over the 255 a file system"),
+    (["simulate", "--headless", "--plot", "a" * 300 + ".png"], "is too long: 304 bytes"),
 ])
 def test_an_output_that_cannot_be_written_is_refused_before_the_work(run, args, says):
     """simulate --plot /dev/full (or a name too long) was refused after the whole run."""
