@@ -13,14 +13,12 @@ from collections.abc import Iterator
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
-from servicebot_cli.check.controller_params import rcl_type
+from servicebot_cli.check.controller_params import TYPE_ARTICLE, rcl_type
 from servicebot_cli.check.controller_sections import Sections, at, get, substituted, type_nodes
 from servicebot_cli.check.findings import Issue
 
 _DECLARED = {"update_rate": "integer", "use_sim_time": "bool", "thread_priority": "integer",
              "enforce_command_limits": "bool"}
-_ARTICLE = {"integer": "an integer", "double": "a double", "bool": "a boolean",
-            "string": "a string"}
 _OWN_GROUPS = frozenset(("hardware_components_initial_state", "diagnostics", "diagnostic",
                          "defaults", "statistics"))
 """controller_manager's own nested parameters: no controller declarations."""
@@ -53,8 +51,9 @@ def _typed(key: str, node: yaml.ScalarNode, wanted: str, display: str) -> Iterat
                else f"{key}: {round(float(plain))}" if wanted == "integer" and got == "double"
                else f"{key}: true" if wanted == "bool" else f"{key}: 100")
         yield Issue("SB608", f"controller_manager.{key}: rcl reads '{node.value}' as "
-                    f"{_ARTICLE[got]}, and controller_manager declares {_ARTICLE[wanted]}: the "
-                    "node refuses it and does not start", where=where, fix=fix)
+                    f"{TYPE_ARTICLE[got]}, and controller_manager declares "
+                    f"{TYPE_ARTICLE[wanted]}: the node refuses it and does not start",
+                    where=where, fix=fix)
     elif key == "update_rate" and int(str(node.value), 0) <= 0:
         yield Issue("SB608", f"controller_manager.update_rate: {node.value}: from Jazzy on the "
                     "controller manager wants a rate above 0 and does not start; Humble's "

@@ -93,7 +93,7 @@ DECLARED: dict[str, dict[str, str]] = {
 }
 """The parameter types ros2_controllers declare (their ``*_parameters.yaml``), by type."""
 
-_ARTICLE = {"integer": "an integer", "double": "a double", "bool": "a boolean",
+TYPE_ARTICLE = {"integer": "an integer", "double": "a double", "bool": "a boolean",
             "string": "a string"}
 
 
@@ -139,7 +139,7 @@ def mixed_lists(params: yaml.MappingNode, section: str,
         if len(kinds) > 1:
             odd = next(item for item in scalars if rcl_type(item) != kinds[0])
             yield Issue("SB608", f"{section}.{key}: rcl reads '{odd.value}' as "
-                        f"{_ARTICLE[rcl_type(odd)]} among {kinds[0]}s, and refuses the whole "
+                        f"{TYPE_ARTICLE[rcl_type(odd)]} among {kinds[0]}s, and refuses the whole "
                         "file ('Sequence should be of same type')",
                         where=at(display, odd.start_mark), fix=_fix(odd, kinds[0]))
 
@@ -163,7 +163,7 @@ def declared_types(controller_type: str | None, params: yaml.MappingNode, sectio
             what = f"its items as {got.removesuffix('_array')}s ('{shown.value}')"
             fix = _fix(shown, wanted.removesuffix("_array"))
         elif isinstance(node, yaml.ScalarNode):
-            what = f"'{node.value}' as {_ARTICLE[got]}"
+            what = f"'{node.value}' as {TYPE_ARTICLE[got]}"
             listed = str(node.value).strip()
             fix = (f"{key}: {listed} (no quotes)" if listed.startswith("[") and
                    listed.endswith("]") else f"{key}: [{node.value}]") \

@@ -9,7 +9,7 @@ Pure: YAML text and a RobotDescription in, issues out, each placed at its YAML l
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
@@ -24,7 +24,7 @@ from servicebot_cli.check.controller_sections import (
 )
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.ros2_control import GAZEBO_PID, exported_as, exports_as_listed
-from servicebot_cli.check.wheel_numbers import mismatch
+from servicebot_cli.check.wheel_numbers import driven, mismatch, track_m
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
 from servicebot_cli.common.listing import some_of
 
@@ -32,7 +32,6 @@ if TYPE_CHECKING:
     from servicebot_cli.check.controller_interfaces import Claim
     from servicebot_cli.description.robot import RobotDescription
     from servicebot_cli.kinematics.drive_geometry import DriveGeometry
-    from servicebot_cli.kinematics.wheel_joints import Wheel
 
 _PID = "pid_controller/PidController"
 
@@ -412,9 +411,9 @@ class _Checker:
         from servicebot_cli.kinematics.plugin_wheels import wheels_named
 
         wheels = wheels_named(self.robot, self.named_wheels(params))
-        track_m = _track_m(wheels)
-        return None if track_m is None else DriveGeometry(tuple(wheels), math.nan, track_m,
-                                                          math.inf)
+        track = track_m(wheels)
+        return None if track is None else DriveGeometry(tuple(wheels), math.nan, track,
+                                                        math.inf)
 
     def named_wheels(self, params: yaml.MappingNode) -> set[str]:
         """The wheel joints the controller names, chains of references followed."""
@@ -426,16 +425,10 @@ class _Checker:
     def driven(self, params: yaml.MappingNode, geometry: DriveGeometry) -> tuple[float, float]:
         """Wheel radius and track of the wheels the controller drives, as far as it names them.
 
-        diff_drive_controller uses its numbers for its own wheels only: passive casters that
-        also turn freely (ball casters off the centre line) are no part of them. Without a
-        named wheel on each side, the URDF's drive wheels, all of them.
+        As :func:`.wheel_numbers.driven` reads them.
         """
-        named = self.named_wheels(params)
-        wheels = [w for w in geometry.wheels if w.joint in named]
-        track_m = _track_m(wheels)
-        if track_m is None:
-            return geometry.wheel_radius_m, geometry.track_m
-        return sum(w.radius_m for w in wheels) / len(wheels), track_m
+        radius, track, _ = driven(geometry, self.named_wheels(params))
+        return radius, track
 
     def value(self, section: str, params: yaml.MappingNode, key: str, expected: float,
               code: str, multipliers: tuple[str, ...], skid: bool = False) -> Iterator[Issue]:
@@ -466,17 +459,6 @@ class _Checker:
         yield Issue(code, f"{section}: {key} {_stated(given, effective, expected)} "
                     f"disagrees with the URDF's {expected:.6g} m{off.purpose}",
                     where=self.where(node), fix=f"{key}: {expected:.6g}", severity=off.severity)
-
-
-def _track_m(wheels: Sequence[Wheel]) -> float | None:
-    """The distance between the mean left and mean right wheel centres.
-
-    None unless there are wheels on both sides.
-    """
-    sides = [[w.position_m[1] for w in wheels if w.side == side] for side in ("left", "right")]
-    if not all(sides):
-        return None
-    return sum(sides[0]) / len(sides[0]) - sum(sides[1]) / len(sides[1])
 
 
 def _interface_fix(kind: str, interface: str) -> str:

@@ -13,7 +13,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue
-from servicebot_cli.check.wheel_numbers import mismatch
+from servicebot_cli.check.wheel_numbers import driven, mismatch
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.description.drive_plugin_wheels import PluginValue, plugin_wheels
 
@@ -23,8 +23,6 @@ if TYPE_CHECKING:
     from servicebot_cli.kinematics.drive_geometry import DriveGeometry
 
 _WHEEL_KEYS = ("left_joint", "right_joint", "leftJoint", "rightJoint")
-_OWN_DEFAULTS = "skid_steer"
-"""The ROS 1 skid-steer drive has defaults of its own: its numbers are judged where written."""
 
 
 def check(robot: RobotDescription) -> Iterator[Issue]:
@@ -41,10 +39,9 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
         return
     for plugin, numbers in plugins:
         radius_m, track_m, skid = _driven(plugin, geometry)
-        defaults = _OWN_DEFAULTS not in plugin.filename
-        yield from _judged(plugin, numbers.separation, track_m, "apart", skid, defaults)
+        yield from _judged(plugin, numbers.separation, track_m, "apart", skid)
         if not math.isnan(radius_m):  # mesh wheels: no radius to compare with
-            yield from _judged(plugin, numbers.radius, radius_m, "radius", False, defaults)
+            yield from _judged(plugin, numbers.radius, radius_m, "radius", False)
 
 
 def _driven(plugin: Plugin, geometry: DriveGeometry) -> tuple[float, float, bool]:
@@ -53,25 +50,20 @@ def _driven(plugin: Plugin, geometry: DriveGeometry) -> tuple[float, float, bool
     The wheels it names; all the URDF's drive wheels where it names none on a side. Two or
     more a side skid.
     """
-    named = {value for key, value in plugin.params if key in _WHEEL_KEYS}
-    wheels = [w for w in geometry.wheels if w.joint in named]
-    sides = [[w for w in wheels if w.side == side] for side in ("left", "right")]
-    if not all(sides):
-        wheels = list(geometry.wheels)
-        sides = [[w for w in wheels if w.side == side] for side in ("left", "right")]
-    track_m = (sum(w.position_m[1] for w in sides[0]) / len(sides[0])
-               - sum(w.position_m[1] for w in sides[1]) / len(sides[1]))
-    radius_m = sum(w.radius_m for w in wheels) / len(wheels)
-    return radius_m, track_m, min(len(side) for side in sides) >= 2
+    radius_m, track, wheels = driven(
+        geometry, {value for key, value in plugin.params if key in _WHEEL_KEYS})
+    return radius_m, track, min(sum(w.side == side for w in wheels)
+                                for side in ("left", "right")) >= 2
 
 
-def _judged(plugin: Plugin, number: PluginValue, expected_m: float, measure: str, skid: bool,
-            defaults: bool) -> Iterator[Issue]:
-    if math.isnan(number.value_m) or not (number.given or defaults):
-        return  # not a number (SB513); or a default this rule does not know
+def _judged(plugin: Plugin, number: PluginValue, expected_m: float, measure: str,
+            skid: bool) -> Iterator[Issue]:
+    known = number.known_m
+    if known is None:
+        return  # not a number (SB513); or a default not known here
     diameter = number.key.lower().endswith("diameter")
-    value_m, expected_shown = ((2 * number.value_m, 2 * expected_m) if diameter
-                               else (number.value_m, expected_m))
+    value_m, expected_shown = ((2 * known, 2 * expected_m) if diameter
+                               else (known, expected_m))
     off = mismatch((value_m,), expected_shown, skid)
     if off is None:
         return

@@ -8,10 +8,15 @@ track up to twice the wheels' is its effective one (a warning); else an error. P
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Severity
+
+if TYPE_CHECKING:
+    from servicebot_cli.kinematics.drive_geometry import DriveGeometry
+    from servicebot_cli.kinematics.wheel_joints import Wheel
 
 TOLERANCE = 0.01
 """Relative difference allowed between a drive's and the URDF's wheel numbers."""
@@ -50,3 +55,29 @@ def mismatch(values: Sequence[float], expected: float, skid: bool = False) -> Mi
         return Mismatch(" (a skid-steer base's effective track, if on purpose)",
                         Severity.WARNING)
     return Mismatch("", None)
+
+
+def track_m(wheels: Sequence[Wheel]) -> float | None:
+    """The distance between the mean left and mean right wheel centres.
+
+    None unless there are wheels on both sides.
+    """
+    sides = [[w.position_m[1] for w in wheels if w.side == side] for side in ("left", "right")]
+    if not all(sides):
+        return None
+    return sum(sides[0]) / len(sides[0]) - sum(sides[1]) / len(sides[1])
+
+
+def driven(geometry: DriveGeometry, named: Collection[str]
+           ) -> tuple[float, float, tuple[Wheel, ...]]:
+    """Radius and track of the wheels a drive names, and those wheels.
+
+    A drive uses its numbers for its own wheels only: passive casters that also turn freely
+    (ball casters off the centre line) are no part of them. Without a named wheel on each
+    side, the URDF's drive wheels, all of them.
+    """
+    wheels = tuple(w for w in geometry.wheels if w.joint in named)
+    track = track_m(wheels)
+    if track is None:
+        return geometry.wheel_radius_m, geometry.track_m, geometry.wheels
+    return sum(w.radius_m for w in wheels) / len(wheels), track, wheels

@@ -9,7 +9,9 @@ other than commanded, as a diff_drive_controller's do.
 - Gazebo Classic, ROS 2: ``<wheel_separation>`` (default 0.34 m) and ``<wheel_diameter>``
   (0.15 m); of several wheel pairs (``<num_wheel_pairs>``), the first pair's;
 - Gazebo Classic, ROS 1: ``<wheelSeparation>`` and ``<wheelDiameter>``, the same defaults;
-- gz-sim's DiffDrive: ``<wheel_separation>`` (1 m) and ``<wheel_radius>`` (0.2 m).
+- gz-sim's DiffDrive: ``<wheel_separation>`` (1 m) and ``<wheel_radius>`` (0.2 m);
+- the ROS 1 skid-steer drive: the same elements as the ROS 1 diff drive, with defaults of its
+  own that are not read here (a number it does not write is unknown).
 
 sdformat reads the first element of a name. Pure.
 """
@@ -24,6 +26,9 @@ from servicebot_cli.description.model_plugins import diff_drive_kind, ros1_plugi
 
 _CLASSIC_DEFAULTS = (0.34, 0.15)  # separation, diameter [m]
 _GZ_DEFAULTS = (1.0, 0.2)  # separation, radius [m]
+_UNKNOWN_DEFAULTS = (None, None)
+_OWN_DEFAULTS = "skid_steer"
+"""The ROS 1 skid-steer drive's file name: defaults of its own, not read here."""
 
 
 @dataclass(frozen=True)
@@ -33,13 +38,20 @@ class PluginValue:
     Attributes:
         key: The element that sets it (``wheel_diameter`` for a radius from a diameter).
         value_m: The value in metres: a radius is half a diameter; NaN where the text is no
-            number (SB513 says so).
+            number (SB513 says so); None where it is not written and the plugin's default
+            is not known here.
         given: Written in the plugin; else the plugin's default.
     """
 
     key: str
-    value_m: float
+    value_m: float | None
     given: bool
+
+    @property
+    def known_m(self) -> float | None:
+        """The value the plugin drives with, when it is a number known here."""
+        return self.value_m if self.value_m is not None and math.isfinite(self.value_m) \
+            else None
 
 
 @dataclass(frozen=True)
@@ -59,15 +71,14 @@ def plugin_wheels(plugin: Plugin) -> PluginWheels | None:
         return PluginWheels(_value(plugin, "wheel_separation", _GZ_DEFAULTS[0]),
                             _value(plugin, "wheel_radius", _GZ_DEFAULTS[1]))
     ros1 = ros1_plugin(plugin)
-    separation = _value(plugin, "wheelSeparation" if ros1 else "wheel_separation",
-                        _CLASSIC_DEFAULTS[0])
-    diameter = _value(plugin, "wheelDiameter" if ros1 else "wheel_diameter",
-                      _CLASSIC_DEFAULTS[1])
-    return PluginWheels(separation, PluginValue(diameter.key, diameter.value_m / 2.0,
-                                                diameter.given))
+    defaults = _UNKNOWN_DEFAULTS if _OWN_DEFAULTS in plugin.filename else _CLASSIC_DEFAULTS
+    separation = _value(plugin, "wheelSeparation" if ros1 else "wheel_separation", defaults[0])
+    diameter = _value(plugin, "wheelDiameter" if ros1 else "wheel_diameter", defaults[1])
+    radius = None if diameter.value_m is None else diameter.value_m / 2.0
+    return PluginWheels(separation, PluginValue(diameter.key, radius, diameter.given))
 
 
-def _value(plugin: Plugin, key: str, default_m: float) -> PluginValue:
+def _value(plugin: Plugin, key: str, default_m: float | None) -> PluginValue:
     text = next((value for path, value in plugin.params if path == key), None)
     if text is None or not text.strip():
         return PluginValue(key, default_m, False)

@@ -207,6 +207,14 @@ def _decode(data: bytes, filename: str) -> str:
         raise XmlError(filename, reason, exc.line, exc.column) from None
 
 
+def _references_only(text: str) -> str:
+    """``text`` with its comments and CDATA sections blanked, lines and columns kept.
+
+    They hold text, never an entity reference.
+    """
+    return _UNREAD.sub(lambda m: re.sub(r"[^\n]", " ", m[0]), text)
+
+
 class _Builder:
     """Feeds expat events into a TreeBuilder of PositionedElements."""
 
@@ -253,7 +261,7 @@ class _Builder:
         """Each declared entity the text refers to, where first (comments and CDATA aside)."""
         if not self.entities:
             return ()
-        text = _UNREAD.sub(lambda m: re.sub(r"[^\n]", " ", m[0]), text)
+        text = _references_only(text)
         body = text.find("]>")  # after the internal subset, whose declarations refer to none
         used = []
         for name in self.entities:
@@ -269,8 +277,7 @@ class _Builder:
         With an external DTD, expat drops such a reference silently (from an attribute
         too), where tinyxml2 (urdfdom, Gazebo, MuJoCo) keeps the text ``&name;``.
         """
-        # comments and CDATA sections hold text, never a reference: blanked, lines kept
-        text = _UNREAD.sub(lambda m: re.sub(r"[^\n]", " ", m[0]), text)
+        text = _references_only(text)
         found = _ENTITY_REFERENCE.search(text)
         if found is not None:
             line = text.count("\n", 0, found.start()) + 1

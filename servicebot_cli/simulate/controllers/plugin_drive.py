@@ -151,17 +151,15 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
 def _wheels(plugin: Plugin) -> dict[str, float]:
     """The separation and radius the plugin makes wheel speeds with, written or its defaults.
 
-    The ROS 1 skid-steer drive's defaults are its own: only what it writes is taken, and the
-    URDF's wheels stand in for the rest. A value that is no number was refused above.
+    Where a number is not known (the ROS 1 skid-steer drive's own defaults), the URDF's
+    wheels stand in. A value that is no number was refused above.
     """
     numbers = plugin_wheels(plugin)
     if numbers is None:
         return {}
-    defaults = "skid_steer" not in plugin.filename
-    return {field: number.value_m
-            for field, number in (("wheel_separation_m", numbers.separation),
-                                  ("wheel_radius_m", numbers.radius))
-            if (number.given or defaults) and math.isfinite(number.value_m)}
+    return {field: known for field, number in (("wheel_separation_m", numbers.separation),
+                                               ("wheel_radius_m", numbers.radius))
+            if (known := number.known_m) is not None}
 
 
 def _wheel_tf(robot: RobotDescription, plugin: Plugin) -> tuple[str, ...]:
