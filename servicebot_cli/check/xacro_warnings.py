@@ -1,5 +1,7 @@
 """SB017: what to do about each warning xacro (or the loader, about xacro) gave.
 
+A package the loader did not find for a ``$(find)`` it left as written is SB007.
+
 xacro's own warnings say what is wrong and not what to change; the loader's carry their fix.
 A file's own ``xacro.message()``, ``xacro.error()`` and ``xacro.warning()`` say what its
 author meant to.
@@ -43,6 +45,8 @@ def xacro_warning(warning: LoadWarning, display: str) -> Issue:
     goes on and writes the robot.
     """
     where = (warning.file or display, warning.line, warning.column)
+    if warning.said_as == "package":
+        return Issue("SB007", warning.text, where=where, fix=warning.fix)
     if warning.said_as == "message":
         return Issue("SB017", f"the file's xacro.message(): {warning.text}", where=where,
                      fix="nothing to change: the file prints this while xacro expands it",

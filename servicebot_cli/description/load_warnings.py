@@ -14,7 +14,7 @@ from typing import Literal
 
 from servicebot_cli.description.sources import SourceRef
 
-Said = Literal["warning", "error", "message"]
+Said = Literal["warning", "error", "message", "package"]
 
 
 @dataclass(frozen=True)
@@ -28,7 +28,8 @@ class LoadWarning:
         column: The column (1-based), 0 when unknown.
         fix: What to change, when the producer knows.
         said_as: How xacro printed it: a warning, a file's ``xacro.error()`` or a file's
-            ``xacro.message()``.
+            ``xacro.message()``; ``package``: the loader's, a ``$(find)`` of a package that
+            is nowhere, left as written.
     """
 
     text: str

@@ -12,7 +12,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.common.errors import DescriptionError, PackageNotFound
 from servicebot_cli.common.inputs import (
     display_path,
     not_a_file,
@@ -29,6 +29,7 @@ from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
 
 _COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
 _FIND = re.compile(rb"\$\(find\s")
+_FIND_IN_FILENAME = re.compile(rb"""filename\s*=\s*(?:"[^"]*|'[^']*)\$\(find\s""")
 """A package's directory, which only xacro substitutes (as it does ``${...}`` expressions).
 
 Not ``$(optenv NAME default)``: pybullet_data's husky.urdf holds it in an ``<origin>``, and
@@ -174,7 +175,12 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
         )
     from servicebot_cli.description.xacro_expand import expand
 
-    expansion = expand(source.path, dict(source.xacro_args), source.resolver(), data)
+    try:
+        expansion = expand(source.path, dict(source.xacro_args), source.resolver(), data)
+    except PackageNotFound as exc:
+        if not _finds_outside_geometry(source.path, data):
+            raise
+        return _as_written(source, data, max_bytes, str(exc))
     document = parse_xml(expansion.xml_text.encode("utf-8"), source.display, max_bytes=max_bytes)
     for element, origin in zip(document.root.iter(), expansion.origins, strict=True):
         element.origin = origin  # type: ignore[attr-defined]
@@ -190,6 +196,46 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
         doctype=document.doctype, external_dtd=document.external_dtd,
         warnings=(*named, *expansion.warnings), from_xacro=True,
     )
+
+
+def _finds_outside_geometry(path: Path, data: bytes) -> bool:
+    """Whether ``data``, a ``.urdf`` whose only xacro is ``$(find)``, has none in a file name.
+
+    JAKA's ``jaka_zu7.urdf``, which its launch file gives robot_state_publisher as it is,
+    names a MoveIt package in a Gazebo plugin's ``<parameters>``: what builds the robot never
+    reads the text, and urdfdom keeps it as written.
+    """
+    text = without_comments(data)
+    return not is_xacro_name(path) and b"${" not in text and not _xacro_words(text) \
+        and _FIND_IN_FILENAME.search(text) is None
+
+
+def _as_written(source: RobotSource, data: bytes, max_bytes: int,
+                not_found: str) -> RobotDescription:
+    """``source`` read as plain URDF, its ``$(find)`` as written: its package is nowhere."""
+    document = parse_xml(data, source.display, max_bytes=max_bytes)
+    file, line, column, text = _placed(not_found, source.display)
+    return RobotDescription(
+        display=source.display, path=source.path, xml_text=document.text,
+        root=document.root, doctype=document.doctype, external_dtd=document.external_dtd,
+        entities_used=document.entities_used, files=(source.display,),
+        warnings=(LoadWarning(
+            "$(find ...) read as written, as robot_state_publisher reads a plain URDF "
+            f"(xacro would stop here): {text}", file, line, column,
+            fix="pass --package NAME=DIR, or source the workspace that holds it",
+            said_as="package"),),
+    )
+
+
+_PLACE = re.compile(r"^(?P<file>.+?):(?P<line>\d+)(?::(?P<column>\d+))?: (?P<rest>.*)$", re.DOTALL)
+
+
+def _placed(message: str, display: str) -> tuple[str, int, int, str]:
+    """``file:line:column: text`` taken apart; the whole message as text where it is not."""
+    found = _PLACE.match(message)
+    if found is None:
+        return display, 0, 0, message
+    return found["file"], int(found["line"]), int(found["column"] or 0), found["rest"]
 
 
 _LOADED: dict[tuple[object, ...], RobotDescription] = {}

@@ -121,3 +121,68 @@ def test_what_a_xacro_urdf_includes_is_a_part_not_a_robot(run, tmp_path):
     result = run("check", tmp_path / "ws", "--format", "json", "--isolated", "--ignore", "SB309")
     checked = [f["file"].rsplit("/", 1)[-1] for f in json.loads(result.stdout)["files"]]
     assert result.exit_code == 0 and checked == ["robot.urdf"], result.stdout
+
+
+JAKA_LIKE = """<?xml version="1.0"?>
+<robot name="arm">
+  <link name="base_link"/>
+  <link name="link_1"><inertial><mass value="1"/>
+    <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <joint name="joint_1" type="revolute">
+    <parent link="base_link"/><child link="link_1"/>
+    <origin xyz="0 0 0.1"/><axis xyz="0 0 1"/>
+    <limit lower="-3" upper="3" effort="1" velocity="1"/>
+  </joint>
+  <gazebo>
+    <plugin name="gz_ros2_control::GazeboSimROS2ControlPlugin"
+            filename="libgz_ros2_control-system.so">
+      <parameters>$(find arm_moveit_config)/config/ros2_controllers.yaml</parameters>
+    </plugin>
+  </gazebo>
+</robot>
+"""
+
+
+def test_a_package_nowhere_outside_file_names_leaves_the_urdf_readable(run, tmp_path):
+    """JAKA's jaka_zu7.urdf, given to robot_state_publisher as it is, names a MoveIt package
+    in a plugin's <parameters>. Without that package, check said SB007 and checked nothing
+    else, and fk and inspect refused the file (exit 2), which urdfdom and Pinocchio read."""
+    path = tmp_path / "jaka_zu7.urdf"
+    path.write_text(JAKA_LIKE)
+    result = run("check", path, "--format", "json", "--isolated", "--ignore", "SB309")
+    found = [(f["code"], f["severity"], f["message"], f["line"]) for f in
+             findings(result.stdout)]
+    assert result.exit_code == 0 and [code for code, *_ in found] == ["SB007"], found
+    assert found[0][1] == "warning" and found[0][3] == 14
+    assert "package 'arm_moveit_config' not found" in found[0][2]
+    assert found[0][2].startswith("$(find ...) read as written")
+    fk = run("fk", path, "-j", "joint_1=0.5", "--frame", "link_1")
+    assert fk.exit_code == 0, fk.output
+    assert "0  0  0.1" in fk.stdout
+    inspect = run("inspect", path, "--section", "joints")
+    assert inspect.exit_code == 0 and "joint_1" in inspect.stdout
+
+
+def test_rules_judge_the_urdf_whose_find_is_read_as_written(run, tmp_path):
+    """Read as it is, the file is checked by every rule (a massless moving link here)."""
+    path = tmp_path / "arm.urdf"
+    path.write_text(JAKA_LIKE.replace('<inertial><mass value="1"/>\n    <inertia ixx="0.01" '
+                                      'ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/>'
+                                      '</inertial>', ""))
+    result = run("check", path, "--format", "json", "--isolated", "--ignore", "SB309")
+    codes = [f["code"] for f in findings(result.stdout)]
+    assert result.exit_code == 1 and "SB303" in codes and "SB007" in codes, codes
+
+
+def test_a_package_nowhere_in_a_mesh_name_still_stops_the_expansion(run, tmp_path):
+    """A $(find) in a mesh's file name is xacro's to substitute: read as written, the mesh
+    would be 'missing'; the package missing is the finding, as before."""
+    path = tmp_path / "arm.urdf"
+    path.write_text(JAKA_LIKE.replace(
+        '<link name="base_link"/>', '<link name="base_link"><visual><geometry><mesh filename='
+        '"file://$(find arm_description)/meshes/base.stl"/></geometry></visual></link>'))
+    result = run("check", path, "--format", "json", "--isolated", "--ignore", "SB309")
+    found = [(f["code"], f["message"]) for f in findings(result.stdout)]
+    assert [code for code, _ in found] == ["SB007"], found
+    assert "arm_description" in found[0][1] and "read as written" not in found[0][1]
+    assert run("fk", path, "-j", "joint_1=0.5").exit_code == 2
