@@ -157,6 +157,17 @@ def _topics(robot: RobotDescription, sensors: tuple[SensorInfo, ...], plugins: P
     )
 
 
+def _tool_frame(robot: RobotDescription) -> str | None:
+    """The frame fk and ik move without ``--frame``; None where they refuse the tree."""
+    from servicebot_cli.kinematics.frames import default_tool_frame, require_tree
+
+    try:
+        require_tree(robot)
+        return default_tool_frame(robot).name
+    except DescriptionError:
+        return None
+
+
 def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> Totals:
     from servicebot_cli.description.packages import PackageResolver
     from servicebot_cli.inspect import totals as t
@@ -196,7 +207,7 @@ def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> T
     box = t.box_of(robot, posed, meshes)
     arm = [j for j in robot.movable_joints if j.name not in wheels and j.name not in chassis]
     notes.extend(meshes.problems)
-    reach = t.arm_reach(tree, arm, zero)
+    reach = t.arm_reach(tree, arm, zero, _tool_frame(robot) if arm else None)
     if reach is None and arm:
         notes.append(t.REACH_UNKNOWN)
     return t.Totals(

@@ -170,18 +170,20 @@ def links_of_negative_mass(robot: RobotDescription) -> list[str]:
 
 
 def arm_reach(tree: KinematicTree, arm_joints: list[Joint],
-              transforms: Mapping[str, FloatArray]) -> ArmReach | None:
+              transforms: Mapping[str, FloatArray], tool: str | None = None) -> ArmReach | None:
     """The reach of the arm joints' longest chain, from the arm joint that starts it.
 
-    Of the arm joints no other arm joint moves, the first whose chain to its deepest tip
-    holds the most arm joints: on a robot with one arm, its first joint; on Pepper, not the
-    head's two joints that come first in the file. None without an arm, or where the reach
-    is no finite length (:data:`REACH_UNKNOWN`).
+    Of the arm joints no other arm joint moves, the first whose chain to its tip holds the
+    most arm joints: on a robot with one arm, its first joint; on Pepper, not the head's two
+    joints that come first in the file. The tip is ``tool`` (the frame fk and ik move
+    without ``--frame``) where the chain leads to it, else its deepest link. None without an
+    arm, or where the reach is no finite length (:data:`REACH_UNKNOWN`).
     """
     parent_joint = {j.child or "": j for j in tree.edges}
     names = {joint.name for joint in arm_joints}
     starts = [j for j in arm_joints if not _arm_above(j.parent, parent_joint, names)]
-    chains = [chain for joint in starts if (chain := _chain(tree, joint, parent_joint))]
+    chains = [chain for joint in starts
+              if (chain := _chain(tree, joint, parent_joint, tool))]
     if not chains:
         return None
     path = max(chains, key=lambda chain: sum(j.name in names for j in chain))  # the first one
@@ -222,17 +224,23 @@ def _arm_above(link: str | None, parent_joint: Mapping[str, Joint], names: set[s
     return False
 
 
-def _chain(tree: KinematicTree, first: Joint, parent_joint: Mapping[str, Joint]
-           ) -> list[Joint] | None:
-    """The joints from ``first`` down to the deepest link below it; None without a child."""
+def _chain(tree: KinematicTree, first: Joint, parent_joint: Mapping[str, Joint],
+           tool: str | None) -> list[Joint] | None:
+    """The joints from ``first`` down to ``tool``, or to the deepest link below it where
+    ``tool`` is not below it; None without a child.
+
+    A camera's optical frame three fixed frames down is deeper than the gripper frame the
+    tool is (Trossen's wxai: the reach was the camera's, 1 cm short of the gripper's).
+    """
     if first.child is None:
         return None
     below = descendants(tree, first.child)
-    # of the deepest links, the one fk and ik take without --frame: a tool's name, else the
-    # last in the file (the WAM's second finger, not its first)
+    # of the deepest links, the one fk and ik would take: a tool's name, else the last in
+    # the file (the WAM's second finger, not its first)
     order = {joint.child: i for i, joint in enumerate(tree.edges)}
-    tip = max(below, key=lambda item: (item[1], looks_like_tool(item[0]),
-                                       order.get(item[0], -1)))[0] if below else first.child
+    tip = tool if tool is not None and tool in {name for name, _ in below} else max(
+        below, key=lambda item: (item[1], looks_like_tool(item[0]),
+                                 order.get(item[0], -1)))[0] if below else first.child
     path = [parent_joint[tip]] if tip != first.child else [first]
     while path[-1] is not first:
         path.append(parent_joint[path[-1].parent or ""])

@@ -83,3 +83,23 @@ def test_of_two_equal_fingers_the_reach_ends_where_fk_and_ik_go(run, tmp_path):
     assert "using 'fb_tip'" in fk.stderr
     arm = json.loads(run("inspect", robot, "--format", "json").stdout)["totals"]["arm"]
     assert arm["tip"] == "fb_tip"
+
+
+def test_the_reach_ends_at_the_frame_fk_moves_not_at_a_deeper_camera(run, tmp_path):
+    """Trossen's wxai: a camera's optical frame, three fixed frames down the last link, was
+    the tip (0.064 m here) while fk and ik move the gripper frame 0.3 m out: the bound
+    stated was short of where fk puts the tool."""
+    camera = ('<joint name="mount_j" type="fixed"><parent link="l3"/><child link="cam_mount"/>'
+              '<origin xyz="0.05 0 0.02"/></joint><link name="cam_mount"/>'
+              '<joint name="cam_j" type="fixed"><parent link="cam_mount"/><child '
+              'link="cam_link"/><origin xyz="0.01 0 0"/></joint><link name="cam_link"/>'
+              '<joint name="optical_j" type="fixed"><parent link="cam_link"/><child '
+              'link="cam_optical"/></joint><link name="cam_optical"/>')
+    path = tmp_path / "camarm.urdf"
+    path.write_text(RAILBOT.replace("tool0", "ee_gripper_link").replace("</robot>",
+                                                                         camera + "</robot>"))
+    fk = run("fk", path, "--format", "json")
+    assert json.loads(fk.stdout)["poses"][0]["frame"] == "ee_gripper_link"
+    result = run("inspect", path, "--section", "totals", "--format", "json")
+    assert json.loads(result.stdout)["totals"]["arm"] == {
+        "shoulder": "rail", "tip": "ee_gripper_link", "reach_m": 3.2, "travel_m": 2.0}
