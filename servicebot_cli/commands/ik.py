@@ -93,8 +93,9 @@ class IkCommand(Command):
               metavar="N",
               help="Converged solutions to compare before returning the one nearest the start.")
 @click.option("--allow-collisions", is_flag=True,
-              help="Accept answers whose links intersect each other or the floor (by "
-              "default such answers are refused and the search goes on).")
+              help="Accept answers whose links intersect each other or, on a wheeled "
+              "base, the floor (by default such answers are refused and the search goes "
+              "on).")
 @srdf_option
 @deg_option
 @clamp_option
@@ -116,8 +117,8 @@ def ik(ctx: click.Context, robot_args: RobotArgs, frame: str | None,
 
     Joint limits are always respected, continuous joints wrap, and a joint that follows
     another (<mimic>) moves with it. An answer whose links
-    intersect each other or the floor (the URDF's collision geometry) is refused and the
-    search goes on. Exit code 0 when the target is reached, 1 when not (the best try is
+    intersect each other (the URDF's collision geometry), or the floor on a wheeled base, is
+    refused and the search goes on; a fixed arm may reach below its base. Exit code 0 when the target is reached, 1 when not (the best try is
     printed, with a hint: out of reach by how much, an orientation the joints cannot make,
     or the two links that would collide), 2 for bad input.
 

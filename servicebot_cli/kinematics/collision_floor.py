@@ -2,8 +2,9 @@ r"""The floor of a collision check: where it is, which links stand on it, and it
 
 The floor is the plane :math:`z = z_{floor}` of the root frame, with :math:`z_{floor}` the
 lowest point, at the neutral configuration, of the links no bounded joint moves: the root
-link and what is fixed to it, and wheels (continuous joints). On a mobile base that is where
-the wheels touch the ground; on a fixed arm, the plane it is mounted on. A link collides with
+link and what is fixed to it, and wheels (continuous joints): on a mobile base, where the
+wheels touch the ground (a fixed arm gets no floor: it may hang from a table's edge or a
+wall, :func:`~servicebot_cli.kinematics.ik_session.is_mobile`). A link collides with
 the floor when any of it goes lower; links that reach it at the neutral configuration stand
 on it. Meshes meet the floor through their convex hull, which has the same lowest point.
 For :func:`~servicebot_cli.kinematics.collisions.build_check`. Pure.

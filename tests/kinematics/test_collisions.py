@@ -121,6 +121,10 @@ def test_only_a_robot_on_wheels_has_a_floor(run):
     assert not is_mobile(load(RobotSource.of(UR5)))
     result = run("ik", UR5, "--position", "0.5", "0.1", "-0.2", "--seed", "1")
     assert result.exit_code == 0, result.stderr
+    # and the help says so: it promised the floor to every arm
+    help_text = " ".join(run("ik", "--help").stdout.split())
+    assert "or the floor on a wheeled base" in help_text
+    assert "a fixed arm may reach below its base" in help_text
 
 
 def test_a_configuration_under_the_floor_is_a_contact_with_it():
