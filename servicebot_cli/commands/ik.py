@@ -116,11 +116,11 @@ def ik(ctx: click.Context, robot_args: RobotArgs, frame: str | None,
     """Inverse kinematics: joint values that put a frame at a target.
 
     Joint limits are always respected, continuous joints wrap, and a joint that follows
-    another (<mimic>) moves with it. An answer whose links
-    intersect each other (the URDF's collision geometry), or the floor on a wheeled base, is
-    refused and the search goes on; a fixed arm may reach below its base. Exit code 0 when the target is reached, 1 when not (the best try is
-    printed, with a hint: out of reach by how much, an orientation the joints cannot make,
-    or the two links that would collide), 2 for bad input.
+    another (<mimic>) moves with it. An answer whose links intersect each other (the URDF's
+    collision geometry), or the floor on a wheeled base, is refused and the search goes on;
+    a fixed arm may reach below its base. Exit code 0 when the target is reached, 1 when not
+    (the best try is printed, with a hint: out of reach by how much, an orientation the
+    joints cannot make, or the two links that would collide), 2 for bad input.
 
     \b
     Examples:

@@ -226,11 +226,11 @@ def _arm_above(link: str | None, parent_joint: Mapping[str, Joint], names: set[s
 
 def _chain(tree: KinematicTree, first: Joint, parent_joint: Mapping[str, Joint],
            tool: str | None) -> list[Joint] | None:
-    """The joints from ``first`` down to ``tool``, or to the deepest link below it where
-    ``tool`` is not below it; None without a child.
+    """The joints from ``first`` down to ``tool``, else to its deepest link; None without one.
 
-    A camera's optical frame three fixed frames down is deeper than the gripper frame the
-    tool is (Trossen's wxai: the reach was the camera's, 1 cm short of the gripper's).
+    ``tool`` where it is below ``first``. A camera's optical frame three fixed frames down
+    is deeper than the gripper frame the tool is (Trossen's wxai: the reach was the
+    camera's, 1 cm short of the gripper's).
     """
     if first.child is None:
         return None
