@@ -32,6 +32,7 @@ if TYPE_CHECKING:
     from servicebot_cli.check.controller_interfaces import Claim
     from servicebot_cli.description.robot import RobotDescription
     from servicebot_cli.kinematics.drive_geometry import DriveGeometry
+    from servicebot_cli.kinematics.mesh_wheels import MeshPoints
 
 _PID = "pid_controller/PidController"
 
@@ -50,9 +51,13 @@ ROS2_CONTROLLERS = frozenset((
 """The packages of ros-controls/ros2_controllers: their ``joint``/``joints`` name URDF joints."""
 
 
-def check(found: Sections, display: str, robot: RobotDescription) -> Iterator[Issue]:
-    """Every issue of the controller sections ``found`` (of file ``display``) against ``robot``."""
-    checker = _Checker(display, robot, found)
+def check(found: Sections, display: str, robot: RobotDescription,
+          meshes: MeshPoints | None = None) -> Iterator[Issue]:
+    """Every issue of the controller sections ``found`` (of file ``display``) against ``robot``.
+
+    ``meshes``: the bounds of mesh shapes (wheels drawn as meshes are where those are).
+    """
+    checker = _Checker(display, robot, found, meshes)
     for name, params in found.items():
         kind = checker.types.get(name)
         if name != "controller_manager" and _names_joints(kind):
@@ -84,9 +89,10 @@ def _number(node: yaml.Node | None) -> float | None:
 
 class _Checker:
     def __init__(self, display: str, robot: RobotDescription,
-                 sections: Sections | None = None) -> None:
+                 sections: Sections | None = None, meshes: MeshPoints | None = None) -> None:
         self.display = display
         self.robot = robot
+        self.meshes = meshes
         self.sections = sections or {}
         self.controllers = frozenset(self.sections)
         self.joints = robot.joints_by_name
@@ -103,7 +109,7 @@ class _Checker:
             from servicebot_cli.kinematics.drive_geometry import drive_geometry
 
             try:
-                self._geometry = drive_geometry(self.robot)
+                self._geometry = drive_geometry(self.robot, self.meshes)
             except DescriptionError as exc:
                 self._geometry = str(exc).split(": ", 1)[-1]
         return self._geometry
@@ -403,16 +409,17 @@ class _Checker:
                               ("wheel_separation_multiplier",), skid=min(per_side) >= 2)
 
     def named_geometry(self, params: yaml.MappingNode) -> DriveGeometry | None:
-        """The wheels on the joints the controller names, radius unknown.
+        """The wheels on the joints the controller names; None unless on both sides.
 
-        None unless they are on both sides of the robot.
+        Their radius is their round meshes' (NaN, unknown, where a wheel has none).
         """
         from servicebot_cli.kinematics.drive_geometry import DriveGeometry
         from servicebot_cli.kinematics.plugin_wheels import wheels_named
 
-        wheels = wheels_named(self.robot, self.named_wheels(params))
+        wheels = wheels_named(self.robot, self.named_wheels(params), meshes=self.meshes)
         track = track_m(wheels)
-        return None if track is None else DriveGeometry(tuple(wheels), math.nan, track,
+        radius_m = sum(w.radius_m for w in wheels) / len(wheels) if wheels else math.nan
+        return None if track is None else DriveGeometry(tuple(wheels), radius_m, track,
                                                         math.inf)
 
     def named_wheels(self, params: yaml.MappingNode) -> set[str]:

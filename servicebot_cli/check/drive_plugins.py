@@ -21,12 +21,16 @@ if TYPE_CHECKING:
     from servicebot_cli.description.extensions import Plugin
     from servicebot_cli.description.robot import RobotDescription
     from servicebot_cli.kinematics.drive_geometry import DriveGeometry
+    from servicebot_cli.kinematics.mesh_wheels import MeshPoints
 
 _WHEEL_KEYS = ("left_joint", "right_joint", "leftJoint", "rightJoint")
 
 
-def check(robot: RobotDescription) -> Iterator[Issue]:
-    """SB516 for each diff-drive plugin whose wheel numbers are not the URDF's wheels'."""
+def check(robot: RobotDescription, meshes: MeshPoints | None = None) -> Iterator[Issue]:
+    """SB516 for each diff-drive plugin whose wheel numbers are not the URDF's wheels'.
+
+    ``meshes``: the bounds of mesh shapes (wheels drawn as meshes are where those are).
+    """
     plugins = [(p, numbers) for p in robot.model_plugins
                if (numbers := plugin_wheels(p)) is not None]
     if not plugins:
@@ -34,7 +38,7 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     from servicebot_cli.kinematics.drive_geometry import drive_geometry
 
     try:
-        geometry = drive_geometry(robot)
+        geometry = drive_geometry(robot, meshes)
     except DescriptionError:  # no wheels on both sides: inspect and simulate say why
         return
     for plugin, numbers in plugins:

@@ -15,6 +15,7 @@ from servicebot_cli.check.meshes import MeshCache, MeshError, MeshInfo
 from servicebot_cli.check.packages import PackageSearch, Resolved
 from servicebot_cli.common.inputs import not_a_file
 from servicebot_cli.description.packages import PackageResolver, is_remote
+from servicebot_cli.kinematics.mesh_wheels import FloatArray, MeshPoints, read_vertices, scaled
 
 if TYPE_CHECKING:
     from servicebot_cli.description.elements import Shape
@@ -62,6 +63,7 @@ class CheckEnv:
     search: PackageSearch = field(init=False)
     _directories: dict[str, Path] = field(init=False, default_factory=dict)
     _not_files: dict[Path, str | None] = field(init=False, default_factory=dict)
+    _vertices: dict[Path, FloatArray | None] = field(init=False, default_factory=dict)
 
     def __post_init__(self) -> None:
         self.search = PackageSearch(self.resolver)
@@ -112,6 +114,22 @@ class CheckEnv:
             MeshError: The file is not a loadable mesh.
         """
         return self.meshes.get(self.mesh_path(robot, shape), with_mass)
+
+    def mesh_points(self, robot: RobotDescription) -> MeshPoints:
+        """The vertices of ``robot``'s mesh shapes, scaled, as the drive's wheels take them.
+
+        Read only for wheels drawn as meshes, each file once a run.
+        """
+        def points(shape: Shape) -> FloatArray | None:
+            try:
+                path = self.mesh_path(robot, shape)
+            except MeshNotFound:
+                return None
+            if path not in self._vertices:
+                self._vertices[path] = read_vertices(path)
+            return scaled(self._vertices[path], shape.geometry.scale)
+
+        return points
 
 
 __all__ = ["CheckEnv", "MeshError", "MeshNotFound", "RemoteMesh"]

@@ -115,9 +115,10 @@ def _wheel_speeds(robot: RobotDescription) -> Iterator[Issue]:
     if not unlimited:
         return
     from servicebot_cli.kinematics.drive_geometry import drive_geometry
+    from servicebot_cli.kinematics.mesh_wheels import no_points
 
     try:
-        wheels = {w.joint for w in drive_geometry(robot).wheels}
+        wheels = {w.joint for w in drive_geometry(robot, no_points).wheels}
     except (DescriptionError, ValueError, KeyError):
         return  # not a differential drive
     for joint in unlimited:

@@ -220,6 +220,7 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
     )
     from servicebot_cli.common.inputs import display_path, read_input_text
     from servicebot_cli.description.ros_parameters import MAX_PARAMETERS_BYTES
+    from servicebot_cli.kinematics.mesh_wheels import file_points
 
     yaml_path = Path(targets.yaml_file) if targets.yaml_file else bundled_file(CONTROLLERS_YAML)
     display = targets.yaml_file or display_path(yaml_path)
@@ -236,7 +237,8 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
                   *controller_manager_params.manager_issues(found, display)]
     for source in sources:
         robot = read_description(source)
-        issues = [*whole_file, *controllers.check(found, display, robot)]
+        issues = [*whole_file, *controllers.check(
+            found, display, robot, file_points(source.resolver(), robot.path.parent))]
         whole_file = []
         reports.append(FileReport(f"{display} against {source.display}",
                                   tuple(place_issues(robot, issues, settings))))

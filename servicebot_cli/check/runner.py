@@ -212,7 +212,7 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
         (("SB409",), lambda: packages.find_issues(robot, env.search)),
         (("SB50", "SB513", "SB518"), lambda: gazebo.check(robot)),
         (("SB5",), lambda: ros2_control.check(robot)),
-        (("SB516",), lambda: drive_plugins.check(robot)),
+        (("SB516",), lambda: drive_plugins.check(robot, env.mesh_points(robot))),
         (("SB511",), lambda: transmissions.check(robot)),
     ]
     for prefixes, family in families:

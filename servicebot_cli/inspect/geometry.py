@@ -23,6 +23,7 @@ from servicebot_cli.common.errors import PackageNotFound, ServicebotError
 from servicebot_cli.description import mesh_readers
 from servicebot_cli.description.elements import Shape
 from servicebot_cli.description.safe_xml import declaration_first
+from servicebot_cli.kinematics.mesh_wheels import scaled
 from servicebot_cli.kinematics.transforms import pose_matrix
 
 if TYPE_CHECKING:
@@ -77,6 +78,11 @@ class MeshLibrary:
         else:
             self.problems[line] = f"{count} meshes ({first} and others): {message}"
         self._hidden[message] = (line, first, count)
+
+    def points(self, shape: Shape) -> FloatArray | None:
+        """The vertices of ``shape``'s mesh, scaled; None if unusable."""
+        mesh = self.get(shape.geometry.filename or "")
+        return None if mesh is None else scaled(mesh.vertices, shape.geometry.scale)
 
     def get(self, filename: str) -> Mesh | None:
         """The mesh at ``filename`` (as written in the URDF), unscaled; None if unusable."""

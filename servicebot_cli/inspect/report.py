@@ -178,8 +178,9 @@ def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> T
     from servicebot_cli.kinematics.running_gear import chassis_joints, loose_wheels
 
     notes: list[str] = []
+    meshes = mesh_library(robot, request.resolver or PackageResolver.from_environment())
     try:
-        drive = drive_geometry(robot)
+        drive = drive_geometry(robot, meshes.points)
     except DescriptionError as exc:
         drive = None
         notes.append(str(exc).split(": ", 1)[-1])
@@ -191,7 +192,6 @@ def _totals(robot: RobotDescription, tree: KinematicTree, request: Request) -> T
     chassis = frozenset(chassis_joints(robot, sorted(wheels)))
     zero = link_transforms(robot)
     posed = link_transforms(robot, request.configuration, clamp=request.clamp)
-    meshes = mesh_library(robot, request.resolver or PackageResolver.from_environment())
     mass, centre = t.mass_and_centre(robot, posed)
     unknown = t.links_of_unknown_mass(robot)
     if unknown:

@@ -7,7 +7,7 @@ left, on -y right. Nothing here is a constant: change the URDF and the numbers f
 One joint is judged in :mod:`~servicebot_cli.kinematics.wheel_joints`; wheels on passive
 casters are left out (:mod:`~servicebot_cli.kinematics.running_gear`). Where the links give
 no such wheels, a Gazebo diff-drive plugin's wheel joints and diameter stand in
-(:mod:`~servicebot_cli.kinematics.plugin_wheels`).
+(:mod:`~servicebot_cli.kinematics.plugin_wheels`), each wheel where its round mesh is.
 """
 
 from __future__ import annotations
@@ -21,6 +21,7 @@ import numpy as np
 from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.common.listing import some_of
 from servicebot_cli.kinematics.link_poses import link_transforms
+from servicebot_cli.kinematics.mesh_wheels import MeshPoints, file_points
 from servicebot_cli.kinematics.running_gear import swivels_above
 from servicebot_cli.kinematics.wheel_joints import (
     NO_ROUND_SHAPE,
@@ -86,8 +87,11 @@ class DriveGeometry:
         return 2.0 * self.max_linear_m_s / self.track_m
 
 
-def drive_geometry(robot: RobotDescription) -> DriveGeometry:
+def drive_geometry(robot: RobotDescription, meshes: MeshPoints | None = None) -> DriveGeometry:
     """Find the drive wheels of ``robot``.
+
+    ``meshes`` reads the bounds of wheels drawn as meshes (default: from their files, found
+    from the robot's file and the environment's packages).
 
     Raises:
         DescriptionError: Fewer than one wheel on either side, naming what was found.
@@ -109,7 +113,9 @@ def drive_geometry(robot: RobotDescription) -> DriveGeometry:
     if not sides["left"] or not sides["right"]:  # mesh wheels a diff-drive plugin names?
         from servicebot_cli.kinematics.plugin_wheels import plugin_wheels
 
-        wheels = plugin_wheels(robot, world) or wheels
+        if meshes is None:
+            meshes = file_points(None, robot.path.parent)
+        wheels = plugin_wheels(robot, world, meshes) or wheels
         sides = {side: [w for w in wheels if w.side == side] for side in ("left", "right")}
     if not sides["left"] or not sides["right"]:
         found = ", ".join(f"{w.joint} ({w.side})" for w in wheels) or "none"

@@ -5,7 +5,9 @@ Pepper's wheels are meshes: nothing in the links says their radius, but its
 drives them so. Gazebo Classic's plugin (ROS 1 ``leftJoint``/``rightJoint``/``wheelDiameter``;
 ROS 2 ``left_joint``/``right_joint``/``wheel_diameter``, a pair per ``num_wheel_pairs``) and
 gz-sim's DiffDrive system (``left_joint``/``right_joint``/``wheel_radius``) are read. A
-wheel's centre is its joint's origin; its side, as for every wheel, the sign of its y.
+wheel's centre and radius are its round mesh's (:mod:`.mesh_wheels`), where it has one;
+else its joint's origin and the radius the plugin says. Its side, as for every wheel, is the
+sign of its y.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ import numpy as np
 
 from servicebot_cli.description.extensions import Plugin, param, params_all
 from servicebot_cli.description.model_plugins import ros1_plugin
+from servicebot_cli.kinematics.mesh_wheels import MeshPoints, round_mesh
 from servicebot_cli.kinematics.wheel_joints import (
     PARALLEL,
     Wheel,
@@ -33,33 +36,39 @@ _GZ_DIFF_DRIVE = ("gz-sim-diff-drive-system", "ignition-gazebo-diff-drive-system
                   "gz::sim::systems::DiffDrive", "ignition::gazebo::systems::DiffDrive")
 
 
-def plugin_wheels(robot: RobotDescription, world: dict[str, np.ndarray]) -> list[Wheel]:
-    """The wheels of the first diff-drive plugin that names usable ones; none without."""
+def plugin_wheels(robot: RobotDescription, world: dict[str, np.ndarray],
+                  meshes: MeshPoints | None = None) -> list[Wheel]:
+    """The wheels of the first diff-drive plugin that names usable ones; none without.
+
+    ``meshes``: the bounds of mesh shapes, for wheels drawn as meshes.
+    """
     for plugin in robot.plugins:
         named = _named(plugin)
         if named is None:
             continue
         joints, radius_m = named
-        wheels = wheels_named(robot, joints, radius_m, world)
+        wheels = wheels_named(robot, joints, radius_m, world, meshes)
         if {w.side for w in wheels} == {"left", "right"}:
             return wheels
     return []
 
 
 def wheels_named(robot: RobotDescription, names: Iterable[str], radius_m: float = math.nan,
-                 world: dict[str, np.ndarray] | None = None) -> list[Wheel]:
+                 world: dict[str, np.ndarray] | None = None,
+                 meshes: MeshPoints | None = None) -> list[Wheel]:
     """The wheels on the joints ``names`` (a plugin's, a controller's), where they are.
 
     ``world``: each link's pose at zero, computed when not given. A joint that does not
-    turn freely across the robot is left out. ``radius_m``: NaN when nothing says it (mesh
-    wheels a controller names).
+    turn freely across the robot is left out. ``radius_m``: what the plugin says, NaN when
+    nothing says it (a controller's wheels); a wheel's round mesh, read through
+    ``meshes``, says its own.
     """
     if world is None:
         from servicebot_cli.kinematics.link_poses import link_transforms
 
         world = link_transforms(robot)
     return [wheel for name in names
-            if (wheel := _wheel(robot, name, world, radius_m)) is not None]
+            if (wheel := _wheel(robot, name, world, radius_m, meshes)) is not None]
 
 
 def _named(plugin: Plugin) -> tuple[list[str], float] | None:
@@ -93,7 +102,7 @@ def _number(text: str | None) -> float:
 
 
 def _wheel(robot: RobotDescription, name: str, world: dict[str, np.ndarray],
-           radius_m: float) -> Wheel | None:
+           radius_m: float, meshes: MeshPoints | None) -> Wheel | None:
     """The wheel on joint ``name``: one that turns freely, across the robot; else None."""
     joint = next((j for j in robot.joints if j.name == name), None)
     if joint is None or not turns_freely(joint) or joint.child not in world:
@@ -104,6 +113,11 @@ def _wheel(robot: RobotDescription, name: str, world: dict[str, np.ndarray],
     transform = world[joint.child]
     axis_in_root = transform[:3, :3] @ axis
     position = transform[:3, 3]
+    link = robot.find_link(joint.child)
+    mesh = None if meshes is None or link is None else round_mesh(link, axis, meshes)
+    if mesh is not None:
+        position = (transform @ np.append(mesh[0], 1.0))[:3]
+        radius_m = mesh[1]
     if abs(axis_in_root[1]) < PARALLEL or not np.all(np.isfinite(position)):
         return None
     return wheel_at(joint, position, radius_m, axis_in_root)

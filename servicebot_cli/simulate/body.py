@@ -32,6 +32,7 @@ from servicebot_cli.description.sensors import (
     lidar_spec,
 )
 from servicebot_cli.kinematics.drive_geometry import DriveGeometry, drive_geometry
+from servicebot_cli.kinematics.mesh_wheels import file_points
 from servicebot_cli.kinematics.mimics import Mimics
 from servicebot_cli.kinematics.running_gear import chassis_joints
 from servicebot_cli.kinematics.steering import refuse_steered_wheels
@@ -132,7 +133,7 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
     """
     with FactsAhead(robot) if facts is None else contextlib.nullcontext(facts) as ahead:
         with description_first(ahead):
-            geometry = drive_geometry(robot)
+            geometry = drive_geometry(robot, file_points(resolver, robot.path.parent))
             refuse_steered_wheels(robot)
         gear = {w.joint for w in geometry.wheels}
         gear.update(chassis_joints(robot, [w.joint for w in geometry.wheels]))

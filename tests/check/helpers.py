@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import math
 import struct
 from pathlib import Path
 from typing import Any
@@ -35,6 +36,25 @@ def tetrahedron_stl(size: float) -> bytes:
     for face in faces:
         data += struct.pack("<3f", 0, 0, 0)
         data += b"".join(struct.pack("<3f", *corners[i]) for i in face) + b"\0\0"
+    return data
+
+
+def wheel_stl(radius: float, width: float, centre_y: float, sides: int = 48) -> bytes:
+    """A binary STL of a closed wheel (a prism of ``sides``) about y, centred at ``centre_y``."""
+    angles = [2 * math.pi * k / sides for k in range(sides)]
+    rim = [(radius * math.cos(a), radius * math.sin(a)) for a in angles]
+    near, far = centre_y - width / 2, centre_y + width / 2
+    triangles = []
+    for k in range(sides):
+        (x0, z0), (x1, z1) = rim[k], rim[(k + 1) % sides]
+        triangles += [((x0, near, z0), (x1, near, z1), (x1, far, z1)),
+                      ((x0, near, z0), (x1, far, z1), (x0, far, z0)),
+                      ((0, near, 0), (x1, near, z1), (x0, near, z0)),
+                      ((0, far, 0), (x0, far, z0), (x1, far, z1))]
+    data = b"\0" * 80 + struct.pack("<I", len(triangles))
+    for corners in triangles:
+        data += struct.pack("<3f", 0, 0, 0) + b"".join(struct.pack("<3f", *c) for c in corners)
+        data += b"\0\0"
     return data
 
 

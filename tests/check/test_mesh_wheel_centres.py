@@ -1,0 +1,94 @@
+"""Wheels drawn as meshes roll where their meshes are, on their meshes' radius.
+
+tortoisebot's wheels are STL meshes (in millimetres, scale 0.001) that sit 0.014 m outward
+of their joints. The wheels' centres were taken at the joints: SB516 said its plugin's
+wheel_separation (right) should be the joints' distance, inspect showed that track, and
+simulate turned the robot 21 % faster than Gazebo. The radius was the plugin's own, so a
+wrong wheel_diameter passed unseen.
+"""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from tests.check.helpers import check_controllers, findings, wheel_stl
+
+INERTIAL = ('<inertial><mass value="0.2"/><inertia ixx="1e-4" iyy="1e-4" izz="1e-4" ixy="0" '
+            'ixz="0" iyz="0"/></inertial>')
+JOINTS_Y_M = 0.07  # the wheels' centres are 0.015 m further out: 0.17 m apart
+RADIUS_M = 0.0325
+
+
+def _wheel(side: str, sign: int) -> str:
+    return (f'<link name="wheel_{side}">{INERTIAL}<collision><geometry><mesh '
+            f'filename="wheel_{side}.stl" scale="0.001 0.001 0.001"/></geometry></collision>'
+            f'</link><joint name="{side}_wheel_joint" type="continuous"><parent '
+            f'link="base_link"/><child link="wheel_{side}"/><origin xyz="0 {sign * JOINTS_Y_M} '
+            f'{RADIUS_M}"/><axis xyz="0 1 0"/><limit effort="1" velocity="10"/></joint>')
+
+
+def _robot(tmp_path, separation_m: float = 0.17, diameter_m: float = 0.065):
+    for side, sign in (("left", 1), ("right", -1)):  # millimetres, as exported
+        (tmp_path / f"wheel_{side}.stl").write_bytes(wheel_stl(32.5, 20, sign * 15))
+    plugin = ('<gazebo><plugin name="diff_drive" filename="libgazebo_ros_diff_drive.so">'
+              "<left_joint>left_wheel_joint</left_joint><right_joint>right_wheel_joint"
+              f"</right_joint><wheel_separation>{separation_m}</wheel_separation>"
+              f"<wheel_diameter>{diameter_m}</wheel_diameter></plugin></gazebo>")
+    path = tmp_path / "base.urdf"
+    path.write_text('<robot name="base"><link name="base_link"><inertial><mass value="1"/>'
+                    '<inertia ixx="0.002" iyy="0.004" izz="0.005" ixy="0" ixz="0" iyz="0"/>'
+                    '</inertial><collision><origin xyz="0 0 0.06"/><geometry><box size="0.2 '
+                    f'0.12 0.05"/></geometry></collision></link>{_wheel("left", 1)}'
+                    f'{_wheel("right", -1)}{plugin}</robot>')
+    return path
+
+
+def _sb516(run, path) -> list[tuple[str, str]]:
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB516")
+    return [(f["severity"], f["message"]) for f in findings(result.stdout)]
+
+
+def test_the_plugin_that_gives_the_meshes_track_passes(run, tmp_path):
+    assert _sb516(run, _robot(tmp_path)) == []
+
+
+def test_the_joints_distance_is_not_the_track(run, tmp_path):
+    ((severity, message),) = _sb516(run, _robot(tmp_path, separation_m=0.14))
+    assert severity == "error" and "the URDF's wheels are 0.17 m apart" in message
+
+
+def test_a_diameter_that_is_not_the_meshes_is_found(run, tmp_path):
+    ((severity, message),) = _sb516(run, _robot(tmp_path, diameter_m=0.08))
+    assert severity == "error" and "the URDF's wheel diameter is 0.065 m" in message
+
+
+def test_inspect_shows_the_meshes_track_and_radius(run, tmp_path):
+    result = run("inspect", _robot(tmp_path, diameter_m=0.08), "--section", "totals",
+                 "--format", "json")
+    drive = json.loads(result.stdout)["totals"]["drive"]
+    assert drive["track_m"] == pytest.approx(0.17, abs=1e-6)
+    assert drive["wheel_radius_m"] == pytest.approx(RADIUS_M, abs=1e-6)
+
+
+def test_simulate_turns_the_robot_as_gazebo_does(run, tmp_path):
+    scenario = tmp_path / "turn.yaml"
+    scenario.write_text("duration_s: 2\ncmd_vel:\n  - {duration_s: 2, linear_m_s: 0, "
+                        "angular_rad_s: 0.5}\n")
+    result = run("simulate", _robot(tmp_path), "--headless", "-s", scenario, "--format", "json")
+    assert result.exit_code == 0, result.output
+    assert json.loads(result.stdout)["final_pose"]["yaw_rad"] == pytest.approx(1.0, abs=1e-3)
+
+
+@pytest.mark.parametrize(("radius_m", "expected"), [(0.0325, []), (0.05, ["SB603"])])
+def test_a_controllers_wheel_radius_is_the_meshes(run, tmp_path, radius_m, expected):
+    controllers = ("controller_manager:\n  ros__parameters:\n    update_rate: 100\n"
+                   "    diff_cont:\n      type: diff_drive_controller/DiffDriveController\n"
+                   "diff_cont:\n  ros__parameters:\n    left_wheel_names: [left_wheel_joint]\n"
+                   "    right_wheel_names: [right_wheel_joint]\n"
+                   f"    wheel_separation: 0.17\n    wheel_radius: {radius_m}\n")
+    path = _robot(tmp_path)
+    path.write_text(path.read_text().replace("diff_drive.so", "diff_drive_off.so"))
+    _, found = check_controllers(run, tmp_path, controllers, path)
+    assert [f["code"] for f in found] == expected
