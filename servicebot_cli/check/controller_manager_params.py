@@ -9,6 +9,7 @@ param was not defined"), so the spawner fails. Pure: YAML nodes in, issues out.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
@@ -19,6 +20,7 @@ from servicebot_cli.check.findings import Issue
 
 _DECLARED = {"update_rate": "integer", "use_sim_time": "bool", "thread_priority": "integer",
              "enforce_command_limits": "bool"}
+_DEFAULTS = {"integer": "100", "bool": "true"}
 _OWN_GROUPS = frozenset(("hardware_components_initial_state", "diagnostics", "diagnostic",
                          "defaults", "statistics"))
 """controller_manager's own nested parameters: no controller declarations."""
@@ -32,6 +34,11 @@ def manager_issues(found: Sections, display: str) -> Iterator[Issue]:
             node = get(manager, key)
             if isinstance(node, yaml.ScalarNode) and not substituted(str(node.value)):
                 yield from _typed(key, node, wanted, display)
+            elif isinstance(node, yaml.SequenceNode):
+                yield Issue("SB608", f"controller_manager.{key}: rcl reads a list as an array, "
+                            f"and controller_manager declares {TYPE_ARTICLE[wanted]}: the node "
+                            "refuses it and does not start", where=at(display, node.start_mark),
+                            fix=f"{key}: {_DEFAULTS[wanted]}")
         for key, value in manager.value:
             name = str(key.value) if isinstance(key, yaml.ScalarNode) else ""
             if isinstance(value, yaml.MappingNode) and name not in _OWN_GROUPS \
@@ -47,9 +54,10 @@ def _typed(key: str, node: yaml.ScalarNode, wanted: str, display: str) -> Iterat
     where = at(display, node.start_mark)
     if got != wanted:
         plain = str(node.value).strip()
-        fix = (f"{key}: {plain}" if wanted == "integer" and plain.isdigit()
-               else f"{key}: {round(float(plain))}" if wanted == "integer" and got == "double"
-               else f"{key}: true" if wanted == "bool" else f"{key}: 100")
+        rounded = _rounded(plain) if wanted == "integer" and got == "double" else None
+        fix = (f"{key}: {plain}" if wanted == "integer" and plain.isdigit() and got == "string"
+               else f"{key}: {rounded}" if rounded is not None
+               else f"{key}: {_DEFAULTS[wanted]}")
         yield Issue("SB608", f"controller_manager.{key}: rcl reads '{node.value}' as "
                     f"{TYPE_ARTICLE[got]}, and controller_manager declares "
                     f"{TYPE_ARTICLE[wanted]}: the node refuses it and does not start",
@@ -58,3 +66,17 @@ def _typed(key: str, node: yaml.ScalarNode, wanted: str, display: str) -> Iterat
         yield Issue("SB608", f"controller_manager.update_rate: {node.value}: from Jazzy on the "
                     "controller manager wants a rate above 0 and does not start; Humble's "
                     "loop divides by it", where=where, fix="update_rate: 100")
+
+
+def _rounded(text: str) -> int | None:
+    """``text``, a double rcl read, as the nearest integer of 64 bits; None where none is.
+
+    None for ``.inf``, ``nan`` and 1e400.
+    """
+    try:
+        value = float(text.lower().replace(".inf", "inf").replace(".nan", "nan"))
+    except ValueError:
+        return None
+    if not math.isfinite(value) or not -(2 ** 63) <= round(value) < 2 ** 63:
+        return None
+    return round(value)

@@ -121,9 +121,23 @@ def rcl_type(node: yaml.ScalarNode) -> str:
     text = str(node.value)
     if text in RCL_TRUE or text in RCL_FALSE:
         return "bool"
-    if _INTEGER.fullmatch(text):
-        return "integer"
+    if _INTEGER.fullmatch(text) and _INT64_LOW <= _as_c_integer(text) <= _INT64_HIGH:
+        return "integer"  # beyond 64 bits strtoll fails, and rcl reads a double
     return "double" if _DOUBLE.fullmatch(text) else "string"
+
+
+_INT64_LOW, _INT64_HIGH = -(2 ** 63), 2 ** 63 - 1
+
+
+def _as_c_integer(text: str) -> int:
+    """The value of an integer ``_INTEGER`` matches, read as ``strtoll`` base 0 reads it."""
+    digits = text.lstrip("+-")
+    sign = -1 if text.startswith("-") else 1
+    if digits[:2].lower() == "0x":
+        return sign * int(digits, 16)
+    if len(digits) > 1 and digits.startswith("0") and set(digits) <= set("01234567"):
+        return sign * int(digits, 8)
+    return sign * int(digits)
 
 
 def mixed_lists(params: yaml.MappingNode, section: str,

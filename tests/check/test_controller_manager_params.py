@@ -30,11 +30,24 @@ def test_an_integer_rate_and_typed_controllers_pass(run, tmp_path):
     ('"100"', "'100' as a string", "update_rate: 100"),
     ("100.0", "'100.0' as a double", "update_rate: 100"),
     ("fast", "'fast' as a string", "update_rate: 100"),
+    ("250.4", "'250.4' as a double", "update_rate: 250"),
+    # no integer near: the fix was computed with float() and round(), exit 3
+    (".inf", "'.inf' as a double", "update_rate: 100"),
+    (".NaN", "'.NaN' as a double", "update_rate: 100"),
+    ("1e400", "'1e400' as a double", "update_rate: 100"),
+    # beyond 64 bits strtoll fails and rcl reads a double: it passed
+    ("99999999999999999999999", "'99999999999999999999999' as a double", "update_rate: 100"),
+    ("[100, 200]", "a list as an array", "update_rate: 100"),
 ])
 def test_a_rate_that_is_no_integer_stops_the_node(run, tmp_path, rate, read, fix):
     ((severity, message, given_fix),) = _sb608(run, tmp_path, rate)
     assert severity == "error" and f"controller_manager.update_rate: rcl reads {read}" in message
     assert given_fix == fix
+
+
+def test_the_largest_integer_is_one(run, tmp_path):
+    assert _sb608(run, tmp_path, str(2 ** 63 - 1)) == []
+    assert _sb608(run, tmp_path, "0x10") == []
 
 
 def test_a_rate_of_zero_or_less(run, tmp_path):
