@@ -28,6 +28,7 @@ from servicebot_cli.kinematics import diff_drive
 from servicebot_cli.simulate.body import Mounted, SimRobot
 from servicebot_cli.simulate.controllers.arm_trajectory import ArmLimits, ArmMotion
 from servicebot_cli.simulate.controllers.classic_drive import ENCODER, NEITHER, WORLD
+from servicebot_cli.simulate.controllers.config import GAZEBO_STEP_HZ
 from servicebot_cli.simulate.controllers.controller_wheels import ControllerWheels
 from servicebot_cli.simulate.controllers.diff_drive import WheelPlan, WheelPlanner
 from servicebot_cli.simulate.model_facts import FactsAhead
@@ -378,10 +379,6 @@ def scan_stream(index: int, mounted: Mounted[LidarSpec]) -> str:
     if index == 0:
         return "scan"
     return f"scan {mounted.spec.topic} on {mounted.link}: {mounted.name}"
-
-
-GAZEBO_STEP_HZ = 1000.0
-"""Gazebo's default physics rate (a 1 ms step): no sensor updates more often."""
 
 
 def _rate(spec: LidarSpec | ImuSpec | CameraSpec, scenario: Scenario) -> float:

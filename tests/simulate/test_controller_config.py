@@ -140,3 +140,30 @@ def test_no_note_when_controllers_are_given(run, tmp_path):
                  robot)
     assert result.exit_code == 0, result.stderr
     assert "nonexistent" not in result.stderr
+
+
+_MANAGER_ONLY = ("controller_manager:\n  ros__parameters:\n    update_rate: {rate}\n"
+                 "    base: {{type: diff_drive_controller/DiffDriveController}}\n")
+
+
+@pytest.mark.parametrize("rate", ["0", "-10"])
+def test_a_control_rate_of_zero_or_less_is_refused_in_one_line(run, tmp_path, rate):
+    """update_rate 0 stopped the run with an internal error (a division by zero)."""
+    controllers = tmp_path / "c.yaml"
+    controllers.write_text(_MANAGER_ONLY.format(rate=rate))
+    result = run("simulate", "--headless", "--duration-s", "1", "--controllers", controllers)
+    assert result.exit_code == 2
+    assert f"controller_manager.update_rate: must be above 0, got {rate}" in result.stderr
+
+
+@pytest.mark.parametrize("rate", ["100000000", "99999999999999999999999"])
+def test_a_control_rate_beyond_the_physics_step_runs_once_a_step(run, tmp_path, rate):
+    """1e8 Hz ran for minutes (a tick per 10 ns); 1e23 Hz stopped with an internal error.
+    gazebo_ros2_control runs the controllers once a physics step (1 ms) at most."""
+    controllers = tmp_path / "c.yaml"
+    controllers.write_text(_MANAGER_ONLY.format(rate=rate))
+    result = run("simulate", "--headless", "--duration-s", "1", "--format", "json",
+                 "--controllers", controllers)
+    assert result.exit_code == 0, result.stderr
+    assert json.loads(result.stdout)["controller"]["update_rate_hz"]["value"] == 1000.0
+    assert "gazebo_ros2_control runs the controllers once a step (1000 Hz)" in result.stderr

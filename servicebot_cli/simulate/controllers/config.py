@@ -35,6 +35,9 @@ from servicebot_cli.description.ros_parameters import (
 from servicebot_cli.simulate.controllers.classic_drive import ClassicDrive
 from servicebot_cli.simulate.controllers.limiter import DIFF_DRIVE_CONTROLLER
 
+GAZEBO_STEP_HZ = 1000.0
+"""Gazebo's default physics rate (a 1 ms step): no sensor or controller updates more often."""
+
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
 
@@ -156,8 +159,20 @@ def read_controllers_file(path: Path | tuple[Path, ...] | None,
     name = next((n for n, kind in types.items() if kind == DIFF_DRIVE), None)
     params = _flat(nodes.get(name, {})) if name else {}
     values: dict[str, Any] = {}
+    notes: tuple[str, ...] = ()
     if "update_rate" in manager:
-        values["update_rate_hz"] = _number(where, "update_rate", manager["update_rate"])
+        rate = _number(where, "update_rate", manager["update_rate"])
+        if rate <= 0:
+            raise ControllersFileError(
+                f"{where}: controller_manager.update_rate: must be above 0, got "
+                f"{manager['update_rate']!r}; the controller manager does not run with it "
+                "(check controllers says so)")
+        if rate > GAZEBO_STEP_HZ:  # gazebo_ros2_control warns and steps them with physics
+            notes += (f"note: {where}: controller_manager.update_rate {rate:g} Hz is faster "
+                      "than Gazebo's 1 ms physics step, and gazebo_ros2_control runs the "
+                      f"controllers once a step ({GAZEBO_STEP_HZ:g} Hz)",)
+            rate = GAZEBO_STEP_HZ
+        values["update_rate_hz"] = rate
     for key, field in (("publish_rate", "publish_rate_hz"),
                        ("cmd_vel_timeout", "cmd_vel_timeout_s")):
         if key in params:
@@ -179,9 +194,9 @@ def read_controllers_file(path: Path | tuple[Path, ...] | None,
     namespace = plugin_node.namespace if plugin_node else "/"
     odom_frame, base_frame = _frames(where, params, namespace) if name else (None, None)
     other = next(((n, kind) for n, kind in types.items() if _OTHER_BASE.search(kind)), None)
-    notes = (f"note: {where}: the base's controller '{other[0]}' is a {other[1]}, which "
-             "simulate does not model: the base is driven as a differential drive on its "
-             "wheels, and no odometry is published",) if other and not name else ()
+    notes += (f"note: {where}: the base's controller '{other[0]}' is a {other[1]}, which "
+              "simulate does not model: the base is driven as a differential drive on its "
+              "wheels, and no odometry is published",) if other and not name else ()
     return ControllersFile(where, values, name, source=label, publishes_odometry=bool(name),
                            odom_topic=controller_topic(plugin_node, name, "~/odom")
                            if name else None,
