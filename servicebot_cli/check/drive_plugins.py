@@ -44,8 +44,7 @@ def check(robot: RobotDescription, meshes: MeshPoints | None = None) -> Iterator
     for plugin, numbers in plugins:
         radius_m, track_m, skid = _driven(plugin, geometry)
         yield from _judged(plugin, numbers.separation, track_m, "apart", skid)
-        if not math.isnan(radius_m):  # mesh wheels: no radius to compare with
-            yield from _judged(plugin, numbers.radius, radius_m, "radius", False)
+        yield from _judged(plugin, numbers.radius, radius_m, "radius", False)
 
 
 def _driven(plugin: Plugin, geometry: DriveGeometry) -> tuple[float, float, bool]:
@@ -63,15 +62,22 @@ def _driven(plugin: Plugin, geometry: DriveGeometry) -> tuple[float, float, bool
 def _judged(plugin: Plugin, number: PluginValue, expected_m: float, measure: str,
             skid: bool) -> Iterator[Issue]:
     known = number.known_m
-    if known is None:
-        return  # not a number (SB513); or a default not known here
+    element = plugin.element.find(number.key) if plugin.element is not None else None
+    if known is None and number.given:  # "abc", "nan", "": sdformat cannot convert it
+        yield Issue("SB516", f"Gazebo plugin '{plugin.filename or plugin.name}': "
+                    f"<{number.key}>{number.text}</{number.key}> is no number: sdformat cannot "
+                    "convert it, and the plugin makes wheel speeds with a value that is not "
+                    "the wheels'", element if element is not None else plugin.element,
+                    fix=f"<{number.key}>{_shown(number, expected_m)}</{number.key}>")
+        return
+    if known is None or math.isnan(expected_m):
+        return  # a default not known here; mesh wheels that are not round: no radius known
     diameter = number.key.lower().endswith("diameter")
     value_m, expected_shown = ((2 * known, 2 * expected_m) if diameter
                                else (known, expected_m))
     off = mismatch((value_m,), expected_shown, skid)
     if off is None:
         return
-    element = plugin.element.find(number.key) if plugin.element is not None else None
     urdf = (f"the URDF's wheels are {expected_shown:.6g} m apart" if measure == "apart" else
             f"the URDF's wheel {'diameter' if diameter else 'radius'} is {expected_shown:.6g} m")
     said = (f"<{number.key}> {value_m:g} m" if number.given
@@ -82,3 +88,11 @@ def _judged(plugin: Plugin, number: PluginValue, expected_m: float, measure: str
                 "odometry drifts", element if element is not None else plugin.element,
                 fix=f"<{number.key}>{expected_shown:.6g}</{number.key}>",
                 severity=off.severity)
+
+
+def _shown(number: PluginValue, expected_m: float) -> str:
+    """The URDF's value as the plugin's element writes it (a diameter is twice a radius)."""
+    if math.isnan(expected_m):
+        return "the wheels' diameter in metres" if number.key.lower().endswith("diameter") \
+            else "the wheels' value in metres"
+    return f"{2 * expected_m if number.key.lower().endswith('diameter') else expected_m:.6g}"

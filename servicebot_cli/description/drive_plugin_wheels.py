@@ -38,14 +38,15 @@ class PluginValue:
     Attributes:
         key: The element that sets it (``wheel_diameter`` for a radius from a diameter).
         value_m: The value in metres: a radius is half a diameter; NaN where the text is no
-            number (SB513 says so); None where it is not written and the plugin's default
-            is not known here.
+            number (an empty element too: sdformat converts its text); None where it is not
+            written and the plugin's default is not known here.
         given: Written in the plugin; else the plugin's default.
     """
 
     key: str
     value_m: float | None
     given: bool
+    text: str = ""
 
     @property
     def known_m(self) -> float | None:
@@ -75,15 +76,16 @@ def plugin_wheels(plugin: Plugin) -> PluginWheels | None:
     separation = _value(plugin, "wheelSeparation" if ros1 else "wheel_separation", defaults[0])
     diameter = _value(plugin, "wheelDiameter" if ros1 else "wheel_diameter", defaults[1])
     radius = None if diameter.value_m is None else diameter.value_m / 2.0
-    return PluginWheels(separation, PluginValue(diameter.key, radius, diameter.given))
+    return PluginWheels(separation, PluginValue(diameter.key, radius, diameter.given,
+                                                diameter.text))
 
 
 def _value(plugin: Plugin, key: str, default_m: float | None) -> PluginValue:
     text = next((value for path, value in plugin.params if path == key), None)
-    if text is None or not text.strip():
+    if text is None:
         return PluginValue(key, default_m, False)
     try:
         value = float(text)
     except ValueError:
         value = math.nan
-    return PluginValue(key, value if math.isfinite(value) else math.nan, True)
+    return PluginValue(key, value if math.isfinite(value) else math.nan, True, text.strip())

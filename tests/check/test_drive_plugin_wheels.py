@@ -96,3 +96,32 @@ def test_a_skid_steer_base_may_drive_with_a_wider_track(run, tmp_path, separatio
     found = _sb516(run, path)  # its own defaults are not judged: no diameter finding
     assert [severity for severity, _, _ in found] == ([] if separation == "0.36"
                                                      else ["warning"])
+
+
+@pytest.mark.parametrize(("written", "shown"), [("abc", "abc"), ("nan", "nan"), ("", "")])
+def test_a_number_that_is_no_number_is_an_error(run, tmp_path, written, shown):
+    """'abc' and 'nan' passed (SB513 reads <gazebo> settings, not a plugin's); an empty
+    element was 'not written: the plugin's default', though sdformat converts its text."""
+    path = _base(tmp_path, _classic("<wheel_separation>0.36</wheel_separation>"
+                                    f"<wheel_diameter>{written}</wheel_diameter>"))
+    ((severity, message, fix),) = _sb516(run, path)
+    assert severity == "error"
+    assert f"<wheel_diameter>{shown}</wheel_diameter> is no number: sdformat cannot " \
+        "convert it" in message
+    assert fix == "<wheel_diameter>0.2</wheel_diameter>"
+
+
+@pytest.mark.parametrize(("written", "said"), [
+    ("<wheel_diameter>0</wheel_diameter>", "is no size a wheel has"),
+    ("<wheel_diameter>1e-300</wheel_diameter>", "is no size a wheel has"),
+    ("<wheel_separation>-0.3</wheel_separation>", "is no size a wheel has"),
+    ("<wheel_diameter>abc</wheel_diameter>", "is no number")])
+def test_simulate_refuses_wheel_numbers_no_wheel_has(run, tmp_path, written, said):
+    """A diameter of 0 stopped simulate with a division by zero (exit 3); 1e-300 drove the
+    robot 2.8e298 m in a second; 'abc' was driven with the URDF's wheels, silently."""
+    path = _base(tmp_path, _classic(written))
+    result = run("simulate", path, "--headless", "--duration-s", "1")
+    assert result.exit_code == 2, result.output
+    key = written.split(">")[0] + ">"
+    assert f"{key}{written.split('>')[1].split('<')[0]}</{key[1:]} {said}" in result.stderr
+    assert "(check reports it as SB516)" in result.stderr

@@ -133,7 +133,7 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
         if rate > 0:
             values["publish_rate_hz"] = rate
         values.update(_gz_limits(plugin, where))
-    values.update(_wheels(plugin))
+    values.update(_wheels(plugin, where))
     topic = next((name for direction, name, message, _ in model_plugin_rows(plugin)
                   if direction == "out" and message == ODOMETRY), None)
     if topic is not None:
@@ -148,18 +148,35 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
                            wheel_tf_joints=_wheel_tf(robot, plugin))
 
 
-def _wheels(plugin: Plugin) -> dict[str, float]:
+def _wheels(plugin: Plugin, where: str) -> dict[str, float]:
     """The separation and radius the plugin makes wheel speeds with, written or its defaults.
 
     Where a number is not known (the ROS 1 skid-steer drive's own defaults), the URDF's
-    wheels stand in. A value that is no number was refused above.
+    wheels stand in.
+
+    Raises:
+        ControllersFileError: A value written that is no number, or not one a wheel can be
+            (0 makes infinite wheel speeds).
     """
     numbers = plugin_wheels(plugin)
     if numbers is None:
         return {}
-    return {field: known for field, number in (("wheel_separation_m", numbers.separation),
-                                               ("wheel_radius_m", numbers.radius))
-            if (known := number.known_m) is not None}
+    out = {}
+    for field, number in (("wheel_separation_m", numbers.separation),
+                          ("wheel_radius_m", numbers.radius)):
+        known = number.known_m
+        if number.given and (known is None or not _SMALLEST_M <= known <= _LARGEST_M):
+            raise ControllersFileError(
+                f"{where}: <{number.key}>{number.text}</{number.key}> is "
+                f"{'no number' if known is None else 'no size a wheel has'}, and the plugin "
+                "makes wheel speeds with it; write the wheels' own (check reports it as "
+                "SB516)")
+        if known is not None:
+            out[field] = known
+    return out
+
+
+_SMALLEST_M, _LARGEST_M = 1e-4, 100.0  # as a URDF's wheels (drive_geometry)
 
 
 def _wheel_tf(robot: RobotDescription, plugin: Plugin) -> tuple[str, ...]:
