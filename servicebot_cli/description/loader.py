@@ -265,6 +265,7 @@ def load(source: RobotSource, *, build_model: bool = True,
             )
         if not robot.name:
             raise DescriptionError(f"{source.display}: <robot> has no name attribute; add one")
+        _refuse_entities(robot)
         _refuse_second_parents(robot)
         _LOADED[key] = robot
     robot = _LOADED[key]
@@ -274,6 +275,26 @@ def load(source: RobotSource, *, build_model: bool = True,
     if build_model:
         robot.model  # noqa: B018 -- building the model is the validation (once: it is kept)
     return robot
+
+
+def _refuse_entities(robot: RobotDescription) -> None:
+    """Refuse a plain URDF that refers to an entity its DOCTYPE declares.
+
+    Read here, the entity is expanded (as xacro expands it); urdfdom, and Pinocchio on it,
+    read the reference as written: a link an entity holds is no link of theirs, and an
+    entity in a name is another name. The two readings are not one robot.
+
+    Raises:
+        DescriptionError: Naming the first entity used, and where.
+    """
+    if not robot.entities_used:
+        return
+    name, line, column = robot.entities_used[0]
+    raise DescriptionError(
+        f"{robot.display}:{line}:{column}: entity '&{name};' (its DOCTYPE declares it): "
+        f"urdfdom, under robot_state_publisher, Gazebo, MoveIt and Pinocchio, does not expand "
+        f"entities and reads '&{name};' as written; write its value there, or name the file "
+        ".urdf.xacro (xacro expands it)")
 
 
 def _refuse_second_parents(robot: RobotDescription) -> None:

@@ -261,6 +261,20 @@ def test_a_plain_entity_in_a_urdf_is_an_error_as_urdfdom_reads_it_as_written(run
     assert "does not expand entities and reads '&len;' as written" in found["message"]
 
 
+@pytest.mark.parametrize("command", [["inspect"], ["fk"], ["inspect", "--section", "tree"]])
+def test_commands_refuse_a_urdf_whose_entity_urdfdom_reads_as_written(run, tmp_path, command):
+    """An entity holding a <link>: read here it was a link, which urdfdom (and Pinocchio on
+    it) never sees; inspect stopped with an internal error (KeyError) on the difference."""
+    robot = tmp_path / "r.urdf"
+    robot.write_text('<?xml version="1.0"?>\n<!DOCTYPE robot [<!ENTITY lk "<link '
+                     "name='extra'/>\">]>\n<robot name=\"r\"><link name=\"base\"/>"
+                     '<link name="arm"/><joint name="j" type="revolute"><parent link="base"/>'
+                     '<child link="arm"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" '
+                     'effort="1" velocity="1"/></joint>\n&lk;</robot>\n')
+    assert_one_line_error(run(*command, robot), 2, "r.urdf:4:1: entity '&lk;'",
+                          "reads '&lk;' as written")
+
+
 @pytest.mark.parametrize("declaration", ['<!ENTITY % p "x">', '<!ENTITY a "&b;">',
                                          f'<!ENTITY long "{"x" * 5000}">'])
 def test_entities_other_than_plain_text_are_refused(declaration):
