@@ -382,6 +382,35 @@ class RobotDescription:
                 f"{self.display}: joint '{joint.name}' mimics {what}: nothing drives it; "
                 "name its leader in <mimic joint=...>, or remove the <mimic> "
                 f"{check_hint(self.display, self.xacro_args)}")
+        for joint in self.joints:
+            self._refuse_far_follower(joint)
+
+    def _refuse_far_follower(self, joint: el.Joint) -> None:
+        """Refuse a sliding follower its ``<mimic>`` places beyond any robot (or nowhere).
+
+        ``multiplier="1e308" offset="1e308"`` put a finger 1e308 m out: every distance to it
+        overflowed.
+
+        Raises:
+            DescriptionError: Naming the joint and how far.
+        """
+        mimic = joint.mimic
+        if mimic is None or joint.type != "prismatic" or mimic.joint is None:
+            return
+        leader = self.joints_by_name.get(mimic.joint)
+        limits = leader.limits if leader is not None else None
+        ends = [value for value in ((limits.lower, limits.upper) if limits else ())
+                if value is not None and math.isfinite(value)] or [0.0]
+        far = max(abs(mimic.multiplier * value + mimic.offset) for value in ends)  # inf, nan
+        if not far <= el.FARTHEST_M:
+            how = (f"slides it {far:g} m, beyond the {el.FARTHEST_M:g} m of any robot"
+                   if math.isfinite(far) else "slides it out of a number's range"
+                   if math.isinf(far) else "places it at no number")
+            raise DescriptionError(
+                f"{self.display}: joint '{joint.name}' mimics '{mimic.joint}' times "
+                f"{mimic.multiplier:g} plus {mimic.offset:g}, which {how}; write the "
+                "multiplier and offset in metres per unit of its leader "
+                f"{check_hint(self.display, self.xacro_args)}")
 
     def _refuse_negative_friction(self) -> None:
         """A negative ``<dynamics friction>`` (check's SB216), in the file's words.

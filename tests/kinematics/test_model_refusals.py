@@ -40,6 +40,24 @@ def test_a_follower_without_a_leader_is_one_line(tmp_path, command, leader, said
     assert not (tmp_path / "run").exists()
 
 
+@pytest.mark.parametrize("command", COMMANDS, ids=[c[0] for c in COMMANDS])
+@pytest.mark.parametrize(("mimic", "far"), [
+    ('multiplier="1e308" offset="1e308"', "slides it out of a number's range"),
+    ('offset="2e6"', "slides it 2e+06 m, beyond the 1e+06 m of any robot"),
+    ('multiplier="nan"', "places it at no number")])
+def test_a_sliding_follower_placed_beyond_any_robot_is_one_line(tmp_path, command, mimic, far):
+    """multiplier and offset 1e308 put a finger 1e308 m out: simulate printed numpy's
+    overflow warnings, distances to it being infinite."""
+    path = tmp_path / "r.urdf"
+    path.write_text(ROBOT.format(leader="j1").replace('<joint name="j2" type="revolute">',
+                                                      '<joint name="j2" type="prismatic">')
+                    .replace('multiplier="2"', mimic))
+    extra = ("--out", str(tmp_path / "run")) if command[0] == "simulate" else ()
+    result = run_servicebot(command[0], path, *command[1:], *extra)
+    assert_one_line_error(result, 2, "joint 'j2' mimics 'j1' times", far)
+    assert not (tmp_path / "run").exists()
+
+
 def test_a_leader_that_is_there_still_drives_it(tmp_path):
     path = tmp_path / "r.urdf"
     path.write_text(ROBOT.format(leader="j1"))
