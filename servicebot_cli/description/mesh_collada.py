@@ -199,10 +199,52 @@ def _positions(mesh: ET.Element, ns: str) -> FloatArray:
     source_id = (position.get("source") or "").lstrip("#") if position is not None else ""
     source = sources.get(source_id)
     array = source.find(f"{ns}float_array") if source is not None else None
-    if array is None:
+    if source is None or array is None:
         raise MeshFormatError("COLLADA mesh without vertex positions")
     points = numbers(array.text)
-    return points[: len(points) - len(points) % 3].reshape(-1, 3)
+    return _accessed(source, array, points, ns)
+
+
+def _accessed(source: ET.Element, array: ET.Element, values: FloatArray, ns: str) -> FloatArray:
+    """The points a position ``source``'s accessor reads from its ``values``, as Assimp does.
+
+    Assimp (RViz, Gazebo and MoveIt read COLLADA through it) reads the ``count`` numbers a
+    ``<float_array>`` says it holds (refusing it where it holds fewer), and refuses a
+    source without an ``<accessor>`` and an accessor that reads past those numbers.
+
+    Raises:
+        MeshFormatError: Saying which, in Assimp's terms.
+    """
+    name = source.get("id") or "?"
+    written = _integer(array.get("count"))
+    if written is not None and written > len(values):
+        raise MeshFormatError(
+            f"COLLADA <float_array> of source '{name}' says count=\"{array.get('count')}\" and "
+            f"holds {len(values)} numbers, which Assimp (RViz, Gazebo, MoveIt) refuses")
+    if written is not None and written >= 0:
+        values = values[:written]
+    accessor = source.find(f"{ns}technique_common/{ns}accessor")
+    if accessor is None:
+        raise MeshFormatError(f"COLLADA source '{name}' has no <accessor>, without which Assimp "
+                              "(RViz, Gazebo, MoveIt) reads no positions")
+    count, stride = _integer(accessor.get("count")), _integer(accessor.get("stride")) or 1
+    offset = _integer(accessor.get("offset")) or 0
+    if count is None or count < 0 or stride < 3 or offset < 0:
+        return values[: len(values) - len(values) % 3].reshape(-1, 3)
+    if offset + count * stride > len(values):
+        raise MeshFormatError(
+            f"COLLADA accessor of source '{name}' reads {count} points of {stride} numbers "
+            f"where its array has {len(values)}, which Assimp (RViz, Gazebo, MoveIt) refuses")
+    points: FloatArray = values[offset: offset + count * stride].reshape(count, stride)[:, :3]
+    return points
+
+
+def _integer(text: str | None) -> int | None:
+    """An attribute's whole number; None where it is not written or is no integer."""
+    try:
+        return int(text) if text is not None else None
+    except ValueError:
+        return None
 
 
 def _geometry_triangles(geometry: ET.Element, ns: str) -> FloatArray:

@@ -23,7 +23,9 @@ ROBOT = """<robot name="r">
     <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
 </robot>
 """
-TETRA = ('<float_array id="pa" count="12">0 0 0 1 0 0 0 1 0 0 0 1</float_array></source>'
+TETRA = ('<float_array id="pa" count="12">0 0 0 1 0 0 0 1 0 0 0 1</float_array>'
+         '<technique_common><accessor source="#pa" count="4" stride="3"/></technique_common>'
+         '</source>'
          '<vertices id="v"><input semantic="POSITION" source="#p"/></vertices>')
 
 
@@ -48,6 +50,19 @@ CASES = {
                                "its XML declaration names an unknown encoding: klingon"),
     "a unit of inf metres": ("m.dae", _collada(unit="inf"),
                              "vertices with NaN or infinite coordinates"),
+    # Assimp (RViz, Gazebo, MoveIt; coal under ik) refuses these three; check passed them
+    "a float_array holding fewer numbers than its count": (
+        "m.dae", _collada().replace('count="12"', 'count="999"'),
+        "says count=\"999\" and holds 12 numbers, which Assimp (RViz, Gazebo, MoveIt) refuses"),
+    "a source without an accessor": (
+        "m.dae", _collada().replace('<technique_common><accessor source="#pa" count="4" '
+                                    'stride="3"/></technique_common>', ""),
+        "source 'p' has no <accessor>, without which Assimp (RViz, Gazebo, MoveIt) reads no "
+        "positions"),
+    "an accessor past its array's count": (
+        "m.dae", _collada().replace('count="12"', 'count="6"'),
+        "reads 4 points of 3 numbers where its array has 6, which Assimp (RViz, Gazebo, "
+        "MoveIt) refuses"),
     "an index beyond int64": ("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -1\n"
                                        "f 1 2 1180591620717411303424\n",
                               "a face refers to a vertex that does not exist"),
@@ -65,6 +80,16 @@ def test_a_broken_mesh_is_one_sb402(tmp_path, case):
     assert result.returncode == 1 and result.stderr == ""
     (found,) = findings(result.stdout)
     assert found["code"] == "SB402" and found["message"].endswith(why)
+
+
+def test_numbers_past_a_float_arrays_count_are_left_out_as_assimp_does(tmp_path):
+    """Assimp reads the count it is told; an accessor within it reads a tetrahedron."""
+    (tmp_path / "m.dae").write_text(_collada().replace(
+        "0 0 0 1 0 0 0 1 0 0 0 1</float_array>", "0 0 0 1 0 0 0 1 0 0 0 1 9 9 9</float_array>"))
+    robot = tmp_path / "robot.urdf"
+    robot.write_text(ROBOT.format(mass=1, mesh="m.dae"))
+    result = run_servicebot("check", robot, "--isolated", "--format", "json", "--select", "SB4")
+    assert result.returncode == 0 and findings(result.stdout) == []
 
 
 def test_what_is_no_mesh_file_is_named_for_what_it_is(tmp_path):

@@ -61,7 +61,8 @@ def test_an_entity_is_expanded_as_elementtree_does(tmp_path):
     text = ('<?xml version="1.0"?>\n<!DOCTYPE COLLADA [<!ENTITY corners "0 0 0 2 0 0 0 3 0">]>\n'
             '<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema"><library_geometries>'
             '<geometry id="g"><mesh><source id="p"><float_array id="a" count="9">&corners;'
-            '</float_array></source><vertices id="v"><input semantic="POSITION" source="#p"/>'
+            '</float_array><technique_common><accessor source="#a" count="3" stride="3"/>'
+            '</technique_common></source><vertices id="v"><input semantic="POSITION" source="#p"/>'
             '</vertices><triangles count="1"><input semantic="VERTEX" source="#v" offset="0"/>'
             '<p>0 1 2</p></triangles></mesh></geometry></library_geometries></COLLADA>')
     path = tmp_path / "entity.dae"

@@ -143,9 +143,12 @@ def test_broken_obj_files_are_mesh_errors(tmp_path, text):
 
 def _collada(meter: str) -> bytes:
     geometry = ('<geometry id="{0}"><mesh><source id="{0}-p"><float_array id="{0}-a" count="9">'
-                '{1}</float_array></source><vertices id="{0}-v"><input semantic="POSITION" '
-                'source="#{0}-p"/></vertices><triangles count="1"><input semantic="VERTEX" '
-                'source="#{0}-v" offset="0"/><p>0 1 2</p></triangles></mesh></geometry>')
+                '{1}</float_array><technique_common><accessor source="#{0}-a" count="3" '
+                'stride="3"><param name="X" type="float"/><param name="Y" type="float"/><param '
+                'name="Z" type="float"/></accessor></technique_common></source><vertices '
+                'id="{0}-v"><input semantic="POSITION" source="#{0}-p"/></vertices><triangles '
+                'count="1"><input semantic="VERTEX" source="#{0}-v" offset="0"/><p>0 1 2</p>'
+                '</triangles></mesh></geometry>')
     return (f'<?xml version="1.0"?><COLLADA xmlns="http://www.collada.org/2005/11/'
             f'COLLADASchema" version="1.4.1"><asset><unit meter="{meter}"/></asset>'
             '<library_geometries>' + geometry.format("a", "-0 0 0 1 0 0 0 2 0")
@@ -232,10 +235,7 @@ def _library_collada(scene_nodes: str, library: str) -> bytes:
         b'<library_visual_scenes><visual_scene id="s">',
         f'<library_nodes>{library}</library_nodes><library_visual_scenes>'
         '<visual_scene id="s">'.encode()).replace(nodes, scene_nodes.encode()).replace(
-        b"</COLLADA>", b'<scene><instance_visual_scene url="#s"/></scene></COLLADA>').replace(
-        b"</float_array></source>", b'</float_array><technique_common><accessor count="3" '
-        b'stride="3"><param name="X" type="float"/><param name="Y" type="float"/><param '
-        b'name="Z" type="float"/></accessor></technique_common></source>')
+        b"</COLLADA>", b'<scene><instance_visual_scene url="#s"/></scene></COLLADA>')
 
 
 def test_collada_library_nodes_are_placed_where_instance_node_puts_them(tmp_path):
