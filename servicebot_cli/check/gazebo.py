@@ -233,7 +233,7 @@ def _sensor_problems(sensor: Sensor) -> Iterator[str]:
     if sensor.type in specs.LIDAR_TYPES:
         yield from _lidar(sensor)
     elif sensor.type in specs.CAMERA_TYPES:
-        yield from _camera(specs.camera_spec(sensor))
+        yield from _camera(sensor, specs.camera_spec(sensor))
     elif sensor.type == "imu":
         imu = specs.imu_spec(sensor)
         for noise in (*imu.angular_velocity_noise, *imu.linear_acceleration_noise):
@@ -260,10 +260,12 @@ def _lidar(sensor: Sensor) -> Iterator[str]:
     yield from _noise(lidar.noise)
 
 
-def _camera(camera: specs.CameraSpec) -> Iterator[str]:
-    for label, value in (("width", camera.width_px), ("height", camera.height_px)):
-        if value is not None and value <= 0:
-            yield f"image {label} {value} px must be positive"
+def _camera(sensor: Sensor, camera: specs.CameraSpec) -> Iterator[str]:
+    for label in ("width", "height"):
+        text = param(sensor.params, f"camera/image/{label}")
+        count = specs.sdf_unsigned(text)  # camera.sdf: an unsigned int, as samples
+        if text is not None and not (count is not None and count > 0):
+            yield f"image {label} '{text.strip()}' must be a positive whole number"
     fov = camera.horizontal_fov_rad
     if fov is not None and math.isnan(fov):
         yield "horizontal_fov is not a number"

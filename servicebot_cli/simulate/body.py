@@ -82,7 +82,10 @@ class SimRobot:
             sensors), the one with the most rays first (the LIDAR), then in URDF order.
         imu, camera: Mounted sensors, None where the URDF has none.
         sensor_notes: A stderr note for each published sensor left out, and why: a ray
-            sensor it cannot cast, a second IMU or camera, a sensor on a link the robot lacks.
+            sensor it cannot cast, a camera it cannot image, a second IMU or camera, a
+            sensor on a link the robot lacks.
+        camera_left_out: Why the published camera is not simulated (camera images asked
+            for say so); None where it is, or there is none.
         disabled_pairs: Link pairs the self-contact check leaves out (an SRDF's
             ``<disable_collisions>``, as ``ik --srdf``).
         resolver: Finds the ``package://`` collision meshes (the shape's and the self-contact
@@ -99,6 +102,7 @@ class SimRobot:
     imu: Mounted[ImuSpec] | None
     camera: Mounted[CameraSpec] | None
     sensor_notes: tuple[str, ...] = ()
+    camera_left_out: str | None = None
     disabled_pairs: tuple[tuple[str, str], ...] = ()
     resolver: PackageResolver | None = None
 
@@ -148,6 +152,7 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
         return placements[link]
 
     rays, ray_notes = _castable_rays(robot)
+    camera, left_out = _imaged_camera(robot, placement)
     return SimRobot(
         robot=robot, geometry=geometry, joint_space=space,
         arm_joints=arm_joints,
@@ -155,8 +160,11 @@ def sim_robot(robot: RobotDescription, *, resolver: PackageResolver | None = Non
         shape=shape,
         ray_sensors=tuple(_placed(robot, sensor, spec, placement) for sensor, spec in rays),
         imu=_mount(robot, ("imu",), _published_imu, placement) or _model_imu(robot, placement),
-        camera=_mount(robot, CAMERA_TYPES, _published_camera, placement),
-        sensor_notes=(*_unplaced(robot), *ray_notes, *_beyond_the_first(robot)),
+        camera=camera,
+        sensor_notes=(*_unplaced(robot), *ray_notes,
+                      *((f"note: {left_out}; its topics are left out",) if left_out else ()),
+                      *_beyond_the_first(robot)),
+        camera_left_out=left_out,
         disabled_pairs=tuple(disabled_pairs),
         resolver=resolver,
     )
@@ -170,6 +178,25 @@ def _mount(robot: RobotDescription, types: tuple[str, ...],
     """
     found = next(_published(robot, types, read), None)
     return _placed(robot, *found, placement) if found else None
+
+
+def _imaged_camera(robot: RobotDescription, placement: Placement
+                   ) -> tuple[Mounted[CameraSpec] | None, str | None]:
+    """The first published camera, or why its image cannot be made.
+
+    Such a camera is left out, as a ray sensor the simulator cannot cast is.
+    """
+    mounted = _mount(robot, CAMERA_TYPES, _published_camera, placement)
+    if mounted is None:
+        return None, None
+    from servicebot_cli.simulate.sensors.camera_info import intrinsics
+
+    try:
+        intrinsics(mounted.spec)
+    except DescriptionError as exc:
+        return None, (f"camera '{mounted.name}' on {mounted.link} of {robot.display} is not "
+                      f"simulated: {exc}")
+    return mounted, None
 
 
 def _castable_rays(robot: RobotDescription

@@ -37,3 +37,24 @@ def test_samples_are_read_as_sdformat_reads_them(tmp_path, samples, read, refuse
     result = run_servicebot("check", "urdf", robot, "--isolated", "--format", "json",
                             "--select", "SB502")
     assert ("SB502" in {f["code"] for f in findings(result.stdout)}) == refused
+
+
+CAMERA = ROBOT.replace('type="ray"><update_rate>10</update_rate>', 'type="camera">').replace(
+    ROBOT[ROBOT.index("<ray>"):ROBOT.index("</ray>") + 6],
+    "<camera><horizontal_fov>1.0</horizontal_fov><image><width>{width}</width><height>480"
+    "</height></image></camera>").replace("libgazebo_ros_ray_sensor.so", "libgazebo_ros_camera.so")
+
+
+@pytest.mark.parametrize(("width", "said"), [
+    ("640", None), ("640.7", None),  # an unsigned int, read as samples are: its leading digits
+    ("wide", "image width 'wide' must be a positive whole number"),
+    ("0", "image width '0' must be a positive whole number"),
+    ("-640", "image width '-640' must be a positive whole number")])
+def test_a_camera_image_size_is_read_as_sdformat_reads_it(tmp_path, width, said):
+    """'wide' passed: the spec reader found no number and left the default."""
+    robot = tmp_path / "cam.urdf"
+    robot.write_text(CAMERA.format(width=width))
+    result = run_servicebot("check", "urdf", robot, "--isolated", "--format", "json",
+                            "--select", "SB502")
+    assert [f["message"].split(": ", 1)[1] for f in findings(result.stdout)] == (
+        [said] if said else [])

@@ -169,8 +169,10 @@ def _check_camera(body: SimRobot, scenario: Scenario) -> None:
 
 
 def _no_camera(body: SimRobot) -> str:
-    """Why a run has no camera: no camera sensor, or one that nothing publishes."""
+    """Why a run has no camera: none, one it cannot image, or one that nothing publishes."""
     robot = body.robot
+    if body.camera_left_out is not None:
+        return body.camera_left_out
     unpublished = next((s for s in robot.sensors if s.type in CAMERA_TYPES), None)
     if unpublished is None:
         return f"{robot.display} has no camera sensor"

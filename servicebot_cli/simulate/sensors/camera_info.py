@@ -57,10 +57,12 @@ def intrinsics(spec: CameraSpec) -> Intrinsics:
     height = SDF_HEIGHT_PX if spec.height_px is None else spec.height_px
     fov = SDF_HORIZONTAL_FOV_RAD if spec.horizontal_fov_rad is None else spec.horizontal_fov_rad
     if not (0 < width <= MAX_SIDE_PX and 0 < height <= MAX_SIDE_PX):
-        raise DescriptionError(f"camera image {width} x {height} px is not a size of 1 to "
-                               f"{MAX_SIDE_PX} px a side")
+        raise DescriptionError(f"its image, {width} x {height} px, is not 1 to "
+                               f"{MAX_SIDE_PX:,} px a side, as simulated images are")
     if not 0.0 < fov < math.pi:
-        raise DescriptionError(f"camera horizontal_fov {fov:g} rad is not in (0, pi)")
+        raise DescriptionError(
+            f"its horizontal_fov {fov:g} rad is not more than 0 and less than pi, as a "
+            "pinhole image's is (Gazebo's camera_info gets no positive focal length)")
     f = width / (2.0 * math.tan(fov / 2.0))
     cx, cy = principal_point(width, height, spec.centred)
     return Intrinsics(width, height,
