@@ -120,6 +120,14 @@ ROS_RULES = (
          "a ROS 2 plugin's <ros>; anything else (roslaunch's <remap from to>) does nothing, "
          "and the plugin keeps the names it would have without it.",
          "Write a remapping as <remapping>FROM:=TO</remapping>."),
+    Rule("SB519", "ros1-plugin-parameter", W,
+         "A ROS 1 parameter in a Gazebo plugin of a file whose plugins are ROS 2's",
+         "One Gazebo runs every plugin of a file; a <ros> block in one of them makes the file "
+         "ROS 2's gazebo_ros, whose plugins read none of gazebo_ros_pkgs' ROS 1 names "
+         "(<frameName>, <topicName>, <updateRate>): the value does nothing, and the plugin "
+         "keeps its default frame, topic or rate.",
+         "Write the ROS 2 name: <frame_name>, <camera_name>, a <ros><remapping> for a topic, "
+         "<ros><namespace> for the namespace."),
     Rule("SB601", "controllers-yaml", E, "The controllers YAML cannot be read",
          "Not YAML, or not the shape of a ros2_control parameters file "
          "(controller: ros__parameters: ...).",

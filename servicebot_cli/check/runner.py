@@ -177,6 +177,7 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
         inertia,
         joints,
         packages,
+        ros1_parameters,
         ros2_control,
         transmissions,
     )
@@ -213,6 +214,7 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
         (("SB50", "SB513", "SB518"), lambda: gazebo.check(robot)),
         (("SB5",), lambda: ros2_control.check(robot)),
         (("SB516",), lambda: drive_plugins.check(robot, env.mesh_points(robot))),
+        (("SB519",), lambda: ros1_parameters.check(robot)),
         (("SB511",), lambda: transmissions.check(robot)),
     ]
     for prefixes, family in families:

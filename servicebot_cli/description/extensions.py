@@ -7,6 +7,7 @@ plugins repeat tags (``<remapping>``, ``<joint_name>``).
 
 from __future__ import annotations
 
+import dataclasses
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 
@@ -73,6 +74,10 @@ class Plugin:
     filename: str
     params: Params
     element: ET.Element | None = field(default=None, compare=False, repr=False)
+    ros2_file: bool = field(default=False, compare=False)
+    """One of gazebo_plugins', in a file a plugin of which has a ``<ros>`` block: the file is
+    for ROS 2's gazebo_ros, whose plugins read no ROS 1 parameter (``frameName``), whatever
+    this one holds."""
 
 
 @dataclass(frozen=True)
@@ -183,6 +188,35 @@ def read_gazebo(element: ET.Element) -> GazeboBlock:
         else:
             properties.append((child.tag, (child.text or child.get("value") or "").strip()))
     return GazeboBlock(reference, sensors, plugins, tuple(properties), element)
+
+
+GAZEBO_ROS_PLUGINS = frozenset(f"libgazebo_ros_{name}.so" for name in (
+    "camera", "multi_camera", "depth_camera", "triggered_camera", "ray_sensor", "imu_sensor",
+    "imu", "diff_drive", "skid_steer_drive", "planar_move", "tricycle_drive", "ackermann_drive",
+    "joint_state_publisher", "joint_pose_trajectory", "p3d", "ft_sensor", "gps_sensor",
+    "bumper", "force", "hand_of_god", "harness", "projector", "vacuum_gripper", "video",
+    "elevator", "openni_kinect", "range", "laser", "block_laser", "gpu_laser"))
+"""gazebo_ros_pkgs' own plugins (gazebo_plugins), whose ROS 2 versions read no ROS 1 name;
+other packages' ROS 2 plugins may (velodyne_simulator's reads ``<frameName>``)."""
+
+
+def for_ros2_where_one_is(blocks: tuple[GazeboBlock, ...]) -> tuple[GazeboBlock, ...]:
+    """``blocks`` with gazebo_plugins' plugins marked ``ros2_file`` where one has ``<ros>``.
+
+    One install of Gazebo runs every plugin of the file: ROS 2's where one is written for it.
+    """
+    plugins = [p for b in blocks for p in (*b.plugins, *(q for s in b.sensors for q in s.plugins))]
+    if not any(key.startswith("ros/") for p in plugins for key, _ in p.params):
+        return blocks
+
+    def marked(found: tuple[Plugin, ...]) -> tuple[Plugin, ...]:
+        return tuple(dataclasses.replace(p, ros2_file=True) if p.filename in GAZEBO_ROS_PLUGINS
+                     else p for p in found)
+
+    return tuple(dataclasses.replace(
+        b, plugins=marked(b.plugins),
+        sensors=tuple(dataclasses.replace(s, plugins=marked(s.plugins)) for s in b.sensors))
+        for b in blocks)
 
 
 KEEP_APART = ("disableFixedJointLumping", "preserveFixedJoint")

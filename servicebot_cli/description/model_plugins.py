@@ -71,9 +71,12 @@ _ROS1_KEYS = frozenset((
 
 
 def ros1_plugin(plugin: Plugin) -> bool:
-    """Whether ``plugin`` is written for gazebo_ros_pkgs' ROS 1 plugins (no ``<ros>`` block)."""
-    return not any(key.startswith("ros/") for key, _ in plugin.params) and any(
-        key in _ROS1_KEYS for key, _ in plugin.params)
+    """Whether ``plugin`` is written for gazebo_ros_pkgs' ROS 1 plugins (no ``<ros>`` block).
+
+    Not in a file another plugin of which has a ``<ros>`` block: that file is for ROS 2.
+    """
+    return not plugin.ros2_file and not any(key.startswith("ros/") for key, _ in plugin.params) \
+        and any(key in _ROS1_KEYS for key, _ in plugin.params)
 
 
 def publishes_odometry(plugin: Plugin, default: bool = False) -> bool:

@@ -153,7 +153,8 @@ class RobotDescription:
     @cached_property
     def gazebo(self) -> tuple[ext.GazeboBlock, ...]:
         """Every top-level ``<gazebo>`` block."""
-        return tuple(ext.read_gazebo(e) for e in self.root.findall("gazebo"))
+        return ext.for_ros2_where_one_is(
+            tuple(ext.read_gazebo(e) for e in self.root.findall("gazebo")))
 
     @cached_property
     def sensors(self) -> tuple[ext.Sensor, ...]:

@@ -188,8 +188,8 @@ def _plus_plugin_noise(noise: NoiseSpec | None, plugin: Plugin | None) -> NoiseS
     every reading, on top of the sensor's own noise: the two standard deviations add in
     quadrature.
     """
-    if plugin is None or plugin.filename not in _GAUSSIAN_NOISE_PLUGINS or any(
-            key.startswith("ros/") for key, _ in plugin.params):  # ROS 2's read SDF noise only
+    if plugin is None or plugin.filename not in _GAUSSIAN_NOISE_PLUGINS or plugin.ros2_file \
+            or any(key.startswith("ros/") for key, _ in plugin.params):  # ROS 2's: SDF noise
         return noise
     sigma = parse_float(param(plugin.params, "gaussianNoise"))
     if sigma is None or not sigma > 0 or not math.isfinite(sigma):
@@ -203,6 +203,24 @@ _ROS1_KEYS = frozenset(("topicName", "frameName", "robotNamespace", "frame_name"
                         "camera_name", "imageTopicName", "cameraInfoTopicName", "output_type"))
 _GZ_FRAME_KEYS = ("ignition_frame_id", "gz_frame_id", "frame_id")
 """gz-sensors' frame tags, weakest first: Fortress's, Garden's, SDF 1.10's ``<frame_id>``."""
+
+
+ROS1_SENSOR_KEYS = frozenset(("frameName", "topicName", "robotNamespace", "bodyName",
+                              "cameraName", "imageTopicName", "cameraInfoTopicName",
+                              "gaussianNoise", "updateRateHZ"))
+"""Parameters only gazebo_ros_pkgs' ROS 1 sensor plugins read (their names for the names
+ROS 2's read otherwise)."""
+
+
+def ros1_param(plugin: Plugin, key: str) -> str | None:
+    """``plugin``'s parameter ``key``, unless it is a ROS 1 name in a file for ROS 2.
+
+    ROS 2's gazebo_plugins read none of ROS 1's names (``frameName``, ``cameraName``): in a
+    file whose plugins are ROS 2's, the ROS 1 ones are left as Gazebo leaves them.
+    """
+    if plugin.ros2_file and key in ROS1_SENSOR_KEYS:
+        return None
+    return param(plugin.params, key)
 
 
 def is_ros_plugin(plugin: Plugin) -> bool:
@@ -251,13 +269,13 @@ def plugin_topic(plugin: Plugin, default: str, ros1: str = "topicName", within: 
     """
     node = PluginNode.of(plugin)
     topic = node.remapped(default)
-    legacy = (param(plugin.params, ros1) or "").strip()
+    legacy = (ros1_param(plugin, ros1) or "").strip()
     if topic is None and legacy:
         topic = f"{within}/{legacy}" if within and not legacy.startswith("/") else legacy
         if topic.startswith("~/"):
             topic = f"{plugin.name}/{topic[2:]}"
         namespace = (param(plugin.params, "ros/namespace")
-                     or param(plugin.params, "robotNamespace") or "").strip("/")
+                     or ros1_param(plugin, "robotNamespace") or "").strip("/")
         full = f"{namespace}/{topic}" if namespace and not topic.startswith("/") else topic
         # roscpp cleans a name: '//' is one '/', a trailing '/' none (HSR's
         # '//hsrb/head_rgbd_sensor/...')
@@ -272,12 +290,6 @@ def plugin_topic(plugin: Plugin, default: str, ros1: str = "topicName", within: 
 _SENSOR_FRAME_ID = frozenset(("libgazebo_ros_ray_sensor.so", "libgazebo_ros_camera.so",
                               "libgazebo_ros_imu_sensor.so", "libgazebo_ros_gps_sensor.so"))
 """gazebo_plugins' ROS 2 sensor plugins that stamp ``gazebo_ros::SensorFrameID``."""
-_ROS1_SENSOR_KEYS = frozenset(("frameName", "topicName", "robotNamespace", "bodyName",
-                               "cameraName", "imageTopicName", "cameraInfoTopicName",
-                               "gaussianNoise", "updateRateHZ"))
-"""Parameters only gazebo_ros_pkgs' ROS 1 sensor plugins read."""
-
-
 def _frame(sensor: Sensor) -> str | None:
     """The frame its messages are stamped with.
 
@@ -286,12 +298,12 @@ def _frame(sensor: Sensor) -> str | None:
     sdformat lumped fixed joints away), not the link the URDF names.
     """
     plugin = ros_plugin(sensor)
-    named = next(filter(None, (param(plugin.params, key) for key in (
+    named = next(filter(None, (ros1_param(plugin, key) for key in (
         "frame_name", "frameName", "frame_id"))), None) if plugin else None
     if named:
         return named
-    if plugin is not None and plugin.filename in _SENSOR_FRAME_ID and not any(
-            key in _ROS1_SENSOR_KEYS for key, _ in plugin.params):
+    if plugin is not None and plugin.filename in _SENSOR_FRAME_ID and (plugin.ros2_file or not any(
+            key in ROS1_SENSOR_KEYS for key, _ in plugin.params)):
         return sensor.carrier
     gz_named = [param(sensor.params, key) for key in _GZ_FRAME_KEYS]
     return next((n for n in reversed(gz_named) if n), None) or sensor.reference
@@ -351,7 +363,7 @@ def camera_spec(sensor: Sensor) -> CameraSpec:
     depth: tuple[tuple[str, str], ...] = ()
     if plugin is not None:
         name = param(plugin.params, "camera_name") or sensor.name
-        name = param(plugin.params, "cameraName") or name
+        name = ros1_param(plugin, "cameraName") or name
         image_topic = plugin_topic(plugin, f"{name}/image_raw", "imageTopicName", name)
         info_topic = plugin_topic(plugin, f"{name}/camera_info", "cameraInfoTopicName", name)
         depth = _depth_topics(sensor, plugin, name)
@@ -362,7 +374,7 @@ def camera_spec(sensor: Sensor) -> CameraSpec:
         image_format=param(p, "camera/image/format"),
         near_clip_m=_float(p, "camera/clip/near"),
         far_clip_m=_float(p, "camera/clip/far"),
-        update_rate_hz=sensor.update_rate_hz,
+        update_rate_hz=_throttled(sensor.update_rate_hz, plugin),
         noise=_noise(p, "camera/noise"),
         frame=(_optical_frame(sensor) if plugin is None else None) or _frame(sensor),
         image_topic=image_topic,
@@ -370,6 +382,21 @@ def camera_spec(sensor: Sensor) -> CameraSpec:
         depth_topics=depth,
         centred=plugin is None,
     )
+
+
+def _throttled(rate_hz: float | None, plugin: Plugin | None) -> float | None:
+    """A camera's rate under a ROS 1 plugin's ``<updateRate>``, which throttles it further.
+
+    gazebo_ros_camera_utils (ROS 1) publishes a frame only once ``1/updateRate`` has passed
+    since the last (a sensor without a rate updates every step); 0 or less throttles nothing.
+    ROS 2's gazebo_ros_camera reads no ``<updateRate>``.
+    """
+    if plugin is None or plugin.ros2_file or any(k.startswith("ros/") for k, _ in plugin.params):
+        return rate_hz
+    throttle = parse_float(param(plugin.params, "updateRate"))
+    if throttle is None or not throttle > 0 or not math.isfinite(throttle):
+        return rate_hz
+    return throttle if rate_hz is None or not rate_hz > 0 else min(rate_hz, throttle)
 
 
 def _optical_frame(sensor: Sensor) -> str | None:

@@ -84,7 +84,8 @@ def sensor_info(sensor: Sensor) -> SensorInfo:
         cam = camera_spec(sensor)
         topics = _present((cam.image_topic, "sensor_msgs/msg/Image"),
                           (cam.info_topic, "sensor_msgs/msg/CameraInfo"), *cam.depth_topics)
-        return replace(base, kind="camera", frame=cam.frame, camera=cam, topics=topics)
+        return replace(base, kind="camera", frame=cam.frame, camera=cam, topics=topics,
+                       update_rate_hz=cam.update_rate_hz)  # a ROS 1 plugin's throttle
     if sensor.type == "imu":
         imu = imu_spec(sensor)
         topics = _present((imu.topic, "sensor_msgs/msg/Imu"))
