@@ -228,7 +228,22 @@ def _misplaced(sensor: Sensor) -> Iterator[str]:
                    f"runs {defaults}")
 
 
+_SDF_SENSOR_TYPES = frozenset((
+    "air_pressure", "air_speed", "altimeter", "boundingbox_camera", "camera", "contact",
+    "custom", "depth", "depth_camera", "dvl", "force_torque", "gps", "gpu_lidar", "gpu_ray",
+    "imu", "lidar", "logical_camera", "magnetometer", "multicamera", "navsat", "ray", "rfid",
+    "rfidtag", "rgbd", "rgbd_camera", "segmentation_camera", "sonar", "thermal",
+    "thermal_camera", "wideanglecamera", "wireless_receiver", "wireless_transceiver",
+    "wireless_transmitter"))
+"""sdformat's sensor types (sensor.sdf), each as Gazebo's sensor factories look it up."""
+
+
 def _sensor_problems(sensor: Sensor) -> Iterator[str]:
+    if sensor.element is not None and sensor.element.get("name") is None:
+        yield "a <sensor> without a name, which sdformat requires: Gazebo does not load it"
+    if sensor.type not in _SDF_SENSOR_TYPES and sensor.type.lower() in _SDF_SENSOR_TYPES:
+        yield (f"type '{sensor.type}': Gazebo looks sensor types up as written, in lower case "
+               f"('{sensor.type.lower()}'), and creates no sensor of this one")
     yield from _misplaced(sensor)
     if sensor.type in specs.LIDAR_TYPES:
         yield from _lidar(sensor)
@@ -252,10 +267,13 @@ def _lidar(sensor: Sensor) -> Iterator[str]:
     if low is not None and high is not None and not low < high and not single:
         yield f"min_angle {low:g} rad must be below max_angle {high:g} rad"
     near, far = lidar.min_range_m, lidar.max_range_m
-    if near is not None and not (near >= 0 if sensor.type in _CPU_RAYS else near > 0):
+    if near is not None and math.isnan(near):
+        yield "range min is not a number"
+    elif near is not None and not (near >= 0 if sensor.type in _CPU_RAYS else near > 0):
         yield (f"range min {near:g} m must not be negative" if sensor.type in _CPU_RAYS
                else f"range min {near:g} m must be positive")
-    if near is not None and far is not None and not near < far:
+    if near is not None and far is not None and not near < far \
+            and not (math.isnan(near) or math.isnan(far)):
         yield f"range min {near:g} m must be below range max {far:g} m"
     yield from _noise(lidar.noise)
 
