@@ -91,6 +91,13 @@ def _read(path: Path, data: bytes, suffix: str, with_mass: bool) -> MeshInfo:
     if suffix == ".obj":  # as Assimp reads it: RViz, Gazebo and MoveIt do
         return summarise_indexed(*mesh_readers.read_indexed(suffix, data, as_assimp=True),
                                  with_mass)
+    if suffix == ".ply":  # bounded, with what is wrong said as ik says it
+        from servicebot_cli.kinematics.mesh_ply import read_ply
+
+        return summarise_indexed(*read_ply(data), with_mass)
+    if not suffix:
+        raise MeshError("its name has no suffix (.stl, .dae, .obj), from which Assimp (RViz, "
+                        "Gazebo, MoveIt) takes a mesh's format")
     if suffix in mesh_readers.SUFFIXES:  # every triangle's corners, as summarise takes them
         triangles = mesh_readers.read_triangles(suffix, data)
     else:
@@ -122,7 +129,8 @@ def _with_trimesh(path: Path) -> np.ndarray:
         with captured():  # texture chatter: check reports geometry, with its own findings
             loaded = trimesh.load(path, force="mesh", process=False)
     except Exception as exc:  # trimesh raises anything from its many loaders
-        raise MeshError(f"trimesh cannot load it: {type(exc).__name__}: {exc}") from None
+        raise MeshError(f"it is no {path.suffix} mesh trimesh can read "
+                        f"({type(exc).__name__}: {exc})") from None
     if not hasattr(loaded, "triangles"):
         raise MeshError("trimesh found no triangles")
     return np.asarray(loaded.triangles, dtype=np.float64).reshape(-1, 3, 3)

@@ -63,6 +63,13 @@ CASES = {
         "m.dae", _collada().replace('count="12"', 'count="6"'),
         "reads 4 points of 3 numbers where its array has 6, which Assimp (RViz, Gazebo, "
         "MoveIt) refuses"),
+    # trimesh's exceptions were the message ("KeyError: 'y'"); ik's own reader says it
+    "a PLY whose header promises more than it holds": (
+        "m.ply", "ply\nformat ascii 1.0\nelement vertex 99\nproperty float x\nend_header\n"
+        "0\n", "the header declares 99 'vertex' elements, more than the file's 2 bytes hold"),
+    "a mesh named without a suffix": (
+        "mesh", "solid m\nendsolid m\n", "its name has no suffix (.stl, .dae, .obj), from "
+        "which Assimp (RViz, Gazebo, MoveIt) takes a mesh's format"),
     "an index beyond int64": ("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -1\n"
                                        "f 1 2 1180591620717411303424\n",
                               "a face refers to a vertex that does not exist"),
