@@ -32,6 +32,8 @@ BREAKS: dict[str, str] = {
     "SB113": "urdfdom refuses the colour and drops the material ('not defined in file'): "
              "RViz and Gazebo draw every link that uses it in their default colour",
     "SB014": _URDFDOM + "; Pinocchio and MuJoCo would compute with NaN",
+    "SB020": "MuJoCo's URDF import refuses the file ('repeated element'); urdfdom reads the "
+             "first and ignores the second",
     "SB019": "RViz and Gazebo hold poses in single precision: the link's place becomes "
              "infinity, and every pose computed from it after a rotation is NaN",
     "SB015": "consumers take minutes or run out of memory on such a file; servicebot refuses it",

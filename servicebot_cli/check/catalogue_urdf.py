@@ -91,7 +91,11 @@ URDF_RULES: tuple[Rule, ...] = (
          "<mimic>, <safety_controller> and <calibration>, a link's <inertial>, an "
          "inertial's <origin>, <mass> and <inertia>, a visual's or collision's <origin>, "
          "<geometry> and <material>, once: the first. A second one, meant as an override or "
-         "left from an edit, changes nothing, and is not judged further.",
+         "left from an edit, changes nothing, and is not judged further: a warning. Where "
+         "MuJoCo's URDF import refuses the file for it ('repeated element': a joint's "
+         "<origin>, <parent>, <child>, <axis>, <limit>, <dynamics> or <mimic>, a link's "
+         "<inertial> and what it holds, a collision's <origin> or <geometry>, a visual's "
+         "<material>), an error.",
          "Merge the two, or remove the one you do not mean."),
     Rule("SB019", "far-origin", E, "An origin farther than any robot reaches",
          "An <origin xyz> beyond 1e6 m (1,000 km) is a typo or a wrong unit; servicebot's "

@@ -110,10 +110,14 @@ def _element_tree(top: ET.Element, urdf_1_2: bool = False) -> Iterator[Issue]:
             if element.tag == "joint" and child.tag in _UNREAD.get(element.get("type", ""), ()):
                 continue  # urdfdom does not read it for this type: nothing to judge
             if child.tag in present and child.tag in once:
+                refused = child.tag in _MUJOCO_ONCE.get(element.tag, ())
                 yield Issue("SB020", f"<{element.tag}>{_named(element)} has a second "
                             f"<{child.tag}>: urdfdom, and Gazebo, Pinocchio and "
                             "robot_state_publisher through it, read the first and ignore this "
-                            "one", child, fix="merge the two, or remove the one you do not mean")
+                            "one" + ("; MuJoCo refuses the file ('repeated element')"
+                                     if refused else ""), child,
+                            fix="merge the two, or remove the one you do not mean",
+                            severity=Severity.ERROR if refused else None)
                 continue  # not read, so not judged
             present.add(child.tag)
             if child.tag in spec.children:
@@ -147,6 +151,15 @@ _READ_ONCE = {
     "material": ("color", "texture"),
 }
 """Children urdfdom reads once (its FirstChildElement): a second one is ignored (SB020)."""
+_MUJOCO_ONCE = {
+    "joint": ("origin", "parent", "child", "axis", "limit", "dynamics", "mimic"),
+    "link": ("inertial",),
+    "inertial": ("origin", "mass", "inertia"),
+    "visual": ("material",),
+    "collision": ("origin", "geometry"),
+}
+"""Of those, the ones MuJoCo's URDF import refuses twice ('repeated element'), as measured
+with MuJoCo 3; a visual's origin or geometry it does not read (it drops visuals)."""
 _FLOAT32_MAX = 3.4028234663852886e38  # past it, single-precision renderers hold infinity
 
 

@@ -1,7 +1,9 @@
-"""A second <origin>, <limit> or <mass> where urdfdom reads one: a warning, and not judged.
+"""A second <origin>, <limit> or <mass> where urdfdom reads one: not judged, and an error
+where MuJoCo refuses the file for it, else a warning.
 
 urdfdom takes the first (FirstChildElement); a user who adds a second as an override sees
-nothing change. pybullet's spirit40newer.urdf writes RL_lower_joint's <axis> twice.
+nothing change. MuJoCo's URDF import refuses most of them ('repeated element'): it passed
+as a warning. pybullet's spirit40newer.urdf writes RL_lower_joint's <axis> twice.
 """
 
 from __future__ import annotations
@@ -31,8 +33,29 @@ def test_the_second_is_named_and_the_first_is_what_loads(run, tmp_path):
     assert model.jointPlacements[1].translation[0] == 0.1  # the first origin
     assert model.inertias[1].mass == 2.0  # the first mass
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB0")
-    found = [(f["code"], f["line"]) for f in findings(result.stdout)]
-    assert found == [("SB020", 3), ("SB020", 7)]  # no SB013 for the mass nothing reads
+    found = [(f["code"], f["line"], f["severity"]) for f in findings(result.stdout)]
+    # no SB013 for the mass nothing reads
+    assert found == [("SB020", 3, "error"), ("SB020", 7, "error")]
+    assert all("MuJoCo refuses the file ('repeated element')" in f["message"]
+               for f in findings(result.stdout))
+    assert result.exit_code == 1
+
+
+def test_a_second_element_mujoco_takes_is_a_warning(run, tmp_path):
+    """MuJoCo drops visuals, and reads a joint's first <safety_controller> only."""
+    import mujoco
+
+    text = ROBOT.replace('<mass value="oops"/>', "").replace(
+        '<origin xyz="0.5 0 0"/>', '<safety_controller k_velocity="1"/><safety_controller '
+        'k_velocity="2"/>').replace('<link name="a"/>', '<link name="a"><visual><origin/>'
+                                    '<origin/><geometry><box size="1 1 1"/></geometry></visual>'
+                                    "</link>")
+    mujoco.MjModel.from_xml_string(text)  # loads
+    path = tmp_path / "r.urdf"
+    path.write_text(text)
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB020")
+    assert [(f["line"], f["severity"]) for f in findings(result.stdout)] == [
+        (2, "warning"), (7, "warning")]
     assert result.exit_code == 0
 
 
