@@ -34,7 +34,8 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     simulator = simulated_by(robot)
     placed = _placed_by_gazebo(robot)
     for joint in robot.joints:
-        if joint.type and joint.type not in JOINT_TYPES:
+        written = joint.element is not None and joint.element.get("type") is not None
+        if (joint.type or written) and joint.type not in JOINT_TYPES:  # type="" too
             advice = _ADVICE.get(joint.type.lower(), f"use one of: {', '.join(JOINT_TYPES)}")
             yield Issue("SB201", f"joint '{joint.name}' has type '{joint.type}', which URDF "
                         f"does not have; {advice}", joint.element)
@@ -260,9 +261,13 @@ def _mimics(robot: RobotDescription) -> Iterator[Issue]:
     follows: dict[str, str] = {}
     for joint in robot.joints:
         target = joint.mimic.joint if joint.mimic else None
-        if not target:
-            continue
-        if target == joint.name:
+        if target is None:
+            continue  # no joint attribute: SB012
+        if not target.strip():
+            yield Issue("SB209", f"joint '{joint.name}' has <mimic joint=\"{target}\">, which "
+                        "names no joint", joint.element,
+                        fix="name the joint it follows, or remove the <mimic>")
+        elif target == joint.name:
             yield Issue("SB210", f"joint '{joint.name}' mimics itself", joint.element)
         elif target not in names:
             others = [name for name in names if name != joint.name]  # not itself: SB210
