@@ -171,7 +171,9 @@ URDF_RULES: tuple[Rule, ...] = (
     Rule("SB109", "no-links", E, "The robot has no links",
          "A URDF needs at least one <link>.", "Add the robot's links."),
     Rule("SB110", "unnamed", E, "A link or joint without a name",
-         "Every link and joint needs a non-empty, unique name.", "Add a name attribute."),
+         "Every link and joint needs a non-empty, unique name: urdfdom refuses an empty one. "
+         "A name of blanks only urdfdom, Pinocchio and MuJoCo take, but nothing can name "
+         "it on a command line or in a TF lookup: a warning.", "Add a name attribute."),
     Rule("SB111", "duplicate-material", E, "Two top-level materials have the same name",
          "urdfdom refuses the file.", "Rename one material or remove the duplicate."),
     Rule("SB112", "undefined-material", W, "A material has no colour or texture and no definition",

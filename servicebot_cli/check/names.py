@@ -6,7 +6,7 @@ import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.findings import Issue, Severity
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -32,9 +32,15 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     for kind, code, items in (("link", "SB101", robot.links), ("joint", "SB102", robot.joints)):
         first: dict[str, ET.Element | None] = {}
         for item in items:
-            if not item.name.strip():
+            if not item.name:
                 yield Issue("SB110", f"a <{kind}> without a name", item.element,
                             fix=f'add name="..." to the <{kind}>')
+            elif not item.name.strip():  # urdfdom, Pinocchio and MuJoCo take it as a name
+                yield Issue("SB110", f"a <{kind}> named '{item.name}', only blanks: urdfdom "
+                            "takes it, but no command line, launch file or TF lookup can name "
+                            "it", item.element, fix=f'give the <{kind}> a name to type',
+                            severity=Severity.WARNING)
+                first[item.name] = item.element
             elif item.name in first:
                 yield Issue(code, f"{kind} '{item.name}' is defined twice (first at "
                             f"{robot.source_of(first[item.name])})", item.element,

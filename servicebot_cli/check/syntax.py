@@ -168,7 +168,7 @@ def _empty_links(joint: ET.Element) -> Iterator[Issue]:
     for end in ("parent", "child"):
         element = joint.find(end)
         link = element.get("link") if element is not None else None
-        if element is not None and link is not None and not link.strip():
+        if element is not None and link is not None and not link:  # " " names a link " "
             yield Issue("SB012", f"joint{_named(joint)} has <{end} link=\"{link}\">: it names no "
                         "link, and urdfdom refuses the joint", element,
                         fix=f"name the {end} link")

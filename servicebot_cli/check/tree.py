@@ -26,9 +26,8 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     edges: list[Joint] = []
     half_joined: set[str] = set()  # links a joint with a missing end names: SB103 says so
     for joint in robot.joints:
-        missing = [end for end in (joint.parent, joint.child)
-                   if end and end.strip() and end not in known]
-        unnamed = not (joint.parent or "").strip() or not (joint.child or "").strip()
+        missing = [end for end in (joint.parent, joint.child) if end and end not in known]
+        unnamed = not joint.parent or not joint.child  # a name of blanks is a name
         if missing or unnamed:  # an end unnamed: SB012 says so
             half_joined |= {end for end in (joint.parent, joint.child) if end in known}
         for name in missing:
