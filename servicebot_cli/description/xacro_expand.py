@@ -334,8 +334,16 @@ class _Tracer:
         return None if index is None else self.refs[index]
 
     def _said(self, *parts: object, sep: str | None = " ", **_: object) -> None:
-        """xacro.color's print: the text, and the element being processed."""
-        where = self.refs[self.current[-1]] if self.current else None
+        """xacro.color's print: the text, and the element being processed.
+
+        A directive whose attributes are being read at this depth (xacro:if, xacro:arg:
+        their parent is what is processed) is the element, as for an error.
+        """
+        reading = self.reading
+        if reading is not None and reading[1] == len(self.current):
+            where: SourceRef | None = self.refs[reading[0]]
+        else:
+            where = self.refs[self.current[-1]] if self.current else None
         self.said.append(((" " if sep is None else sep).join(map(str, parts)), where))
 
     def index_of(self, node: object) -> int | None:

@@ -157,3 +157,16 @@ def test_an_empty_expression_is_said_so(run, tmp_path):
                     "</geometry></visual></link>\n</robot>")
     (found,) = findings(run("check", "urdf", path, "--format", "json", "--isolated").stdout)
     assert found["message"] == "an empty expression ${}: write what it should compute"
+
+
+def test_a_directives_unknown_attribute_is_placed_at_the_directive(run, tmp_path):
+    """xacro:if, xacro:unless and xacro:arg are read while their parent is processed: their
+    warnings were placed at the parent (<robot>, 2:1, for a directive on line 5)."""
+    path = tmp_path / "r.urdf.xacro"
+    path.write_text(f'{HEAD}\n<link name="a">\n  <xacro:if value="1" foo="bar"/>\n</link>\n'
+                    '<xacro:arg name="g" default="1" yy="1"/>\n'
+                    '<xacro:unless value="0" qq="1"/>\n</robot>')
+    result = run("check", "urdf", path, "--format", "json", "--isolated", "--select", "SB017")
+    placed = {f["message"].split(": ")[0]: (f["line"], f["column"])
+              for f in findings(result.stdout)}
+    assert placed == {"xacro:if": (3, 3), "xacro:arg": (5, 1), "xacro:unless": (6, 1)}
