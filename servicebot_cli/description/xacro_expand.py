@@ -30,7 +30,7 @@ from xml.dom import expatbuilder
 from xml.parsers import expat
 
 from servicebot_cli.common.errors import DescriptionError, PackageNotFound, XacroError, XmlError
-from servicebot_cli.common.inputs import as_typed, open_binary
+from servicebot_cli.common.inputs import as_typed, not_a_file, open_binary
 from servicebot_cli.description.install_layout import included_when_installed, installed_source
 from servicebot_cli.description.load_warnings import LoadWarning, said_by_xacro
 from servicebot_cli.description.packages import PackageResolver
@@ -415,6 +415,10 @@ class _Tracer:
         path = os.path.join(xacro.root_dir, filename or "")  # mapped by abs_filename_spec
         _refuse_include_cycle(xacro.filestack, len(self.files), xacro.XacroException)
         data = self.top_data if not self.files else None
+        why = not_a_file(path) if data is None else None
+        if why is not None and why not in ("does not exist",) and not why.startswith("cannot"):
+            xacro.filestack.pop()  # a pipe or a device: no file to include
+            raise xacro.XacroException(f"cannot include '{filename}': it {why}")
         try:
             if data is None:
                 with open_binary(path) as handle:  # a device: read to the limit only; a

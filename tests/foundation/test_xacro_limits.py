@@ -33,8 +33,11 @@ CASES = {
     "repeat": (HEAD + "<link name=\"${'a' * 10**10}\"/>\n</robot>\n",
                ":3:1: xacro: repeating str of 1 items 10000000000 times"),
     "shift": (HEAD + '<link name="${1 &lt;&lt; 10**12}"/>\n</robot>\n', ":3:1: xacro: 1 << "),
-    "include": (HEAD + '<xacro:include filename="/dev/zero"/>\n<link name="a"/>\n</robot>\n',
-                ":3:1: xacro: '/dev/zero' holds over 32 MiB"),
+    "include": (HEAD + '<xacro:include filename="huge.xacro"/>\n<link name="a"/>\n</robot>\n',
+                ":3:1: xacro: 'huge.xacro' holds over 32 MiB"),
+    # a device is no file to include: it was read to the limit
+    "device": (HEAD + '<xacro:include filename="/dev/zero"/>\n<link name="a"/>\n</robot>\n',
+               ":3:1: xacro: cannot include '/dev/zero': it is a device, not a file"),
 }
 
 
@@ -47,6 +50,8 @@ def _memory_capped() -> None:
 def test_a_xacro_file_too_large_to_expand_is_one_line(tmp_path: Path, case: str) -> None:
     text, needle = CASES[case]
     (tmp_path / "bomb.urdf.xacro").write_text(text)
+    with (tmp_path / "huge.xacro").open("wb") as huge:  # sparse: 33 MiB that take no room
+        huge.truncate(33 << 20)
     result = run_servicebot("expand", "bomb.urdf.xacro", cwd=tmp_path, timeout=60,
                             preexec_fn=_memory_capped)
     assert_one_line_error(result, 2, "bomb.urdf.xacro" + needle)
