@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 from servicebot_cli.check import ros2_control_markup
 from servicebot_cli.check.findings import Issue, Severity
-from servicebot_cli.check.values import is_number
+from servicebot_cli.check.values import NUMBER, is_number
 from servicebot_cli.common.errors import JointNotFound
 from servicebot_cli.description.elements import parse_float
 
@@ -265,12 +265,16 @@ def _limit_texts(item: ControlJoint, interface: Interface) -> Iterator[Issue]:
     """
     for key in ("min", "max"):
         text = interface.get(key)
-        if text is None or is_number(text):
+        beyond = text is not None and NUMBER.fullmatch(text) is not None \
+            and math.isinf(float(text))  # 1e400: both readers fail on it (out of range)
+        if text is None or (is_number(text) and not beyond):
             continue
         element = _param_element(item, interface.name, key)
+        what = "is beyond a double's range" if beyond else "is not a number"
         yield Issue("SB512", f"joint '{item.name}' {interface.name} command interface: {key} "
-                    f"'{text}' is not a number; ros2_control skips the interface's limits",
-                    element if element is not None else item.element, fix=_number_fix(text))
+                    f"'{text}' {what}; ros2_control skips the interface's limits",
+                    element if element is not None else item.element,
+                    fix="write the limit, a finite number" if beyond else _number_fix(text))
 
 
 def _param_element(item: ControlJoint, interface: str, key: str) -> ET.Element | None:

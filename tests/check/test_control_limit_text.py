@@ -71,3 +71,12 @@ def test_an_interface_name_with_a_quote_is_no_internal_error(run, tmp_path):
     result = run("check", path, "--format", "json", "--isolated")
     assert result.exit_code == 0, result.stdout
     assert {f["code"] for f in findings(result.stdout)} >= {"SB505", "SB512"}
+
+
+@pytest.mark.parametrize("text", ["1e400", "-1e999"])
+def test_a_number_beyond_a_double_is_no_limit(run, tmp_path, text):
+    """Both of ros2_control's readers (istringstream, from_chars) fail out of range: 1e400
+    passed as a number."""
+    (found,) = _limit_texts(run, tmp_path, "-3", text)
+    assert f"max '{text}' is beyond a double's range" in found["message"]
+    assert found["fix"] == "write the limit, a finite number"
