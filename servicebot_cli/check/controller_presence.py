@@ -11,11 +11,12 @@ out.
 from __future__ import annotations
 
 import difflib
+import re
 from collections.abc import Iterator
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
-from servicebot_cli.check.controller_sections import Sections, at, get, type_nodes
+from servicebot_cli.check.controller_sections import Sections, at, get, substituted, type_nodes
 from servicebot_cli.check.findings import Issue, Severity
 
 _FORWARD = ("joints", "interface_name")  # (interface_name absent from a section: an error of
@@ -44,6 +45,16 @@ _OWN_RULE = {"forward_command_controller/ForwardCommandController": ("interface_
 """Needed parameters that another rule reports missing from a section, as an error."""
 
 
+_NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+"""A node name rcl takes (rmw_validate_node_name): what a controller may be called."""
+
+
+def _node_part(name: str) -> str:
+    """The last part of ``name`` that could name a node (``/ns/diff_controller``: its end)."""
+    parts = [p for p in re.split(r"[^A-Za-z0-9_]+", name) if p]
+    return parts[-1] if parts else "my_controller"
+
+
 def presence_issues(found: Sections, display: str) -> Iterator[Issue]:
     """SB608 for each misnamed section, and each declared controller left without parameters.
 
@@ -51,7 +62,16 @@ def presence_issues(found: Sections, display: str) -> Iterator[Issue]:
     controllers (a file of ``controller_manager`` alone may leave them to other files).
     """
     types = type_nodes(found)
-    without = [name for name in types if name not in found]
+    for name, node in types.items():
+        if not _NODE_NAME.fullmatch(name) and not substituted(name):
+            yield Issue("SB608", f"controller_manager declares '{name}': a controller's name is "
+                        "its node's, which rclcpp refuses unless it is letters, digits and '_' "
+                        "(not a digit first), so the controller manager cannot load it",
+                        where=at(display, node.start_mark),
+                        fix=f"declare it as '{_node_part(name)}': it runs in the controller "
+                            "manager's namespace")
+    without = [name for name in types if name not in found
+               and (_NODE_NAME.fullmatch(name) or substituted(name))]
     stray = [name for name in found if name != "controller_manager" and name not in types]
     renamed: dict[str, str] = {}
     for name in stray:

@@ -67,3 +67,26 @@ def test_a_type_in_the_controllers_own_section_is_its_type(run, tmp_path):
             "    type: velocity_controllers/JointGroupVelocityController\n"
             "    joints: [left_wheel_joint]\n")
     assert [m for _, m, _ in _sb608(run, tmp_path, more=more) if "without a type" in m] == []
+
+
+@pytest.mark.parametrize("name", ["/ns/diff_controller", "diff-controller", "2nd_arm"])
+def test_a_controller_name_no_node_can_have(run, tmp_path, name):
+    """A controller's name is its node's: rclcpp refuses '/ns/diff_controller'. check said
+    to rename its section to the name it already had."""
+    text = (f"controller_manager:\n  ros__parameters:\n    update_rate: 100\n    '{name}':\n"
+            "      type: joint_state_broadcaster/JointStateBroadcaster\n")
+    found = _sb608(run, tmp_path, more="")  # the base file passes
+    assert found == []
+    _, issues = check_controllers(run, tmp_path, text)
+    ((severity, message, fix),) = [(f["severity"], f["message"], f["fix"]) for f in issues]
+    assert severity == "error" and f"controller_manager declares '{name}': a controller's " \
+        "name is its node's" in message
+    assert fix.startswith("declare it as '")
+
+
+def test_a_name_a_launch_file_fills_in_is_left_to_it(run, tmp_path):
+    text = ("controller_manager:\n  ros__parameters:\n    update_rate: 100\n"
+            "    $(var prefix)broadcaster:\n"
+            "      type: joint_state_broadcaster/JointStateBroadcaster\n")
+    _, issues = check_controllers(run, tmp_path, text)
+    assert [f for f in issues if "node's" in f["message"]] == []
