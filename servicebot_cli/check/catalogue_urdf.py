@@ -213,7 +213,9 @@ URDF_RULES: tuple[Rule, ...] = (
          "The joint cannot move (check_urdf accepts it; some tools read 0/0 as no limits).",
          "Make it fixed, or give it its real range."),
     Rule("SB205", "negative-effort-velocity", E, "A negative effort or velocity limit",
-         "Effort and velocity limits are magnitudes; a negative one forbids any motion.",
+         "Effort and velocity limits are magnitudes; a negative one forbids any motion. URDF "
+         "1.2's acceleration, deceleration and jerk limits too: urdfdom refuses a negative "
+         "one, and the joint with it.",
          "Write the magnitude."),
     Rule("SB206", "zero-effort-velocity", W, "A zero effort or velocity limit on a moving joint",
          "Planners and controllers that enforce a velocity limit of 0 never move the joint; a "

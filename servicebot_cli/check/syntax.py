@@ -295,6 +295,14 @@ def _limit_attributes(element: ET.Element, allowed: dict[str, int], required: tu
     """
     if urdf_1_2:
         yield from _attributes(element, {**allowed, **_FROM_1_2}, required)
+        for key in _FROM_1_2:
+            text = (element.get(key) or "").strip()
+            if NUMBER.fullmatch(text) is None:
+                continue  # not written, or no number (SB013 above)
+            if float(text) < 0:  # urdfdom: "deceleration value (-2) is negative": no joint
+                yield Issue("SB205", f"<limit {key}=\"{text}\">: a negative limit, which urdfdom "
+                            "refuses (the joint, and so the file, fails to load)", element,
+                            fix=f"{key}=\"{text.lstrip('-')}\"")
         return
     newer = [key for key in element.attrib if key in _FROM_1_2]
     if newer:

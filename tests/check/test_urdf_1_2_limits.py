@@ -43,3 +43,17 @@ def test_an_older_file_is_told_they_are_ignored_for_its_version(run, tmp_path, v
     ((code, message),) = _sb011(run, path)
     assert code == "SB011"
     assert "'acceleration', 'jerk': urdfdom reads them only from URDF 1.2 on" in message
+
+
+@pytest.mark.parametrize(("version", "expected"), [(' version="1.2"', ["SB205"]), ("", [])])
+def test_a_negative_1_2_limit_is_sb205_where_urdfdom_reads_it(run, tmp_path, version, expected):
+    """urdfdom: 'deceleration value (-2) is negative', and the joint fails: it was SB701 at
+    <robot>, with 'Fix what the message says', and nothing at all beside another error."""
+    path = _robot(tmp_path, version, 'deceleration="-2"')
+    result = run("check", "urdf", path, "--format", "json", "--isolated", "--select", "SB2")
+    found = [(f["code"], f["message"], f["fix"]) for f in findings(result.stdout)]
+    assert [code for code, _, _ in found] == expected
+    if expected:
+        assert found[0][1] == ('<limit deceleration="-2">: a negative limit, which urdfdom '
+                               "refuses (the joint, and so the file, fails to load)")
+        assert found[0][2] == 'deceleration="2"'
