@@ -221,6 +221,7 @@ def _accessed(source: ET.Element, array: ET.Element, values: FloatArray, ns: str
         raise MeshFormatError(
             f"COLLADA <float_array> of source '{name}' says count=\"{array.get('count')}\" and "
             f"holds {len(values)} numbers, which Assimp (RViz, Gazebo, MoveIt) refuses")
+    held = len(values)
     if written is not None and written >= 0:
         values = values[:written]
     accessor = source.find(f"{ns}technique_common/{ns}accessor")
@@ -232,9 +233,13 @@ def _accessed(source: ET.Element, array: ET.Element, values: FloatArray, ns: str
     if count is None or count < 0 or stride < 3 or offset < 0:
         return values[: len(values) - len(values) % 3].reshape(-1, 3)
     if offset + count * stride > len(values):
+        told = (f", though it holds {held}: Assimp reads the count it is told"
+                if held > len(values) else "")
         raise MeshFormatError(
             f"COLLADA accessor of source '{name}' reads {count} points of {stride} numbers "
-            f"where its array has {len(values)}, which Assimp (RViz, Gazebo, MoveIt) refuses")
+            f"({offset + count * stride}) where its <float_array> says count="
+            f"\"{len(values)}\"{told}; Assimp (RViz, Gazebo, MoveIt) refuses it ('Not enough "
+            "data for accessor')")
     points: FloatArray = values[offset: offset + count * stride].reshape(count, stride)[:, :3]
     return points
 

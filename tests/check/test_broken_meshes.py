@@ -61,8 +61,9 @@ CASES = {
         "positions"),
     "an accessor past its array's count": (
         "m.dae", _collada().replace('count="12"', 'count="6"'),
-        "reads 4 points of 3 numbers where its array has 6, which Assimp (RViz, Gazebo, "
-        "MoveIt) refuses"),
+        "reads 4 points of 3 numbers (12) where its <float_array> says count=\"6\", though it "
+        "holds 12: Assimp reads the count it is told; Assimp (RViz, Gazebo, MoveIt) refuses "
+        "it ('Not enough data for accessor')"),
     # trimesh's exceptions were the message ("KeyError: 'y'"); ik's own reader says it
     "a PLY whose header promises more than it holds": (
         "m.ply", "ply\nformat ascii 1.0\nelement vertex 99\nproperty float x\nend_header\n"
