@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 from servicebot_cli.common.errors import DescriptionError, JointNotFound, OutOfLimits
 
 if TYPE_CHECKING:
+    from servicebot_cli.description.packages import PackageResolver
     from servicebot_cli.description.robot import RobotDescription
     from servicebot_cli.kinematics.drive_geometry import DriveGeometry
 
@@ -125,17 +126,20 @@ class MotorMap:
         return tuple(targets)
 
 
-def motor_map(robot: RobotDescription) -> MotorMap:
+def motor_map(robot: RobotDescription, resolver: PackageResolver | None = None) -> MotorMap:
     """The wheel and arm motors of ``robot`` with their URDF limits.
+
+    ``resolver`` finds wheel meshes (``--package``), where the wheels are drawn as meshes.
 
     Raises:
         DescriptionError: Not a differential drive (steered wheels too), or a wheel without a
             velocity limit.
     """
     from servicebot_cli.kinematics.drive_geometry import drive_geometry
+    from servicebot_cli.kinematics.mesh_wheels import file_points
     from servicebot_cli.kinematics.steering import refuse_steered_wheels
 
-    geometry = drive_geometry(robot)
+    geometry = drive_geometry(robot, file_points(resolver, robot.path.parent))
     refuse_steered_wheels(robot)
     wheels = geometry.wheels
     unlimited = [w.joint for w in wheels if not math.isfinite(w.velocity_limit_rad_s)]

@@ -56,7 +56,7 @@ def drive(request: DriveRequest, *, log: Callable[[str], None],
 
     robot = load(request.robot)
     try:
-        motors = motor_map(robot).capped(request.max_wheel_rad_s)
+        motors = motor_map(robot, request.robot.resolver()).capped(request.max_wheel_rad_s)
     except OutOfLimits as exc:
         raise BadOption("--max-speed", str(exc)) from None
     link = make_link(request.protocol, motors, request.arduino)

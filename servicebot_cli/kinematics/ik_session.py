@@ -28,6 +28,7 @@ from servicebot_cli.kinematics.ik_outcome import IkOutcome, outcome_values
 from servicebot_cli.kinematics.ik_problem import CollisionOptions, IkProblem
 from servicebot_cli.kinematics.inverse import IkSolver, IkTarget
 from servicebot_cli.kinematics.json_types import JsonObject
+from servicebot_cli.kinematics.mesh_wheels import no_points
 from servicebot_cli.kinematics.mimics import Mimics
 from servicebot_cli.kinematics.series import series_search, solve_leading
 from servicebot_cli.kinematics.srdf import robot_disabled_pairs
@@ -203,7 +204,7 @@ def is_mobile(robot: RobotDescription) -> bool:
     below its base plane.
     """
     try:
-        drive_geometry(robot)
+        drive_geometry(robot, no_points)  # whether it has wheels, not where: no mesh read
     except DescriptionError:
         return False
     return True

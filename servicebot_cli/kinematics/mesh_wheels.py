@@ -100,10 +100,11 @@ def file_points(resolver: PackageResolver | None, base_dir: Path) -> MeshPoints:
 
 def read_vertices(path: Path) -> FloatArray | None:
     """The vertices of the mesh file ``path`` (STL, OBJ, COLLADA); None if unreadable."""
+    from servicebot_cli.common.inputs import not_a_file
     from servicebot_cli.description import mesh_readers
 
-    if path.suffix.lower() not in mesh_readers.SUFFIXES:
-        return None
+    if path.suffix.lower() not in mesh_readers.SUFFIXES or not_a_file(path) is not None:
+        return None  # a pipe would block, a device read without end
     try:
         data = mesh_readers.read_file(path)
         with np.errstate(all="ignore"):

@@ -92,3 +92,40 @@ def test_a_controllers_wheel_radius_is_the_meshes(run, tmp_path, radius_m, expec
     path.write_text(path.read_text().replace("diff_drive.so", "diff_drive_off.so"))
     _, found = check_controllers(run, tmp_path, controllers, path)
     assert [f["code"] for f in found] == expected
+
+
+def test_a_wheel_mesh_that_is_a_pipe_or_a_device_is_no_wheel_mesh(run, tmp_path):
+    """simulate read it to its end: a named pipe blocked for ever, /dev/zero until memory
+    ran out. Neither is a mesh file: the wheels stand at their joints."""
+    import os
+
+    path = _robot(tmp_path)
+    (tmp_path / "wheel_left.stl").unlink()
+    os.mkfifo(tmp_path / "wheel_left.stl")
+    (tmp_path / "wheel_right.stl").unlink()
+    (tmp_path / "wheel_right.stl").symlink_to("/dev/zero")
+    from tests.conftest import run_servicebot
+
+    result = run_servicebot("simulate", path, "--headless", "--duration-s", "0.2", timeout=60)
+    assert result.returncode in (0, 2) and "Traceback" not in result.stderr, result.stderr
+    result = run_servicebot("inspect", path, "--section", "totals", timeout=60)
+    assert result.returncode == 0 and "track (wheel separation)  0.14 m" in result.stdout
+
+
+def test_drive_finds_wheel_meshes_in_the_packages_it_is_given(tmp_path):
+    """drive took the environment's packages for mesh wheels, not --package: its wheel
+    radius was the plugin's where simulate's was the mesh's."""
+    from servicebot_cli.description.loader import RobotSource, load
+    from servicebot_cli.drive.motors import motor_map
+
+    package = tmp_path / "elsewhere"  # found by --package only: no package.xml, another name
+    package.mkdir()
+    path = _robot(tmp_path, diameter_m=0.2)
+    for side in ("left", "right"):
+        (tmp_path / f"wheel_{side}.stl").rename(package / f"wheel_{side}.stl")
+    path.write_text(path.read_text().replace('filename="wheel_', 'filename="package://'
+                                             'meshes_pkg/wheel_'))
+    source = RobotSource(path, str(path), packages=(("meshes_pkg", str(package)),))
+    motors = motor_map(load(source), source.resolver())
+    assert motors.geometry.wheel_radius_m == pytest.approx(RADIUS_M, abs=1e-6)
+    assert motor_map(load(source)).geometry.wheel_radius_m == pytest.approx(0.1)

@@ -135,7 +135,7 @@ def build_emulator(request: EmulateRequest, log: Callable[[str], None]) -> PtyEm
     from servicebot_cli.drive.motors import motor_map
 
     robot = load(request.robot)
-    motors = motor_map(robot)
+    motors = motor_map(robot, request.robot.resolver())
     baud = request.baud or serial_defaults(robot)[1] or 9600
     start_s = time.monotonic()
     stall = request.faults.stall_after_s
