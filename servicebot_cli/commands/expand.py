@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import click
 
 from servicebot_cli.commands.command import Command
@@ -13,12 +15,16 @@ from servicebot_cli.commands.options import (
     robot_arguments,
 )
 
+if TYPE_CHECKING:
+    from servicebot_cli.description.load_warnings import Said
+
 URDF_SUFFIXES = (".urdf", ".xml")
 """What ``-o`` may be called: ``robot.urdf``, ``robot.urdf.xml`` (as the bundled ones), ``.xml``."""
 
 
-_SAID = {"warning": ("warning: ", ""), "error": ("warning: ", "the file's xacro.error(): "),
-         "message": ("", "")}
+_SAID: dict[Said, tuple[str, str]] = {
+    "warning": ("warning: ", ""), "error": ("warning: ", "the file's xacro.error(): "),
+    "message": ("", ""), "package": ("warning: ", "")}
 """How each kind of thing xacro printed is shown, before and after its place: a file's
 messages as they are."""
 

@@ -178,8 +178,8 @@ def read_description(source: RobotSource, max_bytes: int = MAX_BYTES) -> RobotDe
     try:
         expansion = expand(source.path, dict(source.xacro_args), source.resolver(), data)
     except PackageNotFound as exc:
-        if not _finds_outside_geometry(source.path, data):
-            raise
+        if source.xacro_args or not _finds_outside_geometry(source.path, data):
+            raise  # arguments given: the user means it expanded
         return _as_written(source, data, max_bytes, str(exc))
     document = parse_xml(expansion.xml_text.encode("utf-8"), source.display, max_bytes=max_bytes)
     for element, origin in zip(document.root.iter(), expansion.origins, strict=True):

@@ -186,3 +186,23 @@ def test_a_package_nowhere_in_a_mesh_name_still_stops_the_expansion(run, tmp_pat
     assert [code for code, _ in found] == ["SB007"], found
     assert "arm_description" in found[0][1] and "read as written" not in found[0][1]
     assert run("fk", path, "-j", "joint_1=0.5").exit_code == 2
+
+
+def test_expand_shows_the_package_warning_of_a_urdf_read_as_written(run, tmp_path):
+    """expand stopped with an internal error (KeyError: 'package') on it."""
+    path = tmp_path / "jaka_zu7.urdf"
+    path.write_text(JAKA_LIKE)
+    result = run("expand", path)
+    assert result.exit_code == 0, result.output
+    assert result.stderr.startswith("warning: ") and "$(find ...) read as written" in result.stderr
+    assert '<robot name="arm">' in result.stdout
+
+
+def test_xacro_arguments_mean_the_file_is_expanded(run, tmp_path):
+    """Arguments given: the user means xacro to expand it, and the package is missing."""
+    path = tmp_path / "jaka_zu7.urdf"
+    path.write_text(JAKA_LIKE)
+    result = run("check", path, "a:=1", "--format", "json", "--isolated", "--ignore", "SB309")
+    found = [(f["code"], f["message"]) for f in findings(result.stdout)]
+    assert [code for code, _ in found] == ["SB007"]
+    assert "read as written" not in found[0][1]
