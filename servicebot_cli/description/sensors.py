@@ -212,13 +212,17 @@ ROS1_SENSOR_KEYS = frozenset(("frameName", "topicName", "robotNamespace", "bodyN
 ROS 2's read otherwise)."""
 
 
+_ROS1_NAMES = ROS1_SENSOR_KEYS | {"commandTopic", "odometryTopic"}
+"""ROS 1 names read through :func:`ros1_param`: the sensor plugins', and the drives' topics."""
+
+
 def ros1_param(plugin: Plugin, key: str) -> str | None:
     """``plugin``'s parameter ``key``, unless it is a ROS 1 name in a file for ROS 2.
 
     ROS 2's gazebo_plugins read none of ROS 1's names (``frameName``, ``cameraName``): in a
     file whose plugins are ROS 2's, the ROS 1 ones are left as Gazebo leaves them.
     """
-    if plugin.ros2_file and key in ROS1_SENSOR_KEYS:
+    if plugin.ros2_file and key in _ROS1_NAMES:
         return None
     return param(plugin.params, key)
 

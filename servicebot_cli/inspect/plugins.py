@@ -21,12 +21,15 @@ class PluginInfo:
 
     Attributes:
         attached_to: ``model`` for a model-level plugin, ``sensor NAME`` inside a sensor.
+        ros2_file: One of gazebo_plugins' in a file for ROS 2 (see
+            :class:`~servicebot_cli.description.extensions.Plugin`): it reads no ROS 1 name.
     """
 
     name: str
     filename: str
     attached_to: str
     params: tuple[Param, ...]
+    ros2_file: bool = False
 
 
 @dataclass(frozen=True)
@@ -61,7 +64,8 @@ def _params(pairs: tuple[tuple[str, str], ...]) -> tuple[Param, ...]:
 
 
 def _plugin(plugin: Plugin, attached_to: str) -> PluginInfo:
-    return PluginInfo(plugin.name, plugin.filename, attached_to, _params(plugin.params))
+    return PluginInfo(plugin.name, plugin.filename, attached_to, _params(plugin.params),
+                      plugin.ros2_file)
 
 
 def plugins_info(gazebo: tuple[GazeboBlock, ...], sensors: tuple[Sensor, ...],

@@ -179,7 +179,8 @@ def _model_plugins(plugins: tuple[PluginInfo, ...]) -> Iterator[tuple[PluginInfo
     for info in plugins:
         if info.attached_to == "model":
             yield info, Plugin(info.name, info.filename,
-                               tuple((p.name, p.value) for p in info.params))
+                               tuple((p.name, p.value) for p in info.params),
+                               ros2_file=info.ros2_file)
 
 
 def topics_info(sensors: tuple[SensorInfo, ...], hardware: tuple[HardwareInfo, ...],

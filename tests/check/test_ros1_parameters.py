@@ -108,3 +108,19 @@ def test_a_ros1_cameras_update_rate_throttles_it(tmp_path, ros, written, expecte
     messages = bag_messages(path, tmp_path)
     (info,) = [topic for topic in messages if topic.endswith("/camera_info")]
     assert len(messages[info]) == pytest.approx(2 * expected_hz, abs=1)  # 2 s
+
+
+def test_inspect_lists_the_topics_a_ros2_drive_uses(tmp_path):
+    """inspect rebuilt the plugins it lists without the file's ROS 2 mark: it said the
+    drive listened on <commandTopic> and published <odometryTopic>, which ROS 2's plugin
+    does not read (check: SB519; simulate published no odometry)."""
+    path = _robot(tmp_path, "")
+    path.write_text(path.read_text().replace(
+        "<left_joint>", "<commandTopic>cmd1</commandTopic><odometryTopic>odom1</odometryTopic>"
+        "<left_joint>").replace("<plugin name=\"cam\" filename=\"libgazebo_ros_camera.so\">",
+                                "<plugin name=\"cam\" filename=\"libgazebo_ros_camera.so\">"
+                                "<ros><namespace>x</namespace></ros>"))
+    result = run_servicebot("inspect", path, "--section", "topics", "--format", "json")
+    assert result.returncode == 0, result.stderr
+    names = {topic["name"] for topic in json.loads(result.stdout)["topics"]["topics"]}
+    assert "/cmd_vel" in names and not names & {"/cmd1", "/odom1", "cmd1", "odom1"}
