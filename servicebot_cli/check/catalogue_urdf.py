@@ -95,7 +95,7 @@ URDF_RULES: tuple[Rule, ...] = (
          "MuJoCo's URDF import refuses the file for it ('repeated element': a joint's "
          "<origin>, <parent>, <child>, <axis>, <limit>, <dynamics> or <mimic>, a link's "
          "<inertial> and what it holds, a collision's <origin> or <geometry>, a visual's "
-         "<material>), an error.",
+         "<material>, a material's <color>), an error.",
          "Merge the two, or remove the one you do not mean."),
     Rule("SB019", "far-origin", E, "An origin farther than any robot reaches",
          "An <origin xyz> beyond 1e6 m (1,000 km) is a typo or a wrong unit; servicebot's "

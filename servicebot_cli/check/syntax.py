@@ -157,6 +157,7 @@ _MUJOCO_ONCE = {
     "inertial": ("origin", "mass", "inertia"),
     "visual": ("material",),
     "collision": ("origin", "geometry"),
+    "material": ("color",),
 }
 """Of those, the ones MuJoCo's URDF import refuses twice ('repeated element'), as measured
 with MuJoCo 3; a visual's origin or geometry it does not read (it drops visuals)."""

@@ -66,3 +66,12 @@ def test_pybullets_doubled_axis_is_found(run):
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB020")
     (found,) = findings(result.stdout)
     assert found["line"] == 550 and "'RL_lower_joint' has a second <axis>" in found["message"]
+
+
+def test_a_materials_second_color_is_an_error(run, tmp_path):
+    """MuJoCo refuses it ('repeated element: color'); a second <texture> it takes."""
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r"><material name="m"><color rgba="1 0 0 1"/><color '
+                    'rgba="0 1 0 1"/></material><link name="a"/></robot>')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB020")
+    assert [f["severity"] for f in findings(result.stdout)] == ["error"]
