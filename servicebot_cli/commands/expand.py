@@ -36,8 +36,10 @@ messages as they are."""
               default="-", metavar="FILE.urdf",
               help="Write the URDF here (.urdf or .xml, atomically) instead of to stdout; "
               "missing directories are created, as xacro -o does.")
+@click.option("--inorder", "-i", "inorder", is_flag=True, hidden=True,
+              help="xacro's --inorder, the default since ROS Melodic: accepted, with a note.")
 @click.pass_context
-def expand(ctx: click.Context, robot_args: RobotArgs, output: str) -> None:
+def expand(ctx: click.Context, robot_args: RobotArgs, output: str, inorder: bool) -> None:
     """Expand a xacro file into URDF.
 
     Without FILE, expands the bundled robot's xacro source into exactly the bundled
@@ -53,6 +55,9 @@ def expand(ctx: click.Context, robot_args: RobotArgs, output: str) -> None:
     from servicebot_cli.description.loader import RobotSource, read_description
     from servicebot_cli.description.resources import DEFAULT_ROBOT, XACRO_SOURCE, bundled_file
 
+    if inorder:  # old launch files and Makefiles still pass it to xacro, which takes it
+        click.echo("note: in-order processing is xacro's only one since ROS Melodic: "
+                   "--inorder can be dropped", err=True)
     refuse_without(ctx, "--package", "a xacro FILE", name="packages",
                    present=bool(robot_args.files))
     refuse_overwriting(output, robot_args.files)

@@ -431,3 +431,14 @@ def test_a_name_xacro_makes_that_is_no_xml_name_is_refused_where_it_is_made(run,
     source.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link '
                       f'name="a"/>\n{body}</robot>\n')
     assert_one_line_error(run("expand", source), 2, says)
+
+
+@pytest.mark.parametrize("flag", ["--inorder", "-i"])
+def test_xacros_inorder_flag_is_taken_with_a_note(run, flag):
+    """Melodic-era launch files and Makefiles call 'xacro --inorder', which xacro still
+    takes; expand refused it ('No such option'). The URDF is the same."""
+    plain = run("expand")
+    result = run("expand", flag)
+    assert result.exit_code == 0 and result.stdout == plain.stdout
+    assert result.stderr == ("note: in-order processing is xacro's only one since ROS "
+                             "Melodic: --inorder can be dropped\n")
