@@ -84,6 +84,8 @@ class Issue:
         severity: This occurrence's severity when the settings do not set the rule's, for
             rules whose weight depends on the file (SB303 is an error only in a description
             meant for a simulator); None for the catalogue's.
+        attribute: The attribute of ``element`` it is about: placed at the attribute's own
+            line where the element spans several (an exporter's one attribute a line).
     """
 
     code: str
@@ -92,3 +94,4 @@ class Issue:
     fix: str | None = None
     where: tuple[str, int, int] | None = None
     severity: Severity | None = None
+    attribute: str | None = None

@@ -12,6 +12,7 @@ import stat
 import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check import names, read_errors, syntax, tree
@@ -267,11 +268,47 @@ def _place(robot: RobotDescription | None, issue: Issue, settings: Settings) -> 
         ref = robot.source_of(issue.element)
         file, line, column = ref.file, ref.line, ref.column
         calls = tuple(call.location() for call in ref.calls)
+        if issue.attribute is not None and line > 0:
+            line, column = attribute_place(robot, file, line, column, issue.attribute)
     else:  # pragma: no cover - issues without a robot always carry `where`
         file, line, column = "", 0, 0
     severity = settings.severity.get(issue.code) or issue.severity or RULES[issue.code].severity
     return Finding(issue.code, severity, issue.message, file, line, column,
                    issue.fix or RULES[issue.code].fix, calls)
+
+
+def attribute_place(robot: RobotDescription, file: str, line: int, column: int,
+                    attribute: str) -> tuple[int, int]:
+    """Where ``attribute`` is written in the tag that starts at ``line``:``column`` of ``file``.
+
+    The tag's own place where the text cannot be read or the attribute is not found in it.
+    """
+    text = robot.xml_text if file == robot.display and not robot.expanded else _text_of(file)
+    if text is None:
+        return line, column
+    start = 0
+    for _ in range(line - 1):
+        start = text.find("\n", start) + 1
+        if start == 0:
+            return line, column
+    start += column - 1
+    end = text.find(">", start)
+    found = re.compile(rf"(?<![\w:.-]){re.escape(attribute)}\s*=").search(
+        text, start, end if end >= 0 else len(text))
+    if found is None:
+        return line, column
+    before = text.count("\n", start, found.start())
+    if not before:
+        return line, column + found.start() - start
+    return line + before, found.start() - text.rfind("\n", 0, found.start())
+
+
+def _text_of(file: str) -> str | None:
+    """The text of a source file (a xacro include), None where it cannot be read."""
+    try:
+        return Path(file).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError, ValueError):
+        return None
 
 
 def _report(file: str, findings: list[Finding],

@@ -6,6 +6,7 @@ SB008-SB016. Walks the tree iteratively against :mod:`urdf_schema`; extension el
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
 import functools
 import math
@@ -280,7 +281,8 @@ def _attributes(element: ET.Element, allowed: dict[str, int], required: tuple[st
             yield Issue("SB011", f"<{element.tag}> has no attribute '{key}'{hint}", element,
                         fix=f"rename it '{close[0]}'" if close else "remove it")
         elif allowed[key]:
-            yield from _number(element, key, value, allowed[key])
+            for issue in _number(element, key, value, allowed[key]):
+                yield dataclasses.replace(issue, attribute=key)
     for key in required:
         if key not in element.attrib:
             yield Issue("SB012", f"<{element.tag}>{_named(element)} has no '{key}' attribute",
