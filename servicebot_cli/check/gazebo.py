@@ -48,6 +48,12 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     child_of = {name: joint.child for name, joint in robot.joints_by_name.items()}
     links = {link.name for link in robot.links}
     for sensor in robot.sensors:
+        if not sensor.reference:
+            yield Issue("SB502", f"sensor '{sensor.name}' is in a <gazebo> block that names no "
+                        "link: sdformat puts what it holds in the model, where SDF has no "
+                        "sensor, so Gazebo makes none", sensor.element,
+                        severity=Severity.WARNING,
+                        fix="put it in <gazebo reference=\"LINK\">, the link it is on")
         for problem in _sensor_problems(sensor):
             yield Issue("SB502", f"sensor '{sensor.name}': {problem}", sensor.element)
         if sensor.reference in child_of and sensor.reference not in links \

@@ -273,7 +273,10 @@ def _unplaced(robot: RobotDescription) -> tuple[str, ...]:
     parts = {link.name for link in robot.links} | {joint.name for joint in robot.joints}
     return tuple(f"note: sensor '{s.name}' is not simulated: its <gazebo reference="
                  f"\"{s.reference}\"> names no link or joint, so Gazebo drops it"
-                 for s in robot.sensors if s.reference and s.reference not in parts)
+                 if s.reference else
+                 f"note: sensor '{s.name}' is not simulated: its <gazebo> block names no link, "
+                 "and Gazebo makes no sensor of the model's"
+                 for s in robot.sensors if not s.reference or s.reference not in parts)
 
 
 def _placed(robot: RobotDescription, sensor: Sensor, spec: SpecT,

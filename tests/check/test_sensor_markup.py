@@ -38,3 +38,22 @@ def test_a_sensor_gazebo_does_not_create_is_sb502(tmp_path, sensor, near, said):
                             "--select", "SB502")
     found = [(f["severity"], f["message"].split("': ", 1)[1]) for f in findings(result.stdout)]
     assert found == ([("error", said)] if said else [])
+
+
+@pytest.mark.parametrize("block", ['<gazebo reference="">', "<gazebo>"])
+def test_a_sensor_in_a_block_that_names_no_link_is_made_by_no_one(tmp_path, block):
+    """sdformat puts a <gazebo> block without a link into the model, which holds no sensor:
+    check passed it, inspect listed its topics and simulate dropped it without a word."""
+    robot = tmp_path / "r.urdf"
+    robot.write_text(ROBOT.format(sensor='name="lidar" type="ray"', near="0.1")
+                     .replace('<gazebo reference="laser">', block))
+    result = run_servicebot("check", "urdf", robot, "--isolated", "--format", "json",
+                            "--select", "SB502")
+    ((severity, message),) = [(f["severity"], f["message"]) for f in findings(result.stdout)]
+    assert severity == "warning" and "is in a <gazebo> block that names no link" in message
+    from tests.conftest import SIM_URDF
+
+    robot.write_text(SIM_URDF.read_text().replace('<gazebo reference="imu_link">', block))
+    noted = run_servicebot("simulate", robot, "--headless", "--duration-s", "0.1")
+    assert noted.returncode == 0, noted.stderr
+    assert "is not simulated: its <gazebo> block names no link" in noted.stderr
