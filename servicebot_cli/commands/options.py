@@ -142,6 +142,10 @@ def split_robot_args(values: Sequence[str]) -> tuple[tuple[str, ...], tuple[tupl
             raise click.BadParameter(
                 f"the value of '{match.group(1)}' is not UTF-8 text, which xacro needs; "
                 "give it in UTF-8", param_hint="xacro argument")
+        if match and ":=" in match.group(2):  # xacro: "Invalid remapping argument"
+            raise click.BadParameter(
+                f"'{value}' holds ':=' twice, which xacro refuses (an invalid remapping); "
+                "give one NAME:=VALUE an argument", param_hint="xacro argument")
         if match and _ignored_by_xacro(match):
             continue
         if match:

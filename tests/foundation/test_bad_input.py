@@ -181,6 +181,12 @@ def test_xacro_arguments_for_a_plain_urdf(run):
     assert_one_line_error(run("fk", SIM_URDF, "hardware:=real"), 2, "not a xacro file")
 
 
+def test_a_xacro_argument_with_two_assignments_is_refused_as_xacro_refuses_it(run):
+    """xacro stops on x:=a:=b ('Invalid remapping argument'); expand took the value 'a:=b'."""
+    assert_one_line_error(run("expand", XACRO_SOURCE, "hardware:=sim:=real"), 2,
+                          "'hardware:=sim:=real' holds ':=' twice, which xacro refuses")
+
+
 def test_xacro_arguments_without_a_file(run):
     assert_one_line_error(run("fk", "hardware:=real"), 2, "need a xacro FILE")
 
