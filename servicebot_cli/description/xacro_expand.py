@@ -434,7 +434,14 @@ class _Tracer:
         display = filename or path
         if self.files:  # an include: $(find)'s absolute path shown as a relative include's
             display = as_typed(display)  # (the file checked stays as the user named it)
-        text = parse_xml(data, display, blanks_before_declaration=False).text
+        try:
+            text = parse_xml(data, display, blanks_before_declaration=False).text
+        except XmlError as exc:  # an include's: say which xacro:include reads it
+            if not self.files or not self.current or type(exc) is not XmlError:
+                raise
+            raise XmlError(exc.file, f"{exc.reason} (included at "
+                           f"{self.refs[self.current[-1]].location()})", exc.line,
+                           exc.column) from None
         self.files.append(display)
         self.known_args.update(_ARG_USE_RE.findall(text))
         builder = _PositionBuilder(self, display)

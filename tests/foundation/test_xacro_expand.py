@@ -442,3 +442,14 @@ def test_xacros_inorder_flag_is_taken_with_a_note(run, flag):
     assert result.exit_code == 0 and result.stdout == plain.stdout
     assert result.stderr == ("note: in-order processing is xacro's only one since ROS "
                              "Melodic: --inorder can be dropped\n")
+
+
+def test_an_include_that_is_no_xml_names_the_include_that_reads_it(run, tmp_path):
+    """'/etc/hostname:1:1: XML is not well-formed' named no line of the robot's files."""
+    (tmp_path / "bad.xacro").write_text("not xml at all\n")
+    robot = tmp_path / "r.urdf.xacro"
+    robot.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                     '<link name="a"/>\n  <xacro:include filename="bad.xacro"/>\n</robot>\n')
+    result = run("expand", robot)
+    assert result.exit_code == 2
+    assert result.stderr.rstrip().endswith(f"(included at {robot}:3:3)")
