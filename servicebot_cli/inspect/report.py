@@ -148,12 +148,20 @@ def inspect_robot(robot: RobotDescription, request: Request) -> Inspection:
 def _topics(robot: RobotDescription, sensors: tuple[SensorInfo, ...], plugins: PluginsInfo,
             explicit: Path | None) -> TopicsInfo:
     controllers, notes = find_controllers(robot.path, robot.plugins, explicit)
+    # sdformat applies a <gazebo> block to the link (or joint) it names, and drops it
+    # otherwise: no sensor is made of a block that names none of the robot's parts
+    parts = {link.name for link in robot.links} | {joint.name for joint in robot.joints}
+    made = tuple(s for s in sensors if s.link and s.link in parts)
+    dropped = tuple(f"sensor '{s.name}' publishes nothing: its <gazebo> block names "
+                    + (f"'{s.link}', no link or joint of the robot" if s.link else "no link")
+                    + ", and Gazebo makes no sensor of it (check reports it)"
+                    for s in sensors if s not in made)
     return TopicsInfo(
         controllers_file=controllers.file if controllers else None,
         controllers_found_by=controllers.found_by if controllers else None,
         controllers=controllers.controllers if controllers else (),
-        topics=topics_info(sensors, plugins.ros2_control, controllers, plugins.gazebo),
-        notes=notes,
+        topics=topics_info(made, plugins.ros2_control, controllers, plugins.gazebo),
+        notes=(*notes, *dropped),
     )
 
 

@@ -57,3 +57,21 @@ def test_a_sensor_in_a_block_that_names_no_link_is_made_by_no_one(tmp_path, bloc
     noted = run_servicebot("simulate", robot, "--headless", "--duration-s", "0.1")
     assert noted.returncode == 0, noted.stderr
     assert "is not simulated: its <gazebo> block names no link" in noted.stderr
+
+
+@pytest.mark.parametrize(("block", "said"), [
+    ("<gazebo>", "its <gazebo> block names no link"),
+    ('<gazebo reference="no_such_link">', "its <gazebo> block names 'no_such_link', no link or "
+     "joint of the robot")])
+def test_inspect_lists_no_topic_of_a_sensor_gazebo_does_not_make(tmp_path, block, said):
+    """inspect listed the topics of such a sensor as published."""
+    import json
+
+    robot = tmp_path / "r.urdf"
+    robot.write_text(ROBOT.format(sensor='name="lidar" type="ray"', near="0.1")
+                     .replace('<gazebo reference="laser">', block))
+    result = run_servicebot("inspect", robot, "--section", "topics", "--format", "json")
+    topics = json.loads(result.stdout)["topics"]
+    assert topics["topics"] == []
+    assert [note for note in topics["notes"] if note.startswith("sensor 'lidar' publishes "
+                                                                 f"nothing: {said}")]
