@@ -562,6 +562,9 @@ class _Tracer:
                             else " (it takes no parameters)")
         elif message.endswith("when evaluating expression ''"):  # ${}: Python's parser text
             message = "an empty expression ${}: write what it should compute"
+        elif "object has no attribute '_setitem'" in message:  # xacro's words, an internal slip
+            message = ("a property with scope=\"parent\" at the top of the file, where there is "
+                       "no parent scope (xacro stops on it): drop scope=\"parent\"")
         else:
             message += self._in_macros(where) + self._bare_definition(message)
         if not own and not str(inner).strip():  # "when evaluating expression '...'" alone

@@ -453,3 +453,17 @@ def test_an_include_that_is_no_xml_names_the_include_that_reads_it(run, tmp_path
     result = run("expand", robot)
     assert result.exit_code == 2
     assert result.stderr.rstrip().endswith(f"(included at {robot}:3:3)")
+
+
+def test_a_parent_scope_at_the_top_says_so(run, tmp_path):
+    """xacro stops with its own slip ("'dict' object has no attribute '_setitem'"), which
+    says nothing of the file; the message now names the attribute to drop."""
+    robot = tmp_path / "r.urdf.xacro"
+    robot.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                     '  <xacro:property name="a" value="7" scope="parent"/>\n'
+                     '  <link name="l_${a}"/>\n</robot>\n')
+    result = run("expand", robot)
+    assert result.exit_code == 2
+    assert result.stderr.strip().endswith(
+        ":2:3: xacro: a property with scope=\"parent\" at the top of the file, where there is "
+        "no parent scope (xacro stops on it): drop scope=\"parent\"")
