@@ -79,6 +79,16 @@ class Plugin:
     for ROS 2's gazebo_ros, whose plugins read no ROS 1 parameter (``frameName``), whatever
     this one holds."""
 
+    @property
+    def has_ros_block(self) -> bool:
+        """Whether it holds a ``<ros>`` block: gazebo_ros' ROS 2 node settings."""
+        return any(key.startswith("ros/") for key, _ in self.params)
+
+    @property
+    def for_ros2(self) -> bool:
+        """Whether ROS 2's gazebo_ros runs it: it has a ``<ros>`` block, or its file is ROS 2's."""
+        return self.ros2_file or self.has_ros_block
+
 
 @dataclass(frozen=True)
 class Sensor:
@@ -206,7 +216,7 @@ def for_ros2_where_one_is(blocks: tuple[GazeboBlock, ...]) -> tuple[GazeboBlock,
     One install of Gazebo runs every plugin of the file: ROS 2's where one is written for it.
     """
     plugins = [p for b in blocks for p in (*b.plugins, *(q for s in b.sensors for q in s.plugins))]
-    if not any(key.startswith("ros/") for p in plugins for key, _ in p.params):
+    if not any(p.has_ros_block for p in plugins):
         return blocks
 
     def marked(found: tuple[Plugin, ...]) -> tuple[Plugin, ...]:

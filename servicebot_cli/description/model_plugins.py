@@ -75,8 +75,7 @@ def ros1_plugin(plugin: Plugin) -> bool:
 
     Not in a file another plugin of which has a ``<ros>`` block: that file is for ROS 2.
     """
-    return not plugin.ros2_file and not any(key.startswith("ros/") for key, _ in plugin.params) \
-        and any(key in _ROS1_KEYS for key, _ in plugin.params)
+    return not plugin.for_ros2 and any(key in _ROS1_KEYS for key, _ in plugin.params)
 
 
 def publishes_odometry(plugin: Plugin, default: bool = False) -> bool:

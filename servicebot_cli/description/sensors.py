@@ -188,9 +188,8 @@ def _plus_plugin_noise(noise: NoiseSpec | None, plugin: Plugin | None) -> NoiseS
     every reading, on top of the sensor's own noise: the two standard deviations add in
     quadrature.
     """
-    if plugin is None or plugin.filename not in _GAUSSIAN_NOISE_PLUGINS or plugin.ros2_file \
-            or any(key.startswith("ros/") for key, _ in plugin.params):  # ROS 2's: SDF noise
-        return noise
+    if plugin is None or plugin.filename not in _GAUSSIAN_NOISE_PLUGINS or plugin.for_ros2:
+        return noise  # ROS 2's read the SDF noise only
     sigma = parse_float(param(plugin.params, "gaussianNoise"))
     if sigma is None or not sigma > 0 or not math.isfinite(sigma):
         return noise
@@ -395,7 +394,7 @@ def _throttled(rate_hz: float | None, plugin: Plugin | None) -> float | None:
     since the last (a sensor without a rate updates every step); 0 or less throttles nothing.
     ROS 2's gazebo_ros_camera reads no ``<updateRate>``.
     """
-    if plugin is None or plugin.ros2_file or any(k.startswith("ros/") for k, _ in plugin.params):
+    if plugin is None or plugin.for_ros2:
         return rate_hz
     throttle = parse_float(param(plugin.params, "updateRate"))
     if throttle is None or not throttle > 0 or not math.isfinite(throttle):
