@@ -16,10 +16,10 @@ from servicebot_cli.common.errors import (
     UnsafeXmlError,
     XacroError,
     XmlError,
+    split_location,
 )
 from servicebot_cli.description.loader import comments_blanked
 
-_WHERE = re.compile(r"^(?P<file>.+?):(?P<line>\d+)(?::(?P<column>\d+))?: (?P<rest>.*)$", re.DOTALL)
 _LIMITS = ("limit for a robot description", "elements; refused", "deep; refused",
            "MB limit; is it the right file?")  # the last: a device read to the limit
 # xacro adds " when evaluating expression '...'" when a property read the argument lazily
@@ -49,7 +49,7 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
                          fix="remove the DOCTYPE; use xacro properties for repeated values")
         return Issue(_xml_code(error.reason), error.reason, where=where,
                      fix=accident_fix(error.reason))
-    file, line, column, text = _split(str(error), display)
+    file, line, column, text = split_location(str(error), display)
     if isinstance(error, PackageNotFound):
         return Issue("SB007", text, where=(file, line, column),
                      fix="pass --package NAME=DIR, or source the workspace that holds it")
@@ -154,13 +154,3 @@ def _xml_code(reason: str) -> str:
     if any(limit in reason for limit in _LIMITS):
         return "SB015"
     return "SB004"
-
-
-def _split(message: str, display: str) -> tuple[str, int, int, str]:
-    """``file:line:col: text`` into its parts (line and column 0 when absent)."""
-    match = _WHERE.match(message)
-    if match:
-        return (match["file"], int(match["line"]), int(match["column"] or 0), match["rest"])
-    if message.startswith(display + ": "):
-        return display, 0, 0, message[len(display) + 2:]
-    return display, 0, 0, message

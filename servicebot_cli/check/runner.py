@@ -22,7 +22,7 @@ from servicebot_cli.check.findings import Finding, Issue, Severity
 from servicebot_cli.check.settings import Settings
 from servicebot_cli.check.xacro_warnings import xacro_warning
 from servicebot_cli.common.errors import DescriptionError
-from servicebot_cli.description.safe_xml import MAX_BYTES
+from servicebot_cli.description.safe_xml import ENTITY_FIX, MAX_BYTES, read_as_written
 
 if TYPE_CHECKING:
     from servicebot_cli.check.model_ahead import ModelAhead
@@ -192,10 +192,8 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
                     where=(robot.display, 0, 0) if robot.expanded else
                     (robot.display, dtd.line, dtd.column), fix="remove the DOCTYPE")
     for name, line, column in robot.entities_used[:1]:  # xacro's output has them expanded
-        yield Issue("SB005", f"entity '&{name};' (its DOCTYPE declares it): urdfdom, under "
-                    "robot_state_publisher, Gazebo and MoveIt, does not expand entities and "
-                    f"reads '&{name};' as written", where=(robot.display, line, column),
-                    fix="write its value there, or name the file .urdf.xacro (xacro expands it)")
+        yield Issue("SB005", read_as_written(name), where=(robot.display, line, column),
+                    fix=ENTITY_FIX)
     found = list(syntax.check(robot.root))
     if not robot.expanded:  # xacro's own parser turned such blanks into spaces already
         found += syntax.vectors_split_wrong(robot.xml_text, robot.display)

@@ -9,6 +9,7 @@ from __future__ import annotations
 import difflib
 import errno
 import functools
+import re
 from collections.abc import Iterable
 from enum import IntEnum
 
@@ -162,3 +163,21 @@ NO_ROOM = (errno.ENOSPC, errno.EDQUOT, errno.EFBIG)
 def no_room(target: object, exc: OSError) -> str:
     """The line for a write to ``target`` refused for want of room."""
     return f"{target}: cannot write: {exc.strerror}; free some space or write somewhere else"
+
+
+_LOCATED = re.compile(r"^(?P<file>.+?):(?P<line>\d+)(?::(?P<column>\d+))?: (?P<rest>.*)$",
+                      re.DOTALL)
+
+
+def split_location(message: str, display: str) -> tuple[str, int, int, str]:
+    """``file:line:col: text`` (as :class:`XmlError` and the loader write it) into its parts.
+
+    Line and column are 0 where the message gives none; the file is ``display`` then, and a
+    leading ``display: `` is taken off the text.
+    """
+    match = _LOCATED.match(message)
+    if match:
+        return (match["file"], int(match["line"]), int(match["column"] or 0), match["rest"])
+    if message.startswith(display + ": "):
+        return display, 0, 0, message[len(display) + 2:]
+    return display, 0, 0, message

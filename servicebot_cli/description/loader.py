@@ -12,7 +12,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from servicebot_cli.common.errors import DescriptionError, PackageNotFound
+from servicebot_cli.common.errors import DescriptionError, PackageNotFound, split_location
 from servicebot_cli.common.inputs import (
     display_path,
     not_a_file,
@@ -25,7 +25,12 @@ from servicebot_cli.description.model import check_hint
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.parents import second_parents
 from servicebot_cli.description.robot import RobotDescription, is_xacro_name
-from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
+from servicebot_cli.description.safe_xml import (
+    ENTITY_FIX,
+    MAX_BYTES,
+    parse_xml,
+    read_as_written,
+)
 
 _COMMENT = re.compile(rb"<!--.*?-->", re.DOTALL)
 _FIND = re.compile(rb"\$\(find\s")
@@ -214,7 +219,7 @@ def _as_written(source: RobotSource, data: bytes, max_bytes: int,
                 not_found: str) -> RobotDescription:
     """``source`` read as plain URDF, its ``$(find)`` as written: its package is nowhere."""
     document = parse_xml(data, source.display, max_bytes=max_bytes)
-    file, line, column, text = _placed(not_found, source.display)
+    file, line, column, text = split_location(not_found, source.display)
     return RobotDescription(
         display=source.display, path=source.path, xml_text=document.text,
         root=document.root, doctype=document.doctype, external_dtd=document.external_dtd,
@@ -225,17 +230,6 @@ def _as_written(source: RobotSource, data: bytes, max_bytes: int,
             fix="pass --package NAME=DIR, or source the workspace that holds it",
             said_as="package"),),
     )
-
-
-_PLACE = re.compile(r"^(?P<file>.+?):(?P<line>\d+)(?::(?P<column>\d+))?: (?P<rest>.*)$", re.DOTALL)
-
-
-def _placed(message: str, display: str) -> tuple[str, int, int, str]:
-    """``file:line:column: text`` taken apart; the whole message as text where it is not."""
-    found = _PLACE.match(message)
-    if found is None:
-        return display, 0, 0, message
-    return found["file"], int(found["line"]), int(found["column"] or 0), found["rest"]
 
 
 _LOADED: dict[tuple[object, ...], RobotDescription] = {}
@@ -291,10 +285,7 @@ def _refuse_entities(robot: RobotDescription) -> None:
         return
     name, line, column = robot.entities_used[0]
     raise DescriptionError(
-        f"{robot.display}:{line}:{column}: entity '&{name};' (its DOCTYPE declares it): "
-        f"urdfdom, under robot_state_publisher, Gazebo, MoveIt and Pinocchio, does not expand "
-        f"entities and reads '&{name};' as written; write its value there, or name the file "
-        ".urdf.xacro (xacro expands it)")
+        f"{robot.display}:{line}:{column}: {read_as_written(name)}; {ENTITY_FIX}")
 
 
 def _refuse_second_parents(robot: RobotDescription) -> None:

@@ -207,6 +207,17 @@ def _decode(data: bytes, filename: str) -> str:
         raise XmlError(filename, reason, exc.line, exc.column) from None
 
 
+ENTITY_FIX = "write its value there, or name the file .urdf.xacro (xacro expands it)"
+"""What to do about an entity a plain URDF uses (:func:`read_as_written`)."""
+
+
+def read_as_written(entity: str) -> str:
+    """Why a plain URDF may not use ``entity``: what urdfdom reads where it stands."""
+    return (f"entity '&{entity};' (its DOCTYPE declares it): urdfdom, under "
+            "robot_state_publisher, Gazebo, MoveIt and Pinocchio, does not expand entities and "
+            f"reads '&{entity};' as written")
+
+
 def _references_only(text: str) -> str:
     """``text`` with its comments and CDATA sections blanked, lines and columns kept.
 
