@@ -55,7 +55,7 @@ def check(found: Sections, display: str, robot: RobotDescription,
           meshes: MeshPoints | None = None) -> Iterator[Issue]:
     """Every issue of the controller sections ``found`` (of file ``display``) against ``robot``.
 
-    ``meshes``: the bounds of mesh shapes (wheels drawn as meshes are where those are).
+    ``meshes``: the vertices of mesh shapes (wheels drawn as meshes are where those are).
     """
     checker = _Checker(display, robot, found, meshes)
     for name, params in found.items():

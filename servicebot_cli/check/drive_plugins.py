@@ -29,7 +29,7 @@ _WHEEL_KEYS = ("left_joint", "right_joint", "leftJoint", "rightJoint")
 def check(robot: RobotDescription, meshes: MeshPoints | None = None) -> Iterator[Issue]:
     """SB516 for each diff-drive plugin whose wheel numbers are not the URDF's wheels'.
 
-    ``meshes``: the bounds of mesh shapes (wheels drawn as meshes are where those are).
+    ``meshes``: the vertices of mesh shapes (wheels drawn as meshes are where those are).
     """
     plugins = [(p, numbers) for p in robot.model_plugins
                if (numbers := plugin_wheels(p)) is not None]

@@ -15,7 +15,7 @@ from servicebot_cli.check.meshes import MeshCache, MeshError, MeshInfo
 from servicebot_cli.check.packages import PackageSearch, Resolved
 from servicebot_cli.common.inputs import not_a_file
 from servicebot_cli.description.packages import PackageResolver, is_remote
-from servicebot_cli.kinematics.mesh_wheels import FloatArray, MeshPoints, read_vertices, scaled
+from servicebot_cli.kinematics.mesh_wheels import FloatArray, MeshPoints, points_at
 
 if TYPE_CHECKING:
     from servicebot_cli.description.elements import Shape
@@ -120,16 +120,13 @@ class CheckEnv:
 
         Read only for wheels drawn as meshes, each file once a run.
         """
-        def points(shape: Shape) -> FloatArray | None:
+        def path_of(shape: Shape) -> Path | None:
             try:
-                path = self.mesh_path(robot, shape)
+                return self.mesh_path(robot, shape)
             except MeshNotFound:
                 return None
-            if path not in self._vertices:
-                self._vertices[path] = read_vertices(path)
-            return scaled(self._vertices[path], shape.geometry.scale)
 
-        return points
+        return points_at(path_of, self._vertices)
 
 
 __all__ = ["CheckEnv", "MeshError", "MeshNotFound", "RemoteMesh"]

@@ -36,8 +36,10 @@ if TYPE_CHECKING:
 
 
 _MOST_JOINTS_NAMED = 6  # of one reason, in the note of what is no differential drive
-_SMALLEST_RADIUS_M = 1e-4  # a wheel of a tenth of a millimetre: a typo, or no number
-_LARGEST_RADIUS_M = 100.0
+SMALLEST_RADIUS_M = 1e-4
+"""A wheel of a tenth of a millimetre: a typo, or no number [m]."""
+LARGEST_RADIUS_M = 100.0
+"""The largest wheel size taken (a drive plugin's numbers too) [m]."""
 
 
 @dataclass(frozen=True)
@@ -90,7 +92,7 @@ class DriveGeometry:
 def drive_geometry(robot: RobotDescription, meshes: MeshPoints | None = None) -> DriveGeometry:
     """Find the drive wheels of ``robot``.
 
-    ``meshes`` reads the bounds of wheels drawn as meshes (default: from their files, found
+    ``meshes`` reads the vertices of wheels drawn as meshes (default: from their files, found
     from the robot's file and the environment's packages).
 
     Raises:
@@ -132,12 +134,12 @@ def drive_geometry(robot: RobotDescription, meshes: MeshPoints | None = None) ->
                 "number as written ('nan', or a unit after it: '50mm'); write its cylinder's "
                 "radius in metres, a plain number (run 'servicebot check "
                 f"{robot.display}' for the line)")
-        if not (math.isfinite(wheel.radius_m) and _SMALLEST_RADIUS_M <= wheel.radius_m
-                <= _LARGEST_RADIUS_M):
+        if not (math.isfinite(wheel.radius_m) and SMALLEST_RADIUS_M <= wheel.radius_m
+                <= LARGEST_RADIUS_M):
             raise DescriptionError(
                 f"{robot.display}: wheel joint '{wheel.joint}' rolls on a radius of "
                 f"{wheel.radius_m:g} m, which no wheel has; give its cylinder's real radius "
-                f"(from {_SMALLEST_RADIUS_M:g} to {_LARGEST_RADIUS_M:g} m)")
+                f"(from {SMALLEST_RADIUS_M:g} to {LARGEST_RADIUS_M:g} m)")
     left_y = np.mean([w.position_m[1] for w in sides["left"]])
     right_y = np.mean([w.position_m[1] for w in sides["right"]])
     return DriveGeometry(

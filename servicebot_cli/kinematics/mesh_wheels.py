@@ -84,12 +84,25 @@ def file_points(resolver: PackageResolver | None, base_dir: Path) -> MeshPoints:
     from servicebot_cli.description.packages import PackageResolver
 
     finder = resolver or PackageResolver.from_environment(context=base_dir)
-    read: dict[Path, FloatArray | None] = {}
 
-    def points(shape: Shape) -> FloatArray | None:
+    def path_of(shape: Shape) -> Path | None:
         try:
-            path = finder.resolve_uri(shape.geometry.filename or "", base_dir)
+            return finder.resolve_uri(shape.geometry.filename or "", base_dir)
         except Exception:  # noqa: BLE001 -- a package nowhere, a remote mesh: nothing known
+            return None
+
+    return points_at(path_of, {})
+
+
+def points_at(path_of: Callable[[Shape], Path | None],
+              read: dict[Path, FloatArray | None]) -> MeshPoints:
+    """The vertices of the file ``path_of`` finds for a shape (None: none), scaled.
+
+    Each file is read once into ``read``, which may outlive the reader (a run's cache).
+    """
+    def points(shape: Shape) -> FloatArray | None:
+        path = path_of(shape)
+        if path is None:
             return None
         if path not in read:
             read[path] = read_vertices(path)

@@ -40,7 +40,7 @@ def plugin_wheels(robot: RobotDescription, world: dict[str, np.ndarray],
                   meshes: MeshPoints | None = None) -> list[Wheel]:
     """The wheels of the first diff-drive plugin that names usable ones; none without.
 
-    ``meshes``: the bounds of mesh shapes, for wheels drawn as meshes.
+    ``meshes``: the vertices of mesh shapes, for wheels drawn as meshes.
     """
     for plugin in robot.plugins:
         named = _named(plugin)

@@ -48,6 +48,7 @@ from servicebot_cli.description.model_plugins import (
     wheel_tf_joints,
 )
 from servicebot_cli.description.ros_names import manager_node
+from servicebot_cli.kinematics.drive_geometry import LARGEST_RADIUS_M, SMALLEST_RADIUS_M
 from servicebot_cli.simulate.controllers.classic_drive import ClassicDrive, odometry_source
 from servicebot_cli.simulate.controllers.config import (
     ControllersFile,
@@ -165,7 +166,8 @@ def _wheels(plugin: Plugin, where: str) -> dict[str, float]:
     for field, number in (("wheel_separation_m", numbers.separation),
                           ("wheel_radius_m", numbers.radius)):
         known = number.known_m
-        if number.given and (known is None or not _SMALLEST_M <= known <= _LARGEST_M):
+        if number.given and (known is None
+                             or not SMALLEST_RADIUS_M <= known <= LARGEST_RADIUS_M):
             raise ControllersFileError(
                 f"{where}: <{number.key}>{number.text}</{number.key}> is "
                 f"{'no number' if known is None else 'no size a wheel has'}, and the plugin "
@@ -175,8 +177,6 @@ def _wheels(plugin: Plugin, where: str) -> dict[str, float]:
             out[field] = known
     return out
 
-
-_SMALLEST_M, _LARGEST_M = 1e-4, 100.0  # as a URDF's wheels (drive_geometry)
 
 
 def _wheel_tf(robot: RobotDescription, plugin: Plugin) -> tuple[str, ...]:
