@@ -35,7 +35,7 @@ _GZ_SIM = ("gz-sim", "libgz-sim", "ignition-gazebo", "libignition-gazebo", "gz::
 def check(robot: RobotDescription) -> Iterator[Issue]:
     """Every Gazebo issue of ``robot``."""
     names = [link.name for link in robot.links] + [joint.name for joint in robot.joints]
-    known = set(names)
+    known = robot.part_names
     # reference="" is no reference: sdformat applies the block to the model, as without one
     unknown = [b for b in robot.gazebo if b.reference and b.reference not in known]
     # a reference still holding xacro's braces is a typo, no optional part ('{side}' for '${side}')

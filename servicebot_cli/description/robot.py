@@ -163,6 +163,14 @@ class RobotDescription:
                      if s.reference else s for block in self.gazebo for s in block.sensors)
 
     @cached_property
+    def part_names(self) -> frozenset[str]:
+        """Every link and joint name: what a ``<gazebo reference>`` may name.
+
+        sdformat drops a block that names none of them.
+        """
+        return frozenset(link.name for link in self.links) | {j.name for j in self.joints}
+
+    @cached_property
     def kept_apart(self) -> dict[str, str]:
         """The fixed joints a ``<gazebo reference>`` keeps from lumping, with the setting."""
         return ext.kept_apart(self.gazebo)

@@ -150,8 +150,7 @@ def _topics(robot: RobotDescription, sensors: tuple[SensorInfo, ...], plugins: P
     controllers, notes = find_controllers(robot.path, robot.plugins, explicit)
     # sdformat applies a <gazebo> block to the link (or joint) it names, and drops it
     # otherwise: no sensor is made of a block that names none of the robot's parts
-    parts = {link.name for link in robot.links} | {joint.name for joint in robot.joints}
-    made = tuple(s for s in sensors if s.link and s.link in parts)
+    made = tuple(s for s in sensors if s.link and s.link in robot.part_names)
     dropped = tuple(f"sensor '{s.name}' publishes nothing: its <gazebo> block names "
                     + (f"'{s.link}', no link or joint of the robot" if s.link else "no link")
                     + ", and Gazebo makes no sensor of it (check reports it)"

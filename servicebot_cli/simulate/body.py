@@ -270,7 +270,7 @@ def _unplaced(robot: RobotDescription) -> tuple[str, ...]:
     so Gazebo makes no such sensor: interbotix's locobot puts its Create 3 cliff sensors
     under ``cliff_side_left`` where the link is ``locobot/cliff_side_left``.
     """
-    parts = {link.name for link in robot.links} | {joint.name for joint in robot.joints}
+    parts = robot.part_names
     return tuple(f"note: sensor '{s.name}' is not simulated: its <gazebo reference="
                  f"\"{s.reference}\"> names no link or joint, so Gazebo drops it"
                  if s.reference else
