@@ -229,6 +229,7 @@ def place_issues(robot: RobotDescription | None, issues: Iterable[Issue],
     # no comment can silence a finding in a text that never names the tool
     marked = robot is not None and "servicebot" in robot.xml_text.lower()  # (a regex
     # that ignores case reads 10 ns a character: 2 ms for a large URDF, at every call)
+    texts = _SourceTexts(robot) if robot is not None else None
     for issue in issues:
         if not settings.enabled(issue.code):
             continue
@@ -237,7 +238,7 @@ def place_issues(robot: RobotDescription | None, issues: Iterable[Issue],
                 parents = {child: parent for parent in robot.root.iter() for child in parent}
             if _suppressed(issue, parents):
                 continue
-        findings.append(_place(robot, issue, settings))
+        findings.append(_place(robot, issue, settings, texts))
     return findings
 
 
@@ -258,7 +259,8 @@ def _suppressed(issue: Issue, parents: dict[ET.Element, ET.Element]) -> bool:
     return False
 
 
-def _place(robot: RobotDescription | None, issue: Issue, settings: Settings) -> Finding:
+def _place(robot: RobotDescription | None, issue: Issue, settings: Settings,
+           texts: _SourceTexts | None = None) -> Finding:
     calls: tuple[str, ...] = ()
     if issue.where is not None:
         file, line, column = issue.where
@@ -266,8 +268,8 @@ def _place(robot: RobotDescription | None, issue: Issue, settings: Settings) -> 
         ref = robot.source_of(issue.element)
         file, line, column = ref.file, ref.line, ref.column
         calls = tuple(call.location() for call in ref.calls)
-        if issue.attribute is not None and line > 0:
-            line, column = attribute_place(robot, file, line, column, issue.attribute)
+        if issue.attribute is not None and line > 0 and texts is not None:
+            line, column = texts.attribute_place(file, line, column, issue.attribute)
     else:  # pragma: no cover - issues without a robot always carry `where`
         file, line, column = "", 0, 0
     severity = settings.severity.get(issue.code) or issue.severity or RULES[issue.code].severity
@@ -275,30 +277,46 @@ def _place(robot: RobotDescription | None, issue: Issue, settings: Settings) -> 
                    issue.fix or RULES[issue.code].fix, calls)
 
 
-def attribute_place(robot: RobotDescription, file: str, line: int, column: int,
-                    attribute: str) -> tuple[int, int]:
-    """Where ``attribute`` is written in the tag that starts at ``line``:``column`` of ``file``.
+class _SourceTexts:
+    """The text of each source file findings are placed in, and where its lines start.
 
-    The tag's own place where the text cannot be read or the attribute is not found in it.
+    Read once for all the findings of a file (an exporter's comma decimals give hundreds).
     """
-    text = robot.xml_text if file == robot.display and not robot.expanded else _text_of(file)
-    if text is None:
-        return line, column
-    start = 0
-    for _ in range(line - 1):
-        start = text.find("\n", start) + 1
-        if start == 0:
+
+    def __init__(self, robot: RobotDescription) -> None:
+        self.robot = robot
+        self.known: dict[str, tuple[str, list[int]] | None] = {}
+
+    def lines(self, file: str) -> tuple[str, list[int]] | None:
+        """``file``'s text and the offset each line starts at; None where it cannot be read."""
+        if file not in self.known:
+            robot = self.robot
+            text = robot.xml_text if file == robot.display and not robot.expanded \
+                else _text_of(file)
+            self.known[file] = None if text is None else (
+                text, [0, *(found.end() for found in re.finditer("\n", text))])
+        return self.known[file]
+
+    def attribute_place(self, file: str, line: int, column: int,
+                        attribute: str) -> tuple[int, int]:
+        """Where ``attribute`` is written in the tag at ``line``:``column`` of ``file``.
+
+        The tag's own place where the text cannot be read or the attribute is not in it.
+        """
+        found_text = self.lines(file)
+        if found_text is None or line > len(found_text[1]):
             return line, column
-    start += column - 1
-    end = text.find(">", start)
-    found = re.compile(rf"(?<![\w:.-]){re.escape(attribute)}\s*=").search(
-        text, start, end if end >= 0 else len(text))
-    if found is None:
-        return line, column
-    before = text.count("\n", start, found.start())
-    if not before:
-        return line, column + found.start() - start
-    return line + before, found.start() - text.rfind("\n", 0, found.start())
+        text, starts = found_text
+        start = starts[line - 1] + column - 1
+        end = text.find(">", start)
+        found = re.compile(rf"(?<![\w:.-]){re.escape(attribute)}\s*=").search(
+            text, start, end if end >= 0 else len(text))
+        if found is None:
+            return line, column
+        before = text.count("\n", start, found.start())
+        if not before:
+            return line, column + found.start() - start
+        return line + before, found.start() - starts[line + before - 1] + 1
 
 
 def _text_of(file: str) -> str | None:
