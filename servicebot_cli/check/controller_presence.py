@@ -62,16 +62,16 @@ def presence_issues(found: Sections, display: str) -> Iterator[Issue]:
     controllers (a file of ``controller_manager`` alone may leave them to other files).
     """
     types = type_nodes(found)
+    nameable = [name for name in types if _NODE_NAME.fullmatch(name) or substituted(name)]
     for name, node in types.items():
-        if not _NODE_NAME.fullmatch(name) and not substituted(name):
+        if name not in nameable:
             yield Issue("SB608", f"controller_manager declares '{name}': a controller's name is "
                         "its node's, which rclcpp refuses unless it is letters, digits and '_' "
                         "(not a digit first), so the controller manager cannot load it",
                         where=at(display, node.start_mark),
                         fix=f"declare it as '{_node_part(name)}': it runs in the controller "
                             "manager's namespace")
-    without = [name for name in types if name not in found
-               and (_NODE_NAME.fullmatch(name) or substituted(name))]
+    without = [name for name in nameable if name not in found]
     stray = [name for name in found if name != "controller_manager" and name not in types]
     renamed: dict[str, str] = {}
     for name in stray:

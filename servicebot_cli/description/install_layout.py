@@ -57,14 +57,24 @@ def installed_from(missing: Path) -> InstalledFrom | None:
         return None
     name, package_dir, relative, rules = placed
     for source_dir, installed_dir in rules:
-        try:
-            rest = relative.relative_to(installed_dir) if installed_dir else relative
-        except ValueError:
+        rest = _below(relative, installed_dir)
+        if rest is None:
             continue
         source = package_dir / source_dir / rest
         if os.path.isfile(source):
             return InstalledFrom(name, package_dir, source, source_dir, installed_dir)
     return None
+
+
+def _below(path: PurePosixPath, directory: str) -> PurePosixPath | None:
+    """``path`` relative to ``directory``, a rule's side; None where it is not under it.
+
+    ``directory`` "" is the top (of the package, or of its share directory).
+    """
+    try:
+        return path.relative_to(directory) if directory else path
+    except ValueError:
+        return None
 
 
 def _placed(path: Path, directory: Path
@@ -124,9 +134,8 @@ def included_when_installed(includer: Path, relative: str) -> Path | None:
         return None
     _, package_dir, inside, rules = placed
     for source_dir, installed_dir in rules:
-        try:
-            rest = inside.relative_to(source_dir) if source_dir else inside
-        except ValueError:
+        rest = _below(inside, source_dir)
+        if rest is None:
             continue
         target = posixpath.normpath(str(PurePosixPath(installed_dir or ".") / rest.parent
                                         / relative))

@@ -416,7 +416,7 @@ class _Tracer:
         _refuse_include_cycle(xacro.filestack, len(self.files), xacro.XacroException)
         data = self.top_data if not self.files else None
         why = not_a_file(path) if data is None else None
-        if why is not None and why not in ("does not exist",) and not why.startswith("cannot"):
+        if why is not None and why != "does not exist" and not why.startswith("cannot"):
             xacro.filestack.pop()  # a pipe or a device: no file to include
             raise xacro.XacroException(f"cannot include '{filename}': it {why}")
         try:

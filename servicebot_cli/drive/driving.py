@@ -189,17 +189,16 @@ def _drive_then_stop(loop: DriveLoop, settings: StreamSettings, source: Source,
         confirmed = loop.stop_motors()
         if loop.port is not None:
             loop.port.close()
+    travel_rad = max(map(abs, loop.commander.travel_rad), default=0.0)
     if isinstance(failure, WheelsStill):
         confirmed = False  # counts that froze with the wheels show nothing stopping
-    elif confirmed and loop.stall.never_moved() and max(
-            map(abs, loop.commander.travel_rad), default=0.0) >= loop.stall.least_travel_rad:
+    elif confirmed and loop.stall.never_moved() and travel_rad >= loop.stall.least_travel_rad:
         confirmed = False  # counts that never changed show nothing stopping
         if failure is None:
             failure = StopUnconfirmed(
                 f"stop not confirmed: no encoder on {loop.where} counted once while the wheels "
-                f"were commanded to turn up to {max(map(abs, loop.commander.travel_rad)):.2g} "
-                "rad, so nothing shows them stopped (an encoder cable pulled, or the motor "
-                "power off?)")
+                f"were commanded to turn up to {travel_rad:.2g} rad, so nothing shows them "
+                "stopped (an encoder cable pulled, or the motor power off?)")
     if failure is None and not confirmed and loop.inbox.hello is not None:
         failure = StopUnconfirmed(
             f"stop not confirmed: the firmware on {loop.where} did not report the wheels "
