@@ -15,7 +15,7 @@ from servicebot_cli.check import values
 from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound, RemoteMesh, case_twin
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.packages import FileTally
-from servicebot_cli.check.syntax import URDF_VERSION
+from servicebot_cli.check.syntax import urdf_version
 
 if TYPE_CHECKING:
     from servicebot_cli.description.elements import Link, Shape
@@ -40,10 +40,10 @@ def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
 
 def _capsule(robot: RobotDescription, where: str, capsule: ET.Element) -> Issue:
     """SB407: urdfdom reads a capsule only in a ``<robot version="1.1">`` or later."""
-    version = URDF_VERSION.fullmatch(robot.root.get("version") or "1.0")
-    if version is not None and (int(version[1]), int(version[2])) >= (1, 1):
+    version = urdf_version(robot.root)
+    if version is not None and version >= (1, 1):
         return Issue("SB407", f"the {where} is a capsule: urdfdom (ROS 2) and Pinocchio read "
-                     f"it in this URDF {version[1]}.{version[2]} file, older URDF readers drop "
+                     f"it in this URDF {version[0]}.{version[1]} file, older URDF readers drop "
                      "the shape", capsule,
                      fix="a cylinder and two spheres, for tools without URDF 1.1")
     return Issue("SB407", f"the {where} is a capsule, which urdfdom reads only from URDF 1.1 "

@@ -43,8 +43,7 @@ def check(root: ET.Element) -> Iterator[Issue]:
             yield Issue("SB015", f"{count} <{tag}> elements, over the limit of {MAX_LINKS}; "
                         "refused", root)
             return
-    version = URDF_VERSION.fullmatch(root.get("version") or "1.0")
-    newer = version is not None and (int(version[1]), int(version[2])) >= (1, 2)
+    newer = (urdf_version(root) or (0, 0)) >= (1, 2)
     for child in root:
         if not isinstance(child.tag, str):
             continue
@@ -81,6 +80,12 @@ def _robot_attributes(root: ET.Element) -> Iterator[Issue]:
             yield Issue("SB016", f"version '{version}' is not in the form x.y", root)
         elif not (int(match.group(1)) == 1 and int(match.group(2)) <= 2):
             yield Issue("SB016", f"version '{version}': only 1.0 to 1.2 are supported", root)
+
+
+def urdf_version(root: ET.Element) -> tuple[int, int] | None:
+    """``<robot version>`` as urdfdom reads it (1.0 where it is not written); None: unread."""
+    version = URDF_VERSION.fullmatch(root.get("version") or "1.0")
+    return None if version is None else (int(version[1]), int(version[2]))
 
 
 def _is_extension(tag: str) -> bool:
