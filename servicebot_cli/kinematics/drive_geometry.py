@@ -138,8 +138,10 @@ def drive_geometry(robot: RobotDescription, meshes: MeshPoints | None = None) ->
                 <= LARGEST_RADIUS_M):
             raise DescriptionError(
                 f"{robot.display}: wheel joint '{wheel.joint}' rolls on a radius of "
-                f"{wheel.radius_m:g} m, which no wheel has; give its cylinder's real radius "
-                f"(from {SMALLEST_RADIUS_M:g} to {LARGEST_RADIUS_M:g} m)")
+                f"{wheel.radius_m:g} m, which no wheel has (from {SMALLEST_RADIUS_M:g} to "
+                f"{LARGEST_RADIUS_M:g} m); draw it at its real size in metres: a cylinder's or "
+                "sphere's radius, or a mesh with the scale that makes its units metres "
+                "(scale=\"0.001 0.001 0.001\" for millimetres)")
     left_y = np.mean([w.position_m[1] for w in sides["left"]])
     right_y = np.mean([w.position_m[1] for w in sides["right"]])
     return DriveGeometry(

@@ -129,3 +129,18 @@ def test_drive_finds_wheel_meshes_in_the_packages_it_is_given(tmp_path):
     motors = motor_map(load(source), source.resolver())
     assert motors.geometry.wheel_radius_m == pytest.approx(RADIUS_M, abs=1e-6)
     assert motor_map(load(source)).geometry.wheel_radius_m == pytest.approx(0.1)
+
+
+def test_a_wheel_mesh_in_millimetres_without_a_scale_is_refused_in_mesh_words(run, tmp_path):
+    """A 650 mm wheel mesh without its scale is a wheel of 325 m: simulate refused it asking
+    for "its cylinder's real radius", where the wheel is a mesh that needs a scale."""
+    path = _robot(tmp_path)
+    path.write_text(path.read_text().replace(' scale="0.001 0.001 0.001"', ''))
+    for side, sign in (("left", 1), ("right", -1)):
+        (tmp_path / f"wheel_{side}.stl").write_bytes(wheel_stl(325.0, 20, sign * 15))
+    result = run("simulate", path, "--headless", "--duration-s", "0.5", "--out", tmp_path / "r")
+    assert result.exit_code == 2
+    assert "rolls on a radius of 325 m" in result.output
+    assert 'scale="0.001 0.001 0.001" for millimetres' in result.output
+    assert "cylinder's real radius" not in result.output
+    assert not (tmp_path / "r").exists()
