@@ -16,6 +16,7 @@ import re
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
+from servicebot_cli.check import include_names
 from servicebot_cli.check.names import SRDF_ELEMENTS
 from servicebot_cli.common.inputs import read_again
 from servicebot_cli.description.install_layout import installed_source
@@ -230,8 +231,9 @@ def includers(paths: list[Path], by: list[Path] | None = None, *,
     A filename is read as xacro reads it, through :mod:`install_layout`: relative to the
     including file, or ``$(find PKG)/REL`` under the directory of package PKG (a package
     holding one of ``paths``), or the source file its install rules put there
-    (``$(find PKG)/urdf/x.xacro`` from ``description/urdf/x.xacro``). Computed names
-    (``${...}``, ``$(arg ...)``) name nothing.
+    (``$(find PKG)/urdf/x.xacro`` from ``description/urdf/x.xacro``). A computed name
+    (``${...}``, ``$(arg ...)``) names a file only where the including file's own plain
+    constants compute it (:mod:`include_names`).
     """
     included: dict[Path, Path] = {}
     for found, path in _inclusions(paths, by, in_comments):
@@ -343,6 +345,9 @@ def _include_targets(path: Path, *, in_comments: bool = False) -> list[str]:
         return []
     if not in_comments:
         text = without_comments(text)
-    targets = ((double or single).decode("utf-8", "replace").strip()
-               for double, single in _INCLUDE.findall(text))
-    return [t for t in targets if t and "${" not in t and "$(arg" not in t]
+    targets = [(double or single).decode("utf-8", "replace").strip()
+               for double, single in _INCLUDE.findall(text)]
+    if any("${" in t or "$(arg" in t for t in targets):  # the file's own constants in them
+        properties, arguments = include_names.constants(text)
+        targets = [include_names.substituted(t, properties, arguments) or "" for t in targets]
+    return [t for t in targets if t]

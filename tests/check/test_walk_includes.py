@@ -294,3 +294,47 @@ def test_a_part_whose_includer_stopped_at_a_missing_package_is_not_checked_alone
     assert result.exit_code == 0, result.stdout
     document = json.loads(result.stdout)
     assert [f["code"] for file in document["files"] for f in file["findings"]] == ["SB007"]
+
+
+def _included_by_name(tmp_path: Path, include: str, constants: str) -> Path:
+    """A package whose robot includes its part by the ``include`` filename."""
+    package = tmp_path / "ws" / "src" / "mypkg"
+    (package / "urdf").mkdir(parents=True)
+    (package / "package.xml").write_text('<package format="3"><name>mypkg</name></package>')
+    (package / "urdf" / "part.xacro").write_text(
+        f'<robot name="part" {XACRO_NS}><link name="${{robot_name}}_sensor"/><joint '
+        'name="${robot_name}_sensor_joint" type="fixed"><parent link="base_link"/><child '
+        'link="${robot_name}_sensor"/></joint></robot>')
+    (package / "urdf" / "robot.urdf.xacro").write_text(
+        f'<robot name="r" {XACRO_NS}>{constants}<xacro:property name="robot_name" value="r"/>'
+        f'<link name="base_link"/><xacro:include filename="{include}"/></robot>')
+    return package
+
+
+def test_an_include_named_by_the_files_own_property_is_left_out(run, tmp_path):
+    # RoverSimulation: $(find ${package_name})/urdf/..., package_name a property beside it;
+    # the parts were checked alone and failed (SB006: name 'robot_name' is not defined)
+    package = _included_by_name(tmp_path, "$(find ${package_name})/urdf/part.xacro",
+                       '<xacro:property name="package_name" value="mypkg"/>')
+    assert [p.name for p in walk(package)] == ["robot.urdf.xacro"]
+    result = run("check", package, "--isolated", "--format", "json")
+    assert result.exit_code == 0, result.output
+    (checked,) = json.loads(result.stdout)["files"]
+    assert checked["file"].endswith("robot.urdf.xacro") and checked["findings"] == []
+
+
+def test_an_include_named_by_an_arguments_default_is_left_out(tmp_path):
+    package = _included_by_name(tmp_path, "$(find mypkg)/$(arg parts)/part.xacro",
+                       '<xacro:arg name="parts" default="urdf"/>')
+    assert [p.name for p in walk(package)] == ["robot.urdf.xacro"]
+
+
+def test_a_name_the_file_gives_two_values_or_an_expression_names_nothing(tmp_path):
+    # which value xacro takes depends on where the include stands: the part is checked
+    twice = _included_by_name(tmp_path / "a", "$(find ${package_name})/urdf/part.xacro",
+                     '<xacro:property name="package_name" value="mypkg"/>'
+                     '<xacro:property name="package_name" value="other"/>')
+    computed = _included_by_name(tmp_path / "b", "$(find ${package_name})/urdf/part.xacro",
+                        '<xacro:property name="package_name" value="${\'my\' + \'pkg\'}"/>')
+    for package in (twice, computed):
+        assert [p.name for p in walk(package)] == ["part.xacro", "robot.urdf.xacro"]
