@@ -1,7 +1,8 @@
 """SB519: a ROS 1 parameter in a Gazebo plugin of a file whose plugins are ROS 2's.
 
-One Gazebo runs every plugin of a file. A ``<ros>`` block in one of them makes the file ROS
-2's (gazebo_ros), whose gazebo_plugins read none of gazebo_ros_pkgs' ROS 1 names:
+One Gazebo runs every plugin of a file. A ``<ros>`` block in one of them, or a plugin only
+ROS 2 has (``libgazebo_ros2_control.so``), makes the file ROS 2's (gazebo_ros), whose
+gazebo_plugins read none of gazebo_ros_pkgs' ROS 1 names:
 tortoisebot's ROS 2 camera writes ``<frameName>camera</frameName>``, and Gazebo stamps its
 images with the link it carries the camera on. Other packages' plugins may read them
 (velodyne_simulator's ROS 2 plugin reads ``<frameName>``). Pure.
@@ -9,10 +10,11 @@ images with the link it carries the camera on. Other packages' plugins may read 
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue
+from servicebot_cli.description.extensions import ROS2_ONLY_PLUGINS
 
 if TYPE_CHECKING:
     from servicebot_cli.description.extensions import Plugin
@@ -42,10 +44,18 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     """SB519 for each ROS 1 parameter of a plugin in a file whose plugins are ROS 2's."""
     for plugin in robot.plugins:
         if plugin.ros2_file:
-            yield from _ros1_names(plugin)
+            yield from _ros1_names(plugin, _evidence(robot.plugins))
 
 
-def _ros1_names(plugin: Plugin) -> Iterator[Issue]:
+def _evidence(plugins: Sequence[Plugin]) -> str:
+    """What makes the file's plugins ROS 2's: a ``<ros>`` block, or a plugin only ROS 2 has."""
+    if any(p.has_ros_block for p in plugins):
+        return "a <ros> block"
+    only = next(p.filename for p in plugins if p.filename in ROS2_ONLY_PLUGINS)
+    return f"'{only}' exists for ROS 2 only"
+
+
+def _ros1_names(plugin: Plugin, evidence: str) -> Iterator[Issue]:
     """One SB519 for the plugin, at its first ROS 1 parameter, naming them all."""
     if plugin.element is None:
         return
@@ -57,8 +67,8 @@ def _ros1_names(plugin: Plugin) -> Iterator[Issue]:
     one = len(tags) == 1
     shown = ", ".join(f"<{tag}>" for tag in tags)
     yield Issue("SB519", f"plugin '{plugin.filename}': {shown} {'is a' if one else 'are'} ROS 1 "
-                f"parameter{'' if one else 's'}, and the file's plugins are ROS 2's (a <ros> "
-                "block): gazebo_plugins' ROS 2 versions read no ROS 1 name, so "
+                f"parameter{'' if one else 's'}, and the file's plugins are ROS 2's ({evidence}): "
+                "gazebo_plugins' ROS 2 versions read no ROS 1 name, so "
                 f"{'it does' if one else 'they do'} nothing and the plugin keeps its defaults",
                 found[tags[0]], fix="write " + "; ".join(
                     f"{ROS2_NAMES[tag]} for <{tag}>" for tag in tags))

@@ -210,13 +210,20 @@ GAZEBO_ROS_PLUGINS = frozenset(f"libgazebo_ros_{name}.so" for name in (
 other packages' ROS 2 plugins may (velodyne_simulator's reads ``<frameName>``)."""
 
 
-def for_ros2_where_one_is(blocks: tuple[GazeboBlock, ...]) -> tuple[GazeboBlock, ...]:
-    """``blocks`` with gazebo_plugins' plugins marked ``ros2_file`` where one has ``<ros>``.
+ROS2_ONLY_PLUGINS = frozenset(("libgazebo_ros2_control.so", "libgazebo_ros_ray_sensor.so",
+                               "libgazebo_ros_ackermann_drive.so", "libgazebo_ros_gps_sensor.so"))
+"""Gazebo Classic plugins that exist for ROS 2 only (ROS 1's were gazebo_ros_control and the
+laser plugins; it had no Ackermann drive or GPS sensor in gazebo_plugins)."""
 
-    One install of Gazebo runs every plugin of the file: ROS 2's where one is written for it.
+
+def for_ros2_where_one_is(blocks: tuple[GazeboBlock, ...]) -> tuple[GazeboBlock, ...]:
+    """``blocks`` with gazebo_plugins' plugins marked ``ros2_file`` where one is ROS 2's.
+
+    One install of Gazebo runs every plugin of the file: ROS 2's where one is written for it
+    (a ``<ros>`` block) or exists for ROS 2 only (:data:`ROS2_ONLY_PLUGINS`).
     """
     plugins = [p for b in blocks for p in (*b.plugins, *(q for s in b.sensors for q in s.plugins))]
-    if not any(p.has_ros_block for p in plugins):
+    if not any(p.has_ros_block or p.filename in ROS2_ONLY_PLUGINS for p in plugins):
         return blocks
 
     def marked(found: tuple[Plugin, ...]) -> tuple[Plugin, ...]:

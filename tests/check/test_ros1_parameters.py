@@ -124,3 +124,29 @@ def test_inspect_lists_the_topics_a_ros2_drive_uses(tmp_path):
     assert result.returncode == 0, result.stderr
     names = {topic["name"] for topic in json.loads(result.stdout)["topics"]["topics"]}
     assert "/cmd_vel" in names and not names & {"/cmd1", "/odom1", "cmd1", "odom1"}
+
+
+def test_a_plugin_only_ros2_has_makes_the_file_ros2s(tmp_path):
+    """RoverSimulation's drive: gazebo_ros2_control and gazebo_ros_ray_sensor (both ROS 2's
+    only), no <ros> block, and a laser with ROS 1's <topicName>/<frameName>: inspect said
+    /scan and lidar_link, which ROS 2's plugin does not read, and check said nothing."""
+    laser = ('<link name="lidar_link"/><joint name="lidar_joint" type="fixed"><parent '
+             'link="base_link"/><child link="lidar_link"/><origin xyz="0 0 0.2"/></joint>'
+             '<gazebo reference="lidar_link"><sensor type="ray" name="laser"><update_rate>10'
+             '</update_rate><ray><scan><horizontal><samples>90</samples><min_angle>-1'
+             '</min_angle><max_angle>1</max_angle></horizontal></scan><range><min>0.1</min>'
+             '<max>10</max></range></ray><plugin name="laser_plugin" '
+             'filename="libgazebo_ros_ray_sensor.so"><topicName>/scan</topicName><frameName>'
+             'lidar_link</frameName><output_type>sensor_msgs/LaserScan</output_type></plugin>'
+             '</sensor></gazebo><gazebo><plugin filename="libgazebo_ros2_control.so" '
+             'name="gazebo_ros2_control"><parameters>c.yaml</parameters></plugin></gazebo>')
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r"><link name="base_link"><collision><geometry><box '
+                    f'size="0.2 0.15 0.05"/></geometry></collision></link>{laser}</robot>')
+    ((severity, message, _),) = _sb519(path)
+    assert severity == "warning" and "<topicName>, <frameName> are ROS 1 parameters" in message
+    assert "('libgazebo_ros2_control.so' exists for ROS 2 only)" in message
+    result = run_servicebot("inspect", path, "--section", "sensors", "--format", "json")
+    (laser_spec,) = json.loads(result.stdout)["sensors"]
+    assert laser_spec["frame"] == "base_link"  # Gazebo lumps lidar_link into it
+    assert [t["name"] for t in laser_spec["topics"]] == ["laser_plugin/out"]
