@@ -12,12 +12,17 @@ floors the intensities of scans and clouds.
 gazebo_ros_pkgs' ROS 1 plugins publish one type each: ``gazebo_ros_laser`` and
 ``gazebo_ros_gpu_laser`` LaserScan, ``gazebo_ros_block_laser`` PointCloud, ``gazebo_ros_range``
 Range; the two laser plugins copy every vertical ring's ranges into their LaserScan.
-Another ROS plugin publishes its ``<output_type>`` when it names one, else LaserScan.
-gz-sim's lidars publish LaserScan on their ``<topic>`` (ros_gz_bridge keeps the type).
+velodyne_simulator's ``gazebo_ros_velodyne_laser`` (and its GPU twin) publish PointCloud2
+with a ``ring`` and a ``time`` field (``GazeboRosVelodyneLaser.cpp``), keeping the points
+strictly between ``max(<min_range>, ray min)`` and ``min(<max_range>, ray max)`` and not
+below ``<min_intensity>`` (:func:`velodyne_band`). Another ROS plugin publishes its
+``<output_type>`` when it names one, else LaserScan. gz-sim's lidars publish LaserScan on
+their ``<topic>`` (ros_gz_bridge keeps the type).
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from servicebot_cli.description.elements import parse_float
@@ -36,6 +41,7 @@ _ROS1_TYPES = (("gazebo_ros_block_laser", POINT_CLOUD), ("gazebo_ros_range", RAN
                ("gazebo_ros_laser", LASER_SCAN), ("gazebo_ros_gpu_laser", LASER_SCAN))
 _ROS1_LASERS = ("gazebo_ros_laser", "gazebo_ros_gpu_laser")
 _RADIATION = {"infrared": INFRARED, "ultrasound": ULTRASOUND}
+VELODYNE_PLUGINS = ("libgazebo_ros_velodyne_laser.so", "libgazebo_ros_velodyne_gpu_laser.so")
 
 
 @dataclass(frozen=True)
@@ -51,6 +57,9 @@ class RayOutput:
         every_ring: Whether a LaserScan holds every vertical ring's ranges, ring after ring
             (ROS 1 ``gazebo_ros_laser`` and ``gazebo_ros_gpu_laser`` copy the whole Gazebo
             scan), not only the middle ring (ROS 2's conversion, ros_gz_bridge).
+        velodyne: Whether velodyne_simulator's plugin publishes it: a PointCloud2 of
+            ``x y z intensity ring time``, column after column, and no point whose intensity
+            is below ``min_intensity``.
     """
 
     message: str
@@ -58,6 +67,7 @@ class RayOutput:
     radiation_type: int = INFRARED
     min_intensity: float = 0.0
     every_ring: bool = False
+    velodyne: bool = False
 
 
 def ray_output(plugin: Plugin | None) -> RayOutput | None:
@@ -65,6 +75,10 @@ def ray_output(plugin: Plugin | None) -> RayOutput | None:
     if plugin is None:
         return RayOutput(LASER_SCAN)
     written = (param(plugin.params, "output_type") or "").strip()
+    if plugin.filename in VELODYNE_PLUGINS:
+        floor = parse_float(param(plugin.params, "min_intensity"))
+        return RayOutput(POINT_CLOUD2, min_intensity=-math.inf if floor is None else floor,
+                         velodyne=True)
     if "gazebo_ros_ray_sensor" not in plugin.filename:
         own = next((kind for name, kind in _ROS1_TYPES if name in plugin.filename), None)
         return RayOutput(own or _ros2_spelling(written or "sensor_msgs/LaserScan"),
@@ -77,6 +91,20 @@ def ray_output(plugin: Plugin | None) -> RayOutput | None:
     floor = parse_float(param(plugin.params, "min_intensity"))
     return RayOutput(message, True, INFRARED if radiation is None else radiation,
                      0.0 if floor is None else floor)
+
+
+def velodyne_band(plugin: Plugin, near_m: float | None, far_m: float | None
+                  ) -> tuple[float | None, float | None]:
+    """The ranges a Velodyne plugin keeps: its ``<min_range>``/``<max_range>`` within the ray's.
+
+    The plugin's own default to 0 and infinity; a value that is no number is left out.
+    """
+    low, high = (parse_float(param(plugin.params, key)) for key in ("min_range", "max_range"))
+    if low is not None and math.isfinite(low):
+        near_m = low if near_m is None else max(near_m, low)
+    if high is not None and not math.isnan(high):
+        far_m = high if far_m is None else min(far_m, high)
+    return near_m, far_m
 
 
 def _ros2_spelling(name: str) -> str:

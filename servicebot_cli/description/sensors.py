@@ -24,7 +24,12 @@ from dataclasses import dataclass
 
 from servicebot_cli.description.elements import parse_float
 from servicebot_cli.description.extensions import Params, Plugin, Sensor, param
-from servicebot_cli.description.ray_output import RayOutput, ray_output
+from servicebot_cli.description.ray_output import (
+    VELODYNE_PLUGINS,
+    RayOutput,
+    ray_output,
+    velodyne_band,
+)
 from servicebot_cli.description.ros_names import PluginNode
 
 LIDAR_TYPES = ("ray", "gpu_ray", "lidar", "gpu_lidar")
@@ -182,15 +187,22 @@ _GAUSSIAN_NOISE_PLUGINS = frozenset(("libgazebo_ros_range.so", "libgazebo_ros_bl
 
 
 def _plus_plugin_noise(noise: NoiseSpec | None, plugin: Plugin | None) -> NoiseSpec | None:
-    """``noise`` with a ROS 1 plugin's ``<gaussianNoise>`` added.
+    """``noise`` with a ROS 1 plugin's ``<gaussianNoise>`` added, or a Velodyne plugin's.
 
     gazebo_ros_range, gazebo_ros_block_laser and gazebo_ros_imu_sensor add N(0, that) to
     every reading, on top of the sensor's own noise: the two standard deviations add in
-    quadrature.
+    quadrature. velodyne_simulator's plugins add their ``<gaussian_noise>`` (ROS 1's:
+    ``<gaussianNoise>``) to every range they keep.
     """
-    if plugin is None or plugin.filename not in _GAUSSIAN_NOISE_PLUGINS or plugin.for_ros2:
+    if plugin is None:
+        return noise
+    if plugin.filename in VELODYNE_PLUGINS:
+        sigma = parse_float(param(plugin.params, "gaussian_noise")
+                            or param(plugin.params, "gaussianNoise"))
+    elif plugin.filename not in _GAUSSIAN_NOISE_PLUGINS or plugin.for_ros2:
         return noise  # ROS 2's read the SDF noise only
-    sigma = parse_float(param(plugin.params, "gaussianNoise"))
+    else:
+        sigma = parse_float(param(plugin.params, "gaussianNoise"))
     if sigma is None or not sigma > 0 or not math.isfinite(sigma):
         return noise
     if noise is None:
@@ -291,8 +303,10 @@ def plugin_topic(plugin: Plugin, default: str, ros1: str = "topicName", within: 
 
 
 _SENSOR_FRAME_ID = frozenset(("libgazebo_ros_ray_sensor.so", "libgazebo_ros_camera.so",
-                              "libgazebo_ros_imu_sensor.so", "libgazebo_ros_gps_sensor.so"))
-"""gazebo_plugins' ROS 2 sensor plugins that stamp ``gazebo_ros::SensorFrameID``."""
+                              "libgazebo_ros_imu_sensor.so", "libgazebo_ros_gps_sensor.so",
+                              *VELODYNE_PLUGINS))
+"""ROS 2 sensor plugins that stamp ``gazebo_ros::SensorFrameID`` (gazebo_plugins', and
+velodyne_simulator's)."""
 def _frame(sensor: Sensor) -> str | None:
     """The frame its messages are stamped with.
 
@@ -319,13 +333,16 @@ def lidar_spec(sensor: Sensor) -> LidarSpec:
     plugin = ros_plugin(sensor)
     output = ray_output(plugin)
     topic = plugin_topic(plugin, "~/out") if plugin else gz_topic(sensor)
+    near_m, far_m = _float(p, f"{root}/range/min"), _float(p, f"{root}/range/max")
+    if plugin is not None and output is not None and output.velodyne:
+        near_m, far_m = velodyne_band(plugin, near_m, far_m)
     return LidarSpec(
         samples=_samples(p, f"{root}/scan/horizontal/samples"),
         resolution=_float(p, f"{root}/scan/horizontal/resolution"),
         min_angle_rad=_float(p, f"{root}/scan/horizontal/min_angle"),
         max_angle_rad=_float(p, f"{root}/scan/horizontal/max_angle"),
-        min_range_m=_float(p, f"{root}/range/min"),
-        max_range_m=_float(p, f"{root}/range/max"),
+        min_range_m=near_m,
+        max_range_m=far_m,
         range_resolution_m=_float(p, f"{root}/range/resolution"),
         update_rate_hz=sensor.update_rate_hz,
         noise=_plus_plugin_noise(_noise(p, f"{root}/noise"), plugin),

@@ -11,6 +11,8 @@ sensor_msgs.hpp``), stamped in the plugin's frame:
   frame, ``x = r cos(i) cos(a)``, ``y = r cos(i) sin(a)``, ``z = r sin(i)`` (azimuth ``a``
   from the horizontal ``min_angle``, inclination ``i`` from the vertical one), with fields
   ``x``, ``y``, ``z`` and ``intensity``, float32, 16 bytes a point; height 1, dense.
+- *PointCloud2* of velodyne_simulator's plugin: the points column after column, with a
+  ``ring`` and a ``time`` field (:func:`velodyne_cloud`).
 - *PointCloud*: the same points, and one ``intensity`` channel.
 - *Range*: the least range over every ray (float32's largest when none is less), the field
   of view the larger of the horizontal and vertical spans, and ``<radiation_type>``.
@@ -39,7 +41,7 @@ Serializer = Callable[[Scans, str], ByteRows | Payloads]
 """A ray sensor's scans of a piece and its frame to their messages' payloads."""
 Fill = Callable[[npt.NDArray[np.bool_], int], Mapping[str, npt.NDArray[Any] | float]]
 """The fields of the messages of the scans a mask selects, each with this many points."""
-FLOAT32, FLOAT32_MAX = 7, float(np.finfo(np.float32).max)
+FLOAT32, FLOAT32_MAX, UINT16 = 7, float(np.finfo(np.float32).max), 4
 CLOUD_FIELDS = ("x", "y", "z", "intensity")
 POINT_BYTES = 4 * len(CLOUD_FIELDS)
 
@@ -50,7 +52,7 @@ def unpublished_note(spec: LidarSpec) -> str | None:
     LaserScan from any plugin; the other types as the ROS 2 ray sensor plugin converts them.
     """
     output = spec.output
-    if output is None or output.message == LASER_SCAN or output.ray_sensor:
+    if output is None or output.message == LASER_SCAN or output.ray_sensor or output.velodyne:
         return None
     return (f"note: /{(spec.topic or '').lstrip('/')} ({output.message}) is not published: "
             "the simulator writes that type only as gazebo_ros_ray_sensor converts a scan")
@@ -59,6 +61,8 @@ def unpublished_note(spec: LidarSpec) -> str | None:
 def serializer_for(spec: LidarSpec) -> tuple[str, Serializer]:
     """The message type of ``spec``'s scans and the function that serializes a piece's."""
     message = spec.output.message if spec.output else LASER_SCAN
+    if spec.output is not None and spec.output.velodyne:
+        return message, velodyne_cloud
     serializers: dict[str, Serializer] = {
         POINT_CLOUD2: point_cloud2, POINT_CLOUD: point_cloud, RANGE: range_message}
     return message, serializers.get(message, laser_scan)
@@ -160,6 +164,51 @@ def point_cloud2(scans: Scans, frame: str) -> Payloads:
 
     return _by_size(scans.times_s, finite, layout, lambda keep, count: {
         "data": cloud[keep].reshape(-1, len(CLOUD_FIELDS) * count).view(np.uint8)})
+
+
+def velodyne_cloud(scans: Scans, frame: str) -> Payloads:
+    """PointCloud2 as velodyne_simulator's plugin publishes it.
+
+    Column after column, each column's rings in order: ``x y z intensity`` float32,
+    ``ring`` uint16, ``time`` float32 (0), 22 bytes a point; only rays within the range
+    band (the spec's, already narrowed to the plugin's) and not below ``<min_intensity>``
+    (every intensity here is 0).
+    """
+    points, finite = _points(scans)
+    rings = len(vertical_angles(scans.spec))
+    columns = points.shape[1] // rings
+    points = points.reshape(len(points), rings, columns, 3).transpose(0, 2, 1, 3)
+    kept = finite.reshape(len(finite), rings, columns).transpose(0, 2, 1).reshape(len(finite), -1)
+    if scans.spec.output is not None and scans.spec.output.min_intensity > 0.0:
+        kept = np.zeros_like(kept)
+    record = np.dtype([("xyz", "<f4", 3), ("intensity", "<f4"), ("ring", "<u2"),
+                       ("time", "<f4")])
+    cloud = np.zeros(kept.shape, record)
+    cloud["xyz"] = points.reshape(len(points), -1, 3)
+    cloud["ring"] = np.tile(np.arange(rings, dtype=np.uint16), columns)
+    fields = (("x", 0, FLOAT32), ("y", 4, FLOAT32), ("z", 8, FLOAT32),
+              ("intensity", 12, FLOAT32), ("ring", 16, UINT16), ("time", 18, FLOAT32))
+
+    def layout(count: int) -> cdr.Layout:
+        out = cdr.Layout()
+        out.header(frame)
+        out.constant("<I", 1)  # height: one unordered row
+        out.constant("<I", count)  # width
+        out.constant("<I", len(fields))
+        for name, offset, kind in fields:
+            out.string(name)
+            out.constant("<I", offset)
+            out.constant("<B", kind)
+            out.constant("<I", 1)  # count
+        out.constant("<B", 0)  # is_bigendian
+        out.constant("<I", record.itemsize)  # point_step
+        out.constant("<I", record.itemsize * count)  # row_step
+        out.sequence("data", "u1", record.itemsize * count)
+        out.constant("<B", 1)  # is_dense
+        return out
+
+    return _by_size(scans.times_s, kept, layout, lambda keep, count: {
+        "data": cloud[keep].view(np.uint8).reshape(-1, record.itemsize * count)})
 
 
 def point_cloud(scans: Scans, frame: str) -> Payloads:
