@@ -250,11 +250,13 @@ def _chain(tree: KinematicTree, first: Joint, parent_joint: Mapping[str, Joint],
 
 def _adds_no_reach(joint: Joint, points: list[FloatArray], i: int,
                    transforms: Mapping[str, FloatArray]) -> bool:
+    if _travel_m(joint) > 0:  # a lift adds its travel, wherever its child's frame is
+        return False
     segment = points[i + 1] - points[i]
     length = float(np.linalg.norm(segment))
     if length < 1e-12:
         return True
-    if not joint.movable or _travel_m(joint) > 0:  # a lift adds its travel
+    if not joint.movable:
         return False
     axis = transforms[joint.child or ""][:3, :3] @ np.array(joint.axis, dtype=float)
     norm = float(np.linalg.norm(axis))

@@ -103,3 +103,21 @@ def test_the_reach_ends_at_the_frame_fk_moves_not_at_a_deeper_camera(run, tmp_pa
     result = run("inspect", path, "--section", "totals", "--format", "json")
     assert json.loads(result.stdout)["totals"]["arm"] == {
         "shoulder": "rail", "tip": "ee_gripper_link", "reach_m": 3.2, "travel_m": 2.0}
+
+
+def test_a_slide_whose_tool_sits_on_its_carriage_reaches_its_travel(run, tmp_path):
+    """OnRobot's 2FG7: each finger's tip frame is fixed to its slide's carriage with no
+    offset. The slide's segment has no length, so the reach started below it: 'arm reach
+    0 m', where ik bounds it by the slide's 0.3 m."""
+    path = tmp_path / "slide.urdf"
+    path.write_text('<robot name="slide"><link name="base_link"/><link name="carriage">'
+                    f'{INERTIAL}</link><link name="finger"/>'
+                    + _joint("slide_joint", "prismatic", "base_link", "carriage", "1 0 0",
+                             "0 0 0.12", limits='lower="0" upper="0.3"')
+                    + '<joint name="finger_joint" type="fixed"><parent link="carriage"/>'
+                    '<child link="finger"/></joint></robot>')
+    result = run("inspect", path, "--section", "totals", "--format", "json")
+    assert json.loads(result.stdout)["totals"]["arm"] == {
+        "shoulder": "slide_joint", "tip": "finger", "reach_m": 0.3, "travel_m": 0.3}
+    ik = run("ik", path, "-f", "finger", "--position", "0.5", "0", "0.12")
+    assert "beyond the arm's reach (0.3 m from joint 'slide_joint')" in ik.output
