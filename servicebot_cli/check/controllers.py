@@ -52,14 +52,18 @@ ROS2_CONTROLLERS = frozenset((
 
 
 def check(found: Sections, display: str, robot: RobotDescription,
-          meshes: MeshPoints | None = None) -> Iterator[Issue]:
+          meshes: MeshPoints | None = None,
+          spawned: frozenset[str] | None = None) -> Iterator[Issue]:
     """Every issue of the controller sections ``found`` (of file ``display``) against ``robot``.
 
     ``meshes``: the vertices of mesh shapes (wheels drawn as meshes are where those are).
+    ``spawned``: the controllers checked (those a launch spawns); None: every one.
     """
     checker = _Checker(display, robot, found, meshes)
     for name, params in found.items():
         kind = checker.types.get(name)
+        if spawned is not None and name not in spawned:
+            continue
         if name != "controller_manager" and _names_joints(kind):
             for section in checker.for_this_robot(params):
                 yield from checker.section(name, section)

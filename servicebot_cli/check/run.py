@@ -12,6 +12,7 @@ import os
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from servicebot_cli.check import files, model_ahead, workers
 from servicebot_cli.check.findings import Finding, Issue
@@ -22,6 +23,9 @@ from servicebot_cli.common.errors import DescriptionError
 from servicebot_cli.description.loader import RobotSource, read_description
 from servicebot_cli.description.resources import BUNDLED_ROBOTS, CONTROLLERS_YAML, bundled_file
 from servicebot_cli.description.robot import is_xacro_name
+
+if TYPE_CHECKING:
+    from servicebot_cli.check.controller_sections import Sections
 
 
 @dataclass(frozen=True)
@@ -73,10 +77,13 @@ class ControllerTargets:
     Attributes:
         yaml_file: The YAML as given, or None for the bundled ``controllers.yaml``.
         urdfs: Descriptions to check it against; empty means both bundled robots.
+        spawned: The controllers checked against them (those a launch spawns); empty means
+            every controller of the file.
     """
 
     yaml_file: str | None = None
     urdfs: tuple[RobotSource, ...] = ()
+    spawned: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -210,6 +217,25 @@ def _checked(sources: list[tuple[RobotSource, bool]], targets: UrdfTargets,
     return [workers.report_of(outcome, settings) for outcome in outcomes]
 
 
+def _spawned(names: tuple[str, ...], found: Sections, display: str) -> frozenset[str] | None:
+    """The controllers ``--spawned`` names, each one the file configures; None: every one.
+
+    Raises:
+        DescriptionError: A name the file neither declares nor configures.
+    """
+    if not names:
+        return None
+    from servicebot_cli.check.controller_sections import controller_types
+
+    known = (set(found) | set(controller_types(found))) - {"controller_manager"}
+    unknown = [name for name in names if name not in known]
+    if unknown:
+        raise DescriptionError(
+            f"{display}: --spawned {', '.join(unknown)}: no such controller in the file "
+            f"(it has: {', '.join(sorted(known)) or 'none'}); give the names the file gives")
+    return frozenset(names)
+
+
 def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[FileReport]:
     """A report per URDF the controllers YAML is checked against."""
     from servicebot_cli.check import (
@@ -231,6 +257,7 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
     if isinstance(found, Issue):  # the YAML itself, the same against every robot: said once
         robot = read_description(sources[0])
         return [FileReport(display, tuple(place_issues(robot, [found], settings)))]
+    spawned = _spawned(targets.spawned, found, display)
     reports = []
     whole_file = [*controller_sections.file_issues(text, display),  # said once, in the first
                   *controller_params.parameter_issues(found, display),
@@ -238,7 +265,7 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
     for source in sources:
         robot = read_description(source)
         issues = [*whole_file, *controllers.check(
-            found, display, robot, file_points(source.resolver(), robot.path.parent))]
+            found, display, robot, file_points(source.resolver(), robot.path.parent), spawned)]
         whole_file = []
         reports.append(FileReport(f"{display} against {source.display}",
                                   tuple(place_issues(robot, issues, settings))))

@@ -19,6 +19,7 @@ import click
 from servicebot_cli.commands.check_options import (
     ReportOptions,
     catalogue_options,
+    comma_separated,
     refuse_catalogue_mix,
     report_options,
     settings_path,
@@ -141,12 +142,16 @@ def urdf(robot_args: RobotArgs, jobs: int | None, mesh_cache: bool, show_package
 @click.option("--package", "packages", type=PackageDir(), multiple=True, metavar="NAME=DIR",
               callback=distinct_packages,
               help="Where ROS package NAME lives, for the --urdf file's $(find) and package://.")
+@click.option("--spawned", "spawned", multiple=True, metavar="NAME[,NAME]",
+              callback=comma_separated,
+              help="Only these controllers (those your launch spawns; repeatable) are checked "
+                   "against the robot: a file shared by several robots configures others.")
 @report_options
 @catalogue_options
 @click.pass_context
 def controllers(ctx: click.Context, values: tuple[str, ...], urdfs: tuple[str, ...],
                 bundled: str | None, packages: tuple[tuple[str, str], ...],
-                report: ReportOptions) -> None:
+                spawned: tuple[str, ...], report: ReportOptions) -> None:
     """Check a ros2_control controllers YAML against the URDF (default: the bundled pair).
 
     Joint names in left_wheel_names, right_wheel_names and joints must exist and move;
@@ -156,6 +161,8 @@ def controllers(ctx: click.Context, values: tuple[str, ...], urdfs: tuple[str, .
     Examples:
       servicebot check controllers
       servicebot check controllers config/controllers.yaml --urdf my_robot.urdf.xacro
+      servicebot check controllers config/controllers.yaml --urdf arm.urdf \\
+          --spawned joint_state_broadcaster,arm_controller
     """
     from servicebot_cli.check.run import CheckRequest, ControllerTargets
     from servicebot_cli.description.loader import RobotSource
@@ -172,7 +179,7 @@ def controllers(ctx: click.Context, values: tuple[str, ...], urdfs: tuple[str, .
     if bundled:
         sources = (RobotSource.bundled(bundled),)
     _refuse_overwriting_inputs(report, [*yaml_files, *urdfs])
-    targets = ControllerTargets(yaml_files[0] if yaml_files else None, sources)
+    targets = ControllerTargets(yaml_files[0] if yaml_files else None, sources, spawned)
     _run(CheckRequest(targets, _settings(report)), report)
 
 

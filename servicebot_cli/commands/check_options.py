@@ -185,6 +185,12 @@ def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
     return tuple(code.strip() for value in values for code in value.split(",") if code.strip())
 
 
+def comma_separated(ctx: click.Context, param: click.Parameter,
+                    values: tuple[str, ...]) -> tuple[str, ...]:
+    """A repeatable option's comma-separated items, in order, each once."""
+    return tuple(dict.fromkeys(_codes(values)))
+
+
 def report_options(f: Callable[..., None]) -> Callable[..., None]:
     """Add ``--format``, ``--output``, ``--strict``, ``--select``, ``--ignore``, ``--config``,
     ``--isolated``; pass them as one ``report: ReportOptions``.
