@@ -122,12 +122,22 @@ ROS_RULES = (
          "Write a remapping as <remapping>FROM:=TO</remapping>."),
     Rule("SB519", "ros1-plugin-parameter", W,
          "A ROS 1 parameter in a Gazebo plugin of a file whose plugins are ROS 2's",
-         "One Gazebo runs every plugin of a file; a <ros> block in one of them makes the file "
+         "One Gazebo runs every plugin of a file; a <ros> block in one of them, or a plugin "
+         "only ROS 2 has (gazebo_ros2_control, gazebo_ros_ray_sensor), makes the file "
          "ROS 2's gazebo_ros, whose plugins read none of gazebo_ros_pkgs' ROS 1 names "
          "(<frameName>, <topicName>, <updateRate>): the value does nothing, and the plugin "
          "keeps its default frame, topic or rate.",
          "Write the ROS 2 name: <frame_name>, <camera_name>, a <ros><remapping> for a topic, "
          "<ros><namespace> for the namespace."),
+    Rule("SB520", "plugin-odometry-frames", W,
+         "A drive plugin's odometry frames that leave the robot without odometry in TF",
+         "A Gazebo drive plugin (diff drive, skid steer, planar move; gz-sim's DiffDrive) "
+         "broadcasts odom -> base on /tf. tf2 ignores a transform from a frame to itself "
+         "(TF_SELF_TRANSFORM), so an odometry frame equal to the base frame is never on /tf; "
+         "a base frame that is no link of the robot joins no frame robot_state_publisher "
+         "publishes, so odom and the robot's links are two trees. Only frames written in the "
+         "file are judged: a launch file may publish a default base_footprint.",
+         "Name the odometry frame odom and the base frame a link of the robot."),
     Rule("SB601", "controllers-yaml", E, "The controllers YAML cannot be read",
          "Not YAML, or not the shape of a ros2_control parameters file "
          "(controller: ros__parameters: ...).",
