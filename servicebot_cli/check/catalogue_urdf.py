@@ -277,7 +277,10 @@ URDF_RULES: tuple[Rule, ...] = (
          "inertia-factor in the settings) the values are printed with the ones that match. "
          "Collision geometry under 1 cm^3 that the mass would make denser than any material "
          "is a placeholder (Baxter's 1 mm spheres): the visual geometry stands for the body "
-         "where its volume is known (primitives, closed meshes), else nothing is compared.",
+         "where its volume is known (primitives, closed meshes), else nothing is compared. "
+         "Where the collision geometry holds an open mesh (no volume), the inertia is only "
+         "bounded: no mass within R of its centre has a moment over m R^2, R reaching the "
+         "farthest corner of the link's shapes; ten times that is reported.",
          "Use the printed values, or compute the inertia from CAD."),
     Rule("SB302", "negative-mass", E, "A negative mass",
          "Mass is positive or zero; no body has a negative mass.",

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from servicebot_cli.check import solids, values
+from servicebot_cli.check import inertia_bound, solids, values
 from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.geometry import LARGEST_M, SMALLEST_M
@@ -234,6 +234,7 @@ def _against_geometry(robot: RobotDescription, link: Link, env: CheckEnv) -> Ite
         return
     solid = _expected(robot, link, env, link.collisions)
     if solid is None or not solids.usable(solid):
+        yield from _beyond_reach(robot, link, env)
         return
     mass = _mass(link)
     have = solids.principal_moments(inertial.inertia_kg_m2)
@@ -257,6 +258,28 @@ def _against_geometry(robot: RobotDescription, link: Link, env: CheckEnv) -> Ite
         yield _in_grams(link, solid, mass)
         return
     yield _issue(link, have, solid, mass, found)
+
+
+def _beyond_reach(robot: RobotDescription, link: Link, env: CheckEnv) -> Iterator[Issue]:
+    """SB301 for an inertia beyond any the mass can have within the link's shapes.
+
+    For a link whose solid is not known (an open mesh): :mod:`.inertia_bound`.
+    """
+    inertial = link.inertial
+    assert inertial is not None and inertial.inertia_kg_m2 is not None
+    reach = inertia_bound.farthest_m(robot, link, env, np.array(inertial.origin.xyz, float))
+    mass = _mass(link)
+    if reach is None or not reach > 0:
+        return
+    have = solids.principal_moments(inertial.inertia_kg_m2)
+    most = mass * reach * reach
+    if not (math.isfinite(most) and most > 0) or not have.max() > inertia_bound.BEYOND * most:
+        return
+    yield Issue("SB301", f"link '{link.name}' inertia (principal moments {_join(have)} kg m^2) "
+                f"is more than {mass:g} kg can have within its shapes: none of them reaches "
+                f"over {reach:.3g} m from its centre of mass, so no moment exceeds "
+                f"{most:.3g} kg m^2, and it is {have.max() / most:.3g} times that",
+                inertial.element, fix="compute the inertia from the link's real shape and mass")
 
 
 def _in_grams(link: Link, solid: solids.Solid, mass: float) -> Issue:
