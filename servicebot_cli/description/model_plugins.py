@@ -16,7 +16,9 @@ Gazebo Classic's ROS 2 plugins (gazebo_ros_pkgs) name relative topics in their n
 - ``gazebo_ros_p3d``: ``odom`` out (ROS 1: ``<topicName>``), its body's ground truth;
 - ``gazebo_ros_imu`` (ROS 1 only, a model plugin: ROS 2 has the sensor plugin instead):
   ``<topicName>`` out (default ``/default_imu``), stamped ``<frameName>`` (default
-  ``<bodyName>``), the link it measures.
+  ``<bodyName>``), the link it measures;
+- hector_gazebo_plugins' ``hector_gazebo_ros_gps``: ``<topicName>`` (``fix``) and
+  ``<velocityTopicName>`` (``fix_velocity``) out.
 
 gz-sim systems publish gz-transport topics, which ros_gz_bridge shows under the same name:
 
@@ -49,6 +51,7 @@ Row = tuple[str, str, str, str | None]
 TWIST, ODOMETRY = "geometry_msgs/msg/Twist", "nav_msgs/msg/Odometry"
 TF, JOINT_STATE = "tf2_msgs/msg/TFMessage", "sensor_msgs/msg/JointState"
 IMU = "sensor_msgs/msg/Imu"
+NAV_SAT_FIX, VECTOR3_STAMPED = "sensor_msgs/msg/NavSatFix", "geometry_msgs/msg/Vector3Stamped"
 GZ_NOTE = "gz topic (ros_gz_bridge keeps the name unless configured otherwise)"
 MODEL_NOTE = GZ_NOTE + "; MODEL: the name the robot is spawned with"
 
@@ -182,6 +185,24 @@ def _imu(plugin: Plugin) -> list[Row]:
     return [("out", _absolute(plugin_topic(plugin, "/default_imu")), IMU, None)]
 
 
+def _hector_gps(plugin: Plugin) -> list[Row]:
+    """hector_gazebo_plugins' GPS (``gazebo_ros_gps.cpp``): NavSatFix on ``<topicName>``
+    (default ``fix``) and its velocity on ``<velocityTopicName>`` (``fix_velocity``), in the
+    node's ``<robotNamespace>``.
+    """  # noqa: D205
+    return [("out", _hector_topic(plugin, "topicName", "fix"), NAV_SAT_FIX, None),
+            ("out", _hector_topic(plugin, "velocityTopicName", "fix_velocity"),
+             VECTOR3_STAMPED, None)]
+
+
+def _hector_topic(plugin: Plugin, key: str, default: str) -> str:
+    """A hector plugin's topic: ``key`` as written, else ``default``, in its namespace."""
+    if _text(plugin, key):
+        return _absolute(plugin_topic(plugin, default, key))
+    namespace = _text(plugin, "robotNamespace") or _text(plugin, "ros/namespace")
+    return _absolute(f"{namespace}/{default}")
+
+
 def _p3d(plugin: Plugin) -> list[Row]:
     """``gazebo_ros_p3d``: its body's pose and twist as Odometry, the simulator's ground truth.
 
@@ -251,6 +272,7 @@ _KNOWN: tuple[tuple[tuple[str, ...], Callable[[Plugin], list[Row]]], ...] = (
     (("gazebo_ros_planar_move",), _planar_move),
     (("gazebo_ros_joint_state_publisher",), _joint_states),
     (("gazebo_ros_imu.so",), _imu),
+    (("hector_gazebo_ros_gps",), _hector_gps),
     (("gazebo_ros_p3d",), _p3d),
     (("diff-drive-system", "::DiffDrive"), _gz_diff_drive),
     (("odometry-publisher-system", "::OdometryPublisher"), _gz_odometry),
