@@ -147,8 +147,15 @@ def _unknown_reference(reference: str, names: list[str],
                     f"{hint}")
         return Issue("SB501", f"{where} names no link or joint; {hint}", element,
                      fix=f"write '${braces[0]}'" if braces is not None else None)
-    file, line, kind, written = found
+    file, line, kind, written, macro = found
     named = f"'{reference}'" if written == reference else f"'{written}' (here '{reference}')"
+    if macro is not None:
+        return Issue("SB501", f"{where} names no link or joint of this expansion; {file}:"
+                     f"{line} defines {kind} {named} in macro '{macro}', and no call of it in this "
+                     "expansion makes it (a call in a part left out, or none at all), so "
+                     "Gazebo ignores the block", element, severity=Severity.WARNING,
+                     fix=f"call macro '{macro}' where the robot needs that part; nothing if "
+                         "it is optional")
     return Issue("SB501", f"{where} names no link or joint of this expansion; {file}:{line} "
                  f"defines {kind} {named} in a part it leaves out (a xacro condition not "
                  "taken, or an include its options leave out), so Gazebo ignores the block",

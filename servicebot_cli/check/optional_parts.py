@@ -38,8 +38,11 @@ _FEWEST_LITERAL = 4
 _GENERIC = re.compile(rb"[_/.-]|link|joint|frame|base", re.IGNORECASE)
 
 
-Definition = tuple[str, int, str, str]
-"""Where a name is defined: file, line, kind (``link`` or ``joint``), the name as written."""
+Definition = tuple[str, int, str, str, str | None]
+"""Where a name is defined: file, line, kind (``link`` or ``joint``), the name as written, and
+the ``<xacro:macro>`` it is written in (None: outside every macro)."""
+
+_MACRO = re.compile(rb"<xacro:macro\b([^>]*?)(/?)>|</xacro:macro\s*>")
 
 
 def defined_elsewhere(robot: RobotDescription, names: Collection[str]) -> dict[str, Definition]:
@@ -67,6 +70,7 @@ def defined_elsewhere(robot: RobotDescription, names: Collection[str]) -> dict[s
         sources.append((path, _GAZEBO_BLOCK.sub(_line_breaks, text)))
     texts = [text for _, text in sources]
     for path, text in sources:
+        macros = _macro_spans(text)
         for match in _DEFINITION.finditer(text):
             named = _NAME.search(match[2])
             if named is None or (match[1] == b"joint" and not _TYPE.search(match[2])):
@@ -76,8 +80,31 @@ def defined_elsewhere(robot: RobotDescription, names: Collection[str]) -> dict[s
             here = (os.path.abspath(path), line) in expanded
             for name in _defined(written, wanted, texts, expanded_here=here):
                 found.setdefault(name, (display_path(path), line, match[1].decode(),
-                                        written.decode("utf-8", "replace")))
+                                        written.decode("utf-8", "replace"),
+                                        _macro_at(macros, match.start())))
     return found
+
+
+def _macro_spans(text: bytes) -> list[tuple[int, int, str]]:
+    """Each ``<xacro:macro>`` of ``text``: where its body starts and ends, and its name."""
+    spans: list[tuple[int, int, str]] = []
+    open_macros: list[tuple[int, str]] = []
+    for match in _MACRO.finditer(text):
+        if match[0].startswith(b"</"):
+            if open_macros:
+                start, name = open_macros.pop()
+                spans.append((start, match.start(), name))
+        elif not match[2]:  # <xacro:macro .../> has no body
+            named = _NAME.search(match[1])
+            name = (named[1] if named[1] is not None else named[2]) if named else b"?"
+            open_macros.append((match.end(), name.decode("utf-8", "replace")))
+    return spans
+
+
+def _macro_at(spans: list[tuple[int, int, str]], at: int) -> str | None:
+    """The innermost macro whose body holds position ``at``; None outside every one."""
+    inside = [(start, name) for start, end, name in spans if start <= at < end]
+    return max(inside)[1] if inside else None
 
 
 def _line_breaks(block: re.Match[bytes]) -> bytes:

@@ -150,8 +150,8 @@ def test_a_name_written_with_expressions_defines_the_names_it_expands_to(run, tm
     _, found = _sb501(run, robot)
     left, right = found["fr3_leftfinger"], found["fr3_rightfinger"]
     assert left["severity"] == "warning"
-    assert "defines link '${arm_id}_leftfinger' (here 'fr3_leftfinger') in a part it leaves " \
-        "out" in left["message"]
+    assert "defines link '${arm_id}_leftfinger' (here 'fr3_leftfinger') in macro 'hand', and " \
+        "no call of it in this expansion makes it (a call in a part left out" in left["message"]
     assert right["severity"] == "error"
 
 
@@ -262,3 +262,27 @@ def test_a_definition_this_expansion_expanded_with_a_prefix_leaves_nothing_out(r
     assert exit_code == 1 and found["base_footprint"]["severity"] == "error"
     assert "did you mean 'robot_base_footprint'" in found["base_footprint"]["message"]
     assert _sb501(run, robot) == (0, {})
+
+
+def test_a_link_of_a_macro_no_call_makes_names_the_macro(run, tmp_path):
+    """Curiosity's mast is defined in <xacro:macro name="mast">, called as a bare <mast/>
+    that today's xacro leaves as written: SB501 spoke of a condition not taken, or an
+    include left out, and said to check the xacro arguments, which switch on nothing."""
+    robot = tmp_path / "rover.urdf.xacro"
+    robot.write_text(f'<robot name="rover" {XACRO}><link name="base_link"/>\n'
+                     '<xacro:macro name="mast">\n<link name="camera_link"/>\n<joint '
+                     'name="camera_joint" type="fixed"><parent link="base_link"/><child '
+                     'link="camera_link"/></joint></xacro:macro>\n<xacro:macro name="wheel" '
+                     'params="side"><link name="${side}_wheel_link"/></xacro:macro>\n'
+                     '<xacro:wheel side="left"/>\n<gazebo reference="camera_link"><material>'
+                     'Gazebo/Red</material></gazebo>\n<gazebo reference="right_wheel_link">'
+                     '<mu1>1</mu1></gazebo></robot>')
+    _, found = _sb501(run, robot)
+    camera = found["camera_link"]["message"]
+    assert camera.endswith("rover.urdf.xacro:3 defines link 'camera_link' in macro 'mast', and "
+                           "no call of it in this expansion makes it (a call in a part left "
+                           "out, or none at all), so Gazebo ignores the block")
+    assert found["camera_link"]["fix"].startswith("call macro 'mast' where the robot needs")
+    assert found["camera_link"]["severity"] == "warning"
+    # a stale name no call could make stays an error, with its suggestion
+    assert found["right_wheel_link"]["severity"] == "error"
