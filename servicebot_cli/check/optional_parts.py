@@ -96,8 +96,8 @@ def _macro_spans(text: bytes) -> list[tuple[int, int, str]]:
                 spans.append((start, match.start(), name))
         elif not match[2]:  # <xacro:macro .../> has no body
             named = _NAME.search(match[1])
-            name = (named[1] if named[1] is not None else named[2]) if named else b"?"
-            open_macros.append((match.end(), name.decode("utf-8", "replace")))
+            raw = (named[1] if named[1] is not None else named[2]) if named else b"?"
+            open_macros.append((match.end(), raw.decode("utf-8", "replace")))
     return spans
 
 
