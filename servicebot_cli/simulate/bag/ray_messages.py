@@ -143,27 +143,37 @@ def point_cloud2(scans: Scans, frame: str) -> Payloads:
     points, finite = _points(scans)
     cloud = np.concatenate((points, np.full(points.shape[:2] + (1,), _intensity(scans))),
                            axis=-1).astype("<f4")
+    fields = tuple((name, 4 * index, FLOAT32) for index, name in enumerate(CLOUD_FIELDS))
+    return _by_size(scans.times_s, finite, _cloud2_layout(frame, fields, POINT_BYTES),
+                    lambda keep, count: {
+                        "data": cloud[keep].reshape(-1, len(CLOUD_FIELDS) * count).view(np.uint8)})
 
+
+def _cloud2_layout(frame: str, fields: tuple[tuple[str, int, int], ...],
+                   point_bytes: int) -> Callable[[int], cdr.Layout]:
+    """The layout of a dense, one-row PointCloud2 of ``count`` points of ``fields``.
+
+    Each field: its name, offset and PointField datatype, one value.
+    """
     def layout(count: int) -> cdr.Layout:
         out = cdr.Layout()
         out.header(frame)
         out.constant("<I", 1)  # height: one unordered row
         out.constant("<I", count)  # width
-        out.constant("<I", len(CLOUD_FIELDS))
-        for index, name in enumerate(CLOUD_FIELDS):
+        out.constant("<I", len(fields))
+        for name, offset, kind in fields:
             out.string(name)
-            out.constant("<I", 4 * index)  # offset
-            out.constant("<B", FLOAT32)
+            out.constant("<I", offset)
+            out.constant("<B", kind)
             out.constant("<I", 1)  # count
         out.constant("<B", 0)  # is_bigendian
-        out.constant("<I", POINT_BYTES)  # point_step
-        out.constant("<I", POINT_BYTES * count)  # row_step
-        out.sequence("data", "u1", POINT_BYTES * count)
+        out.constant("<I", point_bytes)  # point_step
+        out.constant("<I", point_bytes * count)  # row_step
+        out.sequence("data", "u1", point_bytes * count)
         out.constant("<B", 1)  # is_dense
         return out
 
-    return _by_size(scans.times_s, finite, layout, lambda keep, count: {
-        "data": cloud[keep].reshape(-1, len(CLOUD_FIELDS) * count).view(np.uint8)})
+    return layout
 
 
 def velodyne_cloud(scans: Scans, frame: str) -> Payloads:
@@ -188,27 +198,9 @@ def velodyne_cloud(scans: Scans, frame: str) -> Payloads:
     cloud["ring"] = np.tile(np.arange(rings, dtype=np.uint16), columns)
     fields = (("x", 0, FLOAT32), ("y", 4, FLOAT32), ("z", 8, FLOAT32),
               ("intensity", 12, FLOAT32), ("ring", 16, UINT16), ("time", 18, FLOAT32))
-
-    def layout(count: int) -> cdr.Layout:
-        out = cdr.Layout()
-        out.header(frame)
-        out.constant("<I", 1)  # height: one unordered row
-        out.constant("<I", count)  # width
-        out.constant("<I", len(fields))
-        for name, offset, kind in fields:
-            out.string(name)
-            out.constant("<I", offset)
-            out.constant("<B", kind)
-            out.constant("<I", 1)  # count
-        out.constant("<B", 0)  # is_bigendian
-        out.constant("<I", record.itemsize)  # point_step
-        out.constant("<I", record.itemsize * count)  # row_step
-        out.sequence("data", "u1", record.itemsize * count)
-        out.constant("<B", 1)  # is_dense
-        return out
-
-    return _by_size(scans.times_s, kept, layout, lambda keep, count: {
-        "data": cloud[keep].view(np.uint8).reshape(-1, record.itemsize * count)})
+    return _by_size(scans.times_s, kept, _cloud2_layout(frame, fields, record.itemsize),
+                    lambda keep, count: {
+                        "data": cloud[keep].view(np.uint8).reshape(-1, record.itemsize * count)})
 
 
 def point_cloud(scans: Scans, frame: str) -> Payloads:
