@@ -5,7 +5,8 @@ model_plugins.odometry_frames` names the two frames). tf2 ignores a transform fr
 itself (``TF_SELF_TRANSFORM``): an odometry frame written equal to the base frame is never
 on ``/tf``. A base frame that is no link of the robot joins no frame robot_state_publisher
 publishes: odom and the robot's links are two trees. Only frames written in the file are
-judged (a launch file may publish a default ``base_footprint``). Pure.
+judged (a launch file may publish a default ``base_footprint``), as tf2 reads them: without a
+leading ``/``. Pure.
 """
 
 from __future__ import annotations
@@ -40,7 +41,9 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
             continue
         odom_tag, base_tag = tags
         written = param(plugin.params, base_tag)
-        odom, base = odometry_frames(plugin, robot.name, robot.root_link or "base_link")
+        # tf2 strips a leading '/' from every frame it is given (BufferCore::setTransform)
+        odom, base = (frame.lstrip("/") for frame in odometry_frames(
+            plugin, robot.name, robot.root_link or "base_link"))
         where = _element(plugin, base_tag)
         if odom == base:  # the defaults differ: one of them is written
             yield Issue("SB520", f"plugin '{plugin.filename or plugin.name}': <{odom_tag}> and "
@@ -48,7 +51,8 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
                         "to itself (TF_SELF_TRANSFORM), so its odometry never reaches /tf",
                         where if where is not None else plugin.element,
                         fix=f"set <{odom_tag}> to the odometry frame (odom)")
-        elif written is not None and written.strip() and base not in links:
+        elif written is not None and written.strip() and links and base not in links:
+            # (a file of no link is a part of a robot, whose links are elsewhere)
             yield Issue("SB520", f"plugin '{plugin.filename or plugin.name}': <{base_tag}> "
                         f"'{base}' is no link of the robot: its odom -> {base} transform joins "
                         "no frame robot_state_publisher publishes, so the robot's links hang "

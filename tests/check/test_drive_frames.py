@@ -64,3 +64,29 @@ def test_gz_sims_diff_drive_child_frame(tmp_path):
 def test_frames_not_written_or_not_broadcast_are_not_judged(tmp_path, params):
     # ROS 2's diff drive puts nothing on /tf unless <publish_odom_tf> says so
     assert _sb520(tmp_path, params) == []
+
+
+def test_a_leading_slash_is_no_other_frame(tmp_path):
+    """tf2 strips a leading '/' from both frames (BufferCore::setTransform): ROS 2's
+    <robot_base_frame>/base_link is base_link, and /base_link to base_link is a self
+    transform."""
+    assert _sb520(tmp_path, "<publish_odom_tf>true</publish_odom_tf><robot_base_frame>"
+                  "/base_link</robot_base_frame>") == []
+    (message,) = _sb520(tmp_path, "<publish_odom_tf>true</publish_odom_tf><odometry_frame>"
+                        "/base_link</odometry_frame><robot_base_frame>base_link"
+                        "</robot_base_frame>")
+    assert "are both 'base_link'" in message
+    assert _sb520(tmp_path, "<child_frame_id>/base_link</child_frame_id>",
+                  filename="gz-sim-diff-drive-system") == []
+
+
+def test_a_part_of_no_link_has_its_links_elsewhere(tmp_path):
+    """tortoisebot's tortoisebot_plugins.gazebo: the plugins alone, checked as a file, were
+    told base_link 'is no link of the robot' and to name the base link ('None')."""
+    path = tmp_path / "plugins.gazebo"
+    path.write_text('<robot><gazebo><plugin name="d" filename="libgazebo_ros_diff_drive.so">'
+                    '<publish_odom_tf>true</publish_odom_tf><robot_base_frame>base_link'
+                    '</robot_base_frame></plugin></gazebo></robot>')
+    result = run_servicebot("check", "urdf", path, "--isolated", "--format", "json",
+                            "--select", "SB520")
+    assert findings(result.stdout) == []
