@@ -227,7 +227,9 @@ def _spawned(names: tuple[str, ...], found: Sections, display: str) -> frozenset
         return None
     from servicebot_cli.check.controller_sections import controller_types
 
-    known = (set(found) | set(controller_types(found))) - {"controller_manager"}
+    # a parameter wildcard section ('/**') configures every node: no controller's name
+    known = {name for name in (set(found) | set(controller_types(found)))
+             if "*" not in name} - {"controller_manager"}
     unknown = [name for name in names if name not in known]
     if unknown:
         raise DescriptionError(

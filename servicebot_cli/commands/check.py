@@ -179,6 +179,11 @@ def controllers(ctx: click.Context, values: tuple[str, ...], urdfs: tuple[str, .
     if bundled:
         sources = (RobotSource.bundled(bundled),)
     _refuse_overwriting_inputs(report, [*yaml_files, *urdfs])
+    if ctx.get_parameter_source("spawned") is click.core.ParameterSource.COMMANDLINE \
+            and not spawned:
+        raise click.BadParameter("give the names of the controllers the launch spawns "
+                                 "(comma-separated); without --spawned every one is checked",
+                                 param_hint="'--spawned'")
     targets = ControllerTargets(yaml_files[0] if yaml_files else None, sources, spawned)
     _run(CheckRequest(targets, _settings(report)), report)
 

@@ -78,3 +78,20 @@ def test_a_name_the_file_does_not_give_is_one_line(files):
     result = _check(files, "--urdf", "dual.urdf", "--spawned", "lft_controller")
     assert_one_line_error(result, 2, "--spawned lft_controller: no such controller in the file "
                           "(it has: arm_controller, left_controller)")
+
+
+@pytest.mark.parametrize("given", [",", "", " , "])
+def test_an_empty_list_is_refused_not_read_as_every_controller(files, given):
+    """--spawned "$LIST" with an empty LIST checked every controller, with no word of it."""
+    result = _check(files, "--urdf", "dual.urdf", "--spawned", given)
+    assert_one_line_error(result, 2, "give the names of the controllers the launch spawns")
+
+
+def test_a_parameter_wildcard_is_no_controller(files):
+    """A '/**:' section configures every node: it was listed among the controllers, and
+    --spawned '**' was taken (checking nothing)."""
+    (files / "controllers.yaml").write_text(YAML + "/**:\n  ros__parameters:\n"
+                                            "    use_sim_time: true\n")
+    result = _check(files, "--urdf", "dual.urdf", "--spawned", "**")
+    assert_one_line_error(result, 2, "--spawned **: no such controller in the file (it has: "
+                          "arm_controller, left_controller)")
