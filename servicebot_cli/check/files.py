@@ -349,5 +349,6 @@ def _include_targets(path: Path, *, in_comments: bool = False) -> list[str]:
                for double, single in _INCLUDE.findall(text)]
     if any("${" in t or "$(arg" in t for t in targets):  # the file's own constants in them
         properties, arguments = include_names.constants(text)
-        targets = [include_names.substituted(t, properties, arguments) or "" for t in targets]
+        targets = [name for t in targets
+                   for name in include_names.substituted(t, properties, arguments)]
     return [t for t in targets if t]

@@ -329,12 +329,25 @@ def test_an_include_named_by_an_arguments_default_is_left_out(tmp_path):
     assert [p.name for p in walk(package)] == ["robot.urdf.xacro"]
 
 
-def test_a_name_the_file_gives_two_values_or_an_expression_names_nothing(tmp_path):
-    # which value xacro takes depends on where the include stands: the part is checked
-    twice = _included_by_name(tmp_path / "a", "$(find ${package_name})/urdf/part.xacro",
-                     '<xacro:property name="package_name" value="mypkg"/>'
-                     '<xacro:property name="package_name" value="other"/>')
-    computed = _included_by_name(tmp_path / "b", "$(find ${package_name})/urdf/part.xacro",
-                        '<xacro:property name="package_name" value="${\'my\' + \'pkg\'}"/>')
-    for package in (twice, computed):
-        assert [p.name for p in walk(package)] == ["part.xacro", "robot.urdf.xacro"]
+def test_a_name_given_two_values_names_both_files(tmp_path):
+    """xacro takes the value defined before each include: each value names a file."""
+    package = _included_by_name(tmp_path, "$(find mypkg)/urdf/${part}.xacro",
+                                '<xacro:property name="part" value="part"/>'
+                                '<xacro:property name="part" value="other"/>')
+    (package / "urdf" / "other.xacro").write_text((package / "urdf" / "part.xacro").read_text())
+    assert [p.name for p in walk(package)] == ["robot.urdf.xacro"]
+
+
+def test_an_arguments_default_may_find_a_package(tmp_path):
+    """<xacro:arg name="dir" default="$(find q)/urdf"/> and $(arg dir)/part.xacro: the part
+    was checked alone, and failed (SB006)."""
+    package = _included_by_name(tmp_path, "$(arg dir)/part.xacro",
+                                '<xacro:arg name="dir" default="$(find mypkg)/urdf"/>')
+    assert [p.name for p in walk(package)] == ["robot.urdf.xacro"]
+
+
+def test_an_expression_names_nothing(tmp_path):
+    computed = _included_by_name(tmp_path, "$(find ${package_name})/urdf/part.xacro",
+                                 '<xacro:property name="package_name" value="${\'my\' + '
+                                 '\'pkg\'}"/>')
+    assert [p.name for p in walk(computed)] == ["part.xacro", "robot.urdf.xacro"]
