@@ -15,6 +15,7 @@ from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.optional_parts import Definition, defined_elsewhere
 from servicebot_cli.common.errors import NameNotFound
 from servicebot_cli.description import sensors as specs
+from servicebot_cli.description.elements import parse_float
 from servicebot_cli.description.extensions import Sensor, param
 from servicebot_cli.description.sensors import NoiseSpec
 
@@ -279,7 +280,8 @@ def _lidar(sensor: Sensor) -> Iterator[str]:
     single = count == 1 and low == high  # one ray: its angle (create_robot's cliff sensors)
     if low is not None and high is not None and not low < high and not single:
         yield f"min_angle {low:g} rad must be below max_angle {high:g} rad"
-    near, far = lidar.min_range_m, lidar.max_range_m
+    # the ray's own range: a Velodyne plugin's band narrows the spec's (said below)
+    near, far = (parse_float(param(sensor.params, f"{root}/range/{end}")) for end in ("min", "max"))
     if near is not None and math.isnan(near):
         yield "range min is not a number"
     elif near is not None and not (near >= 0 if sensor.type in _CPU_RAYS else near > 0):
@@ -288,6 +290,11 @@ def _lidar(sensor: Sensor) -> Iterator[str]:
     if near is not None and far is not None and not near < far \
             and not (math.isnan(near) or math.isnan(far)):
         yield f"range min {near:g} m must be below range max {far:g} m"
+    elif lidar.output is not None and lidar.output.velodyne and lidar.min_range_m is not None \
+            and lidar.max_range_m is not None and not lidar.min_range_m < lidar.max_range_m:
+        yield (f"its Velodyne plugin keeps the ranges between {lidar.min_range_m:g} and "
+               f"{lidar.max_range_m:g} m (its <min_range> and <max_range> within the ray's): "
+               "no point, and it publishes empty clouds")
     yield from _noise(lidar.noise)
 
 

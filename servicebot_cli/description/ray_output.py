@@ -97,14 +97,23 @@ def velodyne_band(plugin: Plugin, near_m: float | None, far_m: float | None
                   ) -> tuple[float | None, float | None]:
     """The ranges a Velodyne plugin keeps: its ``<min_range>``/``<max_range>`` within the ray's.
 
-    The plugin's own default to 0 and infinity; a value that is no number is left out.
+    The plugin's own default to 0 and infinity; a value written that is no number is 0, as
+    sdformat's ``Get<double>`` leaves it (``<max_range>abc`` keeps no point).
     """
-    low, high = (parse_float(param(plugin.params, key)) for key in ("min_range", "max_range"))
+    low, high = (_sdf_double(param(plugin.params, key)) for key in ("min_range", "max_range"))
     if low is not None and math.isfinite(low):
         near_m = low if near_m is None else max(near_m, low)
     if high is not None and not math.isnan(high):
         far_m = high if far_m is None else min(far_m, high)
     return near_m, far_m
+
+
+def _sdf_double(text: str | None) -> float | None:
+    """A plugin's number as sdformat reads it: None where not written, 0 where no number."""
+    if text is None:
+        return None
+    value = parse_float(text)
+    return 0.0 if value is None or math.isnan(value) and "nan" not in text.lower() else value
 
 
 def _ros2_spelling(name: str) -> str:

@@ -70,3 +70,19 @@ def test_simulate_records_the_plugins_pointcloud2(tmp_path):
         assert np.all(np.diff(azimuth) >= -1e-5)  # column after column, as the plugin writes
         points += len(data)
     assert points > 0
+
+
+@pytest.mark.parametrize(("band", "kept"), [
+    ("<min_range>0.5</min_range><max_range>abc</max_range>", "between 0.5 and 0 m"),
+    ("<min_range>5</min_range><max_range>1</max_range>", "between 5 and 1 m")])
+def test_a_band_that_keeps_no_point_is_said_as_the_plugins(tmp_path, band, kept):
+    """sdformat reads <max_range>abc as 0 (Get<double> fails and leaves 0): the plugin keeps
+    no point, where check passed it and simulate wrote full clouds; an inverted band was
+    said as the ray's own range ('range min 5 m must be below range max 1 m')."""
+    robot = edited(SAM_BOT, tmp_path / "robot", (PLUGIN[0], PLUGIN[1].replace(
+        "<min_range>0.5</min_range><max_range>3.0</max_range>", band)), NO_OUTPUT_TYPE, RINGS)
+    result = run_servicebot("check", "urdf", robot, "--isolated", "--format", "json",
+                            "--select", "SB502", env=NO_ROS)
+    (finding,) = json.loads(result.stdout)["files"][0]["findings"]
+    assert f"its Velodyne plugin keeps the ranges {kept}" in finding["message"]
+    assert "must be below range max" not in finding["message"]
