@@ -283,6 +283,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
     from servicebot_cli.simulate.body import sim_robot
     from servicebot_cli.simulate.controllers.diff_drive import tick_count
     from servicebot_cli.simulate.files.progress import Progress
+    from servicebot_cli.simulate.plugin_topics import unpublished
     from servicebot_cli.simulate.world.meshes import load_meshes
     from servicebot_cli.simulate.world.solids import world_solids
 
@@ -306,13 +307,15 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
                                   meshes=meshes, piece_s=piece_s, facts=facts)
         stack.enter_context(contextlib.closing(pieces))  # its worker stopped whatever happens
         topic = odom_topic(controllers_file)
-        odometry_on = [*filter(None, (topic,)), *(("/tf",) if controllers_file.odom_tf else ())]
+        tf_topic = controllers_file.tf_topic or "/tf"
+        odometry_on = [*filter(None, (topic,)), *((tf_topic,) if controllers_file.odom_tf else ())]
+        sources = publishers(body, scenario.camera, topic, controllers_file.odom_tf,
+                             odom_frames(controllers_file, body), joint_states.topics,
+                             controllers_file.wheel_tf_joints, tf_topic)
+        left_out = unpublished(robot, {source.topic for source in sources})
         summary, last, writers = _write_pieces(
-            joint_states.narrowed(pieces),
-            outputs, publishers(body, scenario.camera, topic,
-                                controllers_file.odom_tf, odom_frames(controllers_file, body),
-                                joint_states.topics, controllers_file.wheel_tf_joints),
-            stack, bar.advance if bar else None, live, odometry_on)
+            joint_states.narrowed(pieces), outputs, sources, stack,
+            bar.advance if bar else None, live, odometry_on)
     track = None
     if live:
         from servicebot_cli.simulate.files.live import LiveWriter
@@ -322,7 +325,7 @@ def run_and_write(robot: RobotDescription, scenario: Scenario, *, seed: int,
              *(f"note: the simulator's collision shape of link {skipped}"
                for skipped in body.shape.skipped),
              *filter(None, (unpublished_note(mounted.spec) for mounted in body.ray_sensors)),
-             *body.sensor_notes)
+             *body.sensor_notes, *left_out)
     return SimulateReport(summary, clock() - start, last if keep_run else None,
                           live_track=track, notes=notes)
 

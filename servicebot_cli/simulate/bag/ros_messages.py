@@ -99,11 +99,12 @@ def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
                odom_topic: str | None = ODOM_TOPIC, odom_tf: bool = True,
                frames: tuple[str, str] | None = None,
                joint_states: Sequence[str] = (JOINT_STATES_TOPIC,),
-               wheel_tf: Sequence[str] = ()) -> list[Publisher]:
+               wheel_tf: Sequence[str] = (), tf_topic: str | None = None) -> list[Publisher]:
     """Every publisher of a run of ``body``: latched topics and the clock first.
 
     Camera images only when ``images`` are on; odometry on ``odom_topic`` (the diff-drive
-    controller's ``~/odom``; None: none) and odom -> base on /tf when ``odom_tf``, both in
+    controller's ``~/odom``; None: none) and odom -> base on ``tf_topic`` (None: /tf) when
+    ``odom_tf``, both in
     ``frames`` (odometry frame, base frame; None: ``odom`` and the root link); joint states
     on each of ``joint_states`` and, from them, the movable joints on /tf (none without);
     the ``wheel_tf`` joints on /tf at the odometry's times (a Gazebo drive plugin's).
@@ -119,7 +120,7 @@ def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
     out += [Publisher(TF_TOPIC, TF_TYPE, qos.DYNAMIC_TF, lambda r: r.odometry.times_s,
                       WheelTransform(joint)) for joint in wheel_tf]
     if odom_tf:
-        out.append(Publisher(TF_TOPIC, TF_TYPE, qos.SYSTEM_DEFAULTS,
+        out.append(Publisher(tf_topic or TF_TOPIC, TF_TYPE, qos.SYSTEM_DEFAULTS,
                              lambda r: r.odometry.times_s, partial(tf_base, frames=frames)))
     if joint_states:  # robot_state_publisher's transforms come from joint states
         out.append(Publisher(TF_TOPIC, TF_TYPE, qos.DYNAMIC_TF, lambda r: r.joints.times_s,

@@ -76,6 +76,9 @@ class ControllersFile:
     without ``<publish_odom>true``, a controllers file without a diff drive, or none)."""
     odom_tf: bool = True
     """Whether odom -> base is broadcast on /tf (diff_drive_controller's ``enable_odom_tf``)."""
+    tf_topic: str | None = None
+    """Where odom -> base is broadcast, when not on /tf (gz-sim's DiffDrive:
+    ``/model/MODEL/tf``, or its ``<tf_topic>``)."""
     speed_limiter: str = DIFF_DRIVE_CONTROLLER
     """Whose speed limiter applies the limits: ``diff_drive_controller`` or ``gz-math``."""
     odom_frame: str | None = None

@@ -40,6 +40,7 @@ from servicebot_cli.description.drive_plugin_wheels import plugin_wheels
 from servicebot_cli.description.extensions import Plugin, param
 from servicebot_cli.description.model_plugins import (
     ODOMETRY,
+    TF,
     diff_drive_kind,
     model_plugin_rows,
     odometry_frames,
@@ -135,15 +136,20 @@ def read_drive_plugin(robot: RobotDescription, plugin: Plugin) -> ControllersFil
             values["publish_rate_hz"] = rate
         values.update(_gz_limits(plugin, where))
     values.update(_wheels(plugin, where))
-    topic = next((name for direction, name, message, _ in model_plugin_rows(plugin)
+    rows = model_plugin_rows(plugin)
+    topic = next((name for direction, name, message, _ in rows
                   if direction == "out" and message == ODOMETRY), None)
     if topic is not None:
         topic = topic.replace("/MODEL/", f"/{robot.name}/")
+    tf_topic = None if classic else next(  # gz-sim's DiffDrive: its own tf topic
+        (name.replace("/MODEL/", f"/{robot.name}/") for direction, name, message, _ in rows
+         if direction == "out" and message == TF), None)
     odom_frame, base_frame = odometry_frames(plugin, robot.name, robot.root_link or "base_link")
     return ControllersFile(None, values, None, source=label, odom_topic=topic,
                            odom_frame=odom_frame, base_frame=base_frame,
                            publishes_odometry=topic is not None,
                            odom_tf=publishes_odom_tf(plugin) if classic else True,
+                           tf_topic=tf_topic,
                            speed_limiter=DIFF_DRIVE_CONTROLLER if classic else GZ_MATH,
                            classic_drive=classic_drive,
                            wheel_tf_joints=_wheel_tf(robot, plugin))
