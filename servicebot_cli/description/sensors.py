@@ -113,7 +113,11 @@ class CameraSpec:
     info_topic: str | None
     depth_topics: tuple[tuple[str, str], ...] = ()
     """What its plugin publishes of depth, each topic with its message type: gazebo_ros_camera
-    on a ``depth`` sensor, gazebo_ros_openni_kinect and gazebo_ros_depth_camera (ROS 1)."""
+    on a ``depth`` sensor, gazebo_ros_openni_kinect and gazebo_ros_depth_camera (ROS 1);
+    gz-sensors' depth and RGBD cameras (:func:`_gz_depth_topics`)."""
+    colour: bool = True
+    """Whether it publishes a colour image: a gz ``depth_camera`` publishes its depth image
+    on ``image_topic`` instead."""
     centred: bool = False
     """Its camera_info puts the principal point at the image's centre, (w/2, h/2), as
     gz-sensors does (gz-rendering's projectionToCameraIntrinsic); gazebo_ros_camera writes
@@ -380,7 +384,8 @@ def camera_spec(sensor: Sensor) -> CameraSpec:
     p = sensor.params
     plugin = ros_plugin(sensor)
     image_topic, info_topic = _gz_camera_topics(sensor)
-    depth: tuple[tuple[str, str], ...] = ()
+    depth = _gz_depth_topics(sensor)
+    colour = not (depth and sensor.type in _GZ_DEPTH_ONLY)
     if plugin is not None:
         name = param(plugin.params, "camera_name") or sensor.name
         name = ros1_param(plugin, "cameraName") or name
@@ -401,6 +406,7 @@ def camera_spec(sensor: Sensor) -> CameraSpec:
         info_topic=info_topic,
         depth_topics=depth,
         centred=plugin is None,
+        colour=colour,
     )
 
 
@@ -425,6 +431,23 @@ def _optical_frame(sensor: Sensor) -> str | None:
     gz-sensors' CameraSensor (Fortress on) stamps them so when it is given.
     """
     return (param(sensor.params, "camera/optical_frame_id") or "").strip() or None
+
+
+_GZ_DEPTH_ONLY = ("depth_camera", "depth")
+_GZ_RGBD = ("rgbd_camera", "rgbd")
+
+
+def _gz_depth_topics(sensor: Sensor) -> tuple[tuple[str, str], ...]:
+    """What a gz depth or RGBD camera publishes of depth (gz-sensors' DepthCameraSensor.cc,
+    RgbdCameraSensor.cc): the depth image (32FC1) on ``TOPIC`` or ``TOPIC/depth_image``,
+    and its points on ``TOPIC/points``; nothing for another camera, or one without a
+    ``<topic>``.
+    """  # noqa: D205
+    topic = gz_topic(sensor)
+    if topic is None or sensor.type not in (*_GZ_DEPTH_ONLY, *_GZ_RGBD):
+        return ()
+    image = topic if sensor.type in _GZ_DEPTH_ONLY else f"{topic}/depth_image"
+    return ((image, "sensor_msgs/msg/Image"), (f"{topic}/points", "sensor_msgs/msg/PointCloud2"))
 
 
 def _gz_camera_topics(sensor: Sensor) -> tuple[str | None, str | None]:

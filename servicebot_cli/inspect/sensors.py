@@ -82,8 +82,10 @@ def sensor_info(sensor: Sensor) -> SensorInfo:
         return replace(base, kind="lidar", frame=spec.frame, lidar=spec, topics=topics)
     if sensor.type in CAMERA_TYPES:
         cam = camera_spec(sensor)
-        topics = _present((cam.image_topic, "sensor_msgs/msg/Image"),
-                          (cam.info_topic, "sensor_msgs/msg/CameraInfo"), *cam.depth_topics)
+        # a gz depth camera's image is its depth image, on the image's topic
+        image, *depth = ((cam.image_topic, "sensor_msgs/msg/Image"), *cam.depth_topics) \
+            if cam.colour else cam.depth_topics
+        topics = _present(image, (cam.info_topic, "sensor_msgs/msg/CameraInfo"), *depth)
         return replace(base, kind="camera", frame=cam.frame, camera=cam, topics=topics,
                        update_rate_hz=cam.update_rate_hz)  # a ROS 1 plugin's throttle
     if sensor.type == "imu":

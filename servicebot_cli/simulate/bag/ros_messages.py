@@ -141,9 +141,10 @@ def publishers(body: SimRobot, images: CameraImages = NO_IMAGES,
                 for topic in infos]
         if images.enabled:
             image_topic = absolute(spec.image_topic, "image_raw")
-            out.append(Publisher(image_topic, IMAGE_TYPE, qos.SENSOR_DATA,
-                                 lambda r: r.camera_times_s, camera_messages.colour_images))
-            if images.depth:
+            if spec.colour:  # a gz depth camera's topic carries its depth image alone
+                out.append(Publisher(image_topic, IMAGE_TYPE, qos.SENSOR_DATA,
+                                     lambda r: r.camera_times_s, camera_messages.colour_images))
+            if images.depth or not spec.colour:
                 named = next((t for t, kind in depth.items() if kind == IMAGE_TYPE), None)
                 out.append(Publisher(absolute(named, "") if named else depth_topic(image_topic),
                                      IMAGE_TYPE, qos.SENSOR_DATA,

@@ -59,7 +59,7 @@ class CameraStream:
         noise = spec.noise
         self.stddev = noise.stddev if noise is not None and noise.type != "none" else 0.0
         self.rng = stream_rng(seed, "camera")
-        self.depth = images.depth
+        self.depth = images.depth or not spec.colour  # a depth camera's image is its depth
         self.body, self.solids, self.meshes = body, list(solids), list(meshes)
         shape = body.shape
         self.keep = np.array([p.link != mounted.link for p in shape.parts], dtype=bool)
