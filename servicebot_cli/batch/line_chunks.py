@@ -17,6 +17,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.batch.reading import meaningful
+from servicebot_cli.common.plain_float import plainly_written
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -57,9 +58,11 @@ def split_cells(texts: Sequence[str], delimiter: str, width: int) -> list[str] |
 def numbers(cells: list[str], width: int, columns: Sequence[int]) -> FloatArray | None:
     """The cells of ``columns`` as finite floats, shape (rows, len(columns)); None otherwise.
 
-    numpy reads each cell as ``float()`` does (surrounding blanks, ``1_000``), a little
-    faster; an empty cell, a word or a non-finite value gives None.
+    numpy reads each cell as ``float()`` does (surrounding blanks), a little faster; an
+    empty cell, a word, ``1_000``, a digit beyond ASCII or a non-finite value gives None.
     """
+    if not plainly_written(cells):  # float() reads them; no CSV writer means them
+        return None
     try:
         if list(columns) == list(range(width)):  # every column, in the file's order
             given = np.array(cells, dtype=np.float64).reshape(-1, width)

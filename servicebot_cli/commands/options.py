@@ -22,6 +22,7 @@ import click
 from click.core import ParameterSource
 from click.shell_completion import CompletionItem
 
+from servicebot_cli.common.plain_float import plain_float
 from servicebot_cli.description.resources import BUNDLED_ROBOTS, DEFAULT_ROBOT
 
 if TYPE_CHECKING:
@@ -206,7 +207,7 @@ class Number(click.ParamType[float]):
             number = value
         else:
             try:
-                number = float(value)
+                number = plain_float(str(value))
             except (TypeError, ValueError):
                 self.fail(f"'{value}' is not a number", param, ctx)
         if not math.isfinite(number):
@@ -494,7 +495,7 @@ class JointValue(click.ParamType[tuple[str, float]]):
             self.fail(f"'{value}' is not NAME=VALUE, e.g. arm_base_to_link1=0.5", param, ctx)
         name, text = match.group(1), match.group(2)
         try:
-            number = float(text)
+            number = plain_float(text)
         except ValueError:
             self.fail(f"'{text}' for joint '{name}' is not a number", param, ctx)
         if number != number or number in (float("inf"), float("-inf")):

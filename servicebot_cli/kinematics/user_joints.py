@@ -16,6 +16,7 @@ import numpy as np
 import numpy.typing as npt
 
 from servicebot_cli.common.errors import JointNotFound, OutOfLimits, ServicebotError
+from servicebot_cli.common.plain_float import plain_float, plainly_written
 from servicebot_cli.kinematics.json_types import JsonValue
 from servicebot_cli.kinematics.mimics import Mimics, leader_range, rules_of
 
@@ -247,7 +248,7 @@ def number(value: JsonValue, what: str) -> float:
         if not value.strip():
             raise BadNumber(f"{what} is empty; give a number")
         try:
-            value = float(value)
+            value = plain_float(value)
         except ValueError:
             raise BadNumber(f"{what} is '{value}', not a number") from None
     if not isinstance(value, int | float):
@@ -271,7 +272,8 @@ def row_pairs(values: Mapping[str, JsonValue],
     skip = set(ignore)
     names = [name for name in values if name not in skip]
     raw = [values[name] for name in names]
-    if all(type(v) is str or type(v) is float or type(v) is int for v in raw):
+    if all(type(v) is float or type(v) is int or type(v) is str and plainly_written([v])
+           for v in raw):
         try:
             numbers = np.array(raw, dtype=float)
         except (ValueError, OverflowError):  # one by one below, for the message
