@@ -26,12 +26,19 @@ from typing import IO
 import numpy as np
 import numpy.typing as npt
 
-from servicebot_cli.batch.fk_rows import RESULT_COLUMNS, FkBatch
+from servicebot_cli.batch.fk_rows import BASE_COLUMNS, RESULT_COLUMNS, FkBatch
 from servicebot_cli.batch.formatting import Formatter, format_rows
 from servicebot_cli.batch.line_chunks import chunks, numbers, split_cells
 from servicebot_cli.batch.policy import OnError, Tally
 from servicebot_cli.batch.reading import Source, csv_rows
-from servicebot_cli.batch.stream import BatchSummary, RowSink, Warn, summarise, write_results
+from servicebot_cli.batch.stream import (
+    BatchSummary,
+    RowSink,
+    Warn,
+    refuse_no_lines,
+    summarise,
+    write_results,
+)
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -76,6 +83,7 @@ def stream_csv(batch: FkBatch, source: Source, handle: IO[str], sink: RowSink, *
                     csv_template(len(batch.columns()) - 1, write.delimiter)
                 formatter = stack.enter_context(Formatter(row, write.text))
             formatter.submit([n for n, _ in lines], batch.pose_table(values))
+        refuse_no_lines(source.display, tally)
     return summarise(source.display, tally, warn)
 
 
@@ -88,9 +96,15 @@ class ChunkParser:
         self.width = len(columns)
         self.joint_columns = [k for k, name in enumerate(columns) if name not in RESULT_COLUMNS]
         self.joints = [batch.space.index(columns[k]) for k in self.joint_columns]
+        self.with_base = bool(set(columns) & set(BASE_COLUMNS))  # ik --with-base results
 
     def values(self, texts: list[str]) -> FloatArray | None:
-        """One value per joint and line [rad or m], limits checked; None: go line by line."""
+        """One value per joint and line [rad or m], limits checked; None: go line by line.
+
+        Lines with a base column go line by line, each with its base.
+        """
+        if self.with_base:
+            return None
         cells = split_cells(texts, self.delimiter, self.width)
         given = None if cells is None else numbers(cells, self.width, self.joint_columns)
         return None if given is None else self.batch.chunk_vectors(given, self.joints)

@@ -16,6 +16,7 @@ Output rows::
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from typing import TYPE_CHECKING
 
@@ -33,6 +34,7 @@ from servicebot_cli.kinematics.mimics import Mimics
 from servicebot_cli.kinematics.user_joints import (
     angular,
     clamped_user_vector,
+    number,
     row_pairs,
 )
 
@@ -46,7 +48,10 @@ _LIMIT_SLACK = 1e-9  # as JointSpace.checked: a value this far outside a limit i
 # Columns of an ik result that are not joints: fk input skips them.
 RESULT_COLUMNS = ("line", "success", "position_error_m", "orientation_error_rad", "iterations",
                   "attempts", "solutions", "solve_time_s", "base_x_m", "base_y_m",
-                  "base_yaw_rad", "base_yaw_deg")
+                  "base_yaw_rad", "base_yaw_deg", "hint")
+BASE_COLUMNS = ("base_x_m", "base_y_m", "base_yaw_rad", "base_yaw_deg")
+"""An ``ik --with-base`` result's base: where the robot stands for that line's poses."""
+_NO_BASE = (math.nan, math.nan, math.nan)
 _POSE_COLUMNS = ("x_m", "y_m", "z_m", "roll_{u}", "pitch_{u}", "yaw_{u}", "qx", "qy", "qz", "qw")
 
 
@@ -99,8 +104,13 @@ class FkBatch:
                 raise JointNotFound.for_name(name, self.space.names)
 
     def parse(self, row: Row) -> FloatArray:
-        """The row's configuration, one value per joint [rad or m]."""
+        """The row's configuration, one value per joint [rad or m], then its base's pose.
+
+        The base (``x``, ``y`` [m], ``yaw`` [rad]; NaN without one) is an ``ik --with-base``
+        result's, where the robot stands for this line (over ``--base``).
+        """
         values: Mapping[str, JsonValue] = row.values
+        base = _row_base(values)
         joints = values.get("joints")
         if isinstance(joints, Mapping):  # an ik result line
             values = joints
@@ -110,7 +120,7 @@ class FkBatch:
         if clamped:
             self.clamped_values += len(clamped)
             self.clamped_lines += 1
-        return vector
+        return np.concatenate((vector, base))
 
     def results(self, items: Iterable[tuple[Row, FloatArray]],
                 kind: RowKind) -> Iterator[JsonObject]:
@@ -150,32 +160,38 @@ class FkBatch:
         inside = values.copy()
         inside[:, bounded] = np.clip(values[:, bounded], space.lower[bounded],
                                      space.upper[bounded])
+        no_base = np.full((len(values), 3), math.nan)
         if self.clamp:
             moved = named & (np.abs(values - inside) > 1e-9)
             if mimics.follower and moved.any():
                 return None  # clamped leader by leader, with its followers: line by line
             self.clamped_values += int(moved.sum())
             self.clamped_lines += int(moved.any(axis=1).sum())
-            return np.where(named, inside, values)
+            return np.hstack((np.where(named, inside, values), no_base))
         probe = np.where(named, values, inside)[:, bounded]
         low, high = space.lower[bounded] - _LIMIT_SLACK, space.upper[bounded] + _LIMIT_SLACK
         if not ((probe >= low) & (probe <= high)).all():
             return None
-        return values
+        return np.hstack((values, no_base))
 
     def pose_table(self, values: FloatArray) -> FloatArray:
         """Poses of the frames for many configurations (see :func:`pose_table`).
 
         Args:
-            values: One value per joint [rad or m], shape (lines, joints of the space).
+            values: One value per joint [rad or m], then the base's ``x y yaw`` (NaN: none),
+                shape (lines, joints of the space + 3).
 
         Returns:
             Shape (lines, frames, 10), angles in the user's unit, no ``-0.0``.
         """
-        matrices = frame_transforms(self.model, self.data, configurations(self.space, values),
+        joints, base = values[:, :-3], values[:, -3:]
+        matrices = frame_transforms(self.model, self.data, configurations(self.space, joints),
                                     self.ids, self.reference)
         if self.in_world is not None:
             matrices = np.matmul(self.in_world, matrices)
+        placed = ~np.isnan(base[:, 0])
+        if placed.any():  # each line's own base, where ik placed it
+            matrices[placed] = np.matmul(_planar(base[placed])[:, None], matrices[placed])
         poses = pose_table(matrices) + 0.0
         if self.deg:
             poses[..., 3:6] = np.degrees(poses[..., 3:6])
@@ -195,3 +211,31 @@ class FkBatch:
 
     def _csv_row(self, line: int, poses: FloatArray) -> JsonObject:
         return dict(zip(self._columns, [line, *poses.ravel().tolist()], strict=True))
+
+
+def _row_base(values: Mapping[str, JsonValue]) -> tuple[float, float, float]:
+    """An ``ik --with-base`` result line's base: ``x``, ``y`` [m], ``yaw`` [rad]; NaN without.
+
+    Its JSON ``base`` object, or its CSV ``base_x_m``, ``base_y_m`` and ``base_yaw_rad`` (or
+    ``base_yaw_deg``) columns.
+    """
+    base = values.get("base")
+    if isinstance(base, Mapping):
+        given = {f"base_{key}": value for key, value in base.items()}
+    else:
+        given = {key: values[key] for key in BASE_COLUMNS if key in values}
+    if not given or all(value in ("", None) for value in given.values()):
+        return _NO_BASE  # a line ik solved without a base, or no ik result
+    yaw_key = "base_yaw_deg" if "base_yaw_deg" in given else "base_yaw_rad"
+    x, y, yaw = (number(given.get(key), f"'{key}'")
+                 for key in ("base_x_m", "base_y_m", yaw_key))
+    return x, y, math.radians(yaw) if yaw_key.endswith("deg") else yaw
+
+
+def _planar(base: FloatArray) -> FloatArray:
+    """4 x 4 transforms of bases at ``x, y, yaw`` (rows of ``base``), shape (n, 4, 4)."""
+    out = np.zeros((len(base), 4, 4))
+    c, s = np.cos(base[:, 2]), np.sin(base[:, 2])
+    out[:, 0, 0], out[:, 0, 1], out[:, 1, 0], out[:, 1, 1] = c, -s, s, c
+    out[:, 0, 3], out[:, 1, 3], out[:, 2, 2], out[:, 3, 3] = base[:, 0], base[:, 1], 1.0, 1.0
+    return out

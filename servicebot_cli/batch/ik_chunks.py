@@ -30,6 +30,7 @@ from servicebot_cli.batch.stream import (
     RowSink,
     Warn,
     WriteRow,
+    refuse_no_lines,
     summarise,
     write_results,
 )
@@ -72,6 +73,7 @@ def stream_csv(batch: IkBatch, source: Source, handle: IO[str], sink: RowSink, *
                 continue
             tally.rows += len(lines)
             _write(batch, [n for n, _ in lines], batch.solve(targets), write, sink.kind)
+        refuse_no_lines(source.display, tally)
     return summarise(source.display, tally, warn)
 
 

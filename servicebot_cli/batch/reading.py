@@ -166,10 +166,24 @@ def csv_rows(lines: Iterable[tuple[int, str]], header: Sequence[str],
         yield Row(number, values)
 
 
+class _RepeatedKey(ValueError):
+    """A JSON object that names one key twice (json.loads keeps the last, silently)."""
+
+
+def _object(pairs: list[tuple[str, object]]) -> dict[str, object]:
+    keys = [key for key, _ in pairs]
+    if len(set(keys)) != len(keys):
+        raise _RepeatedKey(next(key for key in keys if keys.count(key) > 1))
+    return dict(pairs)
+
+
 def _json_rows(lines: Iterator[tuple[int, str]]) -> Iterator[Row]:
     for number, text in lines:
         try:
-            value = json.loads(text)
+            value = json.loads(text, object_pairs_hook=_object)
+        except _RepeatedKey as exc:
+            yield Row(number, error=f"names '{exc}' twice; give each once")
+            continue
         except json.JSONDecodeError as exc:
             yield Row(number, error=f"not JSON: {exc.msg} at column {exc.colno}")
             continue

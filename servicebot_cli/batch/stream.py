@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from typing import Literal, Protocol, TypeAlias, TypeVar
 
 from servicebot_cli.batch.policy import OnError, Tally, handled
-from servicebot_cli.batch.reading import Row, Source, open_source
+from servicebot_cli.batch.reading import BatchInputError, Row, Source, open_source
 from servicebot_cli.kinematics.json_types import JsonObject
 
 RowKind: TypeAlias = Literal["csv", "jsonl"]
@@ -117,6 +117,7 @@ def stream_source(stage: Stage[T], source: Source, sink: RowSink, *, on_error: O
     with sink.open(stage.columns()) as write:
         write_results(stage, source.rows, source.display, write, sink.kind,
                       on_error=on_error, warn=warn, tally=tally)
+        refuse_no_lines(source.display, tally)
     return summarise(source.display, tally, warn)
 
 
@@ -130,6 +131,17 @@ def write_results(stage: Stage[T], rows: Iterable[Row], display: str, write: Wri
     items = handled(display, rows, stage.parse, on_error=on_error, warn=warn, tally=tally)
     for result in stage.results(items, kind):
         write(result)
+
+
+def refuse_no_lines(display: str, tally: Tally) -> None:
+    """Refuse a file of a header alone, as an empty one is: nothing to compute.
+
+    Raises:
+        BatchInputError: No data line was read.
+    """
+    if not tally.rows:
+        raise BatchInputError(f"{display}: has no data lines below its header; give one "
+                              "line per item")
 
 
 def summarise(display: str, tally: Tally, warn: Warn) -> BatchSummary:

@@ -25,7 +25,8 @@ FloatArray = npt.NDArray[np.float64]
 
 _RPY_KEYS = ((("roll_rad", "pitch_rad", "yaw_rad"), False),
              (("roll_deg", "pitch_deg", "yaw_deg"), True))
-_PARTIAL = (*QUATERNION_KEYS, "roll", "pitch", "yaw")
+_PARTIAL = (*QUATERNION_KEYS, "roll", "pitch", "yaw", *(k for keys, _ in _RPY_KEYS for k in keys))
+"""Keys of an orientation: one without the rest of its set goes the per-line path, refused."""
 
 
 @dataclass(frozen=True)

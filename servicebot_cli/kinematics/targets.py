@@ -115,15 +115,17 @@ def row_target(values: Mapping[str, JsonValue], frame: str, *, deg: bool,
     position = _numbers(flat, _first_present(flat, POSITION_KEYS, "position (x_m y_m z_m)"))
     if all(k in flat for k in QUATERNION_KEYS):
         return make_target(position, quat=_numbers(flat, QUATERNION_KEYS), axes=axes)
-    for keys, in_deg in ((("roll_rad", "pitch_rad", "yaw_rad"), False),
-                         (("roll_deg", "pitch_deg", "yaw_deg"), True),
-                         (("roll", "pitch", "yaw"), deg)):
+    families = ((("roll_rad", "pitch_rad", "yaw_rad"), False),
+                (("roll_deg", "pitch_deg", "yaw_deg"), True), (("roll", "pitch", "yaw"), deg))
+    for keys, in_deg in families:
         if all(k in flat for k in keys):
             return make_target(position, rpy=_numbers(flat, keys), deg=in_deg, axes=axes)
-    partial = [k for k in (*QUATERNION_KEYS, "roll", "pitch", "yaw") if k in flat]
+    # a part of one (roll_rad alone, roll_deg with pitch_rad): no orientation to take
+    partial = [k for k in (*QUATERNION_KEYS, *(k for keys, _ in families for k in keys))
+               if k in flat]
     if partial:
         raise BadTarget(f"'{partial[0]}' is given without the rest of its orientation; "
-                        "give roll pitch yaw or qx qy qz qw")
+                        "give roll pitch yaw (all three in one unit) or qx qy qz qw")
     return make_target(position, axes=axes)
 
 
