@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from servicebot_cli.description.elements import Joint, Shape
+from servicebot_cli.description.elements import Joint, Link, Shape
 from servicebot_cli.kinematics.transforms import pose_matrix
 
 if TYPE_CHECKING:
@@ -77,12 +77,10 @@ def as_wheel(robot: RobotDescription, joint: Joint,
     if not turns_freely(joint) or link is None or joint.child not in world \
             or joint.parent not in world:
         return None
-    shapes = (*link.collisions, *link.visuals)
-    round_shape = next((s for s in shapes if s.geometry.kind == "cylinder"), None) \
-        or next((s for s in shapes if s.geometry.kind == "sphere"), None)
+    axis = unit_axis(joint)
+    round_shape = _round_shape(link, axis)
     if round_shape is None or not round_shape.geometry.radius:
         return NO_ROUND_SHAPE
-    axis = unit_axis(joint)
     if axis is None:
         return "about a zero axis"
     if round_shape.geometry.kind == "cylinder" \
@@ -100,6 +98,26 @@ def as_wheel(robot: RobotDescription, joint: Joint,
     if round_shape.geometry.kind == "sphere" and abs(position[1]) <= round_shape.geometry.radius:
         return BALL_CASTER
     return wheel_at(joint, position, float(round_shape.geometry.radius), axis_in_root)
+
+
+def _round_shape(link: Link, axis: np.ndarray | None) -> Shape | None:
+    """The shape a wheel rolls on: its largest cylinder about ``axis``, else a sphere.
+
+    Collisions before visuals, as Gazebo rolls on those. Of several cylinders about the axis
+    the largest touches the ground: Leo's wheels list a hub (r 0.057 m) before the tyre
+    (r 0.0625 m), and the radius was the hub's. Without one about the axis, the first
+    cylinder (whose axis the caller then says is not the joint's).
+    """
+    for shapes in (link.collisions, link.visuals):
+        cylinders = [s for s in shapes if s.geometry.kind == "cylinder"]
+        about = [s for s in cylinders if axis is not None and s.geometry.radius is not None
+                 and math.isfinite(s.geometry.radius)
+                 and abs(float(axis @ _cylinder_axis(s))) >= PARALLEL]
+        if about:
+            return max(about, key=lambda s: abs(s.geometry.radius or 0.0))
+    shapes = (*link.collisions, *link.visuals)
+    return next((s for s in shapes if s.geometry.kind == "cylinder"), None) \
+        or next((s for s in shapes if s.geometry.kind == "sphere"), None)
 
 
 def unit_axis(joint: Joint) -> np.ndarray | None:
