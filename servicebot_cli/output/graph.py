@@ -40,7 +40,9 @@ def dot_lines(tree: TreeInfo, robot: str) -> Iterator[str]:
     yield '  node [shape=box, style="rounded,filled", fillcolor="#f2f2f2", fontname="Helvetica"];'
     yield '  edge [fontname="Helvetica", fontsize=10];'
     for link in _links(tree):
-        yield f"  {_dot_id(link)};"
+        # graphviz draws a name starting with '%' as an id of its own ('%3'): label it
+        label = f" [label={_dot_id(link)}]" if link.startswith("%") else ""
+        yield f"  {_dot_id(link)}{label};"
     for joint in tree.edges:
         label = _dot_id("\n".join(edge_label(joint))).replace("\n", "\\n")
         style = ', style="dashed"' if joint.type == "fixed" else ""
@@ -51,8 +53,8 @@ def dot_lines(tree: TreeInfo, robot: str) -> Iterator[str]:
 
 def _mermaid_text(text: str) -> str:
     """Text safe inside a quoted Mermaid label (entity codes for the special characters)."""
-    for char, code in (("#", "#35;"), ('"', "#quot;"), ("<", "#lt;"), (">", "#gt;"),
-                       ("|", "#124;")):
+    for char, code in (("#", "#35;"), ("&", "#38;"), ('"', "#quot;"), ("<", "#lt;"),
+                       (">", "#gt;"), ("|", "#124;")):
         text = text.replace(char, code)
     return text
 
