@@ -179,11 +179,13 @@ def arm_reach(tree: KinematicTree, arm_joints: list[Joint],
     without ``--frame``) where the chain leads to it, else its deepest link. None without an
     arm, or where the reach is no finite length (:data:`REACH_UNKNOWN`).
     """
-    parent_joint = {j.child or "": j for j in tree.edges}
+    edges = tree.edges  # built anew at each use: once here
+    parent_joint = {j.child or "": j for j in edges}
+    order = {joint.child: i for i, joint in enumerate(edges)}
     names = {joint.name for joint in arm_joints}
     starts = [j for j in arm_joints if not _arm_above(j.parent, parent_joint, names)]
     chains = [chain for joint in starts
-              if (chain := _chain(tree, joint, parent_joint, tool))]
+              if (chain := _chain(tree, joint, parent_joint, tool, order))]
     if not chains:
         return None
     path = max(chains, key=lambda chain: sum(j.name in names for j in chain))  # the first one
@@ -225,7 +227,7 @@ def _arm_above(link: str | None, parent_joint: Mapping[str, Joint], names: set[s
 
 
 def _chain(tree: KinematicTree, first: Joint, parent_joint: Mapping[str, Joint],
-           tool: str | None) -> list[Joint] | None:
+           tool: str | None, order: Mapping[str | None, int]) -> list[Joint] | None:
     """The joints from ``first`` down to ``tool``, else to its deepest link; None without one.
 
     ``tool`` where it is below ``first``. A camera's optical frame three fixed frames down
@@ -236,8 +238,7 @@ def _chain(tree: KinematicTree, first: Joint, parent_joint: Mapping[str, Joint],
         return None
     below = descendants(tree, first.child)
     # of the deepest links, the one fk and ik would take: a tool's name, else the last in
-    # the file (the WAM's second finger, not its first)
-    order = {joint.child: i for i, joint in enumerate(tree.edges)}
+    # the file (the WAM's second finger, not its first): ``order``, each child's place
     tip = tool if tool is not None and tool in {name for name, _ in below} else max(
         below, key=lambda item: (item[1], looks_like_tool(item[0]),
                                  order.get(item[0], -1)))[0] if below else first.child
