@@ -174,15 +174,25 @@ class _Checker:
             if self.not_a_joint(item.value):
                 continue
             joint = self.joints.get(item.value)
-            if joint is None and item.value in self.exported():  # a gpio or sensor component
+            if joint is None and item.value in self.components():  # a gpio or a sensor
                 continue
             if joint is None:
                 hint = str(NameNotFound.for_name(item.value, list(self.joints))).split("; ", 1)
+                only = (" (only its <ros2_control> names it: Gazebo's ros2_control skips "
+                        "such a joint, and robot_state_publisher has no state of it)"
+                        if item.value in self.exported() else "")
+                close = hint[-1].startswith("did you mean")
                 yield Issue("SB602", f"{section}.{key}: joint '{item.value}' is not in "
-                            f"{self.robot.display}; {hint[-1]}", where=self.where(item))
+                            f"{self.robot.display}{only}; {hint[-1]}", where=self.where(item),
+                            fix=None if close else "name a joint of the URDF")
             elif not joint.movable:
                 yield Issue("SB606", f"{section}.{key}: joint '{item.value}' is {joint.type} "
                             "in the URDF", where=self.where(item))
+
+    def components(self) -> set[str]:
+        """The sensors and GPIOs of every ``<ros2_control>``: names that are no joints."""
+        return {item.name for block in self.robot.ros2_control
+                for item in (*block.sensors, *block.gpios)}
 
     def exported(self) -> dict[str, dict[str, list[str]]]:
         """Each joint's exported interfaces by kind (``command``, ``state``).
