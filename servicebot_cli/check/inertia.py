@@ -240,6 +240,8 @@ def _against_geometry(robot: RobotDescription, link: Link, env: CheckEnv) -> Ite
     have = solids.principal_moments(inertial.inertia_kg_m2)
     found = _mismatch(have, solid, mass, env.inertia_factor)
     if found is None:
+        if mass > _METAL_KG_M3 * solid.volume_m3 and not _placeholder(solid, mass):
+            yield _both_in_grams(link, solid, mass)  # the inertia made from the same mass
         return
     if _placeholder(solid, mass) and link.visuals:  # baxter_simple's 1 mm collision spheres
         visual = _expected(robot, link, env, link.visuals)
@@ -290,6 +292,21 @@ def _in_grams(link: Link, solid: solids.Solid, mass: float) -> Issue:
                  f"{mass / solid.volume_m3:.3g} kg/m^3, denser than any metal, and its inertia "
                  f"fits {mass / 1000:g} kg: is the mass in grams?", inertial.element,
                  fix=f'mass value="{mass / 1000:g}"')
+
+
+def _both_in_grams(link: Link, solid: solids.Solid, mass: float) -> Issue:
+    """SB301 for a mass in grams whose inertia was computed from it: both 1000 times over.
+
+    articubot_one's wheel of 0.05 kg written 50, its inertia from the usual cylinder macro:
+    the two agree, and only the density (25 times osmium's) tells the unit.
+    """
+    inertial = link.inertial
+    assert inertial is not None
+    return Issue("SB301", f"link '{link.name}' mass {mass:g} kg makes its {solid.label} "
+                 f"{mass / solid.volume_m3:.3g} kg/m^3, denser than any metal, and its inertia "
+                 f"fits that mass: are both in grams (the inertia computed from it)?",
+                 inertial.element, fix=f'mass value="{mass / 1000:g}", and the inertia a '
+                 "thousandth of what it is")
 
 
 def _issue(link: Link, have: np.ndarray, solid: solids.Solid, mass: float,

@@ -67,3 +67,24 @@ def test_a_visual_alone_may_be_a_marker(tmp_path):
 def test_a_closed_mesh_is_compared_as_before(tmp_path):
     (message,) = _sb301(tmp_path, 6e7, tetrahedron_stl(0.1))
     assert "does not match a 0.362 kg closed mesh 'part.stl'" in message
+
+
+def test_a_mass_in_grams_with_the_inertia_made_from_it_is_found(tmp_path):
+    """articubot_one's wheel of 0.05 kg written 50, its inertia from the usual cylinder macro
+    for 50 kg: mass and inertia agree, so nothing was said, at 25 times osmium's density."""
+    radius, length, mass = 0.033, 0.026, 50.0
+    ixx = mass * (3 * radius**2 + length**2) / 12
+    izz = mass * radius**2 / 2
+    path = tmp_path / "r.urdf"
+    path.write_text(f'<robot name="r"><link name="base"/><link name="wheel"><inertial><mass '
+                    f'value="{mass}"/><inertia ixx="{ixx}" iyy="{ixx}" izz="{izz}" ixy="0" '
+                    f'ixz="0" iyz="0"/></inertial><collision><geometry><cylinder '
+                    f'radius="{radius}" length="{length}"/></geometry></collision></link><joint '
+                    'name="j" type="continuous"><parent link="base"/><child link="wheel"/>'
+                    '<axis xyz="0 0 1"/></joint></robot>')
+    result = run_servicebot("check", "urdf", path, "--isolated", "--format", "json",
+                            "--select", "SB301")
+    (found,) = findings(result.stdout)
+    assert "mass 50 kg makes its solid cylinder r=0.033 m, length 0.026 m 5.62e+05 kg/m^3, " \
+        "denser than any metal, and its inertia fits that mass" in found["message"]
+    assert found["fix"].startswith('mass value="0.05"')
