@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
 
+from servicebot_cli.check import include_names
 from servicebot_cli.check.findings import Issue
 from servicebot_cli.common.errors import PackageNotFound, RemoteResource, UnknownScheme
 from servicebot_cli.common.inputs import read_again
@@ -129,22 +130,27 @@ def find_issues(robot: RobotDescription, search: PackageSearch) -> Iterator[Issu
         data = _source_bytes(path)
         if data is None:
             continue
-        text = comments_blanked(data).decode("utf-8", "replace")
+        blanked = comments_blanked(data)
+        text = blanked.decode("utf-8", "replace")
+        constants = include_names.constants(blanked) if b"$(find $" in blanked else None
         seen: set[str] = set()
         for match in _FIND.finditer(text):
-            name = match[1]
-            if "$" in name or name in seen:
-                continue
-            seen.add(name)
-            location = search.locate(name, path.parent.absolute())
-            if location is None or location.ros_finds_it:
-                continue
-            line = text.count("\n", 0, match.start()) + 1
-            column = match.start() - text.rfind("\n", 0, match.start())
-            yield Issue("SB409", f"$(find {name}) resolves only as {location.how}; ROS finds "
-                        "packages by the <name> of their package.xml, so ROS's xacro fails on "
-                        f"this file ('package {name} not found')", where=(file, line, column),
-                        fix=_find_fix(name, location.path))
+            # $(find ${package_name}): the file's own constants name the package
+            names = [match[1]] if "$" not in match[1] or constants is None else \
+                include_names.substituted(match[1], *constants)
+            for name in names:
+                if "$" in name or name in seen:
+                    continue
+                seen.add(name)
+                location = search.locate(name, path.parent.absolute())
+                if location is None or location.ros_finds_it:
+                    continue
+                line = text.count("\n", 0, match.start()) + 1
+                column = match.start() - text.rfind("\n", 0, match.start())
+                yield Issue("SB409", f"$(find {name}) resolves only as {location.how}; ROS "
+                            "finds packages by the <name> of their package.xml, so ROS's "
+                            f"xacro fails on this file ('package {name} not found')",
+                            where=(file, line, column), fix=_find_fix(name, location.path))
 
 
 def _source_bytes(path: Path) -> bytes | None:

@@ -94,3 +94,25 @@ def test_a_package_name_a_letter_off_a_workspace_package_is_suggested(run, tmp_p
                             "--select", "SB408").stdout)
     assert found["message"].startswith("package 'foo_descripton' not found (did you mean "
                                        "'foo_description'?): 1 mesh not checked")
+
+
+def test_a_find_of_a_package_named_by_a_property_is_judged_alike(run, tmp_path):
+    """andino: $(find ${package_name}), package_name a property of the file. With the
+    package.xml's <name> misspelt, ROS's xacro fails ('package not found') and check passed
+    the file with no word: the name a property gives is now judged as one written."""
+    package = tmp_path / "ws" / "src" / "my_description"
+    (package / "urdf").mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>my_descripton</name></package>")
+    (package / "urdf" / "inc.xacro").write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="tool"/></robot>')
+    robot = package / "urdf" / "robot.urdf.xacro"
+    robot.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                     '  <xacro:property name="pkg" value="my_description"/>\n'
+                     '  <link name="base"/>\n'
+                     '  <xacro:include filename="$(find ${pkg})/urdf/inc.xacro"/>\n'
+                     '  <joint name="j" type="fixed"><parent link="base"/><child link="tool"/>'
+                     '</joint>\n</robot>\n')
+    result = run("check", "urdf", robot, "--isolated", "--format", "json")
+    (found,) = [f for f in findings(result.stdout) if f["code"] == "SB409"]
+    assert (found["line"], found["severity"]) == (4, "warning")
+    assert found["message"].startswith("$(find my_description) resolves only as the directory")
