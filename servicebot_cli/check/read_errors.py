@@ -74,7 +74,31 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
                      "passes it; a directory walk passes none, so it is not checked here",
                      where=(file, line, column), severity=Severity.WARNING,
                      fix=f"check it by name with {name}:=VALUE (and its other arguments)")
+    name = _UNDEFINED_NAME.search(text)
+    later = _defined_after(file, line, name[1]) if name and not _IN_MACRO.search(text) else None
+    if name is not None and later is not None:  # defined below: xacro knows it from there on
+        return Issue("SB006", f"{text}; {file}:{later} defines it, after this line",
+                     where=(file, line, column), fix=f"move the definition of '{name[1]}' "
+                     f"(line {later}) above line {line}: xacro knows a property only from "
+                     "where it is defined on")
     return Issue("SB006", text, where=(file, line, column), fix=_xacro_fix(text, undefined))
+
+
+def _defined_after(file: str, line: int, name: str) -> int | None:
+    """The line of the first ``<xacro:property name=NAME>`` of ``file`` below ``line``."""
+    try:
+        with open(file, "rb") as handle:
+            source = comments_blanked(handle.read(1 << 20)).decode("utf-8", "replace")
+    except OSError:
+        return None
+    pattern = re.compile(r"<xacro:property\b[^>]*\bname\s*=\s*[\"']" + re.escape(name)
+                         + r"[\"']")
+    for found in pattern.finditer(source):
+        at = source.count("\n", 0, found.start()) + 1
+        if at > line:
+            return at
+        return None  # defined above (in another scope): not this case
+    return None
 
 
 _UNDEFINED_NAME = re.compile(r"name '([^']+)' is not defined")

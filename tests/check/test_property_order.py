@@ -1,0 +1,46 @@
+"""SB006 for a property used above the line that defines it says where it is defined.
+
+xacro knows a property only from its definition on: a wheel radius defined at line 10 and
+used at line 7 failed with "name 'wheel_rad' is not defined" and the fix "define it before
+this line, or include the file that defines it", sending the user after a missing include
+where the file defines it three lines below.
+"""
+
+from __future__ import annotations
+
+from tests.check.helpers import findings
+from tests.conftest import run_servicebot
+
+ROBOT = """<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <link name="base_link"/>
+  <link name="wheel">
+    <collision>
+      <geometry>
+        <!-- wheel_rad: defined below -->
+        <cylinder radius="${wheel_rad}" length="0.02"/>
+      </geometry>
+    </collision>
+  </link>
+  <xacro:property name="wheel_rad" value="0.05"/>
+  <joint name="j" type="fixed"><parent link="base_link"/><child link="wheel"/></joint>
+</robot>
+"""
+
+
+def test_a_property_defined_below_its_use_is_said_so(tmp_path):
+    path = tmp_path / "robot.urdf.xacro"
+    path.write_text(ROBOT)
+    result = run_servicebot("check", "urdf", path, "--isolated", "--format", "json")
+    (found,) = findings(result.stdout)
+    assert found["code"] == "SB006" and found["line"] == 7
+    assert found["message"].endswith("robot.urdf.xacro:11 defines it, after this line")
+    assert found["fix"] == ("move the definition of 'wheel_rad' (line 11) above line 7: xacro "
+                            "knows a property only from where it is defined on")
+
+
+def test_a_property_defined_nowhere_keeps_its_fix(tmp_path):
+    path = tmp_path / "robot.urdf.xacro"
+    path.write_text(ROBOT.replace('  <xacro:property name="wheel_rad" value="0.05"/>\n', ""))
+    (found,) = findings(run_servicebot("check", "urdf", path, "--isolated", "--format",
+                                       "json").stdout)
+    assert found["fix"].startswith("define 'wheel_rad' (<xacro:property")
