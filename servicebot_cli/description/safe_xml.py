@@ -98,9 +98,9 @@ def parse_xml(
         filename: Display name used in error messages.
         max_bytes: Refuse larger input [bytes].
         max_elements: Refuse documents with more elements.
-        blanks_before_declaration: Accept blank lines or spaces before ``<?xml ...?>``, as
-            tinyxml2 (urdfdom, Gazebo, MuJoCo) does; False to refuse them, as expat (xacro)
-            does.
+        blanks_before_declaration: Accept blank lines or spaces before ``<?xml ...?>``, and a
+            malformed declaration (``<?xml verison="1.0"?>``), as tinyxml2 (urdfdom, Gazebo,
+            MuJoCo) does; False to refuse both, as expat (xacro) does.
 
     Raises:
         XmlError: Empty, too large, not UTF-8, or not well-formed; with line and column.
@@ -125,7 +125,7 @@ def parse_xml(
             # tinyxml2 skips blanks before the declaration; expat refuses them (doosan's
             # H2017_2_2.dae, a URDF written with a blank first line)
             return _reparsed(text, blanks, filename, max_elements)
-        declaration = _declaration_end(text)
+        declaration = _declaration_end(text) if blanks_before_declaration else 0
         if not (declaration and exc.line == 1 and exc.reason.endswith(_BAD_DECLARATION)):
             accident = download_accident(text)
             if accident is not None:

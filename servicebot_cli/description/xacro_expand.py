@@ -446,7 +446,7 @@ class _Tracer:
         self.known_args.update(_ARG_USE_RE.findall(text))
         builder = _PositionBuilder(self, display)
         try:
-            parsed: xml.dom.minidom.Document = builder.parseString(text.encode("utf-8"))
+            parsed: xml.dom.minidom.Document = builder.parseString(text)
             self.docs.append(parsed)
             return parsed
         except expat.ExpatError as exc:  # namespace errors: safe_xml does not track prefixes
