@@ -226,6 +226,9 @@ def _references_only(text: str) -> str:
     return _UNREAD.sub(lambda m: re.sub(r"[^\n]", " ", m[0]), text)
 
 
+_PREDEFINED = re.compile(r"&(?:amp|lt|gt|quot|apos);")
+"""XML's predefined entities: an entity's value may refer to them (``"a &amp; b"``)."""
+
 class _Builder:
     """Feeds expat events into a TreeBuilder of PositionedElements."""
 
@@ -341,7 +344,8 @@ class _Builder:
         """Take a plain internal entity (xacro expands it); refuse any other."""
         if is_parameter or value is None or system_id or public_id or notation:
             why = "a parameter entity" if is_parameter else "an external entity"
-        elif len(value) > MOST_ENTITY_BYTES or "&" in value or "%" in value:
+        elif len(value) > MOST_ENTITY_BYTES or "&" in _PREDEFINED.sub("", value) \
+                or "%" in value:  # XML's five predefined entities expand to no more
             why = (f"its value is over {MOST_ENTITY_BYTES} characters" if len(value) >
                    MOST_ENTITY_BYTES else "its value refers to another entity")
         elif len(self.entities) >= MOST_ENTITIES:

@@ -40,3 +40,20 @@ def test_a_malformed_declaration_is_refused_in_xacro_and_read_past_in_a_urdf(tmp
     urdf.write_text('<?xml verison="1.0"?>\n<robot name="r"><link name="base"/></robot>\n')
     result = run_servicebot("check", "urdf", urdf, "--isolated", "--format", "json")
     assert result.returncode == 0, result.stdout  # tinyxml2 (check_urdf) reads it
+
+
+def test_an_entity_whose_value_holds_a_predefined_entity_is_read(tmp_path):
+    """<!ENTITY q "a &amp; b"> was refused ('its value refers to another entity'): XML's
+    five predefined entities expand to nothing more, and xacro writes name="a &amp; b"."""
+    path = tmp_path / "robot.urdf.xacro"
+    path.write_text('<?xml version="1.0"?>\n<!DOCTYPE robot [\n  <!ENTITY q "a &amp; b">\n]>\n'
+                    '<robot xmlns:xacro="http://www.ros.org/wiki/xacro" name="r">\n'
+                    '  <link name="a"><visual name="&q;"/></link>\n</robot>\n')
+    expanded = run_servicebot("expand", path)
+    assert expanded.returncode == 0, expanded.stderr
+    assert '<visual name="a &amp; b"/>' in expanded.stdout
+    nested = tmp_path / "nested.urdf.xacro"
+    nested.write_text(path.read_text().replace('<!ENTITY q "a &amp; b">',
+                                               '<!ENTITY p "x"><!ENTITY q "&p;_b">'))
+    refused = run_servicebot("expand", nested)
+    assert refused.returncode == 2 and "its value refers to another entity" in refused.stderr
