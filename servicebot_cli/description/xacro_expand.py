@@ -216,8 +216,13 @@ def _refuse_unwritable(doc: xml.dom.minidom.Document, display: str, tracer: _Tra
                     f"write it as text (value=\"{value}\")")
 
 
-_XML_NAME = re.compile(r"(?:[^\W\d]|:)[\w.:-]*")
-"""An XML name (letters, '_' or ':' first; then letters, digits, '.', '-', '_', ':')."""
+_NAME_START = (":A-Z_a-z\u00c0-\u00d6\u00d8-\u00f6\u00f8-\u02ff\u0370-\u037d\u037f-\u1fff"
+               "\u200c-\u200d\u2070-\u218f\u2c00-\u2fef\u3001-\ud7ff\uf900-\ufdcf"
+               "\ufdf0-\ufffd\U00010000-\U000effff")
+_XML_NAME = re.compile(f"[{_NAME_START}][{_NAME_START}\\-.0-9\u00b7\u0300-\u036f\u203f-\u2040]*")
+"""An XML name, as XML 1.0 (fifth edition) writes NameStartChar and NameChar: letters, '_'
+or ':' first (and most characters beyond Latin), then also digits, '-', '.', U+00B7, the
+combining marks U+0300-036F and U+203F-2040."""
 
 
 def _refuse_bad_names(doc: xml.dom.minidom.Document, display: str, tracer: _Tracer) -> None:

@@ -57,3 +57,15 @@ def test_an_entity_whose_value_holds_a_predefined_entity_is_read(tmp_path):
                                                '<!ENTITY p "x"><!ENTITY q "&p;_b">'))
     refused = run_servicebot("expand", nested)
     assert refused.returncode == 2 and "its value refers to another entity" in refused.stderr
+
+
+@pytest.mark.parametrize("name", ["gz\u00b7tag", "cafe\u0301"])
+def test_a_name_xml_allows_is_no_bad_name(tmp_path, name):
+    """XML 1.0's NameChars include U+00B7 and combining marks: a literal element so
+    named was refused as 'no XML name ... (a xacro:element named it)'; xacro expands it."""
+    path = tmp_path / "robot.urdf.xacro"
+    path.write_text(f'<robot xmlns:xacro="http://www.ros.org/wiki/xacro" name="r"><link '
+                    f'name="a"><{name}/></link></robot>\n', encoding="utf-8")
+    expanded = run_servicebot("expand", path)
+    assert expanded.returncode == 0, expanded.stderr
+    assert f"<{name}/>" in expanded.stdout
