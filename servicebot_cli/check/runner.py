@@ -22,6 +22,7 @@ from servicebot_cli.check.findings import Finding, Issue, Severity
 from servicebot_cli.check.settings import Settings
 from servicebot_cli.check.xacro_warnings import xacro_warning
 from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.description.load_warnings import LoadWarning
 from servicebot_cli.description.safe_xml import ENTITY_FIX, MAX_BYTES, read_as_written
 
 if TYPE_CHECKING:
@@ -75,7 +76,9 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv,
         if _unreadable(exc, source):
             raise
         issue = read_errors.issue_of(exc, source.display, walked=not named)
-        return _report(source.display, place_issues(None, [issue], settings))
+        said = [xacro_warning(w, source.display) for w in exc.said_before
+                if isinstance(w, LoadWarning)]  # xacro's warnings before it failed
+        return _report(source.display, place_issues(None, [*said, issue], settings))
     from servicebot_cli.check import packages
 
     part = _part_of_another(robot, source)

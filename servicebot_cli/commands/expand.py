@@ -16,7 +16,9 @@ from servicebot_cli.commands.options import (
 )
 
 if TYPE_CHECKING:
-    from servicebot_cli.description.load_warnings import Said
+    from collections.abc import Iterable
+
+    from servicebot_cli.description.load_warnings import LoadWarning, Said
 
 URDF_SUFFIXES = (".urdf", ".xml")
 """What ``-o`` may be called: ``robot.urdf``, ``robot.urdf.xml`` (as the bundled ones), ``.xml``."""
@@ -27,6 +29,14 @@ _SAID: dict[Said, tuple[str, str]] = {
     "message": ("", ""), "package": ("warning: ", "")}
 """How each kind of thing xacro printed is shown, before and after its place: a file's
 messages as they are."""
+
+
+def _show(warnings: Iterable[LoadWarning]) -> None:
+    """Each warning on stderr as xacro shows it: a file's messages bare."""
+    for warning in warnings:
+        fix = f"; {warning.fix}" if warning.fix else ""
+        click.echo(f"{_SAID[warning.said_as][0]}{warning.where}{_SAID[warning.said_as][1]}"
+                   f"{warning.text}{fix}", err=True)
 
 
 @click.command(cls=Command)
@@ -51,7 +61,9 @@ def expand(ctx: click.Context, robot_args: RobotArgs, output: str, inorder: bool
       servicebot expand robots/service_robot.urdf.xacro hardware:=real -o real.urdf
       servicebot expand my_robot.urdf.xacro --package my_robot_description=./src/desc
     """
+    from servicebot_cli.common.errors import DescriptionError
     from servicebot_cli.common.files import write_atomic
+    from servicebot_cli.description.load_warnings import LoadWarning
     from servicebot_cli.description.loader import RobotSource, read_description
     from servicebot_cli.description.resources import DEFAULT_ROBOT, XACRO_SOURCE, bundled_file
 
@@ -71,11 +83,12 @@ def expand(ctx: click.Context, robot_args: RobotArgs, output: str, inorder: bool
         args.setdefault("hardware", robot_args.bundled or DEFAULT_ROBOT)
         path = bundled_file(XACRO_SOURCE)
         source = RobotSource(path, str(path), tuple(args.items()), robot_args.packages)
-    robot = read_description(source)
-    for warning in robot.warnings:  # as xacro shows them: a file's messages bare
-        fix = f"; {warning.fix}" if warning.fix else ""
-        click.echo(f"{_SAID[warning.said_as][0]}{warning.where}{_SAID[warning.said_as][1]}"
-                   f"{warning.text}{fix}", err=True)
+    try:
+        robot = read_description(source)
+    except DescriptionError as exc:  # what xacro said before failing, as xacro shows it
+        _show(w for w in exc.said_before if isinstance(w, LoadWarning))
+        raise
+    _show(robot.warnings)
     if output == "-":
         click.echo(robot.xml_text, nl=False)
     else:

@@ -49,7 +49,14 @@ class AnswerIsNo(ServicebotError):
 
 
 class DescriptionError(ServicebotError):
-    """A robot description cannot be read, parsed, expanded or turned into a model."""
+    """A robot description cannot be read, parsed, expanded or turned into a model.
+
+    Attributes:
+        said_before: What xacro printed before it failed (its warnings, often the failure's
+            explanation), for the caller to show; none for other failures.
+    """
+
+    said_before: tuple[object, ...] = ()
 
 
 class XmlError(DescriptionError):

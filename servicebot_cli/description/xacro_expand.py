@@ -120,10 +120,13 @@ def expand(
             with _recursion_limit(_RECURSION_LIMIT):
                 doc = xacro.parse(None, display)
                 xacro.process_doc(doc, mappings=_ReadArguments(given, tracer.known_args))
-        except DescriptionError:
+        except DescriptionError as exc:
+            exc.said_before = said_by_xacro(tracer.said)
             raise
         except Exception as exc:  # xacro raises bare Python errors from expressions, too
-            raise tracer.error(exc, xacro.filestack) from None
+            error = tracer.error(exc, xacro.filestack)
+            error.said_before = said_by_xacro(tracer.said)  # xacro printed them before failing
+            raise error from None
     _refuse_unwritable(doc, display, tracer)
     _refuse_bad_names(doc, display, tracer)
     bare = bare_macro_calls(doc, tracer.macros, tracer.ref_of) + bare_directives(
