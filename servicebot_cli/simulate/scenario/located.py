@@ -83,25 +83,47 @@ def parse(text: str, display: str, *, json_syntax: bool) -> Located:
     return _parse_yaml(text, display)
 
 
+_BOOL, _INT, _FLOAT = (f"tag:yaml.org,2002:{kind}" for kind in ("bool", "int", "float"))
+_MERGE = "tag:yaml.org,2002:merge"
+
+
 @functools.cache
 def _yaml_loader() -> type[SafeLoader]:
-    """PyYAML's safe loader, reading numbers as people write them (YAML 1.2).
+    """PyYAML's safe loader, reading booleans and numbers as YAML 1.2's core schema does.
 
-    PyYAML follows YAML 1.1, where ``1e2`` and ``5e-2`` (an exponent without a dot) are
-    strings; YAML 1.2, JSON and every person writing a scenario read them as numbers.
+    PyYAML follows YAML 1.1: ``1e2`` (an exponent without a dot) is a string, ``010`` is 8
+    (octal), ``1:30`` is 90 (base 60), ``1_0`` is 10 and ``yes``/``on`` are true. YAML 1.2,
+    JSON and every person writing a scenario read ``1e2`` as a number, ``010`` as 10, and the
+    others as the strings they are (which the scenario then refuses as no number).
     """
     import yaml
 
     base = getattr(yaml, "CSafeLoader", yaml.SafeLoader)  # libyaml's parser when built with it
 
     class Loader(base):  # type: ignore[misc, valid-type]  # PyYAML ships no types
-        """SafeLoader with YAML 1.2's exponent floats."""
+        """SafeLoader with YAML 1.2's core schema for booleans, integers and floats."""
 
+    Loader.yaml_implicit_resolvers = {
+        first: [(tag, regexp) for tag, regexp in resolvers if tag not in (_BOOL, _INT, _FLOAT)]
+        for first, resolvers in base.yaml_implicit_resolvers.items()}
+    Loader.add_implicit_resolver(_BOOL, re.compile(r"^(?:true|True|TRUE|false|False|FALSE)$"),
+                                 list("tTfF"))
+    Loader.add_implicit_resolver(_INT, re.compile(r"^(?:[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+)$"),
+                                 list("-+0123456789"))
     Loader.add_implicit_resolver(
-        "tag:yaml.org,2002:float",
-        re.compile(r"^[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)[eE][-+]?[0-9]+$"),
+        _FLOAT, re.compile(r"^(?:[-+]?(?:\.[0-9]+|[0-9]+(?:\.[0-9]*)?)(?:[eE][-+]?[0-9]+)?"
+                           r"|[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN))$"),
         list("-+0123456789."))
+    Loader.add_constructor(_INT, _core_int)
     return Loader
+
+
+def _core_int(loader: SafeLoader, node: Node) -> int:
+    """An integer as YAML 1.2 writes it: decimal (``010`` is 10), ``0o`` octal, ``0x`` hex."""
+    text = str(loader.construct_scalar(node))
+    if text.startswith(("0o", "0x")):
+        return int(text[2:], 8 if text[1] == "o" else 16)
+    return int(text)
 
 
 def _parse_yaml(text: str, display: str) -> Located:
@@ -165,18 +187,26 @@ def _yaml_value(node: Node, path: Path, positions: Positions, walk: _YamlWalk) -
     positions[path] = (node.start_mark.line + 1, node.start_mark.column + 1)
     if isinstance(node, yaml.MappingNode):
         result: dict[str, Value] = {}
+        merged: list[dict[str, Value]] = []  # YAML's merge keys (<<: *defaults)
         for key_node, value_node in node.value:
+            where = f"{display}:{key_node.start_mark.line + 1}: {dotted(path) or 'document'}"
             if not isinstance(key_node, yaml.ScalarNode):
-                raise ScenarioError(
-                    f"{display}:{key_node.start_mark.line + 1}: {dotted(path) or 'document'}: "
-                    "a key that is a list or mapping; keys are names")
-            key = str(constructor.construct_object(key_node, deep=True))
+                raise ScenarioError(f"{where}: a key that is a list or mapping; keys are names")
+            if key_node.tag == _MERGE:
+                merged += _merged(walk.value(value_node, path, {}), where)
+                continue
+            try:
+                key = str(constructor.construct_object(key_node, deep=True))
+            except yaml.YAMLError as exc:  # a tag no constructor knows (!foo key)
+                raise ScenarioError(f"{where}: a key YAML cannot read: {exc.problem}") from None
             if key in result:
                 raise ScenarioError(
                     f"{display}:{key_node.start_mark.line + 1}: {dotted((*path, key))}: "
                     "given twice; keep one"
                 )
             result[key] = walk.value(value_node, (*path, key), positions)
+        for mapping in merged:  # keys written in the mapping itself win, as YAML merges
+            result = {**mapping, **result}
         return result
     if isinstance(node, yaml.SequenceNode):
         return [walk.value(item, (*path, i), positions) for i, item in enumerate(node.value)]
@@ -189,6 +219,14 @@ def _yaml_value(node: Node, path: Path, positions: Positions, walk: _YamlWalk) -
         raise ScenarioError(f"{display}:{line}: {dotted(path)}: expected a finite number, "
                             "got an integer too long to read") from None
     return scalar
+
+
+def _merged(value: Value, where: str) -> list[dict[str, Value]]:
+    """The mappings a merge key (``<<:``) brings: one, or a list of them, first first."""
+    mappings = value if isinstance(value, list) else [value]
+    if not all(isinstance(m, dict) for m in mappings):
+        raise ScenarioError(f"{where}: a merge key (<<) takes a mapping or a list of them")
+    return [m for m in reversed(mappings) if isinstance(m, dict)]  # the first wins
 
 
 _NUMBER = re.compile(r"-?(?:0|[1-9]\d*)(?:\.\d+)?(?:[eE][-+]?\d+)?")
