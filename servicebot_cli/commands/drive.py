@@ -39,6 +39,10 @@ _PORT_ONLY = (("--port", "port", "no port is opened"),
               ("--reconnect-attempts", "reconnect_attempts", "no link to lose"))
 
 
+_DAY_S = 86_400.0
+"""The longest wait an option may ask for: past it, the system's clock calls overflow (1e10 s
+ended in an internal error), and no board takes a day to answer."""
+
 @click.command(cls=Command)
 @robot_arguments(default="real")
 @click.option("--port", type=SerialPort(), metavar="PATH",
@@ -66,11 +70,12 @@ _PORT_ONLY = (("--port", "port", "no port is opened"),
               help="Commands per second; refused above what the baud rate carries.")
 @click.option("--max-accel", type=Number("RAD_S2", positive=True), default=1.0,
               show_default=True, help="Wheel acceleration limit [rad/s^2].")
-@click.option("--link-timeout-s", type=Number("S", positive=True), default=1.0,
+@click.option("--link-timeout-s", type=Number("S", positive=True, maximum=_DAY_S), default=1.0,
               show_default=True, help="No reply for this long is a lost link (exit 5) [s].")
-@click.option("--connect-timeout-s", type=Number("S", positive=True), default=2.0,
+@click.option("--connect-timeout-s", type=Number("S", positive=True, maximum=_DAY_S),
+              default=2.0,
               show_default=True, help="How long the firmware may take to answer at first [s].")
-@click.option("--boot-time-s", type=Number("S", non_negative=True), default=0.0,
+@click.option("--boot-time-s", type=Number("S", non_negative=True, maximum=_DAY_S), default=0.0,
               show_default=True,
               help="Wait this long after opening the port before the handshake, at the "
               "start and on every reconnect: a board that resets when the port opens "

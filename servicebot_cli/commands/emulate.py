@@ -22,7 +22,7 @@ from servicebot_cli.commands.serial_options import arduino_config, serial_option
 @serial_options
 @click.option("--pace", is_flag=True,
               help="Pace bytes at the baud rate, each way (10 bits per byte), like a real UART.")
-@click.option("--watchdog-ms", type=click.IntRange(min=1), default=None, metavar="MS",
+@click.option("--watchdog-ms", type=click.IntRange(min=1, max=65_535), default=None, metavar="MS",
               help="Stop the motors when no motion command came for this long "
               "[default: 500; 2000 with --protocol arduino, as the stock firmware].")
 @click.option("--drop", type=Number("P", fraction=True), default=0.0,

@@ -175,7 +175,10 @@ def _drive_then_stop(loop: DriveLoop, settings: StreamSettings, source: Source,
     """Connect and stream; whatever happens, stop. ``(what ended the run, stop confirmed)``."""
     failure: ServicebotError | None = None
     try:
-        hello = loop.connect(settings.connect_timeout_s)
+        try:
+            hello = loop.connect(settings.connect_timeout_s)
+        except LinkLost as exc:  # a port that fails before any answer: no link was had
+            raise LinkError(str(exc).replace("link lost: ", "no link: ", 1)) from None
         log(f"connected to {loop.where}: {hello.description}")
         if hello.baud is not None and hello.baud != settings.baud:
             log(f"warning: the firmware says it runs at {hello.baud} baud, the port at "

@@ -106,3 +106,46 @@ def test_arduino_protocol_against_a_silent_board(run, fake_device):
     assert_one_line_error(run("drive", "--port", device.path, "--protocol", "arduino",
                               "--ticks-per-rev", "3436", *ONE_SHOT), 4, "no answer")
     assert device.received.startswith(b"b\r")
+
+
+def test_a_port_that_dies_before_any_answer_is_a_link_error_not_a_lost_link(run):
+    """A device that fails on drive's first byte, before the firmware ever answered, ended
+    with 'link lost' and exit 5, the code of a link lost mid-run; no link was ever had."""
+    import select
+    import threading
+    import tty
+
+    master, slave = os.openpty()
+    tty.setraw(slave)
+    port = os.ttyname(slave)
+
+    def die_on_first_byte() -> None:
+        select.select([master], [], [], 10)
+        os.read(master, 100)
+        os.close(master)
+
+    board = threading.Thread(target=die_on_first_byte, daemon=True)
+    board.start()
+    try:
+        result = run("drive", "--port", port, *ONE_SHOT)
+    finally:
+        board.join(10)
+        os.close(slave)
+    assert_one_line_error(result, 4, f"no link: reading {port} failed")
+
+
+def test_waits_beyond_a_day_are_refused_before_any_port_is_opened(run):
+    """--boot-time-s 1e10 passed the option check and overflowed the clock call (exit 3)."""
+    for option in ("--boot-time-s", "--link-timeout-s", "--connect-timeout-s"):
+        assert_one_line_error(run("drive", "--port", "/dev/null", option, "1e10", "--linear",
+                                  "0.01", "--duration-s", "0.5"), 2,
+                              f"Invalid value for '{option}': 1e10 is above the maximum 86400")
+
+
+def test_a_watchdog_the_protocol_cannot_carry_is_refused():
+    """emulate --watchdog-ms 65536 crashed at the first PING (a 16-bit field). A process
+    with a timeout: an emulator that takes the value serves until it is stopped."""
+    from tests.conftest import run_servicebot
+
+    assert_one_line_error(run_servicebot("emulate", "--watchdog-ms", "65536", timeout=30), 2,
+                          "'--watchdog-ms': 65536 is not in the range 1<=x<=65535")
