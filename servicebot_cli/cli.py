@@ -123,7 +123,7 @@ def _no_room(exc: OSError) -> str:
 def _internal(exc: Exception) -> str:
     """The line for an error no one foresaw."""
     return (f"internal error: {type(exc).__name__}: {exc}. This is a bug in servicebot; "
-            "rerun with --debug for the traceback and report it")
+            "rerun as 'servicebot --debug COMMAND ...' for the traceback and report it")
 
 
 def _fail(ctx: click.Context, message: str, code: int, debug: bool) -> NoReturn:

@@ -56,12 +56,28 @@ def load_meshes(scenario: Scenario, base_dir: Path) -> list[Mesh]:
             raise located.error(where, f"cannot load '{spec.file}' as a mesh: {exc}") from None
         if not isinstance(mesh, trimesh.Trimesh) or not len(mesh.faces):
             raise located.error(where, f"'{spec.file}' has no triangles")
+        if not np.all(np.isfinite(mesh.vertices)) or _not_finite(path):
+            # trimesh drops a face with a 'v nan nan nan' corner: a box with holes in it
+            raise located.error(where, f"'{spec.file}' has coordinates that are not finite")
         transform = np.eye(4)
         transform[:3, :3] = rpy_matrix(*spec.rpy_rad) * spec.scale
         transform[:3, 3] = spec.xyz_m
         mesh.apply_transform(transform)
         meshes.append(mesh)
     return meshes
+
+
+def _not_finite(path: Path) -> bool:
+    """Whether a file the fast readers read (STL, OBJ, COLLADA) has a coordinate not finite."""
+    from servicebot_cli.description import mesh_readers
+
+    if path.suffix.lower() not in mesh_readers.SUFFIXES:
+        return False
+    try:
+        _load_triangles(path)
+    except MeshUnreadable as exc:
+        return "not finite" in str(exc)
+    return False
 
 
 def link_mesh_reader(resolver: PackageResolver, base_dir: Path) -> MeshReader:
