@@ -164,6 +164,17 @@ def scan_files(body: SimRobot) -> list[str]:
     return out
 
 
+_RUN_FILE = re.compile(r"(?:(?:ground_truth|cmd_vel|odometry|joint_states|imu|camera_info|"
+                       r"collisions|scan(?:_.+)?)(?:_\d+)?\.csv)|summary\.json|camera\.png")
+"""The names of the files a run writes in ``--out``."""
+
+
+def _remove(paths: list[Path]) -> None:
+    for path in paths:
+        with contextlib.suppress(FileNotFoundError):
+            path.unlink()
+
+
 class CsvWriter:
     """Writes a run's CSV files and ``summary.json`` into ``directory``, piece by piece.
 
@@ -208,7 +219,17 @@ class CsvWriter:
             self.last_frame = piece.frames[-1]
 
     def finish(self, summary: Summary) -> None:
-        """Write ``summary.json`` and ``camera.png``; in place when the stack closes."""
+        """Write ``summary.json`` and ``camera.png``; in place when the stack closes.
+
+        In an existing directory, a run's file this run does not write (an earlier run's
+        ``scan_rear_scan.csv``, ``camera.png``) is removed as the new ones go in: the
+        directory holds one run, whose ``summary.json`` it is. Other files stay.
+        """
         self._open("summary.json").write(dumps(summary))
         if self.last_frame is not None:
             self._open("camera.png", "wb").write(png_bytes(self.last_frame.rgb))
+        if not self.in_place:
+            written = {*self.files, "summary.json", "camera.png" if self.last_frame else ""}
+            stale = [entry for entry in self.folder.iterdir() if entry.is_file()
+                     and _RUN_FILE.fullmatch(entry.name) and entry.name not in written]
+            self.stack.callback(_remove, stale)
