@@ -115,8 +115,12 @@ def check_rate(rate_hz: float, link: HostLink, baud: int, link_timeout_s: float 
     """
     capacity = link_capacity_hz(link, baud)
     frame = max(link.command_bytes, link.reply_bytes)
+    if capacity < MIN_RATE_HZ:  # no rate both fits the link and feeds the watchdog
+        raise BadOption("--baud", f"{baud} baud carries {capacity:.1f} commands a second "
+                        f"({frame}-byte frames), fewer than the {MIN_RATE_HZ:g} Hz that keep "
+                        "the firmware's watchdog fed; give the firmware's faster baud rate")
     if rate_hz > capacity:
-        raise BadOption("--rate", f"{rate_hz:g} Hz needs {rate_hz * frame:.0f} bytes/s one way "
+        raise BadOption("--rate", f"{rate_hz:g} Hz needs {rate_hz * frame:.3g} bytes/s one way "
                         f"({frame}-byte frames) but {baud} baud carries {baud / 10:.0f}; at "
                         f"most {capacity:.1f} Hz")
     if rate_hz < MIN_RATE_HZ:

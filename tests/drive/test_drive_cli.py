@@ -179,3 +179,15 @@ def test_max_speed_caps_below_the_urdf_and_refuses_above_it(run):
 def test_deadman_is_for_teleop_only(run):
     result = run("drive", "--deadman-ms", "600", "--linear", "0.01", "--duration-s", "1")
     assert result.exit_code == 2 and "--deadman-ms is for teleop" in result.stderr
+
+
+def test_a_baud_too_slow_for_any_rate_says_so(run):
+    """At 1200 baud drive said 'at most 3.8 Hz', then refused 3.7 Hz as too slow for the
+    watchdog: no rate works, and neither line said so. A rate of 1e300 printed its bytes a
+    second in 300 digits."""
+    assert_one_line_error(run("drive", "--baud", "1200", "--dry-run", "--linear", "0.01",
+                              "--duration-s", "0.5"), 2,
+                          "1200 baud carries 3.8 commands a second", "fewer than the 4 Hz")
+    line = assert_one_line_error(run("drive", "--rate", "1e300", "--dry-run", "--linear",
+                                     "0.01", "--duration-s", "0.5"), 2, "needs 3.2e+301 bytes/s")
+    assert len(line) < 300
