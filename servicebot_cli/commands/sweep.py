@@ -95,5 +95,5 @@ def sweep(sweep_file: str, robot_args: RobotArgs, jobs: int | None, scheduler: s
         click.echo(note, err=True)
     show_sweep(report, fmt)
     if report.failed:
-        raise AnswerIsNo(failure_line(report))
+        raise AnswerIsNo(failure_line(report, fmt))
 

@@ -58,10 +58,10 @@ def failing_runs(failed: Sequence[RunResult]) -> list[str]:
     return lines
 
 
-def failure_line(report: SweepReport) -> str:
-    """The stderr line for a sweep whose answer is no."""
-    return (f"{len(report.failed)} of {len(report.results)} runs failed an expectation "
-            "(table above)")
+def failure_line(report: SweepReport, fmt: str = "text") -> str:
+    """The stderr line for a sweep whose answer is no (the text report's table lists them)."""
+    where = "(table above)" if fmt == "text" else "(failed_runs in the report above)"
+    return f"{len(report.failed)} of {len(report.results)} runs failed an expectation {where}"
 
 
 def speed_line(report: SweepReport) -> str:

@@ -73,3 +73,13 @@ def test_a_failing_expectation_exits_1_with_the_failing_runs(run, write_sweep, t
         {"expect": "odometry_drift.final_yaw_rad < 0.1", "failed_runs": 2}]
     assert sorted(r["run"] for r in summary["failed_runs"]) == \
         sorted(int(r["run"]) for r in bad)
+
+
+def test_a_json_report_is_not_called_a_table(run, write_sweep, tmp_path):
+    """With --format json the stderr line still pointed at a '(table above)' that was not."""
+    sweep = write_sweep({"seeds": 1, "set": {"duration_s": 1}, "expect": ["collisions > 0"]})
+    result = run("sweep", sweep, "--out", tmp_path / "out", "--format", "json")
+    assert result.exit_code == 1
+    assert result.stderr.splitlines()[-1] == ("Error: 1 of 1 runs failed an expectation "
+                                             "(failed_runs in the report above)")
+    assert json.loads(result.stdout)["failed_runs"]
