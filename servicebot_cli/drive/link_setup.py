@@ -120,7 +120,9 @@ def check_rate(rate_hz: float, link: HostLink, baud: int, link_timeout_s: float 
                         f"({frame}-byte frames), fewer than the {MIN_RATE_HZ:g} Hz that keep "
                         "the firmware's watchdog fed; give the firmware's faster baud rate")
     if rate_hz > capacity:
-        raise BadOption("--rate", f"{rate_hz:g} Hz needs {rate_hz * frame:.3g} bytes/s one way "
+        needs = rate_hz * frame
+        shown = f"{needs:.0f}" if needs < 1e12 else f"{needs:.3g}"  # not 300 digits of 1e300
+        raise BadOption("--rate", f"{rate_hz:g} Hz needs {shown} bytes/s one way "
                         f"({frame}-byte frames) but {baud} baud carries {baud / 10:.0f}; at "
                         f"most {capacity:.1f} Hz")
     if rate_hz < MIN_RATE_HZ:
