@@ -17,6 +17,7 @@ import math
 from servicebot_cli.simulate.controllers.config import ControllersFile
 from servicebot_cli.simulate.controllers.limiter import GZ_MATH
 from servicebot_cli.simulate.scenario.definition import Controller, Scenario
+from servicebot_cli.simulate.scenario.located import ScenarioError
 
 DEFAULT = "default"
 SCENARIO = "scenario"
@@ -51,6 +52,7 @@ def resolve(scenario: Scenario, file: ControllersFile) -> Scenario:
     # a stream is published at most once per control tick (diff_drive_controller checks its
     # publish period in update(); joint_state_broadcaster publishes in update())
     control_hz = controller.update_rate_hz
+    _refuse_partial_tick(scenario.duration_s, control_hz)
     controller = dataclasses.replace(
         controller, publish_rate_hz=min(controller.publish_rate_hz, control_hz))
     broadcaster_hz = control_hz if file.joint_state_update_hz is None \
@@ -61,3 +63,22 @@ def resolve(scenario: Scenario, file: ControllersFile) -> Scenario:
                                controller_from=tuple(origin.items()),
                                speed_limiter=file.speed_limiter,
                                classic_drive=file.classic_drive)
+
+
+def _refuse_partial_tick(duration_s: float, control_hz: float) -> None:
+    """Refuse a run that does not end on a control tick: it would run to the next one.
+
+    At 30 Hz a run of 1.05 s ran to 1.0667 s (its CSVs and bag past the duration its summary
+    gave); at 0.7 Hz a run of 2 s ran to 2.857 s.
+
+    Raises:
+        ScenarioError: Saying the two durations on ticks around it.
+    """
+    ticks = duration_s * control_hz
+    if abs(ticks - round(ticks)) <= 1e-6 * max(1.0, ticks) and round(ticks) >= 1:
+        return
+    below, above = math.floor(ticks) / control_hz, math.ceil(ticks) / control_hz
+    shorter = f"{below:.6g} s or " if below > 0 else ""
+    raise ScenarioError(f"duration_s {duration_s:g} s is not a whole number of control ticks "
+                        f"at {control_hz:g} Hz (one every {1 / control_hz:.6g} s): give "
+                        f"{shorter}{above:.6g} s")
