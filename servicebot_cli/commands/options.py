@@ -539,6 +539,14 @@ class SerialPort(click.ParamType[str]):
 
     name = "PATH"
 
+    def convert(self, value: str, param: click.Parameter | None, ctx: click.Context | None
+                ) -> str:
+        """Refuse an empty path (``--port "$PORT"`` with PORT unset was read as no port)."""
+        if not str(value).strip():
+            self.fail("an empty path; give the serial device (/dev/ttyUSB0), or leave --port "
+                      "out for the description's", param, ctx)
+        return str(value)
+
     def shell_complete(
         self, ctx: click.Context, param: click.Parameter, incomplete: str
     ) -> list[CompletionItem]:

@@ -149,3 +149,10 @@ def test_a_watchdog_the_protocol_cannot_carry_is_refused():
 
     assert_one_line_error(run_servicebot("emulate", "--watchdog-ms", "65536", timeout=30), 2,
                           "'--watchdog-ms': 65536 is not in the range 1<=x<=65535")
+
+
+def test_an_empty_port_is_said_as_given(run):
+    """--port "$PORT" with PORT unset was taken as no port: 'port /dev/ttyUSB0 does not
+    exist', a device the user never named."""
+    assert_one_line_error(run("drive", "--port", "", "--linear", "0.01", "--duration-s", "0.5"),
+                          2, "'--port': an empty path")
