@@ -31,6 +31,7 @@ from servicebot_cli.kinematics.forward import configurations, frame_transforms, 
 from servicebot_cli.kinematics.frames import frame_ids, link_names
 from servicebot_cli.kinematics.json_types import JsonObject, JsonValue
 from servicebot_cli.kinematics.mimics import Mimics
+from servicebot_cli.kinematics.transforms import planar_matrix
 from servicebot_cli.kinematics.user_joints import (
     angular,
     clamped_user_vector,
@@ -191,7 +192,8 @@ class FkBatch:
             matrices = np.matmul(self.in_world, matrices)
         placed = ~np.isnan(base[:, 0])
         if placed.any():  # each line's own base, where ik placed it
-            matrices[placed] = np.matmul(_planar(base[placed])[:, None], matrices[placed])
+            bases = np.array([planar_matrix(x, y, yaw) for x, y, yaw in base[placed].tolist()])
+            matrices[placed] = np.matmul(bases[:, None], matrices[placed])
         poses = pose_table(matrices) + 0.0
         if self.deg:
             poses[..., 3:6] = np.degrees(poses[..., 3:6])
@@ -231,11 +233,3 @@ def _row_base(values: Mapping[str, JsonValue]) -> tuple[float, float, float]:
                  for key in ("base_x_m", "base_y_m", yaw_key))
     return x, y, math.radians(yaw) if yaw_key.endswith("deg") else yaw
 
-
-def _planar(base: FloatArray) -> FloatArray:
-    """4 x 4 transforms of bases at ``x, y, yaw`` (rows of ``base``), shape (n, 4, 4)."""
-    out = np.zeros((len(base), 4, 4))
-    c, s = np.cos(base[:, 2]), np.sin(base[:, 2])
-    out[:, 0, 0], out[:, 0, 1], out[:, 1, 0], out[:, 1, 1] = c, -s, s, c
-    out[:, 0, 3], out[:, 1, 3], out[:, 2, 2], out[:, 3, 3] = base[:, 0], base[:, 1], 1.0, 1.0
-    return out
