@@ -18,9 +18,9 @@ from servicebot_cli.check.findings import Issue
 from servicebot_cli.description.extensions import param
 from servicebot_cli.description.model_plugins import (
     diff_drive_kind,
+    odometry_frame_tags,
     odometry_frames,
     publishes_odom_tf,
-    ros1_plugin,
 )
 
 if TYPE_CHECKING:
@@ -63,14 +63,9 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
 
 def _frame_tags(plugin: Plugin) -> tuple[str, str] | None:
     """The odometry and base frame tags the plugin reads; None for a plugin that drives none."""
-    kind = diff_drive_kind(plugin)
-    if kind == "gz":
-        return "frame_id", "child_frame_id"
-    if kind is None and _PLANAR_MOVE not in plugin.filename:
+    if diff_drive_kind(plugin) is None and _PLANAR_MOVE not in plugin.filename:
         return None
-    if ros1_plugin(plugin):
-        return "odometryFrame", "robotBaseFrame"
-    return "odometry_frame", "robot_base_frame"
+    return odometry_frame_tags(plugin)
 
 
 def _broadcasts(plugin: Plugin) -> bool:

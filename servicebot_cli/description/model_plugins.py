@@ -149,14 +149,23 @@ def odometry_frames(plugin: Plugin, model: str, root_link: str) -> tuple[str, st
     canonical link). gazebo_ros_pkgs' ROS 2 plugins use their tags as written; the ROS 1 ones
     pass them through ``tf::resolve`` with no ``tf_prefix``, which drops a leading ``/``.
     """
+    odom_tag, base_tag = odometry_frame_tags(plugin)
     if diff_drive_kind(plugin) == "gz":
-        return (_text(plugin, "frame_id") or f"{model}/odom",
-                _text(plugin, "child_frame_id") or f"{model}/{root_link}")
+        return (_text(plugin, odom_tag) or f"{model}/odom",
+                _text(plugin, base_tag) or f"{model}/{root_link}")
     if ros1_plugin(plugin):
-        return ((_text(plugin, "odometryFrame") or "odom").lstrip("/"),
-                (_text(plugin, "robotBaseFrame") or "base_footprint").lstrip("/"))
-    return (_text(plugin, "odometry_frame") or "odom",
-            _text(plugin, "robot_base_frame") or "base_footprint")
+        return ((_text(plugin, odom_tag) or "odom").lstrip("/"),
+                (_text(plugin, base_tag) or "base_footprint").lstrip("/"))
+    return _text(plugin, odom_tag) or "odom", _text(plugin, base_tag) or "base_footprint"
+
+
+def odometry_frame_tags(plugin: Plugin) -> tuple[str, str]:
+    """The tags a drive plugin reads its odometry frame and its base frame from."""
+    if diff_drive_kind(plugin) == "gz":
+        return "frame_id", "child_frame_id"
+    if ros1_plugin(plugin):
+        return "odometryFrame", "robotBaseFrame"
+    return "odometry_frame", "robot_base_frame"
 
 
 def _text(plugin: Plugin, key: str) -> str:
