@@ -198,7 +198,8 @@ class PtyEmulator:
     def _report(self, now: float) -> None:
         if self._booting and not self.board.booting(now):
             self._booting = False
-            self.log("booted: the firmware answers")
+            self.log("booted: the firmware runs, muted: it answers nothing (--mute-after-s)"
+                     if self.muted else "booted: the firmware answers")
         counters = asdict(self.board.model.counters)
         if counters["watchdog_trips"] > self._seen["watchdog_trips"]:
             timeout_ms = round(self.board.model.watchdog_s * 1000)

@@ -39,7 +39,7 @@ class EmulateRequest:
         robot: The robot whose motors and limits to emulate.
         protocol: ``servicebot`` or ``arduino``.
         arduino: How the ROSArduinoBridge firmware counts (``arduino`` only).
-        baud: Baud rate, or None for the description's (9600 when it names none).
+        baud: Baud rate, or None for the description's (9600, said, when it names none).
         watchdog_ms: Watchdog timeout, or None for the protocol's default [ms].
         faults: Faults to inject.
         seed: Seed of the fault injection's random numbers.
@@ -109,7 +109,7 @@ def emulate(request: EmulateRequest, *, log: Callable[[str], None],
         EmulatorError: ``--link`` names a path that is not ours to replace, or cannot be made.
         OutputError: The state file cannot be written.
     """
-    emulator = build_emulator(request, log)
+    emulator, note = build_emulator(request, log)
     state_file = request.state_file
     stop = StopFlag()
     with stop:  # from here on, the stop signals end the serve loop cleanly
@@ -119,6 +119,8 @@ def emulate(request: EmulateRequest, *, log: Callable[[str], None],
                 write_state(state_file, emulator.state())  # a bad path fails before any wait
             announce(device)
             log(banner(emulator, device, request.seed))
+            if note is not None:
+                log(note)
             ending = emulator.serve(
                 stop.is_set, (lambda s: write_state(state_file, s)) if state_file else None)
             if state_file is not None:
@@ -128,22 +130,35 @@ def emulate(request: EmulateRequest, *, log: Callable[[str], None],
     return EmulateResult(ending)
 
 
-def build_emulator(request: EmulateRequest, log: Callable[[str], None]) -> PtyEmulator:
-    """A PtyEmulator (not yet opened) for the robot of ``request``."""
+_FALLBACK_BAUD = 9600  # the real robot's
+
+
+def build_emulator(request: EmulateRequest,
+                   log: Callable[[str], None]) -> tuple[PtyEmulator, str | None]:
+    """A PtyEmulator (not yet opened) for the robot of ``request``, and a note for the user.
+
+    The note says the baud rate was assumed: the description names none, and ``drive``
+    then needs ``--baud``.
+    """
     from servicebot_cli.description.loader import load
     from servicebot_cli.drive.link_setup import serial_defaults
     from servicebot_cli.drive.motors import motor_map
 
     robot = load(request.robot)
     motors = motor_map(robot, request.robot.resolver())
-    baud = request.baud or serial_defaults(robot)[1] or 9600
+    baud = request.baud or serial_defaults(robot)[1]
+    note = None
+    if baud is None:  # drive refuses such a description without --baud: say what to give
+        baud = _FALLBACK_BAUD
+        note = (f"{robot.display} names no baud_rate in <ros2_control><hardware>: the "
+                f"firmware runs at {baud} baud; give drive --baud {baud}")
     start_s = time.monotonic()
     stall = request.faults.stall_after_s
     board = Board(firmware_builder(request, motors, baud,
                                    None if stall is None else start_s + stall),
                   start_s, request.boot_s)
     injector = FaultInjector(request.faults, random.Random(request.seed))
-    return PtyEmulator(board, injector, baud=baud, pace=request.pace, log=log)
+    return PtyEmulator(board, injector, baud=baud, pace=request.pace, log=log), note
 
 
 def firmware_builder(request: EmulateRequest, motors: MotorMap, baud: int,
