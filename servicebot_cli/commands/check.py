@@ -35,6 +35,7 @@ from servicebot_cli.commands.options import (
     robot_arguments,
     split_robot_args,
 )
+from servicebot_cli.common.blas_threads import use_one_blas_thread
 
 if TYPE_CHECKING:
     from servicebot_cli.check.run import CheckRequest, SettingsChoice
@@ -91,6 +92,7 @@ def check() -> None:
     --strict), 2 bad usage or unreadable input, 3 internal error.
     Silence one rule on one element with <!-- servicebot: ignore SB301 --> just before it.
     """
+    use_one_blas_thread()  # before numpy loads: check's matrices are 3x3
 
 
 @check.command("urdf", cls=CheckCommand)

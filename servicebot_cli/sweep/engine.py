@@ -21,6 +21,7 @@ from concurrent.futures import Executor, Future, ProcessPoolExecutor, as_complet
 from concurrent.futures.process import BrokenProcessPool
 from typing import Any
 
+from servicebot_cli.common.blas_threads import one_thread_each
 from servicebot_cli.common.errors import ExitCode, ServicebotError
 from servicebot_cli.sweep.worker import (
     Outcome,
@@ -31,8 +32,6 @@ from servicebot_cli.sweep.worker import (
 )
 
 CLUSTER_EXTRA = "pip install 'servicebot[cluster]' (dask and distributed)"
-BLAS_THREADS = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
-"""Thread counts of numpy's BLAS (OpenBLAS, OpenMP, MKL), read when numpy loads."""
 
 
 class SchedulerError(ServicebotError):
@@ -59,7 +58,7 @@ def worker_environment(environ: Mapping[str, str]) -> dict[str, str]:
     One run per core: BLAS threads in each worker would compete with the other workers for
     the cores. A count set in ``environ`` is the user's and is left alone.
     """
-    return {name: "1" for name in BLAS_THREADS if name not in environ}
+    return one_thread_each(environ)
 
 
 @contextlib.contextmanager

@@ -7,8 +7,9 @@ import glob
 import os
 from pathlib import Path
 
+from servicebot_cli.common.blas_threads import BLAS_THREADS
 from servicebot_cli.description.loader import RobotSource
-from servicebot_cli.sweep.engine import BLAS_THREADS, local_executor
+from servicebot_cli.sweep.engine import local_executor
 from servicebot_cli.sweep.session import SweepRequest, run
 
 
