@@ -69,6 +69,7 @@ def show_simulation(report: SimulateReport, fmt: str) -> None:
 
 def unmet_line(report: SimulateReport) -> str:
     """One line naming each expectation the run did not meet, with the value it had."""
-    parts = [f"{expectation.text} (is {'no value' if value is None else format_number(value)})"
+    parts = [f"{expectation.text} (" + (expectation.why_no_value(report.summary) if value is None
+                                        else f"is {format_number(value)}") + ")"
              for expectation, value in report.unmet]
     return f"{len(parts)} of the run's expectations not met: " + "; ".join(parts)

@@ -15,12 +15,14 @@ import difflib
 import math
 import operator
 import re
+import types
 import typing
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
 from servicebot_cli.simulate.scenario.fields import FieldPathError, parse_field
+from servicebot_cli.simulate.scenario.located import dotted
 
 OPERATORS: dict[str, Callable[[float, float], bool]] = {
     "<=": operator.le, ">=": operator.ge, "==": operator.eq, "!=": operator.ne,
@@ -66,11 +68,41 @@ class Expectation:
             return None
         return float(node)
 
+    def why_no_value(self, summary: Mapping[str, Any]) -> str:
+        """What the field is in ``summary`` where it has no value: absent (and what is), null."""
+        node: Any = summary
+        for depth, part in enumerate(self.field):
+            where = dotted(self.field[:depth]) or "the summary"
+            if isinstance(node, Mapping) and isinstance(part, str) and part not in node:
+                held = ", ".join(map(str, node)) or "nothing"
+                return f"no value: the run has no '{part}' in {where}, which holds {held}"
+            if isinstance(node, list) and (isinstance(part, str) or part >= len(node)):
+                return f"no value: {where} holds {len(node)} items"
+            if isinstance(node, Mapping) and isinstance(part, int):
+                return f"no value: {where} is keyed by name"
+            if isinstance(node, Mapping):
+                node = node[part]
+            elif isinstance(node, list) and isinstance(part, int):
+                node = node[part]
+            else:
+                return f"no value: {where} is {_shown(node)}, with nothing below it"
+        return "no value: null" if node is None else \
+            f"no value: {dotted(self.field)} is {_shown(node)}, not a number"
+
     def holds(self, summary: Mapping[str, Any]) -> bool:
         """Whether ``summary`` meets the expectation (False when the field has no value)."""
         value = self.value(summary)
         return value is not None and not math.isnan(value) \
             and OPERATORS[self.op](value, self.number)
+
+
+def _shown(value: Any) -> str:
+    """A summary value as an expectation's failure names it: null, a number, a mapping."""
+    if value is None:
+        return "null"
+    if isinstance(value, Mapping):
+        return "a mapping of " + (", ".join(map(str, value)) or "nothing")
+    return repr(value)
 
 
 def parse_expectation(text: str) -> Expectation:
@@ -96,26 +128,100 @@ def parse_expectation(text: str) -> Expectation:
 
 
 def _check_field(path: tuple[str | int, ...]) -> None:
-    """Follow ``path`` through the summary's TypedDicts; open dicts and lists end the check."""
+    """Follow ``path`` through the summary's types, to something that can be a number.
+
+    A TypedDict's fields are known; a mapping's keys are a run's own (``messages./scan``),
+    any name passing unless every run has the same ones (``controller``'s); a list's items
+    are not followed. The field must end where a number or a list (its length) can be.
+    """
     from servicebot_cli.simulate.summary import Summary
 
-    hints: dict[str, Any] | None = typing.get_type_hints(Summary)
+    node: Any = Summary
     for depth, part in enumerate(path):
-        if hints is None:
-            return
-        if isinstance(part, int):
-            return
-        if part not in hints:
-            where = ".".join(str(p) for p in path[:depth]) or "the summary"
-            close = difflib.get_close_matches(part, list(hints), n=1, cutoff=0.6)
-            hint = f"did you mean '{close[0]}'?" if close else f"known: {', '.join(hints)}"
-            raise ExpectationError(f"'{part}' is not a field of {where}; {hint}")
-        hints = _typed_dict_hints(hints[part])
+        where = dotted(path[:depth]) or "the summary"
+        hints = _typed_dict_hints(node)
+        value = _mapping_value(node)
+        if hints is not None:
+            if isinstance(part, int):
+                raise ExpectationError(f"{where} is no list: name one of its fields, "
+                                       f"{', '.join(hints)}")
+            if part not in hints:
+                close = difflib.get_close_matches(part, list(hints), n=1, cutoff=0.6)
+                hint = f"did you mean '{close[0]}'?" if close else f"known: {', '.join(hints)}"
+                raise ExpectationError(f"'{part}' is not a field of {where}; {hint}")
+            node = hints[part]
+        elif value is not None:
+            if isinstance(part, int):
+                raise ExpectationError(f"{where} is keyed by name, not by [{part}]: write "
+                                       f"{where}.NAME (a topic as {where}./scan)")
+            known = _known_keys().get(path[:depth])
+            if known is not None and part not in known:
+                close = difflib.get_close_matches(part, known, n=1, cutoff=0.6)
+                hint = f"did you mean '{close[0]}'?" if close else f"known: {', '.join(known)}"
+                raise ExpectationError(f"'{part}' is not a key of {where}; {hint}")
+            node = value
+        elif (item := _list_item(node)) is not None:
+            if isinstance(part, str):
+                raise ExpectationError(f"{where} is a list: compare {where} (its length) or an "
+                                       f"item, {where}[0]" + (
+                                           f".{part}" if _typed_dict_hints(item) else ""))
+            node = item
+        else:
+            raise ExpectationError(f"{where} is a value, with nothing below it: compare "
+                                   f"{where} itself")
+    _refuse_no_number(dotted(path), node)
+
+
+def _refuse_no_number(field: str, annotation: Any) -> None:
+    """Refuse a field whose type can hold no number: text, or a group of fields or keys."""
+    hints = _typed_dict_hints(annotation)
+    if hints is not None:
+        raise ExpectationError(f"{field} holds fields, not a number: compare one of them, "
+                               f"e.g. {field}.{next(iter(hints))}")
+    if _mapping_value(annotation) is not None:
+        example = "/scan" if field == "messages" else "NAME"
+        raise ExpectationError(f"{field} holds a value per name, not a number: compare one, "
+                               f"e.g. {field}.{example}")
+    kinds = _kinds(annotation)
+    if kinds and all(kind is str for kind in kinds):
+        raise ExpectationError(f"{field} is text, not a number")
+
+
+def _list_item(annotation: Any) -> Any:
+    """The item type of a ``list[T]`` annotation (or of ``... | None``); None if none."""
+    for kind in _kinds(annotation):
+        if typing.get_origin(kind) is list:
+            return typing.get_args(kind)[0]
+    return None
+
+
+def _kinds(annotation: Any) -> tuple[Any, ...]:
+    """The types ``annotation`` may be: a union's members but None, else itself."""
+    if typing.get_origin(annotation) in (typing.Union, types.UnionType):
+        return tuple(a for a in typing.get_args(annotation) if a is not type(None))
+    return (annotation,)
+
+
+def _known_keys() -> dict[tuple[str | int, ...], list[str]]:
+    """The keys every run's summary has in a mapping, by its path: ``controller``'s fields."""
+    import dataclasses
+
+    from servicebot_cli.simulate.scenario.definition import Controller
+
+    return {("controller",): [f.name for f in dataclasses.fields(Controller)]}
+
+
+def _mapping_value(annotation: Any) -> Any:
+    """The value type of a ``dict[str, V]`` annotation (or of ``... | None``); None if none."""
+    for kind in _kinds(annotation):
+        if typing.get_origin(kind) is dict:
+            return typing.get_args(kind)[1]
+    return None
 
 
 def _typed_dict_hints(annotation: Any) -> dict[str, Any] | None:
     """The fields of a TypedDict annotation (or of ``X | None``); None for anything else."""
-    for candidate in (annotation, *typing.get_args(annotation)):
+    for candidate in _kinds(annotation):
         if typing.is_typeddict(candidate):
             return typing.get_type_hints(candidate)
     return None

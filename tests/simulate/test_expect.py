@@ -57,3 +57,37 @@ def test_yaml_numbers_as_people_write_them(run, tmp_path):
     result = run("simulate", "--headless", "-s", scenario, "--format", "json")
     assert result.exit_code == 0, result.stderr
     assert json.loads(result.stdout)["duration_s"] == 10.0
+
+
+def test_a_topic_count_and_a_controller_value_can_be_expected(run):
+    counted = run(*SHORT, "--format", "json")
+    summary = json.loads(counted.stdout)
+    scans, radius = summary["messages"]["/scan"], summary["controller"]["wheel_radius_m"]["value"]
+    assert scans > 0 and radius > 0
+    met = run(*SHORT, "--expect", f"messages./scan == {scans}",
+              "--expect", "messages./pi_camera/camera_info >= 1",
+              "--expect", f"controller.wheel_radius_m.value == {radius!r}")
+    assert met.exit_code == 0, met.stderr
+    unmet = run(*SHORT, "--expect", f"messages./scan > {scans}", "--expect",
+                "messages./scna >= 1")
+    errors = [ln for ln in unmet.stderr.splitlines() if ln.startswith("Error:")]
+    assert unmet.exit_code == 1 and len(errors) == 1, unmet.stderr
+    assert f"messages./scan > {scans} (is {scans})" in errors[0]
+    assert "messages./scna >= 1 (no value: the run has no '/scna' in messages, which holds " \
+        "/robot_description" in errors[0] and "/scan" in errors[0]
+
+
+@pytest.mark.parametrize(("expression", "needle"), [
+    ("controller.wheel_radus_m.value > 0", "did you mean 'wheel_radius_m'"),
+    ("controller.wheel_radius_m > 0", "compare one of them, e.g. controller.wheel_radius_m.value"),
+    ("messages > 0", "e.g. messages./scan"),
+    ("messages[0] > 0", "keyed by name"),
+    ("final_pose > 0", "e.g. final_pose.x_m"),
+    ("end_effector.frame > 0", "end_effector.frame is text"),
+    ("closest_obstacle > 0", "closest_obstacle is text"),
+    ("collisions.x_m > 0", "an item, collisions[0].x_m"),
+    ("collisions[0].x > 0", "'x' is not a field of collisions[0]"),
+    ("distance_m.x > 0", "nothing below it"),
+])
+def test_a_field_that_holds_no_number_is_refused_before_the_run(run, expression, needle):
+    assert_one_line_error(run(*SHORT, "--expect", expression), 2, "--expect", needle)

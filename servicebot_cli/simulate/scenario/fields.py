@@ -13,7 +13,8 @@ from collections.abc import Mapping
 
 from servicebot_cli.simulate.scenario.located import Path, Value, dotted
 
-_PART = re.compile(r"([A-Za-z_]\w*)|\[(\d+)\]")
+# a name, a ROS name (a topic: the key of a summary's ``messages``) or an index
+_PART = re.compile(r"([A-Za-z_]\w*|/[\w/~]+)|\[(\d+)\]")
 
 
 class FieldPathError(ValueError):
@@ -30,6 +31,8 @@ class FieldPathError(ValueError):
 
 def parse_field(text: str) -> Path:
     """``("cmd_vel", 2, "linear_m_s")`` for ``cmd_vel[2].linear_m_s``.
+
+    A part may be a ROS name, slashes and all: ``messages./scan`` is ``("messages", "/scan")``.
 
     Raises:
         FieldPathError: Not a dotted path of names and ``[index]``.
