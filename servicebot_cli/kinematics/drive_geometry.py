@@ -38,8 +38,9 @@ if TYPE_CHECKING:
 _MOST_JOINTS_NAMED = 6  # of one reason, in the note of what is no differential drive
 SMALLEST_RADIUS_M = 1e-4
 """A wheel of a tenth of a millimetre: a typo, or no number [m]."""
-LARGEST_RADIUS_M = 100.0
-"""The largest wheel size taken (a drive plugin's numbers too) [m]."""
+LARGEST_RADIUS_M = 10.0
+"""The largest wheel size taken (a drive plugin's numbers too) [m]: 20 m across, the largest
+mesh SB404 takes in metres; a wheel mesh in millimetres (70 mm read as 70 m) is beyond it."""
 
 
 @dataclass(frozen=True)
@@ -124,7 +125,8 @@ def drive_geometry(robot: RobotDescription, meshes: MeshPoints | None = None) ->
         raise DescriptionError(
             f"{robot.display}: not a differential drive: needs wheel joints that turn freely "
             "(continuous, or revolute with endless limits) on both sides, with a cylinder "
-            f"about the joint axis or a sphere (found: {found}); "
+            "about the joint axis or a sphere, or a round mesh where a diff-drive plugin or "
+            f"<ros2_control> velocity command names the joint (found: {found}); "
             + _why_not_wheels(robot, left_out)
         )
     for wheel in wheels:

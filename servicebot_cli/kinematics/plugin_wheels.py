@@ -1,4 +1,4 @@
-"""Drive wheels a Gazebo diff-drive plugin names, for wheels the URDF gives no round shape.
+"""Drive wheels a diff-drive plugin or ``<ros2_control>`` names, where links have no round shape.
 
 Pepper's wheels are meshes: nothing in the links says their radius, but its
 ``libgazebo_ros_diff_drive`` plugin names the wheel joints and their diameter, and Gazebo
@@ -8,6 +8,11 @@ gz-sim's DiffDrive system (``left_joint``/``right_joint``/``wheel_radius``) are 
 wheel's centre and radius are its round mesh's (:mod:`.mesh_wheels`), where it has one;
 else its joint's origin and the radius the plugin says. Its side, as for every wheel, is the
 sign of its y.
+
+Without such a plugin, the joints ``<ros2_control>`` commands by velocity (what
+diff_drive_controller drives) are the wheels, where each is drawn as a round mesh: a
+SolidWorks export driven by gazebo_ros2_control has nothing else to say where and how
+large its wheels are.
 """
 
 from __future__ import annotations
@@ -50,7 +55,19 @@ def plugin_wheels(robot: RobotDescription, world: dict[str, np.ndarray],
         wheels = wheels_named(robot, joints, radius_m, world, meshes)
         if {w.side for w in wheels} == {"left", "right"}:
             return wheels
-    return []
+    return control_wheels(robot, world, meshes)
+
+
+def control_wheels(robot: RobotDescription, world: dict[str, np.ndarray],
+                   meshes: MeshPoints | None) -> list[Wheel]:
+    """The round-mesh wheels of the joints ``<ros2_control>`` commands by velocity; none
+    unless they are on both sides.
+    """  # noqa: D205
+    names = dict.fromkeys(joint.name for block in robot.ros2_control for joint in block.joints
+                          if any(i.name == "velocity" for i in joint.command_interfaces))
+    wheels = [wheel for wheel in wheels_named(robot, names, math.nan, world, meshes)
+              if math.isfinite(wheel.radius_m)]  # a round mesh said its radius
+    return wheels if {w.side for w in wheels} == {"left", "right"} else []
 
 
 def wheels_named(robot: RobotDescription, names: Iterable[str], radius_m: float = math.nan,
