@@ -313,10 +313,15 @@ URDF_RULES: tuple[Rule, ...] = (
          "Compute the inertia again (solid formulas, or from CAD)."),
     Rule("SB307", "singular-inertia", W, "Mass with a zero principal moment of inertia",
          "A point or a rod: physically possible in the limit, but simulators need all three "
-         "moments positive. A point mass (no inertia at all) on a link a joint moves, with no "
-         "fixed child whose inertia Gazebo and MuJoCo lump into it, is an error: MuJoCo "
+         "moments positive. A zero principal moment (a rod: 0, I, I) Gazebo and Pinocchio take, "
+         "and MuJoCo refuses on any link ('inertia must have positive eigenvalues', or once "
+         "its boundinertia raised it, 'A + B >= C'): the message says so where MuJoCo "
+         "refuses it, an error in a file meant for MuJoCo (a <mujoco> block, or a MuJoCo "
+         "ros2_control plugin). A point mass (no inertia at all) on a link a joint moves, with "
+         "no fixed child whose inertia Gazebo and MuJoCo lump into it, is an error: MuJoCo "
          "refuses the robot.",
-         "Give the link a small realistic inertia."),
+         "Give the link a small realistic inertia (or set <compiler boundinertia=\"1e-6\" "
+         "balanceinertia=\"true\"/> in the file's <mujoco> block)."),
     Rule("SB308", "triangle-inequality", E, "Principal moments that break the triangle inequality",
          "For any body each principal moment is at most the sum of the other two "
          "(Ixx + Iyy >= Izz ...); the printed moments cannot belong to a real body. Two zero "

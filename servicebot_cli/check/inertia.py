@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Generator, Iterator
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -33,6 +33,7 @@ def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
     """Every inertia issue of ``robot``."""
     moved = {joint.child for joint in robot.joints if joint.movable}
     alone = moved - _given_inertia_by_fixed_children(robot)
+    mujoco = _mujoco_reading(robot)
     for link in robot.links:
         inertial = link.inertial
         if inertial is None:
@@ -56,7 +57,7 @@ def check(robot: RobotDescription, env: CheckEnv) -> Iterator[Issue]:
             yield _inertia_without_mass(link.name, inertial.element, link.name == robot.root_link)
             continue
         physical = yield from _possible(link, moments, link.name in moved,
-                                        link.name in alone)
+                                        link.name in alone, mujoco)
         if physical and _mass(link) > 0 and values.bounded((_mass(link),), values.LARGEST_INERTIA):
             yield from _against_geometry(robot, link, env)
     yield from _moving_masses(robot)
@@ -126,14 +127,59 @@ def _given_inertia_by_fixed_children(robot: RobotDescription) -> set[str]:
     return given
 
 
-def _possible(link: Link, values: tuple[float, ...], moving: bool,
-              alone: bool = False) -> Generator[Issue, None, bool]:
+_MJ_MINVAL = 1e-15
+"""MuJoCo's mjMINVAL: an inertia eigenvalue below it is refused [kg m^2]."""
+
+
+@dataclass(frozen=True)
+class _MujocoReading:
+    """How MuJoCo reads this file's inertias.
+
+    Attributes:
+        meant: The file is meant for MuJoCo: a ``<mujoco>`` block (MuJoCo's own URDF
+            extension) or a MuJoCo ros2_control plugin.
+        bound: Its ``<compiler boundinertia>``: smaller principal moments are raised to it.
+        balance: Its ``<compiler balanceinertia="true">``: A + B >= C is made to hold.
+    """
+
+    meant: bool = False
+    bound: float = 0.0
+    balance: bool = False
+
+    def refuses(self, moments: np.ndarray) -> str | None:
+        """MuJoCo's words refusing principal ``moments`` (ascending), or None: it takes them."""
+        raised = np.maximum(moments, self.bound)
+        scale = float(np.abs(raised).max())
+        if raised[0] < max(_MJ_MINVAL, 1e-14 * scale):  # its eigenvalues, past rounding
+            return "inertia must have positive eigenvalues"
+        if raised[0] + raised[1] < raised[2] and not self.balance:
+            return "inertia must satisfy A + B >= C"
+        return None
+
+
+def _mujoco_reading(robot: RobotDescription) -> _MujocoReading:
+    """What the file tells MuJoCo of inertias (:class:`_MujocoReading`)."""
+    bound, balance = 0.0, False
+    for compiler in robot.root.iterfind("mujoco/compiler"):
+        try:
+            bound = max(bound, float(compiler.get("boundinertia") or 0.0))
+        except ValueError:
+            pass
+        balance = balance or (compiler.get("balanceinertia") or "").strip() == "true"
+    meant = robot.root.find("mujoco") is not None or simulated_by(robot) == "MuJoCo"
+    return _MujocoReading(meant, bound if math.isfinite(bound) else 0.0, balance)
+
+
+def _possible(link: Link, values: tuple[float, ...], moving: bool, alone: bool = False,
+              mujoco: _MujocoReading = _MujocoReading()) -> Generator[Issue, None, bool]:
     """SB306-SB308; returns True when the inertia is a real body's.
 
-    A zero principal moment is an idealisation (a thin rod: 0, I, I), a warning; two of them
-    (0, 0, I) are no body at all, which MuJoCo refuses (fetch's gripper fingers): an error
-    on a link a joint moves. A point mass (mass, no inertia) is an error on a link a joint
-    moves ``alone`` (no fixed child with inertia lumped into it): MuJoCo refuses it. A link
+    A zero principal moment is an idealisation (a thin rod: 0, I, I) that Gazebo and
+    Pinocchio take and MuJoCo refuses on any link: a warning naming MuJoCo, an error in a
+    file meant for MuJoCo (``mujoco``, :func:`_mujoco_reading`); two of them (0, 0, I) are
+    no body at all, which MuJoCo refuses (fetch's gripper fingers): an error on a link a
+    joint moves. A point mass (mass, no inertia) is an error on a link a joint moves
+    ``alone`` (no fixed child with inertia lumped into it): MuJoCo refuses it. A link
     fixed to others (anymal's dummy ``base``) is lumped with
     them by Gazebo (sdformat) and Pinocchio, so only the sum has to be a body: a warning there.
     """
@@ -173,8 +219,19 @@ def _possible(link: Link, values: tuple[float, ...], moving: bool,
         return False
     if degenerate:
         if _mass(link) > 0:
-            yield Issue("SB307", f"link '{link.name}' inertia has a zero principal moment "
-                        f"({shown} kg m^2)", element)
+            said = f"link '{link.name}' inertia has a zero principal moment ({shown} kg m^2)"
+            refusal = mujoco.refuses(moments)
+            if refusal is None:  # past MuJoCo's rounding, or raised by the file's compiler
+                yield Issue("SB307", said, element, fix="give it a small moment about that axis")
+            else:
+                raised = (f"MuJoCo raises it to its boundinertia {mujoco.bound:g} and then "
+                          "refuses" if mujoco.bound else "MuJoCo refuses")
+                yield Issue("SB307", f"{said}: Gazebo and Pinocchio take it, {raised} the "
+                            f"robot ('{refusal}')", element,
+                            severity=Severity.ERROR if mujoco.meant else Severity.WARNING,
+                            fix="give it a small moment about that axis (1e-6 kg m^2), or set "
+                            "<compiler boundinertia=\"1e-6\" balanceinertia=\"true\"/> in the "
+                            "file's <mujoco> block")
         return False
     return True
 
