@@ -138,6 +138,17 @@ ROS_RULES = (
          "publishes, so odom and the robot's links are two trees. Only frames written in the "
          "file are judged: a launch file may publish a default base_footprint.",
          "Name the odometry frame odom and the base frame a link of the robot."),
+    Rule("SB521", "control-parameters-file", E,
+         "A ros2_control Gazebo plugin's <parameters> names no file",
+         "gazebo_ros2_control and gz_ros2_control pass every <parameters> of their plugin to "
+         "the controller manager as --params-file; rcl refuses a file it cannot open "
+         "('Couldn't parse params file'), the controller manager does not start, and no "
+         "controller runs: the robot spawns and never moves. A relative path is taken from "
+         "the description's directory, as servicebot's simulator takes it, and is a warning "
+         "where it is not there: Gazebo takes it from its own working directory (write "
+         "$(find PKG)/... instead). A value holding a launch substitution $(...) is left to "
+         "the launch file.",
+         "Name the controllers YAML: $(find PKG)/config/FILE.yaml in a xacro file."),
     Rule("SB601", "controllers-yaml", E, "The controllers YAML cannot be read",
          "Not YAML, or not the shape of a ros2_control parameters file "
          "(controller: ros__parameters: ...).",

@@ -175,6 +175,7 @@ def _unreadable(exc: DescriptionError, source: RobotSource) -> bool:
 def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Iterator[Issue]:
     """Every rule family but the model, skipping families with no selected rule."""
     from servicebot_cli.check import (
+        control_parameters,
         drive_frames,
         drive_plugins,
         gazebo,
@@ -219,6 +220,7 @@ def _issues(robot: RobotDescription, settings: Settings, env: CheckEnv) -> Itera
         (("SB516",), lambda: drive_plugins.check(robot, env.mesh_points(robot))),
         (("SB519",), lambda: ros1_parameters.check(robot)),
         (("SB520",), lambda: drive_frames.check(robot)),
+        (("SB521",), lambda: control_parameters.check(robot)),
         (("SB511",), lambda: transmissions.check(robot)),
     ]
     for prefixes, family in families:
