@@ -236,6 +236,22 @@ JOINT_KEYS = (
 """The parameters of ros2_controllers that name URDF joints."""
 
 
+def named_joints(found: Sections) -> list[str]:
+    """Every joint name the controller sections ``found`` write (:data:`JOINT_KEYS`), once,
+    in file order; launch substitutions left out.
+    """  # noqa: D205
+    names: dict[str, None] = {}
+    for sections in found.values():
+        for params in sections:
+            for key in JOINT_KEYS:
+                node = get(params, key)
+                items = node.value if isinstance(node, yaml.SequenceNode) else [node]
+                names.update((str(item.value), None) for item in items
+                             if isinstance(item, yaml.ScalarNode) and str(item.value).strip()
+                             and not substituted(str(item.value)))
+    return list(names)
+
+
 def _ros1_controllers(root: yaml.Node | None, depth: int = 0) -> str | None:
     """The first controller a ROS 1 file declares (``NAME: {type: pkg/Class}``), or None.
 

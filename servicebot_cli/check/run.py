@@ -20,12 +20,14 @@ from servicebot_cli.check.result import CheckResult
 from servicebot_cli.check.runner import FileReport, place_issues
 from servicebot_cli.check.settings import Settings, find_pyproject, load_settings
 from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.common.listing import some_of
 from servicebot_cli.description.loader import RobotSource, read_description
 from servicebot_cli.description.resources import BUNDLED_ROBOTS, CONTROLLERS_YAML, bundled_file
 from servicebot_cli.description.robot import is_xacro_name
 
 if TYPE_CHECKING:
     from servicebot_cli.check.controller_sections import Sections
+    from servicebot_cli.description.robot import RobotDescription
 
 
 @dataclass(frozen=True)
@@ -238,6 +240,58 @@ def _spawned(names: tuple[str, ...], found: Sections, display: str) -> frozenset
     return frozenset(names)
 
 
+def _plugin_parameters_file(robot: RobotDescription) -> Path:
+    """The controllers YAML of ``robot``: its ros2_control plugin's, else the one beside it.
+
+    The file its Gazebo ros2_control plugin loads (``<parameters>``); without one,
+    ``controllers.yaml`` beside the description, as simulate and inspect take it.
+
+    Raises:
+        DescriptionError: It names none that exists, or several: the user says which.
+    """
+    from servicebot_cli.description.parameter_files import parameter_files
+
+    named = parameter_files(robot.plugins, robot.path.parent)
+    present = [path for path in named if os.path.isfile(path)]
+    beside = robot.path.parent / "controllers.yaml"
+    if not named and os.path.isfile(beside):
+        return beside
+    if len(present) == 1:
+        return present[0]
+    usage = f"servicebot check controllers FILE.yaml --urdf {robot.display}"
+    if present:
+        raise DescriptionError(f"{robot.display}'s ros2_control plugin loads "
+                               f"{len(present)} parameter files ({', '.join(map(str, present))})"
+                               f": name the one to check: {usage}")
+    said = (f"names {', '.join(map(str, named))}, which does not exist" if named else
+            "names no controllers file (no Gazebo ros2_control plugin with <parameters>, no "
+            "controllers.yaml beside it)")
+    raise DescriptionError(f"{robot.display} {said}: give the controllers YAML: {usage}")
+
+
+def _refuse_another_robots(found: Sections, display: str,
+                           sources: tuple[RobotSource, ...]) -> None:
+    """Refuse a file naming joints, none of which the bundled robots have: another robot's.
+
+    Checked against the bundled robots (no ``--urdf``), its every joint would be an error.
+
+    Raises:
+        DescriptionError: Saying to give the robot with ``--urdf``.
+    """
+    from servicebot_cli.check.controller_sections import named_joints
+
+    named = named_joints(found)
+    if not named:
+        return
+    joints = {joint.name for source in sources for joint in read_description(source).joints}
+    if any(name in joints for name in named):
+        return
+    raise DescriptionError(
+        f"{display} names none of the bundled robots' joints ({some_of(named, 3)}): it "
+        f"configures another robot; give that robot: servicebot check controllers {display} "
+        "--urdf ROBOT.urdf.xacro")
+
+
 def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[FileReport]:
     """A report per URDF the controllers YAML is checked against."""
     from servicebot_cli.check import (
@@ -250,15 +304,23 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
     from servicebot_cli.description.ros_parameters import MAX_PARAMETERS_BYTES
     from servicebot_cli.kinematics.mesh_wheels import file_points
 
-    yaml_path = Path(targets.yaml_file) if targets.yaml_file else bundled_file(CONTROLLERS_YAML)
-    display = targets.yaml_file or display_path(yaml_path)
+    sources = targets.urdfs or tuple(RobotSource.bundled(name) for name in BUNDLED_ROBOTS)
+    if targets.yaml_file:
+        yaml_path, display = Path(targets.yaml_file), targets.yaml_file
+    elif targets.urdfs:  # the user's robot: the file its Gazebo ros2_control plugin loads
+        yaml_path = _plugin_parameters_file(read_description(sources[0]))
+        display = display_path(yaml_path)
+    else:
+        yaml_path = bundled_file(CONTROLLERS_YAML)
+        display = display_path(yaml_path)
     text = read_input_text(str(yaml_path), kind="a ros2_control controllers YAML",
                            error=DescriptionError, max_bytes=MAX_PARAMETERS_BYTES)
-    sources = targets.urdfs or tuple(RobotSource.bundled(name) for name in BUNDLED_ROBOTS)
     found = controller_sections.sections(text, display)
     if isinstance(found, Issue):  # the YAML itself, the same against every robot: said once
         robot = read_description(sources[0])
         return [FileReport(display, tuple(place_issues(robot, [found], settings)))]
+    if targets.yaml_file and not targets.urdfs:
+        _refuse_another_robots(found, display, sources)
     spawned = _spawned(targets.spawned, found, display)
     reports = []
     whole_file = [*controller_sections.file_issues(text, display),  # said once, in the first

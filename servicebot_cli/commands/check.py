@@ -156,6 +156,10 @@ def controllers(ctx: click.Context, values: tuple[str, ...], urdfs: tuple[str, .
                 spawned: tuple[str, ...], report: ReportOptions) -> None:
     """Check a ros2_control controllers YAML against the URDF (default: the bundled pair).
 
+    Without YAML, a --urdf robot's own: the file its Gazebo ros2_control plugin loads
+    (<parameters>), else controllers.yaml beside it. A YAML without --urdf is checked
+    against the bundled robots, and refused when it names none of their joints.
+
     Joint names in left_wheel_names, right_wheel_names and joints must exist and move;
     wheel_radius and wheel_separation must agree with the URDF's wheels.
 

@@ -1,0 +1,90 @@
+"""check controllers picks the user's files, never ours against theirs.
+
+``--urdf MY.xacro`` without a YAML checked servicebot's own bundled controllers.yaml against
+the user's robot (KUKA's kr10: 8 errors in a file the user never wrote); a YAML without
+``--urdf`` was judged against the bundled robots (create3's wheel_radius 'disagrees with the
+URDF's 0.07 m'). Now the robot's own YAML is found as simulate and inspect find it, and a
+YAML of another robot is refused with what to give.
+"""
+
+from __future__ import annotations
+
+import json
+
+from tests.check.helpers import findings
+from tests.conftest import REPO, assert_one_line_error
+
+_PLUGIN = ('<gazebo><plugin filename="gz_ros2_control-system" name="ros2_control">'
+           '<parameters>$(find bot_description)/config/bot_controllers.yaml</parameters>'
+           '</plugin></gazebo>')
+
+
+def _package(tmp_path, plugin: bool = True):
+    """ws/src/bot_description: the real robot as a xacro, its controllers in config/."""
+    package = tmp_path / "ws" / "src" / "bot_description"
+    (package / "urdf").mkdir(parents=True)
+    (package / "config").mkdir()
+    (package / "package.xml").write_text(
+        '<?xml version="1.0"?><package format="3"><name>bot_description</name>'
+        "<version>0.0.1</version><description>d</description><maintainer email=\"a@b.c\">a"
+        "</maintainer><license>MIT</license></package>")
+    controllers = (REPO / "robots" / "controllers.yaml").read_text()
+    assert "rear_left_wheel_joint" in controllers
+    (package / "config" / "bot_controllers.yaml").write_text(
+        controllers.replace("rear_left_wheel_joint", "rear_left_wheel_jiont", 1))
+    robot = (REPO / "robots" / "service_robot_real.urdf.xml").read_text()
+    xacro = package / "urdf" / "bot.urdf.xacro"
+    xacro.write_text(robot.replace('<robot name="service_robot">', '<robot name="service_robot"'
+                                   ' xmlns:xacro="http://www.ros.org/wiki/xacro">', 1)
+                     .replace("</robot>", (_PLUGIN if plugin else "") + "\n</robot>"))
+    return xacro
+
+
+def test_the_robots_own_controllers_file_is_checked(run, tmp_path):
+    xacro = _package(tmp_path)
+    result = run("check", "controllers", "--urdf", xacro, "--format", "json", "--isolated")
+    assert result.exit_code == 1, result.stdout
+    document = json.loads(result.stdout)
+    [report] = document["files"]
+    assert report["file"].startswith(str(xacro.parent.parent / "config" / "bot_controllers.yaml"))
+    assert [f["code"] for f in report["findings"]] == ["SB602"]
+    assert "rear_left_wheel_jiont" in report["findings"][0]["message"]
+
+
+def test_a_robot_naming_no_controllers_file_is_asked_for_one(run, tmp_path):
+    xacro = _package(tmp_path, plugin=False)
+    assert_one_line_error(run("check", "controllers", "--urdf", xacro), 2,
+                          "names no controllers file",
+                          f"servicebot check controllers FILE.yaml --urdf {xacro}")
+
+
+def test_controllers_yaml_beside_the_robot_is_its_own(run):
+    result = run("check", "controllers", "--urdf", REPO / "robots" / "service_robot_real.urdf.xml",
+                 "--format", "json", "--isolated")
+    assert result.exit_code == 0, result.stdout
+    [report] = json.loads(result.stdout)["files"]
+    assert report["file"].split(" against ")[0].endswith("robots/controllers.yaml")
+
+
+def test_another_robots_yaml_without_its_robot_is_refused(run, tmp_path):
+    other = tmp_path / "control.yaml"
+    other.write_text("controller_manager:\n  ros__parameters:\n    update_rate: 100\n"
+                     "    diffdrive_controller:\n      type: diff_drive_controller/"
+                     "DiffDriveController\ndiffdrive_controller:\n  ros__parameters:\n"
+                     "    left_wheel_names: [left_wheel_joint]\n"
+                     "    right_wheel_names: [right_wheel_joint]\n"
+                     "    wheel_separation: 0.233\n    wheel_radius: 0.03575\n")
+    assert_one_line_error(run("check", "controllers", other), 2,
+                          "names none of the bundled robots' joints (left_wheel_joint, "
+                          "right_wheel_joint)", "--urdf ROBOT.urdf.xacro")
+
+
+def test_a_typo_in_a_bundled_robots_yaml_is_still_found(run, tmp_path):
+    typo = tmp_path / "controllers.yaml"
+    typo.write_text((REPO / "robots" / "controllers.yaml").read_text().replace(
+        "rear_left_wheel_joint", "rear_left_wheel_jiont", 1))
+    result = run("check", "controllers", typo, "--robot", "real", "--format", "json",
+                 "--isolated")
+    assert [f["code"] for f in findings(result.stdout)] == ["SB602"]
+    unnamed = run("check", "controllers", typo, "--format", "json", "--isolated")
+    assert unnamed.exit_code == 1 and {f["code"] for f in findings(unnamed.stdout)} == {"SB602"}
