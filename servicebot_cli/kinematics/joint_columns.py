@@ -109,15 +109,21 @@ def read_units(names: Iterable[str], space: JointSpace, *, deg: bool,
             ``("'base_yaw_deg'", "deg")``.
 
     Raises:
-        UnitConflict: A unit that does not fit its joint, two units, or bare angles that
-            ``--deg`` (or its absence) would read in another unit than the line states.
+        UnitConflict: A unit that does not fit its joint, a joint given by two columns, two
+            units, or bare angles that ``--deg`` (or its absence) would read in another unit
+            than the line states.
     """
     joints: dict[str, str] = {}
     said = [("angle_unit is \"" + line_unit + "\"", line_unit)] if line_unit else []
     said += [(f"{what} is in {_WORDS[unit]}", unit) for what, unit in declared]
     bare: list[str] = []
+    column_of: dict[str, str] = {}
     for name in names:
         joint, unit = joint_of(name, space)
+        if joint in column_of:
+            raise UnitConflict(f"'{column_of[joint]}' and '{name}' both give joint '{joint}'; "
+                               "give it once")
+        column_of[joint] = name
         if unit is not None:
             joints[name] = joint
             if unit != "m":

@@ -71,3 +71,9 @@ def test_an_angle_unit_is_deg_or_rad(value):
     assert angle_unit("deg") == "deg" and angle_unit("rad") == "rad"
     with pytest.raises(UnitConflict, match='give "deg" or "rad"'):
         angle_unit(value)
+
+
+def test_a_joint_given_by_two_columns_is_refused_before_any_unit_is_weighed():
+    with pytest.raises(UnitConflict, match="^'elbow' and 'elbow_rad' both give joint 'elbow'; "
+                       "give it once$"):
+        read_units(["elbow", "elbow_rad"], SPACE, deg=True)
