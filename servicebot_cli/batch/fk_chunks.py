@@ -39,6 +39,7 @@ from servicebot_cli.batch.stream import (
     summarise,
     write_results,
 )
+from servicebot_cli.kinematics.joint_columns import UnitConflict
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -60,9 +61,13 @@ def stream_csv(batch: FkBatch, source: Source, handle: IO[str], sink: RowSink, *
 
     Raises:
         JointNotFound: A header column that is neither a joint nor an ik result column.
+        UnitConflict: Joint columns whose units disagree, or disagree with ``--deg``.
         BadLine: An unusable line under ``--on-error stop``.
     """
-    batch.check_header(source.columns)
+    try:
+        batch.check_header(source.columns)
+    except UnitConflict as exc:  # the header's units: named by file and line
+        raise UnitConflict(f"{source.display}:{source.header_line}: {exc}") from None
     parser = ChunkParser(batch, source.columns, source.delimiter)
     template = jsonl_template(batch.frames, batch.unit)
     tally = Tally()
@@ -91,19 +96,23 @@ class ChunkParser:
     """Joint values of a chunk of CSV lines, or None when a line needs the per-line path."""
 
     def __init__(self, batch: FkBatch, columns: Sequence[str], delimiter: str) -> None:
-        """Read ``columns`` (the header) for ``batch``'s joints."""
+        """Read ``columns`` (the header, checked by ``batch``) for ``batch``'s joints."""
         self.batch, self.delimiter = batch, delimiter
         self.width = len(columns)
         self.joint_columns = [k for k, name in enumerate(columns) if name not in RESULT_COLUMNS]
-        self.joints = [batch.space.index(columns[k]) for k in self.joint_columns]
-        self.with_base = bool(set(columns) & set(BASE_COLUMNS))  # ik --with-base results
+        units = batch.header_units
+        self.joints = [] if units is None else \
+            [batch.space.index(units.joint(columns[k])) for k in self.joint_columns]
+        # ik --with-base results, and lines that each say their angle unit
+        self.by_line = units is None or bool(set(columns) & set(BASE_COLUMNS))
 
     def values(self, texts: list[str]) -> FloatArray | None:
         """One value per joint and line [rad or m], limits checked; None: go line by line.
 
-        Lines with a base column go line by line, each with its base.
+        Lines with a base column go line by line, each with its base; so do lines with an
+        ``angle_unit`` column, each in its unit.
         """
-        if self.with_base:
+        if self.by_line:
             return None
         cells = split_cells(texts, self.delimiter, self.width)
         given = None if cells is None else numbers(cells, self.width, self.joint_columns)

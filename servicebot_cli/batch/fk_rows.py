@@ -1,7 +1,10 @@
 """``fk --configs``: joint values per line in, poses per line out.
 
 Each input line is one configuration: CSV columns or JSON keys named after joints (an
-``ik`` result line, with its ``joints`` object or result columns, works too). Results are
+``ik`` result line, with its ``joints`` object or result columns, works too). A column that
+states its unit (``NAME_deg``, ``NAME_rad``, ``NAME_m``, as ``ik --deg`` writes them) or a
+line's ``angle_unit`` is read in that unit; bare names follow ``--deg`` (see
+:mod:`~servicebot_cli.kinematics.joint_columns`). Results are
 computed in chunks, so the conversion to roll-pitch-yaw and quaternions is vectorised, and
 written as soon as a chunk is done; memory stays bounded by the chunk size.
 
@@ -29,6 +32,12 @@ from servicebot_cli.common.errors import JointNotFound
 from servicebot_cli.description.model import new_data
 from servicebot_cli.kinematics.forward import configurations, frame_transforms, pose_table
 from servicebot_cli.kinematics.frames import frame_ids, link_names
+from servicebot_cli.kinematics.joint_columns import (
+    ColumnUnits,
+    angle_unit,
+    joint_of,
+    read_units,
+)
 from servicebot_cli.kinematics.json_types import JsonObject, JsonValue
 from servicebot_cli.kinematics.mimics import Mimics
 from servicebot_cli.kinematics.transforms import planar_matrix
@@ -46,9 +55,9 @@ FloatArray = npt.NDArray[np.float64]
 
 CHUNK = 512
 _LIMIT_SLACK = 1e-9  # as JointSpace.checked: a value this far outside a limit is on it
-# Columns of an ik result that are not joints: fk input skips them.
-RESULT_COLUMNS = ("line", "success", "position_error_m", "orientation_error_rad", "iterations",
-                  "attempts", "solutions", "solve_time_s", "base_x_m", "base_y_m",
+# Columns of an ik result that are not joints: fk input skips them as joints.
+RESULT_COLUMNS = ("line", "angle_unit", "success", "position_error_m", "orientation_error_rad",
+                  "iterations", "attempts", "solutions", "solve_time_s", "base_x_m", "base_y_m",
                   "base_yaw_rad", "base_yaw_deg", "hint")
 BASE_COLUMNS = ("base_x_m", "base_y_m", "base_yaw_rad", "base_yaw_deg")
 """An ``ik --with-base`` result's base: where the robot stands for that line's poses."""
@@ -83,6 +92,9 @@ class FkBatch:
         self.unit = "deg" if deg else "rad"
         self._columns = self._header()
         self.clamped_values = self.clamped_lines = 0
+        self.header_units: ColumnUnits | None = None
+        """A CSV header's joints and angle unit (None: each line says, as JSON lines do)."""
+        self._line_units: dict[tuple[object, ...], ColumnUnits] = {}
 
     def columns(self) -> list[str]:
         """CSV header: ``line`` then the pose columns of each frame."""
@@ -95,14 +107,19 @@ class FkBatch:
         return ["line", *(f"{frame}.{n}" for frame in self.frames for n in names)]
 
     def check_header(self, columns: Sequence[str]) -> None:
-        """Every CSV column must be a joint (or an ik result column).
+        """Every CSV column must be a joint (or an ik result column), in units that agree.
 
         Raises:
             JointNotFound: The first column that is neither, with the nearest joint names.
+            UnitConflict: Joint columns whose units disagree (see :func:`read_units`).
         """
-        for name in columns:
-            if name not in RESULT_COLUMNS and name not in self.space.names:
+        joints = [name for name in columns if name not in RESULT_COLUMNS]
+        for name in joints:
+            if joint_of(name, self.space)[0] not in self.space.names:
                 raise JointNotFound.for_name(name, self.space.names)
+        if "angle_unit" not in columns:  # else each line says its unit
+            self.header_units = read_units(joints, self.space, deg=self.deg,
+                                           declared=_yaw_unit(columns))
 
     def parse(self, row: Row) -> FloatArray:
         """The row's configuration, one value per joint [rad or m], then its base's pose.
@@ -113,15 +130,35 @@ class FkBatch:
         values: Mapping[str, JsonValue] = row.values
         base = _row_base(values)
         joints = values.get("joints")
-        if isinstance(joints, Mapping):  # an ik result line
-            values = joints
-        pairs = row_pairs(values, RESULT_COLUMNS)
-        vector, clamped = clamped_user_vector(self.space, pairs, deg=self.deg, clamp=self.clamp,
-                                              mimics=self.mimics)
+        named = joints if isinstance(joints, Mapping) else values  # an ik result line, or flat
+        pairs = row_pairs(named, RESULT_COLUMNS)
+        units = self.header_units if self.header_units is not None else \
+            self.units_of(values, [name for name, _ in pairs])
+        vector, clamped = clamped_user_vector(
+            self.space, [(units.joint(name), value) for name, value in pairs], deg=units.deg,
+            clamp=self.clamp, mimics=self.mimics)
         if clamped:
             self.clamped_values += len(clamped)
             self.clamped_lines += 1
         return np.concatenate((vector, base))
+
+    def units_of(self, values: Mapping[str, JsonValue], names: Sequence[str]) -> ColumnUnits:
+        """The joints and angle unit of a line whose joint keys are ``names``.
+
+        Its ``angle_unit``, its columns' units and its base's yaw unit, which must agree.
+
+        Raises:
+            UnitConflict: An ``angle_unit`` other than ``deg`` or ``rad``, or units that
+                disagree.
+        """
+        said = angle_unit(values["angle_unit"]) if "angle_unit" in values else None
+        base = values.get("base")
+        yaw = _yaw_unit(base, prefix="") if isinstance(base, Mapping) else _yaw_unit(values)
+        key = (tuple(names), said, yaw)
+        if key not in self._line_units:
+            self._line_units[key] = read_units(names, self.space, deg=self.deg,
+                                               line_unit=said, declared=yaw)
+        return self._line_units[key]
 
     def results(self, items: Iterable[tuple[Row, FloatArray]],
                 kind: RowKind) -> Iterator[JsonObject]:
@@ -137,7 +174,7 @@ class FkBatch:
         """Joint values of many lines at once, as :meth:`parse` reads one line.
 
         Args:
-            given: Values in the user's units, shape (lines, len(joints)).
+            given: Values in the header's units, shape (lines, len(joints)).
             joints: The joint-space index of each column.
 
         Returns:
@@ -149,7 +186,7 @@ class FkBatch:
         values[:, joints] = given
         named = np.zeros(len(space.names), dtype=bool)
         named[list(joints)] = True
-        if self.deg:
+        if self.header_units is not None and self.header_units.deg:
             values = np.where(angular(space), np.radians(values), values)
         mimics = self.mimics
         for f, lead, k, c in zip(mimics.follower, mimics.leader, mimics.multiplier,
@@ -233,3 +270,12 @@ def _row_base(values: Mapping[str, JsonValue]) -> tuple[float, float, float]:
                  for key in ("base_x_m", "base_y_m", yaw_key))
     return x, y, math.radians(yaw) if yaw_key.endswith("deg") else yaw
 
+
+def _yaw_unit(keys: Iterable[str], prefix: str = "base_") -> tuple[tuple[str, str], ...]:
+    """The angle unit an ik ``--with-base`` result's base yaw states: ``(what, unit)``, if any.
+
+    ``keys`` are a CSV header or a flat JSON line's (``base_yaw_deg``), or, with ``prefix``
+    "", a JSON ``base`` object's (``yaw_deg``).
+    """
+    return tuple((f"'{key}'" if prefix else f"base '{key}'", key.rpartition("_")[2])
+                 for key in keys if key in (f"{prefix}yaw_deg", f"{prefix}yaw_rad"))

@@ -6,10 +6,15 @@ gives a line (``success`` false, the best try and a hint); the run then ends wit
 
 Output rows::
 
-    JSON Lines: {"line": 2, "success": true, "joints": {...}, "base": null,
-                 "position_error_m": ..., "orientation_error_rad": ..., "iterations": n,
-                 "attempts": n, "solutions": n, "solve_time_s": ..., "hint": null}
+    JSON Lines: {"line": 2, "angle_unit": "rad", "success": true, "joints": {...},
+                 "base": null, "position_error_m": ..., "orientation_error_rad": ...,
+                 "iterations": n, "attempts": n, "solutions": n, "solve_time_s": ...,
+                 "hint": null}
     CSV:        line,success,<joint>...,[base_x_m,base_y_m,base_yaw_rad,]position_error_m,...
+
+The unit travels with the values, so ``fk`` reads them back right: with ``--deg`` the JSON
+says ``"angle_unit": "deg"`` and each CSV joint column is ``<joint>_deg`` (``<joint>_m``
+for a prismatic joint); in radians the columns are the bare joint names.
 """
 
 from __future__ import annotations
@@ -26,6 +31,7 @@ from servicebot_cli.common.errors import ServicebotError
 from servicebot_cli.kinematics.ik_outcome import IkOutcome
 from servicebot_cli.kinematics.ik_session import IkSession
 from servicebot_cli.kinematics.inverse import IkTarget
+from servicebot_cli.kinematics.joint_columns import joint_column_names
 from servicebot_cli.kinematics.json_types import JsonObject
 from servicebot_cli.kinematics.targets import TARGET_KEYS, BadTarget, row_target
 from servicebot_cli.kinematics.user_joints import angular
@@ -53,13 +59,14 @@ class IkBatch:
         self.session, self.frame, self.axes = session, session.frame, axes
         self.failed: list[int] = []
         self._start = session.start
+        self._unit = "deg" if session.deg else "rad"
+        self._joint_columns = joint_column_names(session.space, session.deg)
 
     def columns(self) -> list[str]:
         """CSV header of the results."""
         space = self.session.space
-        base = ["base_x_m", "base_y_m", f"base_yaw_{'deg' if self.session.deg else 'rad'}"] \
-            if space.base_nq else []
-        return ["line", "success", *space.names, *base, *_TAIL]
+        base = ["base_x_m", "base_y_m", f"base_yaw_{self._unit}"] if space.base_nq else []
+        return ["line", "success", *self._joint_columns.values(), *base, *_TAIL]
 
     def check_header(self, columns: Sequence[str]) -> None:
         """Every CSV column must be a target column (other frames' columns are skipped).
@@ -114,7 +121,9 @@ class IkBatch:
         if not outcome.success:
             self.failed.append(line)
         values = self.session.values(outcome)
-        return {"line": line, **values} if kind == "jsonl" else self._flat(line, values)
+        if kind == "jsonl":
+            return {"line": line, "angle_unit": self._unit, **values}
+        return self._flat(line, values)
 
     def joint_table(self, qs: Sequence[FloatArray]) -> FloatArray:
         """Joint values in the user's units, one row per configuration, as :meth:`row` shows.
@@ -143,7 +152,7 @@ class IkBatch:
         flat: JsonObject = {"line": line, "success": values["success"]}
         joints, base = values["joints"], values["base"]
         if isinstance(joints, Mapping):
-            flat.update(joints)
+            flat.update({self._joint_columns[name]: v for name, v in joints.items()})
         if isinstance(base, Mapping):
             flat.update({f"base_{k}": v for k, v in base.items()})
         flat.update({k: values[k] for k in _TAIL})

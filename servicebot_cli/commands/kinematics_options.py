@@ -21,7 +21,8 @@ OUTPUT_SUFFIXES = (".csv", ".tsv", ".jsonl", ".ndjson", ".json")
 deg_option = click.option(
     "--deg", is_flag=True,
     help="Angles in degrees, in and out (joint values, roll-pitch-yaw); prismatic joints "
-    "stay in metres.",
+    "stay in metres. A batch column that names its unit (roll_rad, NAME_deg) is read in "
+    "that unit.",
 )
 clamp_option = click.option(
     "--clamp", is_flag=True,

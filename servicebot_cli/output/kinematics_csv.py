@@ -7,8 +7,10 @@ The columns are those of the batch results (``fk --configs``, ``ik --targets``) 
     ik:  success,<joint>...,[base_x_m,base_y_m,base_yaw_rad,]position_error_m,
          orientation_error_rad,iterations,attempts,solutions,solve_time_s,hint
 
-Numbers are written in full (``repr``), angles in the answer's unit (``_deg`` with
-``--deg``); ``true``/``false`` for booleans, an empty cell for none.
+Numbers are written in full (``repr``), angles in the answer's unit, which the columns name
+with ``--deg``: ``roll_deg``, ``base_yaw_deg``, ``<joint>_deg`` (``<joint>_m`` for a
+prismatic joint; bare joint names are radians); ``true``/``false`` for booleans, an empty
+cell for none.
 """
 
 from __future__ import annotations
@@ -52,12 +54,14 @@ def fk_csv(result: FkResult) -> str:
 def ik_csv(answer: IkAnswer) -> str:
     """An ``ik`` answer: one row, the joints (and base) in the user's units."""
     from servicebot_cli.kinematics.ik_outcome import outcome_values
+    from servicebot_cli.kinematics.joint_columns import joint_column_names
 
     values = outcome_values(answer.space, answer.outcome, answer.deg)
     row: dict[str, JsonValue] = {"success": values["success"]}
     joints, base = values["joints"], values["base"]
     if isinstance(joints, Mapping):
-        row.update(joints)
+        columns = joint_column_names(answer.space, answer.deg)
+        row.update({columns[name]: value for name, value in joints.items()})
     if isinstance(base, Mapping):
         row.update({f"base_{k}": v for k, v in base.items()})
     row.update({k: values[k] for k in _IK_TAIL})
