@@ -16,7 +16,14 @@ from collections.abc import Iterator
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
-from servicebot_cli.check.controller_sections import Sections, at, get, substituted, type_nodes
+from servicebot_cli.check.controller_sections import (
+    Sections,
+    at,
+    get,
+    named_at,
+    substituted,
+    type_nodes,
+)
 from servicebot_cli.check.findings import Issue, Severity
 
 _FORWARD = ("joints", "interface_name")  # (interface_name absent from a section: an error of
@@ -86,7 +93,7 @@ def presence_issues(found: Sections, display: str) -> Iterator[Issue]:
                   else "with its defaults")
         yield Issue("SB608", f"section '{name}' configures no controller: controller_manager "
                     f"declares '{meant}' ({kind}), which has no section, so it starts with no "
-                    f"parameters {result}", where=at(display, found[name][0].start_mark),
+                    f"parameters {result}", where=at(display, named_at(found[name][0])),
                     severity=Severity.ERROR if needs else Severity.WARNING,
                     fix=f"rename the section '{meant}:'")
     alone = not any(name in types for name in found)  # the manager's file: others may follow

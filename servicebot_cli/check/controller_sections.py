@@ -310,6 +310,7 @@ def _collect(root: yaml.Node | None, depth: int,
                 sections[here[text]] = (kept_wild, _merged([kept, params]))
                 continue
             here[text] = len(sections)
+            params.section_key = key  # where its name is written: yaml nodes take attributes
             sections.append((wild or "**" in text, params))
         elif isinstance(value, yaml.MappingNode):
             for name, inner in _collect(value, depth + 1, wild or "**" in text).items():
@@ -326,7 +327,15 @@ def _merged(nodes: list[yaml.MappingNode]) -> yaml.MappingNode:
         for key, value in node.value:
             entries[key.value if isinstance(key, yaml.ScalarNode) else id(key)] = (key, value)
     last = nodes[-1]
-    return yaml.MappingNode(last.tag, list(entries.values()), last.start_mark, last.end_mark)
+    merged = yaml.MappingNode(last.tag, list(entries.values()), last.start_mark, last.end_mark)
+    merged.section_key = getattr(last, "section_key", None)
+    return merged
+
+
+def named_at(section: yaml.MappingNode) -> yaml.Mark:
+    """Where the name of a node's ``ros__parameters`` ``section`` is written (its key)."""
+    key = getattr(section, "section_key", None)
+    return key.start_mark if isinstance(key, yaml.Node) else section.start_mark
 
 
 def controller_types(sections: Sections) -> dict[str, str]:

@@ -112,3 +112,17 @@ def test_a_declared_controller_without_parameters_beside_others_is_a_warning(run
     assert exit_code == 0 and [(f["code"], f["severity"]) for f in found] == [
         ("SB608", "warning")]
     assert "refuses to configure without sensor_name and frame_id" in str(found[0]["message"])
+
+
+@pytest.mark.parametrize("prefix", ["", "/**:\n  "])
+def test_a_misnamed_section_is_found_at_its_name(run, tmp_path, prefix):
+    """Where the typo is: the section's key, not its first parameter (create3's 'dif:')."""
+    text = GOOD.replace("gripper_controller:\n  ros__parameters",
+                        "gripper_controler:\n  ros__parameters")
+    if prefix:  # every node under the /** namespace, as irobot_create_control writes it
+        text = prefix + text.rstrip("\n").replace("\n", "\n  ") + "\n"
+    code, found = _check(run, tmp_path, text)
+    [misnamed] = [f for f in found if "configures no controller" in f["message"]]
+    line = next(n for n, written in enumerate(text.splitlines(), 1)
+                if written.strip() == "gripper_controler:")
+    assert misnamed["line"] == line
