@@ -68,6 +68,20 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
         return Issue("SB015", text, where=(file, line, column))
     text = text.removeprefix("xacro: ")
     undefined = _UNDEFINED_ARG.search(text)
+    declared = _defined_after(file, line, undefined[1], "arg") if undefined else None
+    if undefined is not None and declared is not None:  # xacro reads arguments in order
+        severity = Severity.WARNING if walked else Severity.ERROR
+        name = undefined[1]
+        if _opens_robot(file, line):  # the root's attributes come before any of its children
+            return Issue("SB006", f"{text}; {file}:{declared} declares it inside <robot>, "
+                         "whose own attributes xacro expands first: its default serves none "
+                         "of them", where=(file, line, column), severity=severity,
+                         fix=f"pass {name}:=VALUE (as a launch file does), or write the "
+                         f"<robot> name without $(arg {name})")
+        return Issue("SB006", f"{text}; {file}:{declared} declares it, after this line, and "
+                     "xacro knows an argument only from there on", where=(file, line, column),
+                     severity=severity, fix=f"move <xacro:arg name=\"{name}\"> (line "
+                     f"{declared}) above line {line}, or pass {name}:=VALUE")
     if walked and undefined is not None:
         name = undefined[1]
         return Issue("SB006", f"{text}: the file reads {name} with no default, as a launch file "
@@ -75,7 +89,8 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
                      where=(file, line, column), severity=Severity.WARNING,
                      fix=f"check it by name with {name}:=VALUE (and its other arguments)")
     name = _UNDEFINED_NAME.search(text)
-    later = _defined_after(file, line, name[1]) if name and not _IN_MACRO.search(text) else None
+    later = _defined_after(file, line, name[1], "property") \
+        if name and not _IN_MACRO.search(text) else None
     if name is not None and later is not None:  # defined below: xacro knows it from there on
         return Issue("SB006", f"{text}; {file}:{later} defines it, after this line",
                      where=(file, line, column), fix=f"move the definition of '{name[1]}' "
@@ -84,14 +99,26 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
     return Issue("SB006", text, where=(file, line, column), fix=_xacro_fix(text, undefined))
 
 
-def _defined_after(file: str, line: int, name: str) -> int | None:
-    """The line of the first ``<xacro:property name=NAME>`` of ``file`` below ``line``."""
+def _opens_robot(file: str, line: int) -> bool:
+    """Whether line ``line`` of ``file`` holds the ``<robot`` start tag."""
+    try:
+        with open(file, "rb") as handle:
+            lines = handle.read(1 << 20).decode("utf-8", "replace").splitlines()
+    except OSError:
+        return False
+    return 0 < line <= len(lines) and "<robot" in lines[line - 1]
+
+
+def _defined_after(file: str, line: int, name: str, kind: str) -> int | None:
+    """The line of the first ``<xacro:KIND name=NAME>`` (property, arg) of ``file`` below
+    ``line``; None where the first is above it, or there is none.
+    """  # noqa: D205
     try:
         with open(file, "rb") as handle:
             source = comments_blanked(handle.read(1 << 20)).decode("utf-8", "replace")
     except OSError:
         return None
-    pattern = re.compile(r"<xacro:property\b[^>]*\bname\s*=\s*[\"']" + re.escape(name)
+    pattern = re.compile(rf"<xacro:{kind}\b[^>]*\bname\s*=\s*[\"']" + re.escape(name)
                          + r"[\"']")
     for found in pattern.finditer(source):
         at = source.count("\n", 0, found.start()) + 1

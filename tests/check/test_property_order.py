@@ -44,3 +44,48 @@ def test_a_property_defined_nowhere_keeps_its_fix(tmp_path):
     (found,) = findings(run_servicebot("check", "urdf", path, "--isolated", "--format",
                                        "json").stdout)
     assert found["fix"].startswith("define 'wheel_rad' (<xacro:property")
+
+
+_ROOT_ARG = """<?xml version="1.0"?>
+<robot xmlns:xacro="http://ros.org/wiki/xacro" name="xarm$(arg dof)">
+  <xacro:arg name="dof" default="7"/>
+  <link name="base_link"/>
+</robot>
+"""
+_LATE_ARG = """<?xml version="1.0"?>
+<robot xmlns:xacro="http://ros.org/wiki/xacro" name="r">
+  <link name="link$(arg dof)"/>
+  <xacro:arg name="dof" default="7"/>
+</robot>
+"""
+
+
+def _sb006(path, *args):
+    result = run_servicebot("check", "urdf", *args, "--isolated", "--format", "json")
+    return [f for f in findings(result.stdout) if f["code"] == "SB006"]
+
+
+def test_an_argument_read_by_the_robot_tag_is_no_missing_default(tmp_path):
+    """xarm_ros2's xarm_device.urdf.xacro: name="xarm$(arg dof)" and <xacro:arg name="dof"
+    default="7"/> below it; real xacro fails without dof:=, and the argument has a default.
+    """  # noqa: D205
+    path = tmp_path / "xarm_device.urdf.xacro"
+    path.write_text(_ROOT_ARG)
+    (named,) = _sb006(path, path)
+    assert named["severity"] == "error" and named["line"] == 2
+    assert "declares it inside <robot>, whose own attributes xacro expands first" in \
+        named["message"]
+    assert named["fix"] == ("pass dof:=VALUE (as a launch file does), or write the <robot> "
+                            "name without $(arg dof)")
+    (walked,) = _sb006(path, tmp_path)  # a walk passes no arguments: a warning
+    assert walked["severity"] == "warning" and "with no default" not in walked["message"]
+    assert _sb006(path, path, "dof:=6") == []
+
+
+def test_an_argument_declared_below_its_use_is_said_so(tmp_path):
+    path = tmp_path / "late.urdf.xacro"
+    path.write_text(_LATE_ARG)
+    (found,) = _sb006(path, path)
+    assert found["line"] == 3 and "late.urdf.xacro:4 declares it, after this line" in \
+        found["message"]
+    assert found["fix"] == 'move <xacro:arg name="dof"> (line 4) above line 3, or pass dof:=VALUE'
