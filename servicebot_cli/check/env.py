@@ -73,6 +73,10 @@ class CheckEnv:
         filename = shape.geometry.filename or ""
         return self.search.resolve(filename, self._directory(robot.source_of(shape.element).file))
 
+    def directory_of(self, robot: RobotDescription, shape: Shape) -> Path:
+        """The directory of the file that writes ``shape`` (where its relative paths start)."""
+        return self._directory(robot.source_of(shape.element).file)
+
     def _directory(self, file: str) -> Path:
         """The absolute directory of a description's source ``file`` (made once per file)."""
         found = self._directories.get(file)

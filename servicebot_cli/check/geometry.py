@@ -11,7 +11,7 @@ import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from servicebot_cli.check import values
+from servicebot_cli.check import mesh_elsewhere, values
 from servicebot_cli.check.env import CheckEnv, MeshError, MeshNotFound, RemoteMesh, case_twin
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.packages import FileTally
@@ -114,12 +114,23 @@ def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str
         if exc.resolved.path is None:
             tally.add_missing(exc.resolved, element, where, shape.geometry.filename or "")
             return
-        unexpanded = "$(" in (shape.geometry.filename or "")
+        filename = shape.geometry.filename or ""
+        unexpanded = "$(" in filename
         twin = case_twin(exc.resolved.path)
-        missing = Issue("SB401", f"{where}: {exc}", element,
+        windows = mesh_elsewhere.is_windows_path(filename)
+        elsewhere = None if unexpanded or twin or exc.resolved.package is not None else \
+            mesh_elsewhere.package_uri(filename, env.directory_of(robot, shape),
+                                       env.resolver.explicit)
+        said = (f"{where}: mesh '{filename}' is a Windows path, which names no file elsewhere"
+                if windows else f"{where}: {exc}")
+        missing = Issue("SB401", said, element,
                         fix="name the file .urdf.xacro, so that xacro expands it, or write the "
                             "path as package://PKG/..." if unexpanded else
                             f"write '{twin}' as the file is named, or rename the file" if twin
+                            else f"write {elsewhere}: a package of this workspace holds it, and "
+                            "ROS finds it on every machine" if elsewhere
+                            else "write it as package://PKG/... from the package that holds it"
+                            if windows
                             else "fix the path: the package or directory holds no such file")
         if not tally.guessed_wrong(exc.resolved, element, missing):
             tally.add_found(exc.resolved, element)
