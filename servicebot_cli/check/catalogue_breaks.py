@@ -106,6 +106,9 @@ BREAKS: dict[str, str] = {
              "the plugin's encoder odometry drifts",
     "SB517": "ros2_control's parser or resource manager refuses the robot: the controller "
              "manager and Gazebo's ros2_control plugins do not start",
+    "SB521": "gazebo_ros2_control and gz_ros2_control hand the file to rcl, which cannot open "
+             "it ('Couldn't parse params file'): the controller manager does not start, and "
+             "the robot spawns without controllers",
     "SB601": "the controller manager refuses parameters that are not valid YAML",
     "SB602": "the controller fails to configure: the joint's interfaces do not exist",
     "SB603": "diff_drive_controller accepts it and drives at the wrong speed and odometry",
