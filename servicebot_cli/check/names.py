@@ -44,10 +44,21 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
             elif item.name in first:
                 yield Issue(code, f"{kind} '{item.name}' is defined twice (first at "
                             f"{robot.source_of(first[item.name])})", item.element,
-                            fix=f"rename one of the two {kind}s")
+                            fix=_twice_fix(robot, first[item.name], item.element, kind))
             else:
                 first[item.name] = item.element
     yield from _materials(robot)
+
+
+def _twice_fix(robot: RobotDescription, first: ET.Element | None, again: ET.Element | None,
+               kind: str) -> str:
+    """Rename one of the two; or, where one macro line wrote both, call it once."""
+    a, b = robot.source_of(first), robot.source_of(again)
+    if (a.file, a.line) == (b.file, b.line) and a.via is not None and b.via is not None \
+            and a.via != b.via:
+        return (f"the same macro is called twice ({a.via.location()} and {b.via.location()}): "
+                "remove one call, or give each call its own name prefix")
+    return f"rename one of the two {kind}s"
 
 
 def _has_colour(material: ET.Element) -> bool:

@@ -47,6 +47,8 @@ def _parents(edges: list[Joint]) -> Iterator[Issue]:
     out = Counter(joint.parent for joint in edges)
     several_roots = len(set(out) - children) > 1  # one root: a loop, no joint turned round
     for first, joint in second_parents(edges):
+        if (first.name, first.parent) == (joint.name, joint.parent):
+            continue  # the same joint written twice: SB102 says so
         # a joint written the wrong way round: its parent, a leaf, became a second root
         swapped = [j for j in (joint, first) if several_roots and j.parent not in children
                    and out[j.parent] == 1]
