@@ -12,7 +12,11 @@ from collections.abc import Iterator, Mapping
 from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue, Severity
-from servicebot_cli.check.optional_parts import Definition, defined_elsewhere
+from servicebot_cli.check.optional_parts import (
+    Definition,
+    defined_by_siblings,
+    defined_elsewhere,
+)
 from servicebot_cli.common.errors import NameNotFound
 from servicebot_cli.description import sensors as specs
 from servicebot_cli.description.elements import parse_float
@@ -42,7 +46,14 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
     # a reference still holding xacro's braces is a typo, no optional part ('{side}' for '${side}')
     optional = defined_elsewhere(robot, {block.reference or "" for block in unknown
                                          if not _UNEXPANDED.search(block.reference or "")})
+    left = {block.reference or "": robot.source_of(block.element).file for block in unknown
+            if block.reference not in optional and not _UNEXPANDED.search(block.reference or "")}
+    siblings = defined_by_siblings(robot, left)
     for block in unknown:
+        sibling = siblings.get(block.reference or "")
+        if sibling is not None:
+            yield _siblings_reference(block.reference or "", sibling, block.element)
+            continue
         yield _unknown_reference(block.reference or "", names, optional, block.element)
     fixed = {joint.name for joint in robot.joints if joint.type == "fixed"}
     kept = robot.kept_apart
@@ -128,6 +139,18 @@ def _unread(tag: str, text: str) -> str | None:
 
 def _referring(reference: str | None) -> str:
     return f' reference="{reference}"' if reference is not None else ""
+
+
+def _siblings_reference(reference: str, sibling: Definition,
+                        element: ET.Element | None) -> Issue:
+    """SB501, a warning: the block is for a link another robot beside this one defines."""
+    file, line, kind, written, _ = sibling
+    named = f"'{reference}'" if written == reference else f"'{written}'"
+    return Issue("SB501", f"<gazebo reference=\"{reference}\"> names no link or joint of this "
+                 f"robot; {file}:{line}, another robot beside it, defines {kind} {named}: a "
+                 "block written for each robot of the family, which Gazebo ignores here",
+                 element, severity=Severity.WARNING,
+                 fix="nothing; or write the block only where the robot has that link")
 
 
 def _unknown_reference(reference: str, names: list[str],

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Collection
+from collections.abc import Collection, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -82,6 +82,55 @@ def defined_elsewhere(robot: RobotDescription, names: Collection[str]) -> dict[s
                 found.setdefault(name, (display_path(path), line, match[1].decode(),
                                         written.decode("utf-8", "replace"),
                                         _macro_at(macros, match.start())))
+    return found
+
+
+_MOST_SIBLINGS = 64  # description files beside the named one that are read
+
+
+def defined_by_siblings(robot: RobotDescription,
+                        written_in: Mapping[str, str]) -> dict[str, Definition]:
+    """For each name of ``written_in`` that another robot's description beside this one
+    defines, and whose block is written in a file that robot reads too: where.
+
+    A family's descriptions share their Gazebo blocks (interbotix's gazebo_configs macro
+    writes one per link of every arm into each arm): a block naming a link of a sibling,
+    written in a file the sibling includes too, and of no part of this robot, is one of
+    those. ``written_in``: each name and the file its block is written in; a block in the
+    robot's own file is its own. Only for descriptions expanded from xacro.
+    """  # noqa: D205
+    own_file = os.path.abspath(robot.path)
+    shared = {name: os.path.basename(file).encode() for name, file in written_in.items()
+              if os.path.abspath(file) != own_file}
+    if not robot.expanded or not shared:
+        return {}
+    names = list(shared)
+    own = {os.path.abspath(file) for file in robot.files}
+    try:
+        beside = sorted(entry.path for entry in os.scandir(robot.path.parent)
+                        if entry.name.endswith((".xacro", ".urdf")) and entry.is_file()
+                        and os.path.abspath(entry.path) not in own)[:_MOST_SIBLINGS]
+    except OSError:
+        return {}
+    wanted = {name.encode(): name for name in names}
+    sources = []
+    for path in [*map(Path, beside), *map(Path, robot.files)]:
+        head = head_of(path)
+        if head is not None:
+            sources.append((path, _GAZEBO_BLOCK.sub(_line_breaks, comments_blanked(head))))
+    texts = [text for _, text in sources]
+    found: dict[str, Definition] = {}
+    for path, text in sources[:len(beside)]:
+        for match in _DEFINITION.finditer(text):
+            named = _NAME.search(match[2])
+            if named is None or (match[1] == b"joint" and not _TYPE.search(match[2])):
+                continue
+            written = named[1] if named[1] is not None else named[2]
+            line = text.count(b"\n", 0, match.start()) + 1
+            for name in _defined(written, wanted, texts):
+                if shared[name] in text:  # it reads the file that writes the block
+                    found.setdefault(name, (display_path(path), line, match[1].decode(),
+                                            written.decode("utf-8", "replace"), None))
     return found
 
 
