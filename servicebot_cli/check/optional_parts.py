@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Collection, Mapping
+from collections.abc import Collection, Iterable, Iterator, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -61,28 +61,37 @@ def defined_elsewhere(robot: RobotDescription, names: Collection[str]) -> dict[s
     expanded = {(os.path.abspath(ref.file), ref.line) for ref in map(
         robot.source_of, (*robot.root.findall("link"), *robot.root.findall("joint")))}
     found: dict[str, Definition] = {}
-    sources = []
-    for path in included_files([Path(file) for file in robot.files]):
-        head = head_of(path)
-        if head is None:
-            continue
-        text = comments_blanked(head)
-        sources.append((path, _GAZEBO_BLOCK.sub(_line_breaks, text)))
+    sources = _sources(included_files([Path(file) for file in robot.files]))
     texts = [text for _, text in sources]
     for path, text in sources:
         macros = _macro_spans(text)
-        for match in _DEFINITION.finditer(text):
-            named = _NAME.search(match[2])
-            if named is None or (match[1] == b"joint" and not _TYPE.search(match[2])):
-                continue
-            written = named[1] if named[1] is not None else named[2]
-            line = text.count(b"\n", 0, match.start()) + 1
+        for kind, written, line, start in _definitions(text):
             here = (os.path.abspath(path), line) in expanded
             for name in _defined(written, wanted, texts, expanded_here=here):
-                found.setdefault(name, (display_path(path), line, match[1].decode(),
+                found.setdefault(name, (display_path(path), line, kind,
                                         written.decode("utf-8", "replace"),
-                                        _macro_at(macros, match.start())))
+                                        _macro_at(macros, start)))
     return found
+
+
+def _sources(paths: Iterable[Path]) -> list[tuple[Path, bytes]]:
+    """Each readable file of ``paths`` and its text, comments and Gazebo blocks blanked."""
+    sources = []
+    for path in paths:
+        head = head_of(path)
+        if head is not None:
+            sources.append((path, _GAZEBO_BLOCK.sub(_line_breaks, comments_blanked(head))))
+    return sources
+
+
+def _definitions(text: bytes) -> Iterator[tuple[str, bytes, int, int]]:
+    """Each link and joint ``text`` defines: kind, name as written, line, and offset."""
+    for match in _DEFINITION.finditer(text):
+        named = _NAME.search(match[2])
+        if named is None or (match[1] == b"joint" and not _TYPE.search(match[2])):
+            continue  # a <joint> with no type names one (a transmission's, ros2_control's)
+        written = named[1] if named[1] is not None else named[2]
+        yield match[1].decode(), written, text.count(b"\n", 0, match.start()) + 1, match.start()
 
 
 _MOST_SIBLINGS = 64  # description files beside the named one that are read
@@ -113,23 +122,14 @@ def defined_by_siblings(robot: RobotDescription,
     except OSError:
         return {}
     wanted = {name.encode(): name for name in names}
-    sources = []
-    for path in [*map(Path, beside), *map(Path, robot.files)]:
-        head = head_of(path)
-        if head is not None:
-            sources.append((path, _GAZEBO_BLOCK.sub(_line_breaks, comments_blanked(head))))
-    texts = [text for _, text in sources]
+    siblings = _sources(map(Path, beside))
+    texts = [text for _, text in (*siblings, *_sources(map(Path, robot.files)))]
     found: dict[str, Definition] = {}
-    for path, text in sources[:len(beside)]:
-        for match in _DEFINITION.finditer(text):
-            named = _NAME.search(match[2])
-            if named is None or (match[1] == b"joint" and not _TYPE.search(match[2])):
-                continue
-            written = named[1] if named[1] is not None else named[2]
-            line = text.count(b"\n", 0, match.start()) + 1
+    for path, text in siblings:
+        for kind, written, line, _ in _definitions(text):
             for name in _defined(written, wanted, texts):
                 if shared[name] in text:  # it reads the file that writes the block
-                    found.setdefault(name, (display_path(path), line, match[1].decode(),
+                    found.setdefault(name, (display_path(path), line, kind,
                                             written.decode("utf-8", "replace"), None))
     return found
 

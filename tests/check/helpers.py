@@ -69,3 +69,15 @@ def check_controllers(run: Any, directory: Path, yaml_text: str,
     result = run("check", "controllers", path, "--urdf", urdf or SIM_URDF, "--format", "json",
                  "--isolated")
     return result.exit_code, findings(result.stdout)
+
+
+def ros2_package(workspace: Path, name: str) -> Path:
+    """``workspace/src/NAME`` with its package.xml, urdf/ and config/, as users lay one out."""
+    package = workspace / "src" / name
+    (package / "urdf").mkdir(parents=True)
+    (package / "config").mkdir()
+    (package / "package.xml").write_text(
+        f'<?xml version="1.0"?><package format="3"><name>{name}</name><version>0.0.1</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        "<license>MIT</license></package>")
+    return package

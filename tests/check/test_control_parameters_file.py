@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.check.helpers import findings
+from tests.check.helpers import findings, ros2_package
 from tests.conftest import REPO
 
 _PLUGIN = ('<gazebo><plugin filename="{filename}" name="ros2_control">'
@@ -18,13 +18,7 @@ _PLUGIN = ('<gazebo><plugin filename="{filename}" name="ros2_control">'
 
 
 def _workspace(tmp_path, parameters: str, filename: str = "gz_ros2_control-system"):
-    package = tmp_path / "ws" / "src" / "bot_description"
-    (package / "urdf").mkdir(parents=True)
-    (package / "config").mkdir()
-    (package / "package.xml").write_text(
-        '<?xml version="1.0"?><package format="3"><name>bot_description</name>'
-        "<version>0.0.1</version><description>d</description><maintainer email=\"a@b.c\">a"
-        "</maintainer><license>MIT</license></package>")
+    package = ros2_package(tmp_path / "ws", "bot_description")
     (package / "config" / "controllers.yaml").write_text(
         (REPO / "robots" / "controllers.yaml").read_text())
     robot = (REPO / "robots" / "service_robot_real.urdf.xml").read_text()

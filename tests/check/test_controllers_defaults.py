@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import json
 
-from tests.check.helpers import findings
+from tests.check.helpers import findings, ros2_package
 from tests.conftest import REPO, assert_one_line_error
 
 _PLUGIN = ('<gazebo><plugin filename="gz_ros2_control-system" name="ros2_control">'
@@ -21,13 +21,7 @@ _PLUGIN = ('<gazebo><plugin filename="gz_ros2_control-system" name="ros2_control
 
 def _package(tmp_path, plugin: bool = True):
     """ws/src/bot_description: the real robot as a xacro, its controllers in config/."""
-    package = tmp_path / "ws" / "src" / "bot_description"
-    (package / "urdf").mkdir(parents=True)
-    (package / "config").mkdir()
-    (package / "package.xml").write_text(
-        '<?xml version="1.0"?><package format="3"><name>bot_description</name>'
-        "<version>0.0.1</version><description>d</description><maintainer email=\"a@b.c\">a"
-        "</maintainer><license>MIT</license></package>")
+    package = ros2_package(tmp_path / "ws", "bot_description")
     controllers = (REPO / "robots" / "controllers.yaml").read_text()
     assert "rear_left_wheel_joint" in controllers
     (package / "config" / "bot_controllers.yaml").write_text(

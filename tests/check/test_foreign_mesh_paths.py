@@ -9,20 +9,15 @@ from __future__ import annotations
 
 import pytest
 
-from tests.check.helpers import findings, tetrahedron_stl
+from tests.check.helpers import findings, ros2_package, tetrahedron_stl
 
 _ROBOT = ('<robot name="r"><link name="base_link"><visual><geometry><mesh filename="{mesh}"/>'
           '</geometry></visual></link></robot>')
 
 
 def _workspace(tmp_path, mesh: str):
-    package = tmp_path / "ws" / "src" / "bot_description"
-    (package / "urdf").mkdir(parents=True)
+    package = ros2_package(tmp_path / "ws", "bot_description")
     (package / "meshes" / "visual").mkdir(parents=True)
-    (package / "package.xml").write_text(
-        '<?xml version="1.0"?><package format="3"><name>bot_description</name>'
-        "<version>0.0.1</version><description>d</description><maintainer email=\"a@b.c\">a"
-        "</maintainer><license>MIT</license></package>")
     (package / "meshes" / "visual" / "base.stl").write_bytes(tetrahedron_stl(0.1))
     robot = package / "urdf" / "bot.urdf"
     robot.write_text(_ROBOT.format(mesh=mesh))
