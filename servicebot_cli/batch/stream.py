@@ -134,14 +134,18 @@ def write_results(stage: Stage[T], rows: Iterable[Row], display: str, write: Wri
 
 
 def refuse_no_lines(display: str, tally: Tally) -> None:
-    """Refuse a file of a header alone, as an empty one is: nothing to compute.
+    """Refuse a file of a header alone, as an empty one is: nothing to compute; and a run
+    that skipped every line (``--on-error skip``), which computed nothing either.
 
     Raises:
-        BatchInputError: No data line was read.
-    """
+        BatchInputError: No data line was read, or none was used.
+    """  # noqa: D205
     if not tally.rows:
         raise BatchInputError(f"{display}: has no data lines below its header; give one "
                               "line per item")
+    if tally.skipped == tally.rows:
+        raise BatchInputError(f"{display}: every one of its {tally.rows} lines was skipped, "
+                              "so nothing was computed; fix the lines named above")
 
 
 def summarise(display: str, tally: Tally, warn: Warn) -> BatchSummary:

@@ -67,16 +67,24 @@ class RowFile:
         A file appears (replacing an old one) only when the block ends without an error.
         """
         if self.output is None:
-            yield _writer(sys.stdout, self._kind, columns, ",")
+            writer = _Writer(sys.stdout, self._kind, columns, ",")
+            yield writer
+            writer.finish()
             sys.stdout.flush()
             return
         delimiter = "\t" if self.output.lower().endswith(".tsv") else ","
         with atomic_output(self.output) as handle:
-            yield _writer(handle, self._kind, columns, delimiter)
+            writer = _Writer(handle, self._kind, columns, delimiter)
+            yield writer
+            writer.finish()
 
 
 class _Writer:
-    """Writes rows to ``handle``: JSON Lines, or CSV after a header of ``columns``."""
+    """Writes rows to ``handle``: JSON Lines, or CSV after a header of ``columns``.
+
+    The header goes out with the first row (or at :meth:`finish`): a run refused before
+    any result leaves nothing on stdout, not a header alone.
+    """
 
     def __init__(self, handle: IO[str], kind: RowKind, columns: Sequence[str],
                  delimiter: str) -> None:
@@ -84,11 +92,20 @@ class _Writer:
         self._handle = handle
         self._dumps = json.dumps
         self._csv = csv.writer(handle, delimiter=delimiter, lineterminator="\n")
-        if kind == "csv":
-            self._csv.writerow(columns)
+        self._header_due = kind == "csv"
+
+    def finish(self) -> None:
+        """End a run that succeeded: its header, if no row wrote it."""
+        self._begin()
+
+    def _begin(self) -> None:
+        if self._header_due:
+            self._header_due = False
+            self._csv.writerow(self._keys)
 
     def __call__(self, row: JsonObject) -> None:
         """Write one row."""
+        self._begin()
         if self._kind == "jsonl":
             self._handle.write(self._dumps(row, allow_nan=False) + "\n")
         else:
@@ -96,11 +113,8 @@ class _Writer:
 
     def text(self, rows: str) -> None:
         """Write rows already formatted, each ending in a newline."""
+        self._begin()
         self._handle.write(rows)
-
-
-def _writer(handle: IO[str], kind: RowKind, columns: Sequence[str], delimiter: str) -> WriteRow:
-    return _Writer(handle, kind, columns, delimiter)
 
 
 def _cell(value: JsonValue) -> JsonValue:

@@ -15,7 +15,7 @@ import json
 
 import pytest
 
-from tests.conftest import assert_one_line_error
+from tests.conftest import assert_one_line_error, run_servicebot
 
 ARM = ["arm_base_to_link1", "arm_link1_to_link2", "arm_link2_to_link3", "arm_link3_to_link4"]
 
@@ -77,3 +77,33 @@ def test_a_json_line_naming_a_joint_twice_is_refused(run, tmp_path):
     configs.write_text(json.dumps({ARM[0]: 0.1}).replace("}", f', "{ARM[0]}": 2.5}}') + "\n")
     assert_one_line_error(run("fk", "--configs", configs), 2,
                           f"configs.jsonl:1: names '{ARM[0]}' twice; give each once")
+
+
+@pytest.mark.parametrize(("command", "lines"), [
+    ("fk", [",".join(ARM), "x,0,0", "0,y,0"]),
+    ("ik", ["x_m,y_m,z_m", "a,0,0", "0,b,0"]),
+])
+@pytest.mark.parametrize("kind", ["csv", "jsonl"])
+def test_a_run_that_skips_every_line_computed_nothing_and_says_so(tmp_path, command, lines,
+                                                                  kind):
+    """--on-error skip over lines none of which is usable: no result, not an empty success."""
+    given = tmp_path / "given.csv"
+    given.write_text("\n".join(lines) + "\n")
+    option = "--configs" if command == "fk" else "--targets"
+    out = tmp_path / f"out.{kind}"
+    to_file = run_servicebot(command, option, given, "--on-error", "skip", "-o", out)
+    assert to_file.returncode == 2 and not out.exists()
+    errors = [ln for ln in to_file.stderr.splitlines() if ln.startswith("Error:")]
+    assert errors == [f"Error: {given}: every one of its 2 lines was skipped, so nothing was "
+                      "computed; fix the lines named above"]
+    assert sum(ln.startswith("skipped ") for ln in to_file.stderr.splitlines()) == 2
+    to_stdout = run_servicebot(command, option, given, "--on-error", "skip",
+                               *(["--format", "json"] if kind == "jsonl" else []))
+    assert to_stdout.returncode == 2 and to_stdout.stdout == ""  # not a header alone
+
+
+def test_a_header_only_file_leaves_stdout_empty(tmp_path):
+    given = tmp_path / "given.csv"
+    given.write_text(",".join(ARM) + "\n")
+    result = run_servicebot("fk", "--configs", given)
+    assert result.returncode == 2 and result.stdout == ""
