@@ -7,10 +7,10 @@ controller manager does not start, and no controller runs: the robot spawns and 
 A relative path (Gazebo reads it from its own working directory) that is not beside the
 description is a warning. A path is taken as the simulator and ``inspect`` take it:
 relative to the description,
-``file://`` and ``~`` read, a value still holding a launch substitution ``$(...)`` left
-alone; a file that only a CMake ``install(DIRECTORY)`` puts there is found in the sources
-(:mod:`~servicebot_cli.description.install_layout`). Reads nothing but the file system's
-entries and CMakeLists.txt.
+a value still holding a launch substitution ``$(...)`` left alone; a file the package's
+install rules put there is found in its sources (by name, anywhere in the package). rcl opens
+the text as a path: ``file://`` and ``~`` are not read, and are errors. Reads nothing but the
+file system's entries and CMakeLists.txt.
 """
 
 from __future__ import annotations
@@ -41,8 +41,18 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
             named = Path(text.removeprefix("file://")).expanduser()
             path = Path(os.path.normpath(named if named.is_absolute()
                                          else robot.path.parent / named))
-            if os.path.isfile(installed_source(str(path))):  # once installed, if not here
+            if text.startswith(("file://", "~")):  # rcl opens the text as written
+                shown = "file://" if text.startswith("file://") else "~"
+                yield Issue("SB521", f"plugin '{plugin.filename or plugin.name}': <parameters> "
+                            f"{text} starts with '{shown}', which rcl does not read: it opens "
+                            "the text as a path ('Couldn't parse params file'), and no "
+                            "controller starts", element, fix=f"write the path itself: {path}"
+                            if os.path.isfile(path) else "write the path itself, as "
+                            "$(find PKG)/... in a xacro file")
                 continue
+            if os.path.isfile(installed_source(str(path))) or (
+                    named.is_absolute() and _in_package(path)):
+                continue  # here, or put here by the package's install rules
             what = "is a directory" if os.path.isdir(path) else "does not exist"
             said = (f"plugin '{plugin.filename or plugin.name}': <parameters> names {path}, "
                     f"which {what}: the controller manager gets it as --params-file, rcl "
@@ -54,6 +64,31 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
                             element, severity=Severity.WARNING,
                             fix="write it as $(find PKG)/..., which does not depend on where "
                             "Gazebo runs")
+
+
+_MOST_FILES = 20_000  # a package's files looked through for one of a missing file's name
+
+
+def _in_package(path: Path) -> bool:
+    """Whether the package ``path`` is in holds a file of its name elsewhere in its sources.
+
+    Install rules put files where ``$(find PKG)/...`` names them: CMake's install(FILES) or
+    install(DIRECTORY) from another directory, or a setup.py's data_files; checked from
+    sources, such a file is somewhere in the package under its own name.
+    """
+    holder = next((parent for parent in path.parents if (parent / "package.xml").is_file()),
+                  None)
+    if holder is None:
+        return False
+    seen = 0
+    for _, subdirectories, files in os.walk(holder):
+        subdirectories[:] = [d for d in subdirectories if not d.startswith((".", "build"))]
+        if path.name in files:
+            return True
+        seen += len(files)
+        if seen > _MOST_FILES:
+            return False
+    return False
 
 
 def _fix(path: Path) -> str:

@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import Any
 
 from servicebot_cli.description.extensions import Plugin, params_all
+from servicebot_cli.description.install_layout import installed_source
 from servicebot_cli.description.ros_parameters import node_parameters, overlaid
 
 ROS2_CONTROL_PLUGINS = ("gazebo_ros2_control", "gz_ros2_control", "ign_ros2_control")
@@ -35,7 +36,8 @@ def parameter_files(plugins: Iterable[Plugin], directory: Path) -> tuple[Path, .
     """Every ``<parameters>`` of the first ros2_control plugin that names one, in order.
 
     Relative paths are taken from ``directory`` (the description's); ``file://`` is dropped
-    and ``~`` expanded. Values still holding a ``$(...)`` substitution are left out: they
+    and ``~`` expanded; a path only the package's ``install(DIRECTORY)`` fills is its source
+    file (:mod:`.install_layout`). Values still holding a ``$(...)`` substitution are left out: they
     name no file without the launch system.
     """
     for plugin in plugins:
@@ -44,8 +46,9 @@ def parameter_files(plugins: Iterable[Plugin], directory: Path) -> tuple[Path, .
         named = [text.strip().removeprefix("file://") for text in
                  params_all(plugin.params, "parameters") if text and text.strip()]
         paths = tuple(Path(text).expanduser() for text in named if "$(" not in text)
-        if paths:
-            return tuple(p if p.is_absolute() else directory / p for p in paths)
+        if paths:  # a file the package's install(DIRECTORY) puts there: its source
+            return tuple(Path(installed_source(str(p if p.is_absolute() else directory / p)))
+                         for p in paths)
     return ()
 
 

@@ -40,7 +40,6 @@ def _sb521(run, xacro):
 @pytest.mark.parametrize("parameters", [
     "$(find bot_description)/config/controllers.yaml",
     "../config/controllers.yaml",  # from the description's directory
-    "file://$(find bot_description)/config/controllers.yaml",
     "$(arg controllers)",  # left to the launch file: xacro fails without it, so a default
 ])
 def test_a_file_that_exists_passes(run, tmp_path, parameters):
@@ -91,11 +90,6 @@ def test_a_file_that_cmake_installs_there_passes(run, tmp_path):
         "cmake_minimum_required(VERSION 3.8)\nproject(bot_description)\n"
         "install(DIRECTORY description/config urdf DESTINATION share/${PROJECT_NAME})\n")
     assert _sb521(run, xacro) == (0, [])
-    (package / "CMakeLists.txt").write_text(
-        "cmake_minimum_required(VERSION 3.8)\nproject(bot_description)\n"
-        "install(DIRECTORY urdf DESTINATION share/${PROJECT_NAME})\n")
-    code, found = _sb521(run, xacro)
-    assert code == 1 and len(found) == 1
 
 
 def test_a_relative_name_not_beside_the_description_is_a_warning(run, tmp_path):
@@ -105,3 +99,37 @@ def test_a_relative_name_not_beside_the_description_is_a_warning(run, tmp_path):
     assert code == 0 and len(found) == 1 and found[0]["severity"] == "warning"
     assert "unless Gazebo runs where 'controllers.yaml' is" in found[0]["message"]
     assert "$(find PKG)" in found[0]["fix"]
+
+
+@pytest.mark.parametrize(("written", "said"), [
+    ("file://$(find bot_description)/config/controllers.yaml", "starts with 'file://'"),
+    ("~/controllers.yaml", "starts with '~'"),
+])
+def test_a_file_uri_or_home_is_an_error_as_rcl_opens_it_as_written(run, tmp_path, written,
+                                                                  said):
+    """gazebo_ros2_control and gz_ros2_control pass the text to rcl, which fopen()s it."""
+    (tmp_path / "home").mkdir()
+    (tmp_path / "home" / "controllers.yaml").write_text("x: 1\n")
+    xacro = _workspace(tmp_path, written)
+    result = run("check", "urdf", xacro, "--format", "json", "--select", "SB521",
+                 env={"HOME": str(tmp_path / "home")})
+    [found] = [f for f in findings(result.stdout) if f["code"] == "SB521"]
+    assert result.exit_code == 1 and said in found["message"]
+    assert found["fix"].startswith("write the path itself: /")
+
+
+@pytest.mark.parametrize("cmake", [
+    "install(FILES description/config/controllers.yaml DESTINATION share/${PROJECT_NAME}/config)",
+    "install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/description/config "
+    "DESTINATION share/${PROJECT_NAME})",
+    "foreach(dir description/config)\n  install(DIRECTORY ${dir} DESTINATION share/${PROJECT_NAME})"
+    "\nendforeach()",
+])
+def test_a_file_any_install_rule_puts_there_passes(run, tmp_path, cmake):
+    """From sources the file is elsewhere in the package, under its own name."""
+    xacro = _workspace(tmp_path, "$(find bot_description)/config/controllers.yaml")
+    package = xacro.parent.parent
+    (package / "description").mkdir()
+    (package / "config").rename(package / "description" / "config")
+    (package / "CMakeLists.txt").write_text(f"project(bot_description)\n{cmake}\n")
+    assert _sb521(run, xacro) == (0, [])

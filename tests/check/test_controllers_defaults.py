@@ -82,3 +82,18 @@ def test_a_typo_in_a_bundled_robots_yaml_is_still_found(run, tmp_path):
     assert [f["code"] for f in findings(result.stdout)] == ["SB602"]
     unnamed = run("check", "controllers", typo, "--format", "json", "--isolated")
     assert unnamed.exit_code == 1 and {f["code"] for f in findings(unnamed.stdout)} == {"SB602"}
+
+
+def test_the_file_its_install_rules_put_in_place_is_found(run, tmp_path):
+    """ros2_control_demos' example_9: bringup/config installed as share/PKG/config."""
+    xacro = _package(tmp_path)
+    package = xacro.parent.parent
+    (package / "bringup").mkdir()
+    (package / "config").rename(package / "bringup" / "config")
+    (package / "CMakeLists.txt").write_text(
+        "project(bot_description)\n"
+        "install(DIRECTORY bringup/config urdf DESTINATION share/${PROJECT_NAME})\n")
+    result = run("check", "controllers", "--urdf", xacro, "--format", "json", "--isolated")
+    [report] = json.loads(result.stdout)["files"]
+    assert report["file"].startswith(str(package / "bringup" / "config" / "bot_controllers.yaml"))
+    assert [f["code"] for f in report["findings"]] == ["SB602"]
