@@ -46,8 +46,10 @@ def test_batch_lines_beyond_what_json_numbers_hold_are_bad_lines(tmp_path):
                           "double")
     assert_one_line_error(run_servicebot("fk", "--configs", deep), 2,
                           "deep.jsonl:1: not JSON this reads: nested too deep")
+    big.write_text(big.read_text() + '{"arm_base_to_link1": 0.5}\n')  # and a usable line
     skipped = run_servicebot("fk", "--configs", big, "--on-error", "skip")
     assert skipped.returncode == 0 and "big.jsonl:1" in skipped.stderr
+    assert skipped.stdout.startswith("line,") and "\n2," in skipped.stdout
 
 
 def test_a_control_character_in_a_file_name_leaves_junit_well_formed(tmp_path):
