@@ -109,7 +109,7 @@ def defined_by_siblings(robot: RobotDescription,
     robot's own file is its own. Only for descriptions expanded from xacro.
     """  # noqa: D205
     own_file = os.path.abspath(robot.path)
-    shared = {name: os.path.basename(file).encode() for name, file in written_in.items()
+    shared = {name: os.path.realpath(file) for name, file in written_in.items()
               if os.path.abspath(file) != own_file}
     if not robot.expanded or not shared:
         return {}
@@ -126,9 +126,12 @@ def defined_by_siblings(robot: RobotDescription,
     texts = [text for _, text in (*siblings, *_sources(map(Path, robot.files)))]
     found: dict[str, Definition] = {}
     for path, text in siblings:
+        reads: set[str] | None = None  # the files it includes, read once it matters
         for kind, written, line, _ in _definitions(text):
             for name in _defined(written, wanted, texts):
-                if shared[name] in text:  # it reads the file that writes the block
+                if reads is None:
+                    reads = {os.path.realpath(p) for p in included_files([path])}
+                if shared[name] in reads:  # it reads the very file that writes the block
                     found.setdefault(name, (display_path(path), line, kind,
                                             written.decode("utf-8", "replace"), None))
     return found

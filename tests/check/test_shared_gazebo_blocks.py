@@ -64,3 +64,23 @@ def test_a_block_no_robot_of_the_family_has_stays_an_error(run, tmp_path):
     found = _sb501(run, _family(tmp_path, "forarm_link"))
     assert found["wx250s/forarm_link"]["severity"] == "error"
     assert found["wx250s/forearm_link"]["severity"] == "warning"
+
+
+def test_a_file_of_the_same_name_is_not_the_shared_one(run, tmp_path):
+    """robot_a and robot_b each include their own a/gazebo.urdf.xacro and b/gazebo.urdf.xacro:
+    robot_a's block for lidar_link (only robot_b has one) is a typo of its laser_link."""
+    for name, link in (("a", "laser_link"), ("b", "lidar_link")):
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "gazebo.urdf.xacro").write_text(
+            '<?xml version="1.0"?>\n<robot xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+            '  <gazebo reference="lidar_link"><sensor name="l" type="ray"/></gazebo>\n</robot>\n')
+        (tmp_path / f"robot_{name}.urdf.xacro").write_text(
+            f'<?xml version="1.0"?>\n<robot name="{name}" '
+            'xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+            f'  <xacro:include filename="{name}/gazebo.urdf.xacro"/>\n'
+            '  <link name="base_link"><visual><geometry><box size="0.1 0.1 0.1"/></geometry>'
+            f'</visual></link>\n  <link name="{link}"><visual><geometry><box size="0.1 0.1 0.1"/>'
+            '</geometry></visual></link>\n  <joint name="j" type="fixed"><parent '
+            f'link="base_link"/><child link="{link}"/></joint>\n</robot>\n')
+    found = _sb501(run, tmp_path / "robot_a.urdf.xacro")
+    assert found["lidar_link"]["severity"] == "error"
