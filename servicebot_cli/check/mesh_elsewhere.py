@@ -36,13 +36,35 @@ def package_uri(filename: str, base_dir: Path,
         return None
     text = filename.removeprefix("file://")
     parts = [p for p in re.split(r"[\\/]+", _DRIVE.sub("", text)) if p and p != "."]
+    windows = is_windows_path(filename)  # whose file names ignore case
     for k, part in enumerate(parts[:-1]):  # .../PKG/REL: the package named in the path
-        rest = "/".join(parts[k + 1:])
-        if part in packages and os.path.isfile(packages[part] / rest):
+        rest = _held(packages.get(part), parts[k + 1:], windows) if part in packages else None
+        if rest is not None:
             return f"package://{part}/{rest}"
     for count in range(min(len(parts) - 1, _MOST_PARTS), 1, -1):  # its last parts, longest first
-        tail = "/".join(parts[-count:])
-        for name in sorted(packages):
-            if os.path.isfile(packages[name] / tail):
-                return f"package://{name}/{tail}"
+        holding = {name: rest for name in sorted(packages)
+                   if (rest := _held(packages[name], parts[-count:], windows)) is not None}
+        if len(holding) == 1:  # one package: that one; several: no guess
+            [(name, rest)] = holding.items()
+            return f"package://{name}/{rest}"
+        if holding:
+            return None
     return None
+
+
+def _held(package: Path | None, parts: list[str], any_case: bool) -> str | None:
+    """The path below ``package`` of the file ``parts`` names, as the disk writes it; None."""
+    if package is None:
+        return None
+    if os.path.isfile(package.joinpath(*parts)):
+        return "/".join(parts)
+    if not any_case:
+        return None
+    here, written = package, list[str]()
+    for part in parts:  # each level, matched as Windows matches it: in any case
+        try:
+            entry = next(e for e in os.scandir(here) if e.name.lower() == part.lower())
+        except (OSError, StopIteration):
+            return None
+        here, written = here / entry.name, [*written, entry.name]
+    return "/".join(written) if os.path.isfile(here) else None

@@ -53,3 +53,25 @@ def test_a_file_no_package_holds_keeps_the_plain_fix(run, tmp_path):
                                           "such file")
     code, found = _sb401(run, _workspace(tmp_path / "w", "C:\\cad\\other.stl"))
     assert found["fix"] == "write it as package://PKG/... from the package that holds it"
+
+
+def test_the_package_named_in_a_windows_path_wins_in_any_case(run, tmp_path):
+    """bot_description holds meshes/visual/BASE.STL (Windows ignores case); another package
+    holds a meshes/visual/base.stl of its own: the named package's file is the one meant."""
+    robot = _workspace(tmp_path, "C:\\Users\\me\\bot_description\\meshes\\visual\\base.stl")
+    package = robot.parent.parent
+    (package / "meshes" / "visual" / "base.stl").rename(package / "meshes" / "visual" / "BASE.STL")
+    other = ros2_package(tmp_path / "ws", "alpha_sensors")
+    (other / "meshes" / "visual").mkdir(parents=True)
+    (other / "meshes" / "visual" / "base.stl").write_bytes(tetrahedron_stl(0.1))
+    _, found = _sb401(run, robot)
+    assert found["fix"].startswith("write package://bot_description/meshes/visual/BASE.STL:")
+
+
+def test_a_tail_two_packages_hold_is_no_guess(run, tmp_path):
+    robot = _workspace(tmp_path, "C:\\cad\\meshes\\visual\\base.stl")
+    other = ros2_package(tmp_path / "ws", "alpha_sensors")
+    (other / "meshes" / "visual").mkdir(parents=True)
+    (other / "meshes" / "visual" / "base.stl").write_bytes(tetrahedron_stl(0.1))
+    _, found = _sb401(run, robot)
+    assert found["fix"] == "write it as package://PKG/... from the package that holds it"
