@@ -307,7 +307,9 @@ def _collect(root: yaml.Node | None, depth: int,
             sections = found.setdefault(name, [])
             if text in here:
                 kept_wild, kept = sections[here[text]]
-                sections[here[text]] = (kept_wild, _merged([kept, params]))
+                merged = _merged([kept, params])
+                merged.section_key = getattr(kept, "section_key", key)  # its first writing
+                sections[here[text]] = (kept_wild, merged)
                 continue
             here[text] = len(sections)
             params.section_key = key  # where its name is written: yaml nodes take attributes

@@ -114,12 +114,14 @@ def test_a_declared_controller_without_parameters_beside_others_is_a_warning(run
     assert "refuses to configure without sensor_name and frame_id" in str(found[0]["message"])
 
 
-@pytest.mark.parametrize("prefix", ["", "/**:\n  "])
+@pytest.mark.parametrize("prefix", ["", "/**:\n  ", "twice"])
 def test_a_misnamed_section_is_found_at_its_name(run, tmp_path, prefix):
     """Where the typo is: the section's key, not its first parameter (create3's 'dif:')."""
     text = GOOD.replace("gripper_controller:\n  ros__parameters",
                         "gripper_controler:\n  ros__parameters")
-    if prefix:  # every node under the /** namespace, as irobot_create_control writes it
+    if prefix == "twice":  # written again further down: rcl merges the two, as here
+        text += "gripper_controler:\n  ros__parameters:\n    max_effort: 6.0\n"
+    elif prefix:  # every node under the /** namespace, as irobot_create_control writes it
         text = prefix + text.rstrip("\n").replace("\n", "\n  ") + "\n"
     code, found = _check(run, tmp_path, text)
     [misnamed] = [f for f in found if "configures no controller" in f["message"]]
