@@ -38,9 +38,9 @@ if TYPE_CHECKING:
 _MOST_JOINTS_NAMED = 6  # of one reason, in the note of what is no differential drive
 SMALLEST_RADIUS_M = 1e-4
 """A wheel of a tenth of a millimetre: a typo, or no number [m]."""
-LARGEST_RADIUS_M = 10.0
-"""The largest wheel size taken (a drive plugin's numbers too) [m]: 20 m across, the largest
-mesh SB404 takes in metres; a wheel mesh in millimetres (70 mm read as 70 m) is beyond it."""
+LARGEST_RADIUS_M = 3.0
+"""The largest wheel size taken (a drive plugin's numbers too) [m]: a mining truck's tyre is
+2 m; a wheel mesh in millimetres or centimetres (70 mm read as 70 m, 7 cm as 7 m) is beyond."""
 
 
 @dataclass(frozen=True)
@@ -143,7 +143,8 @@ def drive_geometry(robot: RobotDescription, meshes: MeshPoints | None = None) ->
                 f"{wheel.radius_m:g} m, which no wheel has (from {SMALLEST_RADIUS_M:g} to "
                 f"{LARGEST_RADIUS_M:g} m); draw it at its real size in metres: a cylinder's or "
                 "sphere's radius, or a mesh with the scale that makes its units metres "
-                "(scale=\"0.001 0.001 0.001\" for millimetres)")
+                "(scale=\"0.001 0.001 0.001\" for millimetres, \"0.01 0.01 0.01\" for "
+                "centimetres)")
     left_y = np.mean([w.position_m[1] for w in sides["left"]])
     right_y = np.mean([w.position_m[1] for w in sides["right"]])
     return DriveGeometry(

@@ -19,9 +19,9 @@ _CYLINDER = ('<origin rpy="1.5707963267948966 0 0" xyz="0 0 0"/>\n      <geometr
              '        <cylinder length="0.04" radius="0.07"/>')
 
 
-def _mesh_wheeled(tmp_path, scale_mm: bool = False, control: bool = True):
+def _mesh_wheeled(tmp_path, scale_mm: bool = False, control: bool = True, unit: float = 1.0):
     """The real robot with every wheel shape a cylinder mesh along y (0.07 m, or in mm)."""
-    unit = 1000.0 if scale_mm else 1.0
+    unit = 1000.0 if scale_mm else unit
     wheel = trimesh.creation.cylinder(radius=0.07 * unit, height=0.04 * unit, sections=64)
     wheel.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, [1, 0, 0]))
     wheel.export(tmp_path / "wheel.stl")
@@ -75,3 +75,11 @@ def test_mesh_wheels_nothing_names_are_no_drive(run, tmp_path):
     assert result.exit_code == 2
     assert "not a differential drive" in result.stderr
     assert "<ros2_control> velocity command names the joint" in result.stderr
+
+
+def test_a_wheel_mesh_in_centimetres_is_refused_too(run, tmp_path):
+    robot = _mesh_wheeled(tmp_path, unit=100.0)
+    result = run("simulate", robot, "--headless", "--duration-s", "1")
+    assert result.exit_code == 2
+    assert "rolls on a radius of 7 m, which no wheel has (from 0.0001 to 3 m)" in result.stderr
+    assert '"0.01 0.01 0.01" for centimetres' in result.stderr
