@@ -292,6 +292,26 @@ def _refuse_another_robots(found: Sections, display: str,
         "--urdf ROBOT.urdf.xacro")
 
 
+def _refuse_a_packages_file(yaml_path: Path, display: str) -> None:
+    """Refuse a ROS package's controllers file given with no robot to check it against.
+
+    A package's file configures that package's robot (husky_control's control.yaml: the
+    same wheel joint names as the bundled robot, another wheel radius); judged against the
+    bundled robots, its every number would be wrong.
+
+    Raises:
+        DescriptionError: Saying to give its robot, or a bundled one by name.
+    """
+    from servicebot_cli.description.package_dirs import holding_package
+
+    holder = holding_package(yaml_path.resolve().parent)
+    if holder is not None:
+        raise DescriptionError(
+            f"{display} belongs to package '{holder[0]}': give the robot it configures: servicebot "
+            f"check controllers {display} --urdf ROBOT.urdf.xacro (or --robot sim|real for a "
+            "bundled robot)")
+
+
 def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[FileReport]:
     """A report per URDF the controllers YAML is checked against."""
     from servicebot_cli.check import (
@@ -321,6 +341,7 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
         return [FileReport(display, tuple(place_issues(robot, [found], settings)))]
     if targets.yaml_file and not targets.urdfs:
         _refuse_another_robots(found, display, sources)
+        _refuse_a_packages_file(yaml_path, display)
     spawned = _spawned(targets.spawned, found, display)
     reports = []
     whole_file = [*controller_sections.file_issues(text, display),  # said once, in the first

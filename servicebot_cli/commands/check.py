@@ -158,7 +158,8 @@ def controllers(ctx: click.Context, values: tuple[str, ...], urdfs: tuple[str, .
 
     Without YAML, a --urdf robot's own: the file its Gazebo ros2_control plugin loads
     (<parameters>), else controllers.yaml beside it. A YAML without --urdf is checked
-    against the bundled robots, and refused when it names none of their joints.
+    against the bundled robots, and refused when it names none of their joints or belongs to
+    a ROS package (give its robot, or --robot sim|real).
 
     Joint names in left_wheel_names, right_wheel_names and joints must exist and move;
     wheel_radius and wheel_separation must agree with the URDF's wheels.

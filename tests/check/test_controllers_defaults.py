@@ -97,3 +97,19 @@ def test_the_file_its_install_rules_put_in_place_is_found(run, tmp_path):
     [report] = json.loads(result.stdout)["files"]
     assert report["file"].startswith(str(package / "bringup" / "config" / "bot_controllers.yaml"))
     assert [f["code"] for f in report["findings"]] == ["SB602"]
+
+
+def test_a_packages_yaml_without_its_robot_is_refused(run, tmp_path):
+    """husky_control's control.yaml names the bundled robot's wheel joints, with Husky's own
+    wheel radius: judged against the bundled robot, it was told to write 0.07 m."""
+    package = ros2_package(tmp_path / "ws", "husky_control")
+    controllers = (REPO / "robots" / "controllers.yaml").read_text()
+    assert "wheel_radius: 0.07" in controllers
+    yaml_file = package / "config" / "control.yaml"
+    yaml_file.write_text(controllers.replace("wheel_radius: 0.07", "wheel_radius: 0.1651"))
+    assert_one_line_error(run("check", "controllers", yaml_file), 2,
+                          "belongs to package 'husky_control': give the robot it configures",
+                          "--urdf ROBOT.urdf.xacro (or --robot sim|real for a bundled robot)")
+    bundled = run("check", "controllers", yaml_file, "--robot", "real", "--format", "json",
+                  "--isolated")
+    assert "SB603" in {f["code"] for f in findings(bundled.stdout)}  # asked for: judged
