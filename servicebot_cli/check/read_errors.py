@@ -6,6 +6,7 @@ it as a finding with the file, line and column the error names.
 
 from __future__ import annotations
 
+import os
 import re
 
 from servicebot_cli.check.findings import Issue, Severity
@@ -68,11 +69,23 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
         return Issue("SB015", text, where=(file, line, column))
     text = text.removeprefix("xacro: ")
     undefined = _UNDEFINED_ARG.search(text)
-    declared = _defined_after(file, line, undefined[1], "arg") if undefined else None
+    root = _opens_robot(file, line)
+    declared = _defined_after(file, line - 1 if root else line, undefined[1], "arg") \
+        if undefined else None
+    if undefined is not None and declared is None and os.path.abspath(file) != \
+            os.path.abspath(display):  # an included file reads what its includer declares
+        later = _defined_after(display, 0, undefined[1], "arg")
+        if later is not None:
+            return Issue("SB006", f"{text}; {display}:{later} declares it, after the include "
+                         "that reads it, and xacro knows an argument only from there on",
+                         where=(file, line, column),
+                         severity=Severity.WARNING if walked else Severity.ERROR,
+                         fix=f"move <xacro:arg name=\"{undefined[1]}\"> ({display}:{later}) "
+                         f"above the <xacro:include> of {os.path.basename(file)}")
     if undefined is not None and declared is not None:  # xacro reads arguments in order
         severity = Severity.WARNING if walked else Severity.ERROR
         name = undefined[1]
-        if _opens_robot(file, line):  # the root's attributes come before any of its children
+        if root:  # the root's attributes come before any of its children
             return Issue("SB006", f"{text}; {file}:{declared} declares it inside <robot>, "
                          "whose own attributes xacro expands first: its default serves none "
                          "of them", where=(file, line, column), severity=severity,

@@ -89,3 +89,28 @@ def test_an_argument_declared_below_its_use_is_said_so(tmp_path):
     assert found["line"] == 3 and "late.urdf.xacro:4 declares it, after this line" in \
         found["message"]
     assert found["fix"] == 'move <xacro:arg name="dof"> (line 4) above line 3, or pass dof:=VALUE'
+
+
+def test_an_argument_an_include_reads_before_its_includer_declares_it(tmp_path):
+    (tmp_path / "part.xacro").write_text(
+        '<?xml version="1.0"?>\n<robot xmlns:xacro="http://ros.org/wiki/xacro">\n'
+        '  <link name="$(arg prefix)base_link"/>\n</robot>\n')
+    main = tmp_path / "main.urdf.xacro"
+    main.write_text('<?xml version="1.0"?>\n<robot xmlns:xacro="http://ros.org/wiki/xacro" '
+                    'name="r">\n  <xacro:include filename="part.xacro"/>\n'
+                    '  <xacro:arg name="prefix" default=""/>\n</robot>\n')
+    (found,) = _sb006(main, main)
+    assert found["file"].endswith("part.xacro") and found["line"] == 3
+    assert f"{main}:4 declares it, after the include that reads it" in found["message"]
+    assert found["fix"] == (f'move <xacro:arg name="prefix"> ({main}:4) above the '
+                            "<xacro:include> of part.xacro")
+
+
+def test_an_argument_declared_on_the_robot_tags_own_line(tmp_path):
+    path = tmp_path / "same.urdf.xacro"
+    path.write_text('<?xml version="1.0"?>\n<robot xmlns:xacro="http://ros.org/wiki/xacro" '
+                    'name="bot_$(arg dof)"><xacro:arg name="dof" default="6"/>\n'
+                    '  <link name="base_link"/>\n</robot>\n')
+    (found,) = _sb006(path, path)
+    assert "declares it inside <robot>, whose own attributes xacro expands first" in \
+        found["message"]
