@@ -9,7 +9,7 @@ refused by the command before a request is made.
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -240,7 +240,8 @@ def _spawned(names: tuple[str, ...], found: Sections, display: str) -> frozenset
     return frozenset(names)
 
 
-def _plugin_parameters_file(robot: RobotDescription) -> Path:
+def _plugin_parameters_file(robot: RobotDescription,
+                            xacro_args: Sequence[tuple[str, str]] = ()) -> Path:
     """The controllers YAML of ``robot``: its ros2_control plugin's, else the one beside it.
 
     The file its Gazebo ros2_control plugin loads (``<parameters>``); without one,
@@ -258,7 +259,8 @@ def _plugin_parameters_file(robot: RobotDescription) -> Path:
         return beside
     if len(present) == 1:
         return present[0]
-    usage = f"servicebot check controllers FILE.yaml --urdf {robot.display}"
+    usage = " ".join(["servicebot check controllers FILE.yaml --urdf", robot.display,
+                      *(f"{name}:={value}" for name, value in xacro_args)])
     if present:
         raise DescriptionError(f"{robot.display}'s ros2_control plugin loads "
                                f"{len(present)} parameter files ({', '.join(map(str, present))})"
@@ -328,7 +330,8 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
     if targets.yaml_file:
         yaml_path, display = Path(targets.yaml_file), targets.yaml_file
     elif targets.urdfs:  # the user's robot: the file its Gazebo ros2_control plugin loads
-        yaml_path = _plugin_parameters_file(read_description(sources[0]))
+        yaml_path = _plugin_parameters_file(read_description(sources[0]),
+                                            sources[0].xacro_args)
         display = display_path(yaml_path)
     else:
         yaml_path = bundled_file(CONTROLLERS_YAML)

@@ -50,6 +50,8 @@ def test_a_robot_naming_no_controllers_file_is_asked_for_one(run, tmp_path):
     assert_one_line_error(run("check", "controllers", "--urdf", xacro), 2,
                           "names no controllers file",
                           f"servicebot check controllers FILE.yaml --urdf {xacro}")
+    assert_one_line_error(run("check", "controllers", "--urdf", xacro, "sim_mode:=true"), 2,
+                          f"servicebot check controllers FILE.yaml --urdf {xacro} sim_mode:=true")
 
 
 def test_controllers_yaml_beside_the_robot_is_its_own(run):
