@@ -156,9 +156,11 @@ def _check_field(path: tuple[str | int, ...]) -> None:
                                        f"{where}.NAME (a topic as {where}./scan)")
             known = _known_keys().get(path[:depth])
             if known is not None and part not in known:
-                close = difflib.get_close_matches(part, known, n=1, cutoff=0.6)
+                close = difflib.get_close_matches(part, list(known), n=1, cutoff=0.6)
                 hint = f"did you mean '{close[0]}'?" if close else f"known: {', '.join(known)}"
                 raise ExpectationError(f"'{part}' is not a key of {where}; {hint}")
+            if known is not None and known[part] is str and path[depth + 1:] == ("value",):
+                raise ExpectationError(f"{dotted(path)} is text, not a number")
             node = value
         elif (item := _list_item(node)) is not None:
             if isinstance(part, str):
@@ -202,13 +204,16 @@ def _kinds(annotation: Any) -> tuple[Any, ...]:
     return (annotation,)
 
 
-def _known_keys() -> dict[tuple[str | int, ...], list[str]]:
-    """The keys every run's summary has in a mapping, by its path: ``controller``'s fields."""
+def _known_keys() -> dict[tuple[str | int, ...], dict[str, Any]]:
+    """The keys every run's summary has in a mapping, by its path, with their values' types:
+    ``controller``'s fields.
+    """  # noqa: D205
     import dataclasses
 
     from servicebot_cli.simulate.scenario.definition import Controller
 
-    return {("controller",): [f.name for f in dataclasses.fields(Controller)]}
+    hints = typing.get_type_hints(Controller)
+    return {("controller",): {f.name: hints[f.name] for f in dataclasses.fields(Controller)}}
 
 
 def _mapping_value(annotation: Any) -> Any:

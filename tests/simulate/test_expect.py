@@ -88,6 +88,7 @@ def test_a_topic_count_and_a_controller_value_can_be_expected(run):
     ("collisions.x_m > 0", "an item, collisions[0].x_m"),
     ("collisions[0].x > 0", "'x' is not a field of collisions[0]"),
     ("distance_m.x > 0", "nothing below it"),
+    ("controller.saturation.value == 1", "controller.saturation.value is text"),
 ])
 def test_a_field_that_holds_no_number_is_refused_before_the_run(run, expression, needle):
     assert_one_line_error(run(*SHORT, "--expect", expression), 2, "--expect", needle)
