@@ -60,6 +60,7 @@ def check(found: Sections, display: str, robot: RobotDescription,
     ``spawned``: the controllers checked (those a launch spawns); None: every one.
     """
     checker = _Checker(display, robot, found, meshes)
+    checker.every_controller = spawned is None
     for name, params in found.items():
         kind = checker.types.get(name)
         if spawned is not None and name not in spawned:
@@ -104,6 +105,7 @@ class _Checker:
         self._geometry: DriveGeometry | None | str = None
         self._exported: dict[str, dict[str, list[str]]] | None = None
         self._drivers: dict[str, list[str]] = {}  # plugins that may export more than listed
+        self.every_controller = True  # not only those --spawned names
 
     def where(self, node: yaml.Node) -> tuple[str, int, int]:
         return (self.display, node.start_mark.line + 1, node.start_mark.column + 1)
@@ -182,9 +184,12 @@ class _Checker:
                         "such a joint, and robot_state_publisher has no state of it)"
                         if item.value in self.exported() else "")
                 close = hint[-1].startswith("did you mean")
+                unspawned = (f"; if the launch spawns no '{section}' (a file shared by "
+                             "several robots), check with --spawned NAME[,NAME]"
+                             if self.every_controller else "")
                 yield Issue("SB602", f"{section}.{key}: joint '{item.value}' is not in "
                             f"{self.robot.display}{only}; {hint[-1]}", where=self.where(item),
-                            fix=None if close else "name a joint of the URDF")
+                            fix=None if close else f"name a joint of the URDF{unspawned}")
             elif not joint.movable:
                 yield Issue("SB606", f"{section}.{key}: joint '{item.value}' is {joint.type} "
                             "in the URDF", where=self.where(item))

@@ -58,9 +58,21 @@ def test_a_joint_only_ros2_control_names_is_not_in_the_urdf(tmp_path):
     assert "did you mean 'left_whl_joint'" in found["message"]
 
 
-@pytest.mark.parametrize(("left", "fix"), [("left_whl_joint", "Use the suggested name."),
-                                           ("zzzz", "name a joint of the URDF")])
+@pytest.mark.parametrize(("left", "fix"), [
+    ("left_whl_joint", "Use the suggested name."),
+    ("zzzz", "name a joint of the URDF; if the launch spawns no 'diff_cont' (a file shared by "
+             "several robots), check with --spawned NAME[,NAME]"),
+])
 def test_the_fix_suggests_a_name_only_when_one_is_close(tmp_path, left, fix):
     _, (found,) = _check(tmp_path, "left_wheel_joint", left)
     assert found["fix"] == fix
+
+
+def test_with_spawned_given_the_fix_names_the_joint_only(tmp_path):
+    _check(tmp_path, "left_wheel_joint", "zzzz")
+    result = run_servicebot("check", "controllers", "controllers.yaml", "--urdf", "robot.urdf",
+                            "--spawned", "diff_cont", "--isolated", "--format", "json",
+                            cwd=tmp_path)
+    [found] = [f for f in findings(result.stdout) if f["code"] == "SB602"]
+    assert found["fix"] == "name a joint of the URDF"
 
