@@ -4,13 +4,15 @@ gazebo_ros2_control and gz_ros2_control hand every ``<parameters>`` of their plu
 controller manager as ``--params-file FILE`` (:mod:`~servicebot_cli.description.
 parameter_files`); rcl refuses a file it cannot open ("Couldn't parse params file"), the
 controller manager does not start, and no controller runs: the robot spawns and never moves.
-A relative path (Gazebo reads it from its own working directory) that is not beside the
-description is a warning. A path is taken as the simulator and ``inspect`` take it:
-relative to the description,
-a value still holding a launch substitution ``$(...)`` left alone; a file the package's
-install rules put there is found in its sources (by name, anywhere in the package). rcl opens
-the text as a path: ``file://`` and ``~`` are not read, and are errors. Reads nothing but the
-file system's entries and CMakeLists.txt.
+
+rcl opens the text as a path: ``file://`` and ``~`` are not read, and are errors. A value
+still holding a launch substitution ``$(...)`` is left to the launch file. An absolute path
+(what ``$(find PKG)/...`` expands to) passes where the file is, or where the package's install
+rules put it: its ``install(DIRECTORY)`` source, or a file of its name anywhere in the
+package's sources. A relative path is taken from the description's directory, as the
+simulator and ``inspect`` take it, and is a warning where it is not there (Gazebo reads it
+from its own working directory). Reads nothing but the file system's entries and
+CMakeLists.txt.
 """
 
 from __future__ import annotations
