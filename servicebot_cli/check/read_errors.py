@@ -31,7 +31,8 @@ _ARG_NAME = re.compile(rb"\bname\s*=\s*[\"']([^\"']+)[\"']")
 _EMPTY_DEFAULT = re.compile(rb"\bdefault\s*=\s*(?:\"\"|'')")
 _ARG_USE = re.compile(rb"\$\(arg\s+([^)\s]+)\s*\)")
 _UNDEFINED_ARG = re.compile(r"Undefined substitution argument (\S+)"
-                            r"(?: when evaluating expression '.*')?$", re.DOTALL)
+                            r"(?: when evaluating expression '.*')?(?: \(in macro '.*)?$",
+                            re.DOTALL)
 
 
 def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Issue:

@@ -159,3 +159,20 @@ def test_xacros_own_failures_read_as_reasons(run, tmp_path):
         result = run("expand", robot, env={"NO_SUCH_VARIABLE_HERE": None})
         assert result.exit_code == 2, name
         assert result.stderr.strip().endswith(why), (name, result.stderr)
+
+
+def test_an_argument_a_macro_body_reads_is_a_walk_warning_too(run, tmp_path):
+    """talos_description's arm.urdf.xacro reads $(arg test) inside macro talos_arm; its
+    launch file passes test:=; the walk gave an error there and a warning for the same
+    argument read at the top level."""
+    (tmp_path / "arm.urdf.xacro").write_text(
+        '<?xml version="1.0"?>\n<robot xmlns:xacro="http://wiki.ros.org/xacro" name="arm">\n'
+        '  <xacro:macro name="part">\n    <link name="part_$(arg test)"/>\n'
+        '  </xacro:macro>\n  <link name="base_link"/>\n  <xacro:part/>\n</robot>\n')
+    walked = run("check", "urdf", tmp_path, "--format", "json", "--isolated", env=NO_ROS)
+    [found] = findings(walked.stdout)
+    assert walked.exit_code == 0 and (found["code"], found["severity"]) == ("SB006", "warning")
+    assert "(in macro 'part'" in found["message"] and "not checked here" in found["message"]
+    named = run("check", "urdf", tmp_path / "arm.urdf.xacro", "--format", "json", "--isolated",
+                env=NO_ROS)
+    assert named.exit_code == 1 and findings(named.stdout)[0]["severity"] == "error"
