@@ -262,17 +262,21 @@ def _unknown(child: ET.Element, parent: ET.Element, allowed: tuple[str, ...]) ->
 
 @functools.lru_cache(maxsize=1024)
 def _close(name: str, allowed: tuple[str, ...]) -> tuple[str, ...]:
-    """The allowed name most like ``name``: none or one.
+    """The allowed names most like ``name``, the likeliest first: up to three.
 
     The same unknown names come back in file after file (pybullet's ``<contact>``), and
     difflib takes a third of a millisecond.
     """
-    return tuple(difflib.get_close_matches(name, allowed, n=1, cutoff=0.6))
+    return tuple(difflib.get_close_matches(name, allowed, n=3, cutoff=0.6))
 
 
 def _named(element: ET.Element) -> str:
     name = element.get("name")
     return f" '{name}'" if name else ""
+
+
+_SYMMETRIC_TWINS = {"iyx": "ixy", "izx": "ixz", "izy": "iyz"}
+"""The lower half of an inertia tensor, and the attribute URDF reads each from."""
 
 
 def _attributes(element: ET.Element, allowed: dict[str, int], required: tuple[str, ...],
@@ -281,7 +285,14 @@ def _attributes(element: ET.Element, allowed: dict[str, int], required: tuple[st
         if ":" in key or key.startswith("{") or key in skip:
             continue
         if key not in allowed:
-            close = _close(key, tuple(allowed))
+            twin = _SYMMETRIC_TWINS.get(key) if element.tag == "inertia" else None
+            if twin is not None:  # a full tensor written out: URDF reads its upper half
+                yield Issue("SB011", f"<inertia> has no attribute '{key}': URDF reads the "
+                            f"upper half of the symmetric tensor, and '{twin}' is its value",
+                            element, fix="remove it" if twin in element.attrib
+                            else f"rename it '{twin}'")
+                continue
+            close = tuple(c for c in _close(key, tuple(allowed)) if c not in element.attrib)
             hint = f"; did you mean '{close[0]}'?" if close else ""
             yield Issue("SB011", f"<{element.tag}> has no attribute '{key}'{hint}", element,
                         fix=f"rename it '{close[0]}'" if close else "remove it")
