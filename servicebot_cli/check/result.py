@@ -54,7 +54,15 @@ class CheckResult:
         aside = "".join(f" ({directory} holds only xacro includes, {_plural(count, 'file')}, "
                         "checked through the robot files that include them)"
                         for directory, count in self.includes_only)
+        if self.unexpanded:  # read only as far as xacro failed: nothing in them was checked
+            aside += (f" ({_plural(self.unexpanded, 'file')} not expanded, so not checked: see "
+                      f"{'its finding' if self.unexpanded == 1 else 'their findings'})")
         return f"{files} checked{aside}: {', '.join(parts)}; {verdict}"
+
+    @property
+    def unexpanded(self) -> int:
+        """How many files could not be read as robots (xacro failed): nothing in them checked."""
+        return sum(1 for report in self.reports if not report.expanded)
 
 
 def _plural(n: int, word: str) -> str:

@@ -44,12 +44,16 @@ class FileReport:
         packages: Every package the file uses, by name: where and how it was found, or None
             when it was found nowhere.
         read: Every file reading it read (xacro's includes too), as named in messages.
+        expanded: False when it could not be read as a robot (xacro failed: a package or an
+            argument it needs is not given): its finding says why, and nothing in it was
+            checked.
     """
 
     file: str
     findings: tuple[Finding, ...]
     packages: Mapping[str, PackageLocation | None] = field(default_factory=dict)
     read: tuple[str, ...] = ()
+    expanded: bool = True
 
 
 def check_source(source: RobotSource, settings: Settings, env: CheckEnv,
@@ -78,7 +82,8 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv,
         issue = read_errors.issue_of(exc, source.display, walked=not named)
         said = [xacro_warning(w, source.display) for w in exc.said_before
                 if isinstance(w, LoadWarning)]  # xacro's warnings before it failed
-        return _report(source.display, place_issues(None, [*said, issue], settings))
+        return _report(source.display, place_issues(None, [*said, issue], settings),
+                       expanded=False)
     from servicebot_cli.check import packages
 
     part = _part_of_another(robot, source)
@@ -336,6 +341,6 @@ def _text_of(file: str) -> str | None:
 
 def _report(file: str, findings: list[Finding],
             used: Mapping[str, PackageLocation | None] | None = None,
-            read: tuple[str, ...] = ()) -> FileReport:
+            read: tuple[str, ...] = (), *, expanded: bool = True) -> FileReport:
     ordered = sorted(findings, key=lambda f: (f.code == "SB702", f.file != file, *f.sort_key()))
-    return FileReport(file, tuple(ordered), dict(used or {}), read)
+    return FileReport(file, tuple(ordered), dict(used or {}), read, expanded)

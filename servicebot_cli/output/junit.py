@@ -1,7 +1,9 @@
 """``check`` findings as JUnit XML: one test case per checked file.
 
 A file fails when it has findings at the failing level (errors; warnings too with
---strict); each such finding is one ``<failure>``. Other findings go to ``<system-out>``.
+--strict); each such finding is one ``<failure>``. Other findings go to ``<system-out>``. A
+file xacro could not expand (a walk passes no argument, a package is not there) is
+``<skipped>`` when nothing fails it: nothing in it was checked.
 """
 
 from __future__ import annotations
@@ -16,8 +18,10 @@ from servicebot_cli.check.result import CheckResult
 def junit_text(result: CheckResult) -> str:
     """The JUnit XML report of a run."""
     failing = sum(1 for r in result.reports if any(result.fails(f) for f in r.findings))
+    skipped = [r for r in result.reports if not r.expanded
+               and not any(result.fails(f) for f in r.findings)]
     counts = {"name": "servicebot check", "tests": str(len(result.reports)),
-              "failures": str(failing), "errors": "0", "skipped": "0"}
+              "failures": str(failing), "errors": "0", "skipped": str(len(skipped))}
     suites = ET.Element("testsuites", counts)
     suite = ET.SubElement(suites, "testsuite", counts)
     for report in result.reports:
@@ -35,6 +39,9 @@ def junit_text(result: CheckResult) -> str:
                 failure.text = line
             else:
                 other.append(line)
+        if report in skipped:  # xacro failed as a walk passes no argument or package
+            reason = report.findings[0].message if report.findings else "not expanded"
+            ET.SubElement(case, "skipped", message=f"not expanded: {reason}")
         if other:
             ET.SubElement(case, "system-out").text = "\n".join(other)
     ET.indent(suites)
