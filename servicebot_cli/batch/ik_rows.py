@@ -20,7 +20,7 @@ for a prismatic joint); in radians the columns are the bare joint names.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Iterable, Iterator, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 
 import numpy as np
 import numpy.typing as npt
@@ -28,7 +28,7 @@ import numpy.typing as npt
 from servicebot_cli.batch.reading import Row
 from servicebot_cli.batch.stream import RowKind
 from servicebot_cli.common.errors import ServicebotError
-from servicebot_cli.kinematics.ik_outcome import IkOutcome
+from servicebot_cli.kinematics.ik_outcome import FLAT_TAIL, IkOutcome, flat_values
 from servicebot_cli.kinematics.ik_session import IkSession
 from servicebot_cli.kinematics.inverse import IkTarget
 from servicebot_cli.kinematics.joint_columns import joint_column_names
@@ -36,8 +36,6 @@ from servicebot_cli.kinematics.json_types import JsonObject
 from servicebot_cli.kinematics.targets import TARGET_KEYS, BadTarget, row_target
 from servicebot_cli.kinematics.user_joints import angular
 
-_TAIL = ("position_error_m", "orientation_error_rad", "iterations", "attempts", "solutions",
-         "solve_time_s", "hint")
 TARGET_COLUMNS = TARGET_KEYS | {"line"}
 CHUNK = 1024
 """Targets read, then solved, at a time."""
@@ -66,7 +64,7 @@ class IkBatch:
         """CSV header of the results."""
         space = self.session.space
         base = ["base_x_m", "base_y_m", f"base_yaw_{self._unit}"] if space.base_nq else []
-        return ["line", "success", *self._joint_columns.values(), *base, *_TAIL]
+        return ["line", "success", *self._joint_columns.values(), *base, *FLAT_TAIL]
 
     def check_header(self, columns: Sequence[str]) -> None:
         """Every CSV column must be a target column (other frames' columns are skipped).
@@ -149,11 +147,4 @@ class IkBatch:
             yield self.row(row.line, outcome, kind)
 
     def _flat(self, line: int, values: JsonObject) -> JsonObject:
-        flat: JsonObject = {"line": line, "success": values["success"]}
-        joints, base = values["joints"], values["base"]
-        if isinstance(joints, Mapping):
-            flat.update({self._joint_columns[name]: v for name, v in joints.items()})
-        if isinstance(base, Mapping):
-            flat.update({f"base_{k}": v for k, v in base.items()})
-        flat.update({k: values[k] for k in _TAIL})
-        return flat
+        return {"line": line, **flat_values(values, self._joint_columns)}

@@ -8,6 +8,7 @@ Pure.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -46,6 +47,25 @@ def base_pose(space: JointSpace, q: FloatArray) -> tuple[float, float, float] | 
     if not space.base_nq:
         return None
     return float(q[0]), float(q[1]), math.atan2(q[3], q[2])
+
+
+FLAT_TAIL = ("position_error_m", "orientation_error_rad", "iterations", "attempts", "solutions",
+             "solve_time_s", "hint")
+"""The columns of a flat ik row after its joints and base."""
+
+
+def flat_values(values: JsonObject, joint_columns: Mapping[str, str]) -> JsonObject:
+    """:func:`outcome_values` as one CSV row: success, each joint under its column
+    (``joint_columns``, :func:`~.joint_columns.joint_column_names`), the base, the tail.
+    """  # noqa: D205
+    flat: JsonObject = {"success": values["success"]}
+    joints, base = values["joints"], values["base"]
+    if isinstance(joints, Mapping):
+        flat.update({joint_columns[name]: value for name, value in joints.items()})
+    if isinstance(base, Mapping):
+        flat.update({f"base_{key}": value for key, value in base.items()})
+    flat.update({key: values[key] for key in FLAT_TAIL})
+    return flat
 
 
 def outcome_values(space: JointSpace, outcome: IkOutcome, deg: bool) -> JsonObject:

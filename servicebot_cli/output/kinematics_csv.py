@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import csv
 import io
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from servicebot_cli.output.poses import rpy_of
@@ -26,9 +26,6 @@ if TYPE_CHECKING:
     from servicebot_cli.kinematics.fk import FkResult
     from servicebot_cli.kinematics.ik import IkAnswer
     from servicebot_cli.kinematics.json_types import JsonValue
-
-_IK_TAIL = ("position_error_m", "orientation_error_rad", "iterations", "attempts",
-            "solutions", "solve_time_s", "hint")
 
 
 def csv_text(header: Sequence[str], rows: Sequence[Sequence[JsonValue]]) -> str:
@@ -53,18 +50,11 @@ def fk_csv(result: FkResult) -> str:
 
 def ik_csv(answer: IkAnswer) -> str:
     """An ``ik`` answer: one row, the joints (and base) in the user's units."""
-    from servicebot_cli.kinematics.ik_outcome import outcome_values
+    from servicebot_cli.kinematics.ik_outcome import flat_values, outcome_values
     from servicebot_cli.kinematics.joint_columns import joint_column_names
 
     values = outcome_values(answer.space, answer.outcome, answer.deg)
-    row: dict[str, JsonValue] = {"success": values["success"]}
-    joints, base = values["joints"], values["base"]
-    if isinstance(joints, Mapping):
-        columns = joint_column_names(answer.space, answer.deg)
-        row.update({columns[name]: value for name, value in joints.items()})
-    if isinstance(base, Mapping):
-        row.update({f"base_{k}": v for k, v in base.items()})
-    row.update({k: values[k] for k in _IK_TAIL})
+    row = flat_values(values, joint_column_names(answer.space, answer.deg))
     return csv_text(list(row), [list(row.values())])
 
 
