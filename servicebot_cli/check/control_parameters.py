@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING
 
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.description.install_layout import installed_source
-from servicebot_cli.description.parameter_files import is_ros2_control_plugin
+from servicebot_cli.description.parameter_files import is_ros2_control_plugin, written_path
 
 if TYPE_CHECKING:
     from servicebot_cli.description.robot import RobotDescription
@@ -37,10 +37,10 @@ def check(robot: RobotDescription) -> Iterator[Issue]:
         if not is_ros2_control_plugin(plugin) or plugin.element is None:
             continue
         for element in plugin.element.iter("parameters"):
-            text = (element.text or "").strip()
-            if not text or "$(" in text:
+            named = written_path(element.text)
+            if named is None:
                 continue
-            named = Path(text.removeprefix("file://")).expanduser()
+            text = (element.text or "").strip()
             path = Path(os.path.normpath(named if named.is_absolute()
                                          else robot.path.parent / named))
             if text.startswith(("file://", "~")):  # rcl opens the text as written

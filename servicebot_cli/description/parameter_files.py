@@ -43,13 +43,22 @@ def parameter_files(plugins: Iterable[Plugin], directory: Path) -> tuple[Path, .
     for plugin in plugins:
         if not is_ros2_control_plugin(plugin):
             continue
-        named = [text.strip().removeprefix("file://") for text in
-                 params_all(plugin.params, "parameters") if text and text.strip()]
-        paths = tuple(Path(text).expanduser() for text in named if "$(" not in text)
+        paths = [path for text in params_all(plugin.params, "parameters")
+                 if (path := written_path(text)) is not None]
         if paths:  # a file the package's install(DIRECTORY) puts there: its source
             return tuple(Path(installed_source(str(p if p.is_absolute() else directory / p)))
                          for p in paths)
     return ()
+
+
+def written_path(text: str | None) -> Path | None:
+    """The path a ``<parameters>`` text names: ``file://`` dropped, ``~`` expanded; None for
+    an empty one, or one still holding a ``$(...)`` substitution.
+    """  # noqa: D205
+    text = (text or "").strip()
+    if not text or "$(" in text:
+        return None
+    return Path(text.removeprefix("file://")).expanduser()
 
 
 def merged_parameters(documents: Sequence[Any]) -> dict[str, dict[str, Any]]:
