@@ -70,32 +70,10 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
         return Issue("SB015", text, where=(file, line, column))
     text = text.removeprefix("xacro: ")
     undefined = _UNDEFINED_ARG.search(text)
-    root = _opens_robot(file, line)
-    declared = _defined_after(file, line - 1 if root else line, undefined[1], "arg") \
-        if undefined else None
-    if undefined is not None and declared is None and os.path.abspath(file) != \
-            os.path.abspath(display):  # an included file reads what its includer declares
-        later = _defined_after(display, 0, undefined[1], "arg")
-        if later is not None:
-            return Issue("SB006", f"{text}; {display}:{later} declares it, after the include "
-                         "that reads it, and xacro knows an argument only from there on",
-                         where=(file, line, column),
-                         severity=Severity.WARNING if walked else Severity.ERROR,
-                         fix=f"move <xacro:arg name=\"{undefined[1]}\"> ({display}:{later}) "
-                         f"above the <xacro:include> of {os.path.basename(file)}")
-    if undefined is not None and declared is not None:  # xacro reads arguments in order
-        severity = Severity.WARNING if walked else Severity.ERROR
-        name = undefined[1]
-        if root:  # the root's attributes come before any of its children
-            return Issue("SB006", f"{text}; {file}:{declared} declares it inside <robot>, "
-                         "whose own attributes xacro expands first: its default serves none "
-                         "of them", where=(file, line, column), severity=severity,
-                         fix=f"pass {name}:=VALUE (as a launch file does), or write the "
-                         f"<robot> name without $(arg {name})")
-        return Issue("SB006", f"{text}; {file}:{declared} declares it, after this line, and "
-                     "xacro knows an argument only from there on", where=(file, line, column),
-                     severity=severity, fix=f"move <xacro:arg name=\"{name}\"> (line "
-                     f"{declared}) above line {line}, or pass {name}:=VALUE")
+    early = _read_before_declared(undefined[1], text, (file, line, column), display, walked) \
+        if undefined is not None else None
+    if early is not None:
+        return early
     if walked and undefined is not None:
         name = undefined[1]
         return Issue("SB006", f"{text}: the file reads {name} with no default, as a launch file "
@@ -111,6 +89,37 @@ def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Iss
                      f"(line {later}) above line {line}: xacro knows a property only from "
                      "where it is defined on")
     return Issue("SB006", text, where=(file, line, column), fix=_xacro_fix(text, undefined))
+
+
+def _read_before_declared(name: str, text: str, where: tuple[str, int, int], display: str,
+                          walked: bool) -> Issue | None:
+    """SB006 for argument ``name`` read where xacro does not know it yet; None if not so.
+
+    Declared below the line that reads it, inside the <robot> whose own attribute reads it,
+    or in the named file after the include that reads it.
+    """
+    file, line, _ = where
+    severity = Severity.WARNING if walked else Severity.ERROR
+    root = _opens_robot(file, line)
+    declared = _defined_after(file, line - 1 if root else line, name, "arg")
+    if declared is None:  # an included file reads what its includer declares
+        later = _defined_after(display, 0, name, "arg") \
+            if os.path.abspath(file) != os.path.abspath(display) else None
+        if later is None:
+            return None
+        return Issue("SB006", f"{text}; {display}:{later} declares it, after the include that "
+                     "reads it, and xacro knows an argument only from there on", where=where,
+                     severity=severity, fix=f"move <xacro:arg name=\"{name}\"> ({display}:"
+                     f"{later}) above the <xacro:include> of {os.path.basename(file)}")
+    if root:  # the root's attributes come before any of its children
+        return Issue("SB006", f"{text}; {file}:{declared} declares it inside <robot>, whose "
+                     "own attributes xacro expands first: its default serves none of them",
+                     where=where, severity=severity, fix=f"pass {name}:=VALUE (as a launch "
+                     f"file does), or write the <robot> name without $(arg {name})")
+    return Issue("SB006", f"{text}; {file}:{declared} declares it, after this line, and xacro "
+                 "knows an argument only from there on", where=where, severity=severity,
+                 fix=f"move <xacro:arg name=\"{name}\"> (line {declared}) above line {line}, "
+                 f"or pass {name}:=VALUE")
 
 
 def _opens_robot(file: str, line: int) -> bool:
