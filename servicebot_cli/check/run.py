@@ -272,7 +272,7 @@ def _plugin_parameters_file(robot: RobotDescription,
 
 
 def _refuse_another_robots(found: Sections, display: str,
-                           sources: tuple[RobotSource, ...]) -> None:
+                           robots: Sequence[RobotDescription]) -> None:
     """Refuse a file naming joints, none of which the bundled robots have: another robot's.
 
     Checked against the bundled robots (no ``--urdf``), its every joint would be an error.
@@ -285,7 +285,7 @@ def _refuse_another_robots(found: Sections, display: str,
     named = named_joints(found)
     if not named:
         return
-    joints = {joint.name for source in sources for joint in read_description(source).joints}
+    joints = {joint.name for robot in robots for joint in robot.joints}
     if any(name in joints for name in named):
         return
     raise DescriptionError(
@@ -327,11 +327,18 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
     from servicebot_cli.kinematics.mesh_wheels import file_points
 
     sources = targets.urdfs or tuple(RobotSource.bundled(name) for name in BUNDLED_ROBOTS)
+    read: dict[int, RobotDescription] = {}
+
+    def robot_of(index: int) -> RobotDescription:
+        """Source ``index``'s description, read once."""
+        if index not in read:
+            read[index] = read_description(sources[index])
+        return read[index]
+
     if targets.yaml_file:
         yaml_path, display = Path(targets.yaml_file), targets.yaml_file
     elif targets.urdfs:  # the user's robot: the file its Gazebo ros2_control plugin loads
-        yaml_path = _plugin_parameters_file(read_description(sources[0]),
-                                            sources[0].xacro_args)
+        yaml_path = _plugin_parameters_file(robot_of(0), sources[0].xacro_args)
         display = display_path(yaml_path)
     else:
         yaml_path = bundled_file(CONTROLLERS_YAML)
@@ -340,18 +347,17 @@ def _check_controllers(targets: ControllerTargets, settings: Settings) -> list[F
                            error=DescriptionError, max_bytes=MAX_PARAMETERS_BYTES)
     found = controller_sections.sections(text, display)
     if isinstance(found, Issue):  # the YAML itself, the same against every robot: said once
-        robot = read_description(sources[0])
-        return [FileReport(display, tuple(place_issues(robot, [found], settings)))]
+        return [FileReport(display, tuple(place_issues(robot_of(0), [found], settings)))]
     if targets.yaml_file and not targets.urdfs:
-        _refuse_another_robots(found, display, sources)
+        _refuse_another_robots(found, display, [robot_of(i) for i in range(len(sources))])
         _refuse_a_packages_file(yaml_path, display)
     spawned = _spawned(targets.spawned, found, display)
     reports = []
     whole_file = [*controller_sections.file_issues(text, display),  # said once, in the first
                   *controller_params.parameter_issues(found, display),
                   *controller_manager_params.manager_issues(found, display)]
-    for source in sources:
-        robot = read_description(source)
+    for index, source in enumerate(sources):
+        robot = robot_of(index)
         issues = [*whole_file, *controllers.check(
             found, display, robot, file_points(source.resolver(), robot.path.parent), spawned)]
         whole_file = []
