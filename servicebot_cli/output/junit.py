@@ -17,14 +17,15 @@ from servicebot_cli.check.result import CheckResult
 
 def junit_text(result: CheckResult) -> str:
     """The JUnit XML report of a run."""
-    failing = sum(1 for r in result.reports if any(result.fails(f) for f in r.findings))
-    skipped = [r for r in result.reports if not r.expanded
-               and not any(result.fails(f) for f in r.findings)]
+    failing = [any(result.fails(f) for f in r.findings) for r in result.reports]
+    # a file xacro could not expand, which nothing fails: nothing in it was checked
+    skipped = [not r.expanded and not fails for r, fails in zip(result.reports, failing,
+                                                                  strict=True)]
     counts = {"name": "servicebot check", "tests": str(len(result.reports)),
-              "failures": str(failing), "errors": "0", "skipped": str(len(skipped))}
+              "failures": str(sum(failing)), "errors": "0", "skipped": str(sum(skipped))}
     suites = ET.Element("testsuites", counts)
     suite = ET.SubElement(suites, "testsuite", counts)
-    for report in result.reports:
+    for report, skip in zip(result.reports, skipped, strict=True):
         case = ET.SubElement(suite, "testcase", classname="servicebot.check", name=report.file,
                              file=report.file)
         other = []
@@ -39,7 +40,7 @@ def junit_text(result: CheckResult) -> str:
                 failure.text = line
             else:
                 other.append(line)
-        if report in skipped:  # xacro failed as a walk passes no argument or package
+        if skip:
             reason = report.findings[0].message if report.findings else "not expanded"
             ET.SubElement(case, "skipped", message=f"not expanded: {reason}")
         if other:
