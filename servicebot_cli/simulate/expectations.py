@@ -17,7 +17,7 @@ import operator
 import re
 import types
 import typing
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -146,9 +146,8 @@ def _check_field(path: tuple[str | int, ...]) -> None:
                 raise ExpectationError(f"{where} is no list: name one of its fields, "
                                        f"{', '.join(hints)}")
             if part not in hints:
-                close = difflib.get_close_matches(part, list(hints), n=1, cutoff=0.6)
-                hint = f"did you mean '{close[0]}'?" if close else f"known: {', '.join(hints)}"
-                raise ExpectationError(f"'{part}' is not a field of {where}; {hint}")
+                raise ExpectationError(f"'{part}' is not a field of {where}; "
+                                       f"{_closest(part, hints)}")
             node = hints[part]
         elif value is not None:
             if isinstance(part, int):
@@ -156,9 +155,8 @@ def _check_field(path: tuple[str | int, ...]) -> None:
                                        f"{where}.NAME (a topic as {where}./scan)")
             known = _known_keys().get(path[:depth])
             if known is not None and part not in known:
-                close = difflib.get_close_matches(part, list(known), n=1, cutoff=0.6)
-                hint = f"did you mean '{close[0]}'?" if close else f"known: {', '.join(known)}"
-                raise ExpectationError(f"'{part}' is not a key of {where}; {hint}")
+                raise ExpectationError(f"'{part}' is not a key of {where}; "
+                                       f"{_closest(part, known)}")
             if known is not None and known[part] is str and path[depth + 1:] == ("value",):
                 raise ExpectationError(f"{dotted(path)} is text, not a number")
             node = value
@@ -189,11 +187,25 @@ def _refuse_no_number(field: str, annotation: Any) -> None:
         raise ExpectationError(f"{field} is text, not a number")
 
 
+def _closest(name: str, names: Iterable[str]) -> str:
+    """``did you mean 'X'?`` for the name of ``names`` closest to ``name``, else them all."""
+    known = list(names)
+    close = difflib.get_close_matches(name, known, n=1, cutoff=0.6)
+    return f"did you mean '{close[0]}'?" if close else f"known: {', '.join(known)}"
+
+
 def _list_item(annotation: Any) -> Any:
     """The item type of a ``list[T]`` annotation (or of ``... | None``); None if none."""
+    return _type_argument(annotation, list, 0)
+
+
+def _type_argument(annotation: Any, origin: type, index: int) -> Any:
+    """Argument ``index`` of ``annotation`` (or of a member of its union) whose origin is
+    ``origin``: ``list[T]``'s T, ``dict[K, V]``'s V; None if it is none of those.
+    """  # noqa: D205
     for kind in _kinds(annotation):
-        if typing.get_origin(kind) is list:
-            return typing.get_args(kind)[0]
+        if typing.get_origin(kind) is origin:
+            return typing.get_args(kind)[index]
     return None
 
 
@@ -218,10 +230,7 @@ def _known_keys() -> dict[tuple[str | int, ...], dict[str, Any]]:
 
 def _mapping_value(annotation: Any) -> Any:
     """The value type of a ``dict[str, V]`` annotation (or of ``... | None``); None if none."""
-    for kind in _kinds(annotation):
-        if typing.get_origin(kind) is dict:
-            return typing.get_args(kind)[1]
-    return None
+    return _type_argument(annotation, dict, 1)
 
 
 def _typed_dict_hints(annotation: Any) -> dict[str, Any] | None:
