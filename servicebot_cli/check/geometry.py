@@ -97,6 +97,26 @@ def _sizes(element: ET.Element, where: str, visual: bool = False) -> Iterator[Is
                                                     else ""), element)
 
 
+def _missing_fix(robot: RobotDescription, shape: Shape, exc: MeshNotFound,
+                 env: CheckEnv) -> str:
+    """What to write for a mesh file that is not where its reference leads."""
+    filename = shape.geometry.filename or ""
+    if "$(" in filename:  # xacro's, in a file xacro does not expand
+        return ("name the file .urdf.xacro, so that xacro expands it, or write the path as "
+                "package://PKG/...")
+    twin = case_twin(exc.resolved.path) if exc.resolved.path is not None else None
+    if twin:
+        return f"write '{twin}' as the file is named, or rename the file"
+    elsewhere = None if exc.resolved.package is not None else mesh_elsewhere.package_uri(
+        filename, env.directory_of(robot, shape), env.resolver.explicit)
+    if elsewhere:
+        return (f"write {elsewhere}: a package of this workspace holds it, and ROS finds it on "
+                "every machine")
+    if mesh_elsewhere.is_windows_path(filename):
+        return "write it as package://PKG/... from the package that holds it"
+    return "fix the path: the package or directory holds no such file"
+
+
 def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str,
           env: CheckEnv, tally: FileTally) -> Iterator[Issue]:
     try:
@@ -115,23 +135,10 @@ def _mesh(robot: RobotDescription, shape: Shape, element: ET.Element, where: str
             tally.add_missing(exc.resolved, element, where, shape.geometry.filename or "")
             return
         filename = shape.geometry.filename or ""
-        unexpanded = "$(" in filename
-        twin = case_twin(exc.resolved.path)
         windows = mesh_elsewhere.is_windows_path(filename)
-        elsewhere = None if unexpanded or twin or exc.resolved.package is not None else \
-            mesh_elsewhere.package_uri(filename, env.directory_of(robot, shape),
-                                       env.resolver.explicit)
         said = (f"{where}: mesh '{filename}' is a Windows path, which names no file elsewhere"
                 if windows else f"{where}: {exc}")
-        missing = Issue("SB401", said, element,
-                        fix="name the file .urdf.xacro, so that xacro expands it, or write the "
-                            "path as package://PKG/..." if unexpanded else
-                            f"write '{twin}' as the file is named, or rename the file" if twin
-                            else f"write {elsewhere}: a package of this workspace holds it, and "
-                            "ROS finds it on every machine" if elsewhere
-                            else "write it as package://PKG/... from the package that holds it"
-                            if windows
-                            else "fix the path: the package or directory holds no such file")
+        missing = Issue("SB401", said, element, fix=_missing_fix(robot, shape, exc, env))
         if not tally.guessed_wrong(exc.resolved, element, missing):
             tally.add_found(exc.resolved, element)
             yield missing
