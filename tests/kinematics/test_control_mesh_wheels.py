@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 
 import numpy as np
+import pytest
 import trimesh
 
 from tests.conftest import REPO
@@ -19,9 +20,9 @@ _CYLINDER = ('<origin rpy="1.5707963267948966 0 0" xyz="0 0 0"/>\n      <geometr
              '        <cylinder length="0.04" radius="0.07"/>')
 
 
-def _mesh_wheeled(tmp_path, scale_mm: bool = False, control: bool = True, unit: float = 1.0):
-    """The real robot with every wheel shape a cylinder mesh along y (0.07 m, or in mm)."""
-    unit = 1000.0 if scale_mm else unit
+def _mesh_wheeled(tmp_path, control: bool = True, unit: float = 1.0):
+    """The real robot with every wheel shape a cylinder mesh along y: 0.07 m, in ``unit``s
+    per metre (1000: millimetres) and no scale."""
     wheel = trimesh.creation.cylinder(radius=0.07 * unit, height=0.04 * unit, sections=64)
     wheel.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, [1, 0, 0]))
     wheel.export(tmp_path / "wheel.stl")
@@ -61,12 +62,18 @@ def test_drive_plans_the_same_wheel_speeds(run, tmp_path):
     assert "SET_WHEELS" in meshes.stdout and meshes.stdout == cylinders.stdout
 
 
-def test_a_wheel_mesh_in_millimetres_is_refused_with_the_scale_to_write(run, tmp_path):
-    robot = _mesh_wheeled(tmp_path, scale_mm=True)
+@pytest.mark.parametrize(("unit", "said", "scale"), [
+    (1000.0, "rolls on a radius of 70 m, which no wheel has",
+     'scale="0.001 0.001 0.001" for millimetres'),
+    (100.0, "rolls on a radius of 7 m, which no wheel has (from 0.0001 to 3 m)",
+     '"0.01 0.01 0.01" for centimetres'),
+])
+def test_a_wheel_mesh_in_millimetres_or_centimetres_is_refused_with_the_scale_to_write(
+        run, tmp_path, unit, said, scale):
+    robot = _mesh_wheeled(tmp_path, unit=unit)
     result = run("simulate", robot, "--headless", "--duration-s", "1")
     assert result.exit_code == 2
-    assert "rolls on a radius of 70 m, which no wheel has" in result.stderr
-    assert 'scale="0.001 0.001 0.001" for millimetres' in result.stderr
+    assert said in result.stderr and scale in result.stderr
 
 
 def test_mesh_wheels_nothing_names_are_no_drive(run, tmp_path):
@@ -75,11 +82,3 @@ def test_mesh_wheels_nothing_names_are_no_drive(run, tmp_path):
     assert result.exit_code == 2
     assert "not a differential drive" in result.stderr
     assert "<ros2_control> velocity command names the joint" in result.stderr
-
-
-def test_a_wheel_mesh_in_centimetres_is_refused_too(run, tmp_path):
-    robot = _mesh_wheeled(tmp_path, unit=100.0)
-    result = run("simulate", robot, "--headless", "--duration-s", "1")
-    assert result.exit_code == 2
-    assert "rolls on a radius of 7 m, which no wheel has (from 0.0001 to 3 m)" in result.stderr
-    assert '"0.01 0.01 0.01" for centimetres' in result.stderr
