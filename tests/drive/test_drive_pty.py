@@ -6,6 +6,7 @@ import csv
 import json
 import os
 import signal
+import time
 
 import pytest
 
@@ -138,6 +139,24 @@ def test_reconnect_keeps_the_motors_at_zero_until_the_link_is_back(emulator, tmp
     state = state_when(second, lambda s: s["counters"]["stops"] >= 2, "the final stop")
     assert state["counters"]["first_command"] == "STOP"  # zero first, before any motion
     assert not state["moving"]
+
+
+def test_the_time_the_link_was_down_is_no_time_a_wheel_was_commanded(emulator, tmp_path):
+    """Encoders that had not counted yet, a reconnect after more than the stall window, and
+    a new board counting from zero again: no 'wheels stalled', as the motors were at zero."""
+    link = tmp_path / "ttyROBOT"
+    first = emulator("--link", link, "--stall-after-s", "0.001")  # answers, never counts
+    drive = servicebot("drive", "--port", link, "--reconnect", "--linear", "0.02",
+                       "--duration-s", "6", "--format", "json")
+    state_when(first, lambda s: s["counters"]["frames"] >= 3, "motion commands")
+    first.proc.kill()
+    first.proc.communicate()
+    time.sleep(1.2)  # longer than stall.WINDOW_S
+    second = emulator("--link", link)
+    code, stdout, stderr = finish(drive)
+    assert code == 0, stderr
+    assert json.loads(stdout)["reconnects"] == 1 and "stalled" not in stderr
+    assert any(w["position_rad"] > 0 for w in second.state()["wheels"])
 
 
 def test_the_arduino_protocol_end_to_end(emulator, tmp_path):

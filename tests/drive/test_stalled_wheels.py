@@ -51,3 +51,23 @@ def test_wheels_that_turn_are_never_stalled(emulator):
         "--format", "json"))
     assert code == 0, stderr
     assert json.loads(stdout)["stop_confirmed"]
+
+
+def test_a_gap_in_the_readings_starts_every_streak_again():
+    """The stall window counts commanded time with readings, never across a reconnect."""
+    from servicebot_cli.drive.session.stall import WINDOW_S, StallWatch
+
+    def watched(restart: bool) -> StallWatch:
+        watch = StallWatch(["left", "right"])
+        watch.observe(0.0, [0.0, 0.0], [0.4, 0.4])
+        watch.observe(0.5, [0.0, 0.0], [0.4, 0.4])  # not counted yet
+        if restart:
+            watch.restart()  # the link back, after WINDOW_S without readings
+        watch.observe(0.5 + 2 * WINDOW_S, [0.0, 0.0], [0.4, 0.4])
+        return watch
+
+    assert watched(restart=False).stalled is not None
+    watch = watched(restart=True)
+    assert watch.stalled is None
+    watch.observe(0.6 + 3 * WINDOW_S, [0.0, 0.0], [0.4, 0.4])  # a whole window since: stalled
+    assert watch.stalled is not None

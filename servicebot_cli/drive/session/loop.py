@@ -149,6 +149,7 @@ class DriveLoop:
             now = self.clock()
             self.inbox.last_rx_s = self._next_tick_s = now  # the pause was ours, not the link's
             self._last_tick_s = 0.0
+            self.stall.restart()
             self.commander.link_lost(now)  # ramp from zero
 
     def _tick(self, setpoint: Setpoint, now: float) -> None:
@@ -182,6 +183,7 @@ class DriveLoop:
         reconnect(self, self.policy, lost, boot_s=self.boot_s, clock=self.clock)
         self.reconnecting = False
         self.reconnects += 1
+        self.stall.restart()
         hello = self.inbox.hello
         self.log(f"link back on {self.where}: {hello.description if hello else ''}")
         self._next_tick_s, self._last_tick_s = self.clock(), 0.0

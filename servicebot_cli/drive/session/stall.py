@@ -81,6 +81,17 @@ class StallWatch:
                                 "the motor power off or the wheel blocked (ROSArduinoBridge's PID "
                                 "then drives the motor towards full power)")
 
+    def restart(self) -> None:
+        """A gap in the readings (a reconnect, a suspension): no streak spans it.
+
+        The motors were at zero meanwhile (stopped, or by the firmware's watchdog), so that
+        time is no time commanded; and a board that reset on reconnect counts from zero again,
+        so its angles are no continuation of the old ones. What moved stays moved.
+        """
+        self._streaks = [None] * len(self.names)
+        self._first = [None] * len(self.names)
+        self._last_s = None
+
     def never_moved(self) -> bool:
         """Whether no wheel's measured angle ever changed."""
         return not any(self.moved)
