@@ -17,6 +17,7 @@ from servicebot_cli.check.findings import Finding, Severity
 from servicebot_cli.check.result import CheckResult
 from servicebot_cli.common.files import atomic_output
 from servicebot_cli.common.jsonable import dumps_plain
+from servicebot_cli.output.one_line import one_line
 
 if TYPE_CHECKING:
     from servicebot_cli.description.packages import PackageLocation
@@ -31,11 +32,11 @@ def package_lines(result: CheckResult) -> Iterator[str]:
     for report in result.reports:
         for name, location in sorted(report.packages.items()):
             if location is None:
-                yield f"{report.file}: package {name}: not found"
+                yield one_line(f"{report.file}: package {name}: not found")
                 continue
             caveat = "" if location.ros_finds_it else "; ROS would not find it this way"
-            yield (f"{report.file}: package {name} at {location.path}, "
-                   f"found as {location.how}{caveat}")
+            yield one_line(f"{report.file}: package {name} at {location.path}, "
+                           f"found as {location.how}{caveat}")
 
 
 def text_lines(result: CheckResult, colour: bool = False,
@@ -55,10 +56,10 @@ def text_lines(result: CheckResult, colour: bool = False,
             if colour:
                 level = click.style(level, fg=_COLOURS[finding.severity], bold=True)
                 code = click.style(code, bold=True)
-            yield f"{finding.location()}: {level} {code} {finding.message}"
-            yield from _context_lines(finding, report.file if several else None)
+            yield f"{one_line(finding.location())}: {level} {code} {one_line(finding.message)}"
+            yield from map(one_line, _context_lines(finding, report.file if several else None))
             if finding.fix:
-                yield f"    fix: {finding.fix}"
+                yield f"    fix: {one_line(finding.fix)}"
     if packages:
         yield from package_lines(result)
     summary = result.summary()

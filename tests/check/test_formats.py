@@ -105,3 +105,19 @@ def test_sarif_uris_are_percent_encoded(run, tmp_path, monkeypatch):
     uris = {r["locations"][0]["physicalLocation"]["artifactLocation"]["uri"]
             for r in log["runs"][0]["results"]}
     assert uris == {"KR5%20sixx%20%232.urdf"} and unquote(uris.pop()) == odd.name
+
+
+def test_a_line_break_in_a_name_stays_inside_its_finding(run, tmp_path):
+    """A name holding a line break (an XML character reference) cannot start a report line:
+    a CI log reads a line that starts with '::' as a GitHub workflow command."""
+    urdf = tmp_path / "names.urdf"
+    urdf.write_text('<robot name="r"><link name="base"/>'
+                    '<joint name="j" type="fixed"><parent link="base"/>'
+                    '<child link="gone&#10;::error file=x::INJECTED&#x2028;&#x85;"/></joint>'
+                    '</robot>')
+    result = run("check", "urdf", urdf, "--isolated")
+    assert result.exit_code == 1
+    lines = result.stdout.splitlines()  # splits at U+2028 and U+0085 too
+    assert not any(line.startswith("::") for line in lines)
+    (finding,) = [line for line in lines if "SB103" in line]
+    assert "'gone\\n::error file=x::INJECTED\\u2028\\x85'" in finding
