@@ -13,6 +13,7 @@ from collections.abc import Iterator
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.findings import Issue, Severity
+from servicebot_cli.check.rcl_layout import layout_issue
 from servicebot_cli.common.accidents import accident, accident_fix
 from servicebot_cli.description.ros_parameters import tab_indented
 from servicebot_cli.description.yaml_size import MOST_NODES, unfolded_nodes
@@ -100,9 +101,10 @@ def _composed(text: str) -> yaml.Node | None:
 def file_issues(text: str, display: str) -> list[Issue]:
     """SB601 for what rcl makes of the file itself, which the checks of its content go past.
 
-    rcl refuses aliases (``*name``, "Will not support aliasing") and keys that are lists or
-    mappings; it reads several documents as one file, which the controller spawner's
-    ``--param-file`` (``yaml.safe_load``) refuses.
+    rcl refuses aliases (``*name``, "Will not support aliasing"), keys that are lists or
+    mappings and values outside every node's ``ros__parameters`` (:mod:`.rcl_layout`); it
+    reads several documents as one file, which the controller spawner's ``--param-file``
+    (``yaml.safe_load``) refuses.
     """
     issues: list[Issue] = []
     try:
@@ -119,6 +121,9 @@ def file_issues(text: str, display: str) -> list[Issue]:
                             where=at(display, alias.start_mark),
                             severity=Severity.WARNING if template else None,
                             fix="write the values out where the alias stands"))
+    misplaced = layout_issue(events, display) if alias is None else None
+    if misplaced is not None:
+        issues.append(misplaced)
     starts = [e for e in events if isinstance(e, yaml.DocumentStartEvent)]
     if len(starts) > 1:
         issues.append(Issue("SB601", f"{len(starts)} YAML documents (---): rcl reads them as "

@@ -7,6 +7,8 @@ list or a mapping; it reads several documents as one file, which the spawner's
 
 from __future__ import annotations
 
+import pytest
+
 from tests.check.helpers import check_controllers
 from tests.conftest import REPO
 
@@ -84,3 +86,38 @@ def test_a_namespace_written_twice_is_one_node_not_a_mistake(run, tmp_path):
             + "".join(f"\n  {line}" if line else "\n" for line in tail.splitlines()))
     code, found = check_controllers(run, tmp_path, text)
     assert not [f for f in found if f["code"] == "SB601"], found
+
+
+@pytest.mark.parametrize(("edit", "said"), [
+    (lambda t: "use_sim_time: true\n" + t, "'use_sim_time: true' is at the top of the file"),
+    (lambda t: t.replace("controller_manager:\n", "controller_manager:\n  use_sim_time: true\n",
+                         1), "'use_sim_time: true' is under 'controller_manager' but outside"),
+    (lambda t: t.replace("\narm_controller:\n", "\narm_controller:\n  type: joint_trajectory_"
+                         "controller/JointTrajectoryController\n", 1),
+     "'type: joint_trajectory_controller/JointTrajectoryController' is under 'arm_controller'"),
+    (lambda t: t + "sensor_broadcaster:\n  ros__parameters:\n", "'sensor_broadcaster: "
+     "ros__parameters:' holds no parameters"),
+    (lambda t: t + "extra:\n  - a\n", "the list 'extra' is outside every node's"),
+], ids=["top", "beside ros__parameters", "ROS 1 type", "empty parameters", "list"])
+def test_a_value_outside_every_ros__parameters_is_refused_as_rcl_refuses_it(run, tmp_path,
+                                                                              edit, said):
+    """rcl_yaml_param_parser: 'Cannot have a value before ros__parameters at line N' (or
+    'Sequences can only be values...'), the whole file refused: ros2_control_node stops."""
+    text = edit(BUNDLED)
+    code, found = check_controllers(run, tmp_path, text)
+    (layout,) = [f for f in found if f["code"] == "SB601"]
+    assert code == 1 and layout["severity"] == "error", found
+    assert said in str(layout["message"]) and "rcl refuses the whole file" in str(
+        layout["message"])
+    assert f"at line {layout['line']}'" in str(layout["message"])
+
+
+def test_nested_namespaces_and_wildcards_are_no_values_outside(run, tmp_path):
+    text = ("/**:\n  ros__parameters:\n    use_sim_time: true\n"
+            "robot1:\n  controller_manager:\n    ros__parameters:\n      update_rate: 50\n"
+            "      diff_drive_controller:\n        type: diff_drive_controller/"
+            "DiffDriveController\n  diff_drive_controller:\n    ros__parameters:\n"
+            "      left_wheel_names: [front_left_wheel_joint]\n"
+            "      right_wheel_names: [front_right_wheel_joint]\n")
+    code, found = check_controllers(run, tmp_path, text)
+    assert not [f for f in found if "rcl refuses" in str(f["message"])], found

@@ -1,0 +1,145 @@
+"""Where rcl refuses a parameters file for its layout: a value that belongs to no node.
+
+rcl's parameter file reader (``rcl_yaml_param_parser``, ``parse_file_events``) walks the YAML
+events with a level: above ``ros__parameters`` every key is a namespace or a node name, and a
+value there ("Cannot have a value before ros__parameters at line N"), or a list ("Sequences can
+only be values and not keys in params"), makes it refuse the whole file; ros2_control_node
+then does not start. So does a ``ros__parameters`` with nothing under it, or one no node name
+comes before. The usual causes: ``use_sim_time: true`` beside a node's ``ros__parameters``
+instead of under it, and ROS 1's ``NAME: type: ...``. Pure: YAML events in, one issue out.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+
+import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
+
+from servicebot_cli.check.findings import Issue
+
+_PARAMETERS_KEY = "ros__parameters"  # rcl compares the key's start: PARAMS_KEY's length
+_REFUSED = "rcl refuses the whole file ('{said} at line {line}'), so ros2_control_node " \
+           "cannot load it"
+
+
+@dataclass
+class _Walk:
+    """rcl's state between events: its map level, depths and namespace counts."""
+
+    in_parameters: bool = False
+    depth: int = 0
+    namespaces: list[str] = field(default_factory=list)  # node namespaces and the node name
+    parameter_namespaces: int = 0
+    expecting_key: bool = True
+    in_list: bool = False
+    new_mapping: bool = False
+    parameters_of: dict[str, int] = field(default_factory=dict)
+    node: str = ""
+    keys: list[str] = field(default_factory=list)  # the key of each open mapping, for messages
+
+
+def layout_issue(events: Iterable[yaml.Event], display: str) -> Issue | None:
+    """SB601 for the first value rcl finds outside every node's ``ros__parameters``."""
+    walk = _Walk()
+    for event in events:
+        if isinstance(event, yaml.ScalarEvent):
+            found = _scalar(walk, event, display)
+        elif isinstance(event, yaml.SequenceStartEvent):
+            found = _list_start(walk, event, display)
+        elif isinstance(event, yaml.SequenceEndEvent):
+            walk.in_list, walk.expecting_key = False, True
+            found = None
+        elif isinstance(event, yaml.MappingStartEvent):
+            _mapping_start(walk)
+            found = None
+        elif isinstance(event, yaml.MappingEndEvent):
+            _mapping_end(walk)
+            found = None
+        elif isinstance(event, yaml.AliasEvent):
+            return None  # rcl refuses aliases first: controller_sections says so
+        else:
+            found = None
+        if found is not None:
+            return found
+    return None
+
+
+def _scalar(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue | None:
+    line = event.start_mark.line + 1
+    if walk.expecting_key:
+        walk.expecting_key = False
+        del walk.keys[max(walk.depth - 1, 0):]
+        walk.keys.append(str(event.value))
+        if walk.in_parameters:
+            if walk.new_mapping:
+                walk.parameter_namespaces += 1
+                walk.new_mapping = False
+            walk.parameters_of[walk.node] = walk.parameters_of.get(walk.node, 0) + 1
+            return None
+        if not str(event.value).startswith(_PARAMETERS_KEY):
+            walk.namespaces.append(str(event.value))
+            return None
+        if not walk.namespaces:
+            said = f"There are no node names before {_PARAMETERS_KEY}"
+            return Issue("SB601", f"'{event.value}' at the top of the file, under no node name: "
+                         + _REFUSED.format(said=said, line=line), where=_at(display, event),
+                         fix=f"put it under the node's name: NAME: {_PARAMETERS_KEY}:")
+        walk.node = "/".join(walk.namespaces)
+        walk.parameters_of.setdefault(walk.node, 0)
+        walk.namespaces.pop()
+        walk.in_parameters = True
+        return None
+    if walk.in_parameters and walk.parameters_of.get(walk.node, 0):
+        if not walk.in_list:
+            walk.expecting_key = True
+        return None
+    said = f"Cannot have a value before {_PARAMETERS_KEY}"
+    if walk.in_parameters:  # ros__parameters: itself holds the value, or nothing
+        what = (f"'{walk.node}: {_PARAMETERS_KEY}:' holds no parameters"
+                + (f" but the value '{event.value}'" if event.value else ""))
+        return Issue("SB601", f"{what}: " + _REFUSED.format(said=said, line=line),
+                     where=_at(display, event),
+                     fix="write the node's parameters under it, or remove the section")
+    key, owner = walk.keys[-1] if walk.keys else "?", ".".join(walk.keys[:-1])
+    placed = f"under '{owner}' but outside its {_PARAMETERS_KEY}" if owner else \
+        "at the top of the file, under no node"
+    return Issue("SB601", f"'{key}: {event.value}' is {placed}: "
+                 + _REFUSED.format(said=said, line=line), where=_at(display, event),
+                 fix=f"move it under the node's {_PARAMETERS_KEY}:")
+
+
+def _list_start(walk: _Walk, event: yaml.SequenceStartEvent, display: str) -> Issue | None:
+    if walk.expecting_key:
+        return None  # a list as a key: controller_sections says rcl refuses it
+    if not walk.in_parameters:
+        line = event.start_mark.line + 1
+        key = walk.keys[-1] if walk.keys else "?"
+        said = "Sequences can only be values and not keys in params. Error"
+        return Issue("SB601", f"the list '{key}' is outside every node's {_PARAMETERS_KEY}: "
+                     + _REFUSED.format(said=said, line=line), where=_at(display, event),
+                     fix=f"move it under the node's {_PARAMETERS_KEY}:")
+    walk.in_list = True
+    return None
+
+
+def _mapping_start(walk: _Walk) -> None:
+    walk.depth += 1
+    walk.new_mapping = walk.expecting_key = True
+    if walk.in_parameters and walk.depth - (len(walk.namespaces) + 1) == 2:
+        walk.new_mapping = False  # the ros__parameters mapping itself
+
+
+def _mapping_end(walk: _Walk) -> None:
+    if walk.in_parameters:
+        if walk.parameter_namespaces:
+            walk.parameter_namespaces -= 1
+        else:
+            walk.in_parameters = False
+    elif walk.depth == len(walk.namespaces) + 1 and walk.namespaces:
+        walk.namespaces.pop()
+    walk.depth -= 1
+
+
+def _at(display: str, event: yaml.Event) -> tuple[str, int, int]:
+    return (display, event.start_mark.line + 1, event.start_mark.column + 1)
