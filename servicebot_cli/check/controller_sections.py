@@ -8,6 +8,7 @@ makes the text no controllers file at all. Pure: YAML text in, nodes out.
 from __future__ import annotations
 
 import difflib
+import re
 from collections.abc import Iterator
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
@@ -19,6 +20,7 @@ from servicebot_cli.description.ros_parameters import tab_indented
 from servicebot_cli.description.yaml_size import MOST_NODES, unfolded_nodes
 
 _NAMESPACE_DEPTH = 3
+_PLACEHOLDER = re.compile(r"<[A-Za-z_][A-Za-z0-9_]*>")
 
 Sections = dict[str, list[yaml.MappingNode]]
 """Each node's ``ros__parameters`` sections by node name, in file order (one per namespace)."""
@@ -225,8 +227,12 @@ def at(display: str, mark: yaml.Mark) -> tuple[str, int, int]:
 
 
 def substituted(text: str) -> bool:
-    """Whether a launch file fills ``text`` in: ``$(var ...)``, or a ``${NAME}`` template."""
-    return "$(" in text or "${" in text
+    """Whether a launch file fills ``text`` in.
+
+    ``$(var ...)``, a ``${NAME}`` template, or a ``<NAME>`` placeholder that nav2_common's
+    ReplaceString rewrites (``<prefix>joint1``).
+    """
+    return "$(" in text or "${" in text or ("<" in text and bool(_PLACEHOLDER.search(text)))
 
 
 JOINT_KEYS = (

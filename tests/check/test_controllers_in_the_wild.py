@@ -7,6 +7,7 @@
   parameter as ``NAME: {type:}`` once rcl flattens it.
 - PAL's gripper controllers: ``${EE_SIDE_PREFIX}`` templates that launch_pal fills in.
 - A number a launch file fills in (``$(var wheel_separation)``).
+- igus' iRC_ROS: ``<prefix>joint_1`` placeholders that nav2_common's ReplaceString rewrites.
 - A base with passive ball casters on continuous joints: diff_drive_controller's radius and
   track are those of the wheels it names, not an average with the casters.
 
@@ -43,6 +44,7 @@ def _check(yaml_name: str, urdf_name: str, tmp_path=None, **changes: str):
     ("dotted.yaml", "arm.urdf"), ("gripper_controller.yaml", "gripper.urdf"),
     ("dd_substituted.yaml", "corner_casters.urdf"), ("dd.yaml", "corner_casters.urdf"),
     ("split_namespaces.yaml", "corner_casters.urdf"),
+    ("replace_string.yaml", "arm.urdf"),
 ])
 def test_real_shapes_pass(yaml_name, urdf_name):
     assert _check(yaml_name, urdf_name) == []
@@ -84,3 +86,9 @@ def test_a_wrong_number_given_for_every_namespace_is_still_found(tmp_path):
     found = _check("split_namespaces.yaml", "corner_casters.urdf", tmp_path,
                    a=("wheel_separation: 0.4", "wheel_separation: 0.5"))
     assert [code for code, _ in found] == ["SB604"]
+
+
+def test_a_joint_without_a_placeholder_is_still_checked(tmp_path):
+    found = _check("replace_string.yaml", "arm.urdf", tmp_path,
+                   a=("      - <prefix>joint_1\n", "      - <prefix>joint_1\n      - joint_9\n"))
+    assert [code for code, _ in found] == ["SB602"] and "'joint_9'" in found[0][1]
