@@ -238,8 +238,9 @@ def _accessed(source: ET.Element, array: ET.Element, values: FloatArray, ns: str
         raise MeshFormatError(
             f"COLLADA accessor of source '{name}' reads {count} points of {stride} numbers "
             f"({offset + count * stride}) where its <float_array> says count="
-            f"\"{len(values)}\"{told}; Assimp (RViz, Gazebo, MoveIt) refuses it ('Not enough "
-            "data for accessor')")
+            f"\"{len(values)}\"{told}; Assimp 5.4 and later (RViz, Gazebo, MoveIt) refuse it "
+            "('Not enough data for accessor'), older Assimp (Ubuntu 22.04 and 24.04) reads "
+            "past the numbers it kept: vertices of garbage, or a crash")
     points: FloatArray = values[offset: offset + count * stride].reshape(count, stride)[:, :3]
     return points
 

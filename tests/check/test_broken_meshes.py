@@ -62,8 +62,9 @@ CASES = {
     "an accessor past its array's count": (
         "m.dae", _collada().replace('count="12"', 'count="6"'),
         "reads 4 points of 3 numbers (12) where its <float_array> says count=\"6\", though it "
-        "holds 12: Assimp reads the count it is told; Assimp (RViz, Gazebo, MoveIt) refuses "
-        "it ('Not enough data for accessor')"),
+        "holds 12: Assimp reads the count it is told; Assimp 5.4 and later (RViz, Gazebo, "
+        "MoveIt) refuse it ('Not enough data for accessor'), older Assimp (Ubuntu 22.04 and "
+        "24.04) reads past the numbers it kept: vertices of garbage, or a crash"),
     # trimesh's exceptions were the message ("KeyError: 'y'"); ik's own reader says it
     "a PLY whose header promises more than it holds": (
         "m.ply", "ply\nformat ascii 1.0\nelement vertex 99\nproperty float x\nend_header\n"
