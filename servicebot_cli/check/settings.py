@@ -127,7 +127,13 @@ def load_settings(path: Path | None) -> Settings:
         document = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise SettingsError(f"{path}: cannot read settings: {exc}") from None
-    table = _child(_child(document, "tool"), "servicebot").get("check")
+    ours = _child(_child(document, "tool"), "servicebot")
+    others = sorted(set(ours) - {"check"})
+    if others:  # [tool.servicebot] strict = true, [tool.servicebot.checks]: read by nobody
+        raise SettingsError(f"{path}: [tool.servicebot] has '{others[0]}', which servicebot does "
+                            "not read; its settings go in [tool.servicebot.check] (settings: "
+                            f"{', '.join(_KEYS)})")
+    table = ours.get("check")
     if table is None:
         return Settings()
     return _from_table(table, str(path))

@@ -143,6 +143,17 @@ def test_bad_settings_are_one_line(tmp_path, table, needle):
     assert_one_line_error(result, 2, "pyproject.toml", needle)
 
 
+@pytest.mark.parametrize(("text", "needle"), [
+    ("[tool.servicebot]\nstrict = true\n", "[tool.servicebot] has 'strict'"),
+    ("[tool.servicebot.checks]\nstrict = true\n", "[tool.servicebot] has 'checks'"),
+])
+def test_settings_outside_the_check_table_are_refused_not_dropped(tmp_path, text, needle):
+    (tmp_path / "pyproject.toml").write_text(text)
+    result = run_servicebot("check", SIM_URDF, cwd=tmp_path)
+    assert_one_line_error(result, 2, "pyproject.toml", needle)
+    assert "[tool.servicebot.check]" in result.stderr
+
+
 def test_inline_comment_silences_one_rule_on_one_element(run, tmp_path):
     text = fixture("SB301").read_text()
     silenced = tmp_path / "silenced.urdf"
