@@ -6,6 +6,7 @@ it as a finding with the file, line and column the error names.
 
 from __future__ import annotations
 
+import dataclasses
 import os
 import re
 
@@ -20,6 +21,7 @@ from servicebot_cli.common.errors import (
     split_location,
 )
 from servicebot_cli.description.loader import comments_blanked
+from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
 
 _LIMITS = ("limit for a robot description", "elements; refused", "deep; refused",
            "MB limit; is it the right file?")  # the last: a device read to the limit
@@ -33,6 +35,26 @@ _ARG_USE = re.compile(rb"\$\(arg\s+([^)\s]+)\s*\)")
 _UNDEFINED_ARG = re.compile(r"Undefined substitution argument (\S+)"
                             r"(?: when evaluating expression '.*')?(?: \(in macro '.*)?$",
                             re.DOTALL)
+
+
+def root_not_robot(path: str, display: str) -> Issue | None:
+    """SB008 for a file xacro could not expand whose root element is no ``<robot>``.
+
+    A ROS 1 launch file named ``.urdf.xacro`` (``<launch>``) fails xacro on its ``$(find)``
+    first; that failure (a package not found, a warning) hid that it is no robot at all.
+    """
+    from servicebot_cli.check.syntax import not_a_robot
+
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read(MAX_BYTES + 1)
+        root = parse_xml(data, display).root
+    except (OSError, DescriptionError):
+        return None
+    if root.tag == "robot":
+        return None
+    where = (display, getattr(root, "sourceline", 0) or 0, getattr(root, "column", 0) or 0)
+    return dataclasses.replace(not_a_robot(root), element=None, where=where)
 
 
 def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Issue:

@@ -21,7 +21,7 @@ from servicebot_cli.check.env import CheckEnv
 from servicebot_cli.check.findings import Finding, Issue, Severity
 from servicebot_cli.check.settings import Settings
 from servicebot_cli.check.xacro_warnings import xacro_warning
-from servicebot_cli.common.errors import DescriptionError
+from servicebot_cli.common.errors import DescriptionError, XmlError
 from servicebot_cli.description.load_warnings import LoadWarning
 from servicebot_cli.description.safe_xml import ENTITY_FIX, MAX_BYTES, read_as_written
 
@@ -80,6 +80,8 @@ def check_source(source: RobotSource, settings: Settings, env: CheckEnv,
         if _unreadable(exc, source):
             raise
         issue = read_errors.issue_of(exc, source.display, walked=not named)
+        if not isinstance(exc, XmlError):  # no robot at all says more than why xacro failed
+            issue = read_errors.root_not_robot(str(source.path), source.display) or issue
         said = [xacro_warning(w, source.display) for w in exc.said_before
                 if isinstance(w, LoadWarning)]  # xacro's warnings before it failed
         return _report(source.display, place_issues(None, [*said, issue], settings),

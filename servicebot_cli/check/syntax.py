@@ -34,7 +34,7 @@ MAX_LINKS = 20_000
 def check(root: ET.Element) -> Iterator[Issue]:
     """Every parse-level issue of the document under ``root``."""
     if root.tag != "robot":
-        yield _not_a_robot(root)
+        yield not_a_robot(root)
         return
     yield from _robot_attributes(root)
     counts = {tag: len(root.findall(tag)) for tag in ("link", "joint")}
@@ -56,7 +56,7 @@ def check(root: ET.Element) -> Iterator[Issue]:
                             f"<{close[0]}>?", child, fix=f"rename it <{close[0]}>")
 
 
-def _not_a_robot(root: ET.Element) -> Issue:
+def not_a_robot(root: ET.Element) -> Issue:
     """SB008, saying what the file is where its root tells: SDF, or a URDF world."""
     if root.tag == "world":  # DART's parseWorld reads it (urdfdom's urdf_world)
         return Issue("SB008", "root element is <world>: a URDF world (DART's), which places "

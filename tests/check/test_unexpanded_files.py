@@ -52,3 +52,16 @@ def test_a_file_that_expands_with_its_package_is_checked(run, tmp_path):
     text = run("check", "urdf", robot, "--isolated", "--package", f"pal_urdf_utils={utils}",
                env=NO_ROS)
     assert "not expanded" not in text.stdout
+
+
+def test_a_launch_file_named_urdf_xacro_is_no_robot_even_when_xacro_fails_first(run, tmp_path):
+    """A ROS 1 launch file's $(find xacro) failed the expansion: a warning (a package not
+    found) and exit 0 hid that the file is no robot description at all."""
+    launch = tmp_path / "bringup.urdf.xacro"
+    launch.write_text('<?xml version="1.0"?>\n<launch>\n  <param name="robot_description" '
+                      'command="$(find xacro)/xacro $(arg model)"/>\n</launch>\n')
+    result = run("check", "urdf", launch, "--isolated", "--format", "json", env=NO_ROS)
+    assert result.exit_code == 1
+    (finding,) = findings(result.stdout)
+    assert (finding["code"], finding["line"]) == ("SB008", 2)
+    assert "root element is <launch>" in finding["message"]
