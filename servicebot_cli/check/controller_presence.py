@@ -25,6 +25,7 @@ from servicebot_cli.check.controller_sections import (
     type_nodes,
 )
 from servicebot_cli.check.findings import Issue, Severity
+from servicebot_cli.check.rcl_layout import valid_node_name
 
 _FORWARD = ("joints", "interface_name")  # (interface_name absent from a section: an error of
 # controller_params.validated_values)
@@ -57,9 +58,8 @@ _NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 
 
 def _node_part(name: str) -> str:
-    """The last part of ``name`` that could name a node (``/ns/diff_controller``: its end)."""
-    parts = [p for p in re.split(r"[^A-Za-z0-9_]+", name) if p]
-    return parts[-1] if parts else "my_controller"
+    """The node's part of ``name`` (``/ns/diff_controller``: its end)."""
+    return name.rstrip("/").rpartition("/")[2]
 
 
 def presence_issues(found: Sections, display: str) -> Iterator[Issue]:
@@ -71,13 +71,13 @@ def presence_issues(found: Sections, display: str) -> Iterator[Issue]:
     types = type_nodes(found)
     nameable = [name for name in types if _NODE_NAME.fullmatch(name) or substituted(name)]
     for name, node in types.items():
-        if name not in nameable:
+        if name not in nameable and name not in found:  # a section's own name: rcl_layout
             yield Issue("SB608", f"controller_manager declares '{name}': a controller's name is "
                         "its node's, which rclcpp refuses unless it is letters, digits and '_' "
                         "(not a digit first), so the controller manager cannot load it",
                         where=at(display, node.start_mark),
-                        fix=f"declare it as '{_node_part(name)}': it runs in the controller "
-                            "manager's namespace")
+                        fix=f"declare it as '{valid_node_name(_node_part(name))}': it runs in "
+                            "the controller manager's namespace")
     without = [name for name in nameable if name not in found]
     stray = [name for name in found if name != "controller_manager" and name not in types]
     renamed: dict[str, str] = {}

@@ -8,19 +8,18 @@ makes the text no controllers file at all. Pure: YAML text in, nodes out.
 from __future__ import annotations
 
 import difflib
-import re
 from collections.abc import Iterator
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.rcl_layout import layout_issue
+from servicebot_cli.check.substitutions import substituted
 from servicebot_cli.common.accidents import accident, accident_fix
 from servicebot_cli.description.ros_parameters import tab_indented
 from servicebot_cli.description.yaml_size import MOST_NODES, unfolded_nodes
 
 _NAMESPACE_DEPTH = 3
-_PLACEHOLDER = re.compile(r"<[A-Za-z_][A-Za-z0-9_]*>")
 
 Sections = dict[str, list[yaml.MappingNode]]
 """Each node's ``ros__parameters`` sections by node name, in file order (one per namespace)."""
@@ -224,15 +223,6 @@ def _collection_key(root: yaml.Node | None) -> yaml.Node | None:
 def at(display: str, mark: yaml.Mark) -> tuple[str, int, int]:
     """``(file, line, column)`` of a YAML position, 1-based."""
     return (display, mark.line + 1, mark.column + 1)
-
-
-def substituted(text: str) -> bool:
-    """Whether a launch file fills ``text`` in.
-
-    ``$(var ...)``, a ``${NAME}`` template, or a ``<NAME>`` placeholder that nav2_common's
-    ReplaceString rewrites (``<prefix>joint1``).
-    """
-    return "$(" in text or "${" in text or ("<" in text and bool(_PLACEHOLDER.search(text)))
 
 
 JOINT_KEYS = (

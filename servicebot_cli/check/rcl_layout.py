@@ -11,13 +11,16 @@ instead of under it, and ROS 1's ``NAME: type: ...``. Pure: YAML events in, one 
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.substitutions import substituted
 
+_NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]{0,254}")
 _PARAMETERS_KEY = "ros__parameters"  # rcl compares the key's start: PARAMS_KEY's length
 _REFUSED = "rcl refuses the whole file ('{said} at line {line}'), so ros2_control_node " \
            "cannot load it"
@@ -30,6 +33,7 @@ class _Walk:
     in_parameters: bool = False
     depth: int = 0
     namespaces: list[str] = field(default_factory=list)  # node namespaces and the node name
+    named_at: list[yaml.ScalarEvent] = field(default_factory=list)  # each namespace's key
     parameter_namespaces: int = 0
     expecting_key: bool = True
     in_list: bool = False
@@ -79,6 +83,7 @@ def _scalar(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue | None:
             return None
         if not str(event.value).startswith(_PARAMETERS_KEY):
             walk.namespaces.append(str(event.value))
+            walk.named_at.append(event)
             return None
         if not walk.namespaces:
             said = f"There are no node names before {_PARAMETERS_KEY}"
@@ -86,8 +91,12 @@ def _scalar(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue | None:
                          + _REFUSED.format(said=said, line=line), where=_at(display, event),
                          fix=f"put it under the node's name: NAME: {_PARAMETERS_KEY}:")
         walk.node = "/".join(walk.namespaces)
+        refused = _node_name_refusal(walk.namespaces[-1], walk.node, walk.named_at[-1], display)
+        if refused is not None:
+            return refused
         walk.parameters_of.setdefault(walk.node, 0)
         walk.namespaces.pop()
+        walk.named_at.pop()
         walk.in_parameters = True
         return None
     if walk.in_parameters and walk.parameters_of.get(walk.node, 0):
@@ -107,6 +116,32 @@ def _scalar(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue | None:
     return Issue("SB601", f"'{key}: {event.value}' is {placed}: "
                  + _REFUSED.format(said=said, line=line), where=_at(display, event),
                  fix=f"move it under the node's {_PARAMETERS_KEY}:")
+
+
+def _node_name_refusal(key: str, path: str, event: yaml.ScalarEvent,
+                       display: str) -> Issue | None:
+    """SB601 for a node name rmw refuses, which makes rcl refuse the file (``__validate_name``).
+
+    The part after the last ``/`` is the node's name (``*`` a wildcard); a launch file's
+    placeholders are left to the launch file.
+    """
+    name = path.rpartition("/")[2]
+    if path == "/**" or name == "*" or substituted(key) or _NODE_NAME.fullmatch(name):
+        return None
+    said = ("node name must not start with a number" if name[:1].isdigit() else
+            "node name must not contain characters other than alphanumerics or '_'")
+    if not name:
+        said = "node name must not be empty"
+    return Issue("SB601", f"'{name}' names no node rcl accepts (letters, digits and '_', not a "
+                 f"digit first): rcl refuses the whole file ('{said}'), so ros2_control_node "
+                 "cannot load it", where=_at(display, event),
+                 fix=f"name it '{valid_node_name(name)}' (and wherever it is declared)")
+
+
+def valid_node_name(name: str) -> str:
+    """``name`` made a node name rmw takes: other characters as '_', '_' before a digit."""
+    fixed = re.sub(r"[^A-Za-z0-9_]+", "_", name).strip("_") or "my_controller"
+    return f"_{fixed}" if fixed[0].isdigit() else fixed
 
 
 def _list_start(walk: _Walk, event: yaml.SequenceStartEvent, display: str) -> Issue | None:
@@ -138,6 +173,7 @@ def _mapping_end(walk: _Walk) -> None:
             walk.in_parameters = False
     elif walk.depth == len(walk.namespaces) + 1 and walk.namespaces:
         walk.namespaces.pop()
+        walk.named_at.pop()
     walk.depth -= 1
 
 

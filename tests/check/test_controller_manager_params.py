@@ -69,8 +69,10 @@ def test_a_type_in_the_controllers_own_section_is_its_type(run, tmp_path):
     assert [m for _, m, _ in _sb608(run, tmp_path, more=more) if "without a type" in m] == []
 
 
-@pytest.mark.parametrize("name", ["/ns/diff_controller", "diff-controller", "2nd_arm"])
-def test_a_controller_name_no_node_can_have(run, tmp_path, name):
+@pytest.mark.parametrize(("name", "valid"), [("/ns/diff_controller", "diff_controller"),
+                                           ("diff-controller", "diff_controller"),
+                                           ("2nd_arm", "_2nd_arm")])
+def test_a_controller_name_no_node_can_have(run, tmp_path, name, valid):
     """A controller's name is its node's: rclcpp refuses '/ns/diff_controller'. check said
     to rename its section to the name it already had."""
     text = (f"controller_manager:\n  ros__parameters:\n    update_rate: 100\n    '{name}':\n"
@@ -81,7 +83,25 @@ def test_a_controller_name_no_node_can_have(run, tmp_path, name):
     ((severity, message, fix),) = [(f["severity"], f["message"], f["fix"]) for f in issues]
     assert severity == "error" and f"controller_manager declares '{name}': a controller's " \
         "name is its node's" in message
-    assert fix.startswith("declare it as '")
+    assert fix.startswith(f"declare it as '{valid}'")
+
+
+@pytest.mark.parametrize(("name", "said", "valid"), [
+    ("diff-controller", "must not contain characters other than alphanumerics", "diff_controller"),
+    ("2wd_controller", "must not start with a number", "_2wd_controller"),
+])
+def test_a_section_named_no_node_can_have_makes_rcl_refuse_the_file(run, tmp_path, name, said,
+                                                                    valid):
+    """rcl validates the node name before ros__parameters and refuses the whole file; the
+    fix named 'controller' (the last run of letters) or the same invalid name."""
+    text = (f"controller_manager:\n  ros__parameters:\n    update_rate: 100\n"
+            f"{name}:\n  ros__parameters:\n"
+            "    type: joint_state_broadcaster/JointStateBroadcaster\n")
+    code, issues = check_controllers(run, tmp_path, text)
+    ((line, message, fix),) = [(f["line"], f["message"], f["fix"]) for f in issues]
+    assert code == 1 and line == 4 and f"'{name}' names no node rcl accepts" in message
+    assert said in message and "rcl refuses the whole file" in message
+    assert fix.startswith(f"name it '{valid}'")
 
 
 def test_a_name_a_launch_file_fills_in_is_left_to_it(run, tmp_path):

@@ -1,0 +1,16 @@
+"""Values a launch file fills in before ROS reads a parameters file. Pure."""
+
+from __future__ import annotations
+
+import re
+
+_PLACEHOLDER = re.compile(r"<[A-Za-z_][A-Za-z0-9_]*>")
+
+
+def substituted(text: str) -> bool:
+    """Whether a launch file fills ``text`` in.
+
+    ``$(var ...)``, a ``${NAME}`` template, or a ``<NAME>`` placeholder that nav2_common's
+    ReplaceString rewrites (``<prefix>joint1``).
+    """
+    return "$(" in text or "${" in text or ("<" in text and bool(_PLACEHOLDER.search(text)))
