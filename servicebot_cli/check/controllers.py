@@ -8,6 +8,7 @@ Pure: YAML text and a RobotDescription in, issues out, each placed at its YAML l
 
 from __future__ import annotations
 
+import difflib
 import math
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
@@ -79,6 +80,13 @@ def _names_joints(controller_type: str | None) -> bool:
     ``joint: tcp``, the prefix of interfaces its hardware exports, not a URDF joint.
     """
     return controller_type is None or controller_type.partition("/")[0] in ROS2_CONTROLLERS
+
+
+def _items(node: yaml.Node | None) -> list[yaml.Node]:
+    """The items of a list node, a scalar as a list of one; none for no node."""
+    if node is None:
+        return []
+    return list(node.value) if isinstance(node, yaml.SequenceNode) else [node]
 
 
 def _number(node: yaml.Node | None) -> float | None:
@@ -179,7 +187,7 @@ class _Checker:
             if joint is None and item.value in self.components():  # a gpio or a sensor
                 continue
             if joint is None:
-                hint = str(NameNotFound.for_name(item.value, list(self.joints))).split("; ", 1)
+                hint = [self.closest(section, key, str(item.value))]
                 only = (" (only its <ros2_control> names it: Gazebo's ros2_control skips "
                         "such a joint, and robot_state_publisher has no state of it)"
                         if item.value in self.exported() else "")
@@ -193,6 +201,25 @@ class _Checker:
             elif not joint.movable:
                 yield Issue("SB606", f"{section}.{key}: joint '{item.value}' is {joint.type} "
                             "in the URDF", where=self.where(item))
+
+    def closest(self, section: str, key: str, name: str) -> str:
+        """The names ``name`` may have meant: 'did you mean ...', or what the URDF has.
+
+        A chained reference whose controller is misspelled is said as that controller's
+        reference; joints the section's other lists already name come last, as a wheel of
+        the other side is seldom the one meant.
+        """
+        head, slash, rest = name.partition("/")
+        controller = difflib.get_close_matches(head, sorted(self.controllers), n=1,
+                                               cutoff=0.8) if slash else []
+        if controller:
+            return (f"did you mean '{controller[0]}/{rest}', a reference of the controller "
+                    f"'{controller[0]}'?")
+        taken = {str(item.value) for params in self.sections.get(section, [])
+                 for other in JOINT_KEYS if other != key
+                 for item in _items(get(params, other)) if isinstance(item, yaml.ScalarNode)}
+        joints = [j for j in self.joints if j not in taken] or list(self.joints)
+        return str(NameNotFound.for_name(name, joints)).split("; ", 1)[-1]
 
     def components(self) -> set[str]:
         """The sensors and GPIOs of every ``<ros2_control>``: names that are no joints."""

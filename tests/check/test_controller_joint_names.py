@@ -76,3 +76,29 @@ def test_with_spawned_given_the_fix_names_the_joint_only(tmp_path):
     [found] = [f for f in findings(result.stdout) if f["code"] == "SB602"]
     assert found["fix"] == "name a joint of the URDF"
 
+
+
+def test_a_joint_the_other_side_names_is_not_suggested(tmp_path):
+    """The URDF's left wheel renamed wheel_left_joint: right_wheel_joint (in
+    right_wheel_names) was suggested first for left_wheel_names."""
+    _, (found,) = _check(tmp_path, "wheel_left_joint", "left_wheel_joint")
+    assert "did you mean 'wheel_left_joint'?" in found["message"]
+    assert "right_wheel_joint'" not in found["message"].split("did you mean")[1]
+
+
+def test_a_misspelled_chained_controller_is_suggested_as_its_reference(tmp_path):
+    """A typo in a chained reference's controller: the joints suggested (casters first)
+    would have undone the chain."""
+    chain = ("pid_left_wheel_joint:\n  ros__parameters:\n    type: pid_controller/PidController\n"
+             "    dof_names: [left_wheel_joint]\n    command_interface: velocity\n"
+             "    reference_and_state_interfaces: [velocity]\n")
+    _check(tmp_path, "left_wheel_joint", "pid_left_wheel/left_wheel_joint")
+    text = (tmp_path / "controllers.yaml").read_text()
+    (tmp_path / "controllers.yaml").write_text(text.replace(
+        "diff_cont:\n      type:", "pid_left_wheel_joint:\n      type: pid_controller/"
+        "PidController\n    diff_cont:\n      type:") + chain)
+    result = run_servicebot("check", "controllers", "controllers.yaml", "--urdf", "robot.urdf",
+                            "--isolated", "--format", "json", cwd=tmp_path)
+    (found,) = [f for f in findings(result.stdout) if f["code"] == "SB602"]
+    assert "did you mean 'pid_left_wheel_joint/left_wheel_joint', a reference of the " \
+        "controller 'pid_left_wheel_joint'?" in found["message"]
