@@ -47,6 +47,8 @@ def xacro_warning(warning: LoadWarning, display: str) -> Issue:
     where = (warning.file or display, warning.line, warning.column)
     if warning.said_as == "package":
         return Issue("SB007", warning.text, where=where, fix=warning.fix)
+    if warning.said_as == "installed":
+        return Issue("SB001", warning.text, where=where, fix=warning.fix)
     if warning.said_as == "message":
         return Issue("SB017", f"the file's xacro.message(): {warning.text}", where=where,
                      fix="nothing to change: the file prints this while xacro expands it",

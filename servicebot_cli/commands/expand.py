@@ -26,7 +26,7 @@ URDF_SUFFIXES = (".urdf", ".xml")
 
 _SAID: dict[Said, tuple[str, str]] = {
     "warning": ("warning: ", ""), "error": ("warning: ", "the file's xacro.error(): "),
-    "message": ("", ""), "package": ("warning: ", "")}
+    "message": ("", ""), "package": ("warning: ", ""), "installed": ("warning: ", "")}
 """How each kind of thing xacro printed is shown, before and after its place: a file's
 messages as they are."""
 

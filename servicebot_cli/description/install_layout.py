@@ -146,6 +146,31 @@ def included_when_installed(includer: Path, relative: str) -> Path | None:
     return None
 
 
+def escapes_install(includer: Path, relative: str) -> str | None:
+    """Where a relative include of ``includer`` lands once installed, when that is above share/.
+
+    ``includer`` is a source file its package's install rules put under ``share/PKG``; an
+    include that climbs out of ``share`` from there (``../../../other_pkg/x.xacro`` written
+    against the source tree) names nothing any package installs, so xacro fails on the
+    installed file, which launch files load. The place it lands, relative to the install
+    prefix (``other_pkg/x.xacro``); None where ``includer`` is installed by no rule read
+    here, or the include stays within ``share``.
+    """
+    placed = _placed(includer, includer.parent)
+    if placed is None:
+        return None
+    name, _, inside, rules = placed
+    for source_dir, installed_dir in rules:
+        rest = _below(inside, source_dir)
+        if rest is None:
+            continue
+        target = posixpath.normpath(str(PurePosixPath("share", name, installed_dir or ".")
+                                        / rest.parent / relative))
+        parts = target.split("/")
+        return target if parts[0] != "share" or len(parts) < 3 else None
+    return None
+
+
 def installed_source(path: str) -> str:
     """``path`` if it exists; else the source file it is installed from, when there is one.
 

@@ -14,7 +14,7 @@ from typing import Literal
 
 from servicebot_cli.description.sources import SourceRef
 
-Said = Literal["warning", "error", "message", "package"]
+Said = Literal["warning", "error", "message", "package", "installed"]
 
 
 @dataclass(frozen=True)
@@ -29,7 +29,8 @@ class LoadWarning:
         fix: What to change, when the producer knows.
         said_as: How xacro printed it: a warning, a file's ``xacro.error()`` or a file's
             ``xacro.message()``; ``package``: the loader's, a ``$(find)`` of a package that
-            is nowhere, left as written.
+            is nowhere, left as written; ``installed``: the loader's, an include that holds
+            in the sources only.
     """
 
     text: str

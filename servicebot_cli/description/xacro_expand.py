@@ -31,7 +31,11 @@ from xml.parsers import expat
 
 from servicebot_cli.common.errors import DescriptionError, PackageNotFound, XacroError, XmlError
 from servicebot_cli.common.inputs import as_typed, not_a_file, open_binary
-from servicebot_cli.description.install_layout import included_when_installed, installed_source
+from servicebot_cli.description.install_layout import (
+    escapes_install,
+    included_when_installed,
+    installed_source,
+)
 from servicebot_cli.description.load_warnings import LoadWarning, said_by_xacro
 from servicebot_cli.description.packages import PackageResolver
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
@@ -137,7 +141,7 @@ def expand(
         xml_text=doc.toprettyxml(indent="  "),
         origins=tuple(origins),
         files=tuple(tracer.files),
-        warnings=(said_by_xacro(tracer.said) + bare
+        warnings=(said_by_xacro(tracer.said) + bare + tuple(tracer.installed_only)
                   + _unread_args(display, given, tracer)),
     )
 
@@ -310,6 +314,7 @@ class _Tracer:
         self.macros: dict[str, SourceRef] = {}  # where each macro is defined, by name
         self.reading: tuple[int, int] | None = None  # the directive whose attributes are read
         self.said: list[tuple[str, SourceRef | None]] = []  # what xacro printed, and where
+        self.installed_only: list[LoadWarning] = []  # includes that hold in the sources only
 
     def record(self, node: xml.dom.minidom.Element, file: str, line: int, column: int) -> None:
         self.refs.append(SourceRef(file, line, column))
@@ -340,6 +345,24 @@ class _Tracer:
         """Where ``node`` was written, if it was read from a file."""
         index = self.index_of(node)
         return None if index is None else self.refs[index]
+
+    def _spec(self, spec: str, joined: str, filestack: list[str | None]) -> str:
+        """:func:`_installed_spec`, noting a relative include that holds in the sources only."""
+        read = _installed_spec(spec, joined, filestack)
+        includer = filestack[-1] if filestack else None
+        if includer and read == joined and not os.path.isabs(spec) and os.path.exists(read):
+            lands = escapes_install(Path(includer), spec)
+            if lands is not None:
+                where = self.refs[self.current[-1]] if self.current else None
+                self.installed_only.append(LoadWarning(
+                    f"'{spec}' is read from the sources only: from where the install rules put "
+                    f"{os.path.basename(includer)}, it names <install prefix>/{lands}, which no "
+                    "package installs, so xacro fails on the installed file that launch files "
+                    "load (FindPackageShare)", where.file if where else None,
+                    where.line if where else 0, where.column if where else 0,
+                    fix="name it through its package: $(find PACKAGE)/path/in/its/share",
+                    said_as="installed"))
+        return read
 
     def _said(self, *parts: object, sep: str | None = " ", **_: object) -> None:
         """xacro.color's print: the text, and the element being processed.
@@ -379,8 +402,8 @@ class _Tracer:
         xacro._global_symbols.update(GUARDS)
         # includes and load_yaml open what abs_filename_spec names: a file of a source
         # package found where the package's install rules put it
-        xacro.abs_filename_spec = lambda spec: _installed_spec(spec, saved_spec(spec),
-                                                               xacro.filestack)
+        xacro.abs_filename_spec = lambda spec: self._spec(spec, saved_spec(spec),
+                                                          xacro.filestack)
         import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
         saved_load = yaml.safe_load  # what xacro's load_yaml reads with

@@ -53,3 +53,35 @@ def test_an_include_that_holds_once_installed_is_read_from_its_source(run, tmp_p
                  "--isolated")
     assert result.exit_code == 0, result.output
     assert all(f["severity"] != "error" for f in findings(result.stdout))
+
+
+def test_an_include_that_holds_in_the_sources_only_is_an_error(run, tmp_path):
+    """ros2_control_demos' example_1 installs description/urdf as share/PKG/urdf: an include
+    of '../../../other/part.xacro' finds the sibling package from the sources, and from the
+    install space names <prefix>/other/part.xacro, where real xacro fails."""
+    repository = tmp_path / "demos"
+    _package(repository / "mypkg", "install(DIRECTORY description/urdf "
+             "DESTINATION share/${PROJECT_NAME})",
+             {"description/urdf/main.xacro": _main("../../../other/urdf/part.xacro")})
+    _package(repository / "other", "install(DIRECTORY urdf DESTINATION share/${PROJECT_NAME})",
+             {"urdf/part.xacro": _PART})
+    result = run("check", "urdf", repository / "mypkg/description/urdf/main.xacro",
+                 "--format", "json", "--isolated")
+    assert result.exit_code == 1
+    (found,) = [f for f in findings(result.stdout) if f["code"] == "SB001"]
+    assert found["severity"] == "error" and found["line"] == 1
+    assert "'../../../other/urdf/part.xacro' is read from the sources only" in found["message"]
+    assert "<install prefix>/other/urdf/part.xacro" in found["message"]
+
+
+def test_an_include_of_a_sibling_package_that_holds_installed_too_passes(run, tmp_path):
+    """From share/mypkg/urdf, '../../other/urdf/part.xacro' is share/other/urdf/part.xacro:
+    both layouts hold it."""
+    workspace = tmp_path / "src"
+    _package(workspace / "mypkg", "install(DIRECTORY urdf DESTINATION share/${PROJECT_NAME})",
+             {"urdf/main.xacro": _main("../../other/urdf/part.xacro")})
+    _package(workspace / "other", "install(DIRECTORY urdf DESTINATION share/${PROJECT_NAME})",
+             {"urdf/part.xacro": _PART})
+    result = run("check", "urdf", workspace / "mypkg/urdf/main.xacro", "--format", "json",
+                 "--isolated")
+    assert result.exit_code == 0, result.output
