@@ -129,21 +129,14 @@ def included_when_installed(includer: Path, relative: str) -> Path | None:
     source. None where ``includer`` is installed by no rule, or the include leaves
     ``share/PKG``, or names no file installed from the sources.
     """
-    placed = _placed(includer, includer.parent)
-    if placed is None:
+    landed = _installed_include(includer, relative)
+    if landed is None:
         return None
-    _, package_dir, inside, rules = placed
-    for source_dir, installed_dir in rules:
-        rest = _below(inside, source_dir)
-        if rest is None:
-            continue
-        target = posixpath.normpath(str(PurePosixPath(installed_dir or ".") / rest.parent
-                                        / relative))
-        if target == ".." or target.startswith("../") or posixpath.isabs(target):
-            return None  # out of share/PKG: nothing installed there
-        found = installed_from(package_dir / target)
-        return None if found is None else found.source
-    return None
+    _, package_dir, target = landed
+    if target == ".." or target.startswith("../") or posixpath.isabs(target):
+        return None  # out of share/PKG: nothing installed there
+    found = installed_from(package_dir / target)
+    return None if found is None else found.source
 
 
 def escapes_install(includer: Path, relative: str) -> str | None:
@@ -156,18 +149,31 @@ def escapes_install(includer: Path, relative: str) -> str | None:
     prefix (``other_pkg/x.xacro``); None where ``includer`` is installed by no rule read
     here, or the include stays within ``share``.
     """
+    landed = _installed_include(includer, relative)
+    if landed is None:
+        return None
+    name, _, target = landed
+    placed = posixpath.normpath(posixpath.join("share", name, target))
+    parts = placed.split("/")
+    return placed if parts[0] != "share" or len(parts) < 3 else None
+
+
+def _installed_include(includer: Path, relative: str) -> tuple[str, Path, str] | None:
+    """Where the relative include ``relative`` of ``includer`` lands once installed.
+
+    The package's name and directory, and the place under ``share/PKG`` (normalised: it may
+    start with ``..``). None where no install rule of the package puts ``includer`` under
+    ``share/PKG``.
+    """
     placed = _placed(includer, includer.parent)
     if placed is None:
         return None
-    name, _, inside, rules = placed
+    name, package_dir, inside, rules = placed
     for source_dir, installed_dir in rules:
         rest = _below(inside, source_dir)
-        if rest is None:
-            continue
-        target = posixpath.normpath(str(PurePosixPath("share", name, installed_dir or ".")
-                                        / rest.parent / relative))
-        parts = target.split("/")
-        return target if parts[0] != "share" or len(parts) < 3 else None
+        if rest is not None:
+            return name, package_dir, posixpath.normpath(
+                str(PurePosixPath(installed_dir or ".") / rest.parent / relative))
     return None
 
 
