@@ -15,8 +15,10 @@ from collections.abc import Iterator
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.controller_params import TYPE_ARTICLE, rcl_type
-from servicebot_cli.check.controller_sections import Sections, at, get, substituted, type_nodes
+from servicebot_cli.check.controller_sections import Sections, at, get, type_nodes
 from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.rcl_layout import no_value
+from servicebot_cli.check.substitutions import substituted
 
 _DECLARED = {"update_rate": "integer", "use_sim_time": "bool", "thread_priority": "integer",
              "enforce_command_limits": "bool"}
@@ -32,6 +34,8 @@ def manager_issues(found: Sections, display: str) -> Iterator[Issue]:
     for manager in found.get("controller_manager", []):
         for key, wanted in _DECLARED.items():
             node = get(manager, key)
+            if no_value(node):
+                continue  # rcl refuses the whole file: rcl_layout says so
             if isinstance(node, yaml.ScalarNode) and not substituted(str(node.value)):
                 yield from _typed(key, node, wanted, display)
             elif isinstance(node, yaml.SequenceNode):

@@ -20,13 +20,15 @@ import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.controller_interfaces import RCL_FALSE, RCL_TRUE
 from servicebot_cli.check.controller_presence import presence_issues
-from servicebot_cli.check.controller_sections import Sections, at, substituted, type_nodes
+from servicebot_cli.check.controller_sections import Sections, at, type_nodes
 from servicebot_cli.check.findings import Issue, Severity
+from servicebot_cli.check.rcl_layout import no_value
+from servicebot_cli.check.substitutions import substituted
 
 _INTEGER = re.compile(r"[+-]?(?:0[xX][0-9a-fA-F]+|[0-9]+)")  # strtol, base 0
 _DOUBLE = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*(?:[eE][+-]?[0-9]+)?|\.[0-9]+(?:[eE][+-]?[0-9]+)?"
-                     r"|0[xX][0-9a-fA-F.]+(?:[pP][+-]?[0-9]+)?"
-                     r"|(?i:inf|infinity|nan|\.inf|\.nan))")  # strtod, and rcl's .inf, .nan
+                     r"|0[xX][0-9a-fA-F.]+(?:[pP][+-]?[0-9]+)?|(?i:inf|infinity|nan)"  # strtod
+                     r"|\.(?:inf|Inf|INF))|\.(?:nan|NaN|NAN)")  # rcl's own spellings, these only
 _LIMITS = tuple(f"{axis}.{limit}" for axis in ("linear.x", "angular.z") for limit in (
     "max_velocity", "min_velocity", "max_acceleration", "min_acceleration", "max_deceleration",
     "min_deceleration", "max_acceleration_reverse", "max_deceleration_reverse", "max_jerk",
@@ -166,8 +168,7 @@ def declared_types(controller_type: str | None, params: yaml.MappingNode, sectio
         return
     for key, node in _flat(params):
         wanted = declared.get(key)
-        if wanted is None or (isinstance(node, yaml.ScalarNode) and node.tag.endswith(":null")
-                              and node.style is None and not node.value) or _filled_in(node):
+        if wanted is None or no_value(node) or _filled_in(node):
             continue
         got = _type_of(node)
         if got is None or got == wanted or (got == "empty_array" and wanted.endswith("_array")):

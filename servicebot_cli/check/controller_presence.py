@@ -21,11 +21,11 @@ from servicebot_cli.check.controller_sections import (
     at,
     get,
     named_at,
-    substituted,
     type_nodes,
 )
 from servicebot_cli.check.findings import Issue, Severity
-from servicebot_cli.check.rcl_layout import valid_node_name
+from servicebot_cli.check.rcl_names import valid_node_name
+from servicebot_cli.check.substitutions import substituted
 
 _FORWARD = ("joints", "interface_name")  # (interface_name absent from a section: an error of
 # controller_params.validated_values)

@@ -21,10 +21,10 @@ from servicebot_cli.check.controller_sections import (
     Sections,
     controller_types,
     get,
-    substituted,
 )
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.ros2_control import GAZEBO_PID, exported_as, exports_as_listed
+from servicebot_cli.check.substitutions import substituted
 from servicebot_cli.check.wheel_numbers import driven, mismatch, track_m
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
 from servicebot_cli.common.listing import some_of

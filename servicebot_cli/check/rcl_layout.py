@@ -11,16 +11,15 @@ instead of under it, and ROS 1's ``NAME: type: ...``. Pure: YAML events in, one 
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
 from servicebot_cli.check.findings import Issue
+from servicebot_cli.check.rcl_names import name_refusal, valid_node_name
 from servicebot_cli.check.substitutions import substituted
 
-_NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]{0,254}")
 _PARAMETERS_KEY = "ros__parameters"  # rcl compares the key's start: PARAMS_KEY's length
 _REFUSED = "rcl refuses the whole file ('{said} at line {line}'), so ros2_control_node " \
            "cannot load it"
@@ -41,6 +40,8 @@ class _Walk:
     parameters_of: dict[str, int] = field(default_factory=dict)
     node: str = ""
     keys: list[str] = field(default_factory=list)  # the key of each open mapping, for messages
+    opened: list[tuple[str, yaml.MappingStartEvent]] = field(default_factory=list)
+    emptied: tuple[str, yaml.MappingStartEvent] | None = None
 
 
 def layout_issue(events: Iterable[yaml.Event], display: str) -> Issue | None:
@@ -55,7 +56,9 @@ def layout_issue(events: Iterable[yaml.Event], display: str) -> Issue | None:
             walk.in_list, walk.expecting_key = False, True
             found = None
         elif isinstance(event, yaml.MappingStartEvent):
-            _mapping_start(walk)
+            if walk.in_list:
+                return None  # a mapping in a list: rcl reads it as values, past this replay
+            _mapping_start(walk, event)
             found = None
         elif isinstance(event, yaml.MappingEndEvent):
             _mapping_end(walk)
@@ -90,8 +93,8 @@ def _scalar(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue | None:
             return Issue("SB601", f"'{event.value}' at the top of the file, under no node name: "
                          + _REFUSED.format(said=said, line=line), where=_at(display, event),
                          fix=f"put it under the node's name: NAME: {_PARAMETERS_KEY}:")
-        walk.node = "/".join(walk.namespaces)
-        refused = _node_name_refusal(walk.namespaces[-1], walk.node, walk.named_at[-1], display)
+        walk.node = _joined(walk.namespaces)
+        refused = _node_name_refusal(walk.node, walk.named_at[-1], display)
         if refused is not None:
             return refused
         walk.parameters_of.setdefault(walk.node, 0)
@@ -100,6 +103,11 @@ def _scalar(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue | None:
         walk.in_parameters = True
         return None
     if walk.in_parameters and walk.parameters_of.get(walk.node, 0):
+        if event.value == "" and event.style is None:  # 'name:' and nothing: no value at all
+            key = walk.keys[-1] if walk.keys else "?"
+            return Issue("SB601", f"'{key}' has no value: " + _REFUSED.format(
+                said="No value", line=line), where=_at(display, event),
+                fix="give it a value ('' for an empty string), or remove it")
         if not walk.in_list:
             walk.expecting_key = True
         return None
@@ -110,6 +118,13 @@ def _scalar(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue | None:
         return Issue("SB601", f"{what}: " + _REFUSED.format(said=said, line=line),
                      where=_at(display, event),
                      fix="write the node's parameters under it, or remove the section")
+    if walk.emptied is not None:
+        empty, mark = walk.emptied
+        return Issue("SB601", f"'{empty}: {{}}', an empty mapping, ends the parameters of "
+                     f"'{walk.node}' for rcl: the value at line {line} after it is outside "
+                     f"every {_PARAMETERS_KEY}, and " + _REFUSED.format(said=said, line=line),
+                     where=_at(display, mark), fix="remove the empty mapping, or give it a "
+                     "parameter")
     key, owner = walk.keys[-1] if walk.keys else "?", ".".join(walk.keys[:-1])
     placed = f"under '{owner}' but outside its {_PARAMETERS_KEY}" if owner else \
         "at the top of the file, under no node"
@@ -118,30 +133,36 @@ def _scalar(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue | None:
                  fix=f"move it under the node's {_PARAMETERS_KEY}:")
 
 
-def _node_name_refusal(key: str, path: str, event: yaml.ScalarEvent,
-                       display: str) -> Issue | None:
-    """SB601 for a node name rmw refuses, which makes rcl refuse the file (``__validate_name``).
+def _joined(names: list[str]) -> str:
+    """The node's name from its keys, as rcl joins them: one '/' between, none doubled."""
+    path = names[0]
+    for name in names[1:]:
+        path += name if path.endswith("/") else f"/{name}"
+    return path
 
-    The part after the last ``/`` is the node's name (``*`` a wildcard); a launch file's
-    placeholders are left to the launch file.
+
+def no_value(node: yaml.Node | None) -> bool:
+    """Whether ``node`` is a plain nothing (``name:``), which rcl refuses ('No value')."""
+    return isinstance(node, yaml.ScalarNode) and node.style is None and not node.value
+
+
+def _node_name_refusal(path: str, event: yaml.ScalarEvent, display: str) -> Issue | None:
+    """SB601 for a node name rcl refuses, and with it the file (:mod:`.rcl_names`).
+
+    A launch file's placeholders are left to the launch file.
     """
-    name = path.rpartition("/")[2]
-    if path == "/**" or name == "*" or substituted(key) or _NODE_NAME.fullmatch(name):
+    said = None if substituted(path) else name_refusal(path)
+    if said is None:
         return None
-    said = ("node name must not start with a number" if name[:1].isdigit() else
-            "node name must not contain characters other than alphanumerics or '_'")
-    if not name:
-        said = "node name must not be empty"
-    return Issue("SB601", f"'{name}' names no node rcl accepts (letters, digits and '_', not a "
-                 f"digit first): rcl refuses the whole file ('{said}'), so ros2_control_node "
-                 "cannot load it", where=_at(display, event),
-                 fix=f"name it '{valid_node_name(name)}' (and wherever it is declared)")
-
-
-def valid_node_name(name: str) -> str:
-    """``name`` made a node name rmw takes: other characters as '_', '_' before a digit."""
-    fixed = re.sub(r"[^A-Za-z0-9_]+", "_", name).strip("_") or "my_controller"
-    return f"_{fixed}" if fixed[0].isdigit() else fixed
+    name = path.rpartition("/")[2]
+    what = (f"'{name}' names no node rcl accepts (letters, digits and '_', not a digit first)"
+            if said.startswith("node name") else f"the node name '{path}' has a namespace rcl "
+            "refuses")
+    fix = (f"name it '{valid_node_name(name)}' (and wherever it is declared)"
+           if said.startswith("node name") else "write each namespace in letters, digits and "
+           "'_' (not a digit first), one '/' between them")
+    return Issue("SB601", f"{what}: rcl refuses the whole file ('{said}'), so ros2_control_node "
+                 "cannot load it", where=_at(display, event), fix=fix)
 
 
 def _list_start(walk: _Walk, event: yaml.SequenceStartEvent, display: str) -> Issue | None:
@@ -158,7 +179,8 @@ def _list_start(walk: _Walk, event: yaml.SequenceStartEvent, display: str) -> Is
     return None
 
 
-def _mapping_start(walk: _Walk) -> None:
+def _mapping_start(walk: _Walk, event: yaml.MappingStartEvent) -> None:
+    walk.opened.append((walk.keys[-1] if walk.keys else "?", event))
     walk.depth += 1
     walk.new_mapping = walk.expecting_key = True
     if walk.in_parameters and walk.depth - (len(walk.namespaces) + 1) == 2:
@@ -166,11 +188,14 @@ def _mapping_start(walk: _Walk) -> None:
 
 
 def _mapping_end(walk: _Walk) -> None:
+    opened = walk.opened.pop() if walk.opened else None
     if walk.in_parameters:
         if walk.parameter_namespaces:
             walk.parameter_namespaces -= 1
         else:
             walk.in_parameters = False
+            if walk.depth - (len(walk.namespaces) + 1) != 2:  # not ros__parameters' own end
+                walk.emptied = opened  # an empty mapping among the parameters ends them
     elif walk.depth == len(walk.namespaces) + 1 and walk.namespaces:
         walk.namespaces.pop()
         walk.named_at.pop()

@@ -38,6 +38,8 @@ def _sb608(run, tmp_path, text: str) -> tuple[int, list[dict[str, object]]]:
      "reads '0' as an integer among doubles, and refuses the whole file", "write 0.0"),
     ("      - arm_link3_to_link4\n", "      - y\n", "reads 'y' as a boolean among strings",
      "quote it: 'y'"),
+    ("      - arm_link3_to_link4\n", "      - .NaN\n", "reads '.NaN' as a double among strings",
+     "quote it"),
 ])
 def test_a_value_of_another_type_is_refused_as_rcl_and_the_controller_would(
         run, tmp_path, before, after, says, fix):
@@ -55,6 +57,9 @@ def test_a_value_of_another_type_is_refused_as_rcl_and_the_controller_would(
     ("open_loop: false", "open_loop: off"),
     ("cmd_vel_timeout: 0.5", "cmd_vel_timeout: .inf"),
     ("state_publish_rate: 50.0", "state_publish_rate: 5e1"),
+    # rcl's own spellings of nan and inf only: '.nAN' and '+.nan' are strings (parse.c)
+    ("      - arm_link3_to_link4\n", "      - .nAN\n"),
+    ("      - arm_link3_to_link4\n", "      - +.nan\n"),
 ])
 def test_values_rcl_reads_as_declared_pass(run, tmp_path, before, after):
     assert before in BUNDLED
