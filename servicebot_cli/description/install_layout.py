@@ -20,6 +20,7 @@ from servicebot_cli.description.package_dirs import holding_package
 
 _COMMENT = re.compile(r"#[^\n]*")
 _INSTALL = re.compile(r"\binstall\s*\(([^)]*)\)", re.IGNORECASE)
+_AUTO_PACKAGE = re.compile(r"\bament_auto_package\s*\(([^)]*)\)", re.IGNORECASE)
 _SHARE = re.compile(r"^share/(?:\$\{PROJECT_NAME\}|(?P<name>[\w.-]+))(?:/(?P<sub>.*?))?/*$")
 _KEYWORDS = {"DESTINATION", "FILES_MATCHING", "PATTERN", "REGEX", "EXCLUDE", "PERMISSIONS",
              "USE_SOURCE_PERMISSIONS", "CONFIGURATIONS", "COMPONENT", "OPTIONAL",
@@ -102,8 +103,12 @@ def directory_rules(cmake: str, package: str) -> list[tuple[str, str]]:
     and ``("c", "x")``: without a trailing slash the directory itself is installed, with
     one its contents. Rules to other destinations, or to another package's share, are left out.
     """
+    cmake = _COMMENT.sub("", cmake)
+    bodies = _INSTALL.findall(cmake) + [  # ament_cmake_auto installs each as install() would
+        f"DIRECTORY {' '.join(words)} DESTINATION share/${{PROJECT_NAME}}"
+        for words in map(_to_share, _AUTO_PACKAGE.findall(cmake)) if words]
     rules = []
-    for body in _INSTALL.findall(_COMMENT.sub("", cmake)):
+    for body in bodies:
         words = body.replace('"', " ").split()
         if not words or words[0].upper() != "DIRECTORY" or "DESTINATION" not in words:
             continue
@@ -119,6 +124,16 @@ def directory_rules(cmake: str, package: str) -> list[tuple[str, str]]:
             installed = destination if source.endswith("/") else destination / Path(stripped).name
             rules.append((stripped, "" if str(installed) == "." else str(installed)))
     return rules
+
+
+def _to_share(body: str) -> list[str]:
+    """The directories ``ament_auto_package(INSTALL_TO_SHARE ...)`` names."""
+    words = body.replace('"', " ").split()
+    if "INSTALL_TO_SHARE" not in words:
+        return []
+    listed = words[words.index("INSTALL_TO_SHARE") + 1:]
+    end = next((i for i, word in enumerate(listed) if word.isupper() and "_" in word), None)
+    return listed[:end]
 
 
 def included_when_installed(includer: Path, relative: str) -> Path | None:
@@ -139,23 +154,22 @@ def included_when_installed(includer: Path, relative: str) -> Path | None:
     return None if found is None else found.source
 
 
-def escapes_install(includer: Path, relative: str) -> str | None:
-    """Where a relative include of ``includer`` lands once installed, when that is above share/.
+def lands_outside(includer: Path, relative: str) -> str | None:
+    """Where a relative include of ``includer`` lands once installed, when out of its share.
 
     ``includer`` is a source file its package's install rules put under ``share/PKG``; an
-    include that climbs out of ``share`` from there (``../../../other_pkg/x.xacro`` written
-    against the source tree) names nothing any package installs, so xacro fails on the
-    installed file, which launch files load. The place it lands, relative to the install
-    prefix (``other_pkg/x.xacro``); None where ``includer`` is installed by no rule read
-    here, or the include stays within ``share``.
+    include written against the source tree (``../../../other_pkg/x.xacro``) may climb out of
+    ``share/PKG`` from there. The place it lands, relative to the install prefix
+    (``other_pkg/x.xacro``, ``share/config/x.xacro``); None where ``includer`` is installed
+    by no rule read here, or the include stays within ``share/PKG``.
     """
     landed = _installed_include(includer, relative)
     if landed is None:
         return None
     name, _, target = landed
-    placed = posixpath.normpath(posixpath.join("share", name, target))
-    parts = placed.split("/")
-    return placed if parts[0] != "share" or len(parts) < 3 else None
+    if not (target == ".." or target.startswith("../")):
+        return None
+    return posixpath.normpath(posixpath.join("share", name, target))
 
 
 def _installed_include(includer: Path, relative: str) -> tuple[str, Path, str] | None:

@@ -32,9 +32,9 @@ from xml.parsers import expat
 from servicebot_cli.common.errors import DescriptionError, PackageNotFound, XacroError, XmlError
 from servicebot_cli.common.inputs import as_typed, not_a_file, open_binary
 from servicebot_cli.description.install_layout import (
-    escapes_install,
     included_when_installed,
     installed_source,
+    lands_outside,
 )
 from servicebot_cli.description.load_warnings import LoadWarning, said_by_xacro
 from servicebot_cli.description.packages import PackageResolver
@@ -351,8 +351,8 @@ class _Tracer:
         read = _installed_spec(spec, joined, filestack)
         includer = filestack[-1] if filestack else None
         if includer and read == joined and not os.path.isabs(spec) and os.path.exists(read):
-            lands = escapes_install(Path(includer), spec)
-            if lands is not None:
+            lands = lands_outside(Path(includer), spec)
+            if lands is not None and not self._installed_share(lands, includer):
                 where = self.refs[self.current[-1]] if self.current else None
                 self.installed_only.append(LoadWarning(
                     f"'{spec}' is read from the sources only: from where the install rules put "
@@ -363,6 +363,16 @@ class _Tracer:
                     fix="name it through its package: $(find PACKAGE)/path/in/its/share",
                     said_as="installed"))
         return read
+
+    def _installed_share(self, lands: str, includer: str) -> bool:
+        """Whether ``lands`` (under the install prefix) is in the share of a package ROS finds."""
+        parts = lands.split("/")
+        if len(parts) < 3 or parts[0] != "share":
+            return False
+        try:
+            return self.resolver.probe().locate(parts[1], Path(includer).parent).ros_finds_it
+        except PackageNotFound:
+            return False
 
     def _said(self, *parts: object, sep: str | None = " ", **_: object) -> None:
         """xacro.color's print: the text, and the element being processed.

@@ -15,8 +15,8 @@ _XACRO = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
 
 def _package(root, rules: str, files: dict[str, str]):
     root.mkdir(parents=True)
-    (root / "package.xml").write_text("<package><name>mypkg</name></package>")
-    (root / "CMakeLists.txt").write_text(f"project(mypkg)\n{rules}\n")
+    (root / "package.xml").write_text(f"<package><name>{root.name}</name></package>")
+    (root / "CMakeLists.txt").write_text(f"project({root.name})\n{rules}\n")
     for name, text in files.items():
         (root / name).parent.mkdir(parents=True, exist_ok=True)
         (root / name).write_text(text)
@@ -85,3 +85,32 @@ def test_an_include_of_a_sibling_package_that_holds_installed_too_passes(run, tm
     result = run("check", "urdf", workspace / "mypkg/urdf/main.xacro", "--format", "json",
                  "--isolated")
     assert result.exit_code == 0, result.output
+
+
+def test_an_include_that_lands_in_a_share_no_package_has_is_an_error(run, tmp_path):
+    """description/urdf and config both installed in share/mypkg: '../../config/x' from the
+    sources is share/config/x once installed, which no package 'config' fills."""
+    package = tmp_path / "src" / "mypkg"
+    _package(package, "install(DIRECTORY description/urdf config DESTINATION "
+             "share/${PROJECT_NAME})",
+             {"description/urdf/main.xacro": _main("../../config/part.xacro"),
+              "config/part.xacro": _PART})
+    result = run("check", "urdf", package / "description/urdf/main.xacro", "--format", "json",
+                 "--isolated")
+    (found,) = [f for f in findings(result.stdout) if f["code"] == "SB001"]
+    assert result.exit_code == 1 and "<install prefix>/share/config/part.xacro" in \
+        found["message"]
+
+
+def test_ament_auto_package_install_to_share_is_an_install_rule(run, tmp_path):
+    repository = tmp_path / "demos"
+    _package(repository / "mypkg", "find_package(ament_cmake_auto REQUIRED)\n"
+             "ament_auto_package(INSTALL_TO_SHARE description config)",
+             {"description/urdf/main.xacro": _main("../../../common/part.xacro")})
+    (repository / "common").mkdir()
+    (repository / "common" / "part.xacro").write_text(_PART)
+    result = run("check", "urdf", repository / "mypkg/description/urdf/main.xacro",
+                 "--format", "json", "--isolated")
+    (found,) = [f for f in findings(result.stdout) if f["code"] == "SB001"]
+    assert result.exit_code == 1 and "<install prefix>/share/common/part.xacro" in \
+        found["message"]
