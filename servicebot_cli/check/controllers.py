@@ -187,7 +187,7 @@ class _Checker:
             if joint is None and item.value in self.components():  # a gpio or a sensor
                 continue
             if joint is None:
-                hint = [self.closest(section, key, str(item.value))]
+                hint = [self.closest(section, str(item.value))]
                 only = (" (only its <ros2_control> names it: Gazebo's ros2_control skips "
                         "such a joint, and robot_state_publisher has no state of it)"
                         if item.value in self.exported() else "")
@@ -202,12 +202,13 @@ class _Checker:
                 yield Issue("SB606", f"{section}.{key}: joint '{item.value}' is {joint.type} "
                             "in the URDF", where=self.where(item))
 
-    def closest(self, section: str, key: str, name: str) -> str:
+    def closest(self, section: str, name: str) -> str:
         """The names ``name`` may have meant: 'did you mean ...', or what the URDF has.
 
         A chained reference whose controller is misspelled is said as that controller's
-        reference; joints the section's other lists already name come last, as a wheel of
-        the other side is seldom the one meant.
+        reference. Only joints that move, and that none of the section's lists names already
+        (the same list's other joints, the other side's wheels), are suggested: the
+        controller refuses a joint twice, and a fixed one.
         """
         head, slash, rest = name.partition("/")
         controller = difflib.get_close_matches(head, sorted(self.controllers), n=1,
@@ -216,9 +217,10 @@ class _Checker:
             return (f"did you mean '{controller[0]}/{rest}', a reference of the controller "
                     f"'{controller[0]}'?")
         taken = {str(item.value) for params in self.sections.get(section, [])
-                 for other in JOINT_KEYS if other != key
-                 for item in _items(get(params, other)) if isinstance(item, yaml.ScalarNode)}
-        joints = [j for j in self.joints if j not in taken] or list(self.joints)
+                 for key in JOINT_KEYS
+                 for item in _items(get(params, key)) if isinstance(item, yaml.ScalarNode)}
+        joints = [j for j, joint in self.joints.items() if joint.movable and j not in taken] \
+            or list(self.joints)
         return str(NameNotFound.for_name(name, joints)).split("; ", 1)[-1]
 
     def components(self) -> set[str]:

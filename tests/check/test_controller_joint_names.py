@@ -102,3 +102,21 @@ def test_a_misspelled_chained_controller_is_suggested_as_its_reference(tmp_path)
     (found,) = [f for f in findings(result.stdout) if f["code"] == "SB602"]
     assert "did you mean 'pid_left_wheel_joint/left_wheel_joint', a reference of the " \
         "controller 'pid_left_wheel_joint'?" in found["message"]
+
+
+@pytest.mark.parametrize(("wrong", "meant", "not_meant"), [
+    ("arm_link1_to_link3", "arm_link2_to_link3", "arm_link1_to_link2"),  # already listed
+    ("arm_base_to_link", "arm_base_to_link1", "arm_base_joint"),  # fixed: SB606 if taken
+])
+def test_no_joint_the_controller_would_refuse_is_suggested(run, tmp_path, wrong, meant,
+                                                           not_meant):
+    from tests.check.helpers import check_controllers
+    from tests.conftest import REPO
+
+    bundled = (REPO / "robots" / "controllers.yaml").read_text()
+    gone = "arm_link2_to_link3" if wrong == "arm_link1_to_link3" else "arm_base_to_link1"
+    text = bundled.replace(f"      - {gone}\n", f"      - {wrong}\n", 1)
+    _, found = check_controllers(run, tmp_path, text)
+    (unknown,) = [f for f in found if f["code"] == "SB602"]
+    hint = str(unknown["message"]).split("did you mean", 1)[1]
+    assert f"'{meant}'" in hint and f"'{not_meant}'" not in hint
