@@ -24,7 +24,7 @@ from servicebot_cli.check.controller_sections import (
 )
 from servicebot_cli.check.findings import Issue, Severity
 from servicebot_cli.check.ros2_control import GAZEBO_PID, exported_as, exports_as_listed
-from servicebot_cli.check.substitutions import substituted
+from servicebot_cli.check.substitutions import leading_substitution, substituted
 from servicebot_cli.check.wheel_numbers import driven, mismatch, track_m
 from servicebot_cli.common.errors import DescriptionError, NameNotFound
 from servicebot_cli.common.listing import some_of
@@ -181,6 +181,11 @@ class _Checker:
                 yield Issue("SB602", f"{section}.{key}: '{item.value}' names {reference}",
                             where=self.where(item), fix="name one of those references")
                 continue
+            unmatched = self.prefixed_nowhere(str(item.value))
+            if unmatched is not None:
+                yield Issue("SB602", f"{section}.{key}: joint '{item.value}': {unmatched}",
+                            where=self.where(item))
+                continue
             if self.not_a_joint(item.value):
                 continue
             joint = self.joints.get(item.value)
@@ -201,6 +206,24 @@ class _Checker:
             elif not joint.movable:
                 yield Issue("SB606", f"{section}.{key}: joint '{item.value}' is {joint.type} "
                             "in the URDF", where=self.where(item))
+
+    def prefixed_nowhere(self, name: str) -> str | None:
+        """Why a joint a launch file prefixes (``$(var tf_prefix)elbow_joint``) is none.
+
+        Whatever the prefix, the name ends as written: when no URDF joint ends so, no value
+        of the prefix makes it one. None when one does, or the name is not so written.
+        """
+        found = leading_substitution(name)
+        if found is None:
+            return None
+        prefix, tail = found
+        if any(joint.endswith(tail) for joint in self.joints):
+            return None
+        close = difflib.get_close_matches(tail, [j for j, joint in self.joints.items()
+                                                 if joint.movable], n=1, cutoff=0.6)
+        return (f"no joint of {self.robot.display} ends in '{tail}', so none is named so "
+                f"whatever {prefix} is" + (f"; did you mean '{prefix}{close[0]}'?"
+                                           if close else ""))
 
     def closest(self, section: str, name: str) -> str:
         """The names ``name`` may have meant: 'did you mean ...', or what the URDF has.

@@ -92,3 +92,12 @@ def test_a_joint_without_a_placeholder_is_still_checked(tmp_path):
     found = _check("replace_string.yaml", "arm.urdf", tmp_path,
                    a=("      - <prefix>joint_1\n", "      - <prefix>joint_1\n      - joint_9\n"))
     assert [code for code, _ in found] == ["SB602"] and "'joint_9'" in found[0][1]
+
+
+@pytest.mark.parametrize("prefixed", ["<prefix>joint_2", "$(var tf_prefix)joint_2"])
+def test_a_prefixed_joint_no_urdf_joint_ends_like_is_still_found(tmp_path, prefixed):
+    """UR's '$(var tf_prefix)elbo_joint' passed: whatever the prefix, no joint ends so."""
+    found = _check("replace_string.yaml", "arm.urdf", tmp_path,
+                   a=("      - <prefix>joint_1\n", f"      - {prefixed}\n"))
+    assert [code for code, _ in found] == ["SB602"]
+    assert "ends in 'joint_2'" in found[0][1] and "did you mean" in found[0][1]
