@@ -10,6 +10,8 @@ import math
 import unicodedata
 from collections.abc import Sequence
 
+from servicebot_cli.output.one_line import one_line
+
 ELLIPSIS = "…"
 
 
@@ -36,7 +38,7 @@ def _cell(value: object) -> str:
         return format_number(value)
     if value is None:
         return "-"
-    return str(value)
+    return one_line(str(value))  # a name's line break would break the table
 
 
 def width(text: str) -> int:

@@ -56,3 +56,16 @@ def test_mermaid_keeps_an_ampersand_and_dot_a_percent(tmp_path):
     labels = [o["label"] if o.get("label", "\\N") != "\\N" else o["name"]
               for o in drawn["objects"]]  # graphviz names '%tool' '%3'; its label says it
     assert sorted(labels) == sorted(("base", *NAMES))
+
+
+def test_a_line_break_in_a_name_stays_in_its_table_row(tmp_path):
+    """A link named with &#10; split inspect's tables: its second line started with the
+    rest of the name ('::error ...', a workflow command in a CI log)."""
+    path = tmp_path / "break.urdf"
+    path.write_text('<robot name="r"><link name="base"/><link name="arm&#10;::error x"/>'
+                    '<joint name="j" type="fixed"><parent link="base"/>'
+                    '<child link="arm&#10;::error x"/></joint></robot>')
+    result = run_servicebot("inspect", path)
+    assert result.returncode == 0, result.stderr
+    assert not [line for line in result.stdout.splitlines() if line.startswith("::")]
+    assert "arm\\n::error x" in result.stdout
