@@ -205,9 +205,10 @@ URDF_RULES: tuple[Rule, ...] = (
          "make it continuous)."),
     Rule("SB203", "lower-above-upper", W, "A lower limit above the upper limit",
          "pybullet reads lower > upper as 'no limit' and some pybullet_data models rely on "
-         "it; urdfdom accepts it. Elsewhere no position satisfies the limits: MoveIt's "
-         "bounds checks and Pinocchio's random configurations fail. Swapped limits are "
-         "usually a typo; for a joint without limits use type continuous.",
+         "it; MuJoCo drops such a limit too, silently (limited false). urdfdom and Pinocchio "
+         "take it as written, a range no position satisfies for a bounds check (MoveIt's). "
+         "Swapped limits are usually a typo; for a joint without limits use type "
+         "continuous.",
          "Swap the limits, or make the joint continuous."),
     Rule("SB204", "equal-limits", W, "Equal lower and upper limits",
          "The joint cannot move (check_urdf accepts it; some tools read 0/0 as no limits).",
@@ -231,7 +232,9 @@ URDF_RULES: tuple[Rule, ...] = (
          "Most tools normalise it, some scale the motion by its length.",
          "Write the normalised axis."),
     Rule("SB209", "mimic-unknown-joint", E, "<mimic> names a joint that does not exist",
-         "The mimicking joint follows nothing.", "Use the suggested name."),
+         "The mimicking joint follows nothing: the joint is not there, or it is fixed (or "
+         "floating or planar), which MuJoCo and Pinocchio take no mimic of.",
+         "Use the suggested name."),
     Rule("SB210", "mimic-self", E, "A joint mimics itself", "The definition is circular.",
          "Name the joint it should follow."),
     Rule("SB211", "mimic-cycle", E, "Mimic joints that follow each other in a cycle",

@@ -174,8 +174,8 @@ def _limits(joint: Joint, simulator: str | None, placed: bool = False) -> Iterat
     lower, upper = limits.lower or 0.0, limits.upper or 0.0
     if lower > upper:
         yield Issue("SB203", f"joint '{joint.name}' has lower {lower:g} > upper {upper:g}: "
-                    "pybullet reads that as no limit, other tools as a range no position "
-                    "satisfies", joint.element,
+                    "pybullet reads that as no limit, and MuJoCo too without a word; a bounds "
+                    "check (MoveIt's) as a range no position satisfies", joint.element,
                     fix=f'lower="{upper:g}" upper="{lower:g}", or type="continuous" for no limit')
     elif lower == upper and _range_unwritten(joint):
         # <limit effort velocity/> alone: urdfdom's lower and upper default to 0
@@ -256,8 +256,13 @@ def _safety(joint: Joint) -> Iterator[Issue]:
                     fix=f"keep the soft limits inside [{lower:g}, {upper:g}]")
 
 
+_FOLLOWABLE = ("revolute", "continuous", "prismatic")
+"""The joints a <mimic> can follow: MuJoCo ignores it on others, Pinocchio refuses it."""
+
+
 def _mimics(robot: RobotDescription) -> Iterator[Issue]:
     names = [j.name for j in robot.joints]
+    kinds = {j.name: j.type for j in robot.joints}
     follows: dict[str, str] = {}
     for joint in robot.joints:
         target = joint.mimic.joint if joint.mimic else None
@@ -274,6 +279,12 @@ def _mimics(robot: RobotDescription) -> Iterator[Issue]:
             hint = str(NameNotFound.for_name(target, others)).split("; ", 1)[-1]
             yield Issue("SB209", f"joint '{joint.name}' mimics '{target}', which does not "
                         f"exist; {hint}", joint.element)
+        elif kinds[target] not in _FOLLOWABLE:
+            yield Issue("SB209", f"joint '{joint.name}' mimics '{target}', a {kinds[target]} "
+                        "joint: Pinocchio, reading mimic joints, refuses it ('The parent joint "
+                        "of the mimic joint is not in the kinematic tree'), MuJoCo ignores the "
+                        f"<mimic> and yourdfpy holds '{joint.name}' still", joint.element,
+                        fix="name the revolute, continuous or prismatic joint it follows")
         else:
             follows[joint.name] = target
     yield from _mimic_cycles(robot, follows)

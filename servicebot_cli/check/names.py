@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
@@ -134,6 +135,8 @@ def _rgba(material: ET.Element) -> Iterator[Issue]:
         values = [float(v) for v in (color.get("rgba") or "").split()]
     except ValueError:
         return  # SB013 reports it
+    if not all(math.isfinite(v) for v in values):
+        return  # SB014 reports it
     if len(values) == 4 and not all(0.0 <= v <= 1.0 for v in values):
         # a 0-255 colour divided by 255; 1.0000000001, a rounding past 1, clamped to 1
         scaled = " ".join(("1" if v <= 1.01 else f"{min(v / 255.0, 1.0):.3g}") if v > 1

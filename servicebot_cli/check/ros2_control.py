@@ -323,9 +323,10 @@ def _command_limits(item: ControlJoint, interface: Interface, joint: Joint) -> I
         return
     if interface.name == "position" and joint.type in ("revolute", "prismatic"):
         allowed = (limits.lower, limits.upper)
-    elif interface.name == "velocity" and limits.velocity is not None:
+    elif interface.name == "velocity" and limits.velocity is not None \
+            and limits.velocity >= 0:  # a negative one: SB205's
         allowed = (0.0 - limits.velocity, limits.velocity)  # 0 - 0 is 0, not -0
-    elif interface.name == "effort" and limits.effort is not None:
+    elif interface.name == "effort" and limits.effort is not None and limits.effort >= 0:
         allowed = (0.0 - limits.effort, limits.effort)
     else:
         return

@@ -196,7 +196,7 @@ def _degrees_origin(origin: ET.Element) -> Iterator[Issue]:
             15 <= a <= 360 and a % 5 == 0 for a in turned):
         return
     radians = " ".join(f"{math.radians(a):.6g}" for a in angles)
-    most = max(turned)
+    most = max((a for a in angles if a != 0), key=abs)  # with its sign: -90 turns the other way
     turn_deg = math.degrees(math.remainder(most, math.tau))
     yield Issue("SB021", f"<origin rpy=\"{value}\"> looks like degrees: URDF angles are "
                 f"radians, so {most:g} is a turn of {turn_deg:.1f} degrees", origin,

@@ -80,3 +80,14 @@ def test_a_number_beyond_a_double_is_no_limit(run, tmp_path, text):
     (found,) = _limit_texts(run, tmp_path, "-3", text)
     assert f"max '{text}' is beyond a double's range" in found["message"]
     assert found["fix"] == "write the limit, a finite number"
+
+
+def test_a_negative_urdf_velocity_is_sb205s_not_a_range_the_command_leaves(run, tmp_path):
+    """velocity="-3.14" in the URDF made SB508 read its range as [3.14, -3.14]."""
+    path = tmp_path / "arm.urdf.xacro"
+    path.write_text(XACRO.format(minimum="-3.14", maximum="3.14").replace(
+        'velocity="1"', 'velocity="-3.14"').replace('name="position">\n        <param',
+                                                    'name="velocity">\n        <param'))
+    codes = [f["code"] for f in findings(run("check", path, "--format", "json",
+                                             "--isolated").stdout)]
+    assert "SB205" in codes and "SB508" not in codes

@@ -80,3 +80,13 @@ def test_an_origin_rpy_in_degrees_is_a_warning(run, tmp_path, rpy, said):
     if said:
         assert found[0]["severity"] == "warning"
         assert found[0]["fix"].startswith('rpy="')
+
+
+def test_a_negative_angle_in_degrees_turns_the_other_way(run, tmp_path):
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r"><link name="a"/><link name="b"/><joint name="j" '
+                    'type="fixed"><origin rpy="-90 0 0"/><parent link="a"/><child link="b"/>'
+                    '</joint></robot>')
+    (found,) = findings(run("check", path, "--format", "json", "--isolated", "--select",
+                            "SB021").stdout)
+    assert "so -90 is a turn of -116.6 degrees" in found["message"]

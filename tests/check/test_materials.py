@@ -74,3 +74,12 @@ def test_a_colour_outside_zero_to_one_is_fixed_by_its_kind(run, tmp_path, rgba, 
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB113")
     (found,) = findings(result.stdout)
     assert found["fix"] == fix
+
+
+def test_a_nan_colour_is_said_once_as_not_a_number(run, tmp_path):
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r"><material name="m"><color rgba="0 0 nan 1"/></material>'
+                    '<link name="a"><visual><geometry><sphere radius="1"/></geometry>'
+                    '<material name="m"/></visual></link></robot>')
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB113,SB014")
+    assert [f["code"] for f in findings(result.stdout)] == ["SB014"]

@@ -64,3 +64,16 @@ def test_a_followed_joint_defined_twice_is_judged_by_its_first_definition(run, t
     codes = [f["code"] for f in findings(run("check", "urdf", path, "--format", "json",
                                              "--isolated").stdout)]
     assert "SB102" in codes and "SB217" not in codes
+
+
+@pytest.mark.parametrize("kind", ["fixed", "floating"])
+def test_a_mimic_of_a_joint_that_cannot_move_is_an_error(run, tmp_path, kind):
+    """panda's finger mimicking the fixed panda_hand_joint: Pinocchio (with mimic joints)
+    refuses it, MuJoCo drops the mimic, yourdfpy holds the finger still; check passed."""
+    path = _gripper(tmp_path, 'lower="-1.5" upper="0"', '<mimic joint="gear_joint"/>')
+    path.write_text(path.read_text().replace(
+        '<joint name="gear_joint" type="revolute">', f'<joint name="gear_joint" type="{kind}">'))
+    found = [f for f in findings(run("check", path, "--format", "json", "--isolated").stdout)
+             if f["code"] == "SB209"]
+    assert len(found) == 1 and found[0]["severity"] == "error"
+    assert f"mimics 'gear_joint', a {kind} joint" in found[0]["message"]
