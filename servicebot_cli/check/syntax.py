@@ -114,7 +114,8 @@ def _element_tree(top: ET.Element, urdf_1_2: bool = False) -> Iterator[Issue]:
             if _is_extension(child.tag):
                 continue
             if element.tag == "joint" and child.tag in _UNREAD.get(element.get("type", ""), ()):
-                continue  # urdfdom does not read it for this type: nothing to judge
+                yield from _unread_axis(child, element)  # urdfdom does not read it; MuJoCo does
+                continue
             if child.tag in present and child.tag in once:
                 refused = child.tag in _MUJOCO_ONCE.get(element.tag, ())
                 yield Issue("SB020", f"<{element.tag}>{_named(element)} has a second "
@@ -334,6 +335,27 @@ def _limit_attributes(element: ET.Element, allowed: dict[str, int], required: tu
 
 
 @functools.lru_cache(maxsize=8192)  # "0 0 0", "1": the same values in file after file
+def _unread_axis(axis: ET.Element, joint: ET.Element) -> Iterator[Issue]:
+    """SB013 for the <axis> of a fixed or floating joint that is no three numbers.
+
+    urdfdom skips it, so check_urdf, ROS and Pinocchio never see it; MuJoCo's URDF reader
+    does, and refuses the file ("attribute 'xyz' does not have enough data", "has too much
+    data", "bad format").
+    """
+    xyz = axis.get("xyz")
+    if xyz is None or len(xyz.split()) == 3 and all(
+            NUMBER.fullmatch(part) for part in xyz.split()):
+        return
+    count = len(xyz.split())
+    said = ("does not have enough data" if count < 3 else "has too much data" if count > 3
+            else "bad format in attribute 'xyz'")
+    said = said if said.startswith("bad") else f"attribute 'xyz' {said}"
+    yield Issue("SB013", f"<axis xyz=\"{xyz}\"> of {joint.get('type')} joint{_named(joint)} is "
+                "not three numbers: urdfdom skips a fixed joint's axis, but MuJoCo reads it and "
+                f"refuses the file ('{said}')", axis, fix="remove the <axis>, or write three "
+                "numbers")
+
+
 def _plain(value: str, count: int) -> bool:
     """Whether ``value`` is ``count`` finite numbers as urdfdom reads them."""
     if count > 1 and _OTHER_BLANKS.search(value):

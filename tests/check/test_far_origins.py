@@ -90,3 +90,21 @@ def test_a_negative_angle_in_degrees_turns_the_other_way(run, tmp_path):
     (found,) = findings(run("check", path, "--format", "json", "--isolated", "--select",
                             "SB021").stdout)
     assert "so -90 is a turn of -116.6 degrees" in found["message"]
+
+
+@pytest.mark.parametrize(("kind", "xyz", "refused"), [
+    ("fixed", "0 1", True), ("floating", "1 0 0 0", True), ("fixed", "x y z", True),
+    ("fixed", "0 0 1", False), ("fixed", "0 0 0", False)])
+def test_the_axis_of_a_joint_urdfdom_skips_is_still_read_by_mujoco(run, tmp_path, kind, xyz,
+                                                                    refused):
+    """urdfdom skips a fixed joint's <axis>; MuJoCo refuses xyz="0 1" there ('attribute
+    xyz does not have enough data'), and check said nothing."""
+    path = tmp_path / "r.urdf"
+    path.write_text('<robot name="r"><link name="a"/><link name="b"/><joint name="j" '
+                    f'type="{kind}"><parent link="a"/><child link="b"/><axis xyz="{xyz}"/>'
+                    '</joint></robot>')
+    found = [f for f in findings(run("check", path, "--format", "json", "--isolated").stdout)
+             if f["code"] == "SB013"]
+    assert bool(found) is refused
+    if refused:
+        assert found[0]["severity"] == "error" and "MuJoCo reads it" in found[0]["message"]
