@@ -14,7 +14,12 @@ from collections.abc import Iterator
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
 
-from servicebot_cli.check.controller_params import TYPE_ARTICLE, rcl_type
+from servicebot_cli.check.controller_params import (
+    TYPE_ARTICLE,
+    c_integer,
+    rcl_number,
+    rcl_type,
+)
 from servicebot_cli.check.controller_sections import Sections, at, get, type_nodes
 from servicebot_cli.check.findings import Issue
 from servicebot_cli.check.rcl_layout import no_value
@@ -66,7 +71,7 @@ def _typed(key: str, node: yaml.ScalarNode, wanted: str, display: str) -> Iterat
                     f"{TYPE_ARTICLE[got]}, and controller_manager declares "
                     f"{TYPE_ARTICLE[wanted]}: the node refuses it and does not start",
                     where=where, fix=fix)
-    elif key == "update_rate" and int(str(node.value), 0) <= 0:
+    elif key == "update_rate" and (c_integer(str(node.value)) or 0) <= 0:
         yield Issue("SB608", f"controller_manager.update_rate: {node.value}: from Jazzy on the "
                     "controller manager wants a rate above 0 and does not start; Humble's "
                     "loop divides by it", where=where, fix="update_rate: 100")
@@ -77,10 +82,7 @@ def _rounded(text: str) -> int | None:
 
     None for ``.inf``, ``nan`` and 1e400.
     """
-    try:
-        value = float(text.lower().replace(".inf", "inf").replace(".nan", "nan"))
-    except ValueError:
-        return None
-    if not math.isfinite(value) or not -(2 ** 63) <= round(value) < 2 ** 63:
+    value = rcl_number(text)
+    if value is None or not math.isfinite(value) or not -(2 ** 63) <= round(value) < 2 ** 63:
         return None
     return round(value)

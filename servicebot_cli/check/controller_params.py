@@ -13,6 +13,7 @@ in, issues out.
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Iterator
 
@@ -123,23 +124,52 @@ def rcl_type(node: yaml.ScalarNode) -> str:
     text = str(node.value)
     if text in RCL_TRUE or text in RCL_FALSE:
         return "bool"
-    if _INTEGER.fullmatch(text) and _INT64_LOW <= _as_c_integer(text) <= _INT64_HIGH:
-        return "integer"  # beyond 64 bits strtoll fails, and rcl reads a double
+    if c_integer(text) is not None:
+        return "integer"  # beyond 64 bits, or '08', strtoll stops, and rcl reads a double
     return "double" if _DOUBLE.fullmatch(text) else "string"
+
+
+def rcl_number(text: str) -> float | None:
+    """The number rcl reads ``text`` as (an integer's value as a float); None: a string.
+
+    As C reads it, not Python: ``010`` is 8 (octal), ``0x10`` 16, ``.inf`` infinite.
+    """
+    whole = c_integer(text)
+    if whole is not None:
+        return float(whole)
+    if not _DOUBLE.fullmatch(text):
+        return None
+    word = text.lstrip("+-").lower()
+    if word in (".inf", "inf", "infinity"):
+        return -math.inf if text.startswith("-") else math.inf
+    if word in (".nan", "nan"):
+        return math.nan
+    return float.fromhex(text) if "x" in word else float(text)
 
 
 _INT64_LOW, _INT64_HIGH = -(2 ** 63), 2 ** 63 - 1
 
 
-def _as_c_integer(text: str) -> int:
-    """The value of an integer ``_INTEGER`` matches, read as ``strtoll`` base 0 reads it."""
+def c_integer(text: str) -> int | None:
+    """``text`` read whole by ``strtoll`` base 0 (``010`` octal, ``0x10`` hex), in 64 bits.
+
+    None where strtoll stops before the end (``08``: 8 is no octal digit) or overflows: rcl
+    then reads a double, or a string.
+    """
+    if not _INTEGER.fullmatch(text):
+        return None
     digits = text.lstrip("+-")
     sign = -1 if text.startswith("-") else 1
     if digits[:2].lower() == "0x":
-        return sign * int(digits, 16)
-    if len(digits) > 1 and digits.startswith("0") and set(digits) <= set("01234567"):
-        return sign * int(digits, 8)
-    return sign * int(digits)
+        value = int(digits, 16)
+    elif len(digits) > 1 and digits.startswith("0"):
+        if not set(digits) <= set("01234567"):
+            return None
+        value = int(digits, 8)
+    else:
+        value = int(digits)
+    value *= sign
+    return value if _INT64_LOW <= value <= _INT64_HIGH else None
 
 
 def mixed_lists(params: yaml.MappingNode, section: str,
@@ -326,8 +356,9 @@ def validated_values(controller_type: str | None, params: yaml.MappingNode, sect
                         fix="interface_name: position")
     for key in _AT_LEAST_0.get(controller_type or "", ()):
         node = _last(params, key)
-        if isinstance(node, yaml.ScalarNode) and rcl_type(node) in ("double", "integer") \
-                and not _filled_in(node) and float(node.value) < 0:
+        value = rcl_number(str(node.value)) if isinstance(node, yaml.ScalarNode) \
+            and rcl_type(node) in ("double", "integer") and not _filled_in(node) else None
+        if value is not None and value < 0:
             yield Issue("SB608", f"{section}.{key} is {node.value}: {controller_type} refuses a "
                         "negative value at configure (gt_eq 0)", where=at(display, node.start_mark),
                         fix=f"{key}: {str(node.value).lstrip('-')}")

@@ -40,6 +40,8 @@ def _sb608(run, tmp_path, text: str) -> tuple[int, list[dict[str, object]]]:
      "quote it: 'y'"),
     ("      - arm_link3_to_link4\n", "      - .NaN\n", "reads '.NaN' as a double among strings",
      "quote it"),
+    # strtoll stops at 8, no octal digit: rcl reads a double, the manager wants an integer
+    ("update_rate: 100", "update_rate: 08", "reads '08' as a double", "update_rate: 8"),
 ])
 def test_a_value_of_another_type_is_refused_as_rcl_and_the_controller_would(
         run, tmp_path, before, after, says, fix):
@@ -60,6 +62,8 @@ def test_a_value_of_another_type_is_refused_as_rcl_and_the_controller_would(
     # rcl's own spellings of nan and inf only: '.nAN' and '+.nan' are strings (parse.c)
     ("      - arm_link3_to_link4\n", "      - .nAN\n"),
     ("      - arm_link3_to_link4\n", "      - +.nan\n"),
+    ("update_rate: 100", "update_rate: 0144"),  # octal, as C reads it: 100 (it raised)
+    ("cmd_vel_timeout: 0.5", "cmd_vel_timeout: 08"),  # a double to rcl, not an integer
 ])
 def test_values_rcl_reads_as_declared_pass(run, tmp_path, before, after):
     assert before in BUNDLED
@@ -76,3 +80,14 @@ def test_a_parameter_finding_is_said_once_whatever_the_robots(run, tmp_path):
     path.write_text(BUNDLED.replace("wheel_separation: 0.54", 'wheel_separation: "0.54"'))
     result = run("check", "controllers", path, "--format", "json", "--isolated")
     assert [f["code"] for f in findings(result.stdout)].count("SB608") == 1, result.stdout
+
+
+@pytest.mark.parametrize("value", [".inf", "-.inf", ".nan", "0x1p3", "1e400"])
+def test_a_number_as_c_writes_it_is_no_internal_error(run, tmp_path, value):
+    """max_effort: .inf ended in an internal error (Python's float() refuses '.inf')."""
+    text = BUNDLED + ("gripper_controller:\n  ros__parameters:\n    type: parallel_gripper_"
+                      "action_controller/GripperActionController\n    joint: arm_link3_to_link4"
+                      f"\n    max_effort: {value}\n")
+    code, found = _sb608(run, tmp_path, text)
+    assert code in (0, 1) and not any("gt_eq 0" in str(f["message"]) for f in found
+                                      if value != "-.inf")
