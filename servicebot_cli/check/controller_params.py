@@ -356,8 +356,10 @@ def validated_values(controller_type: str | None, params: yaml.MappingNode, sect
                         fix="interface_name: position")
     for key in _AT_LEAST_0.get(controller_type or "", ()):
         node = _last(params, key)
-        value = rcl_number(str(node.value)) if isinstance(node, yaml.ScalarNode) \
-            and rcl_type(node) in ("double", "integer") and not _filled_in(node) else None
+        if not isinstance(node, yaml.ScalarNode) or _filled_in(node) \
+                or rcl_type(node) not in ("double", "integer"):
+            continue
+        value = rcl_number(str(node.value))
         if value is not None and value < 0:
             yield Issue("SB608", f"{section}.{key} is {node.value}: {controller_type} refuses a "
                         "negative value at configure (gt_eq 0)", where=at(display, node.start_mark),
