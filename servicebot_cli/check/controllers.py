@@ -8,6 +8,7 @@ Pure: YAML text and a RobotDescription in, issues out, each placed at its YAML l
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
 import math
 from collections.abc import Iterator
@@ -151,6 +152,8 @@ class _Checker:
                     continue
                 if not isinstance(item, yaml.ScalarNode):
                     return False
+                if self.prefixed_ends(str(item.value)) == []:
+                    return False
                 if not self.not_a_joint(str(item.value)) and item.value not in self.joints:
                     return False
         return True
@@ -181,10 +184,9 @@ class _Checker:
                 yield Issue("SB602", f"{section}.{key}: '{item.value}' names {reference}",
                             where=self.where(item), fix="name one of those references")
                 continue
-            unmatched = self.prefixed_nowhere(str(item.value))
-            if unmatched is not None:
-                yield Issue("SB602", f"{section}.{key}: joint '{item.value}': {unmatched}",
-                            where=self.where(item))
+            prefixed = self.prefixed_issue(section, key, str(item.value))
+            if prefixed is not None:
+                yield dataclasses.replace(prefixed, where=self.where(item))
                 continue
             if self.not_a_joint(item.value):
                 continue
@@ -207,23 +209,45 @@ class _Checker:
                 yield Issue("SB606", f"{section}.{key}: joint '{item.value}' is {joint.type} "
                             "in the URDF", where=self.where(item))
 
-    def prefixed_nowhere(self, name: str) -> str | None:
-        """Why a joint a launch file prefixes (``$(var tf_prefix)elbow_joint``) is none.
+    def prefixed_ends(self, name: str) -> list[str] | None:
+        """The robot's joints, sensors and GPIOs a prefixed name may be; None: not prefixed.
 
-        Whatever the prefix, the name ends as written: when no URDF joint ends so, no value
-        of the prefix makes it one. None when one does, or the name is not so written.
+        A joint a launch file prefixes (``$(var tf_prefix)elbow_joint``) ends as written
+        whatever the prefix: those whose names end so.
         """
         found = leading_substitution(name)
         if found is None:
             return None
-        prefix, tail = found
-        if any(joint.endswith(tail) for joint in self.joints):
+        return [other for other in (*self.joints, *self.components())
+                if other.endswith(found[1])]
+
+    def prefixed_issue(self, section: str, key: str, name: str) -> Issue | None:
+        """SB602 for a prefixed name no joint ends like, SB606 when only fixed ones do."""
+        ends = self.prefixed_ends(name)
+        if ends is None:
             return None
-        close = difflib.get_close_matches(tail, [j for j, joint in self.joints.items()
-                                                 if joint.movable], n=1, cutoff=0.6)
-        return (f"no joint of {self.robot.display} ends in '{tail}', so none is named so "
-                f"whatever {prefix} is" + (f"; did you mean '{prefix}{close[0]}'?"
-                                           if close else ""))
+        prefix, tail = leading_substitution(name) or ("", name)
+        if not ends:
+            candidates = self.suggestible(section)
+            close = difflib.get_close_matches(tail, candidates, n=1, cutoff=0.6)
+            meant = f"; did you mean '{prefix}{close[0]}'?" if close else ""
+            return Issue("SB602", f"{section}.{key}: joint '{name}': no joint of "
+                         f"{self.robot.display} ends in '{tail}', so none is named so whatever "
+                         f"{prefix} is{meant}", fix=None if close else "name a joint of the URDF")
+        joints = [self.joints[end] for end in ends if end in self.joints]
+        if len(joints) == len(ends) and not any(joint.movable for joint in joints):
+            return Issue("SB606", f"{section}.{key}: joint '{name}' can only be "
+                         f"{', '.join(repr(j.name) for j in joints)} with a prefix, "
+                         f"{joints[0].type} in the URDF")
+        return None
+
+    def suggestible(self, section: str) -> list[str]:
+        """Joints worth suggesting in ``section``: moving, and named by none of its lists."""
+        taken = {str(item.value) for params in self.sections.get(section, [])
+                 for key in JOINT_KEYS
+                 for item in _items(get(params, key)) if isinstance(item, yaml.ScalarNode)}
+        taken |= {prefixed[1] for name in taken if (prefixed := leading_substitution(name))}
+        return [j for j, joint in self.joints.items() if joint.movable and j not in taken]
 
     def closest(self, section: str, name: str) -> str:
         """The names ``name`` may have meant: 'did you mean ...', or what the URDF has.
@@ -239,11 +263,9 @@ class _Checker:
         if controller:
             return (f"did you mean '{controller[0]}/{rest}', a reference of the controller "
                     f"'{controller[0]}'?")
-        taken = {str(item.value) for params in self.sections.get(section, [])
-                 for key in JOINT_KEYS
-                 for item in _items(get(params, key)) if isinstance(item, yaml.ScalarNode)}
-        joints = [j for j, joint in self.joints.items() if joint.movable and j not in taken] \
-            or list(self.joints)
+        joints = self.suggestible(section)
+        if not joints:
+            return "every joint of the URDF that moves is listed already"
         return str(NameNotFound.for_name(name, joints)).split("; ", 1)[-1]
 
     def components(self) -> set[str]:
