@@ -75,6 +75,9 @@ def layout_issue(events: Iterable[yaml.Event], display: str) -> Issue | None:
 def _scalar(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue | None:
     line = event.start_mark.line + 1
     if walk.expecting_key:
+        if not event.value:
+            return Issue("SB601", "an empty key: " + _REFUSED.format(said="No key", line=line),
+                         where=_at(display, event), fix="name it, or remove it")
         walk.expecting_key = False
         del walk.keys[max(walk.depth - 1, 0):]
         walk.keys.append(str(event.value))

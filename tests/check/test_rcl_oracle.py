@@ -73,6 +73,8 @@ CASES = {
     "a digit first": BUNDLED + "2wd_controller:\n  ros__parameters:\n    a: 1\n",
     "a hyphen in a namespace": BUNDLED + "my-robot/extra:\n  ros__parameters:\n    a: 1\n",
     "a doubled slash": BUNDLED + "robot1//extra:\n  ros__parameters:\n    a: 1\n",
+    "an empty parameter name": BUNDLED + "extra:\n  ros__parameters:\n    '': 1\n",
+    "an empty node name": BUNDLED + "'':\n  ros__parameters:\n    a: 1\n",
 }
 
 
