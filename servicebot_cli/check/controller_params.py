@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 import re
+import sys
 from collections.abc import Iterator
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
@@ -28,7 +29,8 @@ from servicebot_cli.check.substitutions import substituted
 
 _INTEGER = re.compile(r"[+-]?(?:0[xX][0-9a-fA-F]+|[0-9]+)")  # strtol, base 0
 _DOUBLE = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*(?:[eE][+-]?[0-9]+)?|\.[0-9]+(?:[eE][+-]?[0-9]+)?"
-                     r"|0[xX][0-9a-fA-F.]+(?:[pP][+-]?[0-9]+)?|(?i:inf|infinity|nan)"  # strtod
+                     r"|0[xX](?:[0-9a-fA-F]+\.?[0-9a-fA-F]*|\.[0-9a-fA-F]+)(?:[pP][+-]?[0-9]+)?"
+                     r"|(?i:inf|infinity|nan)"  # strtod
                      r"|\.(?:inf|Inf|INF))|\.(?:nan|NaN|NAN)")  # rcl's own spellings, these only
 _LIMITS = tuple(f"{axis}.{limit}" for axis in ("linear.x", "angular.z") for limit in (
     "max_velocity", "min_velocity", "max_acceleration", "min_acceleration", "max_deceleration",
@@ -126,7 +128,7 @@ def rcl_type(node: yaml.ScalarNode) -> str:
         return "bool"
     if c_integer(text) is not None:
         return "integer"  # beyond 64 bits, or '08', strtoll stops, and rcl reads a double
-    return "double" if _DOUBLE.fullmatch(text) else "string"
+    return "double" if rcl_number(text) is not None else "string"
 
 
 def rcl_number(text: str) -> float | None:
@@ -144,7 +146,16 @@ def rcl_number(text: str) -> float | None:
         return -math.inf if text.startswith("-") else math.inf
     if word in (".nan", "nan"):
         return math.nan
-    return float.fromhex(text) if "x" in word else float(text)
+    try:
+        value = float.fromhex(text) if "x" in word else float(text)
+    except (ValueError, OverflowError):  # strtod would stop early: rcl keeps the text
+        return None
+    # strtod's ERANGE (1e400, 1e-400), after which rcl keeps the text, a string
+    mantissa = word.partition("x")[2].partition("p")[0] if "x" in word else word.partition("e")[0]
+    if math.isinf(value) or (value == 0 and mantissa.strip("0.")) \
+            or (0 < abs(value) < sys.float_info.min and "x" not in word):  # inexact: ERANGE
+        return None
+    return value
 
 
 _INT64_LOW, _INT64_HIGH = -(2 ** 63), 2 ** 63 - 1
@@ -249,7 +260,7 @@ def _fix(node: yaml.ScalarNode, wanted: str) -> str | None:
     text = str(node.value)
     if wanted == "double" and rcl_type(node) == "integer":
         return f"write {text}.0"
-    if (wanted in ("double", "integer") and _DOUBLE.fullmatch(text)) or (
+    if (wanted in ("double", "integer") and rcl_number(text) is not None) or (
             wanted == "bool" and (text in RCL_TRUE or text in RCL_FALSE)):
         return f"write {text} without quotes"
     if wanted == "string":

@@ -11,6 +11,7 @@ import os
 import re
 
 from servicebot_cli.check.findings import Issue, Severity
+from servicebot_cli.check.syntax import not_a_robot
 from servicebot_cli.common.accidents import accident_fix
 from servicebot_cli.common.errors import (
     DescriptionError,
@@ -20,6 +21,7 @@ from servicebot_cli.common.errors import (
     XmlError,
     split_location,
 )
+from servicebot_cli.common.inputs import not_a_file, read_again
 from servicebot_cli.description.loader import comments_blanked
 from servicebot_cli.description.safe_xml import MAX_BYTES, parse_xml
 
@@ -43,18 +45,20 @@ def root_not_robot(path: str, display: str) -> Issue | None:
     A ROS 1 launch file named ``.urdf.xacro`` (``<launch>``) fails xacro on its ``$(find)``
     first; that failure (a package not found, a warning) hid that it is no robot at all.
     """
-    from servicebot_cli.check.syntax import not_a_robot
-
+    data = read_again(path, MAX_BYTES + 1)  # a pipe: what it gave, never opened again
     try:
-        with open(path, "rb") as handle:
-            data = handle.read(MAX_BYTES + 1)
+        if data is None:
+            if not_a_file(path) is not None:
+                return None
+            with open(path, "rb") as handle:
+                data = handle.read(MAX_BYTES + 1)
         root = parse_xml(data, display).root
     except (OSError, DescriptionError):
         return None
     if root.tag == "robot":
         return None
-    where = (display, getattr(root, "sourceline", 0) or 0, getattr(root, "column", 0) or 0)
-    return dataclasses.replace(not_a_robot(root), element=None, where=where)
+    return dataclasses.replace(not_a_robot(root), element=None,
+                               where=(display, root.sourceline, root.column))
 
 
 def issue_of(error: DescriptionError, display: str, walked: bool = False) -> Issue:

@@ -334,7 +334,6 @@ def _limit_attributes(element: ET.Element, allowed: dict[str, int], required: tu
     yield from _attributes(element, allowed, required, skip=frozenset(newer))
 
 
-@functools.lru_cache(maxsize=8192)  # "0 0 0", "1": the same values in file after file
 def _unread_axis(axis: ET.Element, joint: ET.Element) -> Iterator[Issue]:
     """SB013 for the <axis> of a fixed or floating joint that is no three numbers.
 
@@ -351,11 +350,13 @@ def _unread_axis(axis: ET.Element, joint: ET.Element) -> Iterator[Issue]:
             else "bad format in attribute 'xyz'")
     said = said if said.startswith("bad") else f"attribute 'xyz' {said}"
     yield Issue("SB013", f"<axis xyz=\"{xyz}\"> of {joint.get('type')} joint{_named(joint)} is "
-                "not three numbers: urdfdom skips a fixed joint's axis, but MuJoCo reads it and "
+                f"not three numbers: urdfdom skips a {joint.get('type')} joint's axis, but MuJoCo "
+                "reads it and "
                 f"refuses the file ('{said}')", axis, fix="remove the <axis>, or write three "
                 "numbers")
 
 
+@functools.lru_cache(maxsize=8192)  # "0 0 0", "1": the same values in file after file
 def _plain(value: str, count: int) -> bool:
     """Whether ``value`` is ``count`` finite numbers as urdfdom reads them."""
     if count > 1 and _OTHER_BLANKS.search(value):

@@ -42,6 +42,9 @@ def _sb608(run, tmp_path, text: str) -> tuple[int, list[dict[str, object]]]:
      "quote it"),
     # strtoll stops at 8, no octal digit: rcl reads a double, the manager wants an integer
     ("update_rate: 100", "update_rate: 08", "reads '08' as a double", "update_rate: 8"),
+    # strtod stops early (0x1.2.3) or overflows (1e400): rcl keeps the text, a string
+    ("update_rate: 100", "update_rate: 0x1.2.3", "reads '0x1.2.3' as a string", "update_rate: 100"),
+    ("wheel_separation: 0.54", "wheel_separation: 1e400", "reads '1e400' as a string", ""),
 ])
 def test_a_value_of_another_type_is_refused_as_rcl_and_the_controller_would(
         run, tmp_path, before, after, says, fix):
@@ -82,7 +85,8 @@ def test_a_parameter_finding_is_said_once_whatever_the_robots(run, tmp_path):
     assert [f["code"] for f in findings(result.stdout)].count("SB608") == 1, result.stdout
 
 
-@pytest.mark.parametrize("value", [".inf", "-.inf", ".nan", "0x1p3", "1e400"])
+@pytest.mark.parametrize("value", [".inf", "-.inf", ".nan", "0x1p3", "1e400", "0x1.2.3", "0x.",
+                                   "1e-400"])
 def test_a_number_as_c_writes_it_is_no_internal_error(run, tmp_path, value):
     """max_effort: .inf ended in an internal error (Python's float() refuses '.inf')."""
     text = BUNDLED + ("gripper_controller:\n  ros__parameters:\n    type: parallel_gripper_"

@@ -65,3 +65,27 @@ def test_a_launch_file_named_urdf_xacro_is_no_robot_even_when_xacro_fails_first(
     (finding,) = findings(result.stdout)
     assert (finding["code"], finding["line"]) == ("SB008", 2)
     assert "root element is <launch>" in finding["message"]
+
+
+def test_a_pipe_xacro_cannot_expand_is_not_opened_again(tmp_path):
+    """Reading its root after the expansion failed opened the pipe again, which waited
+    for a writer for ever."""
+    import os
+    import subprocess
+    import sys
+    import threading
+
+    pipe = tmp_path / "robot.urdf.xacro"
+    os.mkfifo(pipe)
+
+    def write() -> None:
+        with open(pipe, "w") as handle:
+            handle.write(_ROBOT)
+
+    writer = threading.Thread(target=write, daemon=True)
+    writer.start()
+    result = subprocess.run([sys.executable, "-m", "servicebot_cli", "check", "urdf", str(pipe),
+                             "--isolated"], capture_output=True, text=True, timeout=60,
+                            env={**os.environ, **NO_ROS})
+    assert result.returncode == 0, result.stderr
+    assert "SB007" in result.stdout and "not expanded" in result.stdout
