@@ -112,14 +112,17 @@ def test_a_robot_version_is_read_as_urdfdom_reads_it(run, tmp_path, version):
 
 @pytest.mark.parametrize(("kind", "read"), [("fixed", False), ("floating", False),
                                             ("planar", True), ("continuous", True)])
-def test_an_axis_is_judged_only_where_urdfdom_reads_it(run, tmp_path, kind, read):
+def test_an_axis_urdfdom_skips_is_judged_as_mujoco_reads_it(run, tmp_path, kind, read):
+    """urdfdom reads no axis of a fixed or floating joint (check_urdf passes xyz="a b c"
+    there); MuJoCo's URDF reader does, and refuses the file ('bad format')."""
     path = tmp_path / "robot.urdf"
     path.write_text(f'<robot name="r"><link name="a"/><link name="b"/><joint name="j" '
                     f'type="{kind}"><parent link="a"/><child link="b"/><axis xyz="a b c"/>'
                     '</joint></robot>')
     assert check_urdf_drops(path) is read
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB013")
-    assert (result.exit_code == 1) is read
+    assert result.exit_code == 1
+    assert ("MuJoCo reads it" in result.stdout) is not read
 
 
 def test_sb701_alone_points_at_the_origin_that_holds_the_tab(run, tmp_path):
