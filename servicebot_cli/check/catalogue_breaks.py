@@ -59,7 +59,7 @@ BREAKS: dict[str, str] = {
     "SB207": "KDL (robot_state_publisher) and Pinocchio normalise the axis: a zero vector gives "
              "NaN transforms or a joint that moves nothing",
     "SB209": "MoveIt refuses a mimic of an unknown joint, and Pinocchio's mimic joints cannot "
-             "be built (of a fixed joint either: MuJoCo then drops the mimic)",
+             "be built (nor of a fixed joint, whose mimic MuJoCo drops)",
     "SB210": "MoveIt and Pinocchio cannot resolve a joint that follows itself",
     "SB211": "MoveIt and Pinocchio cannot resolve a cycle of mimics: no joint drives the others",
     "SB302": "Gazebo's physics engines and MuJoCo refuse a negative mass",

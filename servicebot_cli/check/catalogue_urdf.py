@@ -231,10 +231,10 @@ URDF_RULES: tuple[Rule, ...] = (
     Rule("SB208", "non-unit-axis", W, "An axis that is not a unit vector",
          "Most tools normalise it, some scale the motion by its length.",
          "Write the normalised axis."),
-    Rule("SB209", "mimic-unknown-joint", E, "<mimic> names a joint that does not exist",
+    Rule("SB209", "mimic-unknown-joint", E, "<mimic> names a joint that does not exist or move",
          "The mimicking joint follows nothing: the joint is not there, or it is fixed (or "
          "floating or planar), which MuJoCo and Pinocchio take no mimic of.",
-         "Use the suggested name."),
+         "Name the joint it follows (a suggested name, or a joint that moves)."),
     Rule("SB210", "mimic-self", E, "A joint mimics itself", "The definition is circular.",
          "Name the joint it should follow."),
     Rule("SB211", "mimic-cycle", E, "Mimic joints that follow each other in a cycle",

@@ -265,7 +265,9 @@ class _Checker:
                     f"'{controller[0]}'?")
         joints = self.suggestible(section)
         if not joints:
-            return "every joint of the URDF that moves is listed already"
+            moving = any(joint.movable for joint in self.joints.values())
+            return ("every joint of the URDF that moves is listed already" if moving
+                    else "the URDF has no joint that moves")
         return str(NameNotFound.for_name(name, joints)).split("; ", 1)[-1]
 
     def components(self) -> set[str]:

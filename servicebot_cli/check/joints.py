@@ -256,8 +256,8 @@ def _safety(joint: Joint) -> Iterator[Issue]:
                     fix=f"keep the soft limits inside [{lower:g}, {upper:g}]")
 
 
-_FOLLOWABLE = ("revolute", "continuous", "prismatic")
-"""The joints a <mimic> can follow: MuJoCo ignores it on others, Pinocchio refuses it."""
+_UNFOLLOWABLE = ("fixed", "floating", "planar")
+"""Joints a <mimic> cannot follow: MuJoCo ignores it on them, Pinocchio refuses it."""
 
 
 def _mimics(robot: RobotDescription) -> Iterator[Issue]:
@@ -276,10 +276,11 @@ def _mimics(robot: RobotDescription) -> Iterator[Issue]:
             yield Issue("SB210", f"joint '{joint.name}' mimics itself", joint.element)
         elif target not in names:
             others = [name for name in names if name != joint.name]  # not itself: SB210
+            others = [name for name in others if kinds[name] not in _UNFOLLOWABLE] or others
             hint = str(NameNotFound.for_name(target, others)).split("; ", 1)[-1]
             yield Issue("SB209", f"joint '{joint.name}' mimics '{target}', which does not "
                         f"exist; {hint}", joint.element)
-        elif kinds[target] not in _FOLLOWABLE:
+        elif kinds[target] in _UNFOLLOWABLE:  # a misspelled type is SB201's
             yield Issue("SB209", f"joint '{joint.name}' mimics '{target}', a {kinds[target]} "
                         "joint: Pinocchio, reading mimic joints, refuses it ('The parent joint "
                         "of the mimic joint is not in the kinematic tree'), MuJoCo ignores the "

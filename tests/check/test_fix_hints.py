@@ -23,9 +23,11 @@ def test_a_missing_limit_suggests_continuous_only_for_a_revolute_joint(run, tmp_
 
 
 def test_a_mimic_of_a_missing_joint_never_suggests_the_joint_itself(run, tmp_path):
-    """'j2x' on joint j2 suggested 'j2', which would mimic itself (SB210)."""
+    """'j2x' on joint j2 suggested 'j2', which would mimic itself (SB210); nor a fixed joint,
+    which nothing follows (SB209 again)."""
     path = tmp_path / "r.urdf"
-    path.write_text(ARM.format(kind="fixed", limit="", mimic='<mimic joint="j2x"/>'))
+    path.write_text(ARM.format(kind="revolute", limit='<limit lower="-1" upper="1" effort="1" '
+                               'velocity="1"/>', mimic='<mimic joint="j2x"/>'))
     result = run("check", path, "--format", "json", "--isolated", "--select", "SB209")
     (found,) = findings(result.stdout)
     assert found["message"].endswith("which does not exist; did you mean 'j'?")
@@ -147,3 +149,14 @@ def test_a_joint_defined_twice_is_judged_by_its_first_definition(run, tmp_path):
     codes = {f["code"] for f in findings(run("check", robot, "--format", "json",
                                              "--isolated").stdout)}
     assert "SB102" in codes and "SB506" not in codes
+
+
+def test_a_mimic_of_a_missing_joint_suggests_no_fixed_joint(run, tmp_path):
+    path = tmp_path / "r.urdf"
+    path.write_text(ARM.format(kind="fixed", limit="", mimic='<mimic joint="j2x"/>')
+                    .replace("</robot>", '<link name="d"/><joint name="jx" type="revolute">'
+                             '<parent link="c"/><child link="d"/><limit lower="-1" upper="1" '
+                             'effort="1" velocity="1"/></joint></robot>'))
+    result = run("check", path, "--format", "json", "--isolated", "--select", "SB209")
+    (found,) = findings(result.stdout)
+    assert "'jx'" in found["message"] and "'j'" not in found["message"]

@@ -77,3 +77,12 @@ def test_a_mimic_of_a_joint_that_cannot_move_is_an_error(run, tmp_path, kind):
              if f["code"] == "SB209"]
     assert len(found) == 1 and found[0]["severity"] == "error"
     assert f"mimics 'gear_joint', a {kind} joint" in found[0]["message"]
+
+
+def test_a_mimic_of_a_joint_with_a_misspelled_type_is_that_joints_error_only(run, tmp_path):
+    path = _gripper(tmp_path, 'lower="-1.5" upper="0"', '<mimic joint="gear_joint"/>')
+    path.write_text(path.read_text().replace(
+        '<joint name="gear_joint" type="revolute">', '<joint name="gear_joint" type="revolut">'))
+    codes = [f["code"] for f in findings(run("check", path, "--format", "json",
+                                             "--isolated").stdout)]
+    assert "SB201" in codes and "SB209" not in codes

@@ -71,3 +71,17 @@ def test_a_section_another_robots_prefixed_joints_fill_is_left_to_that_robot(tmp
     sections = (_traj("$(var p)j1", "$(var p)j2", namespace="/robot1/")
                 + _traj("$(var p)leg_hip", "$(var p)leg_knee", namespace="/robot2/"))
     assert _check(tmp_path, sections) == []
+
+
+def test_a_urdf_with_no_joint_that_moves_says_so(tmp_path):
+    (tmp_path / "arm.urdf").write_text('<robot name="r"><link name="a"/><link name="b"/>'
+                                       '<joint name="j" type="fixed"><parent link="a"/>'
+                                       '<child link="b"/></joint></robot>')
+    (tmp_path / "controllers.yaml").write_text(
+        "controller_manager:\n  ros__parameters:\n    update_rate: 100\n    fwd:\n"
+        "      type: forward_command_controller/ForwardCommandController\n"
+        "fwd:\n  ros__parameters:\n    joints: [jj]\n    interface_name: position\n")
+    result = run_servicebot("check", "controllers", "controllers.yaml", "--urdf", "arm.urdf",
+                            "--isolated", "--format", "json", cwd=tmp_path)
+    (unknown,) = [f for f in findings(result.stdout) if f["code"] == "SB602"]
+    assert "the URDF has no joint that moves" in unknown["message"]
