@@ -11,7 +11,6 @@ out.
 from __future__ import annotations
 
 import difflib
-import re
 from collections.abc import Iterator
 
 import yaml  # type: ignore[import-untyped]  # PyYAML ships no types
@@ -24,7 +23,7 @@ from servicebot_cli.check.controller_sections import (
     type_nodes,
 )
 from servicebot_cli.check.findings import Issue, Severity
-from servicebot_cli.check.rcl_names import valid_node_name
+from servicebot_cli.check.rcl_names import node_name_refusal, valid_node_name
 from servicebot_cli.check.substitutions import substituted
 
 _FORWARD = ("joints", "interface_name")  # (interface_name absent from a section: an error of
@@ -53,10 +52,6 @@ _OWN_RULE = {"forward_command_controller/ForwardCommandController": ("interface_
 """Needed parameters that another rule reports missing from a section, as an error."""
 
 
-_NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
-"""A node name rcl takes (rmw_validate_node_name): what a controller may be called."""
-
-
 def _node_part(name: str) -> str:
     """The node's part of ``name`` (``/ns/diff_controller``: its end)."""
     return name.rstrip("/").rpartition("/")[2]
@@ -69,7 +64,7 @@ def presence_issues(found: Sections, display: str) -> Iterator[Issue]:
     controllers (a file of ``controller_manager`` alone may leave them to other files).
     """
     types = type_nodes(found)
-    nameable = [name for name in types if _NODE_NAME.fullmatch(name) or substituted(name)]
+    nameable = [name for name in types if node_name_refusal(name) is None or substituted(name)]
     for name, node in types.items():
         if name not in nameable and name not in found:  # a section's own name: rcl_layout
             yield Issue("SB608", f"controller_manager declares '{name}': a controller's name is "

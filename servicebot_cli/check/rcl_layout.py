@@ -41,7 +41,9 @@ class _Walk:
     node: str = ""
     keys: list[str] = field(default_factory=list)  # the key of each open mapping, for messages
     opened: list[tuple[str, yaml.MappingStartEvent]] = field(default_factory=list)
+    keyed: list[bool] = field(default_factory=list)  # whether each open mapping has a key
     emptied: tuple[str, yaml.MappingStartEvent] | None = None
+    last_empty: tuple[str, yaml.MappingStartEvent] | None = None
 
 
 def layout_issue(events: Iterable[yaml.Event], display: str) -> Issue | None:
@@ -79,10 +81,14 @@ def _scalar(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue | None:
             return Issue("SB601", "an empty key: " + _REFUSED.format(said="No key", line=line),
                          where=_at(display, event), fix="name it, or remove it")
         walk.expecting_key = False
+        if walk.keyed:
+            walk.keyed[-1] = True
         del walk.keys[max(walk.depth - 1, 0):]
         walk.keys.append(str(event.value))
         if walk.in_parameters:
             if walk.new_mapping:
+                if not walk.parameters_of.get(walk.node, 0):  # a node's section nested deeper
+                    return _nested_section(walk, event, display)
                 walk.parameter_namespaces += 1
                 walk.new_mapping = False
             walk.parameters_of[walk.node] = walk.parameters_of.get(walk.node, 0) + 1
@@ -93,6 +99,11 @@ def _scalar(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue | None:
             return None
         if not walk.namespaces:
             said = f"There are no node names before {_PARAMETERS_KEY}"
+            owner = ".".join(walk.keys[:-1])
+            if owner:  # the node's name went with its first ros__parameters
+                return Issue("SB601", f"a second '{event.value}' under '{owner}': "
+                             + _REFUSED.format(said=said, line=line), where=_at(display, event),
+                             fix="merge the two into one")
             return Issue("SB601", f"'{event.value}' at the top of the file, under no node name: "
                          + _REFUSED.format(said=said, line=line), where=_at(display, event),
                          fix=f"put it under the node's name: NAME: {_PARAMETERS_KEY}:")
@@ -136,6 +147,21 @@ def _scalar(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue | None:
                  fix=f"move it under the node's {_PARAMETERS_KEY}:")
 
 
+def _nested_section(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue:
+    """SB601 for a node's section indented under another's (beside its ros__parameters).
+
+    rcl takes its ros__parameters' first key for a parameter namespace of a node that has no
+    parameter yet: 'Internal error creating param namespace'.
+    """
+    owner = ".".join(walk.keys[:-3]) or "another node"
+    said = "Internal error creating param namespace"
+    return Issue("SB601", f"the section '{walk.node}' is indented under '{owner}', beside its "
+                 f"{_PARAMETERS_KEY}: " + _REFUSED.format(said=said,
+                                                          line=event.start_mark.line + 1),
+                 where=_at(display, event), fix=f"move '{walk.node}:' to the top level, "
+                 "unindented")
+
+
 def _joined(names: list[str]) -> str:
     """The node's name from its keys, as rcl joins them: one '/' between, none doubled."""
     path = names[0]
@@ -158,7 +184,9 @@ def _node_name_refusal(path: str, event: yaml.ScalarEvent, display: str) -> Issu
     if said is None:
         return None
     name = path.rpartition("/")[2]
-    what = (f"'{name}' names no node rcl accepts (letters, digits and '_', not a digit first)"
+    what = (f"'{name[:40]}...' is longer than the 255 characters rmw takes for a node's name"
+            if "length" in said else
+            f"'{name}' names no node rcl accepts (letters, digits and '_', not a digit first)"
             if said.startswith("node name") else f"the node name '{path}' has a namespace rcl "
             "refuses")
     fix = (f"name it '{valid_node_name(name)}' (and wherever it is declared)"
@@ -184,6 +212,7 @@ def _list_start(walk: _Walk, event: yaml.SequenceStartEvent, display: str) -> Is
 
 def _mapping_start(walk: _Walk, event: yaml.MappingStartEvent) -> None:
     walk.opened.append((walk.keys[-1] if walk.keys else "?", event))
+    walk.keyed.append(False)
     walk.depth += 1
     walk.new_mapping = walk.expecting_key = True
     if walk.in_parameters and walk.depth - (len(walk.namespaces) + 1) == 2:
@@ -192,13 +221,15 @@ def _mapping_start(walk: _Walk, event: yaml.MappingStartEvent) -> None:
 
 def _mapping_end(walk: _Walk) -> None:
     opened = walk.opened.pop() if walk.opened else None
+    if walk.keyed and not walk.keyed.pop() and walk.in_parameters:  # it had no key: empty
+        walk.last_empty = opened
     if walk.in_parameters:
         if walk.parameter_namespaces:
             walk.parameter_namespaces -= 1
         else:
             walk.in_parameters = False
             if walk.depth - (len(walk.namespaces) + 1) != 2:  # not ros__parameters' own end
-                walk.emptied = opened  # an empty mapping among the parameters ends them
+                walk.emptied = walk.last_empty or opened  # an empty mapping ended them
     elif walk.depth == len(walk.namespaces) + 1 and walk.namespaces:
         walk.namespaces.pop()
         walk.named_at.pop()

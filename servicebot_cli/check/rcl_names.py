@@ -48,11 +48,11 @@ def node_name_refusal(name: str) -> str | None:
     if name[0].isdigit():
         return "node name must not start with a number"
     if len(name) > _MOST_NODE_NAME:
-        return f"node name should not exceed {_MOST_NODE_NAME} characters"
+        return f"node name length should not exceed '{_MOST_NODE_NAME}'"  # rmw's words
     return None
 
 
 def valid_node_name(name: str) -> str:
     """``name`` made a node name rmw takes: other characters as '_', '_' before a digit."""
     fixed = re.sub(r"[^A-Za-z0-9_]+", "_", name).strip("_") or "my_controller"
-    return f"_{fixed}" if fixed[0].isdigit() else fixed
+    return (f"_{fixed}" if fixed[0].isdigit() else fixed)[:_MOST_NODE_NAME]

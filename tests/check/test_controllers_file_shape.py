@@ -121,3 +121,12 @@ def test_nested_namespaces_and_wildcards_are_no_values_outside(run, tmp_path):
             "      right_wheel_names: [front_right_wheel_joint]\n")
     code, found = check_controllers(run, tmp_path, text)
     assert not [f for f in found if "rcl refuses" in str(f["message"])], found
+
+
+def test_the_empty_mapping_that_ends_the_parameters_is_the_one_named(run, tmp_path):
+    """x holds y: {}: y's end took the namespace x's end needed, so x's end left the
+    parameters; the message named x, which is not empty."""
+    code, found = check_controllers(run, tmp_path, BUNDLED + "extra:\n  ros__parameters:\n"
+                                    "    x:\n      y: {}\n    z: 1\n")
+    (layout,) = [f for f in found if f["code"] == "SB601"]
+    assert code == 1 and str(layout["message"]).startswith("'y: {}', an empty mapping")

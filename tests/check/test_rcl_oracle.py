@@ -75,6 +75,16 @@ CASES = {
     "a doubled slash": BUNDLED + "robot1//extra:\n  ros__parameters:\n    a: 1\n",
     "an empty parameter name": BUNDLED + "extra:\n  ros__parameters:\n    '': 1\n",
     "an empty node name": BUNDLED + "'':\n  ros__parameters:\n    a: 1\n",
+    "a section nested beside ros__parameters": BUNDLED.replace(
+        "\ndiff_controller:\n  ros__parameters:\n", "\n  diff_controller:\n    ros__parameters:\n"
+        "      left_wheel_names: [front_left_wheel_joint]\n", 1),
+    "an empty mapping deeper": BUNDLED + "extra:\n  ros__parameters:\n    x:\n      y: {}\n"
+    "    z: 1\n",
+    "a node name over 255 characters": BUNDLED + f"{'n' * 256}:\n  ros__parameters:\n"
+    "    a: 1\n",
+    "a node name of 255 characters": BUNDLED + f"{'n' * 255}:\n  ros__parameters:\n    a: 1\n",
+    "ros__parameters twice": BUNDLED + "extra:\n  ros__parameters:\n    x: 1\n"
+    "  ros__parameters:\n    y: 2\n",
 }
 
 
