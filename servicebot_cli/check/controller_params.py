@@ -128,7 +128,7 @@ def rcl_type(node: yaml.ScalarNode) -> str:
         return "bool"
     if c_integer(text) is not None:
         return "integer"  # beyond 64 bits, or '08', strtoll stops, and rcl reads a double
-    return "double" if rcl_number(text) is not None else "string"
+    return "double" if _c_double(text) is not None else "string"
 
 
 def rcl_number(text: str) -> float | None:
@@ -137,8 +137,11 @@ def rcl_number(text: str) -> float | None:
     As C reads it, not Python: ``010`` is 8 (octal), ``0x10`` 16, ``.inf`` infinite.
     """
     whole = c_integer(text)
-    if whole is not None:
-        return float(whole)
+    return float(whole) if whole is not None else _c_double(text)
+
+
+def _c_double(text: str) -> float | None:
+    """``text`` read whole by rcl as a double (its .inf and .nan, then strtod); None: not."""
     if not _DOUBLE.fullmatch(text):
         return None
     word = text.lstrip("+-").lower()

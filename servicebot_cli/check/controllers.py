@@ -145,11 +145,7 @@ class _Checker:
     def fits(self, params: yaml.MappingNode) -> bool:
         """Whether every joint name of ``params`` is a joint of the robot."""
         for key in JOINT_KEYS:
-            node = get(params, key)
-            items = node.value if isinstance(node, yaml.SequenceNode) else [node]
-            for item in items:
-                if item is None:
-                    continue
+            for item in _items(get(params, key)):
                 if not isinstance(item, yaml.ScalarNode):
                     return False
                 if self.prefixed_ends(str(item.value)) == []:
@@ -169,7 +165,7 @@ class _Checker:
     def names(self, section: str, key: str, node: yaml.Node) -> Iterator[Issue]:
         if isinstance(node, yaml.ScalarNode) and str(node.value).lstrip().startswith("["):
             return  # a list in quotes: one string, which SB608 reports
-        items = node.value if isinstance(node, yaml.SequenceNode) else [node]
+        items = _items(node)
         if not items and key.endswith("_wheel_names"):
             yield Issue("SB601", f"{section}.{key} names no wheel: diff_drive_controller "
                         "refuses an empty list", where=self.where(node),
@@ -216,17 +212,19 @@ class _Checker:
         whatever the prefix: those whose names end so.
         """
         found = leading_substitution(name)
-        if found is None:
-            return None
-        return [other for other in (*self.joints, *self.components())
-                if other.endswith(found[1])]
+        return None if found is None else self.ending(found[1])
+
+    def ending(self, tail: str) -> list[str]:
+        """The robot's joints, sensors and GPIOs whose names end in ``tail``."""
+        return [other for other in (*self.joints, *self.components()) if other.endswith(tail)]
 
     def prefixed_issue(self, section: str, key: str, name: str) -> Issue | None:
         """SB602 for a prefixed name no joint ends like, SB606 when only fixed ones do."""
-        ends = self.prefixed_ends(name)
-        if ends is None:
+        found = leading_substitution(name)
+        if found is None:
             return None
-        prefix, tail = leading_substitution(name) or ("", name)
+        prefix, tail = found
+        ends = self.ending(tail)
         if not ends:
             candidates = self.suggestible(section)
             close = difflib.get_close_matches(tail, candidates, n=1, cutoff=0.6)

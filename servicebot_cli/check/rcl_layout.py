@@ -31,8 +31,7 @@ class _Walk:
 
     in_parameters: bool = False
     depth: int = 0
-    namespaces: list[str] = field(default_factory=list)  # node namespaces and the node name
-    named_at: list[yaml.ScalarEvent] = field(default_factory=list)  # each namespace's key
+    named_at: list[yaml.ScalarEvent] = field(default_factory=list)  # namespaces' and node's keys
     parameter_namespaces: int = 0
     expecting_key: bool = True
     in_list: bool = False
@@ -42,6 +41,11 @@ class _Walk:
     keys: list[str] = field(default_factory=list)  # the key of each open mapping, for messages
     opened: list[tuple[str, yaml.MappingStartEvent]] = field(default_factory=list)
     keyed: list[bool] = field(default_factory=list)  # whether each open mapping has a key
+
+    @property
+    def namespaces(self) -> list[str]:
+        """The node's namespaces and name as rcl keeps them, from their keys."""
+        return [str(key.value) for key in self.named_at]
     emptied: tuple[str, yaml.MappingStartEvent] | None = None
     last_empty: tuple[str, yaml.MappingStartEvent] | None = None
 
@@ -94,7 +98,6 @@ def _scalar(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue | None:
             walk.parameters_of[walk.node] = walk.parameters_of.get(walk.node, 0) + 1
             return None
         if not str(event.value).startswith(_PARAMETERS_KEY):
-            walk.namespaces.append(str(event.value))
             walk.named_at.append(event)
             return None
         if not walk.namespaces:
@@ -112,12 +115,11 @@ def _scalar(walk: _Walk, event: yaml.ScalarEvent, display: str) -> Issue | None:
         if refused is not None:
             return refused
         walk.parameters_of.setdefault(walk.node, 0)
-        walk.namespaces.pop()
         walk.named_at.pop()
         walk.in_parameters = True
         return None
     if walk.in_parameters and walk.parameters_of.get(walk.node, 0):
-        if event.value == "" and event.style is None:  # 'name:' and nothing: no value at all
+        if no_value(event):  # 'name:' and nothing: no value at all
             key = walk.keys[-1] if walk.keys else "?"
             return Issue("SB601", f"'{key}' has no value: " + _REFUSED.format(
                 said="No value", line=line), where=_at(display, event),
@@ -170,9 +172,10 @@ def _joined(names: list[str]) -> str:
     return path
 
 
-def no_value(node: yaml.Node | None) -> bool:
-    """Whether ``node`` is a plain nothing (``name:``), which rcl refuses ('No value')."""
-    return isinstance(node, yaml.ScalarNode) and node.style is None and not node.value
+def no_value(scalar: yaml.Node | yaml.Event | None) -> bool:
+    """Whether ``scalar`` (a node or an event) is a plain nothing (``name:``): 'No value'."""
+    return isinstance(scalar, yaml.ScalarNode | yaml.ScalarEvent) and scalar.style is None \
+        and not scalar.value
 
 
 def _node_name_refusal(path: str, event: yaml.ScalarEvent, display: str) -> Issue | None:
@@ -215,7 +218,7 @@ def _mapping_start(walk: _Walk, event: yaml.MappingStartEvent) -> None:
     walk.keyed.append(False)
     walk.depth += 1
     walk.new_mapping = walk.expecting_key = True
-    if walk.in_parameters and walk.depth - (len(walk.namespaces) + 1) == 2:
+    if walk.in_parameters and walk.depth - (len(walk.named_at) + 1) == 2:
         walk.new_mapping = False  # the ros__parameters mapping itself
 
 
@@ -228,10 +231,9 @@ def _mapping_end(walk: _Walk) -> None:
             walk.parameter_namespaces -= 1
         else:
             walk.in_parameters = False
-            if walk.depth - (len(walk.namespaces) + 1) != 2:  # not ros__parameters' own end
+            if walk.depth - (len(walk.named_at) + 1) != 2:  # not ros__parameters' own end
                 walk.emptied = walk.last_empty or opened  # an empty mapping ended them
-    elif walk.depth == len(walk.namespaces) + 1 and walk.namespaces:
-        walk.namespaces.pop()
+    elif walk.depth == len(walk.named_at) + 1 and walk.named_at:
         walk.named_at.pop()
     walk.depth -= 1
 

@@ -342,18 +342,15 @@ def _unread_axis(axis: ET.Element, joint: ET.Element) -> Iterator[Issue]:
     data", "bad format").
     """
     xyz = axis.get("xyz")
-    if xyz is None or len(xyz.split()) == 3 and all(
-            NUMBER.fullmatch(part) for part in xyz.split()):
+    parts = (xyz or "").split()
+    if xyz is None or len(parts) == 3 and all(NUMBER.fullmatch(part) for part in parts):
         return
-    count = len(xyz.split())
-    said = ("does not have enough data" if count < 3 else "has too much data" if count > 3
-            else "bad format in attribute 'xyz'")
-    said = said if said.startswith("bad") else f"attribute 'xyz' {said}"
+    said = ("bad format in attribute 'xyz'" if len(parts) == 3 else "attribute 'xyz' "
+            + ("does not have enough data" if len(parts) < 3 else "has too much data"))
     yield Issue("SB013", f"<axis xyz=\"{xyz}\"> of {joint.get('type')} joint{_named(joint)} is "
                 f"not three numbers: urdfdom skips a {joint.get('type')} joint's axis, but MuJoCo "
-                "reads it and "
-                f"refuses the file ('{said}')", axis, fix="remove the <axis>, or write three "
-                "numbers")
+                f"reads it and refuses the file ('{said}')", axis,
+                fix="remove the <axis>, or write three numbers")
 
 
 @functools.lru_cache(maxsize=8192)  # "0 0 0", "1": the same values in file after file
